@@ -1,0 +1,299 @@
+//! `fric_`: the Abaqus/Standard FRIC user subroutine.
+
+use std::ffi::{c_char, c_int};
+
+use super::{
+    boundary, fortran_string, read, read_array, slice, write, write_array, write_matrix, write_zeros,
+};
+use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
+use crate::props::{FrictionLaw, friction_law};
+use crate::report::Site;
+use crate::{CUTBACK_RATIO, LawError};
+
+/// Abaqus/Standard `FRIC`: frictional stress, tangents, energies and state of one closed contact
+/// point, callable from Fortran as `CALL FRIC(...)` with no interface block.
+///
+/// Every argument is passed by reference; `INTEGER` is a 32-bit `int`, reals are `double`,
+/// arrays are column-major (`DDTDDG(a,b)` is `ddtddg[(a-1) + (b-1)*nfdir]`). The last three
+/// arguments are the hidden lengths of `CINAME`, `SLNAME` and `MSNAME` (blank-padded, not
+/// NUL-terminated; never read past).
+///
+/// The law is chosen by `PROPS(1)` (1 = Coulomb; layout in `docs/props.md`). The Coulomb law
+/// uses `STATEV(1..3)` (accumulated slip, slip rate, status) and needs `NSTATV ≥ 3`.
+///
+/// On entry `LM` is the previous iteration's answer (0 motion, 1 exact stick, 2 frictionless);
+/// with `LM = 2` nothing is written. On exit:
+/// - `LM = 0`: `TAU(NFDIR)` is the end-of-increment stress; `DDTDDG(NFDIR,NFDIR)`,
+///   `DDTDDP(NFDIR)`, `DSLIP`, `SED`, `SFD`, `DDTDDT(NFDIR,2)` (zero: μ does not depend on
+///   temperature) and `STATEV` are written.
+/// - `LM = 1`: exact stick; `TAU`, `DDTDDG`, `DDTDDP` are not written; `DSLIP = 0`, `SED = 0`,
+///   `SFD = 0` and `STATEV` are.
+///
+/// `PNEWDT` is only ever lowered, and only on failure: a bad argument, a bad `PROPS`, too small
+/// an `NSTATV`, `NFDIR` not 1 or 2, a non-finite input or result, or an internal panic sets
+/// `PNEWDT = 0.25`, leaves `LM`, `TAU` and `STATEV` unchanged, zeroes `DDTDDG`, `DDTDDP`, `DSLIP`,
+/// `DDTDDT` and `SFD` (when `NFDIR` is valid), and reports one line per distinct cause (stderr
+/// or `$INTERFACIAL_LOG`; `ifl_last_error` on the calling thread). Input arguments are never
+/// written. `DROT` is not read: the host has already rotated `TAU`, and the law keeps no vector
+/// state.
+///
+/// # Safety
+/// The pointers must be valid for the Abaqus FRIC signature: arrays of `NFDIR`, `NFDIR²`,
+/// `NSTATV`, `NPROPS` entries as documented, names of the given hidden lengths. Optional outputs
+/// (`DSLIP`, `SED`, `SFD`, `DDTDDT`) may be NULL.
+#[allow(clippy::too_many_arguments)]
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fric_(
+    lm: *mut c_int,
+    tau: *mut f64,
+    ddtddg: *mut f64,
+    ddtddp: *mut f64,
+    dslip: *mut f64,
+    sed: *mut f64,
+    sfd: *mut f64,
+    ddtddt: *mut f64,
+    pnewdt: *mut f64,
+    statev: *mut f64,
+    dgam: *const f64,
+    taulm: *const f64,
+    press: *const f64,
+    dpress: *const f64,
+    ddpddh: *const f64,
+    slip: *const f64,
+    kstep: *const c_int,
+    kinc: *const c_int,
+    time: *const f64,
+    dtime: *const f64,
+    noel: *const c_int,
+    ciname: *const c_char,
+    slname: *const c_char,
+    msname: *const c_char,
+    npt: *const c_int,
+    node: *const c_int,
+    npatch: *const c_int,
+    coords: *const f64,
+    rcoord: *const f64,
+    drot: *const f64,
+    temp: *const f64,
+    predef: *const f64,
+    nfdir: *const c_int,
+    mcrd: *const c_int,
+    npred: *const c_int,
+    nstatv: *const c_int,
+    chrlngth: *const f64,
+    props: *const f64,
+    nprops: *const c_int,
+    ciname_len: usize,
+    slname_len: usize,
+    msname_len: usize,
+) {
+    // Not read by the Coulomb law (see the doc comment for DROT).
+    let _ = (ddpddh, slip, kstep, kinc, time, npatch, coords, rcoord, drot, temp, predef);
+    let _ = (mcrd, npred, slname, msname, slname_len, msname_len);
+    let args = FricArgs {
+        lm,
+        tau,
+        ddtddg,
+        ddtddp,
+        dslip,
+        sed,
+        sfd,
+        ddtddt,
+        pnewdt,
+        statev,
+        dgam,
+        taulm,
+        press,
+        dpress,
+        dtime,
+        nfdir,
+        nstatv,
+        chrlngth,
+        props,
+        nprops,
+    };
+    boundary(
+        // SAFETY (all three closures): the pointers are the host's, valid per the contract above.
+        || unsafe { site(ciname, ciname_len, noel, node, npt) },
+        || unsafe { args.run() },
+        || unsafe { args.fail() },
+    )
+}
+
+/// The arguments `fric_` reads or writes, gathered so the generic body can be written once.
+struct FricArgs {
+    lm: *mut c_int,
+    tau: *mut f64,
+    ddtddg: *mut f64,
+    ddtddp: *mut f64,
+    dslip: *mut f64,
+    sed: *mut f64,
+    sfd: *mut f64,
+    ddtddt: *mut f64,
+    pnewdt: *mut f64,
+    statev: *mut f64,
+    dgam: *const f64,
+    taulm: *const f64,
+    press: *const f64,
+    dpress: *const f64,
+    dtime: *const f64,
+    nfdir: *const c_int,
+    nstatv: *const c_int,
+    chrlngth: *const f64,
+    props: *const f64,
+    nprops: *const c_int,
+}
+
+impl FricArgs {
+    /// Checks the sizes and the law once, then runs the NFDIR-specific code.
+    unsafe fn run(&self) -> Result<(), LawError> {
+        // SAFETY (whole body): pointers valid per the FRIC contract; every array is read with
+        // the length the host declared, after that length was checked.
+        unsafe {
+            let lm_in = read(self.lm, "LM")?;
+            if lm_in == 2 {
+                return Ok(());
+            }
+            let entry = match lm_in {
+                0 => EntryFlag::Motion,
+                1 => EntryFlag::ExactStick,
+                other => {
+                    return Err(LawError::Input(format!(
+                        "LM = {other} on entry; expected 0, 1 or 2"
+                    )));
+                }
+            };
+            let nprops = read(self.nprops, "NPROPS")?;
+            let nprops = usize::try_from(nprops)
+                .map_err(|_| LawError::Parameter(format!("NPROPS = {nprops} is negative")))?;
+            let FrictionLaw::Coulomb(law) = friction_law(slice(self.props, nprops, "PROPS")?)?;
+            let nstatv = read(self.nstatv, "NSTATV")?;
+            let nstatv = match usize::try_from(nstatv) {
+                Ok(n) if n >= CoulombState::NSTATV => n,
+                _ => {
+                    return Err(LawError::Parameter(format!(
+                        "NSTATV = {nstatv} but the Coulomb law needs {} state variables \
+                         (*DEPVAR / the NSTATV of *FRICTION, USER)",
+                        CoulombState::NSTATV
+                    )));
+                }
+            };
+            match read(self.nfdir, "NFDIR")? {
+                1 => self.point::<1>(&law, entry, nstatv),
+                2 => self.point::<2>(&law, entry, nstatv),
+                other => Err(LawError::Parameter(format!(
+                    "NFDIR = {other}; expected 1 (2-D) or 2 (3-D)"
+                ))),
+            }
+        }
+    }
+
+    /// One contact point with N = NFDIR friction directions. Everything is computed before the
+    /// first output is written, so a failure leaves the caller's arrays as they were.
+    unsafe fn point<const N: usize>(
+        &self,
+        law: &Coulomb,
+        entry: EntryFlag,
+        nstatv: usize,
+    ) -> Result<(), LawError> {
+        // SAFETY (whole body): arrays of N, N·N and NSTATV entries per the FRIC contract.
+        unsafe {
+            let inc = Increment::<N> {
+                tau: read_array(self.tau, "TAU")?,
+                dgam: read_array(self.dgam, "DGAM")?,
+                taulm: if entry == EntryFlag::ExactStick {
+                    read_array(self.taulm, "TAULM")?
+                } else {
+                    [0.0; N]
+                },
+                pressure: read(self.press, "PRESS")?,
+                dpressure: read(self.dpress, "DPRESS")?,
+                dtime: read(self.dtime, "DTIME")?,
+                characteristic_length: read(self.chrlngth, "CHRLNGTH")?,
+                entry,
+            };
+            let statev = self.statev;
+            let state = CoulombState::from_statev(slice(statev, nstatv, "STATEV")?)?;
+            let up = law.update(&inc, &state)?;
+            let mut end_state = [0.0; CoulombState::NSTATV];
+            up.state.write_statev(&mut end_state);
+            write_array(statev, &end_state);
+            match up.contact {
+                Contact::ExactStick => {
+                    write(self.lm, 1);
+                    write_array(self.dslip, &[0.0; N]);
+                    write(self.sed, 0.0);
+                    write(self.sfd, 0.0);
+                }
+                Contact::Motion(t) => {
+                    write(self.lm, 0);
+                    write_array(self.tau, &t.tau);
+                    write_matrix(self.ddtddg, &t.ddtddg);
+                    write_array(self.ddtddp, &t.ddtddp);
+                    write_array(self.dslip, &t.dslip);
+                    write(self.sed, t.sed);
+                    write(self.sfd, t.sfd);
+                    // DDTDDT(NFDIR,2): μ does not depend on temperature.
+                    write_zeros(self.ddtddt, 2 * N);
+                }
+            }
+            let ratio = up.outcome.step_ratio;
+            if ratio.is_finite() && !self.pnewdt.is_null() && ratio < self.pnewdt.read() {
+                self.pnewdt.write(ratio);
+            }
+            Ok(())
+        }
+    }
+
+    /// The documented safe outputs of a failed call.
+    unsafe fn fail(&self) {
+        // SAFETY: as in `run`; arrays are written only when NFDIR is known to be 1 or 2.
+        unsafe {
+            if !self.pnewdt.is_null() {
+                let current = self.pnewdt.read();
+                if current.is_nan() || current > CUTBACK_RATIO {
+                    self.pnewdt.write(CUTBACK_RATIO);
+                }
+            }
+            write(self.sfd, 0.0);
+            match read(self.nfdir, "NFDIR") {
+                Ok(1) => self.zero_tangents::<1>(),
+                Ok(2) => self.zero_tangents::<2>(),
+                _ => {}
+            }
+        }
+    }
+
+    unsafe fn zero_tangents<const N: usize>(&self) {
+        // SAFETY: N = NFDIR entries per array, N·N for the matrices, 2N for DDTDDT.
+        unsafe {
+            write_matrix::<N>(self.ddtddg, &[[0.0; N]; N]);
+            write_array::<N>(self.ddtddp, &[0.0; N]);
+            write_array::<N>(self.dslip, &[0.0; N]);
+            write_zeros(self.ddtddt, 2 * N);
+        }
+    }
+}
+
+/// Where a FRIC message comes from, read only on the error path.
+unsafe fn site(
+    ciname: *const c_char,
+    ciname_len: usize,
+    noel: *const c_int,
+    node: *const c_int,
+    npt: *const c_int,
+) -> Site {
+    // SAFETY: the host's pointers; NULL reads as "?".
+    let num = |p: *const c_int| unsafe { read(p, "") }.map_or("?".to_string(), |v| v.to_string());
+    Site {
+        routine: "FRIC",
+        // SAFETY: CINAME has the hidden length the host passed.
+        interaction: unsafe { fortran_string(ciname, ciname_len) },
+        place: format!(
+            "element {}, node {}, point {}",
+            num(noel),
+            num(node),
+            num(npt)
+        ),
+    }
+}

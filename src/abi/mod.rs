@@ -1,0 +1,172 @@
+//! The ABI shell: every `extern "C"` function of the library, and nothing else. Pointers and
+//! lengths are checked once here, through the few helpers below; the laws only ever see values,
+//! slices and fixed-size arrays.
+//!
+//! Every exported body runs inside [`boundary`], which catches unwinding, turns an error or a
+//! panic into the routine's documented failure output, and reports it.
+
+use std::ffi::c_char;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use crate::LawError;
+use crate::report::{Site, report};
+
+pub mod fric;
+pub mod native;
+
+pub use fric::fric_;
+pub use native::{ifl_clear_error, ifl_last_error, ifl_last_error_copy, ifl_version};
+
+/// Runs an entry point's `body`. On an error or a panic it first calls `on_fault` (which writes
+/// the routine's safe outputs, e.g. `PNEWDT`), then reports the cause at `site()`. Nothing
+/// unwinds out of it.
+pub(crate) fn boundary(
+    site: impl FnOnce() -> Site,
+    body: impl FnOnce() -> Result<(), LawError>,
+    on_fault: impl FnOnce(),
+) {
+    let cause = match catch_unwind(AssertUnwindSafe(body)) {
+        Ok(Ok(())) => return,
+        Ok(Err(e)) => e.to_string(),
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| (*s).to_owned())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown".into());
+            format!("internal error (panic: {what}); please report it")
+        }
+    };
+    // The failure path must not unwind either (a panic in a host-supplied name conversion, an
+    // allocation failure while formatting): swallow it, the safe outputs are already written.
+    let _ = catch_unwind(AssertUnwindSafe(|| {
+        on_fault();
+        report(&site(), &cause);
+    }));
+}
+
+/// Reads a scalar argument passed by reference.
+///
+/// # Safety
+/// `p` is NULL or points to a readable `T`.
+#[inline]
+pub(crate) unsafe fn read<T: Copy>(p: *const T, name: &str) -> Result<T, LawError> {
+    if p.is_null() {
+        Err(LawError::Input(format!("{name} is a NULL pointer")))
+    } else {
+        // SAFETY: non-NULL, and the caller guarantees it points to a T.
+        Ok(unsafe { p.read() })
+    }
+}
+
+/// Reads a Fortran array of exactly N reals.
+///
+/// # Safety
+/// `p` is NULL or points to at least N readable `f64`.
+#[inline]
+pub(crate) unsafe fn read_array<const N: usize>(
+    p: *const f64,
+    name: &str,
+) -> Result<[f64; N], LawError> {
+    if p.is_null() {
+        return Err(LawError::Input(format!("{name} is a NULL pointer")));
+    }
+    let mut out = [0.0; N];
+    for (i, x) in out.iter_mut().enumerate() {
+        // SAFETY: i < N and the caller guarantees N readable entries.
+        *x = unsafe { p.add(i).read() };
+    }
+    Ok(out)
+}
+
+/// Borrows a Fortran array of `len` reals (`len` already checked ≥ 0 by the caller).
+///
+/// # Safety
+/// `p` is NULL or points to `len` readable `f64` that outlive the borrow and are not written
+/// through another pointer meanwhile.
+#[inline]
+pub(crate) unsafe fn slice<'a>(p: *const f64, len: usize, name: &str) -> Result<&'a [f64], LawError> {
+    if len == 0 {
+        Ok(&[])
+    } else if p.is_null() {
+        Err(LawError::Input(format!("{name} is a NULL pointer")))
+    } else {
+        // SAFETY: as documented above.
+        Ok(unsafe { std::slice::from_raw_parts(p, len) })
+    }
+}
+
+/// Writes N reals to a Fortran array; a NULL pointer (an optional output the host left out) is
+/// skipped.
+///
+/// # Safety
+/// `p` is NULL or points to at least N writable `f64`.
+#[inline]
+pub(crate) unsafe fn write_array<const N: usize>(p: *mut f64, v: &[f64; N]) {
+    if !p.is_null() {
+        for (i, x) in v.iter().enumerate() {
+            // SAFETY: i < N writable entries.
+            unsafe { p.add(i).write(*x) };
+        }
+    }
+}
+
+/// Writes an N×N matrix `m[a][b]` in Fortran (column-major) order: `A(a,b)` at `a + b·N`.
+///
+/// # Safety
+/// `p` is NULL or points to at least N·N writable `f64`.
+#[inline]
+pub(crate) unsafe fn write_matrix<const N: usize>(p: *mut f64, m: &[[f64; N]; N]) {
+    if !p.is_null() {
+        for (a, row) in m.iter().enumerate() {
+            for (b, x) in row.iter().enumerate() {
+                // SAFETY: a + b·N < N·N.
+                unsafe { p.add(a + b * N).write(*x) };
+            }
+        }
+    }
+}
+
+/// Writes `count` zeros to a Fortran array; NULL is skipped.
+///
+/// # Safety
+/// `p` is NULL or points to at least `count` writable `f64`.
+#[inline]
+pub(crate) unsafe fn write_zeros(p: *mut f64, count: usize) {
+    if !p.is_null() {
+        for i in 0..count {
+            // SAFETY: i < count writable entries.
+            unsafe { p.add(i).write(0.0) };
+        }
+    }
+}
+
+/// Writes a scalar output; NULL is skipped.
+///
+/// # Safety
+/// `p` is NULL or points to a writable `T`.
+#[inline]
+pub(crate) unsafe fn write<T>(p: *mut T, v: T) {
+    if !p.is_null() {
+        // SAFETY: non-NULL and writable by contract.
+        unsafe { p.write(v) };
+    }
+}
+
+/// A Fortran `CHARACTER` argument: `len` bytes, blank-padded, not NUL-terminated. Trailing
+/// blanks (and NULs, which some C callers leave) are trimmed; nothing past `len` is read.
+///
+/// # Safety
+/// `p` is NULL or points to `len` readable bytes.
+pub(crate) unsafe fn fortran_string(p: *const c_char, len: usize) -> String {
+    if p.is_null() || len == 0 {
+        return String::new();
+    }
+    // SAFETY: `len` readable bytes by contract (the hidden length is trusted, never exceeded).
+    let bytes = unsafe { std::slice::from_raw_parts(p.cast::<u8>(), len) };
+    let end = bytes
+        .iter()
+        .rposition(|b| *b != b' ' && *b != 0)
+        .map_or(0, |i| i + 1);
+    String::from_utf8_lossy(&bytes[..end]).into_owned()
+}

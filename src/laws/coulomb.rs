@@ -1,0 +1,645 @@
+//! Extended Coulomb friction (seed 000, section 5.2.3): isotropic μ, optional shear limit
+//! τ_max, and the three ways of enforcing stick — elastic stick (penalty, Abaqus's default),
+//! exact stick (Lagrange multipliers, `LM = 1`) and rough friction (always stuck while closed).
+//!
+//! Symbols as in the seed: p contact pressure, τ_crit = min(μp, τ_max) critical stress,
+//! γ_crit allowable elastic slip, k_s = τ_crit/γ_crit stiffness in stick, γ^el elastic slip,
+//! γ^pr elastic predictor, Δγ^sl slip increment.
+//!
+//! Conventions of an increment (the Abaqus FRIC ones): `pressure` is the pressure at the end of
+//! the increment and `dpressure` its increment, so the increment starts at `p − Δp`; `tau` is
+//! the stress at the start of the increment; `dgam` the relative tangential motion of the
+//! increment. Tangents are derivatives of the end-of-increment stress with the start of the
+//! increment held fixed.
+
+use super::small_vec::{add, all_finite, diagonal, dot, norm, scale, transverse_projection};
+use crate::{LawError, Outcome};
+
+/// Default slip tolerance: γ_crit = 0.005 × characteristic contact length (seed 000: "0.5% of
+/// the average length of all contact elements").
+pub const DEFAULT_SLIP_TOLERANCE: f64 = 0.005;
+
+/// In exact stick, the transverse tangent τ_crit/Δγ_eq (Eq. 5.2.3-8) uses
+/// `max(Δγ_eq, EXACT_STICK_TANGENT_FLOOR · γ_crit)`: the stress stays exact, only the tangent
+/// is bounded (at most 1000·k_s) when the slip increment vanishes.
+pub const EXACT_STICK_TANGENT_FLOOR: f64 = 1e-3;
+
+/// How the no-relative-motion condition is enforced.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StickMode {
+    /// Stiff elastic behaviour with k_s = τ_crit/γ_crit (penalty; `PROPS(7) = 0`).
+    Elastic,
+    /// Lagrange multipliers: the law answers `LM = 1` while sticking (`PROPS(7) = 1`).
+    Exact,
+    /// Rough friction: no bound on the shear stress, always `LM = 1` while closed (`PROPS(7) = 2`).
+    Rough,
+}
+
+/// Where the allowable elastic slip γ_crit comes from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CriticalSlip {
+    /// An absolute length.
+    Absolute(f64),
+    /// A fraction of the characteristic contact length (`CHRLNGTH`) given with each increment.
+    Tolerance(f64),
+}
+
+/// The validated parameters of the Coulomb law. Construct with [`Coulomb::new`] and the
+/// `with_*` methods; each validates its argument.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Coulomb {
+    mu: f64,
+    /// `f64::INFINITY` when there is no shear limit.
+    tau_max: f64,
+    critical_slip: CriticalSlip,
+    stick: StickMode,
+}
+
+/// The stick flag the host passes in (`LM` on entry): the previous iteration's answer, or at the
+/// start of an increment the converged state.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum EntryFlag {
+    /// `LM = 0`: relative motion was allowed (slipping, or elastic stick).
+    #[default]
+    Motion,
+    /// `LM = 1`: the point was held by Lagrange multipliers; `taulm` holds their stress.
+    ExactStick,
+}
+
+/// One increment at one contact point, in the host's terms.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Increment<const N: usize> {
+    /// Frictional stress at the start of the increment (already rotated by the host).
+    pub tau: [f64; N],
+    /// Relative tangential motion increment Δγ.
+    pub dgam: [f64; N],
+    /// Lagrange-multiplier stress, read only when `entry` is [`EntryFlag::ExactStick`].
+    pub taulm: [f64; N],
+    /// Contact pressure at the end of the increment.
+    pub pressure: f64,
+    /// Pressure increment; the increment starts at `pressure − dpressure`.
+    pub dpressure: f64,
+    /// Time increment (used for the slip rate kept in the state).
+    pub dtime: f64,
+    /// Characteristic contact face length (`CHRLNGTH`), used when γ_crit is a tolerance.
+    pub characteristic_length: f64,
+    /// The host's stick flag on entry.
+    pub entry: EntryFlag,
+}
+
+impl<const N: usize> Default for Increment<N> {
+    fn default() -> Self {
+        Increment {
+            tau: [0.0; N],
+            dgam: [0.0; N],
+            taulm: [0.0; N],
+            pressure: 0.0,
+            dpressure: 0.0,
+            dtime: 1.0,
+            characteristic_length: 0.0,
+            entry: EntryFlag::Motion,
+        }
+    }
+}
+
+/// What the point did in the increment (stored as `STATEV(3)`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum FrictionStatus {
+    /// Elastic stick (no slip in the increment).
+    #[default]
+    Stick = 0,
+    /// Slip.
+    Slip = 1,
+    /// Held by Lagrange multipliers (`LM = 1`).
+    ExactStick = 2,
+}
+
+/// The law's state: three scalars, stored in `STATEV(1..3)`. No vector is kept, so the rotation
+/// `DROT` of the tangent directions needs no treatment (the host rotates `TAU` itself).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct CoulombState {
+    /// Accumulated equivalent slip Σ|Δγ^sl| (path length of inelastic slip).
+    pub accumulated_slip: f64,
+    /// Equivalent slip rate of the last increment, |Δγ^sl|/Δt (0 when Δt ≤ 0).
+    pub slip_rate: f64,
+    /// Stick, slip or exact stick in the last increment.
+    pub status: FrictionStatus,
+}
+
+impl CoulombState {
+    /// Number of `STATEV` entries the law uses.
+    pub const NSTATV: usize = 3;
+
+    /// Reads the state from `STATEV`; `statev` must hold at least [`Self::NSTATV`] entries.
+    pub fn from_statev(statev: &[f64]) -> Result<Self, LawError> {
+        let [s, rate, status, ..] = statev else {
+            return Err(LawError::Input(format!(
+                "NSTATV = {} but the Coulomb law needs {}",
+                statev.len(),
+                Self::NSTATV
+            )));
+        };
+        if !s.is_finite() || !rate.is_finite() {
+            return Err(LawError::Input(
+                "STATEV(1..2) are not finite (state corrupted by the caller?)".into(),
+            ));
+        }
+        let status = match *status {
+            1.0 => FrictionStatus::Slip,
+            2.0 => FrictionStatus::ExactStick,
+            _ => FrictionStatus::Stick,
+        };
+        Ok(CoulombState {
+            accumulated_slip: *s,
+            slip_rate: *rate,
+            status,
+        })
+    }
+
+    /// Writes the state into the first [`Self::NSTATV`] entries of `statev` (nothing else).
+    pub fn write_statev(&self, statev: &mut [f64]) {
+        if let [s, rate, status, ..] = statev {
+            *s = self.accumulated_slip;
+            *rate = self.slip_rate;
+            *status = self.status as i32 as f64;
+        }
+    }
+}
+
+/// Stress, tangents and energies of an increment that allows relative motion (`LM = 0`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Traction<const N: usize> {
+    /// Frictional stress τ at the end of the increment.
+    pub tau: [f64; N],
+    /// `ddtddg[a][b]` = ∂τ_a/∂Δγ_b.
+    pub ddtddg: [[f64; N]; N],
+    /// ∂τ_a/∂p with the start of the increment held fixed.
+    pub ddtddp: [f64; N],
+    /// Inelastic slip increment Δγ^sl.
+    pub dslip: [f64; N],
+    /// Elastic energy density |τ|²/(2k_s) (0 in exact stick, which has no elastic slip).
+    pub sed: f64,
+    /// Frictional dissipation of the increment, τ·Δγ^sl (backward Euler), never negative.
+    pub sfd: f64,
+}
+
+/// The answer of the law for one increment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Contact<const N: usize> {
+    /// `LM = 0`: relative motion allowed; stress and tangents given.
+    Motion(Traction<N>),
+    /// `LM = 1`: the host holds the point with Lagrange multipliers.
+    ExactStick,
+}
+
+/// Result of [`Coulomb::update`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Update<const N: usize> {
+    /// Stress and tangents, or exact stick.
+    pub contact: Contact<N>,
+    /// State at the end of the increment.
+    pub state: CoulombState,
+    /// Reliability and suggested step ratio.
+    pub outcome: Outcome,
+}
+
+fn finite_nonnegative(name: &str, v: f64) -> Result<f64, LawError> {
+    if v.is_finite() && v >= 0.0 {
+        Ok(v)
+    } else {
+        Err(LawError::Parameter(format!(
+            "{name} = {v} must be finite and ≥ 0"
+        )))
+    }
+}
+
+fn finite_positive(name: &str, v: f64) -> Result<f64, LawError> {
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        Err(LawError::Parameter(format!(
+            "{name} = {v} must be finite and > 0"
+        )))
+    }
+}
+
+impl Coulomb {
+    /// Isotropic Coulomb friction with coefficient μ ≥ 0, no shear limit, elastic stick with
+    /// γ_crit = 0.005 × characteristic length.
+    pub fn new(mu: f64) -> Result<Self, LawError> {
+        Ok(Coulomb {
+            mu: finite_nonnegative("friction coefficient μ", mu)?,
+            tau_max: f64::INFINITY,
+            critical_slip: CriticalSlip::Tolerance(DEFAULT_SLIP_TOLERANCE),
+            stick: StickMode::Elastic,
+        })
+    }
+
+    /// Limits the critical stress: τ_crit = min(μp, τ_max), τ_max > 0.
+    pub fn with_shear_limit(mut self, tau_max: f64) -> Result<Self, LawError> {
+        self.tau_max = finite_positive("shear limit τ_max", tau_max)?;
+        Ok(self)
+    }
+
+    /// Sets the allowable elastic slip γ_crit > 0 as an absolute length.
+    pub fn with_critical_slip_absolute(mut self, gamma_crit: f64) -> Result<Self, LawError> {
+        self.critical_slip =
+            CriticalSlip::Absolute(finite_positive("allowable elastic slip γ_crit", gamma_crit)?);
+        Ok(self)
+    }
+
+    /// Sets γ_crit as `tolerance` × characteristic length, tolerance > 0.
+    pub fn with_slip_tolerance(mut self, tolerance: f64) -> Result<Self, LawError> {
+        self.critical_slip =
+            CriticalSlip::Tolerance(finite_positive("slip tolerance", tolerance)?);
+        Ok(self)
+    }
+
+    /// Chooses how stick is enforced.
+    #[must_use]
+    pub fn with_stick(mut self, stick: StickMode) -> Self {
+        self.stick = stick;
+        self
+    }
+
+    /// The friction coefficient μ.
+    #[must_use]
+    pub fn mu(&self) -> f64 {
+        self.mu
+    }
+
+    /// The shear limit, if any.
+    #[must_use]
+    pub fn shear_limit(&self) -> Option<f64> {
+        self.tau_max.is_finite().then_some(self.tau_max)
+    }
+
+    /// How γ_crit is defined.
+    #[must_use]
+    pub fn critical_slip(&self) -> CriticalSlip {
+        self.critical_slip
+    }
+
+    /// How stick is enforced.
+    #[must_use]
+    pub fn stick(&self) -> StickMode {
+        self.stick
+    }
+
+    /// τ_crit = min(μp, τ_max) and ∂τ_crit/∂p. A negative pressure (a point that is barely
+    /// closed) carries no friction: τ_crit = 0. At p = 0 the derivative is the one from p > 0.
+    #[inline]
+    #[must_use]
+    pub fn critical_stress(&self, p: f64) -> (f64, f64) {
+        if p < 0.0 {
+            return (0.0, 0.0);
+        }
+        let mu_p = self.mu * p;
+        if mu_p >= self.tau_max {
+            (self.tau_max, 0.0)
+        } else {
+            (mu_p, self.mu)
+        }
+    }
+
+    /// γ_crit for a characteristic contact length.
+    pub fn critical_slip_for(&self, characteristic_length: f64) -> Result<f64, LawError> {
+        match self.critical_slip {
+            CriticalSlip::Absolute(g) => Ok(g),
+            CriticalSlip::Tolerance(t) => {
+                if characteristic_length.is_finite() && characteristic_length > 0.0 {
+                    Ok(t * characteristic_length)
+                } else {
+                    Err(LawError::Input(format!(
+                        "CHRLNGTH = {characteristic_length} but γ_crit is {t} × CHRLNGTH; give a \
+                         positive CHRLNGTH or an absolute γ_crit (PROPS(5) > 0)"
+                    )))
+                }
+            }
+        }
+    }
+
+    /// Integrates one increment (backward Euler) and returns the end-of-increment stress,
+    /// consistent tangents, energies and state.
+    pub fn update<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        state: &CoulombState,
+    ) -> Result<Update<N>, LawError> {
+        #[cfg(test)]
+        crate::testing::maybe_panic();
+        check_increment(inc, self.stick)?;
+        let contact = match self.stick {
+            StickMode::Rough => Contact::ExactStick,
+            StickMode::Elastic => {
+                let gamma_crit = self.critical_slip_for(inc.characteristic_length)?;
+                Contact::Motion(self.elastic_stick(inc, gamma_crit))
+            }
+            StickMode::Exact => {
+                let gamma_crit = self.critical_slip_for(inc.characteristic_length)?;
+                self.exact_stick(inc, gamma_crit)
+            }
+        };
+        let state = match &contact {
+            Contact::ExactStick => CoulombState {
+                accumulated_slip: state.accumulated_slip,
+                slip_rate: 0.0,
+                status: FrictionStatus::ExactStick,
+            },
+            Contact::Motion(t) => {
+                check_traction(t)?;
+                let slip = norm(&t.dslip);
+                CoulombState {
+                    accumulated_slip: state.accumulated_slip + slip,
+                    slip_rate: if inc.dtime > 0.0 { slip / inc.dtime } else { 0.0 },
+                    status: if slip > 0.0 {
+                        FrictionStatus::Slip
+                    } else {
+                        FrictionStatus::Stick
+                    },
+                }
+            }
+        };
+        Ok(Update {
+            contact,
+            state,
+            outcome: Outcome::CONVERGED,
+        })
+    }
+
+    /// Elastic stick with the backward-Euler return map (Eq. 5.2.3-2) and its consistent
+    /// linearization (Eq. 5.2.3-1 in stick, Eq. 5.2.3-3 in slip).
+    fn elastic_stick<const N: usize>(&self, inc: &Increment<N>, gamma_crit: f64) -> Traction<N> {
+        // Elastic slip at the start, from the start-of-increment stiffness: γ̄^el = τ̄/k_s(p − Δp).
+        let (tau_crit_start, _) = self.critical_stress(inc.pressure - inc.dpressure);
+        let elastic_start = if tau_crit_start > 0.0 {
+            scale(&inc.tau, gamma_crit / tau_crit_start)
+        } else {
+            [0.0; N]
+        };
+        // Elastic predictor γ^pr = γ̄^el + Δγ.
+        let predictor = add(&elastic_start, &inc.dgam);
+        let predictor_eq = norm(&predictor);
+        let (tau_crit, dtau_crit_dp) = self.critical_stress(inc.pressure);
+        let stiffness = tau_crit / gamma_crit;
+
+        if predictor_eq <= gamma_crit {
+            // Stick: τ = k_s γ^pr; dτ = k_s dγ + (τ/τ_crit)(∂τ_crit/∂p) dp (Eq. 5.2.3-1), written
+            // as γ^pr (∂τ_crit/∂p)/γ_crit so it stays right at p = 0.
+            Traction {
+                tau: scale(&predictor, stiffness),
+                ddtddg: diagonal(stiffness),
+                ddtddp: scale(&predictor, dtau_crit_dp / gamma_crit),
+                dslip: [0.0; N],
+                sed: 0.5 * stiffness * predictor_eq * predictor_eq,
+                sfd: 0.0,
+            }
+        } else {
+            // Slip: Δγ_eq^sl = γ_eq^pr − γ_crit, τ = n τ_crit (Eq. 5.2.3-2).
+            let n = scale(&predictor, 1.0 / predictor_eq);
+            let slip_eq = predictor_eq - gamma_crit;
+            Traction {
+                tau: scale(&n, tau_crit),
+                // Eq. 5.2.3-3: (δ_ij − n_i n_j) τ_crit/γ_eq^pr dγ_j + n_i ∂τ_crit/∂p dp.
+                ddtddg: transverse_projection(&n, tau_crit / predictor_eq),
+                ddtddp: scale(&n, dtau_crit_dp),
+                dslip: scale(&n, slip_eq),
+                // |τ|²/(2k_s) with |τ| = τ_crit.
+                sed: 0.5 * tau_crit * gamma_crit,
+                sfd: tau_crit * slip_eq,
+            }
+        }
+    }
+
+    /// Exact stick (Lagrange multipliers) with the seed's switching tests: a sticking point
+    /// whose Lagrange stress exceeds τ_crit starts to slip; a slipping point whose motion
+    /// reverses against the stress of the start of the increment sticks (Δγ_i τ_i(t) < 0).
+    fn exact_stick<const N: usize>(&self, inc: &Increment<N>, gamma_crit: f64) -> Contact<N> {
+        let (tau_crit, dtau_crit_dp) = self.critical_stress(inc.pressure);
+        let direction_source = match inc.entry {
+            EntryFlag::ExactStick => {
+                if norm(&inc.taulm) <= tau_crit {
+                    return Contact::ExactStick;
+                }
+                // Release: slip along the Lagrange stress, the direction the host pushes.
+                inc.taulm
+            }
+            EntryFlag::Motion => {
+                if dot(&inc.dgam, &inc.tau) < 0.0 {
+                    return Contact::ExactStick;
+                }
+                if norm(&inc.dgam) > 0.0 {
+                    inc.dgam
+                } else {
+                    inc.tau
+                }
+            }
+        };
+        let source_eq = norm(&direction_source);
+        let n = if source_eq > 0.0 {
+            scale(&direction_source, 1.0 / source_eq)
+        } else {
+            [0.0; N]
+        };
+        let slip_eq = norm(&inc.dgam);
+        let tau = scale(&n, tau_crit);
+        let floor = EXACT_STICK_TANGENT_FLOOR * gamma_crit;
+        Contact::Motion(Traction {
+            // Eq. 5.2.3-7: τ_i = τ_crit Δγ_i/Δγ_eq.
+            tau,
+            // Eq. 5.2.3-8.
+            ddtddg: transverse_projection(&n, tau_crit / slip_eq.max(floor)),
+            ddtddp: scale(&n, dtau_crit_dp),
+            // With exact stick every relative motion is slip.
+            dslip: inc.dgam,
+            sed: 0.0,
+            sfd: dot(&tau, &inc.dgam).max(0.0),
+        })
+    }
+}
+
+fn check_increment<const N: usize>(inc: &Increment<N>, stick: StickMode) -> Result<(), LawError> {
+    let bad = |what: &str| Err(LawError::Input(format!("{what} is NaN or infinite")));
+    if !inc.pressure.is_finite() {
+        return bad("PRESS");
+    }
+    if !inc.dpressure.is_finite() {
+        return bad("DPRESS");
+    }
+    if stick == StickMode::Rough {
+        return Ok(());
+    }
+    if !all_finite(&inc.dgam) {
+        return bad("DGAM");
+    }
+    if !all_finite(&inc.tau) {
+        return bad("TAU");
+    }
+    if stick == StickMode::Exact && inc.entry == EntryFlag::ExactStick && !all_finite(&inc.taulm) {
+        return bad("TAULM");
+    }
+    if !inc.dtime.is_finite() {
+        return bad("DTIME");
+    }
+    Ok(())
+}
+
+fn check_traction<const N: usize>(t: &Traction<N>) -> Result<(), LawError> {
+    let finite = all_finite(&t.tau)
+        && t.ddtddg.iter().all(all_finite)
+        && all_finite(&t.ddtddp)
+        && all_finite(&t.dslip)
+        && t.sed.is_finite()
+        && t.sfd.is_finite();
+    if finite {
+        Ok(())
+    } else {
+        Err(LawError::Numerical(
+            "the stress update overflowed (inputs too large for f64)".into(),
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn law() -> Coulomb {
+        Coulomb::new(0.5)
+            .and_then(|c| c.with_critical_slip_absolute(0.01))
+            .unwrap()
+    }
+
+    fn motion<const N: usize>(c: Contact<N>) -> Traction<N> {
+        match c {
+            Contact::Motion(t) => t,
+            Contact::ExactStick => panic!("expected LM = 0"),
+        }
+    }
+
+    #[test]
+    fn first_contact_gives_stick_stiffness_times_slip() {
+        // p = 10, μ = 0.5 → τ_crit = 5, k_s = 500; Δγ = 0.004 < γ_crit → τ = 2.
+        let inc = Increment::<1> {
+            dgam: [0.004],
+            pressure: 10.0,
+            dpressure: 10.0,
+            ..Increment::default()
+        };
+        let t = motion(law().update(&inc, &CoulombState::default()).unwrap().contact);
+        assert!((t.tau[0] - 2.0).abs() < 1e-14);
+        assert!((t.ddtddg[0][0] - 500.0).abs() < 1e-11);
+        // ∂τ/∂p = γ^pr μ/γ_crit = 0.004·0.5/0.01 = 0.2.
+        assert!((t.ddtddp[0] - 0.2).abs() < 1e-14);
+    }
+
+    #[test]
+    fn start_elastic_slip_uses_start_pressure() {
+        // Start: p = 10, τ = 2 → γ̄^el = 2/500 = 0.004. End: p = 20 (k_s = 1000), Δγ = 0.
+        // τ = 1000·0.004 = 4. Recovering γ̄^el with the end pressure would give τ = 2.
+        let inc = Increment::<1> {
+            tau: [2.0],
+            pressure: 20.0,
+            dpressure: 10.0,
+            ..Increment::default()
+        };
+        let t = motion(law().update(&inc, &CoulombState::default()).unwrap().contact);
+        assert!((t.tau[0] - 4.0).abs() < 1e-13);
+    }
+
+    #[test]
+    fn slip_sits_on_the_cone_and_dissipates() {
+        let inc = Increment::<2> {
+            dgam: [0.03, 0.04],
+            pressure: 10.0,
+            dpressure: 10.0,
+            ..Increment::default()
+        };
+        let up = law().update(&inc, &CoulombState::default()).unwrap();
+        let t = motion(up.contact);
+        // |γ^pr| = 0.05 → n = (0.6, 0.8), τ = 5 n, Δγ_eq^sl = 0.04, SFD = 5·0.04.
+        assert!((t.tau[0] - 3.0).abs() < 1e-14 && (t.tau[1] - 4.0).abs() < 1e-14);
+        assert!((t.sfd - 0.2).abs() < 1e-14);
+        assert!((up.state.accumulated_slip - 0.04).abs() < 1e-15);
+        assert_eq!(up.state.status, FrictionStatus::Slip);
+    }
+
+    #[test]
+    fn shear_limit_caps_and_zeroes_the_pressure_tangent() {
+        let l = law().with_shear_limit(3.0).unwrap();
+        let inc = Increment::<1> {
+            dgam: [1.0],
+            pressure: 10.0,
+            dpressure: 0.0,
+            ..Increment::default()
+        };
+        let t = motion(l.update(&inc, &CoulombState::default()).unwrap().contact);
+        assert_eq!(t.tau[0], 3.0);
+        assert_eq!(t.ddtddp[0], 0.0);
+    }
+
+    #[test]
+    fn exact_stick_switching() {
+        let l = law().with_stick(StickMode::Exact);
+        let stuck = Increment::<2> {
+            taulm: [3.0, 0.0],
+            pressure: 10.0,
+            entry: EntryFlag::ExactStick,
+            ..Increment::default()
+        };
+        let st = CoulombState::default();
+        assert_eq!(l.update(&stuck, &st).unwrap().contact, Contact::ExactStick);
+        // Lagrange stress 6 > τ_crit = 5, DGAM = 0: slip along TAULM, finite.
+        let release = Increment::<2> {
+            taulm: [0.0, -6.0],
+            ..stuck
+        };
+        let t = motion(l.update(&release, &st).unwrap().contact);
+        assert_eq!(t.tau, [0.0, -5.0]);
+        // Slipping, motion reverses against τ(t): stick again.
+        let reverse = Increment::<2> {
+            tau: [5.0, 0.0],
+            dgam: [-1e-3, 0.0],
+            pressure: 10.0,
+            ..Increment::default()
+        };
+        assert_eq!(l.update(&reverse, &st).unwrap().contact, Contact::ExactStick);
+    }
+
+    #[test]
+    fn rough_always_sticks() {
+        let l = law().with_stick(StickMode::Rough);
+        let inc = Increment::<1> {
+            dgam: [10.0],
+            pressure: 1.0,
+            ..Increment::default()
+        };
+        assert_eq!(
+            l.update(&inc, &CoulombState::default()).unwrap().contact,
+            Contact::ExactStick
+        );
+    }
+
+    #[test]
+    fn parameters_are_validated() {
+        assert!(Coulomb::new(-0.1).is_err());
+        assert!(Coulomb::new(f64::NAN).is_err());
+        assert!(law().with_shear_limit(0.0).is_err());
+        assert!(law().with_critical_slip_absolute(-1.0).is_err());
+        assert!(law().with_slip_tolerance(f64::INFINITY).is_err());
+    }
+
+    #[test]
+    fn statev_round_trip_and_short_array() {
+        let s = CoulombState {
+            accumulated_slip: 1.5,
+            slip_rate: 0.25,
+            status: FrictionStatus::Slip,
+        };
+        let mut v = [9.0; 4];
+        s.write_statev(&mut v);
+        assert_eq!(v[3], 9.0);
+        assert_eq!(CoulombState::from_statev(&v).unwrap(), s);
+        assert!(CoulombState::from_statev(&v[..2]).is_err());
+    }
+}

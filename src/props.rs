@@ -1,0 +1,150 @@
+//! The `PROPS` layouts of the Abaqus-style entry points: which entry means what, per law.
+//! This is the one place that turns the host's flat `PROPS(NPROPS)` array into typed, validated
+//! parameters; the table in `docs/props.md` documents the same layout for users.
+
+use crate::LawError;
+use crate::laws::coulomb::{Coulomb, StickMode};
+
+/// `PROPS(1)` code of the Coulomb family.
+pub const LAW_COULOMB: i32 = 1;
+
+/// Number of `PROPS` entries the Coulomb law reads (`PROPS(1..7)`); fewer may be given, the
+/// missing trailing entries take their documented defaults.
+pub const COULOMB_NPROPS: usize = 7;
+
+/// A law selected and parametrised by `PROPS`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FrictionLaw {
+    /// `PROPS(1) = 1`.
+    Coulomb(Coulomb),
+}
+
+/// Reads `PROPS(1)` (the law code) and the law's parameters.
+pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
+    let Some(&code) = props.first() else {
+        return Err(LawError::Parameter(
+            "NPROPS = 0: PROPS(1) must select a law (1 = Coulomb)".into(),
+        ));
+    };
+    if code == f64::from(LAW_COULOMB) {
+        coulomb(props).map(FrictionLaw::Coulomb)
+    } else if code.is_finite() && code.fract() == 0.0 {
+        Err(LawError::Parameter(format!(
+            "PROPS(1) = {code} is not a known law code (1 = Coulomb)"
+        )))
+    } else {
+        Err(LawError::Parameter(format!(
+            "PROPS(1) = {code} must be an integer law code (1 = Coulomb)"
+        )))
+    }
+}
+
+/// Coulomb layout: `PROPS(2)` μ, `PROPS(3)` μ₂ (0 → isotropic), `PROPS(4)` τ_max (0 → no limit),
+/// `PROPS(5)` γ_crit (0 → tolerance × CHRLNGTH), `PROPS(6)` slip tolerance (0 → 0.005),
+/// `PROPS(7)` stick mode (0 elastic, 1 exact, 2 rough).
+fn coulomb(props: &[f64]) -> Result<Coulomb, LawError> {
+    if props.len() < 2 {
+        return Err(LawError::Parameter(format!(
+            "NPROPS = {} but the Coulomb law needs at least 2 (PROPS(1) = 1, PROPS(2) = μ)",
+            props.len()
+        )));
+    }
+    let get = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
+    if let Some((i, v)) = props
+        .iter()
+        .enumerate()
+        .skip(COULOMB_NPROPS)
+        .find(|(_, v)| **v != 0.0)
+    {
+        return Err(LawError::Parameter(format!(
+            "PROPS({}) = {v} is not used by the Coulomb law (PROPS(1..{COULOMB_NPROPS})); \
+             refusing to ignore it",
+            i + 1
+        )));
+    }
+    let mu = get(2);
+    let mu2 = get(3);
+    let mut law = Coulomb::new(mu).map_err(|e| in_props(2, e))?;
+    if mu2 != 0.0 && mu2 != mu {
+        return Err(LawError::Parameter(format!(
+            "PROPS(3) = μ₂ = {mu2} differs from μ = {mu}: anisotropic friction is not \
+             available yet; give PROPS(3) = 0 for isotropic friction"
+        )));
+    }
+    let tau_max = get(4);
+    if tau_max != 0.0 {
+        law = law.with_shear_limit(tau_max).map_err(|e| in_props(4, e))?;
+    }
+    let gamma_crit = get(5);
+    let tolerance = get(6);
+    if tolerance != 0.0 {
+        law = law.with_slip_tolerance(tolerance).map_err(|e| in_props(6, e))?;
+    }
+    if gamma_crit != 0.0 {
+        law = law
+            .with_critical_slip_absolute(gamma_crit)
+            .map_err(|e| in_props(5, e))?;
+    }
+    let stick = match get(7) {
+        0.0 => StickMode::Elastic,
+        1.0 => StickMode::Exact,
+        2.0 => StickMode::Rough,
+        other => {
+            return Err(LawError::Parameter(format!(
+                "PROPS(7) = {other} must be the stick mode 0 (elastic), 1 (exact) or 2 (rough)"
+            )));
+        }
+    };
+    Ok(law.with_stick(stick))
+}
+
+fn in_props(index: usize, e: LawError) -> LawError {
+    match e {
+        LawError::Parameter(m) => LawError::Parameter(format!("PROPS({index}): {m}")),
+        other => other,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::laws::coulomb::CriticalSlip;
+
+    #[test]
+    fn minimal_props_take_defaults() {
+        let FrictionLaw::Coulomb(c) = friction_law(&[1.0, 0.3]).unwrap();
+        assert_eq!(c.mu(), 0.3);
+        assert_eq!(c.shear_limit(), None);
+        assert_eq!(c.critical_slip(), CriticalSlip::Tolerance(0.005));
+        assert_eq!(c.stick(), StickMode::Elastic);
+    }
+
+    #[test]
+    fn full_props() {
+        let FrictionLaw::Coulomb(c) =
+            friction_law(&[1.0, 0.3, 0.0, 7.0, 1e-3, 0.01, 1.0]).unwrap();
+        assert_eq!(c.shear_limit(), Some(7.0));
+        assert_eq!(c.critical_slip(), CriticalSlip::Absolute(1e-3));
+        assert_eq!(c.stick(), StickMode::Exact);
+    }
+
+    #[test]
+    fn bad_props_name_the_entry() {
+        for (props, needle) in [
+            (&[][..], "NPROPS = 0"),
+            (&[1.0][..], "NPROPS = 1"),
+            (&[3.0, 0.3][..], "PROPS(1) = 3"),
+            (&[1.5, 0.3][..], "integer"),
+            (&[1.0, -0.3][..], "PROPS(2)"),
+            (&[1.0, 0.3, 0.4][..], "PROPS(3)"),
+            (&[1.0, 0.3, 0.0, -1.0][..], "PROPS(4)"),
+            (&[1.0, 0.3, 0.0, 0.0, -1.0][..], "PROPS(5)"),
+            (&[1.0, 0.3, 0.0, 0.0, 0.0, -1.0][..], "PROPS(6)"),
+            (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 3.0][..], "PROPS(7)"),
+            (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0][..], "PROPS(8)"),
+        ] {
+            let e = friction_law(props).unwrap_err().to_string();
+            assert!(e.contains(needle), "{props:?}: {e}");
+        }
+    }
+}

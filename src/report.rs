@@ -1,0 +1,103 @@
+//! Error reporting shared by every entry point: one line per distinct cause to stderr (or the
+//! file named by `INTERFACIAL_LOG`), the last message of each thread kept for `ifl_last_error`,
+//! and `INTERFACIAL_STRICT=1` to abort on the first error.
+//!
+//! The only global mutable state of the library lives here: the set of causes already printed
+//! (a mutex, touched only on the error path) and the environment read once.
+
+use std::cell::RefCell;
+use std::collections::HashSet;
+use std::ffi::CString;
+use std::io::Write;
+use std::sync::{Mutex, OnceLock};
+
+/// Where a message comes from: the routine and what the host told us about the point.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Site {
+    /// Abaqus routine name, upper case (`FRIC`).
+    pub routine: &'static str,
+    /// Interaction name, blank-trimmed.
+    pub interaction: String,
+    /// "element 12, node 7, point 1", as far as the routine knows it.
+    pub place: String,
+}
+
+struct Settings {
+    log_file: Option<String>,
+    strict: bool,
+}
+
+fn settings() -> &'static Settings {
+    static SETTINGS: OnceLock<Settings> = OnceLock::new();
+    SETTINGS.get_or_init(|| Settings {
+        log_file: std::env::var("INTERFACIAL_LOG")
+            .ok()
+            .filter(|s| !s.is_empty()),
+        strict: std::env::var("INTERFACIAL_STRICT").is_ok_and(|v| v.trim() == "1"),
+    })
+}
+
+thread_local! {
+    static LAST_ERROR: RefCell<CString> = RefCell::new(CString::default());
+}
+
+/// Formats, records and (once per cause) prints a message. Returns the full message.
+pub(crate) fn report(site: &Site, cause: &str) -> String {
+    let message = format!(
+        "interfacial: {}: interaction '{}' ({}): {}",
+        site.routine, site.interaction, site.place, cause
+    );
+    set_last_error(&message);
+    // Once per (routine, interaction, cause): the same bad input at a million points is one
+    // line, not a million.
+    static SEEN: OnceLock<Mutex<HashSet<String>>> = OnceLock::new();
+    let key = format!("{}\u{1f}{}\u{1f}{}", site.routine, site.interaction, cause);
+    let first = SEEN
+        .get_or_init(|| Mutex::new(HashSet::new()))
+        .lock()
+        .map(|mut seen| seen.insert(key))
+        // A poisoned set still reports: better a repeated line than a lost one.
+        .unwrap_or(true);
+    let s = settings();
+    if first {
+        emit(s, &message);
+    }
+    if s.strict {
+        emit(s, "interfacial: INTERFACIAL_STRICT=1, aborting on the first error");
+        std::process::abort();
+    }
+    message
+}
+
+fn emit(s: &Settings, line: &str) {
+    if let Some(path) = &s.log_file {
+        let written = std::fs::OpenOptions::new()
+            .create(true)
+            .append(true)
+            .open(path)
+            .and_then(|mut f| writeln!(f, "{line}"));
+        if written.is_ok() {
+            return;
+        }
+        let _ = writeln!(
+            std::io::stderr(),
+            "interfacial: cannot write INTERFACIAL_LOG={path}; reporting to stderr"
+        );
+    }
+    let _ = writeln!(std::io::stderr(), "{line}");
+}
+
+pub(crate) fn set_last_error(message: &str) {
+    // Interior NULs cannot come from our own messages, but a host's names could hold one.
+    let c = CString::new(message.replace('\0', " ")).unwrap_or_default();
+    LAST_ERROR.with(|e| *e.borrow_mut() = c);
+}
+
+pub(crate) fn clear_last_error() {
+    LAST_ERROR.with(|e| *e.borrow_mut() = CString::default());
+}
+
+/// Runs `f` on the calling thread's last message (empty when there is none).
+pub(crate) fn with_last_error<R>(f: impl FnOnce(&CString) -> R) -> R {
+    LAST_ERROR.with(|e| f(&e.borrow()))
+}

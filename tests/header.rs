@@ -1,0 +1,88 @@
+//! The checked-in C header must be exactly what cbindgen generates from the sources, and the
+//! exported functions must have the signatures of `shared/design/abi.md`.
+
+use std::ffi::{c_char, c_int};
+use std::path::Path;
+
+#[test]
+fn header_is_up_to_date() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let config = cbindgen::Config::from_file(root.join("cbindgen.toml")).expect("cbindgen.toml");
+    let mut generated = Vec::new();
+    cbindgen::Builder::new()
+        .with_crate(root)
+        .with_config(config)
+        .generate()
+        .expect("cbindgen failed")
+        .write(&mut generated);
+    let path = root.join("include/interfacial.h");
+    if std::env::var_os("INTERFACIAL_BLESS").is_some() {
+        std::fs::write(&path, &generated).expect("write header");
+        return;
+    }
+    let on_disk = std::fs::read(&path).unwrap_or_default();
+    assert!(
+        on_disk == generated,
+        "include/interfacial.h is stale; regenerate it with:\n    INTERFACIAL_BLESS=1 cargo test --test header"
+    );
+}
+
+/// The Rust side of the prototype check: each export coerces to the function-pointer type
+/// written by hand from abi.md (Fortran: everything by reference, int = INTEGER, hidden
+/// `size_t` lengths last). The C side (`c_tests/abi_prototypes.c`) redeclares the same
+/// prototypes after including the header, which fails to compile on any mismatch.
+#[test]
+fn exports_have_the_abaqus_signatures() {
+    type I = *const c_int;
+    type R = *const f64;
+    type S = *const c_char;
+    type Fric = unsafe extern "C" fn(
+        *mut c_int, // LM
+        *mut f64,   // TAU
+        *mut f64,   // DDTDDG
+        *mut f64,   // DDTDDP
+        *mut f64,   // DSLIP
+        *mut f64,   // SED
+        *mut f64,   // SFD
+        *mut f64,   // DDTDDT
+        *mut f64,   // PNEWDT
+        *mut f64,   // STATEV
+        R,          // DGAM
+        R,          // TAULM
+        R,          // PRESS
+        R,          // DPRESS
+        R,          // DDPDDH
+        R,          // SLIP
+        I,          // KSTEP
+        I,          // KINC
+        R,          // TIME
+        R,          // DTIME
+        I,          // NOEL
+        S,          // CINAME
+        S,          // SLNAME
+        S,          // MSNAME
+        I,          // NPT
+        I,          // NODE
+        I,          // NPATCH
+        R,          // COORDS
+        R,          // RCOORD
+        R,          // DROT
+        R,          // TEMP
+        R,          // PREDEF
+        I,          // NFDIR
+        I,          // MCRD
+        I,          // NPRED
+        I,          // NSTATV
+        R,          // CHRLNGTH
+        R,          // PROPS
+        I,          // NPROPS
+        usize,      // len(CINAME)
+        usize,      // len(SLNAME)
+        usize,      // len(MSNAME)
+    );
+    let _: Fric = interfacial::abi::fric_;
+    let _: extern "C" fn() -> *const c_char = interfacial::abi::ifl_version;
+    let _: extern "C" fn() -> *const c_char = interfacial::abi::ifl_last_error;
+    let _: unsafe extern "C" fn(*mut c_char, usize) -> usize = interfacial::abi::ifl_last_error_copy;
+    let _: extern "C" fn() = interfacial::abi::ifl_clear_error;
+}
