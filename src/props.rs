@@ -78,7 +78,9 @@ fn coulomb(props: &[f64]) -> Result<Coulomb, LawError> {
     let gamma_crit = get(5);
     let tolerance = get(6);
     if tolerance != 0.0 {
-        law = law.with_slip_tolerance(tolerance).map_err(|e| in_props(6, e))?;
+        law = law
+            .with_slip_tolerance(tolerance)
+            .map_err(|e| in_props(6, e))?;
     }
     if gamma_crit != 0.0 {
         law = law
@@ -121,8 +123,7 @@ mod tests {
 
     #[test]
     fn full_props() {
-        let FrictionLaw::Coulomb(c) =
-            friction_law(&[1.0, 0.3, 0.0, 7.0, 1e-3, 0.01, 1.0]).unwrap();
+        let FrictionLaw::Coulomb(c) = friction_law(&[1.0, 0.3, 0.0, 7.0, 1e-3, 0.01, 1.0]).unwrap();
         assert_eq!(c.shear_limit(), Some(7.0));
         assert_eq!(c.critical_slip(), CriticalSlip::Absolute(1e-3));
         assert_eq!(c.stick(), StickMode::Exact);

@@ -63,7 +63,10 @@ pub(crate) fn report(site: &Site, cause: &str) -> String {
         emit(s, &message);
     }
     if s.strict {
-        emit(s, "interfacial: INTERFACIAL_STRICT=1, aborting on the first error");
+        emit(
+            s,
+            "interfacial: INTERFACIAL_STRICT=1, aborting on the first error",
+        );
         std::process::abort();
     }
     message

@@ -83,6 +83,7 @@ fn exports_have_the_abaqus_signatures() {
     let _: Fric = interfacial::abi::fric_;
     let _: extern "C" fn() -> *const c_char = interfacial::abi::ifl_version;
     let _: extern "C" fn() -> *const c_char = interfacial::abi::ifl_last_error;
-    let _: unsafe extern "C" fn(*mut c_char, usize) -> usize = interfacial::abi::ifl_last_error_copy;
+    let _: unsafe extern "C" fn(*mut c_char, usize) -> usize =
+        interfacial::abi::ifl_last_error_copy;
     let _: extern "C" fn() = interfacial::abi::ifl_clear_error;
 }

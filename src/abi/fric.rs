@@ -3,7 +3,8 @@
 use std::ffi::{c_char, c_int};
 
 use super::{
-    boundary, fortran_string, read, read_array, slice, write, write_array, write_matrix, write_zeros,
+    boundary, fortran_string, read, read_array, slice, write, write_array, write_matrix,
+    write_zeros,
 };
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
 use crate::props::{FrictionLaw, friction_law};
@@ -88,7 +89,9 @@ pub unsafe extern "C" fn fric_(
     msname_len: usize,
 ) {
     // Not read by the Coulomb law (see the doc comment for DROT).
-    let _ = (ddpddh, slip, kstep, kinc, time, npatch, coords, rcoord, drot, temp, predef);
+    let _ = (
+        ddpddh, slip, kstep, kinc, time, npatch, coords, rcoord, drot, temp, predef,
+    );
     let _ = (mcrd, npred, slname, msname, slname_len, msname_len);
     let args = FricArgs {
         lm,

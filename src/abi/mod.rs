@@ -12,6 +12,7 @@ use crate::LawError;
 use crate::report::{Site, report};
 
 pub mod fric;
+pub mod host;
 pub mod native;
 
 pub use fric::fric_;
@@ -85,7 +86,11 @@ pub(crate) unsafe fn read_array<const N: usize>(
 /// `p` is NULL or points to `len` readable `f64` that outlive the borrow and are not written
 /// through another pointer meanwhile.
 #[inline]
-pub(crate) unsafe fn slice<'a>(p: *const f64, len: usize, name: &str) -> Result<&'a [f64], LawError> {
+pub(crate) unsafe fn slice<'a>(
+    p: *const f64,
+    len: usize,
+    name: &str,
+) -> Result<&'a [f64], LawError> {
     if len == 0 {
         Ok(&[])
     } else if p.is_null() {
@@ -169,4 +174,34 @@ pub(crate) unsafe fn fortran_string(p: *const c_char, len: usize) -> String {
         .rposition(|b| *b != b' ' && *b != 0)
         .map_or(0, |i| i + 1);
     String::from_utf8_lossy(&bytes[..end]).into_owned()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::host::FricCall;
+    use crate::CUTBACK_RATIO;
+    use crate::testing::force_panic;
+
+    #[test]
+    fn a_panic_in_the_core_becomes_a_cut_back() {
+        let mut c = FricCall::new(2, &[1.0, 0.3, 0.0, 0.0, 1e-3]);
+        c.press = 100.0;
+        c.tau = [1.0, 2.0, c.tau[2], c.tau[3]];
+        c.dgam[0] = 1e-4;
+        c.statev[..3].copy_from_slice(&[0.5, 0.0, 1.0]);
+        force_panic(true);
+        c.call();
+        force_panic(false);
+        assert_eq!(c.pnewdt, CUTBACK_RATIO);
+        assert_eq!(&c.tau[..2], &[1.0, 2.0]);
+        assert_eq!(&c.statev[..3], &[0.5, 0.0, 1.0]);
+        assert!(c.guards_intact());
+        let msg = FricCall::last_error();
+        assert!(msg.contains("FRIC") && msg.contains("panic"), "{msg}");
+        // The library keeps working on this thread afterwards.
+        c.pnewdt = 1e36;
+        c.call();
+        assert_eq!(c.pnewdt, 1e36);
+        assert_eq!(c.lm, 0);
+    }
 }

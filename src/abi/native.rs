@@ -7,12 +7,11 @@ use crate::report::{clear_last_error, with_last_error};
 /// The library version as a NUL-terminated string, e.g. `"0.1.0"`. Static storage: never free it.
 #[unsafe(no_mangle)]
 pub extern "C" fn ifl_version() -> *const c_char {
-    const VERSION: &CStr = match CStr::from_bytes_with_nul(
-        concat!(env!("CARGO_PKG_VERSION"), "\0").as_bytes(),
-    ) {
-        Ok(v) => v,
-        Err(_) => c"unknown",
-    };
+    const VERSION: &CStr =
+        match CStr::from_bytes_with_nul(concat!(env!("CARGO_PKG_VERSION"), "\0").as_bytes()) {
+            Ok(v) => v,
+            Err(_) => c"unknown",
+        };
     VERSION.as_ptr()
 }
 

@@ -243,15 +243,16 @@ impl Coulomb {
 
     /// Sets the allowable elastic slip γ_crit > 0 as an absolute length.
     pub fn with_critical_slip_absolute(mut self, gamma_crit: f64) -> Result<Self, LawError> {
-        self.critical_slip =
-            CriticalSlip::Absolute(finite_positive("allowable elastic slip γ_crit", gamma_crit)?);
+        self.critical_slip = CriticalSlip::Absolute(finite_positive(
+            "allowable elastic slip γ_crit",
+            gamma_crit,
+        )?);
         Ok(self)
     }
 
     /// Sets γ_crit as `tolerance` × characteristic length, tolerance > 0.
     pub fn with_slip_tolerance(mut self, tolerance: f64) -> Result<Self, LawError> {
-        self.critical_slip =
-            CriticalSlip::Tolerance(finite_positive("slip tolerance", tolerance)?);
+        self.critical_slip = CriticalSlip::Tolerance(finite_positive("slip tolerance", tolerance)?);
         Ok(self)
     }
 
@@ -351,7 +352,11 @@ impl Coulomb {
                 let slip = norm(&t.dslip);
                 CoulombState {
                     accumulated_slip: state.accumulated_slip + slip,
-                    slip_rate: if inc.dtime > 0.0 { slip / inc.dtime } else { 0.0 },
+                    slip_rate: if inc.dtime > 0.0 {
+                        slip / inc.dtime
+                    } else {
+                        0.0
+                    },
                     status: if slip > 0.0 {
                         FrictionStatus::Slip
                     } else {
@@ -526,7 +531,12 @@ mod tests {
             dpressure: 10.0,
             ..Increment::default()
         };
-        let t = motion(law().update(&inc, &CoulombState::default()).unwrap().contact);
+        let t = motion(
+            law()
+                .update(&inc, &CoulombState::default())
+                .unwrap()
+                .contact,
+        );
         assert!((t.tau[0] - 2.0).abs() < 1e-14);
         assert!((t.ddtddg[0][0] - 500.0).abs() < 1e-11);
         // ∂τ/∂p = γ^pr μ/γ_crit = 0.004·0.5/0.01 = 0.2.
@@ -543,7 +553,12 @@ mod tests {
             dpressure: 10.0,
             ..Increment::default()
         };
-        let t = motion(law().update(&inc, &CoulombState::default()).unwrap().contact);
+        let t = motion(
+            law()
+                .update(&inc, &CoulombState::default())
+                .unwrap()
+                .contact,
+        );
         assert!((t.tau[0] - 4.0).abs() < 1e-13);
     }
 
@@ -603,7 +618,10 @@ mod tests {
             pressure: 10.0,
             ..Increment::default()
         };
-        assert_eq!(l.update(&reverse, &st).unwrap().contact, Contact::ExactStick);
+        assert_eq!(
+            l.update(&reverse, &st).unwrap().contact,
+            Contact::ExactStick
+        );
     }
 
     #[test]

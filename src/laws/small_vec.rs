@@ -6,11 +6,7 @@
 #[inline]
 #[must_use]
 pub(crate) fn norm<const N: usize>(v: &[f64; N]) -> f64 {
-    if N == 1 {
-        v[0].abs()
-    } else {
-        dot(v, v).sqrt()
-    }
+    if N == 1 { v[0].abs() } else { dot(v, v).sqrt() }
 }
 
 #[inline]

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Every test: formatting and lints, the Rust tests, then the C and Fortran harnesses (CTest).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/deps.sh
+echo "== cargo fmt / clippy"
+cargo fmt --all -- --check
+cargo clippy --locked --all-targets -- -D warnings
+echo "== Rust tests"
+cargo test --locked
+echo "== C and Fortran harnesses"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j2
+ctest --test-dir build --output-on-failure -j2
