@@ -1,6 +1,8 @@
 //! DDTDDG and DDTDDP against central finite differences of TAU, through `fric_`, over random
 //! states in every branch: elastic stick, slip, the τ_max cap, exact-stick slip; NFDIR 1 and 2.
 
+#![allow(clippy::needless_range_loop)] // index loops mirror the a, b indices of the equations
+
 use interfacial::abi::host::FricCall;
 use proptest::prelude::*;
 
