@@ -143,9 +143,11 @@ impl FricCall {
         call
     }
 
-    /// Fills every output entry past NFDIR (or NFDIR², 2·NFDIR) with [`GUARD`].
+    /// Fills every output entry past NFDIR (or NFDIR², 2·NFDIR, NSTATV) with [`GUARD`].
     pub fn set_guards(&mut self) {
         let n = self.nfdir.clamp(0, 3) as usize;
+        let ns = (self.nstatv.max(0) as usize).min(self.statev.len());
+        self.statev[ns..].fill(GUARD);
         self.tau[n..].fill(GUARD);
         self.ddtddg[n * n..].fill(GUARD);
         self.ddtddp[n..].fill(GUARD);

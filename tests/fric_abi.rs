@@ -1,0 +1,388 @@
+//! `fric_` as a host sees it: what is written, what is left alone, and every documented bad
+//! input (contract.md, "Errors and bad input").
+
+use interfacial::CUTBACK_RATIO;
+use interfacial::abi::host::{FricCall, GUARD};
+
+const MU: f64 = 0.3;
+const P: f64 = 100.0;
+const GAMMA_CRIT: f64 = 1e-3;
+
+fn good(nfdir: i32) -> FricCall {
+    let mut c = FricCall::new(nfdir, &[1.0, MU, 0.0, 0.0, GAMMA_CRIT]);
+    c.press = P;
+    c.dpress = 0.0;
+    c.tau[0] = 10.0;
+    c.dgam[0] = 2e-4;
+    c.statev[..3].copy_from_slice(&[0.25, 0.0, 0.0]);
+    c
+}
+
+#[test]
+fn first_contact_is_stick_stiffness_times_slip() {
+    for nfdir in [1, 2] {
+        let mut c = FricCall::new(nfdir, &[1.0, MU, 0.0, 0.0, GAMMA_CRIT]);
+        c.press = P;
+        c.dpress = P;
+        c.dgam[0] = 4e-4;
+        if nfdir == 2 {
+            c.dgam[1] = -3e-4;
+        }
+        c.call();
+        let ks = MU * P / GAMMA_CRIT;
+        assert_eq!(c.lm, 0);
+        assert!((c.tau[0] - ks * 4e-4).abs() < 1e-12);
+        if nfdir == 2 {
+            assert!((c.tau[1] + ks * 3e-4).abs() < 1e-12);
+        }
+        assert!(c.guards_intact());
+        assert_eq!(c.pnewdt, 1e36);
+    }
+}
+
+#[test]
+fn drot_is_not_read() {
+    // The host rotates TAU itself and the law keeps no vector state, so DROT changes nothing.
+    let mut a = good(2);
+    a.tau[1] = -5.0;
+    a.dgam[1] = 7e-4;
+    let mut b = a.clone();
+    let (s, c) = (0.5f64.sin(), 0.5f64.cos());
+    b.drot = [c, s, -s, c];
+    a.call();
+    b.call();
+    assert_eq!(a.tau, b.tau);
+    assert_eq!(a.ddtddg, b.ddtddg);
+    assert_eq!(a.statev, b.statev);
+}
+
+#[test]
+fn lm_2_on_entry_writes_nothing() {
+    let mut c = good(2);
+    c.lm = 2;
+    c.tau = [GUARD; 4];
+    c.ddtddg = [GUARD; 10];
+    c.sed = GUARD;
+    c.sfd = GUARD;
+    c.statev.fill(GUARD);
+    let before = c.clone();
+    c.call();
+    assert_eq!(c.lm, 2);
+    assert_eq!(c.tau, before.tau);
+    assert_eq!(c.ddtddg, before.ddtddg);
+    assert_eq!((c.sed, c.sfd), (GUARD, GUARD));
+    assert_eq!(c.statev, before.statev);
+    assert_eq!(c.pnewdt, 1e36);
+}
+
+#[test]
+fn inputs_are_never_written() {
+    let mut c = good(2);
+    c.lm = 0;
+    let before = c.clone();
+    c.call();
+    assert_eq!(c.dgam, before.dgam);
+    assert_eq!(c.props, before.props);
+    assert_eq!(
+        (c.press, c.dpress, c.chrlngth),
+        (before.press, before.dpress, before.chrlngth)
+    );
+    assert_eq!(c.drot, before.drot);
+}
+
+/// One bad input: how to break a good call, and a word the message must contain.
+struct Case {
+    what: &'static str,
+    nfdir: i32,
+    spoil: fn(&mut FricCall),
+    word: &'static str,
+}
+
+fn cases() -> Vec<Case> {
+    vec![
+        Case {
+            what: "NFDIR 0",
+            nfdir: 0,
+            spoil: |_| {},
+            word: "NFDIR = 0",
+        },
+        Case {
+            what: "NFDIR 3",
+            nfdir: 3,
+            spoil: |_| {},
+            word: "NFDIR = 3",
+        },
+        Case {
+            what: "NPROPS 0",
+            nfdir: 2,
+            spoil: |c| c.nprops = 0,
+            word: "NPROPS = 0",
+        },
+        Case {
+            what: "NPROPS 1",
+            nfdir: 2,
+            spoil: |c| c.nprops = 1,
+            word: "NPROPS = 1",
+        },
+        Case {
+            what: "NPROPS < 0",
+            nfdir: 2,
+            spoil: |c| c.nprops = -4,
+            word: "NPROPS = -4",
+        },
+        Case {
+            what: "unknown law",
+            nfdir: 2,
+            spoil: |c| c.props[0] = 3.0,
+            word: "PROPS(1) = 3",
+        },
+        Case {
+            what: "non-integer law",
+            nfdir: 2,
+            spoil: |c| c.props[0] = 1.5,
+            word: "integer",
+        },
+        Case {
+            what: "NaN law",
+            nfdir: 2,
+            spoil: |c| c.props[0] = f64::NAN,
+            word: "PROPS(1)",
+        },
+        Case {
+            what: "μ < 0",
+            nfdir: 2,
+            spoil: |c| c.props[1] = -0.1,
+            word: "PROPS(2)",
+        },
+        Case {
+            what: "μ NaN",
+            nfdir: 1,
+            spoil: |c| c.props[1] = f64::NAN,
+            word: "PROPS(2)",
+        },
+        Case {
+            what: "anisotropic",
+            nfdir: 2,
+            spoil: |c| c.props[2] = 0.5,
+            word: "PROPS(3)",
+        },
+        Case {
+            what: "τ_max < 0",
+            nfdir: 2,
+            spoil: |c| c.props[3] = -1.0,
+            word: "PROPS(4)",
+        },
+        Case {
+            what: "γ_crit < 0",
+            nfdir: 2,
+            spoil: |c| c.props[4] = -1.0,
+            word: "PROPS(5)",
+        },
+        Case {
+            what: "stick mode 5",
+            nfdir: 2,
+            spoil: |c| {
+                c.props.resize(7, 0.0);
+                c.props[6] = 5.0;
+                c.nprops = 7;
+            },
+            word: "PROPS(7)",
+        },
+        Case {
+            what: "PROPS(8) set",
+            nfdir: 2,
+            spoil: |c| {
+                c.props.resize(8, 0.0);
+                c.props[7] = 1.0;
+                c.nprops = 8;
+            },
+            word: "PROPS(8)",
+        },
+        Case {
+            what: "NSTATV 2",
+            nfdir: 2,
+            spoil: |c| c.nstatv = 2,
+            word: "NSTATV = 2",
+        },
+        Case {
+            what: "NSTATV < 0",
+            nfdir: 1,
+            spoil: |c| c.nstatv = -1,
+            word: "NSTATV = -1",
+        },
+        Case {
+            what: "CHRLNGTH 0",
+            nfdir: 2,
+            spoil: |c| {
+                c.props[4] = 0.0;
+                c.chrlngth = 0.0;
+            },
+            word: "CHRLNGTH",
+        },
+        Case {
+            what: "LM 7",
+            nfdir: 2,
+            spoil: |c| c.lm = 7,
+            word: "LM = 7",
+        },
+        Case {
+            what: "STATEV NaN",
+            nfdir: 2,
+            spoil: |c| c.statev[0] = f64::NAN,
+            word: "STATEV",
+        },
+        Case {
+            what: "overflow",
+            nfdir: 2,
+            spoil: |c| {
+                c.press = 1e308;
+                c.props[1] = 10.0;
+            },
+            word: "overflow",
+        },
+    ]
+}
+
+/// Runs a bad call and checks the documented safe outputs.
+fn check_refused(mut c: FricCall, what: &str, word: &str) {
+    c.set_guards();
+    let before = c.clone();
+    c.call();
+    assert_eq!(c.pnewdt, CUTBACK_RATIO, "{what}: PNEWDT");
+    assert_eq!(c.lm, before.lm, "{what}: LM");
+    let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    assert_eq!(bits(&c.tau), bits(&before.tau), "{what}: TAU");
+    assert_eq!(bits(&c.statev), bits(&before.statev), "{what}: STATEV");
+    assert!(c.guards_intact(), "{what}: guards");
+    let msg = FricCall::last_error();
+    assert!(
+        msg.contains("FRIC") && msg.contains("'SI1'") && msg.contains(word),
+        "{what}: message {msg:?} should name FRIC, the interaction and {word:?}"
+    );
+    for (i, x) in c.ddtddg.iter().enumerate() {
+        assert!(!x.is_nan(), "{what}: DDTDDG[{i}] is NaN");
+    }
+}
+
+#[test]
+fn every_bad_input_is_refused_cleanly() {
+    for case in cases() {
+        let mut c = good(case.nfdir);
+        c.nfdir = case.nfdir;
+        (case.spoil)(&mut c);
+        check_refused(c, case.what, case.word);
+    }
+}
+
+#[test]
+fn non_finite_inputs_are_refused_cleanly() {
+    type Spoil = fn(&mut FricCall, f64);
+    let spoilers: [(i32, Spoil, &str); 4] = [
+        (1, |c, x| c.press = x, "PRESS"),
+        (2, |c, x| c.dpress = x, "DPRESS"),
+        (2, |c, x| c.dgam[1] = x, "DGAM"),
+        (1, |c, x| c.tau[0] = x, "TAU"),
+    ];
+    for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        for (nfdir, spoil, word) in spoilers {
+            let mut c = good(nfdir);
+            spoil(&mut c, bad);
+            check_refused(c, &format!("{word} = {bad}"), word);
+        }
+    }
+}
+
+#[test]
+fn taulm_is_checked_only_when_used() {
+    // Exact stick, stuck on entry: a NaN Lagrange stress is refused…
+    let mut c = good(2);
+    c.props.resize(7, 0.0);
+    c.props[6] = 1.0;
+    c.nprops = 7;
+    c.lm = 1;
+    c.taulm = [f64::NAN, 0.0, 0.0];
+    check_refused(c.clone(), "TAULM NaN", "TAULM");
+    // …but with LM = 0 on entry TAULM is not read at all.
+    c.lm = 0;
+    c.pnewdt = 1e36;
+    c.call();
+    assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+}
+
+#[test]
+fn short_names_are_read_only_up_to_their_hidden_length() {
+    // An old CHARACTER*8 caller: the hidden length is 8; the bytes after it are not ours.
+    let mut c = good(2);
+    c.ciname = "SI1     GARBAGE!".into();
+    c.name_len = 8;
+    c.nstatv = 2;
+    check_refused(c.clone(), "CHARACTER*8", "NSTATV");
+    assert!(!FricCall::last_error().contains("GARBAGE"));
+    // All blanks: an empty interaction name, still one clear message.
+    c.ciname = String::new();
+    c.name_len = 80;
+    c.call();
+    assert!(FricCall::last_error().contains("interaction ''"));
+}
+
+#[test]
+fn a_good_call_after_a_bad_one_works() {
+    let mut c = good(2);
+    c.props[1] = -1.0;
+    c.call();
+    assert_eq!(c.pnewdt, CUTBACK_RATIO);
+    c.props[1] = MU;
+    c.pnewdt = 1e36;
+    c.call();
+    assert_eq!(c.pnewdt, 1e36);
+    assert_eq!(c.lm, 0);
+    // τ̄ = 10 → γ̄_el = 10/3e4; + Δγ = 2e-4 → stick, τ = 3e4·(10/3e4 + 2e-4) = 16.
+    assert!((c.tau[0] - 16.0).abs() < 1e-12);
+}
+
+#[test]
+fn results_do_not_depend_on_the_number_of_threads() {
+    let points: Vec<FricCall> = (0..400)
+        .map(|i| {
+            let mut c = good(2);
+            let x = f64::from(i) / 400.0;
+            c.dgam = [3e-3 * (x - 0.4), 2e-3 * (0.7 - x) * x, 0.0];
+            c.dpress = 30.0 * x - 10.0;
+            c
+        })
+        .collect();
+    let serial: Vec<FricCall> = points
+        .iter()
+        .map(|p| {
+            let mut c = p.clone();
+            c.call();
+            c
+        })
+        .collect();
+    let parallel: Vec<FricCall> = std::thread::scope(|s| {
+        let handles: Vec<_> = points
+            .chunks(50)
+            .map(|chunk| {
+                s.spawn(move || {
+                    chunk
+                        .iter()
+                        .map(|p| {
+                            let mut c = p.clone();
+                            c.call();
+                            c
+                        })
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .flat_map(|h| h.join().unwrap())
+            .collect()
+    });
+    for (a, b) in serial.iter().zip(&parallel) {
+        assert_eq!(a.tau.map(f64::to_bits), b.tau.map(f64::to_bits));
+        assert_eq!(a.ddtddg.map(f64::to_bits), b.ddtddg.map(f64::to_bits));
+        assert_eq!(a.statev, b.statev);
+    }
+}
