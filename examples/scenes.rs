@@ -1,0 +1,363 @@
+//! The main job: the friction scenes of `shared/design/scenes.md` driven increment by increment
+//! through `fric_` (the same entry point a Fortran host calls), each compared with its closed-form
+//! answer. Prints one row per checked quantity and exits non-zero if any error exceeds its
+//! tolerance.
+//!
+//!     cargo run --release --example scenes
+
+use interfacial::abi::host::FricCall;
+
+const MU: f64 = 0.3;
+const P: f64 = 100.0;
+const GAMMA_CRIT: f64 = 1e-3;
+const TAU_MAX: f64 = 20.0;
+
+struct Row {
+    scene: &'static str,
+    case: String,
+    quantity: &'static str,
+    exact: f64,
+    computed: f64,
+    tolerance: f64,
+}
+
+impl Row {
+    fn error(&self) -> f64 {
+        (self.computed - self.exact).abs()
+    }
+    fn ok(&self) -> bool {
+        self.error() <= self.tolerance
+    }
+}
+
+/// PROPS for the Coulomb law: γ_crit absolute or from the default tolerance × CHRLNGTH.
+fn props(gamma_from_chrlngth: bool, tau_max: f64, stick: f64) -> Vec<f64> {
+    let gc = if gamma_from_chrlngth { 0.0 } else { GAMMA_CRIT };
+    vec![1.0, MU, 0.0, tau_max, gc, 0.0, stick]
+}
+
+/// A quasi-static host increment: pass the converged stress and state, the motion and pressure
+/// increments, take the answer as converged (FRIC is explicit in the imposed motion here).
+fn step(c: &mut FricCall, dgam: &[f64], p_end: f64, p_start: f64) {
+    c.dgam[..dgam.len()].copy_from_slice(dgam);
+    c.press = p_end;
+    c.dpress = p_end - p_start;
+    c.pnewdt = 1e36;
+    c.call();
+    assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+}
+
+/// F1: pull to plateau and back, NFDIR 1 and 2, γ_crit from PROPS(5) or CHRLNGTH, with and
+/// without τ_max.
+fn f1(rows: &mut Vec<Row>) {
+    for nfdir in [1usize, 2] {
+        for from_chrlngth in [false, true] {
+            for tau_max in [0.0, TAU_MAX] {
+                let mut c = FricCall::new(nfdir as i32, &props(from_chrlngth, tau_max, 0.0));
+                // 0.005 × 0.2 = 1e-3: the same γ_crit either way.
+                c.chrlngth = 0.2;
+                let dir: Vec<f64> = if nfdir == 1 {
+                    vec![1.0]
+                } else {
+                    vec![30f64.to_radians().cos(), 30f64.to_radians().sin()]
+                };
+                let tau_c = if tau_max > 0.0 {
+                    (MU * P).min(tau_max)
+                } else {
+                    MU * P
+                };
+                let ks = tau_c / GAMMA_CRIT;
+                let per_gc = 10;
+                let ds = GAMMA_CRIT / f64::from(per_gc);
+                // Path: s = 0 → 20γc (loading), 20γc → −20γc (unloading, reversed plateau).
+                let mut s = 0.0f64;
+                let mut max_err = 0.0f64;
+                let mut sfd_sum = 0.0;
+                let mut sfd_min = f64::INFINITY;
+                for k in 0..(60 * per_gc) {
+                    let sign = if k < 20 * per_gc { 1.0 } else { -1.0 };
+                    s += sign * ds;
+                    let dg: Vec<f64> = dir.iter().map(|d| d * sign * ds).collect();
+                    step(&mut c, &dg, P, P);
+                    // Closed form along the path (elastic-perfectly-plastic in s).
+                    let exact = if k < 20 * per_gc {
+                        (ks * s).min(tau_c)
+                    } else {
+                        (tau_c - ks * (20.0 * GAMMA_CRIT - s)).max(-tau_c)
+                    };
+                    let along: f64 = (0..nfdir).map(|i| c.tau[i] * dir[i]).sum();
+                    max_err = max_err.max((along - exact).abs());
+                    sfd_sum += c.sfd;
+                    sfd_min = sfd_min.min(c.sfd);
+                }
+                let case = format!(
+                    "NFDIR={nfdir} γc from {}{}",
+                    if from_chrlngth {
+                        "CHRLNGTH"
+                    } else {
+                        "PROPS(5)"
+                    },
+                    if tau_max > 0.0 { ", τ_max" } else { "" }
+                );
+                let tol = 1e-9 * tau_c;
+                rows.push(Row {
+                    scene: "F1",
+                    case: case.clone(),
+                    quantity: "max |τ − τ_exact| on path",
+                    exact: 0.0,
+                    computed: max_err,
+                    tolerance: tol,
+                });
+                let plateau: f64 = (0..nfdir).map(|i| c.tau[i] * c.tau[i]).sum::<f64>().sqrt();
+                rows.push(Row {
+                    scene: "F1",
+                    case: case.clone(),
+                    quantity: "plateau |τ| = min(μp, τ_max)",
+                    exact: tau_c,
+                    computed: plateau,
+                    tolerance: tol,
+                });
+                // Slip 19γc on loading, 38γc on unloading, all at |τ| = τ_crit.
+                rows.push(Row {
+                    scene: "F1",
+                    case: case.clone(),
+                    quantity: "Σ SFD = 57·τ_crit·γ_crit",
+                    exact: 57.0 * tau_c * GAMMA_CRIT,
+                    computed: sfd_sum,
+                    tolerance: 1e-9 * 57.0 * tau_c * GAMMA_CRIT,
+                });
+                rows.push(Row {
+                    scene: "F1",
+                    case: case.clone(),
+                    quantity: "SED = τ²/(2k_s) at the end",
+                    exact: tau_c * tau_c / (2.0 * ks),
+                    computed: c.sed,
+                    tolerance: 1e-9 * tau_c * GAMMA_CRIT,
+                });
+                rows.push(Row {
+                    scene: "F1",
+                    case,
+                    quantity: "min SFD over increments (≥ 0)",
+                    exact: 0.0,
+                    computed: sfd_min.min(0.0),
+                    tolerance: 0.0,
+                });
+            }
+        }
+    }
+}
+
+/// F1 with exact stick: a spring K pulls the slider, its far end driven by u(t). The host
+/// enforces stick with a Lagrange multiplier (TAULM = spring force) and solves equilibrium
+/// K(u − γ) = τ while slipping.
+fn f1_exact(rows: &mut Vec<Row>) {
+    let k_spring = 1e4;
+    let tau_c = MU * P;
+    let mut c = FricCall::new(1, &props(false, 0.0, 1.0));
+    c.lm = 1;
+    let (mut gamma, mut tau) = (0.0f64, 0.0f64);
+    let du = 1e-4;
+    let mut u = 0.0f64;
+    let mut max_err = 0.0f64;
+    let mut first_slip_u = f64::NAN;
+    let mut u_peak = 0.0f64;
+    for k in 0..400 {
+        let sign = if k < 100 { 1.0 } else { -1.0 };
+        u += sign * du;
+        // Newton iterations of the host, LM from the previous iteration.
+        let tau_start = tau;
+        let mut lm = c.lm;
+        let mut dg = 0.0f64;
+        for _ in 0..10 {
+            c.lm = lm;
+            c.tau[0] = tau_start;
+            c.taulm[0] = k_spring * (u - gamma);
+            step(&mut c, &[if lm == 1 { 0.0 } else { dg }], P, P);
+            if c.lm == 1 {
+                if lm == 1 {
+                    dg = 0.0;
+                    tau = k_spring * (u - gamma);
+                    break;
+                }
+                lm = 1;
+                dg = 0.0;
+                continue;
+            }
+            let r = k_spring * (u - gamma - dg) - c.tau[0];
+            if lm == 0 && r.abs() <= 1e-12 * tau_c {
+                tau = c.tau[0];
+                break;
+            }
+            lm = 0;
+            dg += r / (k_spring + c.ddtddg[0]);
+        }
+        gamma += dg;
+        c.lm = lm;
+        if first_slip_u.is_nan() && dg != 0.0 {
+            first_slip_u = u;
+        }
+        // Closed form: stuck until |K(u − γ)| reaches τ_crit, then γ follows at that force.
+        if sign > 0.0 {
+            u_peak = u;
+        }
+        let g_peak = (u_peak - tau_c / k_spring).max(0.0);
+        let exact = if sign > 0.0 {
+            (u - tau_c / k_spring).max(0.0)
+        } else {
+            g_peak.min(u + tau_c / k_spring)
+        };
+        max_err = max_err.max((gamma - exact).abs());
+    }
+    rows.push(Row {
+        scene: "F1",
+        case: "exact stick (LM=1), spring host".into(),
+        quantity: "max |γ − γ_exact| on path",
+        exact: 0.0,
+        computed: max_err,
+        tolerance: 1e-12,
+    });
+    rows.push(Row {
+        scene: "F1",
+        case: "exact stick (LM=1), spring host".into(),
+        quantity: "first slip at u = μp/K (tol Δu)",
+        exact: tau_c / k_spring,
+        computed: first_slip_u,
+        // The first increment whose spring force exceeds τ_crit: within one Δu (plus round-off).
+        tolerance: du * (1.0 + 1e-9),
+    });
+}
+
+/// F2: slip along a circle of radius R; steady lag angle asin(γ_crit/R) between τ and the slip
+/// direction, backward Euler converging at first order in the step.
+fn f2(rows: &mut Vec<Row>) {
+    let radius = 0.01;
+    let exact = (GAMMA_CRIT / radius).asin();
+    for n in [100usize, 1000, 5000] {
+        let mut c = FricCall::new(2, &props(false, 0.0, 0.0));
+        let dtheta = 2.0 * std::f64::consts::PI / n as f64;
+        let mut prev = [radius, 0.0];
+        let mut theta = 0.0f64;
+        c.press = P;
+        // Start on the circle with no stress; three turns reach the steady state.
+        for k in 1..=(3 * n) {
+            theta = dtheta * k as f64;
+            let now = [radius * theta.cos(), radius * theta.sin()];
+            step(&mut c, &[now[0] - prev[0], now[1] - prev[1]], P, P);
+            prev = now;
+        }
+        let tangent = [-theta.sin(), theta.cos()];
+        let cross = tangent[0] * c.tau[1] - tangent[1] * c.tau[0];
+        let dot = tangent[0] * c.tau[0] + tangent[1] * c.tau[1];
+        let lag = cross.atan2(dot).abs();
+        rows.push(Row {
+            scene: "F2",
+            case: format!("circle, {n} increments/turn"),
+            quantity: "lag angle φ → asin(γc/R) (tol Δθ)",
+            exact,
+            computed: lag,
+            tolerance: dtheta,
+        });
+        let mag = (c.tau[0].powi(2) + c.tau[1].powi(2)).sqrt();
+        rows.push(Row {
+            scene: "F2",
+            case: format!("circle, {n} increments/turn"),
+            quantity: "|τ| = μp",
+            exact: MU * P,
+            computed: mag,
+            tolerance: 1e-12 * MU * P,
+        });
+    }
+}
+
+/// F5: pressure ramp while sliding: τ = min(μp(t), τ_max) and DDTDDP = d(min(μp, τ_max))/dp.
+fn f5(rows: &mut Vec<Row>) {
+    for tau_max in [0.0, 35.0] {
+        let mut c = FricCall::new(1, &props(false, tau_max, 0.0));
+        let pressure = |t: f64| 100.0 + 50.0 * (3.0 * t).sin();
+        let crit = |p: f64| {
+            if tau_max > 0.0 {
+                (MU * p).min(tau_max)
+            } else {
+                MU * p
+            }
+        };
+        let dcrit = |p: f64| {
+            if tau_max > 0.0 && MU * p >= tau_max {
+                0.0
+            } else {
+                MU
+            }
+        };
+        let (mut max_err, mut max_derr) = (0.0f64, 0.0f64);
+        let steps = 400;
+        let mut p_prev = pressure(0.0);
+        // Slide at 0.2 γ_crit per increment from first contact.
+        for k in 1..=steps {
+            let t = k as f64 / steps as f64;
+            let p = pressure(t);
+            step(&mut c, &[0.2 * GAMMA_CRIT], p, p_prev);
+            p_prev = p;
+            if k > 10 {
+                max_err = max_err.max((c.tau[0] - crit(p)).abs());
+                max_derr = max_derr.max((c.ddtddp[0] - dcrit(p)).abs());
+            }
+        }
+        let case = if tau_max > 0.0 {
+            "p(t) ramp, τ_max = 35"
+        } else {
+            "p(t) ramp"
+        };
+        rows.push(Row {
+            scene: "F5",
+            case: case.into(),
+            quantity: "max |τ − min(μp, τ_max)| sliding",
+            exact: 0.0,
+            computed: max_err,
+            tolerance: 1e-12 * 50.0,
+        });
+        rows.push(Row {
+            scene: "F5",
+            case: case.into(),
+            quantity: "max |DDTDDP − d τ_crit/dp|",
+            exact: 0.0,
+            computed: max_derr,
+            tolerance: 1e-15,
+        });
+    }
+}
+
+fn main() {
+    let mut rows = Vec::new();
+    f1(&mut rows);
+    f1_exact(&mut rows);
+    f2(&mut rows);
+    f5(&mut rows);
+    println!(
+        "interfacial {} — friction scenes through fric_ (μ = {MU}, p = {P}, γ_crit = {GAMMA_CRIT})\n",
+        interfacial::VERSION
+    );
+    println!(
+        "{:<5} {:<34} {:<36} {:>14} {:>14} {:>10}  ok",
+        "scene", "case", "quantity", "closed form", "computed", "error"
+    );
+    let mut failed = 0;
+    for r in &rows {
+        if !r.ok() {
+            failed += 1;
+        }
+        println!(
+            "{:<5} {:<34} {:<36} {:>14.8e} {:>14.8e} {:>10.2e}  {}",
+            r.scene,
+            r.case,
+            r.quantity,
+            r.exact,
+            r.computed,
+            r.error(),
+            if r.ok() { "yes" } else { "NO" }
+        );
+    }
+    println!("\n{} passed, {} failed", rows.len() - failed, failed);
+    if failed > 0 {
+        std::process::exit(1);
+    }
+}
