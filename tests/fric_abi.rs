@@ -386,3 +386,166 @@ fn results_do_not_depend_on_the_number_of_threads() {
         assert_eq!(a.statev, b.statev);
     }
 }
+
+#[test]
+fn null_pointers_are_refused_without_a_crash() {
+    use std::ptr::{null, null_mut};
+    let mut pnewdt = 1e36;
+    // A host that passes nothing but PNEWDT: refused, cut-back, message names the argument.
+    // SAFETY: every pointer is NULL or valid; the function must check before reading.
+    unsafe {
+        interfacial::abi::fric_(
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            &mut pnewdt,
+            null_mut(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            0,
+            0,
+            0,
+        );
+    }
+    assert_eq!(pnewdt, CUTBACK_RATIO);
+    assert!(FricCall::last_error().contains("LM is a NULL pointer"));
+    // Everything NULL, PNEWDT too: still no crash.
+    // SAFETY: as above.
+    unsafe {
+        interfacial::abi::fric_(
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            0,
+            0,
+            0,
+        );
+    }
+    // A good point whose PRESS pointer is missing.
+    let mut c = good(1);
+    let mut lm = 0;
+    let mut tau = [5.0];
+    let mut pnewdt = 1e36;
+    let mut statev = [0.0; 3];
+    let mut scratch = [0.0; 4];
+    let (nfdir, nstatv, nprops) = (1, 3, c.props.len() as i32);
+    // SAFETY: all non-NULL pointers are valid for NFDIR = 1, NSTATV = 3.
+    unsafe {
+        interfacial::abi::fric_(
+            &mut lm,
+            tau.as_mut_ptr(),
+            scratch.as_mut_ptr(),
+            scratch.as_mut_ptr(),
+            scratch.as_mut_ptr(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            &mut pnewdt,
+            statev.as_mut_ptr(),
+            c.dgam.as_ptr(),
+            null(),
+            null(),
+            &c.dpress,
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            &c.dtime,
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            null(),
+            &nfdir,
+            null(),
+            null(),
+            &nstatv,
+            &c.chrlngth,
+            c.props.as_mut_ptr(),
+            &nprops,
+            0,
+            0,
+            0,
+        );
+    }
+    assert_eq!(pnewdt, CUTBACK_RATIO);
+    assert_eq!(tau, [5.0]);
+    assert!(FricCall::last_error().contains("PRESS is a NULL pointer"));
+    assert!(FricCall::last_error().contains("element ?"));
+}
