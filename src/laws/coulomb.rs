@@ -12,7 +12,7 @@
 //! increment. Tangents are derivatives of the end-of-increment stress with the start of the
 //! increment held fixed.
 
-use super::small_vec::{add, all_finite, diagonal, dot, norm, scale, transverse_projection};
+use super::small_vec::{add, all_finite, diagonal, dot, norm, scale, transverse_projection, unit};
 use crate::{LawError, Outcome};
 
 /// Default slip tolerance: γ_crit = 0.005 × characteristic contact length (seed 000: "0.5% of
@@ -401,7 +401,7 @@ impl Coulomb {
             }
         } else {
             // Slip: Δγ_eq^sl = γ_eq^pr − γ_crit, τ = n τ_crit (Eq. 5.2.3-2).
-            let n = scale(&predictor, 1.0 / predictor_eq);
+            let n = unit(&predictor, predictor_eq);
             let slip_eq = predictor_eq - gamma_crit;
             Traction {
                 tau: scale(&n, tau_crit),
@@ -442,7 +442,7 @@ impl Coulomb {
         };
         let source_eq = norm(&direction_source);
         let n = if source_eq > 0.0 {
-            scale(&direction_source, 1.0 / source_eq)
+            unit(&direction_source, source_eq)
         } else {
             [0.0; N]
         };

@@ -29,6 +29,18 @@ pub(crate) fn scale<const N: usize>(v: &[f64; N], s: f64) -> [f64; N] {
     out
 }
 
+/// `v/len`, dividing each entry (not multiplying by `1/len`), so that in 1-D the direction is
+/// exactly ±1 and τ = τ_crit·n lands exactly on μp.
+#[inline]
+#[must_use]
+pub(crate) fn unit<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
+    let mut out = *v;
+    for x in &mut out {
+        *x /= len;
+    }
+    out
+}
+
 #[inline]
 #[must_use]
 pub(crate) fn add<const N: usize>(a: &[f64; N], b: &[f64; N]) -> [f64; N] {

@@ -1,0 +1,120 @@
+/*
+ * Compile-time check of include/interfacial.h against the ABI written down by hand in
+ * shared/design/abi.md: every exported function is redeclared here from the document, and C
+ * requires a redeclaration to be compatible with the header's ("conflicting types" otherwise),
+ * so a header that drifts from the Fortran calling convention breaks the build of ALL.
+ *
+ * FRIC rules (abi.md): INCLUDE 'ABA_PARAM.INC' -> names I-N are default INTEGER (32-bit int),
+ * everything else REAL*8 (double); every argument by reference; CHARACTER*80 CINAME, SLNAME,
+ * MSNAME add three hidden lengths (size_t for gfortran >= 8) after the 39 explicit arguments.
+ * Outputs and in/out arguments are plain pointers; pure inputs are const, as the header has it.
+ *
+ * With -DABI_PROTOTYPES_MISMATCH one type is deliberately wrong (NFDIR as a 64-bit integer, as
+ * an -fdefault-integer-8 host would pass it); CTest compiles that variant and expects the
+ * compiler to reject it (test c_abi_prototypes_mismatch_rejected), which proves the check bites.
+ */
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "interfacial.h"
+
+#ifdef ABI_PROTOTYPES_MISMATCH
+typedef int64_t abi_nfdir_int;
+#else
+typedef int abi_nfdir_int;
+#endif
+
+/* INTEGER is 32-bit, REAL*8 is 64-bit, the hidden lengths are machine words (x86-64 Linux). */
+_Static_assert(sizeof(int) == 4, "default INTEGER must be a 32-bit int");
+_Static_assert(sizeof(double) == 8, "REAL*8 must be a 64-bit double");
+_Static_assert(sizeof(size_t) == sizeof(void *), "hidden CHARACTER lengths are size_t");
+
+/* SUBROUTINE FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,
+ * DPRESS,DDPDDH,SLIP,KSTEP,KINC,TIME,DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,NPATCH,COORDS,
+ * RCOORD,DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,NSTATV,CHRLNGTH,PROPS,NPROPS) */
+void fric_(int *lm,                 /*  1 LM          in/out */
+           double *tau,             /*  2 TAU(NFDIR)  in/out */
+           double *ddtddg,          /*  3 DDTDDG(NFDIR,NFDIR) out */
+           double *ddtddp,          /*  4 DDTDDP(NFDIR) out */
+           double *dslip,           /*  5 DSLIP(NFDIR) out */
+           double *sed,             /*  6 SED         out */
+           double *sfd,             /*  7 SFD         out */
+           double *ddtddt,          /*  8 DDTDDT(NFDIR,2) out */
+           double *pnewdt,          /*  9 PNEWDT      out */
+           double *statev,          /* 10 STATEV(NSTATV) in/out */
+           const double *dgam,      /* 11 DGAM(NFDIR) */
+           const double *taulm,     /* 12 TAULM(NFDIR) */
+           const double *press,     /* 13 PRESS */
+           const double *dpress,    /* 14 DPRESS */
+           const double *ddpddh,    /* 15 DDPDDH */
+           const double *slip,      /* 16 SLIP(NFDIR) */
+           const int *kstep,        /* 17 KSTEP */
+           const int *kinc,         /* 18 KINC */
+           const double *time,      /* 19 TIME(2) */
+           const double *dtime,     /* 20 DTIME */
+           const int *noel,         /* 21 NOEL */
+           const char *ciname,      /* 22 CINAME */
+           const char *slname,      /* 23 SLNAME */
+           const char *msname,      /* 24 MSNAME */
+           const int *npt,          /* 25 NPT */
+           const int *node,         /* 26 NODE */
+           const int *npatch,       /* 27 NPATCH */
+           const double *coords,    /* 28 COORDS(MCRD) */
+           const double *rcoord,    /* 29 RCOORD(MCRD) */
+           const double *drot,      /* 30 DROT(2,2) */
+           const double *temp,      /* 31 TEMP(2) */
+           const double *predef,    /* 32 PREDEF(2,NPRED) */
+           const abi_nfdir_int *nfdir, /* 33 NFDIR */
+           const int *mcrd,         /* 34 MCRD */
+           const int *npred,        /* 35 NPRED */
+           const int *nstatv,       /* 36 NSTATV */
+           const double *chrlngth,  /* 37 CHRLNGTH */
+           const double *props,     /* 38 PROPS(NPROPS) */
+           const int *nprops,       /* 39 NPROPS */
+           size_t ciname_len,       /* hidden length of CINAME */
+           size_t slname_len,       /* hidden length of SLNAME */
+           size_t msname_len);      /* hidden length of MSNAME */
+
+const char *ifl_version(void);
+const char *ifl_last_error(void);
+size_t ifl_last_error_copy(char *buf, size_t len);
+void ifl_clear_error(void);
+
+/* Function-pointer types spelled out once more: assigning the library's functions to them is
+ * a constraint violation if the types differ. */
+typedef void fric_fn(int *, double *, double *, double *, double *, double *, double *,
+                     double *, double *, double *, const double *, const double *,
+                     const double *, const double *, const double *, const double *,
+                     const int *, const int *, const double *, const double *, const int *,
+                     const char *, const char *, const char *, const int *, const int *,
+                     const int *, const double *, const double *, const double *,
+                     const double *, const double *, const abi_nfdir_int *, const int *,
+                     const int *, const int *, const double *, const double *, const int *,
+                     size_t, size_t, size_t);
+
+int main(void)
+{
+    fric_fn *const fric = fric_;
+    const char *(*const version)(void) = ifl_version;
+    const char *(*const last_error)(void) = ifl_last_error;
+    size_t (*const error_copy)(char *, size_t) = ifl_last_error_copy;
+    void (*const clear_error)(void) = ifl_clear_error;
+    int passed = 0, failed = 0;
+
+    /* Linked and callable through the hand-written types. */
+    if (fric != NULL && version != NULL && last_error != NULL && error_copy != NULL &&
+        clear_error != NULL) {
+        passed++;
+    } else {
+        failed++;
+    }
+    if (version() != NULL && strlen(version()) > 0) {
+        passed++;
+    } else {
+        failed++;
+    }
+    printf("%d passed, %d failed\n", passed, failed);
+    return failed == 0 ? 0 : 1;
+}

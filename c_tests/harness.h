@@ -1,0 +1,330 @@
+/*
+ * harness.h: the host side of FRIC for the C harnesses (header-only).
+ *
+ * An fh_fric holds every FRIC argument the way a Fortran FE code keeps them, with arrays sized
+ * for NFDIR <= 3 plus guard slots, and fh_call() passes them to fric_ exactly as gfortran does:
+ * everything by reference, the three names as blank-padded CHARACTER buffers with their hidden
+ * lengths (80 for CHARACTER*80) after the 39 explicit arguments.
+ *
+ * Every fh_call() also checks two invariants of the contract (shared/design/abi.md,
+ * docs/fric.md): nothing is written past NFDIR / NFDIR^2 / 2*NFDIR / NSTATV (guard slots keep
+ * FH_GUARD), and no input argument is written.
+ *
+ * Checks count passes and failures; fh_finish() prints the last line "N passed, N failed" and
+ * returns the exit status (non-zero on any failure, or when nothing was checked at all).
+ */
+#ifndef FRIC_HARNESS_H
+#define FRIC_HARNESS_H
+
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "interfacial.h"
+
+#if defined(__GNUC__)
+#define FH_PRINTF(fmt_index, first_arg) __attribute__((format(printf, fmt_index, first_arg)))
+#else
+#define FH_PRINTF(fmt_index, first_arg)
+#endif
+
+enum {
+    FH_MAXDIR = 3,                               /* a bad NFDIR = 3 still stays inside */
+    FH_VEC = FH_MAXDIR + 1,                      /* TAU(NFDIR) + at least one guard */
+    FH_MAT = FH_MAXDIR * FH_MAXDIR + 1,          /* DDTDDG(NFDIR,NFDIR) + guard */
+    FH_DDT = 2 * FH_MAXDIR + 1,                  /* DDTDDT(NFDIR,2) + guard */
+    FH_MAXSTATV = 12,                            /* STATEV(NSTATV) + guards after NSTATV */
+    FH_MAXPROPS = 12,
+    FH_NAMEBUF = 96                              /* room for bytes past a short hidden length */
+};
+
+/* Written into every slot past the sizes the host declared; fric_ must never touch them. */
+#define FH_GUARD (-7.77e77)
+/* PNEWDT as Abaqus passes it on every call: large, so only a cut-back lowers it. */
+#define FH_PNEWDT_IN 1e36
+/* What a failed call must leave in PNEWDT (the library's cut-back ratio, docs/fric.md). */
+#define FH_CUTBACK 0.25
+#define FH_PI 3.14159265358979323846
+/* All FRIC arguments of one contact point, in Fortran (column-major) layout. */
+typedef struct {
+    int lm;                      /* LM */
+    double tau[FH_VEC];          /* TAU(NFDIR) */
+    double ddtddg[FH_MAT];       /* DDTDDG(NFDIR,NFDIR): (a,b) at [(a-1) + (b-1)*NFDIR] */
+    double ddtddp[FH_VEC];       /* DDTDDP(NFDIR) */
+    double dslip[FH_VEC];        /* DSLIP(NFDIR) */
+    double sed, sfd;             /* SED, SFD */
+    double ddtddt[FH_DDT];       /* DDTDDT(NFDIR,2) */
+    double pnewdt;               /* PNEWDT */
+    double statev[FH_MAXSTATV];  /* STATEV(NSTATV) */
+    double dgam[FH_VEC];         /* DGAM(NFDIR) */
+    double taulm[FH_VEC];        /* TAULM(NFDIR) */
+    double press, dpress, ddpddh;
+    double slip[FH_VEC];         /* SLIP(NFDIR) */
+    int kstep, kinc;
+    double time[2], dtime;
+    int noel;
+    char ciname[FH_NAMEBUF], slname[FH_NAMEBUF], msname[FH_NAMEBUF];
+    size_t ciname_len, slname_len, msname_len; /* hidden lengths */
+    int npt, node, npatch;
+    double coords[3], rcoord[3];
+    double drot[4];              /* DROT(2,2) */
+    double temp[2];
+    double predef[2];            /* PREDEF(2,NPRED), NPRED = 1 */
+    int nfdir, mcrd, npred, nstatv;
+    double chrlngth;
+    double props[FH_MAXPROPS];
+    int nprops;
+} fh_fric;
+
+/* ---------------------------------------------------------------------------------------- */
+/* Pass/fail bookkeeping                                                                     */
+
+static int fh_passed;
+static int fh_failed;
+static char fh_where[256]; /* what the driver is doing, printed with each failure */
+
+enum { FH_MAX_PRINTED_FAILURES = 60 };
+
+static inline void fh_context(const char *fmt, ...) FH_PRINTF(1, 2);
+static inline void fh_context(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(fh_where, sizeof fh_where, fmt, ap);
+    va_end(ap);
+}
+
+static inline void fh_fail_header(const char *file, int line)
+{
+    if (fh_failed == FH_MAX_PRINTED_FAILURES) {
+        fprintf(stderr, "(further failures are counted but not printed)\n");
+    }
+    if (fh_failed < FH_MAX_PRINTED_FAILURES) {
+        fprintf(stderr, "FAIL %s:%d [%s]: ", file, line, fh_where);
+    }
+}
+
+static inline int fh_check_(int ok, const char *file, int line, const char *expr)
+{
+    if (ok) {
+        fh_passed++;
+        return 1;
+    }
+    fh_fail_header(file, line);
+    if (fh_failed < FH_MAX_PRINTED_FAILURES) {
+        fprintf(stderr, "%s\n", expr);
+    }
+    fh_failed++;
+    return 0;
+}
+
+/* |got - want| <= atol + rtol*|want|; NaN never passes. */
+static inline int fh_near_(double got, double want, double rtol, double atol, const char *file,
+                           int line, const char *got_expr, const char *want_expr)
+{
+    double err = fabs(got - want);
+    if (err <= atol + rtol * fabs(want)) {
+        fh_passed++;
+        return 1;
+    }
+    fh_fail_header(file, line);
+    if (fh_failed < FH_MAX_PRINTED_FAILURES) {
+        fprintf(stderr, "%s = %.17g, expected %s = %.17g (error %.3g, rtol %.1g, atol %.1g)\n",
+                got_expr, got, want_expr, want, err, rtol, atol);
+    }
+    fh_failed++;
+    return 0;
+}
+
+static inline int fh_contains_(const char *hay, const char *needle, const char *file, int line)
+{
+    if (hay != NULL && strstr(hay, needle) != NULL) {
+        fh_passed++;
+        return 1;
+    }
+    fh_fail_header(file, line);
+    if (fh_failed < FH_MAX_PRINTED_FAILURES) {
+        fprintf(stderr, "\"%s\" does not contain \"%s\"\n", hay ? hay : "(null)", needle);
+    }
+    fh_failed++;
+    return 0;
+}
+
+#define FH_CHECK(cond) fh_check_(!!(cond), __FILE__, __LINE__, #cond)
+#define FH_NEAR(got, want, rtol, atol) \
+    fh_near_((got), (want), (rtol), (atol), __FILE__, __LINE__, #got, #want)
+#define FH_EXACT(got, want) FH_NEAR((got), (want), 0.0, 0.0)
+#define FH_CONTAINS(hay, needle) fh_contains_((hay), (needle), __FILE__, __LINE__)
+
+/* The last line of every harness; returns the process exit status. */
+static inline int fh_finish(void)
+{
+    printf("%d passed, %d failed\n", fh_passed, fh_failed);
+    fflush(stdout);
+    /* A harness that checked nothing proves nothing. */
+    return (fh_failed == 0 && fh_passed > 0) ? 0 : 1;
+}
+
+/* ---------------------------------------------------------------------------------------- */
+/* The host                                                                                  */
+
+/* A Fortran CHARACTER*len actual argument: `text` blank-padded to `len` bytes, no NUL. */
+static inline void fh_set_name(char *buf, size_t *buf_len, size_t len, const char *text)
+{
+    size_t n = strlen(text);
+    if (len > FH_NAMEBUF) {
+        len = FH_NAMEBUF;
+    }
+    memset(buf, ' ', FH_NAMEBUF);
+    memcpy(buf, text, n < len ? n : len);
+    *buf_len = len;
+}
+
+static inline int fh_clamp(int v, int lo, int hi)
+{
+    return v < lo ? lo : (v > hi ? hi : v);
+}
+
+/* Fills every output slot past NFDIR, NFDIR^2, 2*NFDIR and NSTATV with FH_GUARD. */
+static inline void fh_set_guards(fh_fric *h)
+{
+    int n = fh_clamp(h->nfdir, 0, FH_MAXDIR);
+    int ns = fh_clamp(h->nstatv, 0, FH_MAXSTATV);
+    int i;
+    for (i = n; i < FH_VEC; i++) {
+        h->tau[i] = FH_GUARD;
+        h->ddtddp[i] = FH_GUARD;
+        h->dslip[i] = FH_GUARD;
+    }
+    for (i = n * n; i < FH_MAT; i++) {
+        h->ddtddg[i] = FH_GUARD;
+    }
+    for (i = 2 * n; i < FH_DDT; i++) {
+        h->ddtddt[i] = FH_GUARD;
+    }
+    for (i = ns; i < FH_MAXSTATV; i++) {
+        h->statev[i] = FH_GUARD;
+    }
+}
+
+/* True when every guard slot still holds FH_GUARD. */
+static inline int fh_guards_intact(const fh_fric *h)
+{
+    int n = fh_clamp(h->nfdir, 0, FH_MAXDIR);
+    int ns = fh_clamp(h->nstatv, 0, FH_MAXSTATV);
+    int ok = 1;
+    int i;
+    for (i = n; i < FH_VEC; i++) {
+        ok &= h->tau[i] == FH_GUARD && h->ddtddp[i] == FH_GUARD && h->dslip[i] == FH_GUARD;
+    }
+    for (i = n * n; i < FH_MAT; i++) {
+        ok &= h->ddtddg[i] == FH_GUARD;
+    }
+    for (i = 2 * n; i < FH_DDT; i++) {
+        ok &= h->ddtddt[i] == FH_GUARD;
+    }
+    for (i = ns; i < FH_MAXSTATV; i++) {
+        ok &= h->statev[i] == FH_GUARD;
+    }
+    return ok;
+}
+
+#define FH_SAME(field) (memcmp(&a->field, &b->field, sizeof a->field) == 0)
+/* True when no input argument differs between a and b (bitwise, so NaN inputs compare too). */
+static inline int fh_inputs_same(const fh_fric *a, const fh_fric *b)
+{
+    return FH_SAME(dgam) && FH_SAME(taulm) && FH_SAME(press) && FH_SAME(dpress) &&
+           FH_SAME(ddpddh) && FH_SAME(slip) && FH_SAME(kstep) && FH_SAME(kinc) &&
+           FH_SAME(time) && FH_SAME(dtime) && FH_SAME(noel) && FH_SAME(ciname) &&
+           FH_SAME(slname) && FH_SAME(msname) && FH_SAME(npt) && FH_SAME(node) &&
+           FH_SAME(npatch) && FH_SAME(coords) && FH_SAME(rcoord) && FH_SAME(drot) &&
+           FH_SAME(temp) && FH_SAME(predef) && FH_SAME(nfdir) && FH_SAME(mcrd) &&
+           FH_SAME(npred) && FH_SAME(nstatv) && FH_SAME(chrlngth) && FH_SAME(props) &&
+           FH_SAME(nprops);
+}
+#undef FH_SAME
+
+/*
+ * A closed contact point of interaction "SI_PAD" (element 17, node 42, point 3) with NFDIR
+ * friction directions and the given PROPS; NSTATV = 3, state and stress zero, identity DROT,
+ * DTIME = 1, every output slot past its size a guard.
+ */
+static inline void fh_init(fh_fric *h, int nfdir, const double *props, int nprops)
+{
+    int i;
+    memset(h, 0, sizeof *h);
+    h->lm = 0;
+    h->pnewdt = FH_PNEWDT_IN;
+    h->ddpddh = 1e6;
+    h->kstep = 1;
+    h->kinc = 1;
+    h->dtime = 1.0;
+    h->noel = 17;
+    h->node = 42;
+    h->npt = 3;
+    h->npatch = 5;
+    fh_set_name(h->ciname, &h->ciname_len, 80, "SI_PAD");
+    fh_set_name(h->slname, &h->slname_len, 80, "SLAVE_SURF");
+    fh_set_name(h->msname, &h->msname_len, 80, "MASTER_SURF");
+    h->drot[0] = 1.0;
+    h->drot[3] = 1.0;
+    h->temp[0] = h->temp[1] = 20.0;
+    h->nfdir = nfdir;
+    h->mcrd = 3;
+    h->npred = 1;
+    h->nstatv = 3;
+    h->chrlngth = 1.0;
+    for (i = 0; i < nprops && i < FH_MAXPROPS; i++) {
+        h->props[i] = props[i];
+    }
+    h->nprops = nprops;
+    fh_set_guards(h);
+}
+
+/* The raw call, as gfortran makes it for CALL FRIC(...) with CHARACTER*(*) names. */
+static inline void fh_call_raw(fh_fric *h)
+{
+    fric_(&h->lm, h->tau, h->ddtddg, h->ddtddp, h->dslip, &h->sed, &h->sfd, h->ddtddt,
+          &h->pnewdt, h->statev, h->dgam, h->taulm, &h->press, &h->dpress, &h->ddpddh, h->slip,
+          &h->kstep, &h->kinc, h->time, &h->dtime, &h->noel, h->ciname, h->slname, h->msname,
+          &h->npt, &h->node, &h->npatch, h->coords, h->rcoord, h->drot, h->temp, h->predef,
+          &h->nfdir, &h->mcrd, &h->npred, &h->nstatv, &h->chrlngth, h->props, &h->nprops,
+          h->ciname_len, h->slname_len, h->msname_len);
+}
+
+/*
+ * One call from the host: PNEWDT set large as Abaqus does, guards refreshed, then after the
+ * call the guard slots and every input argument are checked unchanged.
+ */
+static inline void fh_call(fh_fric *h)
+{
+    fh_fric before;
+    h->pnewdt = FH_PNEWDT_IN;
+    fh_set_guards(h);
+    before = *h;
+    fh_call_raw(h);
+    FH_CHECK(fh_guards_intact(h));
+    FH_CHECK(fh_inputs_same(h, &before));
+}
+
+/*
+ * A call that must succeed: as fh_call, and also PNEWDT not lowered and no error reported
+ * (the thread's last error is cleared before the call).
+ */
+static inline void fh_call_ok(fh_fric *h)
+{
+    ifl_clear_error();
+    fh_call(h);
+    FH_CHECK(h->pnewdt == FH_PNEWDT_IN);
+    FH_CHECK(ifl_last_error()[0] == '\0');
+}
+
+/* DDTDDG(a,b), 1-based as in Fortran. */
+static inline double fh_ddtddg(const fh_fric *h, int a, int b)
+{
+    return h->ddtddg[(a - 1) + (b - 1) * h->nfdir];
+}
+
+#endif /* FRIC_HARNESS_H */
