@@ -73,21 +73,25 @@ pub(crate) fn report(site: &Site, cause: &str) -> String {
 }
 
 fn emit(s: &Settings, line: &str) {
+    // One write of the whole line, under a lock: messages from several threads never interleave.
+    static EMIT: Mutex<()> = Mutex::new(());
+    let _serial = EMIT.lock();
+    let text = format!("{line}\n");
     if let Some(path) = &s.log_file {
         let written = std::fs::OpenOptions::new()
             .create(true)
             .append(true)
             .open(path)
-            .and_then(|mut f| writeln!(f, "{line}"));
+            .and_then(|mut f| f.write_all(text.as_bytes()));
         if written.is_ok() {
             return;
         }
-        let _ = writeln!(
-            std::io::stderr(),
-            "interfacial: cannot write INTERFACIAL_LOG={path}; reporting to stderr"
+        let _ = std::io::stderr().write_all(
+            format!("interfacial: cannot write INTERFACIAL_LOG={path}; reporting to stderr\n")
+                .as_bytes(),
         );
     }
-    let _ = writeln!(std::io::stderr(), "{line}");
+    let _ = std::io::stderr().write_all(text.as_bytes());
 }
 
 pub(crate) fn set_last_error(message: &str) {
