@@ -1,0 +1,464 @@
+C=======================================================================
+C     test_fric_bad_input.f -- fixed-form twin of the C bad-input
+C     harness: every documented bad input reaches FRIC from legacy
+C     Fortran 77 (INCLUDE 'ABA_PARAM.INC', plain CALL FRIC, no
+C     interface block), and each one must give the documented failure
+C     output (the common brief, "Failure"):
+C       PNEWDT = 0.25 (only ever lowered); LM, TAU, STATEV unchanged;
+C       DDTDDG, DDTDDP, DSLIP, DDTDDT zeroed and SFD = 0 when NFDIR is
+C       1 or 2, no array written otherwise; entries past NFDIR / NSTATV
+C       untouched; inputs never written;
+C       message "interfacial: FRIC: interaction 'NAME' (element E,
+C       node N, point P): cause", read back through the native
+C       ifl_last_error_copy (the only routine given an interface block).
+C     Each case gets its own interaction name, so a stale message from
+C     an earlier case cannot pass.  A caller that declares CHARACTER*8
+C     names (old user code) checks that the hidden length is trusted.
+C
+C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
+C=======================================================================
+      PROGRAM TFBAD
+      INCLUDE 'ABA_PARAM.INC'
+      COMMON /TALLY/ NPASS,NFAIL
+      CHARACTER*48 CASE
+      COMMON /CTX/ CASE
+      CHARACTER*8 SNAN,SINF
+      NPASS = 0
+      NFAIL = 0
+C     NaN and Inf made at run time from text, so that neither constant
+C     folding nor -fcheck sees them.
+      CASE = 'run-time NaN and Inf'
+      SNAN = 'NaN'
+      SINF = 'Inf'
+      READ (SNAN,*) XNAN
+      READ (SINF,*) XINF
+      CALL CHECK(XNAN .NE. XNAN, 'NaN from text is a NaN', 0)
+      CALL CHECK(XINF .GT. HUGE(XINF), 'Inf from text is +Inf', 0)
+C
+C     Case 0 is the untouched baseline (it must succeed, so that every
+C     failure below comes from its one bad argument).  NFDIR = 0 and 3
+C     (cases 1, 2) are bad for either host dimension: run them once.
+      DO 20 ICASE = 0, 10
+        DO 10 NDIR = 1, 2
+          IF ((ICASE .EQ. 1 .OR. ICASE .EQ. 2) .AND. NDIR .EQ. 1)
+     1     GO TO 10
+          CALL BADONE(ICASE, NDIR, XNAN, XINF)
+   10   CONTINUE
+   20 CONTINUE
+      CALL OLDUSR
+      WRITE (*,'(I0,A,I0,A)') NPASS, ' passed, ', NFAIL, ' failed'
+      IF (NFAIL .GT. 0) STOP 1
+      END
+
+C-----------------------------------------------------------------------
+C     One FRIC call from a good baseline (mu = 0.3, p = 100, gc = 1e-3,
+C     mid-slip state) with the bad argument of case ICASE:
+C        0 none (baseline)       6 PRESS = NaN
+C        1 NFDIR = 0             7 DGAM(1) = +Inf
+C        2 NFDIR = 3             8 NSTATV = 2
+C        3 NPROPS = 1            9 CHRLNGTH = 0 with PROPS(5) = 0
+C        4 PROPS(1) = 3         10 LM = 5 on entry
+C        5 PROPS(2) = mu < 0, then again with PNEWDT = 0.1 on entry
+C-----------------------------------------------------------------------
+      SUBROUTINE BADONE(ICASE, NDIR, XNAN, XINF)
+      INCLUDE 'ABA_PARAM.INC'
+      COMMON /TALLY/ NPASS,NFAIL
+      CHARACTER*80 CINAME,SLNAME,MSNAME
+      CHARACTER*48 CASE
+      COMMON /CTX/ CASE
+      PARAMETER (MG=8, MSV=8, SENT=-999.25D0, BIG=1.0D36)
+      DIMENSION TAU(MG),DDTDDG(MG),DDTDDP(MG),DSLIP(MG),DDTDDT(MG),
+     1 STATEV(MSV),DGAM(MG),TAULM(MG),SLIP(MG),TIME(2),COORDS(3),
+     2 RCOORD(3),DROT(2,2),TEMP(2),PREDEF(2,1),PROPS(7),
+     3 TAUIN(MG),SVIN(MSV),DGIN(MG),PRIN(7)
+      CHARACTER*12 KEY(0:10)
+      CHARACTER*200 EXPECT
+      CHARACTER*512 MSG
+      LOGICAL VALID
+      DATA KEY /' ', 'NFDIR = 0', 'NFDIR = 3', 'NPROPS = 1',
+     1 'PROPS(1)', 'PROPS(2)', 'PRESS', 'DGAM', 'NSTATV = 2',
+     2 'CHRLNGTH', 'LM = 5'/
+C
+      WRITE (CASE,'(A,I0,A,I0)') 'bad input case ', ICASE,
+     1 ' host NFDIR=', NDIR
+      WRITE (CINAME,'(A,I2.2,A,I1)') 'CP-BAD', ICASE, '-', NDIR
+      SLNAME = 'SLAVE'
+      MSNAME = 'MASTER'
+      CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
+     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
+      NFDIR = NDIR
+      PROPS(1) = 1.0D0
+      PROPS(2) = 0.3D0
+      PROPS(3) = 0.0D0
+      PROPS(4) = 0.0D0
+      PROPS(5) = 1.0D-3
+      PROPS(6) = SENT
+      PROPS(7) = SENT
+      NPROPS = 5
+      NSTATV = 3
+      CHRLNGTH = 0.2D0
+      PRESS = 100.0D0
+      DPRESS = 0.0D0
+      LM = 0
+      DO 10 I = 1, MG
+        TAU(I) = SENT
+        DDTDDG(I) = SENT
+        DDTDDP(I) = SENT
+        DSLIP(I) = SENT
+        DDTDDT(I) = SENT
+        DGAM(I) = SENT
+        TAULM(I) = SENT
+   10 CONTINUE
+      TAU(1) = 30.0D0
+      DGAM(1) = 2.0D-4
+      IF (NDIR .EQ. 2) THEN
+        TAU(1) = 18.0D0
+        TAU(2) = -24.0D0
+        DGAM(2) = 1.0D-4
+      END IF
+      DO 11 I = 1, MSV
+        STATEV(I) = SENT
+   11 CONTINUE
+      STATEV(1) = 0.5D0
+      STATEV(2) = 0.1D0
+      STATEV(3) = 1.0D0
+      SED = SENT
+      SFD = SENT
+      PNEWDT = BIG
+C
+      IF (ICASE .EQ. 1) NFDIR = 0
+      IF (ICASE .EQ. 2) NFDIR = 3
+      IF (ICASE .EQ. 3) NPROPS = 1
+      IF (ICASE .EQ. 4) PROPS(1) = 3.0D0
+      IF (ICASE .EQ. 5) PROPS(2) = -0.3D0
+      IF (ICASE .EQ. 6) PRESS = XNAN
+      IF (ICASE .EQ. 7) DGAM(1) = XINF
+      IF (ICASE .EQ. 8) NSTATV = 2
+      IF (ICASE .EQ. 9) THEN
+        CHRLNGTH = 0.0D0
+        PROPS(5) = 0.0D0
+      END IF
+      IF (ICASE .EQ. 10) LM = 5
+      LMIN = LM
+      DO 12 I = 1, MG
+        TAUIN(I) = TAU(I)
+        DGIN(I) = DGAM(I)
+   12 CONTINUE
+      DO 13 I = 1, MSV
+        SVIN(I) = STATEV(I)
+   13 CONTINUE
+      DO 14 I = 1, 7
+        PRIN(I) = PROPS(I)
+   14 CONTINUE
+C
+      CALL FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,
+     1 DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,
+     2 KSTEP,KINC,TIME,DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,
+     3 NPATCH,COORDS,RCOORD,DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,
+     4 NSTATV,CHRLNGTH,PROPS,NPROPS)
+C
+      IF (ICASE .EQ. 0) THEN
+C       Baseline, mid-slip at the plateau: gamma_pr = gc n + DGAM
+C       points along TAU + k_s DGAM, |.| > gc, so tau = mu p n.
+        CALL CHECK(LM .EQ. 0 .AND. PNEWDT .EQ. BIG,
+     1   'baseline succeeds: LM = 0, PNEWDT untouched', 0)
+        TX = TAUIN(1) + 3.0D4*DGIN(1)
+        TY = 0.0D0
+        IF (NDIR .EQ. 2) TY = TAUIN(2) + 3.0D4*DGIN(2)
+        TN = SQRT(TX**2 + TY**2)
+        CALL CHKNR(TAU(1), 30.0D0*TX/TN, 1.0D-12*30.0D0,
+     1   'baseline tau = mu p n', 0)
+        IF (NDIR .EQ. 2) CALL CHKNR(TAU(2), 30.0D0*TY/TN,
+     1   1.0D-12*30.0D0, 'baseline tau = mu p n', 0)
+        RETURN
+      END IF
+C
+      CALL CHECK(PNEWDT .EQ. 0.25D0, 'PNEWDT = 0.25', 0)
+      CALL CHECK(LM .EQ. LMIN, 'LM unchanged', 0)
+      CALL SAME(TAU, TAUIN, MG, 'TAU unchanged (all entries)')
+      CALL SAME(STATEV, SVIN, MSV, 'STATEV unchanged (all entries)')
+      CALL SAME(PROPS, PRIN, 7, 'PROPS not written')
+      IF (ICASE .EQ. 7) THEN
+        CALL CHECK(DGAM(1) .EQ. XINF, 'DGAM not written', 0)
+        CALL SAME(DGAM(2), DGIN(2), MG-1, 'DGAM not written')
+      ELSE
+        CALL SAME(DGAM, DGIN, MG, 'DGAM not written')
+      END IF
+      CALL GUARD1(TAULM, 1, MG, 'TAULM not written')
+      CALL ZEROS(SLIP, MG, 'SLIP not written')
+      IF (ICASE .EQ. 6) THEN
+        CALL CHECK(PRESS .NE. PRESS, 'PRESS (NaN) not written', 0)
+      ELSE
+        CALL CHECK(PRESS .EQ. 100.0D0, 'PRESS not written', 0)
+      END IF
+      VALID = NFDIR .EQ. 1 .OR. NFDIR .EQ. 2
+      IF (VALID) THEN
+        CALL ZEROS(DDTDDG, NFDIR*NFDIR, 'DDTDDG zeroed')
+        CALL ZEROS(DDTDDP, NFDIR, 'DDTDDP zeroed')
+        CALL ZEROS(DSLIP, NFDIR, 'DSLIP zeroed')
+        CALL ZEROS(DDTDDT, 2*NFDIR, 'DDTDDT zeroed')
+        CALL CHECK(SFD .EQ. 0.0D0, 'SFD = 0', 0)
+        CALL GUARD1(DDTDDG, NFDIR*NFDIR+1, MG, 'DDTDDG past NFDIR**2')
+        CALL GUARD1(DDTDDP, NFDIR+1, MG, 'DDTDDP past NFDIR')
+        CALL GUARD1(DSLIP, NFDIR+1, MG, 'DSLIP past NFDIR')
+        CALL GUARD1(DDTDDT, 2*NFDIR+1, MG, 'DDTDDT past 2*NFDIR')
+      ELSE
+        CALL GUARD1(DDTDDG, 1, MG, 'bad NFDIR: DDTDDG not written')
+        CALL GUARD1(DDTDDP, 1, MG, 'bad NFDIR: DDTDDP not written')
+        CALL GUARD1(DSLIP, 1, MG, 'bad NFDIR: DSLIP not written')
+        CALL GUARD1(DDTDDT, 1, MG, 'bad NFDIR: DDTDDT not written')
+      END IF
+C
+      CALL GETMSG(MSG, L)
+      NF0 = NFAIL
+      EXPECT = 'interfacial: FRIC: interaction '''//TRIM(CINAME)//
+     1 ''' (element 0, node 7, point 1): '
+      LE = LEN_TRIM(EXPECT) + 1
+      CALL CHECK(L .GT. LE .AND. L .LT. LEN(MSG),
+     1 'message length sensible', 0)
+      CALL CHECK(INDEX(MSG(1:L), EXPECT(1:LE)) .EQ. 1,
+     1 'message names FRIC, the interaction and the point', 0)
+      CALL CHECK(INDEX(MSG(LE+1:L), TRIM(KEY(ICASE))) .GT. 0,
+     1 'message names the bad argument', 0)
+      IF (NFAIL .GT. NF0 .AND. NFAIL .LE. 40) WRITE (*,'(2A)')
+     1 '   message: ', MSG(1:MIN(L,200))
+C
+C     Case 5 again with a host that had already asked for a smaller
+C     increment: PNEWDT is only ever lowered.
+      IF (ICASE .EQ. 5) THEN
+        PNEWDT = 0.1D0
+        CALL FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,
+     1   DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,
+     2   KSTEP,KINC,TIME,DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,
+     3   NPATCH,COORDS,RCOORD,DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,
+     4   NSTATV,CHRLNGTH,PROPS,NPROPS)
+        CALL CHECK(PNEWDT .EQ. 0.1D0, 'PNEWDT 0.1 on entry stays 0.1',
+     1   0)
+      END IF
+      END
+
+C-----------------------------------------------------------------------
+C     Old user code: CHARACTER*8 names, so the hidden lengths are 8.  The
+C     interaction name fills all 8 characters and is followed in memory
+C     (COMMON /OLDNAM/) by other text: the message must stop at 8.
+C     A good call must also work unchanged from this caller.
+C-----------------------------------------------------------------------
+      SUBROUTINE OLDUSR
+      INCLUDE 'ABA_PARAM.INC'
+      COMMON /TALLY/ NPASS,NFAIL
+      CHARACTER*8 CINAME,SLNAME,MSNAME,CTAIL
+      COMMON /OLDNAM/ CINAME,CTAIL
+      CHARACTER*48 CASE
+      COMMON /CTX/ CASE
+      PARAMETER (MG=8, MSV=8, SENT=-999.25D0, BIG=1.0D36)
+      DIMENSION TAU(MG),DDTDDG(MG),DDTDDP(MG),DSLIP(MG),DDTDDT(MG),
+     1 STATEV(MSV),DGAM(MG),TAULM(MG),SLIP(MG),TIME(2),COORDS(3),
+     2 RCOORD(3),DROT(2,2),TEMP(2),PREDEF(2,1),PROPS(5)
+      CHARACTER*512 MSG
+C
+      CINAME = 'OLDCP-08'
+      CTAIL = 'NOTNAME!'
+      SLNAME = 'SLV'
+      MSNAME = 'MST'
+      CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
+     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
+      NFDIR = 2
+      NSTATV = 3
+      NPROPS = 5
+      CHRLNGTH = 0.2D0
+      PRESS = 100.0D0
+      DPRESS = 100.0D0
+      DO 40 IBAD = 0, 1
+        IF (IBAD .EQ. 0) THEN
+          CASE = 'CHARACTER*8 caller, good call'
+        ELSE
+          CASE = 'CHARACTER*8 caller, mu < 0'
+        END IF
+        PROPS(1) = 1.0D0
+        PROPS(2) = 0.3D0
+        IF (IBAD .EQ. 1) PROPS(2) = -0.3D0
+        PROPS(3) = 0.0D0
+        PROPS(4) = 0.0D0
+        PROPS(5) = 1.0D-3
+        DO 10 I = 1, MG
+          TAU(I) = SENT
+          DDTDDG(I) = SENT
+          DDTDDP(I) = SENT
+          DSLIP(I) = SENT
+          DDTDDT(I) = SENT
+          DGAM(I) = SENT
+          TAULM(I) = SENT
+   10   CONTINUE
+        DO 11 I = 1, MSV
+          STATEV(I) = SENT
+   11   CONTINUE
+        STATEV(1) = 0.0D0
+        STATEV(2) = 0.0D0
+        STATEV(3) = 0.0D0
+C       First contact (p - DPRESS = 0), DGAM = (4e-4, -3e-4), inside
+C       gc = 1e-3: tau = k_s DGAM with k_s = mu p/gc = 3e4.
+        TAU(1) = 0.0D0
+        TAU(2) = 0.0D0
+        DGAM(1) = 4.0D-4
+        DGAM(2) = -3.0D-4
+        SED = SENT
+        SFD = SENT
+        PNEWDT = BIG
+        LM = 0
+        CALL FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,
+     1   DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,
+     2   KSTEP,KINC,TIME,DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,
+     3   NPATCH,COORDS,RCOORD,DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,
+     4   NSTATV,CHRLNGTH,PROPS,NPROPS)
+        IF (IBAD .EQ. 0) THEN
+          CALL CHECK(LM .EQ. 0 .AND. PNEWDT .EQ. BIG,
+     1     'good call: LM = 0, PNEWDT untouched', 0)
+          CALL CHKNR(TAU(1), 3.0D4*4.0D-4, 1.0D-12*30.0D0,
+     1     'good call: tau = k_s DGAM', 0)
+          CALL CHKNR(TAU(2), -3.0D4*3.0D-4, 1.0D-12*30.0D0,
+     1     'good call: tau = k_s DGAM', 0)
+          CALL GUARD1(TAU, 3, MG, 'good call: TAU past NFDIR')
+        ELSE
+          CALL CHECK(PNEWDT .EQ. 0.25D0, 'PNEWDT = 0.25', 0)
+          CALL CHECK(TAU(1) .EQ. 0.0D0 .AND. TAU(2) .EQ. 0.0D0,
+     1     'TAU unchanged', 0)
+          CALL CHECK(STATEV(3) .EQ. 0.0D0, 'STATEV unchanged', 0)
+          CALL GETMSG(MSG, L)
+          NF0 = NFAIL
+          CALL CHECK(INDEX(MSG(1:L),
+     1     'interfacial: FRIC: interaction ''OLDCP-08'' (') .EQ. 1,
+     2     'message has the 8-character name, nothing past it', 0)
+          CALL CHECK(INDEX(MSG(1:L), 'NOTNAME') .EQ. 0,
+     1     'nothing read past the hidden length', 0)
+          IF (NFAIL .GT. NF0 .AND. NFAIL .LE. 40) WRITE (*,'(2A)')
+     1     '   message: ', MSG(1:MIN(L,200))
+        END IF
+        CALL CHECK(CINAME .EQ. 'OLDCP-08' .AND. CTAIL .EQ. 'NOTNAME!',
+     1   'names not written', 0)
+   40 CONTINUE
+      END
+
+C-----------------------------------------------------------------------
+C     The calling thread's last error message, through the library's
+C     native C API (size_t ifl_last_error_copy(char *buf, size_t len):
+C     copies at most len-1 bytes and a NUL, returns the full length).
+C-----------------------------------------------------------------------
+      SUBROUTINE GETMSG(MSG, L)
+      USE, INTRINSIC :: ISO_C_BINDING, ONLY: C_SIZE_T
+      CHARACTER*(*) MSG
+      INTERFACE
+        FUNCTION IFLCPY(BUF, NBUF) BIND(C, NAME='ifl_last_error_copy')
+          USE, INTRINSIC :: ISO_C_BINDING, ONLY: C_CHAR, C_SIZE_T
+          INTEGER(C_SIZE_T) :: IFLCPY
+          CHARACTER(KIND=C_CHAR), DIMENSION(*) :: BUF
+          INTEGER(C_SIZE_T), VALUE :: NBUF
+        END FUNCTION IFLCPY
+      END INTERFACE
+      INTEGER(C_SIZE_T) :: NFULL
+      MSG = ' '
+      NFULL = IFLCPY(MSG, INT(LEN(MSG), C_SIZE_T))
+      L = INT(MIN(NFULL, INT(LEN(MSG) - 1, C_SIZE_T)))
+      END
+
+C-----------------------------------------------------------------------
+C     Host arguments the Coulomb law does not use (step 1, Delta t = 0.1,
+C     identity DROT, contact at node 7, point 1, element 0).
+C-----------------------------------------------------------------------
+      SUBROUTINE HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,
+     1 COORDS,RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
+      INCLUDE 'ABA_PARAM.INC'
+      DIMENSION TIME(2),COORDS(3),RCOORD(3),DROT(2,2),TEMP(2),
+     1 PREDEF(2,1),SLIP(MG)
+      KSTEP = 1
+      KINC = 1
+      TIME(1) = 0.1D0
+      TIME(2) = 0.1D0
+      DTIME = 0.1D0
+      NOEL = 0
+      NPT = 1
+      NODE = 7
+      NPATCH = 1
+      MCRD = 3
+      NPRED = 1
+      DO 10 I = 1, 3
+        COORDS(I) = 0.0D0
+        RCOORD(I) = 0.0D0
+   10 CONTINUE
+      DROT(1,1) = 1.0D0
+      DROT(2,1) = 0.0D0
+      DROT(1,2) = 0.0D0
+      DROT(2,2) = 1.0D0
+      TEMP(1) = 20.0D0
+      TEMP(2) = 20.0D0
+      PREDEF(1,1) = 0.0D0
+      PREDEF(2,1) = 0.0D0
+      DDPDDH = 1.0D6
+      DO 20 I = 1, MG
+        SLIP(I) = 0.0D0
+   20 CONTINUE
+      END
+
+      SUBROUTINE SAME(A, B, N, WHAT)
+      INCLUDE 'ABA_PARAM.INC'
+      DIMENSION A(N), B(N)
+      CHARACTER*(*) WHAT
+      LOGICAL OK
+      OK = .TRUE.
+      DO 10 I = 1, N
+        IF (A(I) .NE. B(I)) OK = .FALSE.
+   10 CONTINUE
+      CALL CHECK(OK, WHAT, 0)
+      END
+
+      SUBROUTINE ZEROS(A, N, WHAT)
+      INCLUDE 'ABA_PARAM.INC'
+      DIMENSION A(N)
+      CHARACTER*(*) WHAT
+      LOGICAL OK
+      OK = .TRUE.
+      DO 10 I = 1, N
+        IF (A(I) .NE. 0.0D0) OK = .FALSE.
+   10 CONTINUE
+      CALL CHECK(OK, WHAT, 0)
+      END
+
+      SUBROUTINE GUARD1(A, IFROM, ITO, WHAT)
+      INCLUDE 'ABA_PARAM.INC'
+      PARAMETER (SENT=-999.25D0)
+      DIMENSION A(*)
+      CHARACTER*(*) WHAT
+      LOGICAL OK
+      IF (ITO .LT. IFROM) RETURN
+      OK = .TRUE.
+      DO 10 I = IFROM, ITO
+        IF (A(I) .NE. SENT) OK = .FALSE.
+   10 CONTINUE
+      CALL CHECK(OK, WHAT, 0)
+      END
+
+C-----------------------------------------------------------------------
+C     Tally; a failure prints the case and the check (first 40 only).
+C-----------------------------------------------------------------------
+      SUBROUTINE CHECK(OK, WHAT, K)
+      LOGICAL OK
+      CHARACTER*(*) WHAT
+      CHARACTER*48 CASE
+      COMMON /CTX/ CASE
+      COMMON /TALLY/ NPASS,NFAIL
+      IF (OK) THEN
+        NPASS = NPASS + 1
+      ELSE
+        NFAIL = NFAIL + 1
+        IF (NFAIL .LE. 40) WRITE (*,'(A,A,A,I0,A,A)') 'FAIL [',
+     1   TRIM(CASE), '] check ', K, ': ', WHAT
+      END IF
+      END
+
+      SUBROUTINE CHKNR(A, B, TOL, WHAT, K)
+      INCLUDE 'ABA_PARAM.INC'
+      CHARACTER*(*) WHAT
+      COMMON /TALLY/ NPASS,NFAIL
+      CALL CHECK(ABS(A - B) .LE. TOL, WHAT, K)
+      IF (.NOT. (ABS(A - B) .LE. TOL) .AND. NFAIL .LE. 40)
+     1 WRITE (*,'(A,1P,3E24.15)') '   got, expected, tol:', A, B, TOL
+      END
