@@ -13,6 +13,62 @@
 
 #include <stddef.h>
 
+/**
+ * Status of a native call. The numbers are stable.
+ */
+typedef enum IflStatus {
+  /**
+   * Success.
+   */
+  IFL_STATUS_OK = 0,
+  /**
+   * A parameter or the configuration file is wrong (see `ifl_last_error`).
+   */
+  IFL_STATUS_BAD_PARAMETER = 1,
+  /**
+   * An input of this call is unusable (NaN, infinite, NULL pointer, …).
+   */
+  IFL_STATUS_BAD_INPUT = 2,
+  /**
+   * The computation failed.
+   */
+  IFL_STATUS_NUMERICAL_FAILURE = 3,
+  /**
+   * A bug in the library (a caught panic).
+   */
+  IFL_STATUS_INTERNAL_ERROR = 4,
+} IflStatus;
+
+/**
+ * Gap conductance and its derivatives (seed 000, section 5.2.4): q = k·(θ_A − θ_B).
+ */
+typedef struct IflConductance {
+  /**
+   * Conductance k (conduction plus radiation's equivalent conductance).
+   */
+  double k;
+  /**
+   * ∂k/∂d (clearance).
+   */
+  double dk_dd;
+  /**
+   * ∂k/∂p (contact pressure).
+   */
+  double dk_dp;
+  /**
+   * ∂k/∂θ̄, θ̄ = (θ_A + θ_B)/2 (for radiation: at fixed θ_A − θ_B).
+   */
+  double dk_dtheta_mean;
+  /**
+   * ∂q/∂θ_A = k + ½(∂k/∂θ̄)(θ_A − θ_B) for conduction, exact for radiation.
+   */
+  double dq_dtheta_a;
+  /**
+   * ∂q/∂θ_B = −k + ½(∂k/∂θ̄)(θ_A − θ_B) for conduction, exact for radiation.
+   */
+  double dq_dtheta_b;
+} IflConductance;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -93,6 +149,78 @@ void fric_(int *lm,
            size_t slname_len,
            size_t msname_len);
 
+#if !defined(INTERFACIAL_CALCULIX)
+/**
+ * Abaqus/Standard `GAPCON`: gap conductance `AK(1)` of one point, callable from Fortran as
+ * `CALL GAPCON(...)` with no interface block. The heat flux is `AK(1)·(TEMP(1) − TEMP(2))`.
+ *
+ * The law comes from the configuration file named by `INTERFACIAL_CONFIG` (TOML; read and
+ * validated once, at the first call), entry `interactions.<CINAME>` matched exactly after
+ * trimming trailing blanks and ignoring case, else the `"*"` entry (docs/config.md). Reads
+ * `D(1)` (clearance), `D(2)` (contact pressure), `TEMP(1..2)` and `CINAME`; never reads
+ * `FLOWM`, `PREDEF`, `NPRED`, `SLNAME`, `MSNAME`, `TIME`, `COORDS`, `KSTEP`, `KINC`. Writes
+ * `AK(1)` only.
+ *
+ * On failure (no or bad configuration file, interaction not configured, NaN or infinite
+ * input, surface temperature below absolute zero with radiation, overflow, internal panic):
+ * `AK(1) = 0` and one message per distinct cause (stderr or `$INTERFACIAL_LOG`;
+ * `ifl_last_error` on the calling thread).
+ *
+ * # Safety
+ * Pointers valid for the GAPCON signature: `AK(5)`, `D(2)`, `TEMP(2)`, `CINAME` of the hidden
+ * length `ciname_len`. The unread arguments may be anything.
+ */
+void gapcon_(double *ak,
+             const double *d,
+             const double *flowm,
+             const double *temp,
+             const double *predef,
+             const double *time,
+             const char *ciname,
+             const char *slname,
+             const char *msname,
+             const double *coords,
+             const int *noel,
+             const int *node,
+             const int *npred,
+             const int *kstep,
+             const int *kinc,
+             size_t ciname_len,
+             size_t slname_len,
+             size_t msname_len);
+#endif
+
+#if defined(INTERFACIAL_CALCULIX)
+/**
+ * CalculiX's `gapcon`: the Abaqus argument list plus `AREA` after `KINC` (built with
+ * `--features calculix`). Same law and outputs as the Abaqus variant; `FLOWM`, `PREDEF`,
+ * `NPRED`, `SLNAME`, `MSNAME` and `AREA` are never read (CalculiX may pass them
+ * uninitialised).
+ *
+ * # Safety
+ * As for the Abaqus variant.
+ */
+void gapcon_(double *ak,
+             const double *d,
+             const double *flowm,
+             const double *temp,
+             const double *predef,
+             const double *time,
+             const char *ciname,
+             const char *slname,
+             const char *msname,
+             const double *coords,
+             const int *noel,
+             const int *node,
+             const int *npred,
+             const int *kstep,
+             const int *kinc,
+             const double *area,
+             size_t ciname_len,
+             size_t slname_len,
+             size_t msname_len);
+#endif
+
 /**
  * The library version as a NUL-terminated string, e.g. `"0.1.0"`. Static storage: never free it.
  */
@@ -120,6 +248,22 @@ size_t ifl_last_error_copy(char *buf, size_t len);
  * Forgets the calling thread's last error message.
  */
 void ifl_clear_error(void);
+
+/**
+ * The thermal law of `interaction` (NUL-terminated; matched as `gapcon_` matches `CINAME`) from
+ * the `INTERFACIAL_CONFIG` file, evaluated at clearance `d`, contact pressure `p` and surface
+ * temperatures `theta_a`, `theta_b`. On success writes `*out` and returns `IFL_STATUS_OK`; on
+ * failure writes `*out` as all zeros (when `out` is not NULL), reports, and returns the cause.
+ *
+ * # Safety
+ * `interaction` is NULL or a NUL-terminated string; `out` is NULL or writable.
+ */
+enum IflStatus ifl_gap_conductance(const char *interaction,
+                                   double d,
+                                   double p,
+                                   double theta_a,
+                                   double theta_b,
+                                   struct IflConductance *out);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -28,6 +28,7 @@
 
 #[allow(unsafe_code)]
 pub mod abi;
+pub mod config;
 pub mod laws;
 mod outcome;
 pub mod props;

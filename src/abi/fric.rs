@@ -115,12 +115,12 @@ pub unsafe extern "C" fn fric_(
         props,
         nprops,
     };
-    boundary(
+    let _ = boundary(
         // SAFETY (all three closures): the pointers are the host's, valid per the contract above.
         || unsafe { site(ciname, ciname_len, noel, node, npt) },
         || unsafe { args.run() },
         || unsafe { args.fail() },
-    )
+    );
 }
 
 /// The arguments `fric_` reads or writes, gathered so the generic body can be written once.

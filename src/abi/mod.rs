@@ -12,11 +12,29 @@ use crate::LawError;
 use crate::report::{Site, report};
 
 pub mod fric;
+pub mod gapcon;
 pub mod host;
 pub mod native;
 
 pub use fric::fric_;
-pub use native::{ifl_clear_error, ifl_last_error, ifl_last_error_copy, ifl_version};
+pub use gapcon::gapcon_;
+pub use native::{
+    IflConductance, IflStatus, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
+    ifl_last_error_copy, ifl_version,
+};
+
+/// What went wrong in an entry point, for callers that return a status.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Fault {
+    /// A parameter, `PROPS` entry or configuration file is wrong.
+    Parameter,
+    /// An input of this call is unusable.
+    Input,
+    /// The computation failed.
+    Numerical,
+    /// A panic (a bug in the library).
+    Internal,
+}
 
 /// Runs an entry point's `body`. On an error or a panic it first calls `on_fault` (which writes
 /// the routine's safe outputs, e.g. `PNEWDT`), then reports the cause at `site()`. Nothing
@@ -25,17 +43,27 @@ pub(crate) fn boundary(
     site: impl FnOnce() -> Site,
     body: impl FnOnce() -> Result<(), LawError>,
     on_fault: impl FnOnce(),
-) {
-    let cause = match catch_unwind(AssertUnwindSafe(body)) {
-        Ok(Ok(())) => return,
-        Ok(Err(e)) => e.to_string(),
+) -> Result<(), Fault> {
+    let (fault, cause) = match catch_unwind(AssertUnwindSafe(body)) {
+        Ok(Ok(())) => return Ok(()),
+        Ok(Err(e)) => {
+            let fault = match e {
+                LawError::Parameter(_) => Fault::Parameter,
+                LawError::Input(_) => Fault::Input,
+                LawError::Numerical(_) => Fault::Numerical,
+            };
+            (fault, e.to_string())
+        }
         Err(payload) => {
             let what = payload
                 .downcast_ref::<&str>()
                 .map(|s| (*s).to_owned())
                 .or_else(|| payload.downcast_ref::<String>().cloned())
                 .unwrap_or_else(|| "unknown".into());
-            format!("internal error (panic: {what}); please report it")
+            (
+                Fault::Internal,
+                format!("internal error (panic: {what}); please report it"),
+            )
         }
     };
     // The failure path must not unwind either (a panic in a host-supplied name conversion, an
@@ -44,6 +72,7 @@ pub(crate) fn boundary(
         on_fault();
         report(&site(), &cause);
     }));
+    Err(fault)
 }
 
 /// Reads a scalar argument passed by reference.

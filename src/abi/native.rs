@@ -53,3 +53,116 @@ pub unsafe extern "C" fn ifl_last_error_copy(buf: *mut c_char, len: usize) -> us
 pub extern "C" fn ifl_clear_error() {
     clear_last_error();
 }
+
+/// Status of a native call. The numbers are stable.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum IflStatus {
+    /// Success.
+    Ok = 0,
+    /// A parameter or the configuration file is wrong (see `ifl_last_error`).
+    BadParameter = 1,
+    /// An input of this call is unusable (NaN, infinite, NULL pointer, …).
+    BadInput = 2,
+    /// The computation failed.
+    NumericalFailure = 3,
+    /// A bug in the library (a caught panic).
+    InternalError = 4,
+}
+
+impl From<Result<(), super::Fault>> for IflStatus {
+    fn from(r: Result<(), super::Fault>) -> Self {
+        match r {
+            Ok(()) => IflStatus::Ok,
+            Err(super::Fault::Parameter) => IflStatus::BadParameter,
+            Err(super::Fault::Input) => IflStatus::BadInput,
+            Err(super::Fault::Numerical) => IflStatus::NumericalFailure,
+            Err(super::Fault::Internal) => IflStatus::InternalError,
+        }
+    }
+}
+
+/// Gap conductance and its derivatives (seed 000, section 5.2.4): q = k·(θ_A − θ_B).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct IflConductance {
+    /// Conductance k (conduction plus radiation's equivalent conductance).
+    pub k: f64,
+    /// ∂k/∂d (clearance).
+    pub dk_dd: f64,
+    /// ∂k/∂p (contact pressure).
+    pub dk_dp: f64,
+    /// ∂k/∂θ̄, θ̄ = (θ_A + θ_B)/2 (for radiation: at fixed θ_A − θ_B).
+    pub dk_dtheta_mean: f64,
+    /// ∂q/∂θ_A = k + ½(∂k/∂θ̄)(θ_A − θ_B) for conduction, exact for radiation.
+    pub dq_dtheta_a: f64,
+    /// ∂q/∂θ_B = −k + ½(∂k/∂θ̄)(θ_A − θ_B) for conduction, exact for radiation.
+    pub dq_dtheta_b: f64,
+}
+
+/// The thermal law of `interaction` (NUL-terminated; matched as `gapcon_` matches `CINAME`) from
+/// the `INTERFACIAL_CONFIG` file, evaluated at clearance `d`, contact pressure `p` and surface
+/// temperatures `theta_a`, `theta_b`. On success writes `*out` and returns `IFL_STATUS_OK`; on
+/// failure writes `*out` as all zeros (when `out` is not NULL), reports, and returns the cause.
+///
+/// # Safety
+/// `interaction` is NULL or a NUL-terminated string; `out` is NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ifl_gap_conductance(
+    interaction: *const c_char,
+    d: f64,
+    p: f64,
+    theta_a: f64,
+    theta_b: f64,
+    out: *mut IflConductance,
+) -> IflStatus {
+    // SAFETY: NUL-terminated per the contract; NULL handled.
+    let name: &[u8] = if interaction.is_null() {
+        &[]
+    } else {
+        unsafe { CStr::from_ptr(interaction) }.to_bytes()
+    };
+    super::boundary(
+        || crate::report::Site {
+            routine: "ifl_gap_conductance",
+            interaction: String::from_utf8_lossy(name).trim_end().to_owned(),
+            place: "native call".into(),
+        },
+        || {
+            if interaction.is_null() || out.is_null() {
+                return Err(crate::LawError::Input(
+                    "interaction or out is a NULL pointer".into(),
+                ));
+            }
+            let cfg = crate::config::global()
+                .as_ref()
+                .map_err(|m| crate::LawError::Parameter(m.clone()))?;
+            let law = cfg.gap_law(name).ok_or_else(|| {
+                crate::LawError::Parameter(format!(
+                    "interaction not found in {} (and no \"*\" entry)",
+                    cfg.path()
+                ))
+            })?;
+            let r = law.evaluate(d, p, theta_a, theta_b)?;
+            // SAFETY: checked non-NULL above; writable per the contract.
+            unsafe {
+                out.write(IflConductance {
+                    k: r.k,
+                    dk_dd: r.dk_dd,
+                    dk_dp: r.dk_dp,
+                    dk_dtheta_mean: r.dk_dtheta_mean,
+                    dq_dtheta_a: r.dq_dtheta_a,
+                    dq_dtheta_b: r.dq_dtheta_b,
+                });
+            }
+            Ok(())
+        },
+        || {
+            if !out.is_null() {
+                // SAFETY: writable per the contract.
+                unsafe { out.write(IflConductance::default()) };
+            }
+        },
+    )
+    .into()
+}

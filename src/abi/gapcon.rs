@@ -1,0 +1,171 @@
+//! `gapcon_`: the Abaqus/Standard GAPCON user subroutine (and, with the `calculix` feature,
+//! CalculiX's variant of it).
+
+use std::ffi::{c_char, c_int};
+
+use super::{boundary, fortran_string, read, read_array, write};
+use crate::LawError;
+use crate::config;
+use crate::report::Site;
+
+/// `AK(1)` written when a call fails: no conductance. The failure is always reported (once per
+/// cause), so this is never a silent default; `INTERFACIAL_STRICT=1` aborts instead.
+pub const GAPCON_SAFE_CONDUCTANCE: f64 = 0.0;
+
+/// Abaqus/Standard `GAPCON`: gap conductance `AK(1)` of one point, callable from Fortran as
+/// `CALL GAPCON(...)` with no interface block. The heat flux is `AK(1)·(TEMP(1) − TEMP(2))`.
+///
+/// The law comes from the configuration file named by `INTERFACIAL_CONFIG` (TOML; read and
+/// validated once, at the first call), entry `interactions.<CINAME>` matched exactly after
+/// trimming trailing blanks and ignoring case, else the `"*"` entry (docs/config.md). Reads
+/// `D(1)` (clearance), `D(2)` (contact pressure), `TEMP(1..2)` and `CINAME`; never reads
+/// `FLOWM`, `PREDEF`, `NPRED`, `SLNAME`, `MSNAME`, `TIME`, `COORDS`, `KSTEP`, `KINC`. Writes
+/// `AK(1)` only.
+///
+/// On failure (no or bad configuration file, interaction not configured, NaN or infinite
+/// input, surface temperature below absolute zero with radiation, overflow, internal panic):
+/// `AK(1) = 0` and one message per distinct cause (stderr or `$INTERFACIAL_LOG`;
+/// `ifl_last_error` on the calling thread).
+///
+/// # Safety
+/// Pointers valid for the GAPCON signature: `AK(5)`, `D(2)`, `TEMP(2)`, `CINAME` of the hidden
+/// length `ciname_len`. The unread arguments may be anything.
+#[cfg(not(feature = "calculix"))]
+#[allow(clippy::too_many_arguments)]
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gapcon_(
+    ak: *mut f64,
+    d: *const f64,
+    flowm: *const f64,
+    temp: *const f64,
+    predef: *const f64,
+    time: *const f64,
+    ciname: *const c_char,
+    slname: *const c_char,
+    msname: *const c_char,
+    coords: *const f64,
+    noel: *const c_int,
+    node: *const c_int,
+    npred: *const c_int,
+    kstep: *const c_int,
+    kinc: *const c_int,
+    ciname_len: usize,
+    slname_len: usize,
+    msname_len: usize,
+) {
+    let _ = (
+        flowm, predef, time, slname, msname, coords, npred, kstep, kinc,
+    );
+    let _ = (slname_len, msname_len);
+    // SAFETY: the host's pointers, valid per the contract above.
+    unsafe { gap_conductance(ak, d, temp, ciname, ciname_len, noel, node) }
+}
+
+/// CalculiX's `gapcon`: the Abaqus argument list plus `AREA` after `KINC` (built with
+/// `--features calculix`). Same law and outputs as the Abaqus variant; `FLOWM`, `PREDEF`,
+/// `NPRED`, `SLNAME`, `MSNAME` and `AREA` are never read (CalculiX may pass them
+/// uninitialised).
+///
+/// # Safety
+/// As for the Abaqus variant.
+#[cfg(feature = "calculix")]
+#[allow(clippy::too_many_arguments)]
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn gapcon_(
+    ak: *mut f64,
+    d: *const f64,
+    flowm: *const f64,
+    temp: *const f64,
+    predef: *const f64,
+    time: *const f64,
+    ciname: *const c_char,
+    slname: *const c_char,
+    msname: *const c_char,
+    coords: *const f64,
+    noel: *const c_int,
+    node: *const c_int,
+    npred: *const c_int,
+    kstep: *const c_int,
+    kinc: *const c_int,
+    area: *const f64,
+    ciname_len: usize,
+    slname_len: usize,
+    msname_len: usize,
+) {
+    let _ = (
+        flowm, predef, time, slname, msname, coords, npred, kstep, kinc, area,
+    );
+    let _ = (slname_len, msname_len);
+    // SAFETY: the host's pointers, valid per the contract above.
+    unsafe { gap_conductance(ak, d, temp, ciname, ciname_len, noel, node) }
+}
+
+/// The body shared by both variants.
+#[inline(always)]
+unsafe fn gap_conductance(
+    ak: *mut f64,
+    d: *const f64,
+    temp: *const f64,
+    ciname: *const c_char,
+    ciname_len: usize,
+    noel: *const c_int,
+    node: *const c_int,
+) {
+    let _ = boundary(
+        // SAFETY: CINAME has the hidden length the host passed; NOEL/NODE may be NULL.
+        || unsafe { site(ciname, ciname_len, noel, node) },
+        // SAFETY: D(2), TEMP(2) readable, AK(1) writable per the GAPCON contract.
+        || unsafe {
+            let cfg = config::global()
+                .as_ref()
+                .map_err(|m| LawError::Parameter(m.clone()))?;
+            let name = name_bytes(ciname, ciname_len);
+            let law = cfg.gap_law(name).ok_or_else(|| {
+                LawError::Parameter(format!(
+                    "interaction not found in {} (and no \"*\" entry); add [interactions.{}]",
+                    cfg.path(),
+                    String::from_utf8_lossy(name).trim_end()
+                ))
+            })?;
+            let [clearance, pressure] = read_array::<2>(d, "D")?;
+            let [theta_a, theta_b] = read_array::<2>(temp, "TEMP")?;
+            let r = law.evaluate(clearance, pressure, theta_a, theta_b)?;
+            if ak.is_null() {
+                return Err(LawError::Input("AK is a NULL pointer".into()));
+            }
+            write(ak, r.k);
+            Ok(())
+        },
+        // SAFETY: AK(1) writable (or NULL, then skipped).
+        || unsafe { write(ak, GAPCON_SAFE_CONDUCTANCE) },
+    );
+}
+
+/// CINAME as bytes, without copying.
+///
+/// # Safety
+/// `p` is NULL or points to `len` readable bytes that outlive the borrow.
+unsafe fn name_bytes<'a>(p: *const c_char, len: usize) -> &'a [u8] {
+    if p.is_null() || len == 0 {
+        &[]
+    } else {
+        // SAFETY: as documented.
+        unsafe { std::slice::from_raw_parts(p.cast::<u8>(), len) }
+    }
+}
+
+unsafe fn site(
+    ciname: *const c_char,
+    ciname_len: usize,
+    noel: *const c_int,
+    node: *const c_int,
+) -> Site {
+    // SAFETY: the host's pointers; NULL reads as "?".
+    let num = |p: *const c_int| unsafe { read(p, "") }.map_or("?".to_string(), |v| v.to_string());
+    Site {
+        routine: "GAPCON",
+        // SAFETY: CINAME has the hidden length the host passed.
+        interaction: unsafe { fortran_string(ciname, ciname_len) },
+        place: format!("element {}, node {}", num(noel), num(node)),
+    }
+}

@@ -1,0 +1,478 @@
+//! The configuration file: a TOML file named by `INTERFACIAL_CONFIG`, keyed by interaction name,
+//! giving the laws of the routines that have no `PROPS` (GAPCON). Read and validated once, at
+//! first use, by whichever thread comes first; every error names the file, the line and the key.
+//!
+//! ```toml
+//! [interactions.SI1.conductance]
+//! law = "constant"
+//! k = 2.0
+//!
+//! [interactions."*".conductance]          # fallback for every other interaction
+//! law = "pressure-table"
+//! table = [[0.0, 1.0], [100.0, 3.0]]      # [p, k] rows; [p, k, θ̄] for temperature dependence
+//! ```
+//!
+//! The full schema is in `docs/config.md`.
+
+use std::collections::BTreeMap;
+use std::sync::OnceLock;
+
+use serde::Deserialize;
+use toml::Spanned;
+
+use crate::LawError;
+use crate::laws::gap_conductance::{Conduction, GapLaw};
+use crate::laws::gap_radiation::Radiation;
+use crate::laws::table::{Table1, TemperatureTable};
+
+/// Environment variable naming the configuration file.
+pub const CONFIG_ENV: &str = "INTERFACIAL_CONFIG";
+
+/// Name of the fallback entry.
+pub const FALLBACK: &str = "*";
+
+/// Default c of the Cooper–Mikic–Yovanovich correlation.
+pub const CMY_DEFAULT_C: f64 = 1.25;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileSpec {
+    #[serde(default)]
+    interactions: BTreeMap<String, Spanned<InteractionSpec>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct InteractionSpec {
+    conductance: Option<Spanned<ConductanceSpec>>,
+    radiation: Option<Spanned<RadiationSpec>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ConductanceSpec {
+    law: Spanned<String>,
+    k: Option<Spanned<f64>>,
+    table: Option<Spanned<Vec<Vec<f64>>>>,
+    k_gas: Option<Spanned<f64>>,
+    g0: Option<Spanned<f64>>,
+    min_gap: Option<Spanned<f64>>,
+    c: Option<Spanned<f64>>,
+    k_s: Option<Spanned<f64>>,
+    m: Option<Spanned<f64>>,
+    sigma: Option<Spanned<f64>>,
+    #[serde(rename = "H_c")]
+    h_c: Option<Spanned<f64>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RadiationSpec {
+    view_factor: Spanned<f64>,
+    stefan_boltzmann: Spanned<f64>,
+    absolute_zero: Spanned<f64>,
+}
+
+/// A validated configuration file.
+#[derive(Clone, Debug)]
+pub struct Config {
+    path: String,
+    /// (name as written, law); names are unique ignoring ASCII case.
+    gap_laws: Vec<(String, GapLaw)>,
+    fallback: Option<GapLaw>,
+}
+
+/// Builds "file:line: key: message" from a byte span of the file.
+struct Locator<'a> {
+    path: &'a str,
+    text: &'a str,
+}
+
+impl Locator<'_> {
+    fn line(&self, span: std::ops::Range<usize>) -> usize {
+        let end = span.start.min(self.text.len());
+        self.text.as_bytes()[..end]
+            .iter()
+            .filter(|b| **b == b'\n')
+            .count()
+            + 1
+    }
+
+    fn error(&self, span: std::ops::Range<usize>, key: &str, message: &str) -> String {
+        format!("{}:{}: {key}: {message}", self.path, self.line(span))
+    }
+}
+
+impl Config {
+    /// Parses and validates `text`; `path` is used in messages only.
+    pub fn parse(path: &str, text: &str) -> Result<Config, String> {
+        let at = Locator { path, text };
+        let spec: FileSpec = toml::from_str(text).map_err(|e| {
+            let line = e.span().map_or(0, |s| at.line(s));
+            format!("{path}:{line}: {}", e.message())
+        })?;
+        let mut gap_laws: Vec<(String, GapLaw)> = Vec::new();
+        let mut fallback = None;
+        for (name, entry) in &spec.interactions {
+            let key = format!("interactions.{}", toml_key(name));
+            let span = entry.span();
+            let entry = entry.get_ref();
+            let conduction = entry
+                .conductance
+                .as_ref()
+                .map(|c| conduction(&at, &format!("{key}.conductance"), c))
+                .transpose()?;
+            let radiation = entry
+                .radiation
+                .as_ref()
+                .map(|r| radiation(&at, &format!("{key}.radiation"), r.get_ref()))
+                .transpose()?;
+            let law = GapLaw::new(conduction, radiation).map_err(|e| {
+                at.error(
+                    span.clone(),
+                    &key,
+                    &format!("{e}; give [{key}.conductance] and/or [{key}.radiation]"),
+                )
+            })?;
+            if name == FALLBACK {
+                fallback = Some(law);
+                continue;
+            }
+            if name.trim() != name || name.is_empty() {
+                return Err(at.error(
+                    span,
+                    &key,
+                    "interaction names cannot be empty or begin or end with blanks",
+                ));
+            }
+            if let Some((other, _)) = gap_laws.iter().find(|(n, _)| n.eq_ignore_ascii_case(name)) {
+                return Err(at.error(
+                    span,
+                    &key,
+                    &format!("the same interaction as \"{other}\" (names match ignoring case)"),
+                ));
+            }
+            gap_laws.push((name.clone(), law));
+        }
+        Ok(Config {
+            path: path.to_owned(),
+            gap_laws,
+            fallback,
+        })
+    }
+
+    /// Reads and validates the file at `path`.
+    pub fn load(path: &str) -> Result<Config, String> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| format!("{path}: cannot read the configuration file: {e}"))?;
+        Config::parse(path, &text)
+    }
+
+    /// The file this configuration came from.
+    #[must_use]
+    pub fn path(&self) -> &str {
+        &self.path
+    }
+
+    /// The thermal law of an interaction: exact name match after trimming trailing blanks,
+    /// ignoring ASCII case (never by prefix), else the `"*"` entry.
+    #[must_use]
+    pub fn gap_law(&self, name: &[u8]) -> Option<&GapLaw> {
+        let end = name
+            .iter()
+            .rposition(|b| *b != b' ' && *b != 0)
+            .map_or(0, |i| i + 1);
+        let name = &name[..end];
+        self.gap_laws
+            .iter()
+            .find(|(n, _)| n.as_bytes().eq_ignore_ascii_case(name))
+            .map(|(_, law)| law)
+            .or(self.fallback.as_ref())
+    }
+}
+
+/// The process-wide configuration, read once from `$INTERFACIAL_CONFIG` at first use.
+pub(crate) fn global() -> &'static Result<Config, String> {
+    static CONFIG: OnceLock<Result<Config, String>> = OnceLock::new();
+    CONFIG.get_or_init(|| match std::env::var(CONFIG_ENV) {
+        Ok(path) if !path.trim().is_empty() => Config::load(path.trim()),
+        _ => Err(format!(
+            "{CONFIG_ENV} is not set: name the TOML file that gives each interaction's \
+             conductance law (see docs/config.md)"
+        )),
+    })
+}
+
+fn toml_key(name: &str) -> String {
+    if !name.is_empty()
+        && name
+            .bytes()
+            .all(|b| b.is_ascii_alphanumeric() || b == b'_' || b == b'-')
+    {
+        name.to_owned()
+    } else {
+        format!("\"{name}\"")
+    }
+}
+
+/// The keys each conductance law accepts, besides `law`.
+const LAW_KEYS: &[(&str, &[&str])] = &[
+    ("constant", &["k"]),
+    ("clearance-table", &["table"]),
+    ("pressure-table", &["table"]),
+    ("gas-gap", &["k_gas", "g0", "min_gap"]),
+    ("cmy", &["c", "k_s", "m", "sigma", "H_c"]),
+];
+
+fn conduction(
+    at: &Locator,
+    key: &str,
+    spec: &Spanned<ConductanceSpec>,
+) -> Result<Conduction, String> {
+    let c = spec.get_ref();
+    let law = c.law.get_ref().as_str();
+    let Some((_, allowed)) = LAW_KEYS.iter().find(|(name, _)| *name == law) else {
+        let names: Vec<&str> = LAW_KEYS.iter().map(|(n, _)| *n).collect();
+        return Err(at.error(
+            c.law.span(),
+            &format!("{key}.law"),
+            &format!(
+                "unknown law \"{law}\"; expected one of {}",
+                names.join(", ")
+            ),
+        ));
+    };
+    let given: [(&str, Option<std::ops::Range<usize>>); 9] = [
+        ("k", c.k.as_ref().map(Spanned::span)),
+        ("table", c.table.as_ref().map(Spanned::span)),
+        ("k_gas", c.k_gas.as_ref().map(Spanned::span)),
+        ("g0", c.g0.as_ref().map(Spanned::span)),
+        ("min_gap", c.min_gap.as_ref().map(Spanned::span)),
+        ("c", c.c.as_ref().map(Spanned::span)),
+        ("k_s", c.k_s.as_ref().map(Spanned::span)),
+        ("m", c.m.as_ref().map(Spanned::span)),
+        ("sigma", c.sigma.as_ref().map(Spanned::span)),
+    ];
+    let h_c_span = c.h_c.as_ref().map(Spanned::span);
+    for (name, span) in given.iter().cloned().chain([("H_c", h_c_span)]) {
+        if let Some(span) = span {
+            if !allowed.contains(&name) {
+                return Err(at.error(
+                    span,
+                    &format!("{key}.{name}"),
+                    &format!(
+                        "not a parameter of law \"{law}\" (it takes {})",
+                        allowed.join(", ")
+                    ),
+                ));
+            }
+        }
+    }
+    let required = |v: &Option<Spanned<f64>>, name: &str| -> Result<f64, String> {
+        v.as_ref().map(|s| *s.get_ref()).ok_or_else(|| {
+            at.error(
+                spec.span(),
+                &format!("{key}.{name}"),
+                &format!("law \"{law}\" needs {name}"),
+            )
+        })
+    };
+    // A value error points at the value's line when we know which value is at fault.
+    let bad = |span: std::ops::Range<usize>, name: &str, e: LawError| {
+        at.error(span, &format!("{key}.{name}"), &strip_kind(&e))
+    };
+    match law {
+        "constant" => {
+            let k = required(&c.k, "k")?;
+            Conduction::constant(k).map_err(|e| bad(span_of(&c.k, spec), "k", e))
+        }
+        "clearance-table" | "pressure-table" => {
+            let Some(table) = &c.table else {
+                return Err(at.error(
+                    spec.span(),
+                    &format!("{key}.table"),
+                    &format!("law \"{law}\" needs table = [[x, k], ...] or [[x, k, θ̄], ...]"),
+                ));
+            };
+            let t = temperature_table(table.get_ref())
+                .map_err(|m| at.error(table.span(), &format!("{key}.table"), &m))?;
+            let made = if law == "clearance-table" {
+                Conduction::clearance_table(t)
+            } else {
+                Conduction::pressure_table(t)
+            };
+            made.map_err(|e| bad(table.span(), "table", e))
+        }
+        "gas-gap" => {
+            let k_gas = required(&c.k_gas, "k_gas")?;
+            let g0 = c.g0.as_ref().map_or(0.0, |s| *s.get_ref());
+            let min_gap = c.min_gap.as_ref().map_or(0.0, |s| *s.get_ref());
+            Conduction::gas_gap(k_gas, g0, min_gap).map_err(|e| bad(spec.span(), "k_gas", e))
+        }
+        _ => {
+            let cc = c.c.as_ref().map_or(CMY_DEFAULT_C, |s| *s.get_ref());
+            Conduction::solid_spot(
+                cc,
+                required(&c.k_s, "k_s")?,
+                required(&c.m, "m")?,
+                required(&c.sigma, "sigma")?,
+                required(&c.h_c, "H_c")?,
+            )
+            .map_err(|e| bad(spec.span(), "cmy", e))
+        }
+    }
+}
+
+fn span_of(v: &Option<Spanned<f64>>, whole: &Spanned<ConductanceSpec>) -> std::ops::Range<usize> {
+    v.as_ref().map_or_else(|| whole.span(), Spanned::span)
+}
+
+fn strip_kind(e: &LawError) -> String {
+    match e {
+        LawError::Parameter(m) | LawError::Input(m) | LawError::Numerical(m) => m.clone(),
+    }
+}
+
+fn temperature_table(rows: &[Vec<f64>]) -> Result<TemperatureTable, String> {
+    let width = rows.first().map_or(2, Vec::len);
+    if let Some(i) = rows.iter().position(|r| r.len() != width) {
+        return Err(format!(
+            "row {} has {} entries; every row needs {width}",
+            i + 1,
+            rows[i].len()
+        ));
+    }
+    match width {
+        2 => {
+            let pairs: Vec<(f64, f64)> = rows.iter().map(|r| (r[0], r[1])).collect();
+            Table1::new(&pairs)
+                .map(TemperatureTable::constant_in_temperature)
+                .map_err(|e| e.0)
+        }
+        3 => {
+            let triples: Vec<(f64, f64, f64)> = rows.iter().map(|r| (r[0], r[1], r[2])).collect();
+            TemperatureTable::new(&triples).map_err(|e| e.0)
+        }
+        n => Err(format!("rows have {n} entries; use [x, k] or [x, k, θ̄]")),
+    }
+}
+
+fn radiation(at: &Locator, key: &str, r: &RadiationSpec) -> Result<Radiation, String> {
+    Radiation::new(
+        *r.view_factor.get_ref(),
+        *r.stefan_boltzmann.get_ref(),
+        *r.absolute_zero.get_ref(),
+    )
+    .map_err(|e| {
+        let m = strip_kind(&e);
+        let (span, name) = if m.starts_with("view_factor") {
+            (r.view_factor.span(), "view_factor")
+        } else if m.starts_with("stefan_boltzmann") {
+            (r.stefan_boltzmann.span(), "stefan_boltzmann")
+        } else {
+            (r.absolute_zero.span(), "absolute_zero")
+        };
+        at.error(span, &format!("{key}.{name}"), &m)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> Result<Config, String> {
+        Config::parse("test.toml", text)
+    }
+
+    #[test]
+    fn the_issue_example_parses_and_matches_names_exactly() {
+        let cfg = parse(
+            r#"
+[interactions.SI1.conductance]
+law = "constant"
+k = 2.0
+
+[interactions."*".conductance]
+law = "pressure-table"
+table = [[0.0, 1.0], [100.0, 3.0]]
+"#,
+        )
+        .unwrap();
+        let k = |name: &str, p: f64| {
+            cfg.gap_law(name.as_bytes())
+                .unwrap()
+                .evaluate(0.0, p, 20.0, 20.0)
+                .unwrap()
+                .k
+        };
+        assert_eq!(k("SI1", 50.0), 2.0);
+        assert_eq!(k("si1      ", 50.0), 2.0);
+        // SI1A is not SI1: it takes the fallback (k linear in p: 2 at p = 50).
+        assert_eq!(k("SI1A", 50.0), 2.0);
+        assert_eq!(k("SI1A", 100.0), 3.0);
+        assert_eq!(k("OTHER", -5.0), 1.0);
+        assert_eq!(k("OTHER", 500.0), 3.0);
+    }
+
+    #[test]
+    fn errors_name_file_line_and_key() {
+        for (text, line, needle) in [
+            (
+                "[interactions.A.conductance]\nlaw = \"constant\"\nk = -1.0\n",
+                3,
+                "interactions.A.conductance.k",
+            ),
+            (
+                "[interactions.A.conductance]\nlaw = \"magic\"\n",
+                2,
+                "unknown law",
+            ),
+            (
+                "[interactions.A.conductance]\nlaw = \"pressure-table\"\ntable = [[1.0, 1.0], [0.0, 2.0]]\n",
+                3,
+                "increasing",
+            ),
+            (
+                "[interactions.A.conductance]\nlaw = \"pressure-table\"\ntable = []\n",
+                3,
+                "empty",
+            ),
+            (
+                "[interactions.A.conductance]\nlaw = \"pressure-table\"\ntable = [[0.0, -1.0]]\n",
+                3,
+                "negative",
+            ),
+            (
+                "[interactions.A.conductance]\nlaw = \"constant\"\n",
+                1,
+                "needs k",
+            ),
+            (
+                "[interactions.A.conductance]\nlaw = \"constant\"\nk = 1.0\ntable = [[0.0, 1.0]]\n",
+                4,
+                "not a parameter",
+            ),
+            (
+                "[interactions.A.conductance]\nlaw = \"constant\"\nkk = 1.0\n",
+                3,
+                "kk",
+            ),
+            ("[interactions.A]\n", 1, "neither"),
+            (
+                "[interactions.A.conductance]\nlaw = \"constant\"\nk = 1\n[interactions.a.conductance]\nlaw = \"constant\"\nk = 2\n",
+                4,
+                "ignoring case",
+            ),
+            ("[interactions.A.conductance\n", 1, ""),
+            (
+                "[interactions.A.radiation]\nview_factor = 1.0\nstefan_boltzmann = 0.0\nabsolute_zero = 0.0\n",
+                3,
+                "stefan_boltzmann",
+            ),
+        ] {
+            let e = parse(text).unwrap_err();
+            assert!(e.starts_with(&format!("test.toml:{line}:")), "{e}");
+            assert!(e.contains(needle), "{e}");
+        }
+    }
+}
