@@ -20,7 +20,47 @@ pub enum FrictionLaw {
 }
 
 /// Reads `PROPS(1)` (the law code) and the law's parameters.
+///
+/// Runs on every call, so valid `PROPS` take a branch-light path that only decides "valid or
+/// not"; anything else goes to the slow path that names the offending entry. A property test
+/// checks that both paths agree.
+#[inline]
 pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
+    match coulomb_fast(props) {
+        Some(law) => Ok(FrictionLaw::Coulomb(law)),
+        None => friction_law_checked(props),
+    }
+}
+
+/// The common case of [`friction_law`]: a valid Coulomb `PROPS`, or `None`.
+#[inline(always)]
+fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
+    if props.len() < 2 || props.len() > COULOMB_NPROPS || props[0] != f64::from(LAW_COULOMB) {
+        return None;
+    }
+    let get = |i: usize| if i < props.len() { props[i] } else { 0.0 };
+    let (mu, mu2, tau_max) = (props[1], get(2), get(3));
+    let (gamma_crit, tolerance, stick) = (get(4), get(5), get(6));
+    // "0 (feature off / default) or finite and > 0"
+    let off_or_positive = |v: f64| v == 0.0 || (v > 0.0 && v < f64::INFINITY);
+    let valid = (0.0..f64::INFINITY).contains(&mu)
+        && (mu2 == 0.0 || mu2 == mu)
+        && off_or_positive(tau_max)
+        && off_or_positive(gamma_crit)
+        && off_or_positive(tolerance);
+    let stick = match stick {
+        0.0 => StickMode::Elastic,
+        1.0 => StickMode::Exact,
+        2.0 => StickMode::Rough,
+        _ => return None,
+    };
+    valid.then(|| Coulomb::from_validated(mu, tau_max, gamma_crit, tolerance, stick))
+}
+
+/// The slow path of [`friction_law`], which says what is wrong.
+#[cold]
+#[inline(never)]
+pub fn friction_law_checked(props: &[f64]) -> Result<FrictionLaw, LawError> {
     let Some(&code) = props.first() else {
         return Err(LawError::Parameter(
             "NPROPS = 0: PROPS(1) must select a law (1 = Coulomb)".into(),
@@ -111,6 +151,38 @@ fn in_props(index: usize, e: LawError) -> LawError {
 mod tests {
     use super::*;
     use crate::laws::coulomb::CriticalSlip;
+    use proptest::prelude::*;
+
+    fn entry() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            Just(0.0),
+            Just(1.0),
+            Just(2.0),
+            Just(-1.0),
+            Just(f64::NAN),
+            Just(f64::INFINITY),
+            0.0..10.0f64,
+        ]
+    }
+
+    proptest! {
+        /// The fast path accepts exactly what the checked path accepts, with the same result.
+        #[test]
+        fn fast_and_checked_paths_agree(mut props in prop::collection::vec(entry(), 0..9), lead in prop::bool::ANY) {
+            if lead && !props.is_empty() {
+                props[0] = 1.0;
+            }
+            let fast = coulomb_fast(&props);
+            let checked = friction_law_checked(&props);
+            match (fast, checked) {
+                (Some(f), Ok(FrictionLaw::Coulomb(c))) => prop_assert_eq!(f, c),
+                (None, Err(_)) => {}
+                // Longer PROPS with trailing zeros are valid but left to the checked path.
+                (None, Ok(_)) => prop_assert!(props.len() > COULOMB_NPROPS),
+                (Some(_), Err(e)) => prop_assert!(false, "fast path accepted {props:?}: {e}"),
+            }
+        }
+    }
 
     #[test]
     fn minimal_props_take_defaults() {

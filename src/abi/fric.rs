@@ -149,6 +149,7 @@ struct FricArgs {
 
 impl FricArgs {
     /// Checks the sizes and the law once, then runs the NFDIR-specific code.
+    #[inline(always)]
     unsafe fn run(&self) -> Result<(), LawError> {
         // SAFETY (whole body): pointers valid per the FRIC contract; every array is read with
         // the length the host declared, after that length was checked.
@@ -193,6 +194,7 @@ impl FricArgs {
 
     /// One contact point with N = NFDIR friction directions. Everything is computed before the
     /// first output is written, so a failure leaves the caller's arrays as they were.
+    #[inline(always)]
     unsafe fn point<const N: usize>(
         &self,
         law: &Coulomb,

@@ -75,6 +75,12 @@ pub(crate) fn boundary(
     Err(fault)
 }
 
+#[cold]
+#[inline(never)]
+fn null_pointer(name: &str) -> LawError {
+    LawError::Input(format!("{name} is a NULL pointer"))
+}
+
 /// Reads a scalar argument passed by reference.
 ///
 /// # Safety
@@ -82,7 +88,7 @@ pub(crate) fn boundary(
 #[inline]
 pub(crate) unsafe fn read<T: Copy>(p: *const T, name: &str) -> Result<T, LawError> {
     if p.is_null() {
-        Err(LawError::Input(format!("{name} is a NULL pointer")))
+        Err(null_pointer(name))
     } else {
         // SAFETY: non-NULL, and the caller guarantees it points to a T.
         Ok(unsafe { p.read() })
@@ -99,7 +105,7 @@ pub(crate) unsafe fn read_array<const N: usize>(
     name: &str,
 ) -> Result<[f64; N], LawError> {
     if p.is_null() {
-        return Err(LawError::Input(format!("{name} is a NULL pointer")));
+        return Err(null_pointer(name));
     }
     let mut out = [0.0; N];
     for (i, x) in out.iter_mut().enumerate() {
@@ -123,7 +129,7 @@ pub(crate) unsafe fn slice<'a>(
     if len == 0 {
         Ok(&[])
     } else if p.is_null() {
-        Err(LawError::Input(format!("{name} is a NULL pointer")))
+        Err(null_pointer(name))
     } else {
         // SAFETY: as documented above.
         Ok(unsafe { std::slice::from_raw_parts(p, len) })

@@ -131,18 +131,13 @@ impl CoulombState {
     pub const NSTATV: usize = 3;
 
     /// Reads the state from `STATEV`; `statev` must hold at least [`Self::NSTATV`] entries.
+    #[inline(always)]
     pub fn from_statev(statev: &[f64]) -> Result<Self, LawError> {
         let [s, rate, status, ..] = statev else {
-            return Err(LawError::Input(format!(
-                "NSTATV = {} but the Coulomb law needs {}",
-                statev.len(),
-                Self::NSTATV
-            )));
+            return Err(short_statev(statev.len()));
         };
-        if !s.is_finite() || !rate.is_finite() {
-            return Err(LawError::Input(
-                "STATEV(1..2) are not finite (state corrupted by the caller?)".into(),
-            ));
+        if (s * 0.0 + rate * 0.0) != 0.0 {
+            return Err(corrupt_statev());
         }
         let status = match *status {
             1.0 => FrictionStatus::Slip,
@@ -157,6 +152,7 @@ impl CoulombState {
     }
 
     /// Writes the state into the first [`Self::NSTATV`] entries of `statev` (nothing else).
+    #[inline(always)]
     pub fn write_statev(&self, statev: &mut [f64]) {
         if let [s, rate, status, ..] = statev {
             *s = self.accumulated_slip;
@@ -235,6 +231,34 @@ impl Coulomb {
         })
     }
 
+    /// From `PROPS` entries already checked by the caller: 0 means "off" / "default" for
+    /// τ_max, γ_crit and the tolerance, every other value is finite and positive.
+    #[inline]
+    pub(crate) fn from_validated(
+        mu: f64,
+        tau_max: f64,
+        gamma_crit: f64,
+        tolerance: f64,
+        stick: StickMode,
+    ) -> Self {
+        Coulomb {
+            mu,
+            tau_max: if tau_max > 0.0 {
+                tau_max
+            } else {
+                f64::INFINITY
+            },
+            critical_slip: if gamma_crit > 0.0 {
+                CriticalSlip::Absolute(gamma_crit)
+            } else if tolerance > 0.0 {
+                CriticalSlip::Tolerance(tolerance)
+            } else {
+                CriticalSlip::Tolerance(DEFAULT_SLIP_TOLERANCE)
+            },
+            stick,
+        }
+    }
+
     /// Limits the critical stress: τ_crit = min(μp, τ_max), τ_max > 0.
     pub fn with_shear_limit(mut self, tau_max: f64) -> Result<Self, LawError> {
         self.tau_max = finite_positive("shear limit τ_max", tau_max)?;
@@ -304,17 +328,15 @@ impl Coulomb {
     }
 
     /// γ_crit for a characteristic contact length.
+    #[inline(always)]
     pub fn critical_slip_for(&self, characteristic_length: f64) -> Result<f64, LawError> {
         match self.critical_slip {
             CriticalSlip::Absolute(g) => Ok(g),
             CriticalSlip::Tolerance(t) => {
-                if characteristic_length.is_finite() && characteristic_length > 0.0 {
+                if characteristic_length > 0.0 && characteristic_length < f64::INFINITY {
                     Ok(t * characteristic_length)
                 } else {
-                    Err(LawError::Input(format!(
-                        "CHRLNGTH = {characteristic_length} but γ_crit is {t} × CHRLNGTH; give a \
-                         positive CHRLNGTH or an absolute γ_crit (PROPS(5) > 0)"
-                    )))
+                    Err(bad_characteristic_length(characteristic_length, t))
                 }
             }
         }
@@ -322,6 +344,7 @@ impl Coulomb {
 
     /// Integrates one increment (backward Euler) and returns the end-of-increment stress,
     /// consistent tangents, energies and state.
+    #[inline(always)]
     pub fn update<const N: usize>(
         &self,
         inc: &Increment<N>,
@@ -374,6 +397,7 @@ impl Coulomb {
 
     /// Elastic stick with the backward-Euler return map (Eq. 5.2.3-2) and its consistent
     /// linearization (Eq. 5.2.3-1 in stick, Eq. 5.2.3-3 in slip).
+    #[inline(always)]
     fn elastic_stick<const N: usize>(&self, inc: &Increment<N>, gamma_crit: f64) -> Traction<N> {
         // Elastic slip at the start, from the start-of-increment stiffness: γ̄^el = τ̄/k_s(p − Δp).
         let (tau_crit_start, _) = self.critical_stress(inc.pressure - inc.dpressure);
@@ -419,6 +443,7 @@ impl Coulomb {
     /// Exact stick (Lagrange multipliers) with the seed's switching tests: a sticking point
     /// whose Lagrange stress exceeds τ_crit starts to slip; a slipping point whose motion
     /// reverses against the stress of the start of the increment sticks (Δγ_i τ_i(t) < 0).
+    #[inline(always)]
     fn exact_stick<const N: usize>(&self, inc: &Increment<N>, gamma_crit: f64) -> Contact<N> {
         let (tau_crit, dtau_crit_dp) = self.critical_stress(inc.pressure);
         let direction_source = match inc.entry {
@@ -463,46 +488,92 @@ impl Coulomb {
     }
 }
 
+#[inline(always)]
 fn check_increment<const N: usize>(inc: &Increment<N>, stick: StickMode) -> Result<(), LawError> {
-    let bad = |what: &str| Err(LawError::Input(format!("{what} is NaN or infinite")));
-    if !inc.pressure.is_finite() {
-        return bad("PRESS");
+    // x·0 is ±0 for finite x and NaN otherwise: one test for all inputs on the common path.
+    let mut probe = inc.pressure * 0.0 + inc.dpressure * 0.0;
+    if stick != StickMode::Rough {
+        probe += inc.dtime * 0.0;
+        for i in 0..N {
+            probe += inc.tau[i] * 0.0 + inc.dgam[i] * 0.0;
+        }
+        if stick == StickMode::Exact && inc.entry == EntryFlag::ExactStick {
+            for x in &inc.taulm {
+                probe += x * 0.0;
+            }
+        }
     }
-    if !inc.dpressure.is_finite() {
-        return bad("DPRESS");
-    }
-    if stick == StickMode::Rough {
-        return Ok(());
-    }
-    if !all_finite(&inc.dgam) {
-        return bad("DGAM");
-    }
-    if !all_finite(&inc.tau) {
-        return bad("TAU");
-    }
-    if stick == StickMode::Exact && inc.entry == EntryFlag::ExactStick && !all_finite(&inc.taulm) {
-        return bad("TAULM");
-    }
-    if !inc.dtime.is_finite() {
-        return bad("DTIME");
-    }
-    Ok(())
-}
-
-fn check_traction<const N: usize>(t: &Traction<N>) -> Result<(), LawError> {
-    let finite = all_finite(&t.tau)
-        && t.ddtddg.iter().all(all_finite)
-        && all_finite(&t.ddtddp)
-        && all_finite(&t.dslip)
-        && t.sed.is_finite()
-        && t.sfd.is_finite();
-    if finite {
+    if probe == 0.0 {
         Ok(())
     } else {
-        Err(LawError::Numerical(
-            "the stress update overflowed (inputs too large for f64)".into(),
-        ))
+        Err(name_bad_input(inc, stick))
     }
+}
+
+/// Names the first non-finite input (the slow path of [`check_increment`]).
+#[cold]
+#[inline(never)]
+fn name_bad_input<const N: usize>(inc: &Increment<N>, stick: StickMode) -> LawError {
+    let what = if !inc.pressure.is_finite() {
+        "PRESS"
+    } else if !inc.dpressure.is_finite() {
+        "DPRESS"
+    } else if !all_finite(&inc.dgam) {
+        "DGAM"
+    } else if !all_finite(&inc.tau) {
+        "TAU"
+    } else if stick == StickMode::Exact && !all_finite(&inc.taulm) {
+        "TAULM"
+    } else {
+        "DTIME"
+    };
+    LawError::Input(format!("{what} is NaN or infinite"))
+}
+
+#[cold]
+#[inline(never)]
+fn short_statev(n: usize) -> LawError {
+    LawError::Input(format!(
+        "NSTATV = {n} but the Coulomb law needs {}",
+        CoulombState::NSTATV
+    ))
+}
+
+#[cold]
+#[inline(never)]
+fn corrupt_statev() -> LawError {
+    LawError::Input("STATEV(1..2) are not finite (state corrupted by the caller?)".into())
+}
+
+#[cold]
+#[inline(never)]
+fn bad_characteristic_length(length: f64, tolerance: f64) -> LawError {
+    LawError::Input(format!(
+        "CHRLNGTH = {length} but γ_crit is {tolerance} × CHRLNGTH; give a positive CHRLNGTH or \
+         an absolute γ_crit (PROPS(5) > 0)"
+    ))
+}
+
+#[inline(always)]
+fn check_traction<const N: usize>(t: &Traction<N>) -> Result<(), LawError> {
+    let mut probe = t.sed * 0.0 + t.sfd * 0.0;
+    for a in 0..N {
+        probe += t.tau[a] * 0.0 + t.ddtddp[a] * 0.0 + t.dslip[a] * 0.0;
+        for b in 0..N {
+            probe += t.ddtddg[a][b] * 0.0;
+        }
+    }
+    if probe == 0.0 {
+        Ok(())
+    } else {
+        Err(overflowed())
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn overflowed() -> LawError {
+    LawError::Numerical("the stress update overflowed (inputs too large for f64)".into())
 }
 
 #[cfg(test)]
