@@ -6,8 +6,11 @@ scripts/deps.sh
 echo "== cargo fmt / clippy"
 cargo fmt --all -- --check
 cargo clippy --locked --all-targets -- -D warnings
+cargo clippy --locked --all-targets --features calculix -- -D warnings
 echo "== Rust tests"
 cargo test --locked
+echo "== Rust tests of the CalculiX variant (gapcon_ with AREA)"
+cargo test --locked --features calculix --test gapcon_abi --test header
 echo "== C and Fortran harnesses"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j2

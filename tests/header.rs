@@ -81,6 +81,58 @@ fn exports_have_the_abaqus_signatures() {
         usize,      // len(MSNAME)
     );
     let _: Fric = interfacial::abi::fric_;
+    #[cfg(not(feature = "calculix"))]
+    type Gapcon = unsafe extern "C" fn(
+        *mut f64, // AK
+        R,        // D
+        R,        // FLOWM
+        R,        // TEMP
+        R,        // PREDEF
+        R,        // TIME
+        S,        // CINAME
+        S,        // SLNAME
+        S,        // MSNAME
+        R,        // COORDS
+        I,        // NOEL
+        I,        // NODE
+        I,        // NPRED
+        I,        // KSTEP
+        I,        // KINC
+        usize,    // len(CINAME)
+        usize,    // len(SLNAME)
+        usize,    // len(MSNAME)
+    );
+    #[cfg(feature = "calculix")]
+    type Gapcon = unsafe extern "C" fn(
+        *mut f64, // AK
+        R,        // D
+        R,        // FLOWM
+        R,        // TEMP
+        R,        // PREDEF
+        R,        // TIME
+        S,        // CINAME
+        S,        // SLNAME
+        S,        // MSNAME
+        R,        // COORDS
+        I,        // NOEL
+        I,        // NODE
+        I,        // NPRED
+        I,        // KSTEP
+        I,        // KINC
+        R,        // AREA (CalculiX)
+        usize,    // len(CINAME)
+        usize,    // len(SLNAME)
+        usize,    // len(MSNAME)
+    );
+    let _: Gapcon = interfacial::abi::gapcon_;
+    let _: unsafe extern "C" fn(
+        *const c_char,
+        f64,
+        f64,
+        f64,
+        f64,
+        *mut interfacial::abi::IflConductance,
+    ) -> interfacial::abi::IflStatus = interfacial::abi::ifl_gap_conductance;
     let _: extern "C" fn() -> *const c_char = interfacial::abi::ifl_version;
     let _: extern "C" fn() -> *const c_char = interfacial::abi::ifl_last_error;
     let _: unsafe extern "C" fn(*mut c_char, usize) -> usize =
