@@ -1,11 +1,12 @@
-//! The main job: the friction scenes of `shared/design/scenes.md` driven increment by increment
-//! through `fric_` (the same entry point a Fortran host calls), each compared with its closed-form
+//! The main job: the friction and thermal scenes of `shared/design/scenes.md` driven increment by increment
+//! through `fric_` and `gapcon_` (the entry points a Fortran host calls), each compared with its closed-form
 //! answer. Prints one row per checked quantity and exits non-zero if any error exceeds its
 //! tolerance.
 //!
 //!     cargo run --release --example scenes
 
-use interfacial::abi::host::FricCall;
+use interfacial::abi::host::{FricCall, GapconCall};
+use interfacial::abi::{IflConductance, IflStatus, ifl_gap_conductance};
 
 const MU: f64 = 0.3;
 const P: f64 = 100.0;
@@ -326,18 +327,140 @@ fn f5(rows: &mut Vec<Row>) {
     }
 }
 
+/// Thermal scenes' configuration: one interaction per law, written next to the other temporary
+/// files and named by INTERFACIAL_CONFIG before the first gapcon_ call.
+const THERMAL_CONFIG: &str = r#"
+[interactions.T1CONST.conductance]
+law = "constant"
+k = 2000.0
+
+[interactions.T1TEMP.conductance]
+law = "pressure-table"
+table = [[0.0, 20.0, 300.0], [100.0, 60.0, 300.0], [0.0, 60.0, 400.0], [100.0, 200.0, 400.0]]
+
+[interactions.RADC.radiation]
+view_factor = 0.8
+stefan_boltzmann = 5.670374419e-8
+absolute_zero = -273.15
+"#;
+
+/// T1: two bars (L_A/k_A, L_B/k_B) between θ_H and θ_C with gap conductance h at the interface,
+/// solved for the interface temperatures by Newton as a host would: AK(1) from gapcon_,
+/// derivatives from ifl_gap_conductance (seed 000, 5.2.4) or, for comparison, without ∂h/∂θ̄.
+fn t1(rows: &mut Vec<Row>) {
+    let (la, ka, lb, kb, th, tc) = (0.1, 50.0, 0.2, 15.0, 400.0, 300.0);
+    let (ga, gb) = (ka / la, kb / lb);
+    let p = 50.0;
+    let solve = |name: &str, seed_derivative: bool| -> (f64, f64, usize) {
+        let (mut a, mut b) = (th, tc);
+        for it in 1..=60 {
+            let h = GapconCall::new(name, 0.0, p, a, b).call();
+            let q = h * (a - b);
+            // Residuals: flux into the interface from each bar minus the gap flux.
+            let r1 = ga * (th - a) - q;
+            let r2 = q - gb * (b - tc);
+            let c = std::ffi::CString::new(name).unwrap_or_default();
+            let mut d = IflConductance::default();
+            // SAFETY: valid name and output.
+            let st = unsafe { ifl_gap_conductance(c.as_ptr(), 0.0, p, a, b, &mut d) };
+            assert_eq!(st, IflStatus::Ok);
+            let (qa, qb) = if seed_derivative {
+                (d.dq_dtheta_a, d.dq_dtheta_b)
+            } else {
+                (h, -h)
+            };
+            // J = ∂(r1, r2)/∂(a, b).
+            let (j11, j12, j21, j22) = (-ga - qa, -qb, qa, qb - gb);
+            let det = j11 * j22 - j12 * j21;
+            let da = -(r1 * j22 - j12 * r2) / det;
+            let db = -(j11 * r2 - r1 * j21) / det;
+            a += da;
+            b += db;
+            if da.abs().max(db.abs()) < 1e-12 * th {
+                return (a, b, it);
+            }
+        }
+        (a, b, 60)
+    };
+    // Constant h: q = (θ_H − θ_C)/(L_A/k_A + 1/h + L_B/k_B).
+    let (a, b, _) = solve("T1CONST", true);
+    let q = 2000.0 * (a - b);
+    rows.push(Row {
+        scene: "T1",
+        case: "two bars, constant h".into(),
+        quantity: "flux q",
+        exact: (th - tc) / (1.0 / ga + 1.0 / 2000.0 + 1.0 / gb),
+        computed: q,
+        tolerance: 1e-9 * q.abs(),
+    });
+    // Temperature-dependent table: the same formula with h* = h(p, θ̄*) at the converged θ̄*,
+    // interpolated here by hand (bilinear in p and θ̄).
+    for seed in [true, false] {
+        let (a, b, iterations) = solve("T1TEMP", seed);
+        let tm = 0.5 * (a + b);
+        let w = ((tm - 300.0) / 100.0).clamp(0.0, 1.0);
+        let h_star = (1.0 - w) * (20.0 + 0.4 * p) + w * (60.0 + 1.4 * p);
+        let q = GapconCall::new("T1TEMP", 0.0, p, a, b).call() * (a - b);
+        rows.push(Row {
+            scene: "T1",
+            case: format!(
+                "h(p, θ̄) table, Newton {} ({iterations} it.)",
+                if seed {
+                    "with ∂h/∂θ̄"
+                } else {
+                    "without ∂h/∂θ̄"
+                }
+            ),
+            quantity: "flux q",
+            exact: (th - tc) / (1.0 / ga + 1.0 / h_star + 1.0 / gb),
+            computed: q,
+            tolerance: 1e-8 * q.abs(),
+        });
+    }
+}
+
+/// T2: radiating gap between plates at fixed temperatures (°C):
+/// q = Fσ((θ_A − θ_Z)⁴ − (θ_B − θ_Z)⁴).
+fn t2(rows: &mut Vec<Row>) {
+    for (ta, tb) in [(500.0, 100.0), (20.0, 900.0), (250.0, 250.0 + 1e-3)] {
+        let k = GapconCall::new("RADC", 1e-3, 0.0, ta, tb).call();
+        let (a, b) = (ta + 273.15f64, tb + 273.15f64);
+        let exact = 0.8 * 5.670374419e-8 * (a.powi(4) - b.powi(4));
+        rows.push(Row {
+            scene: "T2",
+            case: format!("radiation, θ_A = {ta}, θ_B = {tb} °C"),
+            quantity: "flux q",
+            exact,
+            computed: k * (ta - tb),
+            // a⁴ − b⁴ loses digits when a ≈ b: allow round-off relative to a⁴.
+            tolerance: 1e-12 * 0.8 * 5.670374419e-8 * a.powi(4).max(b.powi(4)),
+        });
+    }
+}
+
 fn main() {
+    let config =
+        std::env::temp_dir().join(format!("interfacial-scenes-{}.toml", std::process::id()));
+    if let Err(e) = std::fs::write(&config, THERMAL_CONFIG) {
+        eprintln!("cannot write {}: {e}", config.display());
+        std::process::exit(2);
+    }
+    // SAFETY: single-threaded here, before the first call into the library.
+    unsafe { std::env::set_var("INTERFACIAL_CONFIG", &config) };
     let mut rows = Vec::new();
     f1(&mut rows);
     f1_exact(&mut rows);
     f2(&mut rows);
     f5(&mut rows);
+    t1(&mut rows);
+    t2(&mut rows);
+    let _ = std::fs::remove_file(&config);
     println!(
-        "interfacial {} — friction scenes through fric_ (μ = {MU}, p = {P}, γ_crit = {GAMMA_CRIT})\n",
+        "interfacial {} — scenes through fric_ (μ = {MU}, p = {P}, γ_crit = {GAMMA_CRIT}) and gapcon_\n",
         interfacial::VERSION
     );
     println!(
-        "{:<5} {:<34} {:<36} {:>14} {:>14} {:>10}  ok",
+        "{:<5} {:<46} {:<36} {:>14} {:>14} {:>10}  ok",
         "scene", "case", "quantity", "closed form", "computed", "error"
     );
     let mut failed = 0;
@@ -346,7 +469,7 @@ fn main() {
             failed += 1;
         }
         println!(
-            "{:<5} {:<34} {:<36} {:>14.8e} {:>14.8e} {:>10.2e}  {}",
+            "{:<5} {:<46} {:<36} {:>14.8e} {:>14.8e} {:>10.2e}  {}",
             r.scene,
             r.case,
             r.quantity,
