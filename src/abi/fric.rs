@@ -161,33 +161,22 @@ impl FricArgs {
             let entry = match lm_in {
                 0 => EntryFlag::Motion,
                 1 => EntryFlag::ExactStick,
-                other => {
-                    return Err(LawError::Input(format!(
-                        "LM = {other} on entry; expected 0, 1 or 2"
-                    )));
-                }
+                other => return Err(bad_lm(other)),
             };
             let nprops = read(self.nprops, "NPROPS")?;
-            let nprops = usize::try_from(nprops)
-                .map_err(|_| LawError::Parameter(format!("NPROPS = {nprops} is negative")))?;
+            let Ok(nprops) = usize::try_from(nprops) else {
+                return Err(negative_nprops(nprops));
+            };
             let FrictionLaw::Coulomb(law) = friction_law(slice(self.props, nprops, "PROPS")?)?;
             let nstatv = read(self.nstatv, "NSTATV")?;
             let nstatv = match usize::try_from(nstatv) {
                 Ok(n) if n >= CoulombState::NSTATV => n,
-                _ => {
-                    return Err(LawError::Parameter(format!(
-                        "NSTATV = {nstatv} but the Coulomb law needs {} state variables \
-                         (*DEPVAR / the NSTATV of *FRICTION, USER)",
-                        CoulombState::NSTATV
-                    )));
-                }
+                _ => return Err(short_nstatv(nstatv)),
             };
             match read(self.nfdir, "NFDIR")? {
                 1 => self.point::<1>(&law, entry, nstatv),
                 2 => self.point::<2>(&law, entry, nstatv),
-                other => Err(LawError::Parameter(format!(
-                    "NFDIR = {other}; expected 1 (2-D) or 2 (3-D)"
-                ))),
+                other => Err(bad_nfdir(other)),
             }
         }
     }
@@ -278,6 +267,34 @@ impl FricArgs {
             write_zeros(self.ddtddt, 2 * N);
         }
     }
+}
+
+#[cold]
+#[inline(never)]
+fn bad_lm(lm: c_int) -> LawError {
+    LawError::Input(format!("LM = {lm} on entry; expected 0, 1 or 2"))
+}
+
+#[cold]
+#[inline(never)]
+fn negative_nprops(nprops: c_int) -> LawError {
+    LawError::Parameter(format!("NPROPS = {nprops} is negative"))
+}
+
+#[cold]
+#[inline(never)]
+fn short_nstatv(nstatv: c_int) -> LawError {
+    LawError::Parameter(format!(
+        "NSTATV = {nstatv} but the Coulomb law needs {} state variables (*DEPVAR / the NSTATV \
+         of *FRICTION, USER)",
+        CoulombState::NSTATV
+    ))
+}
+
+#[cold]
+#[inline(never)]
+fn bad_nfdir(nfdir: c_int) -> LawError {
+    LawError::Parameter(format!("NFDIR = {nfdir}; expected 1 (2-D) or 2 (3-D)"))
 }
 
 /// Where a FRIC message comes from, read only on the error path.
