@@ -203,6 +203,20 @@ pub(crate) fn global() -> &'static Result<Config, String> {
     })
 }
 
+/// The thermal law of `name` (a Fortran name: blank-padded, any case) from the process-wide
+/// configuration, or the error that explains why there is none.
+pub(crate) fn gap_law_for(name: &[u8]) -> Result<&'static GapLaw, LawError> {
+    let cfg = global().as_ref().map_err(|m| LawError::Config(m.clone()))?;
+    cfg.gap_law(name).ok_or_else(|| {
+        let shown = String::from_utf8_lossy(name);
+        LawError::Parameter(format!(
+            "interaction not found in {} (and no \"*\" entry); add [interactions.{}]",
+            cfg.path(),
+            toml_key(shown.trim_end())
+        ))
+    })
+}
+
 fn toml_key(name: &str) -> String {
     if !name.is_empty()
         && name
@@ -329,7 +343,10 @@ fn span_of(v: &Option<Spanned<f64>>, whole: &Spanned<ConductanceSpec>) -> std::o
 
 fn strip_kind(e: &LawError) -> String {
     match e {
-        LawError::Parameter(m) | LawError::Input(m) | LawError::Numerical(m) => m.clone(),
+        LawError::Parameter(m)
+        | LawError::Config(m)
+        | LawError::Input(m)
+        | LawError::Numerical(m) => m.clone(),
     }
 }
 

@@ -41,6 +41,9 @@ impl Outcome {
 pub enum LawError {
     /// A parameter is out of its documented range (reported at construction).
     Parameter(String),
+    /// The configuration file is missing or invalid: one cause for the whole run, reported once
+    /// whatever the interaction (the message names the file, line and key).
+    Config(String),
     /// An input of this increment is unusable (NaN, infinite, inconsistent).
     Input(String),
     /// The computation produced a non-finite result or a local solve failed.
@@ -50,7 +53,7 @@ pub enum LawError {
 impl fmt::Display for LawError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            LawError::Parameter(m) => write!(f, "bad parameter: {m}"),
+            LawError::Parameter(m) | LawError::Config(m) => write!(f, "bad parameter: {m}"),
             LawError::Input(m) => write!(f, "bad input: {m}"),
             LawError::Numerical(m) => write!(f, "numerical failure: {m}"),
         }

@@ -41,8 +41,10 @@ thread_local! {
     static LAST_ERROR: RefCell<CString> = RefCell::new(CString::default());
 }
 
-/// Formats, records and (once per cause) prints a message. Returns the full message.
-pub(crate) fn report(site: &Site, cause: &str) -> String {
+/// Formats, records and (once per cause) prints a message. Returns the full message. With
+/// `per_interaction` false the cause is printed once for the whole run (a bad configuration
+/// file), not once per interaction that meets it.
+pub(crate) fn report(site: &Site, cause: &str, per_interaction: bool) -> String {
     let message = format!(
         "interfacial: {}: interaction '{}' ({}): {}",
         site.routine, site.interaction, site.place, cause
@@ -51,7 +53,12 @@ pub(crate) fn report(site: &Site, cause: &str) -> String {
     // Once per (routine, interaction, cause): the same bad input at a million points is one
     // line, not a million.
     static SEEN: OnceLock<Mutex<HashSet<String>>> = OnceLock::new();
-    let key = format!("{}\u{1f}{}\u{1f}{}", site.routine, site.interaction, cause);
+    let scope = if per_interaction {
+        site.interaction.as_str()
+    } else {
+        ""
+    };
+    let key = format!("{}\u{1f}{}\u{1f}{}", site.routine, scope, cause);
     let first = SEEN
         .get_or_init(|| Mutex::new(HashSet::new()))
         .lock()

@@ -266,3 +266,49 @@ fn config_errors() {
         }
     }
 }
+
+/// Child side of `a_bad_file_is_reported_once`: calls for three interactions.
+#[test]
+fn child_three_names() {
+    if std::env::var_os("IFL_GAPCON_CHILD3").is_none() {
+        return;
+    }
+    for name in ["A", "B", "C", "A"] {
+        assert_eq!(GapconCall::new(name, 0.0, 1.0, 300.0, 290.0).call(), 0.0);
+    }
+}
+
+#[test]
+fn a_bad_file_is_reported_once_for_all_interactions() {
+    let dir = std::env::temp_dir();
+    let cfg = dir.join(format!("interfacial-bad-once-{}.toml", std::process::id()));
+    let log = dir.join(format!("interfacial-bad-once-{}.log", std::process::id()));
+    std::fs::write(
+        &cfg,
+        "[interactions.A.conductance]\nlaw = \"constant\"\nk = -1.0\n",
+    )
+    .unwrap();
+    let _ = std::fs::remove_file(&log);
+    let out = Command::new(std::env::current_exe().unwrap())
+        .args([
+            "--exact",
+            "child_three_names",
+            "--nocapture",
+            "--test-threads=1",
+        ])
+        .env("IFL_GAPCON_CHILD3", "1")
+        .env("INTERFACIAL_CONFIG", &cfg)
+        .env("INTERFACIAL_LOG", &log)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    let text = std::fs::read_to_string(&log).unwrap_or_default();
+    let _ = std::fs::remove_file(&cfg);
+    let _ = std::fs::remove_file(&log);
+    assert_eq!(text.lines().count(), 1, "{text}");
+    assert!(text.contains(":3: interactions.A.conductance.k"), "{text}");
+}

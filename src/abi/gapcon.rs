@@ -116,17 +116,7 @@ unsafe fn gap_conductance(
         || unsafe { site(ciname, ciname_len, noel, node) },
         // SAFETY: D(2), TEMP(2) readable, AK(1) writable per the GAPCON contract.
         || unsafe {
-            let cfg = config::global()
-                .as_ref()
-                .map_err(|m| LawError::Parameter(m.clone()))?;
-            let name = name_bytes(ciname, ciname_len);
-            let law = cfg.gap_law(name).ok_or_else(|| {
-                LawError::Parameter(format!(
-                    "interaction not found in {} (and no \"*\" entry); add [interactions.{}]",
-                    cfg.path(),
-                    String::from_utf8_lossy(name).trim_end()
-                ))
-            })?;
+            let law = config::gap_law_for(name_bytes(ciname, ciname_len))?;
             let [clearance, pressure] = read_array::<2>(d, "D")?;
             let [theta_a, theta_b] = read_array::<2>(temp, "TEMP")?;
             let r = law.evaluate(clearance, pressure, theta_a, theta_b)?;

@@ -26,8 +26,10 @@ pub use native::{
 /// What went wrong in an entry point, for callers that return a status.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Fault {
-    /// A parameter, `PROPS` entry or configuration file is wrong.
+    /// A parameter or `PROPS` entry is wrong.
     Parameter,
+    /// The configuration file is missing or invalid (one cause for every interaction).
+    Config,
     /// An input of this call is unusable.
     Input,
     /// The computation failed.
@@ -49,6 +51,7 @@ pub(crate) fn boundary(
         Ok(Err(e)) => {
             let fault = match e {
                 LawError::Parameter(_) => Fault::Parameter,
+                LawError::Config(_) => Fault::Config,
                 LawError::Input(_) => Fault::Input,
                 LawError::Numerical(_) => Fault::Numerical,
             };
@@ -70,7 +73,7 @@ pub(crate) fn boundary(
     // allocation failure while formatting): swallow it, the safe outputs are already written.
     let _ = catch_unwind(AssertUnwindSafe(|| {
         on_fault();
-        report(&site(), &cause);
+        report(&site(), &cause, fault != Fault::Config);
     }));
     Err(fault)
 }

@@ -74,7 +74,7 @@ impl From<Result<(), super::Fault>> for IflStatus {
     fn from(r: Result<(), super::Fault>) -> Self {
         match r {
             Ok(()) => IflStatus::Ok,
-            Err(super::Fault::Parameter) => IflStatus::BadParameter,
+            Err(super::Fault::Parameter | super::Fault::Config) => IflStatus::BadParameter,
             Err(super::Fault::Input) => IflStatus::BadInput,
             Err(super::Fault::Numerical) => IflStatus::NumericalFailure,
             Err(super::Fault::Internal) => IflStatus::InternalError,
@@ -134,15 +134,7 @@ pub unsafe extern "C" fn ifl_gap_conductance(
                     "interaction or out is a NULL pointer".into(),
                 ));
             }
-            let cfg = crate::config::global()
-                .as_ref()
-                .map_err(|m| crate::LawError::Parameter(m.clone()))?;
-            let law = cfg.gap_law(name).ok_or_else(|| {
-                crate::LawError::Parameter(format!(
-                    "interaction not found in {} (and no \"*\" entry)",
-                    cfg.path()
-                ))
-            })?;
+            let law = crate::config::gap_law_for(name)?;
             let r = law.evaluate(d, p, theta_a, theta_b)?;
             // SAFETY: checked non-NULL above; writable per the contract.
             unsafe {
