@@ -68,9 +68,9 @@ struct ConductanceSpec {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RadiationSpec {
-    view_factor: Spanned<f64>,
-    stefan_boltzmann: Spanned<f64>,
-    absolute_zero: Spanned<f64>,
+    view_factor: Option<Spanned<f64>>,
+    stefan_boltzmann: Option<Spanned<f64>>,
+    absolute_zero: Option<Spanned<f64>>,
 }
 
 /// A validated configuration file.
@@ -125,7 +125,7 @@ impl Config {
             let radiation = entry
                 .radiation
                 .as_ref()
-                .map(|r| radiation(&at, &format!("{key}.radiation"), r.get_ref()))
+                .map(|r| radiation(&at, &format!("{key}.radiation"), r))
                 .transpose()?;
             let law = GapLaw::new(conduction, radiation).map_err(|e| {
                 at.error(
@@ -374,20 +374,41 @@ fn temperature_table(rows: &[Vec<f64>]) -> Result<TemperatureTable, String> {
     }
 }
 
-fn radiation(at: &Locator, key: &str, r: &RadiationSpec) -> Result<Radiation, String> {
-    Radiation::new(
-        *r.view_factor.get_ref(),
-        *r.stefan_boltzmann.get_ref(),
-        *r.absolute_zero.get_ref(),
-    )
-    .map_err(|e| {
+fn radiation(at: &Locator, key: &str, spec: &Spanned<RadiationSpec>) -> Result<Radiation, String> {
+    let r = spec.get_ref();
+    // All three are required: no silent default for units.
+    let get = |v: &Option<Spanned<f64>>, name: &str, what: &str| {
+        v.as_ref().map(|s| (*s.get_ref(), s.span())).ok_or_else(|| {
+            at.error(
+                spec.span(),
+                &format!("{key}.{name}"),
+                &format!("required: {what}"),
+            )
+        })
+    };
+    let f = get(
+        &r.view_factor,
+        "view_factor",
+        "F, effective emissivity × view factor",
+    )?;
+    let sigma = get(
+        &r.stefan_boltzmann,
+        "stefan_boltzmann",
+        "σ in the model's units (5.670374419e-8 in SI)",
+    )?;
+    let zero = get(
+        &r.absolute_zero,
+        "absolute_zero",
+        "absolute zero on the model's temperature scale (0 for kelvin, -273.15 for °C)",
+    )?;
+    Radiation::new(f.0, sigma.0, zero.0).map_err(|e| {
         let m = strip_kind(&e);
         let (span, name) = if m.starts_with("view_factor") {
-            (r.view_factor.span(), "view_factor")
+            (f.1, "view_factor")
         } else if m.starts_with("stefan_boltzmann") {
-            (r.stefan_boltzmann.span(), "stefan_boltzmann")
+            (sigma.1, "stefan_boltzmann")
         } else {
-            (r.absolute_zero.span(), "absolute_zero")
+            (zero.1, "absolute_zero")
         };
         at.error(span, &format!("{key}.{name}"), &m)
     })

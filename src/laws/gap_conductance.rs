@@ -253,6 +253,7 @@ impl GapLaw {
             out.dq_dtheta_b += rad.dq_dtheta_b;
         }
         let all = [
+            out.k * jump,
             out.k,
             out.dk_dd,
             out.dk_dp,
@@ -264,7 +265,7 @@ impl GapLaw {
             Ok(out)
         } else {
             Err(LawError::Numerical(
-                "the conductance overflowed (inputs too large for f64)".into(),
+                "the conductance or the flux overflowed (inputs too large for f64)".into(),
             ))
         }
     }

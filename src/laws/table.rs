@@ -157,7 +157,8 @@ impl TemperatureTable {
     #[must_use]
     pub fn eval(&self, x: f64, theta: f64) -> (f64, f64, f64) {
         let n = self.temperatures.len();
-        if n == 1 || theta <= self.temperatures[0] {
+        // On the first temperature the slope in θ̄ is the one to its right, as on any row.
+        if n == 1 || theta < self.temperatures[0] {
             let (y, dy) = self.tables[0].eval(x);
             return (y, dy, 0.0);
         }
@@ -217,6 +218,8 @@ mod tests {
         assert!((dx - 0.125).abs() < 1e-15);
         assert!((dt - 0.025).abs() < 1e-15);
         assert_eq!(t.eval(5.0, -10.0), (1.5, 0.1, 0.0));
+        // On the first temperature: the value there, the slope to the right.
+        assert_eq!(t.eval(5.0, 0.0), (1.5, 0.1, 0.025));
         assert_eq!(t.eval(5.0, 200.0), (4.0, 0.2, 0.0));
     }
 }

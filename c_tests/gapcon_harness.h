@@ -1,0 +1,317 @@
+/*
+ * gapcon_harness.h: the host side of GAPCON for the C harnesses (header-only).
+ *
+ * A gh_gapcon holds every GAPCON argument the way a Fortran FE code keeps them (AK(5) plus
+ * guard slots, D(2), FLOWM(2), TEMP(2), PREDEF(2,1), TIME(2), CHARACTER*80 names, COORDS(3),
+ * NOEL, NODE, NPRED, KSTEP, KINC and, for the CalculiX variant, AREA), and gh_call() passes
+ * them to gapcon_ exactly as gfortran does: everything by reference, the three names as
+ * blank-padded buffers with their hidden size_t lengths after the explicit arguments.
+ *
+ * Every gh_call() checks the write contract of docs/gapcon.md: AK(1) is written (it holds a
+ * mark before the call), AK(2..5) and the slot past them keep GH_GUARD, and no input argument
+ * changes.
+ *
+ * Configuration files: the T1, T2, threads and CalculiX harnesses write their TOML at run time
+ * (gh_config_*), from the same C constants their closed forms use, to the path given as argv[1]
+ * (CTest passes one in the build tree), and setenv INTERFACIAL_CONFIG before the first call.
+ * The bad-input harness instead reads fixed files in c_tests/configs/, whose line numbers its
+ * expected messages name.
+ *
+ * Pass/fail bookkeeping (FH_CHECK, FH_NEAR, fh_finish, ...) comes from harness.h.
+ */
+#ifndef GAPCON_HARNESS_H
+#define GAPCON_HARNESS_H
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+
+/* In AK(2..5) and the slot after AK(5) before every call: gapcon_ writes AK(1) only. */
+#define GH_GUARD (-3.33e33)
+/* In AK(1) before every call: shows that AK(1) was written. */
+#define GH_AK_MARK 8.125e88
+/* Stefan-Boltzmann constant in SI units, W/(m^2 K^4) (CODATA 2018, exact by definition). */
+#define GH_SIGMA_SI 5.670374419e-8
+
+enum { GH_AK = 6, GH_NAME = 96 };
+
+typedef struct {
+    double ak[GH_AK];      /* AK(5) + one guard */
+    double d[2];           /* D(1) clearance, D(2) contact pressure */
+    double flowm[2];       /* FLOWM(2) */
+    double temp[2];        /* TEMP(1) = theta_A, TEMP(2) = theta_B */
+    double predef[2];      /* PREDEF(2,NPRED), NPRED = 1 */
+    double time[2];        /* TIME(2) */
+    char ciname[GH_NAME], slname[GH_NAME], msname[GH_NAME];
+    size_t ciname_len, slname_len, msname_len; /* hidden lengths */
+    double coords[3];
+    int noel, node, npred, kstep, kinc;
+    double area;           /* CalculiX only */
+} gh_gapcon;
+
+/* A Fortran CHARACTER*len actual argument: `text` blank-padded to `len` bytes, no NUL. */
+static inline void gh_set_name(char *buf, size_t *buf_len, size_t len, const char *text)
+{
+    size_t n = strlen(text);
+    if (len > GH_NAME) {
+        len = GH_NAME;
+    }
+    memset(buf, ' ', GH_NAME);
+    memcpy(buf, text, n < len ? n : len);
+    *buf_len = len;
+}
+
+/*
+ * A point of interaction `name` (CHARACTER*80), element 17, node 42, clearance d, pressure p,
+ * surface temperatures theta_a, theta_b; the unread arguments hold plausible host values.
+ */
+static inline void gh_init(gh_gapcon *g, const char *name, double d, double p, double theta_a,
+                           double theta_b)
+{
+    memset(g, 0, sizeof *g);
+    gh_set_name(g->ciname, &g->ciname_len, 80, name);
+    gh_set_name(g->slname, &g->slname_len, 80, "SLAVE_SURF");
+    gh_set_name(g->msname, &g->msname_len, 80, "MASTER_SURF");
+    g->d[0] = d;
+    g->d[1] = p;
+    g->temp[0] = theta_a;
+    g->temp[1] = theta_b;
+    g->flowm[0] = g->flowm[1] = 0.0;
+    g->predef[0] = g->predef[1] = 0.0;
+    g->time[0] = 0.5;
+    g->time[1] = 1.5;
+    g->coords[0] = 1.0;
+    g->coords[1] = 2.0;
+    g->coords[2] = 3.0;
+    g->noel = 17;
+    g->node = 42;
+    g->npred = 1;
+    g->kstep = 1;
+    g->kinc = 3;
+    g->area = 0.25;
+}
+
+/* The raw call, as gfortran makes CALL GAPCON(...) (CalculiX: with AREA after KINC). */
+static inline void gh_call_raw(gh_gapcon *g)
+{
+#if defined(INTERFACIAL_CALCULIX)
+    gapcon_(g->ak, g->d, g->flowm, g->temp, g->predef, g->time, g->ciname, g->slname,
+            g->msname, g->coords, &g->noel, &g->node, &g->npred, &g->kstep, &g->kinc, &g->area,
+            g->ciname_len, g->slname_len, g->msname_len);
+#else
+    gapcon_(g->ak, g->d, g->flowm, g->temp, g->predef, g->time, g->ciname, g->slname,
+            g->msname, g->coords, &g->noel, &g->node, &g->npred, &g->kstep, &g->kinc,
+            g->ciname_len, g->slname_len, g->msname_len);
+#endif
+}
+
+static inline void gh_set_guards(gh_gapcon *g)
+{
+    int i;
+    g->ak[0] = GH_AK_MARK;
+    for (i = 1; i < GH_AK; i++) {
+        g->ak[i] = GH_GUARD;
+    }
+}
+
+static inline int gh_guards_intact(const gh_gapcon *g)
+{
+    int i, ok = 1;
+    for (i = 1; i < GH_AK; i++) {
+        ok &= g->ak[i] == GH_GUARD;
+    }
+    return ok;
+}
+
+/* True when no input argument differs between a and b (bitwise, so NaN inputs compare too). */
+#define GH_SAME(field) (memcmp(&a->field, &b->field, sizeof a->field) == 0)
+static inline int gh_inputs_same(const gh_gapcon *a, const gh_gapcon *b)
+{
+    return GH_SAME(d) && GH_SAME(flowm) && GH_SAME(temp) && GH_SAME(predef) && GH_SAME(time) &&
+           GH_SAME(ciname) && GH_SAME(slname) && GH_SAME(msname) && GH_SAME(ciname_len) &&
+           GH_SAME(slname_len) && GH_SAME(msname_len) && GH_SAME(coords) && GH_SAME(noel) &&
+           GH_SAME(node) && GH_SAME(npred) && GH_SAME(kstep) && GH_SAME(kinc) && GH_SAME(area);
+}
+#undef GH_SAME
+
+/*
+ * One call from the host; returns AK(1). Checks that AK(1) was written, AK(2..5) and the guard
+ * slot were not, and no input changed.
+ */
+static inline double gh_call(gh_gapcon *g)
+{
+    gh_gapcon before;
+    gh_set_guards(g);
+    before = *g;
+    gh_call_raw(g);
+    FH_CHECK(g->ak[0] != GH_AK_MARK);
+    FH_CHECK(gh_guards_intact(g));
+    FH_CHECK(gh_inputs_same(g, &before));
+    return g->ak[0];
+}
+
+/* A call that must succeed: as gh_call, and no error reported on this thread. */
+static inline double gh_call_ok(gh_gapcon *g)
+{
+    double ak;
+    ifl_clear_error();
+    ak = gh_call(g);
+    if (!FH_CHECK(ifl_last_error()[0] == '\0')) {
+        fprintf(stderr, "  unexpected error: %s\n", ifl_last_error());
+    }
+    FH_CHECK(isfinite(ak) && ak >= 0.0);
+    return ak;
+}
+
+/* AK(1) of interaction `name` (CHARACTER*80) at (d, p, theta_a, theta_b): a successful call. */
+static inline double gh_ak(const char *name, double d, double p, double theta_a, double theta_b)
+{
+    gh_gapcon g;
+    gh_init(&g, name, d, p, theta_a, theta_b);
+    return gh_call_ok(&g);
+}
+
+/* ifl_gap_conductance that must succeed. */
+static inline IflConductance gh_native_ok(const char *name, double d, double p, double theta_a,
+                                          double theta_b)
+{
+    IflConductance c;
+    IflStatus s;
+    ifl_clear_error();
+    s = ifl_gap_conductance(name, d, p, theta_a, theta_b, &c);
+    if (!FH_CHECK(s == IFL_STATUS_OK)) {
+        fprintf(stderr, "  status %d: %s\n", (int)s, ifl_last_error());
+    }
+    return c;
+}
+
+/* ---------------------------------------------------------------------------------------- */
+/* Configuration files written at run time                                                   */
+
+static FILE *gh_cfg;
+
+static inline FILE *gh_config_open(const char *path)
+{
+    gh_cfg = fopen(path, "w");
+    if (gh_cfg == NULL) {
+        fprintf(stderr, "cannot write the configuration file %s\n", path);
+    }
+    return gh_cfg;
+}
+
+static inline void gh_config_text(const char *fmt, ...) FH_PRINTF(1, 2);
+static inline void gh_config_text(const char *fmt, ...)
+{
+    va_list ap;
+    if (gh_cfg == NULL) {
+        return;
+    }
+    va_start(ap, fmt);
+    vfprintf(gh_cfg, fmt, ap);
+    va_end(ap);
+}
+
+/* A TOML float that reads back as exactly v (%.17g, with ".0" when it would read as integer). */
+static inline void gh_toml_float(char *buf, size_t len, double v)
+{
+    snprintf(buf, len, "%.17g", v);
+    if (strpbrk(buf, ".eEni") == NULL) {
+        strncat(buf, ".0", len - strlen(buf) - 1);
+    }
+}
+
+/* key = v, exactly. */
+static inline void gh_config_real(const char *key, double v)
+{
+    char num[40];
+    gh_toml_float(num, sizeof num, v);
+    gh_config_text("%s = %s\n", key, num);
+}
+
+/* table = [[x, k], ...] (ncol = 2) or [[x, k, theta], ...] (ncol = 3), rows flat. */
+static inline void gh_config_table(const double *rows, int nrows, int ncol)
+{
+    char num[40];
+    int r, c;
+    gh_config_text("table = [");
+    for (r = 0; r < nrows; r++) {
+        gh_config_text("%s[", r ? ", " : "");
+        for (c = 0; c < ncol; c++) {
+            gh_toml_float(num, sizeof num, rows[r * ncol + c]);
+            gh_config_text("%s%s", c ? ", " : "", num);
+        }
+        gh_config_text("]");
+    }
+    gh_config_text("]\n");
+}
+
+/* Closes the file and points INTERFACIAL_CONFIG to it (before the library's first call). */
+static inline int gh_config_close(const char *path)
+{
+    int ok = gh_cfg != NULL && fclose(gh_cfg) == 0;
+    gh_cfg = NULL;
+    return FH_CHECK(ok) && FH_CHECK(setenv("INTERFACIAL_CONFIG", path, 1) == 0);
+}
+
+/* ---------------------------------------------------------------------------------------- */
+/* Hand-computed laws (docs/config.md), independent of the library                           */
+
+/* Piecewise-linear y(x), constant outside; rows (x, y) flat with stride `stride`. */
+static inline double gh_lerp_table(const double *rows, int nrows, int stride, double x)
+{
+    int i;
+    if (x <= rows[0]) {
+        return rows[1];
+    }
+    if (x >= rows[(nrows - 1) * stride]) {
+        return rows[(nrows - 1) * stride + 1];
+    }
+    for (i = 0; i + 1 < nrows; i++) {
+        double x0 = rows[i * stride], x1 = rows[(i + 1) * stride];
+        if (x >= x0 && x < x1) {
+            double y0 = rows[i * stride + 1], y1 = rows[(i + 1) * stride + 1];
+            return y0 + (y1 - y0) * (x - x0) / (x1 - x0);
+        }
+    }
+    return NAN; /* unreachable for a sorted table */
+}
+
+/*
+ * k(x, theta_mean) of a table given as docs/config.md writes it: rows [x, k] (ncol = 2) or
+ * [x, k, theta] grouped by increasing theta (ncol = 3); linear in x within a temperature,
+ * linear in theta between temperatures, constant outside both.
+ */
+static inline double gh_table_k(const double *rows, int nrows, int ncol, double x, double theta)
+{
+    int start = 0, lo_start = -1, lo_n = 0;
+    double lo_t = 0.0;
+    if (ncol == 2) {
+        return gh_lerp_table(rows, nrows, 2, x);
+    }
+    while (start < nrows) {
+        double t = rows[start * 3 + 2];
+        int n = 0;
+        while (start + n < nrows && rows[(start + n) * 3 + 2] == t) {
+            n++;
+        }
+        if (theta <= t) {
+            double k_here = gh_lerp_table(rows + start * 3, n, 3, x);
+            double k_lo;
+            if (lo_start < 0) {
+                return k_here; /* at or below the first temperature */
+            }
+            k_lo = gh_lerp_table(rows + lo_start * 3, lo_n, 3, x);
+            return k_lo + (k_here - k_lo) * (theta - lo_t) / (t - lo_t);
+        }
+        lo_start = start;
+        lo_n = n;
+        lo_t = t;
+        start += n;
+    }
+    return gh_lerp_table(rows + lo_start * 3, lo_n, 3, x); /* above the last temperature */
+}
+
+#endif /* GAPCON_HARNESS_H */
