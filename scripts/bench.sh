@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Per-call benchmark of fric_ against a hand-written Fortran 77 FRIC of the same law
-# (bench/fric_ref.f). Builds the library (cargo, release), compiles the benchmark with gfortran
-# in $BENCH_BUILD_DIR (default /tmp/build-bench, never inside the repository), runs it, and
-# writes docs/benchmarks.md. Installs nothing.
+# Per-call benchmarks of fric_ and gapcon_ against hand-written Fortran 77 routines of the same
+# laws (bench/fric_ref.f, bench/gapcon_ref.f). Builds the library (cargo, release), compiles the
+# benchmarks with gfortran in $BENCH_BUILD_DIR (default /tmp/build-bench, never inside the
+# repository), runs them, and writes docs/benchmarks.md. Installs nothing.
 #
-# Usage: scripts/bench.sh [NREP [NRUN [CASE]]]   (passed to bench_fric; defaults 200, 15, all)
+# Usage: scripts/bench.sh [NREP [NRUN [CASE]]]   (defaults 200, 15, all; NREP and NRUN go to
+# both benchmarks, CASE to bench_fric only)
+# gapcon_ reads its laws from $INTERFACIAL_CONFIG once per process, so bench_gapcon runs three
+# times: with bench/gapcon_bench.toml, bench/gapcon_lookup_1.toml and bench/gapcon_lookup_20.toml.
 # Not part of CMake/CTest on purpose: timings are measurements, not pass/fail tests.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -34,9 +37,24 @@ gfortran "${fflags[@]}" -I"$root/bench" -c "$root/bench/fric_ref.f" -o fric_ref.
 gfortran "${fflags[@]}" -I"$root/bench" -c "$root/bench/fric_nop.f" -o fric_nop.o
 gfortran "${fflags[@]}" -c "$root/bench/bench_fric.f90" -o bench_fric.o
 gfortran "${fflags[@]}" -o bench_fric bench_fric.o fric_ref.o fric_nop.o "$lib" "${native_libs[@]}"
+gfortran "${fflags[@]}" -I"$root/bench" -c "$root/bench/gapcon_ref.f" -o gapcon_ref.o
+gfortran "${fflags[@]}" -I"$root/bench" -c "$root/bench/gapcon_nop.f" -o gapcon_nop.o
+gfortran "${fflags[@]}" -c "$root/bench/bench_gapcon.f90" -o bench_gapcon.o
+gfortran "${fflags[@]}" -o bench_gapcon bench_gapcon.o gapcon_ref.o gapcon_nop.o "$lib" \
+  "${native_libs[@]}"
 
 echo "== bench_fric${*:+ $*}"
 ./bench_fric "$@" | tee bench_output.txt
+
+# NREP and NRUN only: CASE numbers the rows of bench_fric.
+gapcon_args=("${1:-200}" "${2:-15}")
+echo "== bench_gapcon laws|lookup1|lookup20 ${gapcon_args[*]}"
+INTERFACIAL_CONFIG="$root/bench/gapcon_bench.toml" ./bench_gapcon laws "${gapcon_args[@]}" |
+  tee bench_gapcon_laws.txt
+INTERFACIAL_CONFIG="$root/bench/gapcon_lookup_1.toml" ./bench_gapcon lookup1 "${gapcon_args[@]}" |
+  tee bench_gapcon_lookup.txt
+INTERFACIAL_CONFIG="$root/bench/gapcon_lookup_20.toml" ./bench_gapcon lookup20 "${gapcon_args[@]}" |
+  tee -a bench_gapcon_lookup.txt
 
 cpu="$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n1)"
 [ -n "$cpu" ] || cpu="$(sed -n 's/^model name[[:space:]]*:[[:space:]]*//p' /proc/cpuinfo | head -n1)"
@@ -111,5 +129,75 @@ x86-64 target); both sides use the default target CPU, no \`-march=native\`.
 
 EOF
   cat bench_output.txt
+  cat <<EOF
+
+## Per-call cost of \`gapcon_\`
+
+The library's \`GAPCON\` (\`gapcon_\` in \`libinterfacial.a\`) against \`GAPREF\`
+([\`bench/gapcon_ref.f\`](../bench/gapcon_ref.f)), a GAPCON of the same laws written by hand in
+fixed-form Fortran 77: the tables in \`DATA\` statements, the interaction chosen by
+\`IF (CINAME .EQ. 'GAP-CONST') ... ELSE IF\`, the table row found by bisection, only \`AK(1)\`
+written, no checks.
+
+- Laws ([\`bench/gapcon_bench.toml\`](../bench/gapcon_bench.toml), three interactions):
+  \`GAP-CONST\`, k = 4500; \`GAP-PTAB\`, a 100-row pressure table (p = 0–196.02,
+  k = 1500–29958.6); \`GAP-TTAB\`, the same 100 pressures at θ̄ = 20 and at θ̄ = 320 (rows
+  \`[p, k, θ̄]\`), linear in θ̄ between them, constant outside. Ours reads the file once per
+  process (\`INTERFACIAL_CONFIG\`) and matches \`CINAME\` against the configured names on every
+  call; the reference compares \`CINAME\` with its three names in turn, and searches the
+  pressure column once for both temperatures.
+- Points: 4096 per case; contact pressure \`D(2)\` in −10–215, so about 13 % of the points are
+  outside the table (on both sides), and every 16th point is exactly on a row; θ̄ in 0–340 with
+  \`TEMP(1)\` − \`TEMP(2)\` in ±30, every 16th point exactly on θ̄ = 20 or 320.
+- Before timing, every point goes once through both routines: \`AK(1)\` must agree to 10⁻¹²
+  relative and \`AK(2..5)\` must be left alone, or the run stops; \`GAP-CONST\` must give 4500
+  everywhere, and \`GAP-TTAB\` must equal \`GAP-PTAB\` wherever θ̄ ≤ 20.
+- Timing ([\`bench/bench_gapcon.f90\`](../bench/bench_gapcon.f90)) as for \`fric_\`: \`D\` and
+  \`TEMP\` copied into work arrays, a plain \`CALL\` (implicit interface, 15 arguments + 3 hidden
+  lengths, \`CHARACTER*80\` names), NREP sweeps per timed run, NRUN rounds in a rotating order
+  with an empty routine of the same argument list
+  ([\`bench/gapcon_nop.f\`](../bench/gapcon_nop.f)); the best round, the ratio of the medians as
+  a noise check, and the ratio net of the empty call. A checksum of the timed \`AK(1)\` must
+  agree between ours and the reference.
+
+Machine, compilers and library build as for \`fric_\` above.
+
+### Command
+
+\`\`\`sh
+scripts/bench.sh${*:+ $*}
+# which also runs:
+gfortran ${fflags[*]} -Ibench -c bench/gapcon_ref.f
+gfortran ${fflags[*]} -Ibench -c bench/gapcon_nop.f
+gfortran ${fflags[*]} -c bench/bench_gapcon.f90
+gfortran ${fflags[*]} -o bench_gapcon bench_gapcon.o gapcon_ref.o gapcon_nop.o target/release/libinterfacial.a ${native_libs[*]}
+INTERFACIAL_CONFIG=bench/gapcon_bench.toml ./bench_gapcon laws ${gapcon_args[*]}
+INTERFACIAL_CONFIG=bench/gapcon_lookup_1.toml ./bench_gapcon lookup1 ${gapcon_args[*]}
+INTERFACIAL_CONFIG=bench/gapcon_lookup_20.toml ./bench_gapcon lookup20 ${gapcon_args[*]}
+\`\`\`
+
+\`bench_gapcon MODE [NREP [NRUN [CASE]]]\` (with the \`INTERFACIAL_CONFIG\` of its MODE) times
+only row CASE, for profiling.
+
+### Results
+
+EOF
+  cat bench_gapcon_laws.txt
+  cat <<EOF
+
+### Cost of the interaction-name lookup
+
+The constant law again, in two more processes (the file is read once per process):
+[\`bench/gapcon_lookup_1.toml\`](../bench/gapcon_lookup_1.toml) configures one interaction,
+\`INT-01\`; [\`bench/gapcon_lookup_20.toml\`](../bench/gapcon_lookup_20.toml) configures
+\`INT-01\` … \`INT-20\` (names of one length that differ only in their last characters, as
+generated names do) and a \`"*"\` fallback, each with its own k, and every call must return the
+k of the entry its name belongs to. Only ours and the empty routine are timed; the last column
+is the cost of the call net of the empty routine.
+
+| configuration | CINAME | GAPCON (ours) ns/call | median ns/call | empty call ns/call | ours − empty ns/call |
+|---|---|---:|---:|---:|---:|
+EOF
+  cat bench_gapcon_lookup.txt
 } >"$doc"
 echo "== wrote $doc"

@@ -15,3 +15,10 @@ echo "== C and Fortran harnesses"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j2
 ctest --test-dir build --output-on-failure -j2
+# Optional stages, each owned by its own script: run when present.
+for stage in scripts/test-sanitizers.sh scripts/fuzz-ci.sh; do
+  if [ -x "$stage" ]; then
+    echo "== $stage"
+    "$stage"
+  fi
+done
