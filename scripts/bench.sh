@@ -122,7 +122,7 @@ gfortran ${fflags[*]} -o bench_fric bench_fric.o fric_ref.o fric_nop.o target/re
 Usage: \`scripts/bench.sh [NREP [NRUN [CASE]]]\` (CASE 1–4 times one row only, for profiling);
 \`BENCH_BUILD_DIR\` moves the build directory (default \`/tmp/build-bench\`).
 
-The library is built with the crate's release profile (\`opt-level = 3\`, no LTO, generic
+The library is built with the crate's release profile (\`opt-level = 3\`, fat LTO, one codegen unit, generic
 x86-64 target); both sides use the default target CPU, no \`-march=native\`.
 
 ### Results
