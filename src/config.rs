@@ -79,7 +79,33 @@ pub struct Config {
     path: String,
     /// (name as written, law); names are unique ignoring ASCII case.
     gap_laws: Vec<(String, GapLaw)>,
+    /// [`name_key`] of each entry of `gap_laws`, same order: the per-call lookup scans these
+    /// eight-byte keys and compares names only on a key match.
+    gap_keys: Vec<u64>,
     fallback: Option<GapLaw>,
+}
+
+/// FNV-1a hash of a name's bytes, upper-cased: equal for names that match ignoring ASCII case.
+#[inline]
+fn name_key(name: &[u8]) -> u64 {
+    name.iter().fold(0xcbf2_9ce4_8422_2325, |h, b| {
+        (h ^ u64::from(b.to_ascii_uppercase())).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
+/// A Fortran name without its trailing blank padding (and trailing NULs from C callers).
+/// Skips eight blanks at a time: CHARACTER*80 names are mostly padding.
+#[inline]
+fn trim_fortran_name(name: &[u8]) -> &[u8] {
+    const BLANKS: [u8; 8] = [b' '; 8];
+    let mut end = name.len();
+    while end >= 8 && name[end - 8..end] == BLANKS {
+        end -= 8;
+    }
+    while end > 0 && (name[end - 1] == b' ' || name[end - 1] == 0) {
+        end -= 1;
+    }
+    &name[..end]
 }
 
 /// Builds "file:line: key: message" from a byte span of the file.
@@ -154,9 +180,14 @@ impl Config {
             }
             gap_laws.push((name.clone(), law));
         }
+        let gap_keys = gap_laws
+            .iter()
+            .map(|(n, _)| name_key(n.as_bytes()))
+            .collect();
         Ok(Config {
             path: path.to_owned(),
             gap_laws,
+            gap_keys,
             fallback,
         })
     }
@@ -178,15 +209,13 @@ impl Config {
     /// ignoring ASCII case (never by prefix), else the `"*"` entry.
     #[must_use]
     pub fn gap_law(&self, name: &[u8]) -> Option<&GapLaw> {
-        let end = name
+        let name = trim_fortran_name(name);
+        let key = name_key(name);
+        self.gap_keys
             .iter()
-            .rposition(|b| *b != b' ' && *b != 0)
-            .map_or(0, |i| i + 1);
-        let name = &name[..end];
-        self.gap_laws
-            .iter()
-            .find(|(n, _)| n.as_bytes().eq_ignore_ascii_case(name))
-            .map(|(_, law)| law)
+            .zip(&self.gap_laws)
+            .find(|(k, (n, _))| **k == key && n.as_bytes().eq_ignore_ascii_case(name))
+            .map(|(_, (_, law))| law)
             .or(self.fallback.as_ref())
     }
 }
@@ -450,6 +479,45 @@ table = [[0.0, 1.0], [100.0, 3.0]]
         assert_eq!(k("SI1A", 100.0), 3.0);
         assert_eq!(k("OTHER", -5.0), 1.0);
         assert_eq!(k("OTHER", 500.0), 3.0);
+    }
+
+    #[test]
+    fn lookup_trims_padding_ignores_case_and_never_matches_a_neighbour() {
+        // Twenty names of one length that differ only in their last characters, each with its
+        // own k = its number, and a fallback of k = 0.
+        let mut text = String::new();
+        for i in 1..=20 {
+            text +=
+                &format!("[interactions.int-{i:02}.conductance]\nlaw = \"constant\"\nk = {i}.0\n");
+        }
+        text += "[interactions.\"*\".conductance]\nlaw = \"constant\"\nk = 0.0\n";
+        let cfg = parse(&text).unwrap();
+        let k = |name: &[u8]| {
+            cfg.gap_law(name)
+                .unwrap()
+                .evaluate(0.0, 1.0, 20.0, 20.0)
+                .unwrap()
+                .k
+        };
+        for i in 1..=20 {
+            let base = format!("INT-{i:02}");
+            for pad in [0, 1, 7, 8, 9, 16, 74] {
+                let mut name = base.clone().into_bytes();
+                name.resize(base.len() + pad, b' ');
+                assert_eq!(k(&name), f64::from(i), "{base} + {pad} blanks");
+                // C callers may pad with NULs, or end the blanks with one.
+                let mut nul = name.clone();
+                nul.push(0);
+                assert_eq!(k(&nul), f64::from(i), "{base} + {pad} blanks + NUL");
+            }
+            assert_eq!(k(base.to_lowercase().as_bytes()), f64::from(i));
+            // A prefix, an extension and a leading blank are other names: the fallback.
+            assert_eq!(k(&base.as_bytes()[..5]), 0.0);
+            assert_eq!(k(format!("{base}X").as_bytes()), 0.0);
+            assert_eq!(k(format!(" {base}").as_bytes()), 0.0);
+        }
+        assert_eq!(k(b""), 0.0);
+        assert_eq!(k(&[b' '; 80]), 0.0);
     }
 
     #[test]
