@@ -298,15 +298,15 @@ fn exact_stick_nfdir_2() {
 #[test]
 fn rough_is_always_stuck() {
     let mut rng = Rng(5);
-    for i in 0..100_000 {
+    for i in 0..100_000i32 {
         let nfdir = 1 + (i % 2);
         let prm = random_params(&mut rng, 2.0);
-        let mut c = FricCall::new(nfdir as i32, &prm.props);
+        let mut c = FricCall::new(nfdir, &prm.props);
         c.chrlngth = prm.chrlngth;
         c.press = rng.range(-10.0, 200.0);
         c.dpress = rng.range(-20.0, 20.0);
         c.dgam[0] = rng.range(-1.0, 1.0);
-        c.lm = (i % 2) as i32;
+        c.lm = i % 2;
         c.pnewdt = 1.0;
         c.call();
         assert_eq!((c.lm, c.pnewdt), (1, 1.0), "call {i}");
