@@ -192,6 +192,11 @@ fn config_errors() {
         std::fs::write(&p, text).unwrap();
         p.to_string_lossy().into_owned()
     };
+    let write_bytes = |tag: &str, bytes: &[u8]| {
+        let p = dir.join(format!("interfacial-bad-{tag}-{}.toml", std::process::id()));
+        std::fs::write(&p, bytes).unwrap();
+        p.to_string_lossy().into_owned()
+    };
     let cases: Vec<(Option<String>, &str)> = vec![
         (None, "INTERFACIAL_CONFIG is not set"),
         (Some("/nonexistent/interfacial.toml".into()), "cannot read"),
@@ -226,6 +231,43 @@ fn config_errors() {
                 "[interactions.SI1.conductance]\nlaw = \"constant\"\nk = -3.0\n",
             )),
             ":3: interactions.SI1.conductance.k",
+        ),
+        // Unreadable: a directory, and a file that is not UTF-8 text.
+        (Some(dir.to_string_lossy().into_owned()), "cannot read"),
+        (
+            Some(write_bytes("binary", b"k = \xff\xfe\n")),
+            "cannot read",
+        ),
+        // Inconsistent: a value of the wrong type, rows of different widths, an unknown key at
+        // the top, radiation without its units, two names that differ only in case.
+        (
+            Some(write(
+                "type",
+                "[interactions.SI1.conductance]\nlaw = \"constant\"\nk = \"two\"\n",
+            )),
+            ":3:",
+        ),
+        (
+            Some(write(
+                "widths",
+                "[interactions.SI1.conductance]\nlaw = \"pressure-table\"\ntable = [[0.0, 1.0], [1.0, 2.0, 300.0]]\n",
+            )),
+            ":3: interactions.SI1.conductance.table",
+        ),
+        (Some(write("toplevel", "interaction = 1\n")), ":1:"),
+        (
+            Some(write(
+                "units",
+                "[interactions.SI1.radiation]\nview_factor = 0.5\n",
+            )),
+            "interactions.SI1.radiation",
+        ),
+        (
+            Some(write(
+                "case",
+                "[interactions.SI1.conductance]\nlaw = \"constant\"\nk = 1.0\n[interactions.si1.conductance]\nlaw = \"constant\"\nk = 2.0\n",
+            )),
+            "ignoring case",
         ),
         (
             Some(write(
