@@ -1,0 +1,432 @@
+! test_fric_omp.f90 -- FRIC from an OpenMP parallel loop (OMP_NUM_THREADS = 8, set by CTest),
+! compared bit for bit with a serial run of the same points. The Fortran twin of
+! c_tests/test_fric_threads.c; FRIC is called as Abaqus user code calls it: a plain
+! `call fric(...)` with the 39 arguments and no interface block.
+!
+! 4096 contact points x 256 increments = 1 048 576 calls per run. Each point is driven
+! increment by increment (TAU, STATEV and LM carried, PRESS and DPRESS consistent, the host's
+! Lagrange stress TAULM handed to exact-stick points) with its own Coulomb interaction drawn
+! from a Lehmer generator x <- 48271 x mod (2**31 - 1) seeded by the point's index: NFDIR 1 or 2;
+! elastic stick (stick and slip), exact stick (LM = 1 held, released, entered by a reversal) or
+! rough; a tau_max cap or none; gamma_crit from PROPS(5) or PROPS(6) x CHRLNGTH; NSTATV 3 or 5;
+! now and then a negative pressure (no friction) and a NaN in DGAM (refused: PNEWDT = 0.25, the
+! state unchanged, the thread's last error names the element). Every array FRIC may touch is
+! allocated at exactly its declared size, so valgrind sees any write past it.
+!
+! Compared with the serial run: every output of every call (LM, TAU, DDTDDG, DDTDDP, DSLIP, SED,
+! SFD, DDTDDT, PNEWDT, STATEV), bit patterns folded into a 62-bit digest per call; the final
+! contents of all those arrays per point, bit for bit; the counts of each kind of call.
+! Checked on every call against the law: refused exactly when the host put a NaN in a read
+! input, |tau| <= tau_crit = min(mu p, tau_max) and = tau_crit when slipping, SED, SFD >= 0,
+! exact-stick outputs, rough points LM = 1, STATEV(1) never decreasing, STATEV past 3 untouched,
+! PNEWDT untouched by a successful call. Each kind of call must occur often, and at least 8
+! OpenMP threads must have done work.
+!
+! INTERFACIAL_TEST_SHRINK=n divides the number of points by n (valgrind runs).
+! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
+
+module fric_omp_support
+  use, intrinsic :: iso_fortran_env, only: int64
+  use, intrinsic :: iso_c_binding, only: c_char, c_size_t
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+  implicit none
+  integer, parameter :: dp = kind(1.0d0)
+  integer, parameter :: full_points = 4096, incs = 256, min_points = 64, nthreads_min = 8
+  integer(int64), parameter :: lehmer_m = 2147483647_int64
+  real(dp), parameter :: pnewdt_in = 1.0e36_dp, statev_tail = -5.5e55_dp, cutback = 0.25_dp
+  integer, parameter :: nrec = 24 ! final record: see final_record
+
+  ! Kinds of call, counted per run.
+  integer, parameter :: k_stick = 1, k_slip = 2, k_capped = 3, k_exact = 4, k_held = 5, &
+    k_released = 6, k_reversal = 7, k_rough = 8, k_no_press = 9, k_refused = 10, &
+    k_nfdir1 = 11, k_nfdir2 = 12, n_kinds = 12
+  character(len=24), parameter :: kind_names(n_kinds) = [character(len=24) :: 'stick', &
+    'slip', 'slip on tau_max', 'exact stick', 'exact stick held', 'released', &
+    'reversal to exact stick', 'rough', 'negative pressure', 'refused (NaN)', 'NFDIR 1', &
+    'NFDIR 2']
+
+  integer :: npass = 0, nfail = 0
+
+  interface
+    function ifl_last_error_copy(buf, len) bind(c, name='ifl_last_error_copy') result(n)
+      import :: c_char, c_size_t
+      character(kind=c_char), dimension(*), intent(out) :: buf
+      integer(c_size_t), value :: len
+      integer(c_size_t) :: n
+    end function ifl_last_error_copy
+  end interface
+
+contains
+
+  subroutine check(ok, what)
+    logical, intent(in) :: ok
+    character(len=*), intent(in) :: what
+    if (ok) then
+      npass = npass + 1
+    else
+      nfail = nfail + 1
+      write (*, '(a,a)') 'FAIL: ', what
+    end if
+  end subroutine check
+
+  integer(int64) function lehmer(x)
+    integer(int64), intent(inout) :: x
+    x = mod(48271_int64*x, lehmer_m)
+    lehmer = x
+  end function lehmer
+
+  ! Uniform in [lo, hi).
+  real(dp) function uniform(x, lo, hi)
+    integer(int64), intent(inout) :: x
+    real(dp), intent(in) :: lo, hi
+    uniform = lo + (hi - lo)*(real(lehmer(x) - 1_int64, dp)/real(lehmer_m - 1_int64, dp))
+  end function uniform
+
+  ! Two multiplicative hashes mod 2**31 - 1 over the 64 bits of v, in three pieces of at most
+  ! 31 bits (no product exceeds 2**48).
+  subroutine mix(h1, h2, v)
+    integer(int64), intent(inout) :: h1, h2
+    real(dp), intent(in) :: v
+    integer(int64) :: bits, piece(3)
+    integer :: i
+    bits = transfer(v, bits)
+    piece = [ibits(bits, 0, 31), ibits(bits, 31, 31), ibits(bits, 62, 2)]
+    do i = 1, 3
+      h1 = mod(h1*48271_int64 + piece(i) + 1_int64, lehmer_m)
+      h2 = mod(h2*69621_int64 + piece(i) + 1_int64, lehmer_m)
+    end do
+  end subroutine mix
+
+  logical function same_bits(a, b)
+    real(dp), intent(in) :: a, b
+    same_bits = transfer(a, 0_int64) == transfer(b, 0_int64)
+  end function same_bits
+
+  real(dp) function norm(v)
+    real(dp), intent(in) :: v(:)
+    norm = sqrt(sum(v*v))
+    if (size(v) == 1) norm = abs(v(1))
+  end function norm
+
+  ! One contact point of one run: 256 increments into dig(:), the final outputs into fin(:),
+  ! counts into kinds(:), broken checks into bad (the first one's text into first_bad).
+  subroutine run_point(ip, dig, fin, kinds, bad, first_bad)
+    integer, intent(in) :: ip
+    integer(int64), intent(out) :: dig(incs)
+    real(dp), intent(out) :: fin(nrec)
+    integer(int64), intent(inout) :: kinds(n_kinds)
+    integer, intent(inout) :: bad
+    character(len=*), intent(inout) :: first_bad
+    ! FRIC's arguments; the arrays at exactly their declared sizes.
+    real(dp), allocatable :: tau(:), ddtddg(:, :), ddtddp(:), dslip(:), ddtddt(:, :), &
+      statev(:), dgam(:), taulm(:), slip(:)
+    integer :: lm, nfdir, nstatv, nprops, mode, noel, node, npt, npatch, kstep, kinc, mcrd, &
+      npred, lm_in, inc, i
+    real(dp) :: props(7), sed, sfd, pnewdt, press, dpress, ddpddh, time(2), dtime, chrlngth, &
+      coords(3), rcoord(3), drot(2, 2), temp(2), predef(2, 1)
+    character(len=80) :: ciname, slname, msname
+    ! The host's bookkeeping.
+    integer(int64) :: rng, h1, h2
+    real(dp) :: p_ref, tau_max, gc, p_old, tau_crit, tau_old(2), statev_old(3), s1_old, tn, m
+    logical :: nan_call, slipping
+    character(len=512) :: msg
+    character(len=32) :: want
+    integer(c_size_t) :: msg_len
+
+    rng = int(mod(ip, int(lehmer_m) - 1), int64) + 1_int64
+    do i = 1, 4 ! decorrelate neighbouring seeds
+      h1 = lehmer(rng)
+    end do
+    nfdir = merge(1, 2, uniform(rng, 0.0_dp, 1.0_dp) < 0.5_dp)
+    m = uniform(rng, 0.0_dp, 1.0_dp)
+    mode = merge(0, merge(1, 2, m < 0.9_dp), m < 0.6_dp)
+    nstatv = merge(3, 5, uniform(rng, 0.0_dp, 1.0_dp) < 0.75_dp)
+    p_ref = uniform(rng, 10.0_dp, 100.0_dp)
+    props = 0.0_dp
+    props(1) = 1.0_dp
+    props(2) = uniform(rng, 0.1_dp, 0.6_dp)
+    tau_max = huge(1.0_dp)
+    if (uniform(rng, 0.0_dp, 1.0_dp) < 0.3_dp) then
+      tau_max = props(2)*p_ref*uniform(rng, 0.6_dp, 1.0_dp)
+      props(4) = tau_max
+    end if
+    chrlngth = uniform(rng, 0.05_dp, 0.2_dp)
+    if (uniform(rng, 0.0_dp, 1.0_dp) < 0.5_dp) then
+      props(5) = uniform(rng, 1.0e-4_dp, 1.0e-3_dp)
+      gc = props(5)
+    else
+      props(6) = uniform(rng, 0.002_dp, 0.01_dp)
+      gc = props(6)*chrlngth
+    end if
+    props(7) = real(mode, dp)
+    nprops = 7
+    allocate (tau(nfdir), ddtddg(nfdir, nfdir), ddtddp(nfdir), dslip(nfdir), &
+              ddtddt(nfdir, 2), statev(nstatv), dgam(nfdir), taulm(nfdir), slip(nfdir))
+    tau = 0.0_dp
+    ddtddg = 0.0_dp
+    ddtddp = 0.0_dp
+    dslip = 0.0_dp
+    ddtddt = 0.0_dp
+    statev = statev_tail
+    statev(1:3) = 0.0_dp
+    slip = 0.0_dp
+    sed = 0.0_dp
+    sfd = 0.0_dp
+    lm = 0
+    press = 0.0_dp
+    ciname = 'FRICTION_OMP'
+    slname = 'SLAVE'
+    msname = 'MASTER'
+    noel = ip
+    node = ip
+    npt = 1
+    npatch = 0
+    kstep = 1
+    mcrd = nfdir + 1
+    npred = 1
+    dtime = 0.01_dp
+    ddpddh = 1.0e6_dp
+    coords = 0.0_dp
+    rcoord = 0.0_dp
+    drot = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+    temp = [20.0_dp, 0.0_dp]
+    predef = 0.0_dp
+
+    do inc = 1, incs
+      kinc = inc
+      time = 0.01_dp*(inc - 1)
+      p_old = press
+      press = p_ref*uniform(rng, 0.7_dp, 1.3_dp)
+      if (uniform(rng, 0.0_dp, 1.0_dp) < 1.0_dp/64.0_dp) press = -0.05_dp*p_ref
+      dpress = press - p_old
+      do i = 1, nfdir
+        dgam(i) = uniform(rng, -2.0_dp, 2.0_dp)*gc
+      end do
+      tau_crit = 0.0_dp
+      if (press > 0.0_dp) tau_crit = min(props(2)*press, tau_max)
+      do i = 1, nfdir
+        taulm(i) = uniform(rng, -1.2_dp, 1.2_dp)*merge(tau_crit, p_ref, press > 0.0_dp) &
+                   /sqrt(real(nfdir, dp))
+      end do
+      nan_call = mod(ip - 1, 8) == 3 .and. mod(inc - 1, 97) == 50
+      if (nan_call) then
+        dgam(1) = ieee_value(1.0_dp, ieee_quiet_nan)
+      else
+        slip = slip + dgam
+      end if
+      pnewdt = pnewdt_in
+      tau_old = [tau(1), tau(nfdir)]
+      statev_old = statev(1:3)
+      s1_old = statev(1)
+      lm_in = lm
+
+      call fric(lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pnewdt, statev, dgam, &
+                taulm, press, dpress, ddpddh, slip, kstep, kinc, time, dtime, noel, ciname, &
+                slname, msname, npt, node, npatch, coords, rcoord, drot, temp, predef, nfdir, &
+                mcrd, npred, nstatv, chrlngth, props, nprops)
+
+      i = merge(k_nfdir1, k_nfdir2, nfdir == 1)
+      kinds(i) = kinds(i) + 1
+      do i = 4, nstatv
+        if (.not. same_bits(statev(i), statev_tail)) call fault('STATEV past 3 written')
+      end do
+      if (nan_call .and. mode /= 2) then ! rough points do not read DGAM
+        kinds(k_refused) = kinds(k_refused) + 1
+        if (pnewdt /= cutback .or. lm /= lm_in .or. .not. same_bits(tau(1), tau_old(1)) .or. &
+            .not. same_bits(tau(nfdir), tau_old(2)) .or. &
+            any(transfer(statev(1:3), 0_int64, 3) /= transfer(statev_old, 0_int64, 3))) &
+          call fault('refused call: PNEWDT not 0.25 or state changed')
+        msg = ' '
+        msg_len = ifl_last_error_copy(msg, int(len(msg), c_size_t))
+        write (want, '(a,i0,a)') 'element ', noel, ','
+        if (index(msg, trim(want)) == 0 .or. index(msg, 'DGAM') == 0) &
+          call fault('last error does not name the element and DGAM: '//trim(msg))
+        dgam(1) = 0.0_dp
+        press = p_old ! the increment did not happen
+      else
+        call judge()
+      end if
+      h1 = 1_int64
+      h2 = 1_int64
+      call mix(h1, h2, real(lm, dp))
+      do i = 1, nfdir
+        call mix(h1, h2, tau(i))
+        call mix(h1, h2, ddtddp(i))
+        call mix(h1, h2, dslip(i))
+        call mix(h1, h2, ddtddt(i, 1))
+        call mix(h1, h2, ddtddt(i, 2))
+      end do
+      do i = 1, nfdir*nfdir
+        call mix(h1, h2, ddtddg(mod(i - 1, nfdir) + 1, (i - 1)/nfdir + 1))
+      end do
+      call mix(h1, h2, sed)
+      call mix(h1, h2, sfd)
+      call mix(h1, h2, pnewdt)
+      do i = 1, nstatv
+        call mix(h1, h2, statev(i))
+      end do
+      dig(inc) = h1*2147483648_int64 + h2
+    end do
+
+    fin = 0.0_dp
+    fin(1:nfdir) = tau
+    fin(3:2 + nfdir*nfdir) = reshape(ddtddg, [nfdir*nfdir])
+    fin(7:6 + nfdir) = ddtddp
+    fin(9:8 + nfdir) = dslip
+    fin(11:10 + 2*nfdir) = reshape(ddtddt, [2*nfdir])
+    fin(15:14 + nstatv) = statev
+    fin(20:24) = [sed, sfd, pnewdt, press, real(lm, dp)]
+    deallocate (tau, ddtddg, ddtddp, dslip, ddtddt, statev, dgam, taulm, slip)
+
+  contains
+
+    subroutine fault(what)
+      character(len=*), intent(in) :: what
+      ! first_bad is shared between the threads; bad is each thread's own (a reduction).
+      !$omp critical (fric_omp_first_bad)
+      if (first_bad == ' ') write (first_bad, '(a,i0,a,i0,a,a)') 'point ', ip, &
+        ', increment ', inc, ': ', what
+      !$omp end critical (fric_omp_first_bad)
+      bad = bad + 1
+    end subroutine fault
+
+    ! A successful call against the law.
+    subroutine judge()
+      if (pnewdt /= pnewdt_in) call fault('PNEWDT changed by a successful call')
+      if (.not. statev(1) >= s1_old) call fault('STATEV(1) decreased')
+      if (press <= 0.0_dp) kinds(k_no_press) = kinds(k_no_press) + 1
+      if (mode == 2) then
+        kinds(k_rough) = kinds(k_rough) + 1
+        if (lm /= 1) call fault('rough point not LM = 1')
+        return
+      end if
+      if (lm == 1) then
+        if (mode /= 1) call fault('LM = 1 out of an elastic-stick point')
+        kinds(k_exact) = kinds(k_exact) + 1
+        if (lm_in == 1) then
+          kinds(k_held) = kinds(k_held) + 1
+          if (.not. norm(taulm) <= tau_crit) call fault('held exact stick with |TAULM| > tau_crit')
+        else
+          kinds(k_reversal) = kinds(k_reversal) + 1
+        end if
+        if (statev(3) /= 2.0_dp .or. sed /= 0.0_dp .or. sfd /= 0.0_dp .or. any(dslip /= 0.0_dp)) &
+          call fault('exact stick: STATEV(3) = 2, DSLIP = SED = SFD = 0')
+        tau = taulm ! the host's stress at exact stick is the Lagrange stress
+        return
+      end if
+      if (lm /= 0) then
+        call fault('LM not 0 or 1')
+        return
+      end if
+      if (lm_in == 1) then
+        kinds(k_released) = kinds(k_released) + 1
+        if (.not. norm(taulm) > tau_crit) call fault('released with |TAULM| <= tau_crit')
+      end if
+      tn = norm(tau)
+      slipping = statev(3) == 1.0_dp
+      if (.not. tn <= tau_crit*(1.0_dp + 1.0e-12_dp)) call fault('|tau| > tau_crit')
+      if (slipping .and. .not. abs(tn - tau_crit) <= 1.0e-12_dp*tau_crit) &
+        call fault('slipping with |tau| /= tau_crit')
+      if (.not. (sed >= 0.0_dp .and. sfd >= 0.0_dp)) call fault('SED or SFD negative')
+      if (statev(3) /= 0.0_dp .and. .not. slipping) call fault('STATEV(3) not 0 or 1 with LM = 0')
+      if (slipping) then
+        kinds(k_slip) = kinds(k_slip) + 1
+        if (props(2)*press > tau_max) kinds(k_capped) = kinds(k_capped) + 1
+      else
+        kinds(k_stick) = kinds(k_stick) + 1
+      end if
+    end subroutine judge
+  end subroutine run_point
+
+  integer function shrink_factor()
+    character(len=32) :: v
+    integer :: stat, n
+    shrink_factor = 1
+    call get_environment_variable('INTERFACIAL_TEST_SHRINK', v, status=stat)
+    if (stat /= 0) return
+    read (v, *, iostat=stat) n
+    if (stat /= 0 .or. n < 1) return
+    shrink_factor = min(n, full_points/min_points)
+  end function shrink_factor
+
+  subroutine report(run, kinds, calls)
+    character(len=*), intent(in) :: run
+    integer(int64), intent(in) :: kinds(n_kinds), calls
+    integer :: k
+    write (*, '(a,a,i0,a)', advance='no') run, ': ', calls, ' calls;'
+    do k = 1, n_kinds
+      write (*, '(1x,a,1x,i0)', advance='no') trim(kind_names(k)), kinds(k)
+    end do
+    write (*, '()')
+  end subroutine report
+end module fric_omp_support
+
+program test_fric_omp
+  use fric_omp_support
+  use omp_lib, only: omp_get_thread_num, omp_get_max_threads
+  implicit none
+  integer :: npoints, ip, k, bad_par, bad_ser, nworkers, ndiff, nfin
+  integer(int64), allocatable :: dig_par(:, :), dig_ser(:, :)
+  real(dp), allocatable :: fin_par(:, :), fin_ser(:, :)
+  integer(int64) :: kinds_par(n_kinds), kinds_ser(n_kinds), calls
+  logical, allocatable :: worked(:)
+  character(len=256) :: first_par, first_ser
+
+  npoints = full_points/shrink_factor()
+  calls = int(npoints, int64)*incs
+  allocate (dig_par(incs, npoints), dig_ser(incs, npoints), fin_par(nrec, npoints), &
+            fin_ser(nrec, npoints), worked(0:max(omp_get_max_threads(), 1) - 1))
+  worked = .false.
+  kinds_par = 0
+  kinds_ser = 0
+  bad_par = 0
+  bad_ser = 0
+  first_par = ' '
+  first_ser = ' '
+  call check(omp_get_max_threads() >= nthreads_min, 'OpenMP offers at least 8 threads '// &
+             '(OMP_NUM_THREADS)')
+
+  ! Contiguous blocks of points per thread.
+  !$omp parallel do schedule(static) default(shared) private(ip) &
+  !$omp reduction(+:kinds_par, bad_par)
+  do ip = 1, npoints
+    worked(omp_get_thread_num()) = .true.
+    call run_point(ip, dig_par(:, ip), fin_par(:, ip), kinds_par, bad_par, first_par)
+  end do
+  !$omp end parallel do
+  nworkers = count(worked)
+  call report('OpenMP', kinds_par, calls)
+  call check(nworkers >= nthreads_min, 'at least 8 OpenMP threads did work')
+  if (bad_par > 0) write (*, '(a,i0,a,a)') '  OpenMP: ', bad_par, ' violations, first: ', &
+    trim(first_par)
+  call check(bad_par == 0, 'every OpenMP call obeys the law')
+
+  do ip = 1, npoints
+    call run_point(ip, dig_ser(:, ip), fin_ser(:, ip), kinds_ser, bad_ser, first_ser)
+  end do
+  call report('serial', kinds_ser, calls)
+  if (bad_ser > 0) write (*, '(a,i0,a,a)') '  serial: ', bad_ser, ' violations, first: ', &
+    trim(first_ser)
+  call check(bad_ser == 0, 'every serial call obeys the law')
+  do k = 1, n_kinds
+    call check(kinds_ser(k) > 0 .and. kinds_ser(k) >= calls/2000, &
+               'serial run: enough calls of kind '//trim(kind_names(k)))
+  end do
+
+  ndiff = count(dig_par /= dig_ser)
+  nfin = 0
+  do ip = 1, npoints
+    if (any(transfer(fin_par(:, ip), 0_int64, nrec) /= transfer(fin_ser(:, ip), 0_int64, nrec))) &
+      nfin = nfin + 1
+  end do
+  call check(all(kinds_par == kinds_ser), 'same counts of each kind in both runs')
+  call check(ndiff == 0, 'every call: outputs bit for bit equal to the serial run')
+  call check(nfin == 0, 'every point: final outputs bit for bit equal to the serial run')
+  write (*, '(i0,a,i0,a,i0,a,i0,a,i0,a)') calls, ' FRIC calls on ', nworkers, &
+    ' OpenMP threads and ', calls, ' serial: ', ndiff, ' calls and ', nfin, &
+    ' final states differ'
+
+  deallocate (dig_par, dig_ser, fin_par, fin_ser, worked)
+  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
+  if (nfail > 0) error stop 1
+end program test_fric_omp
