@@ -2,13 +2,30 @@
 # Installs what the tests need beyond Rust and gcc (Debian packages): gfortran and cmake for the
 # harnesses, valgrind for the memory checks, OpenMPI for the MPI harness. Run as root, or
 # install them yourself: apt-get install gfortran cmake valgrind openmpi-bin libopenmpi-dev
+# INTERFACIAL_MPI=OFF leaves MPI out (then configure with cmake -DINTERFACIAL_MPI=OFF too).
 set -euo pipefail
 missing=()
 command -v gfortran >/dev/null 2>&1 || missing+=(gfortran)
 command -v cmake >/dev/null 2>&1 || missing+=(cmake)
 command -v valgrind >/dev/null 2>&1 || missing+=(valgrind)
-command -v mpif90 >/dev/null 2>&1 || missing+=(openmpi-bin libopenmpi-dev)
-[ ${#missing[@]} -eq 0 ] && exit 0
+[ "${INTERFACIAL_MPI:-ON}" = OFF ] || { command -v mpif90 && command -v mpirun; } >/dev/null 2>&1 ||
+  missing+=(openmpi-bin libopenmpi-dev)
+# The MPI harness needs MPI's Fortran module: `use mpi` must compile with mpif90.
+check_mpi_fortran() {
+  [ "${INTERFACIAL_MPI:-ON}" = OFF ] && return 0
+  local d
+  d=$(mktemp -d)
+  printf '%s\n' 'program p' '  use mpi' '  implicit none' '  integer :: ierr' \
+    '  call mpi_init(ierr)' '  call mpi_finalize(ierr)' 'end program p' >"$d/p.f90"
+  if ! (cd "$d" && mpif90 p.f90 -o p) >"$d/log" 2>&1; then
+    echo "interfacial: mpif90 cannot compile 'use mpi' (is libopenmpi-dev installed?):" >&2
+    cat "$d/log" >&2
+    rm -rf "$d"
+    exit 1
+  fi
+  rm -rf "$d"
+}
+[ ${#missing[@]} -eq 0 ] && { check_mpi_fortran; exit 0; }
 echo "interfacial: installing ${missing[*]} (Debian packages)"
 if [ "$(id -u)" -ne 0 ]; then
   if command -v sudo >/dev/null 2>&1; then SUDO=sudo; else
@@ -19,3 +36,4 @@ else SUDO=; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+check_mpi_fortran
