@@ -5,6 +5,9 @@
 use crate::LawError;
 use crate::laws::coulomb::{Coulomb, StickMode};
 
+mod adhesive;
+pub use adhesive::{ADHESIVE_NPROPS, AdhesiveProps, HeatExchange, LAW_ADHESIVE};
+
 /// `PROPS(1)` code of the Coulomb family.
 pub const LAW_COULOMB: i32 = 1;
 
@@ -17,6 +20,8 @@ pub const COULOMB_NPROPS: usize = 7;
 pub enum FrictionLaw {
     /// `PROPS(1) = 1`.
     Coulomb(Coulomb),
+    /// `PROPS(1) = 2`: adhesive friction (seed 004).
+    Adhesive(AdhesiveProps),
 }
 
 /// Reads `PROPS(1)` (the law code) and the law's parameters.
@@ -68,6 +73,8 @@ pub fn friction_law_checked(props: &[f64]) -> Result<FrictionLaw, LawError> {
     };
     if code == f64::from(LAW_COULOMB) {
         coulomb(props).map(FrictionLaw::Coulomb)
+    } else if code == f64::from(LAW_ADHESIVE) {
+        adhesive::adhesive(props).map(FrictionLaw::Adhesive)
     } else if code.is_finite() && code.fract() == 0.0 {
         Err(LawError::Parameter(format!(
             "PROPS(1) = {code} is not a known law code (1 = Coulomb)"
@@ -177,16 +184,21 @@ mod tests {
             match (fast, checked) {
                 (Some(f), Ok(FrictionLaw::Coulomb(c))) => prop_assert_eq!(f, c),
                 (None, Err(_)) => {}
+                // PROPS(1) = 2 is never the fast path's.
+                (None, Ok(FrictionLaw::Adhesive(_))) => prop_assert_eq!(props[0], 2.0),
                 // Longer PROPS with trailing zeros are valid but left to the checked path.
                 (None, Ok(_)) => prop_assert!(props.len() > COULOMB_NPROPS),
                 (Some(_), Err(e)) => prop_assert!(false, "fast path accepted {props:?}: {e}"),
+                (Some(_), Ok(other)) => prop_assert!(false, "fast path gave Coulomb, checked {other:?}"),
             }
         }
     }
 
     #[test]
     fn minimal_props_take_defaults() {
-        let FrictionLaw::Coulomb(c) = friction_law(&[1.0, 0.3]).unwrap();
+        let Ok(FrictionLaw::Coulomb(c)) = friction_law(&[1.0, 0.3]) else {
+            panic!("expected the Coulomb law")
+        };
         assert_eq!(c.mu(), 0.3);
         assert_eq!(c.shear_limit(), None);
         assert_eq!(c.critical_slip(), CriticalSlip::Tolerance(0.005));
@@ -195,7 +207,9 @@ mod tests {
 
     #[test]
     fn full_props() {
-        let FrictionLaw::Coulomb(c) = friction_law(&[1.0, 0.3, 0.0, 7.0, 1e-3, 0.01, 1.0]).unwrap();
+        let Ok(FrictionLaw::Coulomb(c)) = friction_law(&[1.0, 0.3, 0.0, 7.0, 1e-3, 0.01, 1.0]) else {
+            panic!("expected the Coulomb law")
+        };
         assert_eq!(c.shear_limit(), Some(7.0));
         assert_eq!(c.critical_slip(), CriticalSlip::Absolute(1e-3));
         assert_eq!(c.stick(), StickMode::Exact);

@@ -11,6 +11,8 @@ use crate::props::{FrictionLaw, friction_law};
 use crate::report::Site;
 use crate::{CUTBACK_RATIO, LawError};
 
+mod adhesive;
+
 /// Abaqus/Standard `FRIC`: frictional stress, tangents, energies and state of one closed contact
 /// point, callable from Fortran as `CALL FRIC(...)` with no interface block.
 ///
@@ -167,7 +169,14 @@ impl FricArgs {
             let Ok(nprops) = usize::try_from(nprops) else {
                 return Err(negative_nprops(nprops));
             };
-            let FrictionLaw::Coulomb(law) = friction_law(slice(self.props, nprops, "PROPS")?)?;
+            let law = match friction_law(slice(self.props, nprops, "PROPS")?)? {
+                FrictionLaw::Coulomb(law) => law,
+                // S_a = k_μ = v_½ = 0, μ_s = μ_d: the Coulomb code itself.
+                FrictionLaw::Adhesive(a) => match a.law.coulomb_special_case() {
+                    Some(law) => law,
+                    None => return self.adhesive(&a.law),
+                },
+            };
             let nstatv = read(self.nstatv, "NSTATV")?;
             let nstatv = match usize::try_from(nstatv) {
                 Ok(n) if n >= CoulombState::NSTATV => n,

@@ -15,9 +15,12 @@ pub mod fric;
 pub mod gapcon;
 pub mod host;
 pub mod native;
+pub mod uinter;
+pub mod uinter_host;
 
 pub use fric::fric_;
 pub use gapcon::gapcon_;
+pub use uinter::uinter_;
 pub use native::{
     IflConductance, IflStatus, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
     ifl_last_error_copy, ifl_version,

@@ -1,0 +1,207 @@
+//! `PROPS` layout of the adhesive friction law (`PROPS(1) = 2`, seed 004), shared by `fric_`
+//! (tangential part) and `uinter_` (the whole interface). The table in `docs/props.md`
+//! documents the same layout for users.
+
+use crate::LawError;
+use crate::laws::adhesive::{Adhesive, AdhesiveParameters};
+use crate::laws::adhesive_interface::AdhesiveInterface;
+
+/// `PROPS(1)` code of the adhesive friction law.
+pub const LAW_ADHESIVE: i32 = 2;
+
+/// Number of `PROPS` entries the adhesive law reads (`PROPS(1..13)`).
+pub const ADHESIVE_NPROPS: usize = 13;
+
+/// How the interface exchanges heat (`uinter_` only).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HeatExchange {
+    /// `PROPS(11) = 1`: conductance across the interface from the `INTERFACIAL_CONFIG` file
+    /// (the GAPCON laws, keyed by the interaction name).
+    pub conductance: bool,
+    /// η, the fraction of the frictional dissipation converted into heat (`PROPS(12)`).
+    pub heat_fraction: f64,
+    /// f, the part of that heat that flows into the slave surface (`PROPS(13)`, 0 → ½).
+    pub slave_fraction: f64,
+}
+
+/// The adhesive law and the entries only `uinter_` reads.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AdhesiveProps {
+    /// The tangential law (and adhesive strengths).
+    pub law: Adhesive,
+    /// Penalty normal stiffness K_n (`PROPS(10)`; 0 = not given, which `uinter_` refuses).
+    pub normal_stiffness: f64,
+    /// Heat exchange across the interface.
+    pub heat: HeatExchange,
+}
+
+impl AdhesiveProps {
+    /// The interface law for `uinter_`, which needs K_n.
+    pub fn interface(&self) -> Result<AdhesiveInterface, LawError> {
+        if self.normal_stiffness == 0.0 {
+            return Err(LawError::Parameter(
+                "PROPS(10) = 0: UINTER needs the penalty normal stiffness K_n > 0 of the \
+                 adhesive law (PROPS(10))"
+                    .into(),
+            ));
+        }
+        AdhesiveInterface::new(self.law, self.normal_stiffness).map_err(|e| in_props(10, e))
+    }
+}
+
+/// Adhesive layout: `PROPS(2)` coeff μ_d, `PROPS(3)` coeffStatic μ_s (≤ 0 → none),
+/// `PROPS(4)` Sa, `PROPS(5)` Na, `PROPS(6)` kmu, `PROPS(7)` vhalf, `PROPS(8)` γ_crit
+/// (0 → tolerance × CHRLNGTH), `PROPS(9)` slip tolerance (0 → 0.005), `PROPS(10)` K_n,
+/// `PROPS(11)` conductance from the configuration file (0 no, 1 yes), `PROPS(12)` η,
+/// `PROPS(13)` f.
+pub(crate) fn adhesive(props: &[f64]) -> Result<AdhesiveProps, LawError> {
+    if props.len() < 2 {
+        return Err(LawError::Parameter(format!(
+            "NPROPS = {} but the adhesive law needs at least 2 (PROPS(1) = 2, PROPS(2) = coeff)",
+            props.len()
+        )));
+    }
+    if let Some((i, v)) = props
+        .iter()
+        .enumerate()
+        .skip(ADHESIVE_NPROPS)
+        .find(|(_, v)| **v != 0.0)
+    {
+        return Err(LawError::Parameter(format!(
+            "PROPS({}) = {v} is not used by the adhesive law (PROPS(1..{ADHESIVE_NPROPS})); \
+             refusing to ignore it",
+            i + 1
+        )));
+    }
+    let get = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
+    let coeff_static = if props.len() >= 3 { get(3) } else { -1.0 };
+    let parameters = AdhesiveParameters {
+        coeff: get(2),
+        coeff_static,
+        sa: get(4),
+        na: get(5),
+        kmu: get(6),
+        vhalf: get(7),
+    };
+    let mut law = Adhesive::new(&parameters).map_err(|e| {
+        // Name the entry: the core names the seed's parameter.
+        let entry = match &e {
+            LawError::Parameter(m) if m.starts_with("coeffStatic") => 3,
+            LawError::Parameter(m) if m.starts_with("coeff") => 2,
+            LawError::Parameter(m) if m.starts_with("Sa") => 4,
+            LawError::Parameter(m) if m.starts_with("Na") => 5,
+            LawError::Parameter(m) if m.starts_with("kmu") => 6,
+            _ => 7,
+        };
+        in_props(entry, e)
+    })?;
+    let tolerance = get(9);
+    if tolerance != 0.0 {
+        law = law
+            .with_slip_tolerance(tolerance)
+            .map_err(|e| in_props(9, e))?;
+    }
+    let gamma_crit = get(8);
+    if gamma_crit != 0.0 {
+        law = law
+            .with_critical_slip_absolute(gamma_crit)
+            .map_err(|e| in_props(8, e))?;
+    }
+    let normal_stiffness = get(10);
+    if !(normal_stiffness == 0.0 || (normal_stiffness > 0.0 && normal_stiffness.is_finite())) {
+        return Err(LawError::Parameter(format!(
+            "PROPS(10) = {normal_stiffness}: the penalty normal stiffness K_n must be finite and \
+             > 0 (0 when only FRIC is used)"
+        )));
+    }
+    let conductance = match get(11) {
+        0.0 => false,
+        1.0 => true,
+        other => {
+            return Err(LawError::Parameter(format!(
+                "PROPS(11) = {other} must be 0 (no heat conduction) or 1 (conductance from the \
+                 INTERFACIAL_CONFIG file)"
+            )));
+        }
+    };
+    let heat_fraction = get(12);
+    if !(0.0..=1.0).contains(&heat_fraction) {
+        return Err(LawError::Parameter(format!(
+            "PROPS(12) = {heat_fraction}: the fraction η of frictional dissipation converted \
+             into heat must be in [0, 1]"
+        )));
+    }
+    let slave_fraction = match get(13) {
+        0.0 => 0.5,
+        f if f > 0.0 && f <= 1.0 => f,
+        other => {
+            return Err(LawError::Parameter(format!(
+                "PROPS(13) = {other}: the part f of the frictional heat that goes to the slave \
+                 surface must be in (0, 1] (0 → ½)"
+            )));
+        }
+    };
+    Ok(AdhesiveProps {
+        law,
+        normal_stiffness,
+        heat: HeatExchange {
+            conductance,
+            heat_fraction,
+            slave_fraction,
+        },
+    })
+}
+
+fn in_props(index: usize, e: LawError) -> LawError {
+    match e {
+        LawError::Parameter(m) => LawError::Parameter(format!("PROPS({index}): {m}")),
+        other => other,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn layout_and_defaults() {
+        let a = adhesive(&[2.0, 0.3]).unwrap();
+        assert_eq!(a.law.mu_static(), 0.3);
+        assert!(a.law.coulomb_special_case().is_some());
+        assert_eq!(a.heat.slave_fraction, 0.5);
+        let a = adhesive(&[2.0, 0.3, 0.5, 1.0, 2.0, 0.1, 0.2, 1e-3, 0.0, 1e5, 1.0, 0.9, 0.25])
+            .unwrap();
+        assert_eq!(
+            (a.law.mu_static(), a.law.shear_adhesion(), a.law.normal_adhesion()),
+            (0.5, 1.0, 2.0)
+        );
+        assert_eq!((a.law.k_mu(), a.law.v_half()), (0.1, 0.2));
+        assert_eq!(a.normal_stiffness, 1e5);
+        assert!(a.heat.conductance);
+        assert_eq!((a.heat.heat_fraction, a.heat.slave_fraction), (0.9, 0.25));
+    }
+
+    #[test]
+    fn bad_entries_are_named() {
+        for (props, needle) in [
+            (&[2.0][..], "NPROPS = 1"),
+            (&[2.0, -0.3][..], "PROPS(2)"),
+            (&[2.0, 0.3, 0.2][..], "PROPS(3): coeffStatic = 0.2 is below coeff"),
+            (&[2.0, 0.3, f64::NAN][..], "PROPS(3)"),
+            (&[2.0, 0.3, 0.0, -1.0][..], "PROPS(4): Sa"),
+            (&[2.0, 0.3, 0.0, 0.0, -1.0][..], "PROPS(5): Na"),
+            (&[2.0, 0.3, 0.0, 0.0, 0.0, f64::NAN][..], "PROPS(6): kmu"),
+            (&[2.0, 0.3, 0.0, 0.0, 0.0, 0.0, -1.0][..], "PROPS(7): vhalf"),
+            (&[2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0][..], "PROPS(8)"),
+            (&[2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0][..], "PROPS(9)"),
+            (&[2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0][..], "PROPS(10)"),
+            (&[2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 2.0][..], "PROPS(11)"),
+            (&[2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.5][..], "PROPS(12)"),
+            (&[2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0][..], "PROPS(13)"),
+            (&[2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0][..], "PROPS(14)"),
+        ] {
+            let e = adhesive(props).unwrap_err().to_string();
+            assert!(e.contains(needle), "{props:?}: {e}");
+        }
+    }
+}
