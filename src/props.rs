@@ -207,7 +207,8 @@ mod tests {
 
     #[test]
     fn full_props() {
-        let Ok(FrictionLaw::Coulomb(c)) = friction_law(&[1.0, 0.3, 0.0, 7.0, 1e-3, 0.01, 1.0]) else {
+        let Ok(FrictionLaw::Coulomb(c)) = friction_law(&[1.0, 0.3, 0.0, 7.0, 1e-3, 0.01, 1.0])
+        else {
             panic!("expected the Coulomb law")
         };
         assert_eq!(c.shear_limit(), Some(7.0));

@@ -353,7 +353,10 @@ fn uinter_pull_off_and_rebond() {
         c.rdisp[0] = -n / K_N;
         c.call();
         if c.lopenclose == 0 {
-            assert!(last_n < n_break && n_break <= n * (1.0 + 1e-12), "broke at {n}, expected {n_break}");
+            assert!(
+                last_n < n_break && n_break <= n * (1.0 + 1e-12),
+                "broke at {n}, expected {n_break}"
+            );
             assert_eq!((c.stress[0], c.stress[1], c.statev[2]), (0.0, 0.0, 4.0));
             break;
         }
@@ -379,11 +382,26 @@ fn uinter_pull_off_and_rebond() {
 #[test]
 fn uinter_bad_input_cuts_back() {
     for (props, needle) in [
-        (vec![2.0, 0.3, 0.0, -1.0, 0.0, 0.0, 0.0, 1e-3, 0.0, 1e5], "PROPS(4): Sa"),
-        (vec![2.0, 0.3, 0.0, 0.0, -2.0, 0.0, 0.0, 1e-3, 0.0, 1e5], "PROPS(5): Na"),
-        (vec![2.0, 0.5, 0.3, 0.0, 0.0, 0.0, 0.0, 1e-3, 0.0, 1e5], "PROPS(3): coeffStatic"),
-        (vec![2.0, f64::NAN, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-3, 0.0, 1e5], "PROPS(2)"),
-        (vec![2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-3], "PROPS(10) = 0"),
+        (
+            vec![2.0, 0.3, 0.0, -1.0, 0.0, 0.0, 0.0, 1e-3, 0.0, 1e5],
+            "PROPS(4): Sa",
+        ),
+        (
+            vec![2.0, 0.3, 0.0, 0.0, -2.0, 0.0, 0.0, 1e-3, 0.0, 1e5],
+            "PROPS(5): Na",
+        ),
+        (
+            vec![2.0, 0.5, 0.3, 0.0, 0.0, 0.0, 0.0, 1e-3, 0.0, 1e5],
+            "PROPS(3): coeffStatic",
+        ),
+        (
+            vec![2.0, f64::NAN, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-3, 0.0, 1e5],
+            "PROPS(2)",
+        ),
+        (
+            vec![2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-3],
+            "PROPS(10) = 0",
+        ),
         (vec![1.0, 0.3], "PROPS(1) = 2"),
     ] {
         let mut c = UinterCall::new(3, &props);
@@ -418,7 +436,10 @@ fn uinter_bad_input_cuts_back() {
 fn fric_bad_input_cuts_back() {
     for (props, needle) in [
         (vec![2.0, 0.3, 0.0, -1.0], "PROPS(4): Sa"),
-        (vec![2.0, 0.5, 0.3], "PROPS(3): coeffStatic = 0.3 is below coeff = 0.5"),
+        (
+            vec![2.0, 0.5, 0.3],
+            "PROPS(3): coeffStatic = 0.3 is below coeff = 0.5",
+        ),
         (vec![2.0, 0.3, 0.0, 0.0, 0.0, f64::NAN], "PROPS(6): kmu"),
     ] {
         let mut c = FricCall::new(2, &props);

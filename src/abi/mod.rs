@@ -20,11 +20,11 @@ pub mod uinter_host;
 
 pub use fric::fric_;
 pub use gapcon::gapcon_;
-pub use uinter::uinter_;
 pub use native::{
     IflConductance, IflStatus, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
     ifl_last_error_copy, ifl_version,
 };
+pub use uinter::uinter_;
 
 /// What went wrong in an entry point, for callers that return a status.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

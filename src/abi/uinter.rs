@@ -181,7 +181,9 @@ impl UinterArgs {
         unsafe {
             let nprops = read(self.nprops, "NPROPS")?;
             let Ok(nprops) = usize::try_from(nprops) else {
-                return Err(LawError::Parameter(format!("NPROPS = {nprops} is negative")));
+                return Err(LawError::Parameter(format!(
+                    "NPROPS = {nprops} is negative"
+                )));
             };
             let props = match friction_law(slice(self.props, nprops, "PROPS")?)? {
                 FrictionLaw::Adhesive(a) => a,

@@ -374,7 +374,10 @@ mod tests {
             status: InterfaceStatus::Bonded,
             ..InterfaceState::default()
         };
-        for (n, holds) in [(n_break * (1.0 - 1e-9), true), (n_break * (1.0 + 1e-9), false)] {
+        for (n, holds) in [
+            (n_break * (1.0 - 1e-9), true),
+            (n_break * (1.0 + 1e-9), false),
+        ] {
             let inc = InterfaceIncrement::<1> {
                 normal_stress_start: 0.0,
                 shear_start: [s0],
