@@ -29,11 +29,14 @@ pub enum FrictionLaw {
 /// Runs on every call, so valid `PROPS` take a branch-light path that only decides "valid or
 /// not"; anything else goes to the slow path that names the offending entry. A property test
 /// checks that both paths agree.
-#[inline]
+#[inline(always)]
 pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
     match coulomb_fast(props) {
         Some(law) => Ok(FrictionLaw::Coulomb(law)),
-        None => friction_law_checked(props),
+        None => match adhesive::adhesive_fast(props) {
+            Some(a) => Ok(FrictionLaw::Adhesive(a)),
+            None => friction_law_checked(props),
+        },
     }
 }
 

@@ -138,6 +138,36 @@ impl Adhesive {
         })
     }
 
+    /// From `PROPS` entries already checked by the caller (every strength, slope and rate
+    /// finite and ≥ 0, μ_s ≥ μ_d; γ_crit and the tolerance 0 for "default" or finite > 0).
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn from_validated(
+        mu_d: f64,
+        mu_s: f64,
+        sa: f64,
+        na: f64,
+        kmu: f64,
+        vhalf: f64,
+        gamma_crit: f64,
+        tolerance: f64,
+    ) -> Self {
+        Adhesive {
+            base: Coulomb::from_validated(
+                mu_d,
+                0.0,
+                gamma_crit,
+                tolerance,
+                super::coulomb::StickMode::Elastic,
+            ),
+            mu_static: mu_s,
+            shear_adhesion: sa,
+            normal_adhesion: na,
+            k_mu: kmu,
+            v_half: vhalf,
+        }
+    }
+
     /// Sets γ_crit > 0 as an absolute length.
     pub fn with_critical_slip_absolute(mut self, gamma_crit: f64) -> Result<Self, LawError> {
         self.base = self.base.with_critical_slip_absolute(gamma_crit)?;

@@ -49,6 +49,51 @@ impl AdhesiveProps {
     }
 }
 
+/// The common case of the adhesive layout: valid `PROPS`, or `None` (then the checked path
+/// [`adhesive`] says what is wrong). Branch-light, like the Coulomb fast path; a property test
+/// checks that both agree.
+// Not inlined: it keeps `friction_law` small enough to inline into `fric_` for Coulomb.
+#[inline(never)]
+pub(crate) fn adhesive_fast(props: &[f64]) -> Option<AdhesiveProps> {
+    if props.len() < 2 || props.len() > ADHESIVE_NPROPS || props[0] != f64::from(LAW_ADHESIVE) {
+        return None;
+    }
+    // Zero-padded copy: absent trailing entries read as 0 without a branch per entry.
+    let mut e = [0.0; ADHESIVE_NPROPS];
+    e[..props.len()].copy_from_slice(props);
+    let mu_s_entry = if props.len() >= 3 { e[2] } else { -1.0 };
+    // μ_d, S_a, N_a, k_μ, v_½ finite and ≥ 0; γ_crit, tolerance, K_n 0 or finite > 0 (the same
+    // test); PROPS(11) 0 or 1; η and f in [0, 1] (f = 0 meaning ½).
+    // x·0 is ±0 for finite x and NaN otherwise; with all finite, the minimum decides the sign.
+    let (mut probe, mut low) = (0.0, 0.0f64);
+    for v in [e[1], e[3], e[4], e[5], e[6], e[7], e[8], e[9]] {
+        probe += v * 0.0;
+        low = low.min(v);
+    }
+    let mut valid = probe == 0.0 && low >= 0.0;
+    valid &= mu_s_entry.is_finite() && (mu_s_entry <= 0.0 || mu_s_entry >= e[1]);
+    valid &= e[10] == 0.0 || e[10] == 1.0;
+    valid &= (0.0..=1.0).contains(&e[11]) && (0.0..=1.0).contains(&e[12]);
+    valid.then(|| AdhesiveProps {
+        law: Adhesive::from_validated(
+            e[1],
+            if mu_s_entry > 0.0 { mu_s_entry } else { e[1] },
+            e[3],
+            e[4],
+            e[5],
+            e[6],
+            e[7],
+            e[8],
+        ),
+        normal_stiffness: e[9],
+        heat: HeatExchange {
+            conductance: e[10] == 1.0,
+            heat_fraction: e[11],
+            slave_fraction: if e[12] == 0.0 { 0.5 } else { e[12] },
+        },
+    })
+}
+
 /// Adhesive layout: `PROPS(2)` coeff μ_d, `PROPS(3)` coeffStatic μ_s (≤ 0 → none),
 /// `PROPS(4)` Sa, `PROPS(5)` Na, `PROPS(6)` kmu, `PROPS(7)` vhalf, `PROPS(8)` γ_crit
 /// (0 → tolerance × CHRLNGTH), `PROPS(9)` slip tolerance (0 → 0.005), `PROPS(10)` K_n,
@@ -162,6 +207,36 @@ fn in_props(index: usize, e: LawError) -> LawError {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    fn entry() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            Just(0.0),
+            Just(1.0),
+            Just(-1.0),
+            Just(0.5),
+            Just(f64::NAN),
+            Just(f64::INFINITY),
+            0.0..2.0f64,
+        ]
+    }
+
+    proptest! {
+        /// The fast path accepts exactly what the checked path accepts, with the same result.
+        #[test]
+        fn fast_and_checked_paths_agree(mut props in prop::collection::vec(entry(), 0..15)) {
+            if !props.is_empty() {
+                props[0] = 2.0;
+            }
+            match (adhesive_fast(&props), adhesive(&props)) {
+                (Some(f), Ok(c)) => prop_assert_eq!(f, c),
+                (None, Err(_)) => {}
+                // Longer PROPS with trailing zeros are valid but left to the checked path.
+                (None, Ok(_)) => prop_assert!(props.len() > ADHESIVE_NPROPS),
+                (Some(_), Err(e)) => prop_assert!(false, "fast path accepted {props:?}: {e}"),
+            }
+        }
+    }
 
     #[test]
     fn layout_and_defaults() {
