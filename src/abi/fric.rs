@@ -171,11 +171,8 @@ impl FricArgs {
             };
             let law = match friction_law(slice(self.props, nprops, "PROPS")?)? {
                 FrictionLaw::Coulomb(law) => law,
-                // S_a = k_μ = v_½ = 0, μ_s = μ_d: the Coulomb code itself.
-                FrictionLaw::Adhesive(a) => match a.law.coulomb_special_case() {
-                    Some(law) => law,
-                    None => return self.adhesive(&a.law),
-                },
+                // (S_a = k_μ = v_½ = 0, μ_s = μ_d comes as the Coulomb law.)
+                FrictionLaw::Adhesive(a) => return self.adhesive(&a.law),
             };
             let nstatv = read(self.nstatv, "NSTATV")?;
             let nstatv = match usize::try_from(nstatv) {

@@ -6,7 +6,7 @@ use std::ffi::{c_char, c_int};
 use super::{boundary, fortran_string, read, read_array, slice, write, write_zeros};
 use crate::config;
 use crate::laws::adhesive_interface::{InterfaceIncrement, InterfaceResponse, InterfaceState};
-use crate::props::{AdhesiveProps, FrictionLaw, HeatExchange, friction_law};
+use crate::props::{AdhesiveProps, HeatExchange, LAW_ADHESIVE, adhesive_props};
 use crate::report::Site;
 use crate::{CUTBACK_RATIO, LawError};
 
@@ -185,16 +185,11 @@ impl UinterArgs {
                     "NPROPS = {nprops} is negative"
                 )));
             };
-            let props = match friction_law(slice(self.props, nprops, "PROPS")?)? {
-                FrictionLaw::Adhesive(a) => a,
-                _ => {
-                    return Err(LawError::Parameter(
-                        "UINTER needs PROPS(1) = 2 (the adhesive interface law); the other \
-                         laws are tangential only (FRIC)"
-                            .into(),
-                    ));
-                }
-            };
+            let props = slice(self.props, nprops, "PROPS")?;
+            if props.first() != Some(&f64::from(LAW_ADHESIVE)) {
+                return Err(not_adhesive(props.first().copied()));
+            }
+            let props = adhesive_props(props)?;
             let nstatv = read(self.nstatv, "NSTATV")?;
             let nstatv = match usize::try_from(nstatv) {
                 Ok(n) if n >= InterfaceState::NSTATV => n,
@@ -385,6 +380,16 @@ impl UinterArgs {
             }
         }
     }
+}
+
+#[cold]
+#[inline(never)]
+fn not_adhesive(code: Option<f64>) -> LawError {
+    let code = code.map_or("absent (NPROPS = 0)".to_string(), |c| c.to_string());
+    LawError::Parameter(format!(
+        "PROPS(1) = {code}: UINTER needs PROPS(1) = 2 (the adhesive interface law); the other \
+         laws are tangential only (FRIC)"
+    ))
 }
 
 #[cold]

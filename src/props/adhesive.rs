@@ -6,6 +6,8 @@ use crate::LawError;
 use crate::laws::adhesive::{Adhesive, AdhesiveParameters};
 use crate::laws::adhesive_interface::AdhesiveInterface;
 
+use super::FrictionLaw;
+
 /// `PROPS(1)` code of the adhesive friction law.
 pub const LAW_ADHESIVE: i32 = 2;
 
@@ -36,6 +38,17 @@ pub struct AdhesiveProps {
 }
 
 impl AdhesiveProps {
+    /// The law as `fric_` runs it: the Coulomb law itself in the special case S_a = k_μ =
+    /// v_½ = 0, μ_s = μ_d (so the special case costs what the Coulomb law costs).
+    #[inline(always)]
+    #[must_use]
+    pub fn into_friction_law(self) -> FrictionLaw {
+        match self.law.coulomb_special_case() {
+            Some(c) => FrictionLaw::Coulomb(c),
+            None => FrictionLaw::Adhesive(self),
+        }
+    }
+
     /// The interface law for `uinter_`, which needs K_n.
     pub fn interface(&self) -> Result<AdhesiveInterface, LawError> {
         if self.normal_stiffness == 0.0 {
@@ -54,7 +67,13 @@ impl AdhesiveProps {
 /// checks that both agree.
 // Not inlined: it keeps `friction_law` small enough to inline into `fric_` for Coulomb.
 #[inline(never)]
-pub(crate) fn adhesive_fast(props: &[f64]) -> Option<AdhesiveProps> {
+pub(crate) fn adhesive_fast(props: &[f64]) -> Option<FrictionLaw> {
+    adhesive_props_fast(props).map(AdhesiveProps::into_friction_law)
+}
+
+/// [`adhesive_fast`] before the special case is recognised.
+#[inline(always)]
+fn adhesive_props_fast(props: &[f64]) -> Option<AdhesiveProps> {
     if props.len() < 2 || props.len() > ADHESIVE_NPROPS || props[0] != f64::from(LAW_ADHESIVE) {
         return None;
     }
@@ -92,6 +111,15 @@ pub(crate) fn adhesive_fast(props: &[f64]) -> Option<AdhesiveProps> {
             slave_fraction: if e[12] == 0.0 { 0.5 } else { e[12] },
         },
     })
+}
+
+/// The adhesive `PROPS` as `uinter_` needs them (also in the Coulomb special case): the fast
+/// path, else the checked one, which names what is wrong.
+pub(crate) fn adhesive_props(props: &[f64]) -> Result<AdhesiveProps, LawError> {
+    match adhesive_props_fast(props) {
+        Some(a) => Ok(a),
+        None => adhesive(props),
+    }
 }
 
 /// Adhesive layout: `PROPS(2)` coeff μ_d, `PROPS(3)` coeffStatic μ_s (≤ 0 → none),
@@ -228,7 +256,7 @@ mod tests {
             if !props.is_empty() {
                 props[0] = 2.0;
             }
-            match (adhesive_fast(&props), adhesive(&props)) {
+            match (adhesive_props_fast(&props), adhesive(&props)) {
                 (Some(f), Ok(c)) => prop_assert_eq!(f, c),
                 (None, Err(_)) => {}
                 // Longer PROPS with trailing zeros are valid but left to the checked path.
