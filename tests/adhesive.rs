@@ -430,6 +430,30 @@ fn uinter_bad_input_cuts_back() {
     c.call();
     assert_eq!(c.pnewdt, 0.25);
     assert!(FricCall::last_error().contains("DTIME = 0"));
+    // The same through fric_.
+    let mut f = FricCall::new(1, &props[..8]);
+    f.press = 10.0;
+    f.dgam[0] = 1e-2;
+    f.dtime = 0.0;
+    f.call();
+    assert_eq!(f.pnewdt, 0.25);
+    assert!(FricCall::last_error().contains("DTIME = 0"));
+    // NDIR and NSTATV.
+    for (ndir, nstatv, needle) in [
+        (1, 3, "NDIR = 1"),
+        (-1, 3, "NDIR = -1"),
+        (2, 2, "NSTATV = 2"),
+    ] {
+        let mut c = UinterCall::new(ndir, &interface_props());
+        c.nstatv = nstatv;
+        c.set_guards();
+        c.rdisp[0] = 1e-4;
+        c.call();
+        assert_eq!(c.pnewdt, 0.25);
+        assert!(c.guards_intact());
+        let msg = FricCall::last_error();
+        assert!(msg.contains(needle), "{msg}");
+    }
 }
 
 #[test]
