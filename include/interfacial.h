@@ -84,6 +84,7 @@ extern "C" {
  *
  * The law is chosen by `PROPS(1)` (1 = Coulomb; layout in `docs/props.md`). The Coulomb law
  * uses `STATEV(1..3)` (accumulated slip, slip rate, status) and needs `NSTATV ≥ 3`.
+ * `PROPS(1) = 2` selects the adhesive law (seed 004): the same state variables, always `LM = 0`.
  *
  * On entry `LM` is the previous iteration's answer (0 motion, 1 exact stick, 2 frictionless);
  * with `LM = 2` nothing is written. On exit:
