@@ -65,8 +65,7 @@ impl AdhesiveProps {
 /// The common case of the adhesive layout: valid `PROPS`, or `None` (then the checked path
 /// [`adhesive`] says what is wrong). Branch-light, like the Coulomb fast path; a property test
 /// checks that both agree.
-// Not inlined: it keeps `friction_law` small enough to inline into `fric_` for Coulomb.
-#[inline(never)]
+#[inline(always)]
 pub(crate) fn adhesive_fast(props: &[f64]) -> Option<FrictionLaw> {
     adhesive_props_fast(props).map(AdhesiveProps::into_friction_law)
 }
