@@ -72,7 +72,7 @@ fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
 pub fn friction_law_checked(props: &[f64]) -> Result<FrictionLaw, LawError> {
     let Some(&code) = props.first() else {
         return Err(LawError::Parameter(
-            "NPROPS = 0: PROPS(1) must select a law (1 = Coulomb)".into(),
+            "NPROPS = 0: PROPS(1) must select a law (1 = Coulomb, 2 = adhesive)".into(),
         ));
     };
     if code == f64::from(LAW_COULOMB) {
@@ -81,11 +81,11 @@ pub fn friction_law_checked(props: &[f64]) -> Result<FrictionLaw, LawError> {
         adhesive::adhesive(props).map(AdhesiveProps::into_friction_law)
     } else if code.is_finite() && code.fract() == 0.0 {
         Err(LawError::Parameter(format!(
-            "PROPS(1) = {code} is not a known law code (1 = Coulomb)"
+            "PROPS(1) = {code} is not a known law code (1 = Coulomb, 2 = adhesive)"
         )))
     } else {
         Err(LawError::Parameter(format!(
-            "PROPS(1) = {code} must be an integer law code (1 = Coulomb)"
+            "PROPS(1) = {code} must be an integer law code (1 = Coulomb, 2 = adhesive)"
         )))
     }
 }
