@@ -640,3 +640,50 @@ fn fric_bad_input_cuts_back() {
         assert!(msg.contains("FRIC") && msg.contains(needle), "{msg}");
     }
 }
+
+/// Reentrancy: the same 2000 interface points through `uinter_` on 8 threads give bit for bit
+/// the serial results (no shared mutable state).
+#[test]
+fn uinter_results_do_not_depend_on_the_number_of_threads() {
+    let points: Vec<InterfaceSample> = (0..2000u32)
+        .map(|k| {
+            let x = f64::from(k);
+            InterfaceSample {
+                ndir: 2 + (k % 2) as i32,
+                mask: k % 16,
+                mu: 0.1 + 0.5 * (0.37 * x).sin().abs(),
+                start_status: [0.0, 3.0, 4.0][(k % 3) as usize],
+                p_start: 100.0 * (0.11 * x).cos(),
+                h: 2e-3 * (0.23 * x).sin(),
+                tau_frac: [0.5 * (0.7 * x).sin(), 0.5 * (0.3 * x).cos()],
+                dgam: [5e-3 * (0.13 * x).sin(), 5e-3 * (0.17 * x).cos()],
+                dtime: 0.1 + (0.05 * x).sin().abs(),
+            }
+        })
+        .collect();
+    let run = |s: &InterfaceSample| {
+        let c = uinter_at(s, s.h, s.dgam);
+        let mut bits: Vec<u64> = c
+            .stress
+            .iter()
+            .chain(&c.ddsddr)
+            .chain(&c.flux)
+            .map(|v| v.to_bits())
+            .collect();
+        bits.extend(c.statev.iter().chain(&c.energies).map(|v| v.to_bits()));
+        bits.push(c.lopenclose as u64);
+        bits
+    };
+    let serial: Vec<Vec<u64>> = points.iter().map(run).collect();
+    let parallel: Vec<Vec<u64>> = std::thread::scope(|scope| {
+        let handles: Vec<_> = points
+            .chunks(250)
+            .map(|chunk| scope.spawn(move || chunk.iter().map(run).collect::<Vec<_>>()))
+            .collect();
+        handles
+            .into_iter()
+            .flat_map(|h| h.join().unwrap())
+            .collect()
+    });
+    assert_eq!(serial, parallel);
+}
