@@ -687,3 +687,34 @@ fn uinter_results_do_not_depend_on_the_number_of_threads() {
     });
     assert_eq!(serial, parallel);
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(5000))]
+
+    /// Through `fric_`, over random points of every option combination: finite outputs, no
+    /// cut-back, SED ≥ 0, SFD = |τ|·|Δs| ≥ 0, and after every slip update the seed's law at the
+    /// slip rate the state reports (STATEV(2)): |τ| = ((μ_s v_½ + μ_d v)/(v_½ + v) + k_μ v) p + S_a.
+    #[test]
+    fn fric_invariants_and_residual_through_the_abi(s in sample()) {
+        let c = fric_at(&s, s.dgam, 0.0);
+        prop_assert_eq!(c.pnewdt, 1e36);
+        prop_assert!(c.guards_intact());
+        let n = s.nfdir as usize;
+        let all = c.tau[..n].iter().chain(&c.ddtddp[..n]).chain(&c.dslip[..n]).chain(&c.ddtddg[..n * n]);
+        prop_assert!(all.copied().chain([c.sed, c.sfd]).all(f64::is_finite));
+        prop_assert!(c.sed >= 0.0 && c.sfd >= 0.0);
+        let tau = c.tau[..n].iter().map(|t| t * t).sum::<f64>().sqrt();
+        let slip = c.dslip[..n].iter().map(|t| t * t).sum::<f64>().sqrt();
+        prop_assert!((c.sfd - tau * slip).abs() <= 1e-12 * (tau * slip).max(1e-300));
+        if c.statev[2] == 1.0 && s.p0 > 0.0 {
+            let p = params(s.mask, s.mu);
+            let mu_s = if p.coeff_static > 0.0 { p.coeff_static } else { p.coeff };
+            let v = c.statev[1];
+            let transition = if p.vhalf + v > 0.0 { (mu_s * p.vhalf + p.coeff * v) / (p.vhalf + v) } else { mu_s };
+            let g = (transition + p.kmu * v) * s.p0 + p.sa;
+            // Relative to the trial stress |τ| + k_s|Δs| (the round-off scale of the update).
+            let k_s = (mu_s * s.p0 + p.sa) / GAMMA_CRIT;
+            prop_assert!((tau - g).abs() <= 1e-12 * (tau + k_s * slip), "|τ| = {tau}, g = {g}");
+        }
+    }
+}
