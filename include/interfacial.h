@@ -84,6 +84,7 @@ extern "C" {
  *
  * The law is chosen by `PROPS(1)` (1 = Coulomb; layout in `docs/props.md`). The Coulomb law
  * uses `STATEV(1..3)` (accumulated slip, slip rate, status) and needs `NSTATV ≥ 3`.
+ * `PROPS(1) = 2` selects the adhesive law (seed 004): the same state variables, always `LM = 0`.
  *
  * On entry `LM` is the previous iteration's answer (0 motion, 1 exact stick, 2 frictionless);
  * with `LM = 2` nothing is written. On exit:
@@ -264,6 +265,87 @@ enum IflStatus ifl_gap_conductance(const char *interaction,
                                    double theta_a,
                                    double theta_b,
                                    struct IflConductance *out);
+
+/**
+ * Abaqus/Standard `UINTER`: the full constitutive behaviour of one interface point, callable
+ * from Fortran as `CALL UINTER(...)` with no interface block (47 arguments by reference, then
+ * the hidden lengths of `CINAME`, `SLNAME`, `MSNAME`). Arrays are column-major.
+ *
+ * Law: `PROPS(1) = 2`, the adhesive friction law with a penalty normal stiffness `PROPS(10)`
+ * (layout in `docs/props.md`, behaviour in `docs/uinter.md`); `NSTATV ≥ 3`; `NDIR` 2 (2-D) or
+ * 3 (3-D). `STRESS(1)` is the normal stress, positive in compression, `RDISP(1)` the
+ * overclosure, positive for penetration; `STRESS(2..NDIR)` the shear stresses and
+ * `DRDISP(2..NDIR)` the tangential relative motion of the increment.
+ *
+ * Reads `STRESS` (start of increment), `STATEV`, `RDISP(1)`, `DRDISP(2..NDIR)`, `DTIME`,
+ * `CHRLNGTH`, `PROPS`, `NDIR`, `NSTATV`, `NPROPS`, and `TEMP(2)` (current surface
+ * temperatures) when `PROPS(11) = 1`. Writes `STRESS`, `DDSDDR(NDIR,NDIR)`,
+ * `DVISCOUS` and `DSTRUCTURAL` (zero), `FLUX(2)`, `DDFDDT(2,2)` (= −∂FLUX/∂TEMP),
+ * `DDSDDT(NDIR,2)` (zero), `DDFDDR(2,NDIR)`, `STATEV(1..3)`, `SED`, `SFD`, `SPD`, `SVD`,
+ * `SCD` (the last three zero), `LOPENCLOSE` (1 when the interface carries stress: closed or
+ * bonded; 0 when open) and `LSTATE` (the status code of `STATEV(3)`). Never reads or writes
+ * the other arguments.
+ *
+ * On failure (bad `PROPS`, `NSTATV` < 3, `NDIR` not 2 or 3, NaN or infinite input, no thermal
+ * law for the interaction when `PROPS(11) = 1`, overflow, internal panic): `PNEWDT = 0.25`,
+ * `STRESS`, `STATEV`, `LOPENCLOSE`, `LSTATE` unchanged, the tangents zeroed (when `NDIR` is
+ * valid), one message per distinct cause.
+ *
+ * # Safety
+ * The pointers must be valid for the UINTER signature with the sizes the host passes;
+ * optional outputs (`DVISCOUS`, `DSTRUCTURAL`, `DDSDDT`, `DDFDDR`, `SED` … `SCD`, `FLUX`,
+ * `DDFDDT`, `LSTATE`) may be NULL.
+ */
+void uinter_(double *stress,
+             double *ddsddr,
+             double *dviscous,
+             double *dstructural,
+             double *flux,
+             double *ddfddt,
+             double *ddsddt,
+             double *ddfddr,
+             double *statev,
+             double *sed,
+             double *sfd,
+             double *spd,
+             double *svd,
+             double *scd,
+             double *pnewdt,
+             const double *rdisp,
+             const double *drdisp,
+             const double *temp,
+             const double *dtemp,
+             const double *predef,
+             const double *dpred,
+             const double *time,
+             const double *dtime,
+             const double *freqr,
+             const char *ciname,
+             const char *slname,
+             const char *msname,
+             const double *props,
+             const double *coords,
+             const double *alocaldir,
+             const double *drot,
+             const double *area,
+             const double *chrlngth,
+             const int *node,
+             const int *ndir,
+             const int *nstatv,
+             const int *npred,
+             const int *nprops,
+             const int *mcrd,
+             const int *kstep,
+             const int *kinc,
+             const int *kit,
+             const int *linper,
+             int *lopenclose,
+             int *lstate,
+             int *lsdi,
+             const int *lprint,
+             size_t ciname_len,
+             size_t slname_len,
+             size_t msname_len);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -43,6 +43,9 @@ gfortran "${fflags[@]}" -c "$root/bench/bench_gapcon.f90" -o bench_gapcon.o
 gfortran "${fflags[@]}" -o bench_gapcon bench_gapcon.o gapcon_ref.o gapcon_nop.o "$lib" \
   "${native_libs[@]}"
 
+gfortran "${fflags[@]}" -c "$root/bench/bench_adhesive.f90" -o bench_adhesive.o
+gfortran "${fflags[@]}" -o bench_adhesive bench_adhesive.o fric_nop.o "$lib" "${native_libs[@]}"
+
 echo "== bench_fric${*:+ $*}"
 ./bench_fric "$@" | tee bench_output.txt
 
@@ -55,6 +58,10 @@ INTERFACIAL_CONFIG="$root/bench/gapcon_lookup_1.toml" ./bench_gapcon lookup1 "${
   tee bench_gapcon_lookup.txt
 INTERFACIAL_CONFIG="$root/bench/gapcon_lookup_20.toml" ./bench_gapcon lookup20 "${gapcon_args[@]}" |
   tee -a bench_gapcon_lookup.txt
+
+# NREP and NRUN only, as for bench_gapcon.
+echo "== bench_adhesive ${gapcon_args[*]}"
+./bench_adhesive "${gapcon_args[@]}" | tee bench_adhesive.txt
 
 cpu="$(lscpu 2>/dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n1)"
 [ -n "$cpu" ] || cpu="$(sed -n 's/^model name[[:space:]]*:[[:space:]]*//p' /proc/cpuinfo | head -n1)"
@@ -199,5 +206,26 @@ is the cost of the call net of the empty routine.
 |---|---|---:|---:|---:|---:|
 EOF
   cat bench_gapcon_lookup.txt
+  cat <<EOF
+
+## Per-call cost of the adhesive law (\`PROPS(1) = 2\`)
+
+[\`bench/bench_adhesive.f90\`](../bench/bench_adhesive.f90): the library's \`FRIC\` with the
+plain Coulomb law, with the adhesive law's Coulomb special case (S_a = N_a = k_μ = v_½ = 0, no
+static coefficient: \`fric_\` runs the Coulomb code), with the adhesive law with every option
+on (μ_s = 0.5 > μ_d = 0.3, S_a = 4, N_a = 10, k_μ = 0.2, v_½ = 0.1: the quadratic return map),
+and the same adhesive law through \`UINTER\` (\`NDIR = 3\`, closed points, K_n = 10⁴), against
+the empty \`FRICNOP\`. \`NFDIR = 2\`, 4096 points per case, every point sticking or every point
+sliding (each law's own static strength sets the start stress); the special case must give
+bit-identical \`TAU\` to the Coulomb law on every point before timing. Best of NRUN rounds.
+
+\`\`\`sh
+gfortran ${fflags[*]} -c bench/bench_adhesive.f90
+gfortran ${fflags[*]} -o bench_adhesive bench_adhesive.o fric_nop.o target/release/libinterfacial.a ${native_libs[*]}
+./bench_adhesive ${gapcon_args[*]}
+\`\`\`
+
+EOF
+  cat bench_adhesive.txt
 } >"$doc"
 echo "== wrote $doc"

@@ -5,6 +5,10 @@
 use crate::LawError;
 use crate::laws::coulomb::{Coulomb, StickMode};
 
+mod adhesive;
+pub(crate) use adhesive::adhesive_props;
+pub use adhesive::{ADHESIVE_NPROPS, AdhesiveProps, HeatExchange, LAW_ADHESIVE};
+
 /// `PROPS(1)` code of the Coulomb family.
 pub const LAW_COULOMB: i32 = 1;
 
@@ -17,6 +21,8 @@ pub const COULOMB_NPROPS: usize = 7;
 pub enum FrictionLaw {
     /// `PROPS(1) = 1`.
     Coulomb(Coulomb),
+    /// `PROPS(1) = 2`: adhesive friction (seed 004).
+    Adhesive(AdhesiveProps),
 }
 
 /// Reads `PROPS(1)` (the law code) and the law's parameters.
@@ -24,11 +30,14 @@ pub enum FrictionLaw {
 /// Runs on every call, so valid `PROPS` take a branch-light path that only decides "valid or
 /// not"; anything else goes to the slow path that names the offending entry. A property test
 /// checks that both paths agree.
-#[inline]
+#[inline(always)]
 pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
     match coulomb_fast(props) {
         Some(law) => Ok(FrictionLaw::Coulomb(law)),
-        None => friction_law_checked(props),
+        None => match adhesive::adhesive_fast(props) {
+            Some(law) => Ok(law),
+            None => friction_law_checked(props),
+        },
     }
 }
 
@@ -63,18 +72,20 @@ fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
 pub fn friction_law_checked(props: &[f64]) -> Result<FrictionLaw, LawError> {
     let Some(&code) = props.first() else {
         return Err(LawError::Parameter(
-            "NPROPS = 0: PROPS(1) must select a law (1 = Coulomb)".into(),
+            "NPROPS = 0: PROPS(1) must select a law (1 = Coulomb, 2 = adhesive)".into(),
         ));
     };
     if code == f64::from(LAW_COULOMB) {
         coulomb(props).map(FrictionLaw::Coulomb)
+    } else if code == f64::from(LAW_ADHESIVE) {
+        adhesive::adhesive(props).map(AdhesiveProps::into_friction_law)
     } else if code.is_finite() && code.fract() == 0.0 {
         Err(LawError::Parameter(format!(
-            "PROPS(1) = {code} is not a known law code (1 = Coulomb)"
+            "PROPS(1) = {code} is not a known law code (1 = Coulomb, 2 = adhesive)"
         )))
     } else {
         Err(LawError::Parameter(format!(
-            "PROPS(1) = {code} must be an integer law code (1 = Coulomb)"
+            "PROPS(1) = {code} must be an integer law code (1 = Coulomb, 2 = adhesive)"
         )))
     }
 }
@@ -177,16 +188,21 @@ mod tests {
             match (fast, checked) {
                 (Some(f), Ok(FrictionLaw::Coulomb(c))) => prop_assert_eq!(f, c),
                 (None, Err(_)) => {}
+                // PROPS(1) = 2 is never the Coulomb fast path's (even in its Coulomb special case).
+                (None, Ok(_)) if props[0] == 2.0 => {}
                 // Longer PROPS with trailing zeros are valid but left to the checked path.
                 (None, Ok(_)) => prop_assert!(props.len() > COULOMB_NPROPS),
                 (Some(_), Err(e)) => prop_assert!(false, "fast path accepted {props:?}: {e}"),
+                (Some(_), Ok(other)) => prop_assert!(false, "fast path gave Coulomb, checked {other:?}"),
             }
         }
     }
 
     #[test]
     fn minimal_props_take_defaults() {
-        let FrictionLaw::Coulomb(c) = friction_law(&[1.0, 0.3]).unwrap();
+        let Ok(FrictionLaw::Coulomb(c)) = friction_law(&[1.0, 0.3]) else {
+            panic!("expected the Coulomb law")
+        };
         assert_eq!(c.mu(), 0.3);
         assert_eq!(c.shear_limit(), None);
         assert_eq!(c.critical_slip(), CriticalSlip::Tolerance(0.005));
@@ -195,7 +211,10 @@ mod tests {
 
     #[test]
     fn full_props() {
-        let FrictionLaw::Coulomb(c) = friction_law(&[1.0, 0.3, 0.0, 7.0, 1e-3, 0.01, 1.0]).unwrap();
+        let Ok(FrictionLaw::Coulomb(c)) = friction_law(&[1.0, 0.3, 0.0, 7.0, 1e-3, 0.01, 1.0])
+        else {
+            panic!("expected the Coulomb law")
+        };
         assert_eq!(c.shear_limit(), Some(7.0));
         assert_eq!(c.critical_slip(), CriticalSlip::Absolute(1e-3));
         assert_eq!(c.stick(), StickMode::Exact);

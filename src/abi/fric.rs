@@ -11,6 +11,8 @@ use crate::props::{FrictionLaw, friction_law};
 use crate::report::Site;
 use crate::{CUTBACK_RATIO, LawError};
 
+mod adhesive;
+
 /// Abaqus/Standard `FRIC`: frictional stress, tangents, energies and state of one closed contact
 /// point, callable from Fortran as `CALL FRIC(...)` with no interface block.
 ///
@@ -21,6 +23,7 @@ use crate::{CUTBACK_RATIO, LawError};
 ///
 /// The law is chosen by `PROPS(1)` (1 = Coulomb; layout in `docs/props.md`). The Coulomb law
 /// uses `STATEV(1..3)` (accumulated slip, slip rate, status) and needs `NSTATV ≥ 3`.
+/// `PROPS(1) = 2` selects the adhesive law (seed 004): the same state variables, always `LM = 0`.
 ///
 /// On entry `LM` is the previous iteration's answer (0 motion, 1 exact stick, 2 frictionless);
 /// with `LM = 2` nothing is written. On exit:
@@ -167,7 +170,11 @@ impl FricArgs {
             let Ok(nprops) = usize::try_from(nprops) else {
                 return Err(negative_nprops(nprops));
             };
-            let FrictionLaw::Coulomb(law) = friction_law(slice(self.props, nprops, "PROPS")?)?;
+            let law = match friction_law(slice(self.props, nprops, "PROPS")?)? {
+                FrictionLaw::Coulomb(law) => law,
+                // (S_a = k_μ = v_½ = 0, μ_s = μ_d comes as the Coulomb law.)
+                FrictionLaw::Adhesive(a) => return self.adhesive(&a.law),
+            };
             let nstatv = read(self.nstatv, "NSTATV")?;
             let nstatv = match usize::try_from(nstatv) {
                 Ok(n) if n >= CoulombState::NSTATV => n,

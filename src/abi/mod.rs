@@ -15,6 +15,8 @@ pub mod fric;
 pub mod gapcon;
 pub mod host;
 pub mod native;
+pub mod uinter;
+pub mod uinter_host;
 
 pub use fric::fric_;
 pub use gapcon::gapcon_;
@@ -22,6 +24,7 @@ pub use native::{
     IflConductance, IflStatus, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
     ifl_last_error_copy, ifl_version,
 };
+pub use uinter::uinter_;
 
 /// What went wrong in an entry point, for callers that return a status.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -1,0 +1,350 @@
+/*
+ * The adhesive friction law (seed 004, PROPS(1) = 2) driven step by step as a quasi-static host
+ * drives it, through fric_ (tangential part) and uinter_ (the whole interface):
+ *
+ *   F4  velocity steps: slip at rates v = 0.01, 0.1 (= v_half), 1, 0.3 with k_mu and v_half
+ *       both non-zero; once steady, tau = ((mu_s v_half + mu_d v)/(v_half + v) + k_mu v) p + S_a
+ *       (the seed's formula, evaluated here), through fric_ (NFDIR = 1, 2) and uinter_ (NDIR 2).
+ *   Onset: a ramp of slip at constant p sticks with tau = k_s gamma up to mu_s p + S_a and slides
+ *       once the stick stress would exceed it (v_half = 0: the stress drops to the dynamic
+ *       strength mu_d p + S_a + k_mu v p at once).
+ *   A1  pull-off: bonded, shear S0 held, pulled apart in small steps: the bond holds (stress
+ *       -N, LOPENCLOSE = 1) until N = N_a sqrt(1 - (S0/S_a)^2), then breaks (zero stress,
+ *       LOPENCLOSE = 0); re-contact bonds again with the full strengths.
+ *   Bad input: negative strengths, coeffStatic < coeff, NaN -> PNEWDT = 0.25, outputs kept,
+ *       one message naming the routine and the entry.
+ *
+ * Parameters: mu_d = 0.3, mu_s = 0.5, S_a = 4, N_a = 10, k_mu = 0.2, v_half = 0.1,
+ * gamma_crit = 1e-3, K_n = 1e4, p = 100, DTIME = 0.1. Mirrored by
+ * fortran_tests/test_uinter_adhesive.f90.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "harness.h"
+
+/* UINTER as abi.md documents it, redeclared by hand: a mismatch with interfacial.h is a
+ * compile error. */
+void uinter_(double *stress, double *ddsddr, double *dviscous, double *dstructural,
+             double *flux, double *ddfddt, double *ddsddt, double *ddfddr, double *statev,
+             double *sed, double *sfd, double *spd, double *svd, double *scd, double *pnewdt,
+             const double *rdisp, const double *drdisp, const double *temp, const double *dtemp,
+             const double *predef, const double *dpred, const double *time, const double *dtime,
+             const double *freqr, const char *ciname, const char *slname, const char *msname,
+             const double *props, const double *coords, const double *alocaldir,
+             const double *drot, const double *area, const double *chrlngth, const int *node,
+             const int *ndir, const int *nstatv, const int *npred, const int *nprops,
+             const int *mcrd, const int *kstep, const int *kinc, const int *kit,
+             const int *linper, int *lopenclose, int *lstate, int *lsdi, const int *lprint,
+             size_t ciname_len, size_t slname_len, size_t msname_len);
+
+#define MU_D 0.3
+#define MU_S 0.5
+#define SA 4.0
+#define NA 10.0
+#define KMU 0.2
+#define VHALF 0.1
+#define GAMMA_CRIT 1e-3
+#define KN 1e4
+#define P 100.0
+#define DT 0.1
+
+/* The seed's sliding strength. */
+static double g(double v, double p, double mu_s, double vhalf, double kmu)
+{
+    return ((mu_s * vhalf + MU_D * v) / (vhalf + v) + kmu * v) * p + SA;
+}
+
+/* All UINTER arguments of one point, NDIR <= 3, with guard slots. */
+typedef struct {
+    double stress[4], ddsddr[10], dvisc[10], dstruct[10], flux[3], ddfddt[5], ddsddt[7];
+    double ddfddr[7], statev[6], sed, sfd, spd, svd, scd, pnewdt;
+    double rdisp[3], drdisp[3], temp[2], dtemp[2], predef[2], dpred[2], time[2], dtime, freqr;
+    char ciname[80], slname[80], msname[80];
+    double props[13], coords[3], alocaldir[9], drot[4], area, chrlngth;
+    int node, ndir, nstatv, npred, nprops, mcrd, kstep, kinc, kit, linper;
+    int lopenclose, lstate, lsdi, lprint;
+} ui_point;
+
+static void ui_init(ui_point *u, int ndir, const double *props, int nprops)
+{
+    int i;
+    memset(u, 0, sizeof *u);
+    memset(u->ciname, ' ', 80);
+    memset(u->slname, ' ', 80);
+    memset(u->msname, ' ', 80);
+    memcpy(u->ciname, "ADHESIVE", 8);
+    for (i = 0; i < nprops; i++) {
+        u->props[i] = props[i];
+    }
+    u->nprops = nprops;
+    u->ndir = ndir;
+    u->nstatv = 3;
+    u->npred = 1;
+    u->mcrd = 3;
+    u->kstep = u->kinc = u->kit = 1;
+    u->node = 7;
+    u->dtime = DT;
+    u->chrlngth = 1.0;
+    u->area = 1.0;
+    u->lopenclose = u->lstate = -1;
+    u->temp[0] = u->temp[1] = 20.0;
+    for (i = 3; i < 6; i++) {
+        u->statev[i] = FH_GUARD;
+    }
+}
+
+static void ui_call(ui_point *u)
+{
+    int i, n = u->ndir;
+    for (i = n; i < 4; i++) {
+        u->stress[i] = FH_GUARD;
+    }
+    for (i = n * n; i < 10; i++) {
+        u->ddsddr[i] = FH_GUARD;
+    }
+    u->pnewdt = FH_PNEWDT_IN;
+    uinter_(u->stress, u->ddsddr, u->dvisc, u->dstruct, u->flux, u->ddfddt, u->ddsddt, u->ddfddr,
+            u->statev, &u->sed, &u->sfd, &u->spd, &u->svd, &u->scd, &u->pnewdt, u->rdisp,
+            u->drdisp, u->temp, u->dtemp, u->predef, u->dpred, u->time, &u->dtime, &u->freqr,
+            u->ciname, u->slname, u->msname, u->props, u->coords, u->alocaldir, u->drot,
+            &u->area, &u->chrlngth, &u->node, &u->ndir, &u->nstatv, &u->npred, &u->nprops,
+            &u->mcrd, &u->kstep, &u->kinc, &u->kit, &u->linper, &u->lopenclose, &u->lstate,
+            &u->lsdi, &u->lprint, 80, 80, 80);
+    for (i = n; i < 4; i++) {
+        FH_CHECK(u->stress[i] == FH_GUARD);
+    }
+    for (i = n * n; i < 10; i++) {
+        FH_CHECK(u->ddsddr[i] == FH_GUARD);
+    }
+    for (i = 3; i < 6; i++) {
+        FH_CHECK(u->statev[i] == FH_GUARD);
+    }
+}
+
+static const double rates[4] = {0.01, 0.1, 1.0, 0.3};
+
+/* F4 through fric_, NFDIR = 1 or 2 (slip along 30 degrees in 3-D). */
+static void f4_fric(int nfdir)
+{
+    const double props[8] = {2.0, MU_D, MU_S, SA, NA, KMU, VHALF, GAMMA_CRIT};
+    const double d[2] = {nfdir == 1 ? 1.0 : cos(FH_PI / 6), nfdir == 1 ? 0.0 : sin(FH_PI / 6)};
+    fh_fric h;
+    int r, k, a;
+    fh_init(&h, nfdir, props, 8);
+    h.press = P;
+    h.dpress = P; /* first contact in the first increment */
+    h.dtime = DT;
+    for (r = 0; r < 4; r++) {
+        double v = rates[r], want = g(v, P, MU_S, VHALF, KMU);
+        for (k = 0; k < 40; k++) {
+            for (a = 0; a < nfdir; a++) {
+                h.dgam[a] = v * DT * d[a];
+            }
+            fh_context("F4 fric_ NFDIR=%d v=%g increment %d", nfdir, v, k + 1);
+            fh_call_ok(&h);
+            h.dpress = 0.0;
+        }
+        fh_context("F4 fric_ NFDIR=%d v=%g steady", nfdir, v);
+        FH_NEAR(sqrt(h.tau[0] * h.tau[0] + (nfdir == 2 ? h.tau[1] * h.tau[1] : 0.0)), want,
+                1e-12, 0.0);
+        for (a = 0; a < nfdir; a++) {
+            FH_NEAR(h.tau[a], want * d[a], 1e-12, 1e-12);
+        }
+        FH_NEAR(h.statev[1], v, 1e-10, 0.0); /* slip rate */
+        FH_EXACT(h.statev[2], 1.0);          /* slipping */
+        FH_EXACT(h.lm, 0);
+    }
+}
+
+/* F4 through uinter_, NDIR = 2: the normal stress is K_n h = P. */
+static void f4_uinter(void)
+{
+    const double props[10] = {2.0, MU_D, MU_S, SA, NA, KMU, VHALF, GAMMA_CRIT, 0.0, KN};
+    ui_point u;
+    int r, k;
+    ui_init(&u, 2, props, 10);
+    u.rdisp[0] = P / KN;
+    for (r = 0; r < 4; r++) {
+        double v = rates[r], want = g(v, P, MU_S, VHALF, KMU);
+        for (k = 0; k < 40; k++) {
+            u.drdisp[1] = v * DT;
+            u.rdisp[1] += v * DT;
+            fh_context("F4 uinter_ v=%g increment %d", v, k + 1);
+            ui_call(&u);
+            FH_CHECK(u.pnewdt == FH_PNEWDT_IN);
+        }
+        fh_context("F4 uinter_ v=%g steady", v);
+        FH_NEAR(u.stress[0], P, 1e-12, 0.0);
+        FH_NEAR(u.stress[1], want, 1e-12, 0.0);
+        FH_EXACT(u.lopenclose, 1);
+        FH_EXACT(u.lstate, 1);
+        FH_NEAR(u.ddsddr[0], KN, 1e-15, 0.0);
+        /* SFD = tau * v * dt once steady. */
+        FH_NEAR(u.sfd, want * v * DT, 1e-10, 0.0);
+    }
+}
+
+/* Onset: slip ramped by 1e-2 gamma_crit per increment at constant p (v_half = 0). */
+static void onset(void)
+{
+    const double props[8] = {2.0, MU_D, MU_S, SA, NA, KMU, 0.0, GAMMA_CRIT};
+    const double step = 1e-2 * GAMMA_CRIT, k_s = (MU_S * P + SA) / GAMMA_CRIT;
+    double last_stick = 0.0;
+    fh_fric h;
+    int k, slipped = 0;
+    fh_init(&h, 1, props, 8);
+    h.press = P;
+    h.dpress = P;
+    h.dtime = DT;
+    for (k = 1; k <= 200 && !slipped; k++) {
+        h.dgam[0] = step;
+        fh_context("onset increment %d", k);
+        fh_call_ok(&h);
+        h.dpress = 0.0;
+        if (h.statev[2] == 0.0) {
+            FH_NEAR(h.tau[0], k_s * step * k, 1e-9, 0.0); /* tau = k_s gamma in stick */
+            FH_CHECK(h.tau[0] <= MU_S * P + SA);
+            last_stick = h.tau[0];
+        } else {
+            double v = h.statev[1];
+            slipped = 1;
+            /* The trial stress of this increment exceeded mu_s p + S_a, the last stick did not. */
+            FH_CHECK(last_stick + k_s * step > MU_S * P + SA);
+            FH_CHECK(last_stick <= MU_S * P + SA);
+            /* Instantaneous drop to the dynamic strength at the end-of-increment rate. */
+            FH_NEAR(h.tau[0], (MU_D + KMU * v) * P + SA, 1e-12, 0.0);
+            FH_NEAR(h.tau[0] + k_s * h.dslip[0], last_stick + k_s * step, 1e-12, 0.0);
+        }
+    }
+    fh_context("onset");
+    FH_CHECK(slipped);
+    /* The seed's onset stress is reached to within one increment of stick stress. */
+    FH_NEAR(last_stick, MU_S * P + SA, 0.0, k_s * step);
+}
+
+/* A1: pull-off at N_a sqrt(1 - (S0/S_a)^2), reversible. */
+static void pull_off(void)
+{
+    const double props[10] = {2.0, MU_D, MU_S, SA, NA, 0.0, 0.0, GAMMA_CRIT, 0.0, KN};
+    const double s0 = 3.0;
+    double n_break, last_n = 0.0;
+    ui_point u;
+    int k, broke = 0;
+    ui_init(&u, 3, props, 10);
+    /* Bonded at zero pressure (touching) with shear S0 along direction 2: k_s = S_a/gamma_crit. */
+    u.rdisp[0] = 0.0;
+    u.drdisp[2] = s0 / (SA / GAMMA_CRIT);
+    fh_context("A1 bond");
+    ui_call(&u);
+    FH_NEAR(u.stress[2], s0, 1e-12, 0.0);
+    FH_EXACT(u.stress[1], 0.0);
+    FH_EXACT(u.lopenclose, 1);
+    u.drdisp[2] = 0.0;
+    n_break = NA * sqrt(1.0 - (s0 / SA) * (s0 / SA));
+    for (k = 1; k <= 1000 && !broke; k++) {
+        double n = 1e-2 * k;
+        u.rdisp[0] = -n / KN;
+        fh_context("A1 pull N = %g", n);
+        ui_call(&u);
+        FH_CHECK(u.pnewdt == FH_PNEWDT_IN);
+        if (u.lopenclose == 1) {
+            FH_CHECK(n < n_break);
+            FH_NEAR(u.stress[0], -n, 1e-9, 0.0);
+            FH_NEAR(u.stress[2], s0, 1e-12, 0.0);
+            FH_EXACT(u.statev[2], 3.0);
+            FH_EXACT(u.lstate, 3);
+            last_n = n;
+        } else {
+            broke = 1;
+            FH_CHECK(n >= n_break && last_n < n_break);
+            FH_EXACT(u.stress[0], 0.0);
+            FH_EXACT(u.stress[2], 0.0);
+            FH_EXACT(u.ddsddr[0], 0.0);
+            FH_EXACT(u.lstate, 4);
+        }
+    }
+    fh_context("A1 break");
+    FH_CHECK(broke);
+    FH_NEAR(last_n, n_break, 0.0, 1e-2);
+    /* Closer again but still apart: free. */
+    u.rdisp[0] = -1e-9;
+    ui_call(&u);
+    FH_EXACT(u.lopenclose, 0);
+    /* Re-contact, then pull to 0.99 N_a (no shear now): bonded again. */
+    fh_context("A1 re-contact");
+    u.rdisp[0] = 1e-4;
+    ui_call(&u);
+    FH_EXACT(u.lopenclose, 1);
+    FH_NEAR(u.stress[0], 1.0, 1e-12, 0.0);
+    u.rdisp[0] = -0.99 * NA / KN;
+    ui_call(&u);
+    FH_EXACT(u.lopenclose, 1);
+    FH_NEAR(u.stress[0], -0.99 * NA, 1e-12, 0.0);
+    u.rdisp[0] = -1.01 * NA / KN;
+    ui_call(&u);
+    FH_EXACT(u.lopenclose, 0);
+}
+
+static void bad_input(void)
+{
+    static const struct {
+        double props[10];
+        const char *needle;
+    } cases[] = {
+        {{2.0, MU_D, MU_S, -1.0, NA, 0.0, 0.0, GAMMA_CRIT, 0.0, KN}, "PROPS(4): Sa"},
+        {{2.0, MU_D, MU_S, SA, -1.0, 0.0, 0.0, GAMMA_CRIT, 0.0, KN}, "PROPS(5): Na"},
+        {{2.0, MU_D, 0.2, SA, NA, 0.0, 0.0, GAMMA_CRIT, 0.0, KN}, "PROPS(3): coeffStatic"},
+        {{2.0, MU_D, MU_S, SA, NA, NAN, 0.0, GAMMA_CRIT, 0.0, KN}, "PROPS(6): kmu"},
+    };
+    size_t i;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        ui_point u;
+        fh_fric h;
+        ui_init(&u, 2, cases[i].props, 10);
+        u.stress[0] = 5.0;
+        u.stress[1] = 1.0;
+        u.rdisp[0] = 1e-3;
+        fh_context("bad input %s (uinter_)", cases[i].needle);
+        ui_call(&u);
+        FH_EXACT(u.pnewdt, FH_CUTBACK);
+        FH_EXACT(u.stress[0], 5.0);
+        FH_EXACT(u.stress[1], 1.0);
+        FH_EXACT(u.lopenclose, -1);
+        FH_CONTAINS(ifl_last_error(), "UINTER");
+        FH_CONTAINS(ifl_last_error(), cases[i].needle);
+        fh_init(&h, 1, cases[i].props, 10);
+        h.press = 10.0;
+        h.tau[0] = 1.0;
+        h.dgam[0] = 1e-3;
+        fh_context("bad input %s (fric_)", cases[i].needle);
+        fh_call(&h);
+        FH_EXACT(h.pnewdt, FH_CUTBACK);
+        FH_EXACT(h.tau[0], 1.0);
+        FH_CONTAINS(ifl_last_error(), "FRIC");
+        FH_CONTAINS(ifl_last_error(), cases[i].needle);
+    }
+    {
+        const double props[10] = {2.0, MU_D, MU_S, SA, NA, 0.0, 0.0, GAMMA_CRIT, 0.0, KN};
+        ui_point u;
+        ui_init(&u, 2, props, 10);
+        u.rdisp[0] = 1e-3;
+        u.drdisp[1] = NAN;
+        fh_context("bad input NaN DRDISP");
+        ui_call(&u);
+        FH_EXACT(u.pnewdt, FH_CUTBACK);
+        FH_CONTAINS(ifl_last_error(), "DRDISP is NaN");
+    }
+}
+
+int main(void)
+{
+    f4_fric(1);
+    f4_fric(2);
+    f4_uinter();
+    onset();
+    pull_off();
+    bad_input();
+    return fh_finish();
+}

@@ -1,0 +1,652 @@
+//! Adhesive friction (seed 004): velocity-dependent Coulomb friction with a smooth static →
+//! dynamic transition, a linear velocity term and shear adhesion, integrated inside the
+//! elastic-stick return map of the Coulomb law (seed 000, Eq. 5.2.3-2).
+//!
+//! Symbols as in the seeds: p contact pressure, μ_s and μ_d static and dynamic coefficients
+//! (`coeffStatic`, `coeff`), v_½ the slip rate at which the transition is half done (`vhalf`),
+//! k_μ the slope of μ against the slip rate (`kmu`), S_a and N_a the shear and normal adhesive
+//! strengths (`Sa`, `Na`), γ_crit the allowable elastic slip, Δv the slip rate.
+//!
+//! - Static strength (the stick limit): τ_s(p) = μ_s·p⁺ + S_a, p⁺ = max(p, 0); elastic stick
+//!   with k_s = τ_s/γ_crit, so a point starts to slide exactly when its stick stress exceeds
+//!   μ_s·p + S_a (seed 004, first equation, condition S_stick > μ_s N + S_a).
+//! - Sliding strength: g(Δv) = ((μ_s·v_½ + μ_d·Δv)/(v_½ + Δv) + k_μ·Δv)·p⁺ + S_a
+//!   (seed 004, first equation), with Δv the end-of-increment slip rate Δs/Δt (backward Euler).
+//!   With v_½ = 0 the leading term is μ_d for every Δv > 0: the instantaneous drop.
+//! - The return map solves τ = k_s(|γ^pr| − Δs) = g(Δs/Δt) for the slip increment Δs ≥ 0.
+//!   Multiplied by (v_½ + Δv) it is the quadratic
+//!   a·Δs² − b·Δs − c = 0 with a = k_s + p⁺k_μ/Δt, b = T − S_a − μ_d p⁺ − a·v_½Δt,
+//!   c = (T − τ_s)·v_½Δt, T = k_s|γ^pr| the trial stress. Sliding means T > τ_s, so c ≥ 0 and
+//!   the product of the roots −c/a ≤ 0: exactly one root is ≥ 0, and it is the admissible one
+//!   (a slip increment against the trial direction is not slip). It is taken in the form that
+//!   does not cancel.
+//!
+//! With S_a = k_μ = v_½ = 0 and μ_s = μ_d the law is plain Coulomb; [`Adhesive::coulomb_special_case`]
+//! returns that law so the entry points run the Coulomb code itself (same results, same cost).
+
+use super::coulomb::{
+    Coulomb, CoulombState, CriticalSlip, FrictionStatus, Increment, Traction, Update,
+};
+use super::small_vec::{add, all_finite, diagonal, norm, scale, unit};
+use crate::{LawError, Outcome};
+
+/// The seed's parameters by name (seed 004, "Properties"), before validation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AdhesiveParameters {
+    /// `coeff`: the dynamic coefficient μ_d, ≥ 0.
+    pub coeff: f64,
+    /// `coeffStatic`: the static coefficient μ_s; ≤ 0 (the seed's default −1) means none
+    /// (μ_s = μ_d); a positive value must be ≥ `coeff`.
+    pub coeff_static: f64,
+    /// `Sa`: the shear adhesive strength, ≥ 0 (stress).
+    pub sa: f64,
+    /// `Na`: the normal adhesive strength, ≥ 0 (stress).
+    pub na: f64,
+    /// `kmu`: slope of the friction coefficient against the slip rate, ≥ 0 (1/velocity).
+    pub kmu: f64,
+    /// `vhalf`: slip rate at which the static → dynamic transition is half done, ≥ 0.
+    pub vhalf: f64,
+}
+
+impl Default for AdhesiveParameters {
+    /// The seed's defaults: μ_d = 0, no static coefficient, no adhesion, no rate dependence.
+    fn default() -> Self {
+        AdhesiveParameters {
+            coeff: 0.0,
+            coeff_static: -1.0,
+            sa: 0.0,
+            na: 0.0,
+            kmu: 0.0,
+            vhalf: 0.0,
+        }
+    }
+}
+
+/// The validated adhesive friction law (elastic stick).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Adhesive {
+    /// μ_d and the elastic-stick settings (γ_crit); its stick mode is always elastic.
+    base: Coulomb,
+    mu_static: f64,
+    shear_adhesion: f64,
+    normal_adhesion: f64,
+    k_mu: f64,
+    v_half: f64,
+}
+
+/// Which branch of the return map an increment took.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SlideBranch {
+    /// Elastic stick: |γ^pr| ≤ γ_crit.
+    Stick,
+    /// Sliding: τ = g(Δv).
+    Slip,
+}
+
+/// The tangential answer of one increment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slide<const N: usize> {
+    /// Stress, tangents (∂τ/∂Δγ, ∂τ/∂p), slip increment and energies.
+    pub traction: Traction<N>,
+    /// Stick or slip.
+    pub branch: SlideBranch,
+    /// The end-of-increment slip rate Δs/Δt (0 in stick or when Δt ≤ 0).
+    pub slip_rate: f64,
+    /// The stick stiffness k_s = τ_s/γ_crit used.
+    pub stick_stiffness: f64,
+}
+
+fn check(name: &str, v: f64) -> Result<f64, LawError> {
+    if v.is_finite() && v >= 0.0 {
+        Ok(v)
+    } else {
+        Err(LawError::Parameter(format!(
+            "{name} = {v} must be finite and ≥ 0"
+        )))
+    }
+}
+
+impl Adhesive {
+    /// Validates the seed's parameters; γ_crit defaults to 0.005 × characteristic length.
+    pub fn new(p: &AdhesiveParameters) -> Result<Self, LawError> {
+        let mu_d = check("coeff (dynamic friction coefficient μ_d)", p.coeff)?;
+        if p.coeff_static.is_nan() || p.coeff_static.is_infinite() {
+            return Err(LawError::Parameter(format!(
+                "coeffStatic = {} must be finite (≤ 0 for none)",
+                p.coeff_static
+            )));
+        }
+        let mu_static = if p.coeff_static > 0.0 {
+            if p.coeff_static < mu_d {
+                return Err(LawError::Parameter(format!(
+                    "coeffStatic = {} is below coeff = {mu_d}: the static coefficient μ_s must \
+                     be ≥ the dynamic one (or ≤ 0 for none)",
+                    p.coeff_static
+                )));
+            }
+            p.coeff_static
+        } else {
+            mu_d
+        };
+        Ok(Adhesive {
+            base: Coulomb::new(mu_d)?,
+            mu_static,
+            shear_adhesion: check("Sa (shear adhesive strength)", p.sa)?,
+            normal_adhesion: check("Na (normal adhesive strength)", p.na)?,
+            k_mu: check("kmu (friction slope against slip rate)", p.kmu)?,
+            v_half: check("vhalf (half-transition slip rate)", p.vhalf)?,
+        })
+    }
+
+    /// From `PROPS` entries already checked by the caller (every strength, slope and rate
+    /// finite and ≥ 0, μ_s ≥ μ_d; γ_crit and the tolerance 0 for "default" or finite > 0).
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn from_validated(
+        mu_d: f64,
+        mu_s: f64,
+        sa: f64,
+        na: f64,
+        kmu: f64,
+        vhalf: f64,
+        gamma_crit: f64,
+        tolerance: f64,
+    ) -> Self {
+        Adhesive {
+            base: Coulomb::from_validated(
+                mu_d,
+                0.0,
+                gamma_crit,
+                tolerance,
+                super::coulomb::StickMode::Elastic,
+            ),
+            mu_static: mu_s,
+            shear_adhesion: sa,
+            normal_adhesion: na,
+            k_mu: kmu,
+            v_half: vhalf,
+        }
+    }
+
+    /// Sets γ_crit > 0 as an absolute length.
+    pub fn with_critical_slip_absolute(mut self, gamma_crit: f64) -> Result<Self, LawError> {
+        self.base = self.base.with_critical_slip_absolute(gamma_crit)?;
+        Ok(self)
+    }
+
+    /// Sets γ_crit as `tolerance` × characteristic length, tolerance > 0.
+    pub fn with_slip_tolerance(mut self, tolerance: f64) -> Result<Self, LawError> {
+        self.base = self.base.with_slip_tolerance(tolerance)?;
+        Ok(self)
+    }
+
+    /// μ_d.
+    #[must_use]
+    pub fn mu_dynamic(&self) -> f64 {
+        self.base.mu()
+    }
+
+    /// μ_s (equal to μ_d when no static coefficient was given).
+    #[must_use]
+    pub fn mu_static(&self) -> f64 {
+        self.mu_static
+    }
+
+    /// S_a.
+    #[must_use]
+    pub fn shear_adhesion(&self) -> f64 {
+        self.shear_adhesion
+    }
+
+    /// N_a.
+    #[must_use]
+    pub fn normal_adhesion(&self) -> f64 {
+        self.normal_adhesion
+    }
+
+    /// k_μ.
+    #[must_use]
+    pub fn k_mu(&self) -> f64 {
+        self.k_mu
+    }
+
+    /// v_½.
+    #[must_use]
+    pub fn v_half(&self) -> f64 {
+        self.v_half
+    }
+
+    /// How γ_crit is defined.
+    #[must_use]
+    pub fn critical_slip(&self) -> CriticalSlip {
+        self.base.critical_slip()
+    }
+
+    /// γ_crit for a characteristic contact length.
+    #[inline]
+    pub fn critical_slip_for(&self, characteristic_length: f64) -> Result<f64, LawError> {
+        self.base.critical_slip_for(characteristic_length)
+    }
+
+    /// True when the surfaces stay bonded while apart: both strengths non-zero (seed 004: "if
+    /// either Sa or Na are zero, the surfaces will have no separation adhesion").
+    #[must_use]
+    pub fn separation_adhesion(&self) -> bool {
+        self.shear_adhesion > 0.0 && self.normal_adhesion > 0.0
+    }
+
+    /// The plain Coulomb law this one reduces to when S_a = k_μ = v_½ = 0 and μ_s = μ_d (the
+    /// seed: "the simple Coulomb friction contact law is a special case of this law"). N_a
+    /// plays no part in the tangential law in contact.
+    #[must_use]
+    pub fn coulomb_special_case(&self) -> Option<Coulomb> {
+        (self.shear_adhesion == 0.0
+            && self.k_mu == 0.0
+            && self.v_half == 0.0
+            && self.mu_static == self.base.mu())
+        .then_some(self.base)
+    }
+
+    /// Static strength τ_s = μ_s·p⁺ + S_a and ∂τ_s/∂p (the right derivative at p = 0).
+    #[inline]
+    #[must_use]
+    pub fn static_strength(&self, p: f64) -> (f64, f64) {
+        if p < 0.0 {
+            (self.shear_adhesion, 0.0)
+        } else {
+            (self.mu_static * p + self.shear_adhesion, self.mu_static)
+        }
+    }
+
+    /// The seed's sliding strength g(Δv) = ((μ_s v_½ + μ_d Δv)/(v_½ + Δv) + k_μ Δv)·p⁺ + S_a,
+    /// written exactly as in seed 004 (used to check the return map's residual). At Δv = 0 it
+    /// is the static strength (also with v_½ = 0, where the quotient is 0/0).
+    #[must_use]
+    pub fn sliding_strength(&self, slip_rate: f64, p: f64) -> f64 {
+        let p_plus = p.max(0.0);
+        let (mu_s, mu_d, vh, v) = (self.mu_static, self.base.mu(), self.v_half, slip_rate);
+        let transition = if vh + v > 0.0 {
+            (mu_s * vh + mu_d * v) / (vh + v)
+        } else {
+            mu_s
+        };
+        (transition + self.k_mu * v) * p_plus + self.shear_adhesion
+    }
+
+    /// The return map's residual τ − g(Δs/Δt), relative to the trial stress
+    /// T = |τ| + k_s·Δs (the largest stress in the computation, so round-off is ~1e-16 of it);
+    /// ≈ 0 after every slip update (0 in stick, where the law does not apply).
+    #[must_use]
+    pub fn slide_residual<const N: usize>(&self, slide: &Slide<N>, p: f64) -> f64 {
+        if slide.branch == SlideBranch::Stick {
+            return 0.0;
+        }
+        let tau = norm(&slide.traction.tau);
+        let g = self.sliding_strength(slide.slip_rate, p);
+        let trial = tau + slide.stick_stiffness * norm(&slide.traction.dslip);
+        (tau - g) / trial.max(g).max(f64::MIN_POSITIVE)
+    }
+
+    /// One increment of the tangential law: elastic predictor from the start stress (recovered
+    /// with the start-of-increment stiffness, as in the Coulomb law), stick test |γ^pr| ≤ γ_crit
+    /// (T ≤ τ_s), and on sliding the admissible root of the quadratic above with its consistent
+    /// tangent.
+    ///
+    /// `p_start` and `p` are the pressures at the start and the end of the increment; a Δt ≤ 0
+    /// is refused when the law depends on the slip rate (k_μ or v_½ non-zero).
+    #[inline]
+    pub fn slide<const N: usize>(
+        &self,
+        tau_start: &[f64; N],
+        dgam: &[f64; N],
+        p_start: f64,
+        p: f64,
+        dtime: f64,
+        gamma_crit: f64,
+    ) -> Result<Slide<N>, LawError> {
+        let rate_dependent = self.k_mu > 0.0 || self.v_half > 0.0;
+        if rate_dependent && dtime.is_finite() && dtime <= 0.0 {
+            return Err(LawError::Input(format!(
+                "DTIME = {dtime} but the adhesive law depends on the slip rate (kmu or vhalf \
+                 non-zero); it needs Δt > 0"
+            )));
+        }
+        let (tau_s_start, _) = self.static_strength(p_start);
+        // Elastic slip at the start, γ̄^el = τ̄/k_s(p − Δp).
+        let elastic_start = if tau_s_start > 0.0 {
+            scale(tau_start, gamma_crit / tau_s_start)
+        } else {
+            [0.0; N]
+        };
+        let predictor = add(&elastic_start, dgam);
+        let (tau_s, dtau_s_dp) = self.static_strength(p);
+        if tau_s == 0.0 {
+            return Ok(self.no_strength(&predictor, p, dtime, gamma_crit));
+        }
+        Ok(self.return_map(&predictor, p, tau_s, dtau_s_dp, dtime, gamma_crit))
+    }
+
+    #[inline]
+    fn return_map<const N: usize>(
+        &self,
+        predictor: &[f64; N],
+        p: f64,
+        tau_s: f64,
+        dtau_s_dp: f64,
+        dtime: f64,
+        gamma_crit: f64,
+    ) -> Slide<N> {
+        let predictor_eq = norm(predictor);
+        let k_s = tau_s / gamma_crit;
+        if predictor_eq <= gamma_crit {
+            // Stick (Eq. 5.2.3-1): τ = k_s γ^pr, ∂τ/∂p = γ^pr (∂τ_s/∂p)/γ_crit.
+            return Slide {
+                traction: Traction {
+                    tau: scale(predictor, k_s),
+                    ddtddg: diagonal(k_s),
+                    ddtddp: scale(predictor, dtau_s_dp / gamma_crit),
+                    dslip: [0.0; N],
+                    sed: 0.5 * k_s * predictor_eq * predictor_eq,
+                    sfd: 0.0,
+                },
+                branch: SlideBranch::Stick,
+                slip_rate: 0.0,
+                stick_stiffness: k_s,
+            };
+        }
+        let p_plus = p.max(0.0);
+        let (mu_s, mu_d) = (self.mu_static, self.base.mu());
+        // In slip-increment form: V = v_½Δt (a length), K = k_μ/Δt (per length).
+        let (length_half, k_per_length) = if dtime > 0.0 {
+            (self.v_half * dtime, self.k_mu / dtime)
+        } else {
+            (0.0, 0.0)
+        };
+        let trial = k_s * predictor_eq;
+        let a = k_s + p_plus * k_per_length;
+        let b = trial - self.shear_adhesion - mu_d * p_plus - a * length_half;
+        let c = (trial - tau_s) * length_half;
+        let root = (b * b + 4.0 * a * c).sqrt();
+        // The root ≥ 0 of a·Δs² − b·Δs − c, without cancellation.
+        let slip_eq = if b >= 0.0 {
+            (b + root) / (2.0 * a)
+        } else {
+            2.0 * c / (root - b)
+        };
+        let tau_eq = trial - k_s * slip_eq;
+        // ∂g/∂Δs and ∂g/∂p at the root (g as a function of Δs): g_p is the effective coefficient.
+        let denom = length_half + slip_eq;
+        let (g_s, g_p) = if denom > 0.0 {
+            (
+                ((mu_d - mu_s) * length_half / (denom * denom) + k_per_length) * p_plus,
+                (mu_s * length_half + mu_d * slip_eq) / denom + k_per_length * slip_eq,
+            )
+        } else {
+            (0.0, mu_s)
+        };
+        let g_p = if p < 0.0 { 0.0 } else { g_p };
+        // r(Δs) = T − k_s Δs − g = 0: dΔs = (dT − Δs dk_s − g_p dp)/(k_s + g_s).
+        // k_s + g_s = √disc/(V + Δs) > 0 at the admissible root; use the form that cannot be 0.
+        let stiffness_sum = if denom > 0.0 && root > 0.0 {
+            root / denom
+        } else {
+            a
+        };
+        let dk_s_dp = dtau_s_dp / gamma_crit;
+        let dslip_dp = (dk_s_dp * (predictor_eq - slip_eq) - g_p) / stiffness_sum;
+        // τ = g(Δs, p) at the root.
+        let dtau_dgamma_eq = g_s * k_s / stiffness_sum;
+        let dtau_dp = g_s * dslip_dp + g_p;
+        let n = unit(predictor, predictor_eq);
+        let mut ddtddg = [[0.0; N]; N];
+        let transverse = tau_eq / predictor_eq;
+        for (i, row) in ddtddg.iter_mut().enumerate() {
+            for (j, x) in row.iter_mut().enumerate() {
+                let delta = if i == j { 1.0 } else { 0.0 };
+                // d(τ n)/dγ^pr = τ'(n⊗n) + (τ/|γ^pr|)(I − n⊗n).
+                *x = dtau_dgamma_eq * n[i] * n[j] + transverse * (delta - n[i] * n[j]);
+            }
+        }
+        Slide {
+            traction: Traction {
+                tau: scale(&n, tau_eq),
+                ddtddg,
+                ddtddp: scale(&n, dtau_dp),
+                dslip: scale(&n, slip_eq),
+                sed: 0.5 * tau_eq * tau_eq / k_s,
+                sfd: tau_eq * slip_eq,
+            },
+            branch: SlideBranch::Slip,
+            slip_rate: if dtime > 0.0 { slip_eq / dtime } else { 0.0 },
+            stick_stiffness: k_s,
+        }
+    }
+
+    /// τ_s = 0 (no pressure and no adhesion): no shear is carried. At p = 0 with μ_s > 0 and
+    /// S_a = 0 every stress is proportional to p, so ∂τ/∂p⁺ is the answer at p = 1.
+    #[cold]
+    fn no_strength<const N: usize>(
+        &self,
+        predictor: &[f64; N],
+        p: f64,
+        dtime: f64,
+        gamma_crit: f64,
+    ) -> Slide<N> {
+        let unit_pressure = (p == 0.0 && self.mu_static > 0.0).then(|| {
+            let (tau_s, dtau_s_dp) = self.static_strength(1.0);
+            self.return_map(predictor, 1.0, tau_s, dtau_s_dp, dtime, gamma_crit)
+        });
+        let predictor_eq = norm(predictor);
+        let slip_eq = (predictor_eq - gamma_crit).max(0.0);
+        let (ddtddp, dslip, branch) = match unit_pressure {
+            Some(s) => (s.traction.tau, s.traction.dslip, s.branch),
+            None if slip_eq > 0.0 => (
+                [0.0; N],
+                scale(&unit(predictor, predictor_eq), slip_eq),
+                SlideBranch::Slip,
+            ),
+            None => ([0.0; N], [0.0; N], SlideBranch::Stick),
+        };
+        let slip_rate = if dtime > 0.0 && branch == SlideBranch::Slip {
+            norm(&dslip) / dtime
+        } else {
+            0.0
+        };
+        Slide {
+            traction: Traction {
+                tau: [0.0; N],
+                ddtddg: [[0.0; N]; N],
+                ddtddp,
+                dslip,
+                sed: 0.0,
+                sfd: 0.0,
+            },
+            branch,
+            slip_rate,
+            stick_stiffness: 0.0,
+        }
+    }
+
+    /// The `fric_` form: one closed point, start state in, end state out (the Coulomb law's
+    /// three state variables: accumulated slip, slip rate, stick/slip).
+    pub fn update<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        state: &CoulombState,
+    ) -> Result<Update<N>, LawError> {
+        let mut probe = inc.pressure * 0.0 + inc.dpressure * 0.0 + inc.dtime * 0.0;
+        for i in 0..N {
+            probe += inc.tau[i] * 0.0 + inc.dgam[i] * 0.0;
+        }
+        if probe != 0.0 {
+            return Err(name_bad_input(inc));
+        }
+        let gamma_crit = self.critical_slip_for(inc.characteristic_length)?;
+        let s = self.slide(
+            &inc.tau,
+            &inc.dgam,
+            inc.pressure - inc.dpressure,
+            inc.pressure,
+            inc.dtime,
+            gamma_crit,
+        )?;
+        check_finite(&s.traction)?;
+        let slip = norm(&s.traction.dslip);
+        Ok(Update {
+            contact: super::coulomb::Contact::Motion(s.traction),
+            state: CoulombState {
+                accumulated_slip: state.accumulated_slip + slip,
+                slip_rate: s.slip_rate,
+                status: match s.branch {
+                    SlideBranch::Slip => FrictionStatus::Slip,
+                    SlideBranch::Stick => FrictionStatus::Stick,
+                },
+            },
+            outcome: Outcome::CONVERGED,
+        })
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn name_bad_input<const N: usize>(inc: &Increment<N>) -> LawError {
+    let what = if !inc.pressure.is_finite() {
+        "PRESS"
+    } else if !inc.dpressure.is_finite() {
+        "DPRESS"
+    } else if !all_finite(&inc.dgam) {
+        "DGAM"
+    } else if !all_finite(&inc.tau) {
+        "TAU"
+    } else {
+        "DTIME"
+    };
+    LawError::Input(format!("{what} is NaN or infinite"))
+}
+
+/// Every stress, tangent and energy is finite (the inputs were; an overflow is refused).
+pub(crate) fn check_finite<const N: usize>(t: &Traction<N>) -> Result<(), LawError> {
+    let mut ok = t.sed.is_finite() && t.sfd.is_finite();
+    for a in 0..N {
+        ok &= t.tau[a].is_finite() && t.ddtddp[a].is_finite() && t.dslip[a].is_finite();
+        ok &= all_finite(&t.ddtddg[a]);
+    }
+    if ok {
+        Ok(())
+    } else {
+        Err(LawError::Numerical(
+            "the adhesive stress update overflowed (inputs too large for f64)".into(),
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn law(p: AdhesiveParameters) -> Adhesive {
+        Adhesive::new(&p)
+            .and_then(|l| l.with_critical_slip_absolute(1e-3))
+            .unwrap()
+    }
+
+    #[test]
+    fn steady_sliding_stress_is_the_seed_formula() {
+        // Steady sliding at rate v: the elastic slip is constant, every Δγ is slip, τ = g(v).
+        let l = law(AdhesiveParameters {
+            coeff: 0.3,
+            coeff_static: 0.5,
+            sa: 2.0,
+            kmu: 0.05,
+            vhalf: 0.1,
+            ..AdhesiveParameters::default()
+        });
+        let (p, dt, v) = (100.0, 0.5, 0.4);
+        let g = ((0.5 * 0.1 + 0.3 * v) / (0.1 + v) + 0.05 * v) * p + 2.0;
+        let s = l.slide(&[g], &[v * dt], p, p, dt, 1e-3).unwrap();
+        assert_eq!(s.branch, SlideBranch::Slip);
+        assert!((s.traction.tau[0] - g).abs() < 1e-12 * g, "{s:?} vs {g}");
+        assert!((s.slip_rate - v).abs() < 1e-12);
+    }
+
+    #[test]
+    fn onset_at_static_strength() {
+        let l = law(AdhesiveParameters {
+            coeff: 0.3,
+            coeff_static: 0.5,
+            sa: 2.0,
+            ..AdhesiveParameters::default()
+        });
+        // k_s = (0.5·10 + 2)/1e-3 = 7000; γ^pr = γ_crit exactly: still stick at τ = 7.
+        let s = l.slide(&[0.0], &[1e-3], 10.0, 10.0, 1.0, 1e-3).unwrap();
+        assert_eq!(s.branch, SlideBranch::Stick);
+        assert!((s.traction.tau[0] - 7.0).abs() < 1e-12);
+        // Just past it: slides at the dynamic strength 0.3·10 + 2 (v_½ = 0, instantaneous drop).
+        let s = l.slide(&[0.0], &[1.001e-3], 10.0, 10.0, 1.0, 1e-3).unwrap();
+        assert_eq!(s.branch, SlideBranch::Slip);
+        assert!((s.traction.tau[0] - 5.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn validation() {
+        let base = AdhesiveParameters {
+            coeff: 0.3,
+            ..AdhesiveParameters::default()
+        };
+        for (p, needle) in [
+            (
+                AdhesiveParameters {
+                    coeff_static: 0.2,
+                    ..base
+                },
+                "coeffStatic",
+            ),
+            (AdhesiveParameters { sa: -1.0, ..base }, "Sa"),
+            (AdhesiveParameters { na: -1.0, ..base }, "Na"),
+            (AdhesiveParameters { kmu: -1.0, ..base }, "kmu"),
+            (
+                AdhesiveParameters {
+                    vhalf: f64::NAN,
+                    ..base
+                },
+                "vhalf",
+            ),
+            (
+                AdhesiveParameters {
+                    coeff_static: f64::NAN,
+                    ..base
+                },
+                "coeffStatic",
+            ),
+            (
+                AdhesiveParameters {
+                    coeff: -0.1,
+                    ..base
+                },
+                "coeff",
+            ),
+        ] {
+            let e = Adhesive::new(&p).unwrap_err().to_string();
+            assert!(e.contains(needle), "{e}");
+        }
+        // coeffStatic ≤ 0 means none; equal to coeff is allowed.
+        assert_eq!(
+            Adhesive::new(&AdhesiveParameters {
+                coeff_static: -1.0,
+                ..base
+            })
+            .unwrap()
+            .mu_static(),
+            0.3
+        );
+        assert!(
+            Adhesive::new(&AdhesiveParameters {
+                coeff_static: 0.3,
+                ..base
+            })
+            .unwrap()
+            .coulomb_special_case()
+            .is_some()
+        );
+    }
+}

@@ -1,0 +1,397 @@
+//! The adhesive interface (seed 004) as a whole: normal behaviour, separation adhesion and the
+//! tangential law of [`super::adhesive`], for hosts that hand the library the full interface
+//! (Abaqus UINTER).
+//!
+//! Normal behaviour, with h the overclosure (positive for penetration) and K_n a penalty
+//! stiffness ("hard" contact made slightly soft):
+//! - closed, h > 0: p = K_n·h, and the surfaces are bonded again (adhesion is reversible: seed
+//!   004, "they will stick with the same adhesive strengths when the surfaces come back into
+//!   contact"); tangential law of [`super::adhesive::Adhesive::slide`] at pressure p;
+//! - apart, h ≤ 0, bonded at the start of the increment and both S_a, N_a > 0: the bond is an
+//!   elastic spring in tension, N = K_n·|h| (p = K_n·h ≤ 0), and in shear, S = k_s·|γ^pr| with
+//!   k_s = S_a/γ_crit (the stick stiffness at p = 0); the surfaces "continue to stick as long as
+//!   (S/S_a)² + (N/N_a)² < 1" (seed 004), else the bond breaks in this increment;
+//! - apart and not bonded (broken, or no separation adhesion): free, zero stress.
+//!
+//! State (`STATEV(1..3)`): accumulated slip, slip rate, and the status below.
+
+use super::adhesive::{Adhesive, SlideBranch};
+use super::coulomb::Traction;
+use super::small_vec::{add, all_finite, norm, scale};
+use crate::LawError;
+
+/// What the interface point did in the increment (`STATEV(3)`). The numbers 0 and 1 are the
+/// Coulomb law's; 2 (exact stick) does not occur here.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum InterfaceStatus {
+    /// Closed, elastic stick.
+    #[default]
+    Stick = 0,
+    /// Closed, sliding.
+    Slip = 1,
+    /// Apart but bonded: carrying tension and shear.
+    Bonded = 3,
+    /// Apart and free (bond broken, or no separation adhesion).
+    Open = 4,
+}
+
+/// The interface's state: three scalars in `STATEV(1..3)`.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct InterfaceState {
+    /// Σ|Δs| (path length of frictional slip).
+    pub accumulated_slip: f64,
+    /// Slip rate of the last increment.
+    pub slip_rate: f64,
+    /// Status of the last increment.
+    pub status: InterfaceStatus,
+}
+
+impl InterfaceState {
+    /// Number of `STATEV` entries used.
+    pub const NSTATV: usize = 3;
+
+    /// Reads `STATEV(1..3)`; a status code other than 1, 3 or 4 reads as stick (0).
+    pub fn from_statev(statev: &[f64]) -> Result<Self, LawError> {
+        let [s, rate, status, ..] = statev else {
+            return Err(LawError::Input(format!(
+                "NSTATV = {} but the adhesive interface needs {}",
+                statev.len(),
+                Self::NSTATV
+            )));
+        };
+        if !s.is_finite() || !rate.is_finite() {
+            return Err(LawError::Input(
+                "STATEV(1..2) are not finite (state corrupted by the caller?)".into(),
+            ));
+        }
+        let status = match *status {
+            1.0 => InterfaceStatus::Slip,
+            3.0 => InterfaceStatus::Bonded,
+            4.0 => InterfaceStatus::Open,
+            _ => InterfaceStatus::Stick,
+        };
+        Ok(InterfaceState {
+            accumulated_slip: *s,
+            slip_rate: *rate,
+            status,
+        })
+    }
+
+    /// Writes `STATEV(1..3)` (nothing else).
+    pub fn write_statev(&self, statev: &mut [f64]) {
+        if let [s, rate, status, ..] = statev {
+            *s = self.accumulated_slip;
+            *rate = self.slip_rate;
+            *status = self.status as i32 as f64;
+        }
+    }
+}
+
+/// One increment of an interface point with N tangential directions (NDIR = N + 1).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InterfaceIncrement<const N: usize> {
+    /// Normal stress at the start (positive in compression).
+    pub normal_stress_start: f64,
+    /// Shear stress at the start.
+    pub shear_start: [f64; N],
+    /// Overclosure h at the end of the increment (positive for penetration).
+    pub overclosure: f64,
+    /// Tangential relative motion of the increment Δγ.
+    pub dgam: [f64; N],
+    /// Δt.
+    pub dtime: f64,
+    /// Characteristic contact length (for γ_crit as a tolerance).
+    pub characteristic_length: f64,
+}
+
+/// The interface's answer for one increment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InterfaceResponse<const N: usize> {
+    /// Normal stress p (positive in compression, negative in bonded tension).
+    pub normal_stress: f64,
+    /// ∂p/∂h.
+    pub dp_dh: f64,
+    /// Shear stress, ∂τ/∂Δγ, ∂τ/∂p (multiply by ∂p/∂h for ∂τ/∂h), slip, SED and SFD of the
+    /// tangential part.
+    pub shear: Traction<N>,
+    /// Elastic energy density, normal and tangential.
+    pub sed: f64,
+    /// State at the end of the increment.
+    pub state: InterfaceState,
+    /// True when the interface transmits stress (closed or bonded): `LOPENCLOSE = 1`.
+    pub closed: bool,
+    /// ∂SFD/∂Δγ: the frictional dissipation's derivative (for the frictional heat flux).
+    pub dsfd_dgam: [f64; N],
+    /// ∂SFD/∂h.
+    pub dsfd_dh: f64,
+}
+
+/// The adhesive law with a penalty normal stiffness K_n.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AdhesiveInterface {
+    law: Adhesive,
+    normal_stiffness: f64,
+}
+
+impl AdhesiveInterface {
+    /// K_n must be finite and > 0.
+    pub fn new(law: Adhesive, normal_stiffness: f64) -> Result<Self, LawError> {
+        if !(normal_stiffness > 0.0 && normal_stiffness.is_finite()) {
+            return Err(LawError::Parameter(format!(
+                "penalty normal stiffness K_n = {normal_stiffness} must be finite and > 0"
+            )));
+        }
+        Ok(AdhesiveInterface {
+            law,
+            normal_stiffness,
+        })
+    }
+
+    /// The tangential law.
+    #[must_use]
+    pub fn law(&self) -> &Adhesive {
+        &self.law
+    }
+
+    /// K_n.
+    #[must_use]
+    pub fn normal_stiffness(&self) -> f64 {
+        self.normal_stiffness
+    }
+
+    /// Integrates one increment.
+    pub fn update<const N: usize>(
+        &self,
+        inc: &InterfaceIncrement<N>,
+        state: &InterfaceState,
+    ) -> Result<InterfaceResponse<N>, LawError> {
+        let finite = inc.normal_stress_start.is_finite()
+            && inc.overclosure.is_finite()
+            && inc.dtime.is_finite()
+            && all_finite(&inc.shear_start)
+            && all_finite(&inc.dgam);
+        if !finite {
+            return Err(name_bad_input(inc));
+        }
+        let gamma_crit = self.law.critical_slip_for(inc.characteristic_length)?;
+        let k_n = self.normal_stiffness;
+        let h = inc.overclosure;
+        let was_bonded = state.status != InterfaceStatus::Open;
+        let response = if h > 0.0 {
+            let p = k_n * h;
+            let s = self.law.slide(
+                &inc.shear_start,
+                &inc.dgam,
+                inc.normal_stress_start,
+                p,
+                inc.dtime,
+                gamma_crit,
+            )?;
+            let slip = norm(&s.traction.dslip);
+            let (dsfd_dgam, dsfd_dp) = dissipation_derivatives(&s.traction, s.stick_stiffness, {
+                let (_, dtau_s_dp) = self.law.static_strength(p);
+                dtau_s_dp / gamma_crit
+            });
+            InterfaceResponse {
+                dsfd_dgam,
+                dsfd_dh: dsfd_dp * k_n,
+                normal_stress: p,
+                dp_dh: k_n,
+                sed: s.traction.sed + 0.5 * p * p / k_n,
+                shear: s.traction,
+                state: InterfaceState {
+                    accumulated_slip: state.accumulated_slip + slip,
+                    slip_rate: s.slip_rate,
+                    status: match s.branch {
+                        SlideBranch::Slip => InterfaceStatus::Slip,
+                        SlideBranch::Stick => InterfaceStatus::Stick,
+                    },
+                },
+                closed: true,
+            }
+        } else if was_bonded && self.law.separation_adhesion() {
+            self.bonded(inc, state, gamma_crit)
+        } else {
+            self.open(state)
+        };
+        let t = &response.shear;
+        let ok = response.normal_stress.is_finite()
+            && response.sed.is_finite()
+            && super::adhesive::check_finite(t).is_ok();
+        if ok {
+            Ok(response)
+        } else {
+            Err(LawError::Numerical(
+                "the interface stress update overflowed (inputs too large for f64)".into(),
+            ))
+        }
+    }
+
+    /// Apart and bonded at the start: elastic in tension and shear while
+    /// (S/S_a)² + (N/N_a)² < 1 (seed 004), else the bond breaks.
+    fn bonded<const N: usize>(
+        &self,
+        inc: &InterfaceIncrement<N>,
+        state: &InterfaceState,
+        gamma_crit: f64,
+    ) -> InterfaceResponse<N> {
+        let (s_a, n_a, k_n) = (
+            self.law.shear_adhesion(),
+            self.law.normal_adhesion(),
+            self.normal_stiffness,
+        );
+        let (tau_s_start, _) = self.law.static_strength(inc.normal_stress_start);
+        let elastic_start = if tau_s_start > 0.0 {
+            scale(&inc.shear_start, gamma_crit / tau_s_start)
+        } else {
+            [0.0; N]
+        };
+        let predictor = add(&elastic_start, &inc.dgam);
+        // k_s = τ_s(0)/γ_crit = S_a/γ_crit.
+        let k_s = s_a / gamma_crit;
+        let shear = scale(&predictor, k_s);
+        let tension = -k_n * inc.overclosure;
+        let s_eq = norm(&shear);
+        let measure = (s_eq / s_a).powi(2) + (tension / n_a).powi(2);
+        if measure >= 1.0 {
+            return self.open(state);
+        }
+        let mut ddtddg = [[0.0; N]; N];
+        for (i, row) in ddtddg.iter_mut().enumerate() {
+            row[i] = k_s;
+        }
+        InterfaceResponse {
+            normal_stress: -tension,
+            dp_dh: k_n,
+            shear: Traction {
+                tau: shear,
+                ddtddg,
+                ddtddp: [0.0; N],
+                dslip: [0.0; N],
+                sed: 0.5 * k_s * norm(&predictor).powi(2),
+                sfd: 0.0,
+            },
+            sed: 0.5 * k_s * norm(&predictor).powi(2) + 0.5 * tension * tension / k_n,
+            state: InterfaceState {
+                accumulated_slip: state.accumulated_slip,
+                slip_rate: 0.0,
+                status: InterfaceStatus::Bonded,
+            },
+            closed: true,
+            dsfd_dgam: [0.0; N],
+            dsfd_dh: 0.0,
+        }
+    }
+
+    fn open<const N: usize>(&self, state: &InterfaceState) -> InterfaceResponse<N> {
+        InterfaceResponse {
+            normal_stress: 0.0,
+            dp_dh: 0.0,
+            shear: Traction {
+                tau: [0.0; N],
+                ddtddg: [[0.0; N]; N],
+                ddtddp: [0.0; N],
+                dslip: [0.0; N],
+                sed: 0.0,
+                sfd: 0.0,
+            },
+            sed: 0.0,
+            state: InterfaceState {
+                accumulated_slip: state.accumulated_slip,
+                slip_rate: 0.0,
+                status: InterfaceStatus::Open,
+            },
+            closed: false,
+            dsfd_dgam: [0.0; N],
+            dsfd_dh: 0.0,
+        }
+    }
+}
+
+/// Derivatives of SFD = |τ|·Δs (sliding; 0 otherwise) with respect to Δγ and p, from the
+/// consistent tangents: Δs = |γ^pr| − |τ|/k_s, so
+/// dΔs = n·dγ − d|τ|/k_s + |τ| dk_s/k_s² with d|τ| = n·dτ.
+fn dissipation_derivatives<const N: usize>(
+    t: &Traction<N>,
+    k_s: f64,
+    dk_s_dp: f64,
+) -> ([f64; N], f64) {
+    let slip = norm(&t.dslip);
+    if slip == 0.0 || k_s == 0.0 {
+        return ([0.0; N], 0.0);
+    }
+    let n = scale(&t.dslip, 1.0 / slip);
+    let tau = norm(&t.tau);
+    let mut dsfd_dgam = [0.0; N];
+    for (b, d) in dsfd_dgam.iter_mut().enumerate() {
+        let dtau_b: f64 = (0..N).map(|a| n[a] * t.ddtddg[a][b]).sum();
+        *d = slip * dtau_b + tau * (n[b] - dtau_b / k_s);
+    }
+    let dtau_dp: f64 = (0..N).map(|a| n[a] * t.ddtddp[a]).sum();
+    let dslip_dp = -dtau_dp / k_s + tau * dk_s_dp / (k_s * k_s);
+    (dsfd_dgam, slip * dtau_dp + tau * dslip_dp)
+}
+
+#[cold]
+#[inline(never)]
+fn name_bad_input<const N: usize>(inc: &InterfaceIncrement<N>) -> LawError {
+    let what = if !inc.overclosure.is_finite() {
+        "RDISP(1)"
+    } else if !all_finite(&inc.dgam) {
+        "DRDISP"
+    } else if !inc.normal_stress_start.is_finite() || !all_finite(&inc.shear_start) {
+        "STRESS"
+    } else {
+        "DTIME"
+    };
+    LawError::Input(format!("{what} is NaN or infinite"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::laws::adhesive::AdhesiveParameters;
+
+    fn interface() -> AdhesiveInterface {
+        let law = Adhesive::new(&AdhesiveParameters {
+            coeff: 0.3,
+            sa: 4.0,
+            na: 10.0,
+            ..AdhesiveParameters::default()
+        })
+        .and_then(|l| l.with_critical_slip_absolute(1e-3))
+        .unwrap();
+        AdhesiveInterface::new(law, 1e4).unwrap()
+    }
+
+    #[test]
+    fn pull_off_at_the_ellipse() {
+        // Bonded with S₀ = 2 (half of S_a = 4): breaks at N = N_a·sqrt(1 − 1/4) = 8.660…
+        let i = interface();
+        let s0 = 2.0;
+        let n_break = 10.0 * (1.0f64 - 0.25).sqrt();
+        let st = InterfaceState {
+            status: InterfaceStatus::Bonded,
+            ..InterfaceState::default()
+        };
+        for (n, holds) in [
+            (n_break * (1.0 - 1e-9), true),
+            (n_break * (1.0 + 1e-9), false),
+        ] {
+            let inc = InterfaceIncrement::<1> {
+                normal_stress_start: 0.0,
+                shear_start: [s0],
+                overclosure: -n / 1e4,
+                dgam: [0.0],
+                dtime: 1.0,
+                characteristic_length: 1.0,
+            };
+            let r = i.update(&inc, &st).unwrap();
+            assert_eq!(r.closed, holds, "N = {n}");
+            if holds {
+                assert!((r.shear.tau[0] - s0).abs() < 1e-12);
+                assert!((r.normal_stress + n).abs() < 1e-9);
+            }
+        }
+    }
+}
