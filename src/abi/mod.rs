@@ -11,11 +11,13 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use crate::LawError;
 use crate::report::{Site, report};
 
+pub mod batch;
 pub mod fric;
 pub mod gapcon;
 pub mod host;
 pub mod native;
 
+pub use batch::{FricBatch, fric_batch, ifl_fric_batch};
 pub use fric::fric_;
 pub use gapcon::gapcon_;
 pub use native::{
