@@ -96,7 +96,9 @@ pub fn work_precision(
             .draw_series(LineSeries::new(series.clone(), color.stroke_width(2)))
             .map_err(err)?
             .label(*m)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2)));
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
+            });
         chart
             .draw_series(
                 series
@@ -179,7 +181,9 @@ pub fn stability_map(path: &Path, o: &Oscillator, map: &Map) -> Result<(), Strin
                 .draw_series(std::iter::empty::<Rectangle<(f64, f64)>>())
                 .map_err(err)?
                 .label(cell.name())
-                .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 14, y + 5)], color.filled()));
+                .legend(move |(x, y)| {
+                    Rectangle::new([(x, y - 5), (x + 14, y + 5)], color.filled())
+                });
         }
     }
     // The explicit limit as a curve in (Δt, γ_crit): γ_crit = μ_s N / (m (2/Δt)² − k).

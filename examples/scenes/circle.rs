@@ -91,7 +91,11 @@ impl Circle {
         let dot = tangent[0] * c.tau[0] + tangent[1] * c.tau[1];
         let lag = cross.atan2(dot).abs();
         CircleRun {
-            error: if ok { (lag - exact).abs() } else { f64::INFINITY },
+            error: if ok {
+                (lag - exact).abs()
+            } else {
+                f64::INFINITY
+            },
             magnitude_error,
             calls: total,
             wall: start.elapsed().as_secs_f64(),

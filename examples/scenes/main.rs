@@ -343,7 +343,10 @@ fn main() {
                             failures += 1;
                         }
                         outputs.extend([csv, svg]);
-                        maps.push((scenes.iter().position(|s| s.file.id == *id).unwrap_or(0), map));
+                        maps.push((
+                            scenes.iter().position(|s| s.file.id == *id).unwrap_or(0),
+                            map,
+                        ));
                     }
                     Err(e) => {
                         eprintln!("\nscenes: {e}");
@@ -412,7 +415,11 @@ fn main() {
     }
     println!(
         "\n{} in {:.1} s; {failures} failure(s)",
-        if failures == 0 { "all checks and claims met" } else { "FAILED" },
+        if failures == 0 {
+            "all checks and claims met"
+        } else {
+            "FAILED"
+        },
         progress.start.elapsed().as_secs_f64()
     );
     if failures > 0 {

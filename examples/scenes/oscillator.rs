@@ -207,7 +207,17 @@ pub fn simulate(o: &Oscillator, integrator: Integrator, stick: Stick, dt: f64) -
         // γ_crit only bounds the exact-stick transverse tangent here.
         Stick::Exact => (1e-6 * o.x_slip_start(), 1.0),
     };
-    let props = |mu: f64| vec![1.0, mu, 0.0, 0.0, gamma_crit * mu / o.mu_static, 0.0, stick_code];
+    let props = |mu: f64| {
+        vec![
+            1.0,
+            mu,
+            0.0,
+            0.0,
+            gamma_crit * mu / o.mu_static,
+            0.0,
+            stick_code,
+        ]
+    };
     let (props_s, props_k) = (props(o.mu_static), props(o.mu_kinetic));
     let mut c = FricCall::new(1, &props_s);
     c.press = o.normal_force;
@@ -244,7 +254,8 @@ pub fn simulate(o: &Oscillator, integrator: Integrator, stick: Stick, dt: f64) -
     for n in 0..steps {
         // μ frozen at the start of the increment: kinetic after a slipping increment.
         let kinetic = c.statev[2] == 1.0;
-        c.props.copy_from_slice(if kinetic { &props_k } else { &props_s });
+        c.props
+            .copy_from_slice(if kinetic { &props_k } else { &props_s });
         let sv = [c.statev[0], c.statev[1], c.statev[2]];
         let lm_start = c.lm;
         let step = match integrator {

@@ -208,11 +208,13 @@ impl Scene {
         let file: SceneFile = toml::from_str(text).map_err(|e| format!("{origin}: {e}"))?;
         let kind = match (&file.oscillator, &file.circle) {
             (Some(o), None) => {
-                o.validate().map_err(|e| format!("{origin}: [oscillator] {e}"))?;
+                o.validate()
+                    .map_err(|e| format!("{origin}: [oscillator] {e}"))?;
                 "oscillator"
             }
             (None, Some(c)) => {
-                c.validate().map_err(|e| format!("{origin}: [circle] {e}"))?;
+                c.validate()
+                    .map_err(|e| format!("{origin}: [circle] {e}"))?;
                 "circle"
             }
             _ => {
@@ -223,7 +225,9 @@ impl Scene {
         };
         for (name, steps) in [("steps", &file.steps), ("quick_steps", &file.quick_steps)] {
             if steps.is_empty() || steps.iter().any(|s| !(s.is_finite() && *s > 0.0)) {
-                return Err(format!("{origin}: {name} must be a non-empty list of positive steps"));
+                return Err(format!(
+                    "{origin}: {name} must be a non-empty list of positive steps"
+                ));
             }
         }
         let methods = file
@@ -235,7 +239,9 @@ impl Scene {
             return Err(format!("{origin}: no [[method]]"));
         }
         if !file.maps.is_empty() && kind != "oscillator" {
-            return Err(format!("{origin}: [[map]] applies to oscillator scenes only"));
+            return Err(format!(
+                "{origin}: [[map]] applies to oscillator scenes only"
+            ));
         }
         Ok(Scene {
             file,
@@ -309,7 +315,14 @@ pub fn run_point(scene: &Scene, method: &Method, step: f64) -> Point {
         claim,
     };
     if let Some(o) = &scene.file.oscillator {
-        let run = simulate(o, method.integrator, method.stick, step);
+        // Timing: the best of three runs (the first one also pays for cold caches).
+        let mut run = simulate(o, method.integrator, method.stick, step);
+        for _ in 0..2 {
+            let again = simulate(o, method.integrator, method.stick, step);
+            if again.wall < run.wall {
+                run = again;
+            }
+        }
         p.error = run.error();
         p.details = run.errors.to_vec();
         p.calls = run.calls;
@@ -327,7 +340,13 @@ pub fn run_point(scene: &Scene, method: &Method, step: f64) -> Point {
             Stick::Exact => c.radius,
         };
         let per_turn = step.round().max(3.0) as usize;
-        let run = c.run(gamma_crit, per_turn);
+        let mut run = c.run(gamma_crit, per_turn);
+        for _ in 0..2 {
+            let again = c.run(gamma_crit, per_turn);
+            if again.wall < run.wall {
+                run = again;
+            }
+        }
         p.error = run.error;
         p.details = vec![run.error, run.magnitude_error / (c.mu * c.pressure)];
         p.calls = run.calls;
