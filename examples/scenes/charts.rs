@@ -122,7 +122,8 @@ fn cell_color(c: Cell) -> RGBColor {
     match c {
         Cell::Accurate => RGBColor(102, 194, 120),
         Cell::Inaccurate => RGBColor(199, 233, 192),
-        Cell::Chattering => RGBColor(253, 174, 97),
+        Cell::Chattering => RGBColor(254, 224, 139),
+        Cell::Unstable => RGBColor(244, 109, 67),
         Cell::Diverged => RGBColor(215, 48, 39),
         Cell::NewtonFailed => RGBColor(117, 107, 177),
         Cell::CutBack => RGBColor(49, 54, 149),

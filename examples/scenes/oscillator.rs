@@ -187,6 +187,15 @@ impl Run {
     pub fn error(&self) -> f64 {
         self.errors.iter().copied().fold(0.0, f64::max)
     }
+    /// The first stick phase, which starts consistent (τ = 0, ẋ = v₀, no ringing), ended
+    /// before 90% of its closed-form length x₁/v₀: the stick mode grew from round-off, i.e. the
+    /// step is beyond the stability limit of the integrator in stick.
+    pub fn stick_unstable(&self, o: &Oscillator) -> bool {
+        self.onsets
+            .first()
+            .is_some_and(|t| *t < 0.9 * o.first_slip())
+    }
+
     /// Spurious stick/slip flips: the friction force reversing (twice or more), or more than
     /// three phases per cycle far shorter than the closed form's. (A penalty that rings after each stick onset starts the next slip early and may
     /// add one short slip per cycle; a stick mode that grows step by step, as explicit stepping

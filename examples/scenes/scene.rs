@@ -328,6 +328,7 @@ pub fn run_point(scene: &Scene, method: &Method, step: f64) -> Point {
         p.calls = run.calls;
         p.wall = run.wall;
         p.verdict = match run.verdict {
+            Verdict::Completed if run.stick_unstable(o) => "unstable",
             Verdict::Completed if run.chattering() => "chattering",
             Verdict::Completed => "ok",
             Verdict::Diverged => "diverged",

@@ -12,8 +12,12 @@ pub enum Cell {
     Accurate,
     /// Completed without spurious flips, error above the threshold.
     Inaccurate,
-    /// Spurious stick/slip flips (phases far shorter than the closed form's).
+    /// Spurious stick/slip flips (friction reversing, phases far shorter than the closed
+    /// form's) with the stick phase itself stable.
     Chattering,
+    /// The stick mode grows step by step (the first stick phase, started without any ringing,
+    /// ends early): beyond the integrator's stability limit in stick.
+    Unstable,
     /// The motion blew up.
     Diverged,
     /// The host's Newton iteration failed.
@@ -29,20 +33,22 @@ impl Cell {
             Cell::Accurate => "stable, accurate",
             Cell::Inaccurate => "stable, inaccurate",
             Cell::Chattering => "chattering",
+            Cell::Unstable => "unstable stick (grows)",
             Cell::Diverged => "diverged",
             Cell::NewtonFailed => "Newton failed",
             Cell::CutBack => "cut-back (PNEWDT<1)",
         }
     }
-    /// Unstable in the sense of the explicit limit: the stick mode grows.
+    /// Unstable in the sense of the explicit limit: the stick mode grows, or everything does.
     pub fn unstable(self) -> bool {
-        matches!(self, Cell::Chattering | Cell::Diverged)
+        matches!(self, Cell::Unstable | Cell::Diverged)
     }
     /// All classes, in legend order.
-    pub const ALL: [Cell; 6] = [
+    pub const ALL: [Cell; 7] = [
         Cell::Accurate,
         Cell::Inaccurate,
         Cell::Chattering,
+        Cell::Unstable,
         Cell::Diverged,
         Cell::NewtonFailed,
         Cell::CutBack,
@@ -128,6 +134,7 @@ pub fn run_map(
                 Verdict::Diverged => Cell::Diverged,
                 Verdict::NewtonFailed => Cell::NewtonFailed,
                 Verdict::CutBack => Cell::CutBack,
+                Verdict::Completed if run.stick_unstable(o) => Cell::Unstable,
                 Verdict::Completed if run.chattering() => Cell::Chattering,
                 Verdict::Completed if run.error() <= spec.accurate => Cell::Accurate,
                 Verdict::Completed => Cell::Inaccurate,
@@ -142,7 +149,7 @@ pub fn run_map(
     Ok(map)
 }
 
-/// Per row: the first column whose cell is unstable (chattering or diverged), if any.
+/// Per row: the first column whose cell is unstable (stick mode grows, or diverged), if any.
 pub fn measured_boundary(map: &Map, row: usize) -> Option<usize> {
     map.cells[row].iter().position(|c| c.unstable())
 }
