@@ -78,7 +78,8 @@ extern "C" {
  *
  * Component `a` (0-based) of point `i` is at `x[i + a*ld]`; `DDTDDG(a,b)` of point `i` at
  * `ddtddg[i + (a + b*nfdir)*ld]`; `lm`, `sed`, `sfd`, `press`, `dpress`, `chrlngth` have one
- * entry per point. `props`/`nprops`, `nstatv` and `dtime` are shared by all points and mean
+ * entry per point. For speed, pad `ld` a little above a multiple of 512 (rows a power of two
+ * bytes apart share cache sets; `docs/benchmarks-batch.md`). `props`/`nprops`, `nstatv` and `dtime` are shared by all points and mean
  * what they mean for `fric_` (`docs/props.md`); `statev` has `nstatv` rows.
  *
  * Every point gets bit for bit what `fric_` gives it. A point with unusable input gets

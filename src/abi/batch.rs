@@ -28,7 +28,8 @@ use crate::{CUTBACK_RATIO, LawError};
 pub struct FricBatch<'a> {
     /// Number of points.
     pub npoints: usize,
-    /// Leading dimension: distance between components of one point, `ld ≥ npoints`.
+    /// Leading dimension: distance between components of one point, `ld ≥ npoints` (pad it a
+    /// little above a multiple of 512 for speed).
     pub ld: usize,
     /// Friction directions per point, 1 or 2 (`NFDIR`).
     pub nfdir: usize,
@@ -200,6 +201,51 @@ fn check_sizes(b: &FricBatch<'_>) -> Result<(), LawError> {
     Ok(())
 }
 
+/// Up to four rows of `n` entries, `ld` apart, borrowed from a structure-of-arrays slice whose
+/// length `check_sizes` has verified; rows past `rows` are empty.
+fn rows_mut(s: &mut [f64], ld: usize, n: usize, rows: usize) -> [&mut [f64]; 4] {
+    let mut out: [&mut [f64]; 4] = [&mut [], &mut [], &mut [], &mut []];
+    let mut rest = s;
+    for (r, slot) in out.iter_mut().enumerate().take(rows) {
+        let taken = std::mem::take(&mut rest);
+        let (row, tail) = if r + 1 < rows {
+            taken.split_at_mut(ld)
+        } else {
+            (taken, &mut [][..])
+        };
+        *slot = &mut row[..n];
+        rest = tail;
+    }
+    out
+}
+
+/// As [`rows_mut`], shared.
+fn rows(s: &[f64], ld: usize, n: usize, rows: usize) -> [&[f64]; 4] {
+    let mut out: [&[f64]; 4] = [&[]; 4];
+    for (r, slot) in out.iter_mut().enumerate().take(rows) {
+        *slot = &s[r * ld..r * ld + n];
+    }
+    out
+}
+
+/// Views of one batch, each row exactly `npoints` long: the loop works on locals, not through
+/// the `FricBatch` borrow, so the compiler keeps the row pointers in registers.
+struct Views<'b> {
+    lm: &'b mut [c_int],
+    tau: [&'b mut [f64]; 4],
+    ddtddg: [&'b mut [f64]; 4],
+    ddtddp: [&'b mut [f64]; 4],
+    dslip: Option<[&'b mut [f64]; 4]>,
+    sed: Option<&'b mut [f64]>,
+    sfd: Option<&'b mut [f64]>,
+    statev: [&'b mut [f64]; 4],
+    dgam: [&'b [f64]; 4],
+    taulm: Option<[&'b [f64]; 4]>,
+    press: &'b [f64],
+    dpress: &'b [f64],
+    chrlngth: &'b [f64],
+}
+
 /// The loop over points, one NFDIR. Returns the first point failure, if any.
 #[inline(always)]
 fn run<const N: usize>(
@@ -208,16 +254,34 @@ fn run<const N: usize>(
     b: &mut FricBatch<'_>,
     pnewdt: &mut f64,
 ) -> Option<BatchError> {
-    let np = b.npoints;
+    let (n, ld) = (b.npoints, b.ld);
+    if n == 0 {
+        return None;
+    }
+    let mut v = Views {
+        lm: &mut b.lm[..n],
+        tau: rows_mut(b.tau, ld, n, N),
+        ddtddg: rows_mut(b.ddtddg, ld, n, N * N),
+        ddtddp: rows_mut(b.ddtddp, ld, n, N),
+        dslip: b.dslip.as_deref_mut().map(|d| rows_mut(d, ld, n, N)),
+        sed: b.sed.as_deref_mut().map(|s| &mut s[..n]),
+        sfd: b.sfd.as_deref_mut().map(|s| &mut s[..n]),
+        statev: rows_mut(b.statev, ld, n, CoulombState::NSTATV),
+        dgam: rows(b.dgam, ld, n, N),
+        taulm: b.taulm.map(|t| rows(t, ld, n, N)),
+        press: &b.press[..n],
+        dpress: &b.dpress[..n],
+        chrlngth: &b.chrlngth[..n],
+    };
     let mut first: Option<(usize, LawError)> = None;
     let mut failed = 0usize;
     let mut ratio = f64::INFINITY;
-    for i in 0..np {
-        match point::<N>(law, dtime, b, i) {
+    for i in 0..n {
+        match point::<N>(law, dtime, &mut v, i) {
             Ok(r) => ratio = ratio.min(r),
             Err(e) => {
                 failed += 1;
-                fail_point::<N>(b, i, &e);
+                fail_point::<N>(&mut v, i, &e);
                 if first.is_none() {
                     first = Some((i, e));
                 }
@@ -243,84 +307,77 @@ fn run<const N: usize>(
 fn point<const N: usize>(
     law: &Coulomb,
     dtime: f64,
-    b: &mut FricBatch<'_>,
+    v: &mut Views<'_>,
     i: usize,
 ) -> Result<f64, LawError> {
-    let ld = b.ld;
-    let entry = match b.lm[i] {
+    let entry = match v.lm[i] {
         0 => EntryFlag::Motion,
         1 => EntryFlag::ExactStick,
         2 => return Ok(f64::INFINITY),
-        other => {
-            return Err(LawError::Input(format!(
-                "LM = {other} on entry; expected 0, 1 or 2"
-            )));
-        }
+        other => return Err(bad_lm(other)),
     };
     let mut inc = Increment::<N> {
-        pressure: b.press[i],
-        dpressure: b.dpress[i],
+        pressure: v.press[i],
+        dpressure: v.dpress[i],
         dtime,
-        characteristic_length: b.chrlngth[i],
+        characteristic_length: v.chrlngth[i],
         entry,
         ..Increment::default()
     };
     for a in 0..N {
-        inc.tau[a] = b.tau[i + a * ld];
-        inc.dgam[a] = b.dgam[i + a * ld];
+        inc.tau[a] = v.tau[a][i];
+        inc.dgam[a] = v.dgam[a][i];
     }
     if entry == EntryFlag::ExactStick {
-        let Some(taulm) = b.taulm else {
-            return Err(LawError::Input(
-                "LM = 1 on entry but no TAULM array was given".into(),
-            ));
+        let Some(taulm) = &v.taulm else {
+            return Err(no_taulm());
         };
         for a in 0..N {
-            inc.taulm[a] = taulm[i + a * ld];
+            inc.taulm[a] = taulm[a][i];
         }
     }
-    let sv = [b.statev[i], b.statev[i + ld], b.statev[i + 2 * ld]];
+    let sv = [v.statev[0][i], v.statev[1][i], v.statev[2][i]];
     let state = CoulombState::from_statev(&sv)?;
     let up = law.update(&inc, &state)?;
     let mut end_state = [0.0; CoulombState::NSTATV];
     up.state.write_statev(&mut end_state);
-    for (r, v) in end_state.iter().enumerate() {
-        b.statev[i + r * ld] = *v;
+    for (r, x) in end_state.iter().enumerate() {
+        v.statev[r][i] = *x;
     }
     match up.contact {
         Contact::ExactStick => {
-            b.lm[i] = 1;
-            if let Some(d) = b.dslip.as_deref_mut() {
-                for a in 0..N {
-                    d[i + a * ld] = 0.0;
+            v.lm[i] = 1;
+            if let Some(d) = &mut v.dslip {
+                for row in d.iter_mut().take(N) {
+                    row[i] = 0.0;
                 }
             }
-            if let Some(s) = b.sed.as_deref_mut() {
+            if let Some(s) = &mut v.sed {
                 s[i] = 0.0;
             }
-            if let Some(s) = b.sfd.as_deref_mut() {
+            if let Some(s) = &mut v.sfd {
                 s[i] = 0.0;
             }
         }
         Contact::Motion(t) => {
-            b.lm[i] = 0;
+            v.lm[i] = 0;
             for a in 0..N {
-                b.tau[i + a * ld] = t.tau[a];
-                b.ddtddp[i + a * ld] = t.ddtddp[a];
+                v.tau[a][i] = t.tau[a];
+                v.ddtddp[a][i] = t.ddtddp[a];
                 for c in 0..N {
                     // DDTDDG(a,c) in Fortran order per point.
-                    b.ddtddg[i + (a + c * N) * ld] = t.ddtddg[a][c];
+                    v.ddtddg[a + c * N][i] = t.ddtddg[a][c];
                 }
             }
-            if let Some(d) = b.dslip.as_deref_mut() {
+            if let Some(d) = &mut v.dslip {
                 for a in 0..N {
-                    d[i + a * ld] = t.dslip[a];
+                    d[a][i] = t.dslip[a];
                 }
             }
-            if let Some(s) = b.sed.as_deref_mut() {
+            if let Some(s) = &mut v.sed {
                 s[i] = t.sed;
             }
-            if let Some(s) = b.sfd.as_deref_mut() {
+            if let Some(s) = &mut v.sfd {
                 s[i] = t.sfd;
             }
         }
@@ -328,23 +385,34 @@ fn point<const N: usize>(
     Ok(up.outcome.step_ratio)
 }
 
+#[cold]
+#[inline(never)]
+fn bad_lm(lm: c_int) -> LawError {
+    LawError::Input(format!("LM = {lm} on entry; expected 0, 1 or 2"))
+}
+
+#[cold]
+#[inline(never)]
+fn no_taulm() -> LawError {
+    LawError::Input("LM = 1 on entry but no TAULM array was given".into())
+}
+
 /// `fric_`'s failure outputs for one point, and the report.
 #[cold]
 #[inline(never)]
-fn fail_point<const N: usize>(b: &mut FricBatch<'_>, i: usize, e: &LawError) {
-    let ld = b.ld;
+fn fail_point<const N: usize>(v: &mut Views<'_>, i: usize, e: &LawError) {
     for a in 0..N {
-        b.ddtddp[i + a * ld] = 0.0;
+        v.ddtddp[a][i] = 0.0;
         for c in 0..N {
-            b.ddtddg[i + (a + c * N) * ld] = 0.0;
+            v.ddtddg[a + c * N][i] = 0.0;
         }
     }
-    if let Some(d) = b.dslip.as_deref_mut() {
-        for a in 0..N {
-            d[i + a * ld] = 0.0;
+    if let Some(d) = &mut v.dslip {
+        for row in d.iter_mut().take(N) {
+            row[i] = 0.0;
         }
     }
-    if let Some(s) = b.sfd.as_deref_mut() {
+    if let Some(s) = &mut v.sfd {
         s[i] = 0.0;
     }
     let site = Site {
@@ -391,7 +459,8 @@ unsafe fn c_slice_mut<'a, T>(p: *mut T, len: usize, name: &str) -> Result<&'a mu
 ///
 /// Component `a` (0-based) of point `i` is at `x[i + a*ld]`; `DDTDDG(a,b)` of point `i` at
 /// `ddtddg[i + (a + b*nfdir)*ld]`; `lm`, `sed`, `sfd`, `press`, `dpress`, `chrlngth` have one
-/// entry per point. `props`/`nprops`, `nstatv` and `dtime` are shared by all points and mean
+/// entry per point. For speed, pad `ld` a little above a multiple of 512 (rows a power of two
+/// bytes apart share cache sets; `docs/benchmarks-batch.md`). `props`/`nprops`, `nstatv` and `dtime` are shared by all points and mean
 /// what they mean for `fric_` (`docs/props.md`); `statev` has `nstatv` rows.
 ///
 /// Every point gets bit for bit what `fric_` gives it. A point with unusable input gets
