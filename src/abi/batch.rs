@@ -332,8 +332,8 @@ fn point<const N: usize>(
         let Some(taulm) = &v.taulm else {
             return Err(no_taulm());
         };
-        for a in 0..N {
-            inc.taulm[a] = taulm[a][i];
+        for (x, row) in inc.taulm.iter_mut().zip(taulm) {
+            *x = row[i];
         }
     }
     let sv = [v.statev[0][i], v.statev[1][i], v.statev[2][i]];
@@ -370,8 +370,8 @@ fn point<const N: usize>(
                 }
             }
             if let Some(d) = &mut v.dslip {
-                for a in 0..N {
-                    d[a][i] = t.dslip[a];
+                for (row, x) in d.iter_mut().zip(t.dslip) {
+                    row[i] = x;
                 }
             }
             if let Some(s) = &mut v.sed {
