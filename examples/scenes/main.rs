@@ -26,7 +26,7 @@ mod scene;
 mod stability;
 
 use std::fmt::Write as _;
-use std::io::Write as _;
+use std::io::{IsTerminal as _, Write as _};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -83,17 +83,25 @@ impl Progress {
     fn tick(&mut self, what: &str) {
         self.done += 1;
         let mut err = std::io::stderr();
-        let _ = write!(
-            err,
-            "\r\x1b[2K[{:>3}/{}] {:>5.1}s  {what}",
+        let line = format!(
+            "[{:>3}/{}] {:>5.1}s  {what}",
             self.done.min(self.total),
             self.total,
             self.start.elapsed().as_secs_f64()
         );
+        if err.is_terminal() {
+            // One line, rewritten in place.
+            let _ = write!(err, "\r\x1b[2K{line}");
+        } else if self.done % 20 == 1 || self.done == self.total {
+            // A log file gets every twentieth step.
+            let _ = writeln!(err, "{line}");
+        }
         let _ = err.flush();
     }
     fn finish(&self) {
-        eprintln!();
+        if std::io::stderr().is_terminal() {
+            eprintln!();
+        }
     }
 }
 
