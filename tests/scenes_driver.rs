@@ -10,6 +10,8 @@
 mod circle;
 #[path = "../examples/scenes/oscillator.rs"]
 mod oscillator;
+#[path = "../examples/scenes/pull.rs"]
+mod pull;
 #[path = "../examples/scenes/scene.rs"]
 mod scene;
 #[path = "../examples/scenes/stability.rs"]
@@ -19,8 +21,9 @@ use oscillator::{Integrator, Oscillator, Stick, Verdict, simulate};
 use scene::{Scene, run_point};
 use stability::{Cell, measured_boundary, run_map, theoretical_boundary};
 
-const SCENES: [(&str, &str); 2] = [
+const SCENES: [(&str, &str); 3] = [
     ("f6.toml", include_str!("../examples/scenes/data/f6.toml")),
+    ("f1.toml", include_str!("../examples/scenes/data/f1.toml")),
     ("f2.toml", include_str!("../examples/scenes/data/f2.toml")),
 ];
 

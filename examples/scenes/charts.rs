@@ -50,6 +50,7 @@ pub fn work_precision(
     x_label: &str,
     error_label: &str,
     points: &[Point],
+    legend: SeriesLabelPosition,
     cost: impl Fn(&Point) -> f64,
 ) -> Result<(), String> {
     let usable: Vec<&Point> = points
@@ -109,7 +110,7 @@ pub fn work_precision(
     }
     chart
         .configure_series_labels()
-        .position(SeriesLabelPosition::LowerLeft)
+        .position(legend)
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font(("sans-serif", 12))

@@ -22,6 +22,7 @@ mod charts;
 mod checks;
 mod circle;
 mod oscillator;
+mod pull;
 mod scene;
 mod stability;
 
@@ -34,8 +35,9 @@ use scene::{Point, Scene, run_point};
 use stability::{Map, measured_boundary, run_map, theoretical_boundary};
 
 /// The built-in scene files, in the order they run.
-const SCENES: [(&str, &str); 2] = [
+const SCENES: [(&str, &str); 3] = [
     ("data/f6.toml", include_str!("data/f6.toml")),
+    ("data/f1.toml", include_str!("data/f1.toml")),
     ("data/f2.toml", include_str!("data/f2.toml")),
 ];
 
@@ -303,10 +305,18 @@ fn main() {
         let csv = opts.out.join(format!("{id}-work-precision.csv"));
         let time_svg = opts.out.join(format!("{id}-error-vs-time.svg"));
         let calls_svg = opts.out.join(format!("{id}-error-vs-calls.svg"));
-        let error_label = if scene.kind == "oscillator" {
-            "max relative error (T, x₂, energy/cycle)"
-        } else {
-            "lag angle error (rad)"
+        // Where the curves leave room for the legend.
+        let legend = || {
+            if scene.kind == "pull" {
+                plotters::prelude::SeriesLabelPosition::MiddleRight
+            } else {
+                plotters::prelude::SeriesLabelPosition::LowerLeft
+            }
+        };
+        let error_label = match scene.kind {
+            "oscillator" => "max relative error (T, x₂, energy/cycle)",
+            "pull" => "max |γ − γ_exact| / (τ_c/K)",
+            _ => "lag angle error (rad)",
         };
         let written = write_points(&csv, &points)
             .and_then(|()| {
@@ -316,6 +326,7 @@ fn main() {
                     "wall time per run (s)",
                     error_label,
                     &points,
+                    legend(),
                     |p| p.wall,
                 )
             })
@@ -326,6 +337,7 @@ fn main() {
                     "fric_ calls per run (Newton iterations included)",
                     error_label,
                     &points,
+                    legend(),
                     |p| p.calls as f64,
                 )
             });

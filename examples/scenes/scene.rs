@@ -15,6 +15,7 @@ use serde::Deserialize;
 
 use crate::circle::Circle;
 use crate::oscillator::{Integrator, Oscillator, Stick, Verdict, simulate};
+use crate::pull::Pull;
 
 /// A scene file.
 #[derive(Clone, Debug, Deserialize)]
@@ -28,7 +29,10 @@ pub struct SceneFile {
     pub oscillator: Option<Oscillator>,
     /// F2 parameters (kind = "circle").
     pub circle: Option<Circle>,
-    /// Step sizes of the full sweep (F6: Δt; F2: increments per turn).
+    /// F1 with a spring host (kind = "pull").
+    pub pull: Option<Pull>,
+    /// Step sizes of the full sweep (F6: Δt; F2: increments per turn; F1: increments per
+    /// stick stretch τ_c/K).
     pub steps: Vec<f64>,
     /// Step sizes of the reduced sweep (`--quick`, and the test).
     pub quick_steps: Vec<f64>,
@@ -50,7 +54,8 @@ pub struct MethodSpec {
     /// join as new values).
     #[serde(default = "coulomb")]
     pub law: String,
-    /// F6: "explicit" (central differences), "newmark" or "hht"; F2: "return-map".
+    /// F6: "explicit" (central differences), "newmark" or "hht"; F2: "return-map"; F1:
+    /// "quasi-static".
     pub integrator: String,
     /// "elastic" (penalty, needs `gamma_crit`) or "exact" (LM = 1).
     pub stick: String,
@@ -164,6 +169,7 @@ impl Method {
             ("circle", "return-map") if matches!(stick, Stick::Elastic { .. }) => {
                 Integrator::Explicit
             }
+            ("pull", "quasi-static") => Integrator::Explicit,
             (k, i) => {
                 return Err(format!(
                     "method '{}': integrator '{i}' does not apply to a {k} scene",
@@ -206,20 +212,24 @@ impl Scene {
     /// Parses and checks a scene file's text (`origin` names it in messages).
     pub fn parse(text: &str, origin: &str) -> Result<Scene, String> {
         let file: SceneFile = toml::from_str(text).map_err(|e| format!("{origin}: {e}"))?;
-        let kind = match (&file.oscillator, &file.circle) {
-            (Some(o), None) => {
+        let kind = match (&file.oscillator, &file.circle, &file.pull) {
+            (Some(o), None, None) => {
                 o.validate()
                     .map_err(|e| format!("{origin}: [oscillator] {e}"))?;
                 "oscillator"
             }
-            (None, Some(c)) => {
+            (None, Some(c), None) => {
                 c.validate()
                     .map_err(|e| format!("{origin}: [circle] {e}"))?;
                 "circle"
             }
+            (None, None, Some(p)) => {
+                p.validate().map_err(|e| format!("{origin}: [pull] {e}"))?;
+                "pull"
+            }
             _ => {
                 return Err(format!(
-                    "{origin}: give exactly one of [oscillator] (F6) or [circle] (F2)"
+                    "{origin}: give exactly one of [oscillator] (F6), [circle] (F2) or [pull] (F1)"
                 ));
             }
         };
@@ -250,12 +260,13 @@ impl Scene {
         })
     }
 
-    /// The reference step of the claims: F6 the period T, F2 one radian.
+    /// The step in claim units: F6 Δt/T; F2 Δθ in radians; F1 Δu/(τ_c/K).
     pub fn reference_step(&self, step: f64) -> f64 {
         match (&self.file.oscillator, &self.file.circle) {
             (Some(o), _) => step / o.period(),
             // Increments per turn → Δθ in radians.
-            _ => 2.0 * std::f64::consts::PI / step,
+            (_, Some(_)) => 2.0 * std::f64::consts::PI / step,
+            _ => 1.0 / step,
         }
     }
 }
@@ -353,6 +364,20 @@ pub fn run_point(scene: &Scene, method: &Method, step: f64) -> Point {
         p.calls = run.calls;
         p.wall = run.wall;
         p.verdict = if run.ok { "ok" } else { "cut-back" };
+    } else if let Some(f1) = &scene.file.pull {
+        let per_stretch = step.round().max(1.0) as usize;
+        let mut run = f1.run(method.stick, per_stretch);
+        for _ in 0..2 {
+            let again = f1.run(method.stick, per_stretch);
+            if again.wall < run.wall {
+                run = again;
+            }
+        }
+        p.error = run.error;
+        p.details = vec![run.error];
+        p.calls = run.calls;
+        p.wall = run.wall;
+        p.verdict = if run.ok { "ok" } else { "newton-failed" };
     }
     p
 }
