@@ -2,6 +2,7 @@
 
 use std::path::Path;
 
+use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 
 use crate::oscillator::Oscillator;
@@ -58,7 +59,11 @@ pub fn work_precision(
         .filter(|p| p.verdict == "ok" && p.error.is_finite())
         .collect();
     let (x0, x1) = decades(usable.iter().map(|p| cost(p)));
-    let (y0, y1) = decades(usable.iter().map(|p| p.error.max(1e-16)));
+    let (y0, y1) = decades(
+        usable
+            .iter()
+            .flat_map(|p| [p.error.max(1e-16), p.claim.max(1e-16)]),
+    );
     let root = SVGBackend::new(path, (820, 540)).into_drawing_area();
     root.fill(&WHITE).map_err(err)?;
     let mut chart = ChartBuilder::on(&root)
@@ -107,7 +112,26 @@ pub fn work_precision(
                     .map(|&(x, y)| Circle::new((x, y), 3, color.filled())),
             )
             .map_err(err)?;
+        // The bound the scene file claims for this method (dashed, same colour).
+        let mut claims: Vec<(f64, f64)> = usable
+            .iter()
+            .filter(|p| p.method == *m && p.claim.is_finite())
+            .map(|p| (cost(p), p.claim.max(1e-16)))
+            .collect();
+        claims.sort_by(|a, b| a.0.total_cmp(&b.0));
+        if claims.len() > 1 {
+            chart
+                .draw_series(DashedLineSeries::new(claims, 6, 4, color.stroke_width(1)))
+                .map_err(err)?;
+        }
     }
+    chart
+        .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
+        .map_err(err)?
+        .label("dashed: the claimed bound (tests/scenes_driver.rs)")
+        .legend(|(x, y)| {
+            DashedPathElement::new(vec![(x, y), (x + 18, y)], 4, 3, BLACK.stroke_width(1))
+        });
     chart
         .configure_series_labels()
         .position(legend)
