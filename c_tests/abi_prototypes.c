@@ -81,6 +81,12 @@ const char *ifl_version(void);
 const char *ifl_last_error(void);
 size_t ifl_last_error_copy(char *buf, size_t len);
 void ifl_clear_error(void);
+enum IflStatus ifl_fric_batch(size_t npoints, size_t ld, int nfdir, const double *props,
+                              int nprops, int nstatv, double dtime, int *lm, double *tau,
+                              double *ddtddg, double *ddtddp, double *dslip, double *sed,
+                              double *sfd, double *statev, const double *dgam,
+                              const double *taulm, const double *press, const double *dpress,
+                              const double *chrlngth, double *pnewdt);
 
 /* Function-pointer types spelled out once more: assigning the library's functions to them is
  * a constraint violation if the types differ. */
@@ -101,11 +107,15 @@ int main(void)
     const char *(*const last_error)(void) = ifl_last_error;
     size_t (*const error_copy)(char *, size_t) = ifl_last_error_copy;
     void (*const clear_error)(void) = ifl_clear_error;
+    enum IflStatus (*const batch)(size_t, size_t, int, const double *, int, int, double, int *,
+                                  double *, double *, double *, double *, double *, double *,
+                                  double *, const double *, const double *, const double *,
+                                  const double *, const double *, double *) = ifl_fric_batch;
     int passed = 0, failed = 0;
 
     /* Linked and callable through the hand-written types. */
     if (fric != NULL && version != NULL && last_error != NULL && error_copy != NULL &&
-        clear_error != NULL) {
+        clear_error != NULL && batch != NULL) {
         passed++;
     } else {
         failed++;

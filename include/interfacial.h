@@ -74,6 +74,49 @@ extern "C" {
 #endif // __cplusplus
 
 /**
+ * Many independent `fric_` points in one call (structure of arrays, leading dimension `ld`).
+ *
+ * Component `a` (0-based) of point `i` is at `x[i + a*ld]`; `DDTDDG(a,b)` of point `i` at
+ * `ddtddg[i + (a + b*nfdir)*ld]`; `lm`, `sed`, `sfd`, `press`, `dpress`, `chrlngth` have one
+ * entry per point. For speed, pad `ld` a little above a multiple of 512 (rows a power of two
+ * bytes apart share cache sets; `docs/benchmarks-batch.md`). `props`/`nprops`, `nstatv` and `dtime` are shared by all points and mean
+ * what they mean for `fric_` (`docs/props.md`); `statev` has `nstatv` rows.
+ *
+ * Every point gets bit for bit what `fric_` gives it. A point with unusable input gets
+ * `fric_`'s failure outputs, the others are still computed, and the call returns the first
+ * failure's status. A fault of the whole batch (`ld < npoints`, `nfdir` not 1 or 2, bad
+ * `PROPS`, `nstatv < 3`, a NULL required array) writes nothing but `*pnewdt`. `*pnewdt` is only
+ * ever lowered (to 0.25 on any failure). `dslip`, `sed`, `sfd` may be NULL (not written);
+ * `taulm` may be NULL when no point enters with `LM = 1`.
+ *
+ * # Safety
+ * Every non-NULL array holds at least `ld*(components-1) + npoints` entries (`components` as
+ * above: `nfdir`, `nfdir*nfdir`, `nstatv` or 1; none when `npoints` is 0); `props` holds
+ * `nprops`; `pnewdt` is NULL or writable; output arrays do not overlap each other or the inputs.
+ */
+enum IflStatus ifl_fric_batch(size_t npoints,
+                              size_t ld,
+                              int nfdir,
+                              const double *props,
+                              int nprops,
+                              int nstatv,
+                              double dtime,
+                              int *lm,
+                              double *tau,
+                              double *ddtddg,
+                              double *ddtddp,
+                              double *dslip,
+                              double *sed,
+                              double *sfd,
+                              double *statev,
+                              const double *dgam,
+                              const double *taulm,
+                              const double *press,
+                              const double *dpress,
+                              const double *chrlngth,
+                              double *pnewdt);
+
+/**
  * Abaqus/Standard `FRIC`: frictional stress, tangents, energies and state of one closed contact
  * point, callable from Fortran as `CALL FRIC(...)` with no interface block.
  *

@@ -138,4 +138,27 @@ fn exports_have_the_abaqus_signatures() {
     let _: unsafe extern "C" fn(*mut c_char, usize) -> usize =
         interfacial::abi::ifl_last_error_copy;
     let _: extern "C" fn() = interfacial::abi::ifl_clear_error;
+    let _: unsafe extern "C" fn(
+        usize,      // npoints
+        usize,      // ld
+        c_int,      // nfdir
+        R,          // props
+        c_int,      // nprops
+        c_int,      // nstatv
+        f64,        // dtime
+        *mut c_int, // lm
+        *mut f64,   // tau
+        *mut f64,   // ddtddg
+        *mut f64,   // ddtddp
+        *mut f64,   // dslip
+        *mut f64,   // sed
+        *mut f64,   // sfd
+        *mut f64,   // statev
+        R,          // dgam
+        R,          // taulm
+        R,          // press
+        R,          // dpress
+        R,          // chrlngth
+        *mut f64,   // pnewdt
+    ) -> interfacial::abi::IflStatus = interfacial::abi::ifl_fric_batch;
 }

@@ -11,6 +11,7 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use crate::LawError;
 use crate::report::{Site, report};
 
+pub mod batch;
 pub mod fric;
 pub mod gapcon;
 pub mod host;
@@ -18,6 +19,7 @@ pub mod native;
 pub mod uinter;
 pub mod uinter_host;
 
+pub use batch::{FricBatch, fric_batch, ifl_fric_batch};
 pub use fric::fric_;
 pub use gapcon::gapcon_;
 pub use native::{

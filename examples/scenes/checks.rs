@@ -1,9 +1,6 @@
-//! The main job: the friction and thermal scenes of `shared/design/scenes.md` driven increment by increment
-//! through `fric_` and `gapcon_` (the entry points a Fortran host calls), each compared with its closed-form
-//! answer. Prints one row per checked quantity and exits non-zero if any error exceeds its
-//! tolerance.
-//!
-//!     cargo run --release --example scenes
+//! Closed-form checks: the friction and thermal scenes of `shared/design/scenes.md` driven
+//! increment by increment through `fric_` and `gapcon_` (the entry points a Fortran host calls),
+//! one row per checked quantity, each compared with its closed-form answer.
 
 use interfacial::abi::host::{FricCall, GapconCall};
 use interfacial::abi::{IflConductance, IflStatus, ifl_gap_conductance};
@@ -13,20 +10,29 @@ const P: f64 = 100.0;
 const GAMMA_CRIT: f64 = 1e-3;
 const TAU_MAX: f64 = 20.0;
 
-struct Row {
-    scene: &'static str,
-    case: String,
-    quantity: &'static str,
-    exact: f64,
-    computed: f64,
-    tolerance: f64,
+/// One checked quantity.
+pub struct Row {
+    /// Scene id.
+    pub scene: &'static str,
+    /// Variant of the scene.
+    pub case: String,
+    /// What is compared.
+    pub quantity: &'static str,
+    /// Closed-form value.
+    pub exact: f64,
+    /// Computed value.
+    pub computed: f64,
+    /// Allowed |computed − exact|.
+    pub tolerance: f64,
 }
 
 impl Row {
-    fn error(&self) -> f64 {
+    /// |computed − exact|.
+    pub fn error(&self) -> f64 {
         (self.computed - self.exact).abs()
     }
-    fn ok(&self) -> bool {
+    /// Within tolerance.
+    pub fn ok(&self) -> bool {
         self.error() <= self.tolerance
     }
 }
@@ -438,14 +444,15 @@ fn t2(rows: &mut Vec<Row>) {
     }
 }
 
-fn main() {
+/// Runs every check (the thermal ones through a configuration file written to the temporary
+/// directory and named by INTERFACIAL_CONFIG before the first `gapcon_` call).
+pub fn run() -> Result<Vec<Row>, String> {
     let config =
         std::env::temp_dir().join(format!("interfacial-scenes-{}.toml", std::process::id()));
-    if let Err(e) = std::fs::write(&config, THERMAL_CONFIG) {
-        eprintln!("cannot write {}: {e}", config.display());
-        std::process::exit(2);
-    }
-    // SAFETY: single-threaded here, before the first call into the library.
+    std::fs::write(&config, THERMAL_CONFIG)
+        .map_err(|e| format!("cannot write {}: {e}", config.display()))?;
+    // SAFETY: called from main before any other thread exists and before the first call into
+    // the library.
     unsafe { std::env::set_var("INTERFACIAL_CONFIG", &config) };
     let mut rows = Vec::new();
     f1(&mut rows);
@@ -455,16 +462,17 @@ fn main() {
     t1(&mut rows);
     t2(&mut rows);
     let _ = std::fs::remove_file(&config);
-    println!(
-        "interfacial {} — scenes through fric_ (μ = {MU}, p = {P}, γ_crit = {GAMMA_CRIT}) and gapcon_\n",
-        interfacial::VERSION
-    );
+    Ok(rows)
+}
+
+/// Prints the rows; returns the number of failures.
+pub fn print(rows: &[Row]) -> usize {
     println!(
         "{:<5} {:<46} {:<36} {:>14} {:>14} {:>10}  ok",
         "scene", "case", "quantity", "closed form", "computed", "error"
     );
     let mut failed = 0;
-    for r in &rows {
+    for r in rows {
         if !r.ok() {
             failed += 1;
         }
@@ -479,8 +487,5 @@ fn main() {
             if r.ok() { "yes" } else { "NO" }
         );
     }
-    println!("\n{} passed, {} failed", rows.len() - failed, failed);
-    if failed > 0 {
-        std::process::exit(1);
-    }
+    failed
 }

@@ -1,0 +1,235 @@
+//! SVG charts (plotters, SVG backend only): work-precision curves and stability maps.
+
+use std::path::Path;
+
+use plotters::element::DashedPathElement;
+use plotters::prelude::*;
+
+use crate::oscillator::Oscillator;
+use crate::scene::Point;
+use crate::stability::{Cell, Map};
+
+const COLORS: [RGBColor; 10] = [
+    RGBColor(31, 119, 180),
+    RGBColor(255, 127, 14),
+    RGBColor(44, 160, 44),
+    RGBColor(214, 39, 40),
+    RGBColor(148, 103, 189),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(127, 127, 127),
+    RGBColor(188, 189, 34),
+    RGBColor(23, 190, 207),
+];
+
+fn err<E: std::fmt::Display>(e: E) -> String {
+    e.to_string()
+}
+
+/// Range of positive finite values, widened to whole decades.
+fn decades(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, 0.0f64);
+    for v in values.filter(|v| v.is_finite() && *v > 0.0) {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    if !lo.is_finite() {
+        return (1e-3, 1.0);
+    }
+    (
+        10f64.powf(lo.log10().floor()),
+        10f64.powf(hi.log10().ceil().max(lo.log10().floor() + 1.0)),
+    )
+}
+
+/// Error against cost, one curve per method; `cost` picks the x value of a point. Points that
+/// did not complete (or whose error is not measurable) are left out of the curves; the error is
+/// floored at 1e-16 so that round-off-exact results stay on a log axis.
+pub fn work_precision(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    error_label: &str,
+    points: &[Point],
+    legend: SeriesLabelPosition,
+    cost: impl Fn(&Point) -> f64,
+) -> Result<(), String> {
+    let usable: Vec<&Point> = points
+        .iter()
+        .filter(|p| p.verdict == "ok" && p.error.is_finite())
+        .collect();
+    let (x0, x1) = decades(usable.iter().map(|p| cost(p)));
+    let (y0, y1) = decades(
+        usable
+            .iter()
+            .flat_map(|p| [p.error.max(1e-16), p.claim.max(1e-16)]),
+    );
+    let root = SVGBackend::new(path, (820, 540)).into_drawing_area();
+    root.fill(&WHITE).map_err(err)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 18))
+        .margin(12)
+        .x_label_area_size(44)
+        .y_label_area_size(70)
+        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc(x_label)
+        .y_desc(error_label)
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .draw()
+        .map_err(err)?;
+    let mut methods: Vec<&str> = Vec::new();
+    for p in points {
+        if !methods.contains(&p.method.as_str()) {
+            methods.push(&p.method);
+        }
+    }
+    for (i, m) in methods.iter().enumerate() {
+        let color = COLORS[i % COLORS.len()];
+        let mut series: Vec<(f64, f64)> = usable
+            .iter()
+            .filter(|p| p.method == *m)
+            .map(|p| (cost(p), p.error.max(1e-16)))
+            .collect();
+        series.sort_by(|a, b| a.0.total_cmp(&b.0));
+        if series.is_empty() {
+            continue;
+        }
+        chart
+            .draw_series(LineSeries::new(series.clone(), color.stroke_width(2)))
+            .map_err(err)?
+            .label(*m)
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
+            });
+        chart
+            .draw_series(
+                series
+                    .iter()
+                    .map(|&(x, y)| Circle::new((x, y), 3, color.filled())),
+            )
+            .map_err(err)?;
+        // The bound the scene file claims for this method (dashed, same colour).
+        let mut claims: Vec<(f64, f64)> = usable
+            .iter()
+            .filter(|p| p.method == *m && p.claim.is_finite())
+            .map(|p| (cost(p), p.claim.max(1e-16)))
+            .collect();
+        claims.sort_by(|a, b| a.0.total_cmp(&b.0));
+        if claims.len() > 1 {
+            chart
+                .draw_series(DashedLineSeries::new(claims, 6, 4, color.stroke_width(1)))
+                .map_err(err)?;
+        }
+    }
+    chart
+        .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
+        .map_err(err)?
+        .label("dashed: the claimed bound (tests/scenes_driver.rs)")
+        .legend(|(x, y)| {
+            DashedPathElement::new(vec![(x, y), (x + 18, y)], 4, 3, BLACK.stroke_width(1))
+        });
+    chart
+        .configure_series_labels()
+        .position(legend)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 12))
+        .draw()
+        .map_err(err)?;
+    root.present().map_err(err)
+}
+
+fn cell_color(c: Cell) -> RGBColor {
+    match c {
+        Cell::Accurate => RGBColor(102, 194, 120),
+        Cell::Inaccurate => RGBColor(199, 233, 192),
+        Cell::Chattering => RGBColor(254, 224, 139),
+        Cell::Unstable => RGBColor(244, 109, 67),
+        Cell::Diverged => RGBColor(215, 48, 39),
+        Cell::NewtonFailed => RGBColor(117, 107, 177),
+        Cell::CutBack => RGBColor(49, 54, 149),
+    }
+}
+
+/// The stability map with the theoretical explicit limit Δt = 2/sqrt((k + K_f)/m) drawn on it.
+pub fn stability_map(path: &Path, o: &Oscillator, map: &Map) -> Result<(), String> {
+    let half = |v: &[f64], i: usize, up: bool| -> f64 {
+        // Cell edges halfway (geometrically) between grid values.
+        let n = v.len();
+        let ratio = if n > 1 { (v[1] / v[0]).sqrt() } else { 2.0 };
+        if up { v[i] * ratio } else { v[i] / ratio }.max(f64::MIN_POSITIVE)
+    };
+    let (nx, ny) = (map.dts.len(), map.gammas.len());
+    let (x0, x1) = (half(&map.dts, 0, false), half(&map.dts, nx - 1, true));
+    let (y0, y1) = (half(&map.gammas, 0, false), half(&map.gammas, ny - 1, true));
+    let root = SVGBackend::new(path, (820, 600)).into_drawing_area();
+    root.fill(&WHITE).map_err(err)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            format!("F6 stability map: {}", map.spec.label),
+            ("sans-serif", 18),
+        )
+        .margin(12)
+        .x_label_area_size(44)
+        .y_label_area_size(70)
+        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc("time step Δt")
+        .y_desc("allowable elastic slip γ_crit")
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .draw()
+        .map_err(err)?;
+    for (r, row) in map.cells.iter().enumerate() {
+        chart
+            .draw_series(row.iter().enumerate().map(|(c, cell)| {
+                Rectangle::new(
+                    [
+                        (half(&map.dts, c, false), half(&map.gammas, r, false)),
+                        (half(&map.dts, c, true), half(&map.gammas, r, true)),
+                    ],
+                    cell_color(*cell).filled(),
+                )
+            }))
+            .map_err(err)?;
+    }
+    for cell in Cell::ALL {
+        if map.cells.iter().flatten().any(|c| *c == cell) {
+            let color = cell_color(cell);
+            chart
+                .draw_series(std::iter::empty::<Rectangle<(f64, f64)>>())
+                .map_err(err)?
+                .label(cell.name())
+                .legend(move |(x, y)| {
+                    Rectangle::new([(x, y - 5), (x + 14, y + 5)], color.filled())
+                });
+        }
+    }
+    // The explicit limit as a curve in (Δt, γ_crit): γ_crit = μ_s N / (m (2/Δt)² − k).
+    let limit: Vec<(f64, f64)> = crate::stability::log_space(y0, y1, 200)
+        .into_iter()
+        .map(|g| (o.explicit_limit(g), g))
+        .filter(|(dt, _)| *dt >= x0 && *dt <= x1)
+        .collect();
+    chart
+        .draw_series(LineSeries::new(limit, BLACK.stroke_width(3)))
+        .map_err(err)?
+        .label("explicit limit Δt = 2/sqrt((k+K_f)/m)")
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], BLACK.stroke_width(3)));
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
+        .background_style(WHITE.mix(0.9))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 12))
+        .draw()
+        .map_err(err)?;
+    root.present().map_err(err)
+}

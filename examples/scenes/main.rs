@@ -1,0 +1,449 @@
+//! The main job: speed against accuracy for the contact laws, through the entry points a host
+//! calls (`fric_`, `gapcon_`).
+//!
+//!     cargo run --release --example scenes                 # everything (well under a minute)
+//!     cargo run --release --example scenes -- --quick      # reduced sweeps and maps
+//!     cargo run --release --example scenes -- --out DIR    # charts and CSV to DIR
+//!     cargo run --release --example scenes -- --point my.toml   # your own scene file only
+//!
+//! 1. Closed-form checks of every scene (F1, F2, F5 through `fric_`; T1, T2 through `gapcon_`).
+//! 2. Work-precision sweeps of the scenes in `examples/scenes/data/*.toml` (F6 stick-slip
+//!    oscillator, F1 pull through a spring, F2 circle): every method over its step sizes, error
+//!    against the closed form, wall time and `fric_` calls, each point held to the accuracy its
+//!    chart claims (dashed on the charts).
+//! 3. Stability maps of F6 over (Δt, γ_crit), with the explicit limit, and the check that the
+//!    measured explicit boundary is within one grid cell of 2/sqrt((k + K_f)/m).
+//!
+//! Writes `<out>/<scene>-work-precision.csv`, `<out>/<scene>-error-vs-time.svg`,
+//! `<out>/<scene>-error-vs-calls.svg`, `<out>/F6-map-<n>.csv` and `.svg`, and `<out>/checks.csv`
+//! (default `<out>` = `target/scenes`). Exits non-zero when a check or a claim fails. How to read
+//! and extend it: `docs/scenes.md`.
+
+mod charts;
+mod checks;
+mod circle;
+mod oscillator;
+mod pull;
+mod scene;
+mod stability;
+
+use std::fmt::Write as _;
+use std::io::{IsTerminal as _, Write as _};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use scene::{Point, Scene, run_point};
+use stability::{Map, measured_boundary, run_map, theoretical_boundary};
+
+/// The built-in scene files, in the order they run.
+const SCENES: [(&str, &str); 3] = [
+    ("data/f6.toml", include_str!("data/f6.toml")),
+    ("data/f1.toml", include_str!("data/f1.toml")),
+    ("data/f2.toml", include_str!("data/f2.toml")),
+];
+
+struct Options {
+    quick: bool,
+    out: PathBuf,
+    point: Option<PathBuf>,
+}
+
+fn usage() -> ! {
+    eprintln!("usage: scenes [--quick] [--out DIR] [--point FILE.toml]");
+    std::process::exit(2);
+}
+
+fn options() -> Options {
+    let mut o = Options {
+        quick: false,
+        out: Path::new(env!("CARGO_MANIFEST_DIR")).join("target/scenes"),
+        point: None,
+    };
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "--quick" => o.quick = true,
+            "--out" => o.out = args.next().map_or_else(|| usage(), PathBuf::from),
+            "--point" => o.point = Some(args.next().map_or_else(|| usage(), PathBuf::from)),
+            "-h" | "--help" => usage(),
+            other => {
+                eprintln!("scenes: unknown argument '{other}'");
+                usage();
+            }
+        }
+    }
+    o
+}
+
+/// A one-line progress indicator on stderr.
+struct Progress {
+    done: usize,
+    total: usize,
+    start: Instant,
+}
+
+impl Progress {
+    fn tick(&mut self, what: &str) {
+        self.done += 1;
+        let mut err = std::io::stderr();
+        let line = format!(
+            "[{:>3}/{}] {:>5.1}s  {what}",
+            self.done.min(self.total),
+            self.total,
+            self.start.elapsed().as_secs_f64()
+        );
+        if err.is_terminal() {
+            // One line, rewritten in place.
+            let _ = write!(err, "\r\x1b[2K{line}");
+        } else if self.done % 20 == 1 || self.done == self.total {
+            // A log file gets every twentieth step.
+            let _ = writeln!(err, "{line}");
+        }
+        let _ = err.flush();
+    }
+    fn finish(&self) {
+        if std::io::stderr().is_terminal() {
+            eprintln!();
+        }
+    }
+}
+
+/// Every work-precision point of a scene.
+pub fn sweep(scene: &Scene, quick: bool, mut tick: impl FnMut(&str)) -> Vec<Point> {
+    let steps = if quick {
+        &scene.file.quick_steps
+    } else {
+        &scene.file.steps
+    };
+    let mut points = Vec::new();
+    for m in &scene.methods {
+        for &s in steps {
+            let p = run_point(scene, m, s);
+            tick(&format!("{}: {} at step {s}", scene.file.id, m.spec.label));
+            points.push(p);
+        }
+    }
+    points
+}
+
+fn write_points(path: &Path, points: &[Point]) -> Result<(), String> {
+    let mut s = String::from(
+        "scene,method,step,relative_step,error,claim,meets_claim,verdict,calls,wall_s,ns_per_call,details\n",
+    );
+    for p in points {
+        let _ = writeln!(
+            s,
+            "{},\"{}\",{:e},{:e},{:e},{:e},{},{},{},{:e},{:.1},\"{}\"",
+            p.scene,
+            p.method,
+            p.step,
+            p.relative_step,
+            p.error,
+            p.claim,
+            p.meets_claim(),
+            p.verdict,
+            p.calls,
+            p.wall,
+            p.wall / p.calls.max(1) as f64 * 1e9,
+            p.details
+                .iter()
+                .map(|d| format!("{d:e}"))
+                .collect::<Vec<_>>()
+                .join(";")
+        );
+    }
+    std::fs::write(path, s).map_err(|e| format!("cannot write {}: {e}", path.display()))
+}
+
+fn write_map(path: &Path, map: &Map) -> Result<(), String> {
+    let mut s = String::from("dt,gamma_crit,class,error\n");
+    for (r, row) in map.cells.iter().enumerate() {
+        for (c, cell) in row.iter().enumerate() {
+            let _ = writeln!(
+                s,
+                "{:e},{:e},{},{:e}",
+                map.dts[c],
+                map.gammas[r],
+                cell.name(),
+                map.errors[r][c]
+            );
+        }
+    }
+    std::fs::write(path, s).map_err(|e| format!("cannot write {}: {e}", path.display()))
+}
+
+fn write_checks(path: &Path, rows: &[checks::Row]) -> Result<(), String> {
+    let mut s = String::from("scene,case,quantity,closed_form,computed,error,tolerance,ok\n");
+    for r in rows {
+        let _ = writeln!(
+            s,
+            "{},\"{}\",\"{}\",{:e},{:e},{:e},{:e},{}",
+            r.scene,
+            r.case,
+            r.quantity,
+            r.exact,
+            r.computed,
+            r.error(),
+            r.tolerance,
+            r.ok()
+        );
+    }
+    std::fs::write(path, s).map_err(|e| format!("cannot write {}: {e}", path.display()))
+}
+
+fn print_points(points: &[Point]) -> usize {
+    println!(
+        "{:<5} {:<34} {:>9} {:>10} {:>10} {:>10} {:>8} {:>11}  {:<14} claim met",
+        "scene", "method", "step", "error", "claim", "run (ms)", "calls", "ns/call", "verdict"
+    );
+    let mut failed = 0;
+    for p in points {
+        if !p.meets_claim() {
+            failed += 1;
+        }
+        println!(
+            "{:<5} {:<34} {:>9.3e} {:>10.2e} {:>10} {:>10.3} {:>8} {:>11.1}  {:<14} {}",
+            p.scene,
+            p.method,
+            p.step,
+            p.error,
+            if p.claim.is_finite() {
+                format!("{:.2e}", p.claim)
+            } else {
+                "-".into()
+            },
+            p.wall * 1e3,
+            p.calls,
+            p.wall / p.calls.max(1) as f64 * 1e9,
+            p.verdict,
+            if p.meets_claim() { "yes" } else { "NO" }
+        );
+    }
+    failed
+}
+
+fn main() {
+    let opts = options();
+    if let Err(e) = std::fs::create_dir_all(&opts.out) {
+        eprintln!("scenes: cannot create {}: {e}", opts.out.display());
+        std::process::exit(2);
+    }
+    let sources: Vec<(String, String)> = match &opts.point {
+        Some(path) => match std::fs::read_to_string(path) {
+            Ok(text) => vec![(path.display().to_string(), text)],
+            Err(e) => {
+                eprintln!("scenes: cannot read {}: {e}", path.display());
+                std::process::exit(2);
+            }
+        },
+        None => SCENES
+            .iter()
+            .map(|(n, t)| ((*n).to_string(), (*t).to_string()))
+            .collect(),
+    };
+    let scenes: Vec<Scene> = match sources
+        .iter()
+        .map(|(origin, text)| Scene::parse(text, origin))
+        .collect::<Result<_, _>>()
+    {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("scenes: {e}");
+            std::process::exit(2);
+        }
+    };
+    let total = scenes
+        .iter()
+        .map(|s| {
+            let steps = if opts.quick {
+                s.file.quick_steps.len()
+            } else {
+                s.file.steps.len()
+            };
+            s.methods.len() * steps
+                + s.file
+                    .maps
+                    .iter()
+                    .map(|m| {
+                        if opts.quick {
+                            m.quick_points[1]
+                        } else {
+                            m.gamma_points
+                        }
+                    })
+                    .sum::<usize>()
+        })
+        .sum::<usize>()
+        + usize::from(opts.point.is_none());
+    let mut progress = Progress {
+        done: 0,
+        total,
+        start: Instant::now(),
+    };
+    println!(
+        "interfacial {} — speed against accuracy through fric_ and gapcon_{}\n",
+        interfacial::VERSION,
+        if opts.quick { " (--quick)" } else { "" }
+    );
+    let mut failures = 0;
+    let mut check_rows = Vec::new();
+    if opts.point.is_none() {
+        progress.tick("closed-form checks (F1, F2, F5, T1, T2)");
+        match checks::run() {
+            Ok(rows) => check_rows = rows,
+            Err(e) => {
+                eprintln!("\nscenes: {e}");
+                std::process::exit(2);
+            }
+        }
+    }
+    let mut all_points = Vec::new();
+    let mut maps: Vec<(usize, Map)> = Vec::new();
+    let mut outputs = Vec::new();
+    for scene in &scenes {
+        let points = sweep(scene, opts.quick, |w| progress.tick(w));
+        let id = &scene.file.id;
+        let csv = opts.out.join(format!("{id}-work-precision.csv"));
+        let time_svg = opts.out.join(format!("{id}-error-vs-time.svg"));
+        let calls_svg = opts.out.join(format!("{id}-error-vs-calls.svg"));
+        // Where the curves leave room for the legend.
+        let legend = || {
+            if scene.kind == "pull" {
+                plotters::prelude::SeriesLabelPosition::MiddleRight
+            } else {
+                plotters::prelude::SeriesLabelPosition::LowerLeft
+            }
+        };
+        let error_label = match scene.kind {
+            "oscillator" => "max relative error (T, x₂, energy/cycle)",
+            "pull" => "max |γ − γ_exact| / (τ_c/K)",
+            _ => "lag angle error (rad)",
+        };
+        let written = write_points(&csv, &points)
+            .and_then(|()| {
+                charts::work_precision(
+                    &time_svg,
+                    &format!("{}: error against wall time", scene.file.title),
+                    "wall time per run (s)",
+                    error_label,
+                    &points,
+                    legend(),
+                    |p| p.wall,
+                )
+            })
+            .and_then(|()| {
+                charts::work_precision(
+                    &calls_svg,
+                    &format!("{}: error against fric_ calls", scene.file.title),
+                    "fric_ calls per run (Newton iterations included)",
+                    error_label,
+                    &points,
+                    legend(),
+                    |p| p.calls as f64,
+                )
+            });
+        if let Err(e) = written {
+            eprintln!("\nscenes: {e}");
+            failures += 1;
+        }
+        outputs.extend([csv, time_svg, calls_svg]);
+        all_points.extend(points);
+        if let Some(o) = &scene.file.oscillator {
+            for (i, spec) in scene.file.maps.iter().enumerate() {
+                let label = spec.label.clone();
+                match run_map(o, spec, opts.quick, |r, n| {
+                    progress.tick(&format!("{id} map '{label}': row {r}/{n}"));
+                }) {
+                    Ok(map) => {
+                        let csv = opts.out.join(format!("{id}-map-{}.csv", i + 1));
+                        let svg = opts.out.join(format!("{id}-map-{}.svg", i + 1));
+                        if let Err(e) = write_map(&csv, &map)
+                            .and_then(|()| charts::stability_map(&svg, o, &map))
+                        {
+                            eprintln!("\nscenes: {e}");
+                            failures += 1;
+                        }
+                        outputs.extend([csv, svg]);
+                        maps.push((
+                            scenes.iter().position(|s| s.file.id == *id).unwrap_or(0),
+                            map,
+                        ));
+                    }
+                    Err(e) => {
+                        eprintln!("\nscenes: {e}");
+                        failures += 1;
+                    }
+                }
+            }
+        }
+    }
+    progress.finish();
+
+    if !check_rows.is_empty() {
+        println!("Closed-form checks\n");
+        failures += checks::print(&check_rows);
+        let path = opts.out.join("checks.csv");
+        if let Err(e) = write_checks(&path, &check_rows) {
+            eprintln!("scenes: {e}");
+            failures += 1;
+        }
+        outputs.insert(0, path);
+        println!();
+    }
+    println!("Work-precision (error against the closed form; claim = the chart's stated bound)\n");
+    failures += print_points(&all_points);
+    for (si, map) in &maps {
+        let Some(o) = &scenes[*si].file.oscillator else {
+            continue;
+        };
+        println!("\nStability map: {}", map.spec.label);
+        let explicit = map.integrator == oscillator::Integrator::Explicit;
+        for r in 0..map.gammas.len() {
+            let counts = stability::Cell::ALL
+                .iter()
+                .map(|c| {
+                    let n = map.cells[r].iter().filter(|x| *x == c).count();
+                    format!("{} {n}", c.name())
+                })
+                .collect::<Vec<_>>()
+                .join(", ");
+            let boundary = if explicit {
+                let m = measured_boundary(map, r);
+                let t = theoretical_boundary(o, map, r);
+                let ok = match (m, t) {
+                    (Some(m), Some(t)) => m.abs_diff(t) <= 1,
+                    (None, None) => true,
+                    _ => false,
+                };
+                if !ok {
+                    failures += 1;
+                }
+                format!(
+                    "  limit {:.3e}, first unstable Δt {} ({})",
+                    o.explicit_limit(map.gammas[r]),
+                    m.map_or("none".into(), |c| format!("{:.3e}", map.dts[c])),
+                    if ok { "within one cell" } else { "MISMATCH" }
+                )
+            } else {
+                String::new()
+            };
+            println!("  γ_crit {:.1e}: {counts}{boundary}", map.gammas[r]);
+        }
+    }
+    println!("\nWritten:");
+    for p in &outputs {
+        println!("  {}", p.display());
+    }
+    println!(
+        "\n{} in {:.1} s; {failures} failure(s)",
+        if failures == 0 {
+            "all checks and claims met"
+        } else {
+            "FAILED"
+        },
+        progress.start.elapsed().as_secs_f64()
+    );
+    if failures > 0 {
+        std::process::exit(1);
+    }
+}

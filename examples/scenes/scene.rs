@@ -1,0 +1,383 @@
+//! Scene definitions as data (one small TOML file per scene, `examples/scenes/data/*.toml`, or a
+//! user's own file given with `--point FILE.toml`) and the work-precision sweep that runs them.
+//!
+//! A file names the scene's closed form (`kind`), its parameters, the step sizes of the sweep and
+//! the methods, one `[[method]]` table each. Every method states the accuracy its chart claims:
+//! error ≤ `claim_floor` + `claim_slope` × (step / reference step), with the reference step the
+//! scene's natural time (F6: the period T; F2: one radian of the circle). The test
+//! `tests/scenes_driver.rs` holds every method to its claim.
+//!
+//! Adding a method: one more `[[method]]` table. Adding a kind of method (a rate law solved
+//! implicitly or with μ frozen, the adhesive law): a new `law` value, a variant of [`Law`] and a
+//! match arm in [`Method::parse`] and in [`run_point`] — nothing else changes.
+
+use serde::Deserialize;
+
+use crate::circle::Circle;
+use crate::oscillator::{Integrator, Oscillator, Stick, Verdict, simulate};
+use crate::pull::Pull;
+
+/// A scene file.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneFile {
+    /// Short id, e.g. "F6".
+    pub id: String,
+    /// Title for tables and charts.
+    pub title: String,
+    /// F6 parameters (kind = "oscillator").
+    pub oscillator: Option<Oscillator>,
+    /// F2 parameters (kind = "circle").
+    pub circle: Option<Circle>,
+    /// F1 with a spring host (kind = "pull").
+    pub pull: Option<Pull>,
+    /// Step sizes of the full sweep (F6: Δt; F2: increments per turn; F1: increments per
+    /// stick stretch τ_c/K).
+    pub steps: Vec<f64>,
+    /// Step sizes of the reduced sweep (`--quick`, and the test).
+    pub quick_steps: Vec<f64>,
+    /// The methods.
+    #[serde(rename = "method")]
+    pub methods: Vec<MethodSpec>,
+    /// Stability maps (F6 only).
+    #[serde(default, rename = "map")]
+    pub maps: Vec<MapSpec>,
+}
+
+/// One `[[method]]` table.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MethodSpec {
+    /// Legend text.
+    pub label: String,
+    /// The friction law: "coulomb" (the only one on this branch; rate laws and the adhesive law
+    /// join as new values).
+    #[serde(default = "coulomb")]
+    pub law: String,
+    /// F6: "explicit" (central differences), "newmark" or "hht"; F2: "return-map"; F1:
+    /// "quasi-static".
+    pub integrator: String,
+    /// "elastic" (penalty, needs `gamma_crit`) or "exact" (LM = 1).
+    pub stick: String,
+    /// Allowable elastic slip γ_crit.
+    pub gamma_crit: Option<f64>,
+    /// HHT α ∈ [−1/3, 0] (default −0.1 for "hht").
+    pub alpha: Option<f64>,
+    /// Claimed error at any step of the sweep: floor + slope × step/reference.
+    pub claim_floor: f64,
+    /// See `claim_floor`.
+    pub claim_slope: f64,
+    /// Claims hold only up to this step (e.g. the explicit stability limit); default: all.
+    pub claim_max_step: Option<f64>,
+}
+
+fn coulomb() -> String {
+    "coulomb".into()
+}
+
+/// A `[[map]]` table: a stability map over (Δt, γ_crit) for one integrator.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MapSpec {
+    /// Title of the map.
+    pub label: String,
+    /// "explicit", "newmark" or "hht".
+    pub integrator: String,
+    /// HHT α.
+    pub alpha: Option<f64>,
+    /// Δt range (log-spaced) and number of columns.
+    pub dt: [f64; 2],
+    /// Columns (full run).
+    pub dt_points: usize,
+    /// γ_crit range (log-spaced).
+    pub gamma_crit: [f64; 2],
+    /// Rows (full run).
+    pub gamma_points: usize,
+    /// Grid in `--quick` runs (columns, rows).
+    pub quick_points: [usize; 2],
+    /// Relative error below which a completed run counts as accurate.
+    pub accurate: f64,
+}
+
+/// A law.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Law {
+    /// The extended Coulomb law through `fric_` (`PROPS(1) = 1`).
+    Coulomb,
+}
+
+/// A parsed method.
+#[derive(Clone, Debug)]
+pub struct Method {
+    /// The table it came from.
+    pub spec: MethodSpec,
+    /// The law.
+    pub law: Law,
+    /// F6 time integration (unused for F2).
+    pub integrator: Integrator,
+    /// Stick enforcement.
+    pub stick: Stick,
+}
+
+impl Method {
+    /// Checks a `[[method]]` table.
+    pub fn parse(spec: &MethodSpec, kind: &str) -> Result<Method, String> {
+        let law = match spec.law.as_str() {
+            "coulomb" => Law::Coulomb,
+            other => {
+                return Err(format!(
+                    "method '{}': law '{other}' is not available (known: coulomb)",
+                    spec.label
+                ));
+            }
+        };
+        let stick = match (spec.stick.as_str(), spec.gamma_crit) {
+            ("elastic", Some(g)) if g.is_finite() && g > 0.0 => Stick::Elastic { gamma_crit: g },
+            ("elastic", _) => {
+                return Err(format!(
+                    "method '{}': elastic stick needs gamma_crit > 0",
+                    spec.label
+                ));
+            }
+            ("exact", _) => Stick::Exact,
+            (other, _) => {
+                return Err(format!(
+                    "method '{}': stick '{other}' (expected elastic or exact)",
+                    spec.label
+                ));
+            }
+        };
+        let integrator = match (kind, spec.integrator.as_str()) {
+            ("oscillator", "explicit") if stick != Stick::Exact => Integrator::Explicit,
+            ("oscillator", "explicit") => {
+                return Err(format!(
+                    "method '{}': explicit stepping needs elastic stick (no multipliers)",
+                    spec.label
+                ));
+            }
+            ("oscillator", "newmark") => Integrator::Implicit { alpha: 0.0 },
+            ("oscillator", "hht") => {
+                let alpha = spec.alpha.unwrap_or(-0.1);
+                if !(-1.0 / 3.0..=0.0).contains(&alpha) {
+                    return Err(format!(
+                        "method '{}': HHT alpha = {alpha} outside [-1/3, 0]",
+                        spec.label
+                    ));
+                }
+                Integrator::Implicit { alpha }
+            }
+            ("circle", "return-map") if matches!(stick, Stick::Elastic { .. }) => {
+                Integrator::Explicit
+            }
+            ("pull", "quasi-static") => Integrator::Explicit,
+            (k, i) => {
+                return Err(format!(
+                    "method '{}': integrator '{i}' does not apply to a {k} scene",
+                    spec.label
+                ));
+            }
+        };
+        for (name, v) in [
+            ("claim_floor", spec.claim_floor),
+            ("claim_slope", spec.claim_slope),
+        ] {
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(format!(
+                    "method '{}': {name} = {v} must be finite and ≥ 0",
+                    spec.label
+                ));
+            }
+        }
+        Ok(Method {
+            spec: spec.clone(),
+            law,
+            integrator,
+            stick,
+        })
+    }
+}
+
+/// A parsed scene.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    /// The file.
+    pub file: SceneFile,
+    /// "oscillator" or "circle".
+    pub kind: &'static str,
+    /// Parsed methods, in file order.
+    pub methods: Vec<Method>,
+}
+
+impl Scene {
+    /// Parses and checks a scene file's text (`origin` names it in messages).
+    pub fn parse(text: &str, origin: &str) -> Result<Scene, String> {
+        let file: SceneFile = toml::from_str(text).map_err(|e| format!("{origin}: {e}"))?;
+        let kind = match (&file.oscillator, &file.circle, &file.pull) {
+            (Some(o), None, None) => {
+                o.validate()
+                    .map_err(|e| format!("{origin}: [oscillator] {e}"))?;
+                "oscillator"
+            }
+            (None, Some(c), None) => {
+                c.validate()
+                    .map_err(|e| format!("{origin}: [circle] {e}"))?;
+                "circle"
+            }
+            (None, None, Some(p)) => {
+                p.validate().map_err(|e| format!("{origin}: [pull] {e}"))?;
+                "pull"
+            }
+            _ => {
+                return Err(format!(
+                    "{origin}: give exactly one of [oscillator] (F6), [circle] (F2) or [pull] (F1)"
+                ));
+            }
+        };
+        for (name, steps) in [("steps", &file.steps), ("quick_steps", &file.quick_steps)] {
+            if steps.is_empty() || steps.iter().any(|s| !(s.is_finite() && *s > 0.0)) {
+                return Err(format!(
+                    "{origin}: {name} must be a non-empty list of positive steps"
+                ));
+            }
+        }
+        let methods = file
+            .methods
+            .iter()
+            .map(|m| Method::parse(m, kind).map_err(|e| format!("{origin}: {e}")))
+            .collect::<Result<Vec<_>, _>>()?;
+        if methods.is_empty() {
+            return Err(format!("{origin}: no [[method]]"));
+        }
+        if !file.maps.is_empty() && kind != "oscillator" {
+            return Err(format!(
+                "{origin}: [[map]] applies to oscillator scenes only"
+            ));
+        }
+        Ok(Scene {
+            file,
+            kind,
+            methods,
+        })
+    }
+
+    /// The step in claim units: F6 Δt/T; F2 Δθ in radians; F1 Δu/(τ_c/K).
+    pub fn reference_step(&self, step: f64) -> f64 {
+        match (&self.file.oscillator, &self.file.circle) {
+            (Some(o), _) => step / o.period(),
+            // Increments per turn → Δθ in radians.
+            (_, Some(_)) => 2.0 * std::f64::consts::PI / step,
+            _ => 1.0 / step,
+        }
+    }
+}
+
+/// One point of a work-precision curve.
+#[derive(Clone, Debug)]
+pub struct Point {
+    /// Scene id.
+    pub scene: String,
+    /// Method label.
+    pub method: String,
+    /// Step (Δt, or increments per turn).
+    pub step: f64,
+    /// The step in claim units (Δt/T, or Δθ).
+    pub relative_step: f64,
+    /// Error against the closed form (relative for F6, radians for F2); ∞ when not measurable.
+    pub error: f64,
+    /// The per-quantity errors (F6: T, x₂, energy).
+    pub details: Vec<f64>,
+    /// `fric_` calls in the run.
+    pub calls: usize,
+    /// Wall time of the run, seconds.
+    pub wall: f64,
+    /// How the run ended ("ok", "chattering", "diverged", "newton-failed", "cut-back").
+    pub verdict: &'static str,
+    /// The claimed bound at this step (∞ when no claim applies).
+    pub claim: f64,
+}
+
+impl Point {
+    /// Meets its claim (points without a claim pass).
+    pub fn meets_claim(&self) -> bool {
+        !self.claim.is_finite() || self.error <= self.claim
+    }
+}
+
+/// Runs one method at one step.
+pub fn run_point(scene: &Scene, method: &Method, step: f64) -> Point {
+    let Law::Coulomb = method.law;
+    let relative_step = scene.reference_step(step);
+    let spec = &method.spec;
+    let claim = if spec.claim_max_step.is_none_or(|m| step <= m) {
+        spec.claim_floor + spec.claim_slope * relative_step
+    } else {
+        f64::INFINITY
+    };
+    let mut p = Point {
+        scene: scene.file.id.clone(),
+        method: spec.label.clone(),
+        step,
+        relative_step,
+        error: f64::INFINITY,
+        details: Vec::new(),
+        calls: 0,
+        wall: 0.0,
+        verdict: "ok",
+        claim,
+    };
+    if let Some(o) = &scene.file.oscillator {
+        // Timing: the best of three runs (the first one also pays for cold caches).
+        let mut run = simulate(o, method.integrator, method.stick, step);
+        for _ in 0..2 {
+            let again = simulate(o, method.integrator, method.stick, step);
+            if again.wall < run.wall {
+                run = again;
+            }
+        }
+        p.error = run.error();
+        p.details = run.errors.to_vec();
+        p.calls = run.calls;
+        p.wall = run.wall;
+        p.verdict = match run.verdict {
+            Verdict::Completed if run.stick_unstable(o) => "unstable",
+            Verdict::Completed if run.chattering() => "chattering",
+            Verdict::Completed => "ok",
+            Verdict::Diverged => "diverged",
+            Verdict::NewtonFailed => "newton-failed",
+            Verdict::CutBack => "cut-back",
+        };
+    } else if let Some(c) = &scene.file.circle {
+        let gamma_crit = match method.stick {
+            Stick::Elastic { gamma_crit } => gamma_crit,
+            Stick::Exact => c.radius,
+        };
+        let per_turn = step.round().max(3.0) as usize;
+        let mut run = c.run(gamma_crit, per_turn);
+        for _ in 0..2 {
+            let again = c.run(gamma_crit, per_turn);
+            if again.wall < run.wall {
+                run = again;
+            }
+        }
+        p.error = run.error;
+        p.details = vec![run.error, run.magnitude_error / (c.mu * c.pressure)];
+        p.calls = run.calls;
+        p.wall = run.wall;
+        p.verdict = if run.ok { "ok" } else { "cut-back" };
+    } else if let Some(f1) = &scene.file.pull {
+        let per_stretch = step.round().max(1.0) as usize;
+        let mut run = f1.run(method.stick, per_stretch);
+        for _ in 0..2 {
+            let again = f1.run(method.stick, per_stretch);
+            if again.wall < run.wall {
+                run = again;
+            }
+        }
+        p.error = run.error;
+        p.details = vec![run.error];
+        p.calls = run.calls;
+        p.wall = run.wall;
+        p.verdict = if run.ok { "ok" } else { "newton-failed" };
+    }
+    p
+}

@@ -1,0 +1,624 @@
+//! The batch entry point: many independent contact points of one interaction in one call, the
+//! fast path for hosts that own their contact points in arrays (explicit codes, GPU-style
+//! layouts, the scene driver's sweeps).
+//!
+//! Layout: structure of arrays with a leading dimension `ld ≥ npoints`. Component `a` (0-based)
+//! of point `i` of an array with several components per point is at `x[i + a·ld]`; `DDTDDG(a,b)`
+//! of point `i` is at `ddtddg[i + (a + b·NFDIR)·ld]` (the Fortran order of `DDTDDG` per point).
+//! Arrays with one entry per point (`lm`, `press`, …) are indexed by `i` alone.
+//!
+//! Each point gets exactly what `fric_` would give it with the same `PROPS`, `NSTATV`, `DTIME`
+//! and inputs: the same law, the same code ([`crate::laws::coulomb::Coulomb::update`]), so the
+//! results are bit-identical (`tests/batch.rs` checks it on random inputs). What is saved is
+//! per-call overhead: `PROPS` is read once, sizes are checked once, one panic guard for the
+//! whole batch, no pointer chasing per argument.
+
+use std::ffi::c_int;
+
+use super::{Fault, IflStatus, boundary};
+use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
+use crate::props::{FrictionLaw, friction_law};
+use crate::report::{Site, report};
+use crate::{CUTBACK_RATIO, LawError};
+
+/// The arrays of a batch of friction points, structure-of-arrays with leading dimension `ld`
+/// (see the module documentation). Inputs are shared borrows, outputs mutable ones; optional
+/// outputs (`dslip`, `sed`, `sfd`) may be left out.
+#[derive(Debug)]
+pub struct FricBatch<'a> {
+    /// Number of points.
+    pub npoints: usize,
+    /// Leading dimension: distance between components of one point, `ld ≥ npoints` (pad it a
+    /// little above a multiple of 512 for speed).
+    pub ld: usize,
+    /// Friction directions per point, 1 or 2 (`NFDIR`).
+    pub nfdir: usize,
+    /// Rows of `statev` (`NSTATV`, at least 3 for the Coulomb law).
+    pub nstatv: usize,
+    /// `LM` per point, in/out (0 motion, 1 exact stick, 2 frictionless: point left alone).
+    pub lm: &'a mut [c_int],
+    /// `TAU`, NFDIR components, in/out.
+    pub tau: &'a mut [f64],
+    /// `DDTDDG`, NFDIR² components, out.
+    pub ddtddg: &'a mut [f64],
+    /// `DDTDDP`, NFDIR components, out.
+    pub ddtddp: &'a mut [f64],
+    /// `DSLIP`, NFDIR components, out (optional).
+    pub dslip: Option<&'a mut [f64]>,
+    /// `SED` per point, out (optional).
+    pub sed: Option<&'a mut [f64]>,
+    /// `SFD` per point, out (optional).
+    pub sfd: Option<&'a mut [f64]>,
+    /// `STATEV`, `nstatv` components, in/out (the law uses the first 3).
+    pub statev: &'a mut [f64],
+    /// `DGAM`, NFDIR components.
+    pub dgam: &'a [f64],
+    /// `TAULM`, NFDIR components, read only for points with `LM = 1` on entry (optional).
+    pub taulm: Option<&'a [f64]>,
+    /// `PRESS` per point.
+    pub press: &'a [f64],
+    /// `DPRESS` per point.
+    pub dpress: &'a [f64],
+    /// `CHRLNGTH` per point.
+    pub chrlngth: &'a [f64],
+}
+
+/// Why [`fric_batch`] did not complete every point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BatchError {
+    /// The first failing point (0-based), or `None` for a fault of the whole batch (sizes,
+    /// `PROPS`, `NFDIR`, `NSTATV`), in which case no point was touched.
+    pub point: Option<usize>,
+    /// How many points failed.
+    pub failed: usize,
+    /// The cause (of the first failing point).
+    pub error: LawError,
+}
+
+impl std::fmt::Display for BatchError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.point {
+            Some(i) => write!(
+                f,
+                "{} point(s) failed; first: point {i}: {}",
+                self.failed, self.error
+            ),
+            None => write!(f, "{}", self.error),
+        }
+    }
+}
+
+impl std::error::Error for BatchError {}
+
+/// Runs the friction law of `props` (the `PROPS` layout of `fric_`, `docs/props.md`) on every
+/// point of `batch`, with time increment `dtime` for all of them.
+///
+/// Per point, the outputs are those of `fric_`. A point whose input is unusable gets `fric_`'s
+/// failure outputs (`LM`, `TAU`, `STATEV` unchanged; `DDTDDG`, `DDTDDP`, `DSLIP`, `SFD` zero)
+/// and the others are still computed; `pnewdt` is only ever lowered: to `CUTBACK_RATIO` (0.25)
+/// when any point failed, or to a law's suggestion. Messages are reported as `fric_` reports
+/// them (once per cause, routine `ifl_fric_batch`, place "batch point i").
+///
+/// # Errors
+/// A fault of the whole batch (array too short for `ld`, `npoints` and the component count,
+/// `ld < npoints`, bad `PROPS`, `NFDIR` not 1 or 2, `NSTATV < 3`): nothing is written but
+/// `pnewdt`. Otherwise the first failing point and the number of failures.
+pub fn fric_batch(
+    props: &[f64],
+    dtime: f64,
+    batch: &mut FricBatch<'_>,
+    pnewdt: &mut f64,
+) -> Result<(), BatchError> {
+    let whole = |error: LawError| BatchError {
+        point: None,
+        failed: batch.npoints,
+        error,
+    };
+    let checked = check_sizes(batch)
+        .and_then(|()| friction_law(props))
+        .map_err(whole);
+    let law = match checked {
+        Ok(FrictionLaw::Coulomb(law)) => law,
+        Err(e) => {
+            lower(pnewdt, CUTBACK_RATIO);
+            return Err(e);
+        }
+    };
+    let result = match batch.nfdir {
+        1 => run::<1>(&law, dtime, batch, pnewdt),
+        _ => run::<2>(&law, dtime, batch, pnewdt),
+    };
+    match result {
+        None => Ok(()),
+        Some(e) => Err(e),
+    }
+}
+
+fn lower(pnewdt: &mut f64, ratio: f64) {
+    if pnewdt.is_nan() || ratio < *pnewdt {
+        *pnewdt = ratio;
+    }
+}
+
+/// Length an array of `components` rows needs: `ld·(components − 1) + npoints`.
+fn needed(b: &FricBatch<'_>, components: usize) -> Option<usize> {
+    if b.npoints == 0 || components == 0 {
+        return Some(0);
+    }
+    b.ld.checked_mul(components - 1)?.checked_add(b.npoints)
+}
+
+fn check_sizes(b: &FricBatch<'_>) -> Result<(), LawError> {
+    if b.nfdir != 1 && b.nfdir != 2 {
+        return Err(LawError::Parameter(format!(
+            "NFDIR = {}; expected 1 (2-D) or 2 (3-D)",
+            b.nfdir
+        )));
+    }
+    if b.nstatv < CoulombState::NSTATV {
+        return Err(LawError::Parameter(format!(
+            "NSTATV = {} but the Coulomb law needs {}",
+            b.nstatv,
+            CoulombState::NSTATV
+        )));
+    }
+    if b.ld < b.npoints {
+        return Err(LawError::Parameter(format!(
+            "leading dimension ld = {} is less than npoints = {}",
+            b.ld, b.npoints
+        )));
+    }
+    let n = b.nfdir;
+    let arrays: [(&str, Option<usize>, usize); 11] = [
+        ("lm", Some(b.lm.len()), 1),
+        ("tau", Some(b.tau.len()), n),
+        ("ddtddg", Some(b.ddtddg.len()), n * n),
+        ("ddtddp", Some(b.ddtddp.len()), n),
+        ("dslip", b.dslip.as_ref().map(|s| s.len()), n),
+        ("sed", b.sed.as_ref().map(|s| s.len()), 1),
+        ("sfd", b.sfd.as_ref().map(|s| s.len()), 1),
+        ("statev", Some(b.statev.len()), b.nstatv),
+        ("dgam", Some(b.dgam.len()), n),
+        ("taulm", b.taulm.map(<[f64]>::len), n),
+        ("press", Some(b.press.len()), 1),
+    ];
+    let tail: [(&str, Option<usize>, usize); 2] = [
+        ("dpress", Some(b.dpress.len()), 1),
+        ("chrlngth", Some(b.chrlngth.len()), 1),
+    ];
+    for (name, len, components) in arrays.into_iter().chain(tail) {
+        let Some(len) = len else { continue };
+        let need = needed(b, components)
+            .ok_or_else(|| LawError::Parameter(format!("{name}: ld·{components} overflows")))?;
+        if len < need {
+            return Err(LawError::Parameter(format!(
+                "{name} holds {len} values but {components} component(s) of {} points with \
+                 ld = {} need {need}",
+                b.npoints, b.ld
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Up to four rows of `n` entries, `ld` apart, borrowed from a structure-of-arrays slice whose
+/// length `check_sizes` has verified; rows past `rows` are empty.
+fn rows_mut(s: &mut [f64], ld: usize, n: usize, rows: usize) -> [&mut [f64]; 4] {
+    let mut out: [&mut [f64]; 4] = [&mut [], &mut [], &mut [], &mut []];
+    let mut rest = s;
+    for (r, slot) in out.iter_mut().enumerate().take(rows) {
+        let taken = std::mem::take(&mut rest);
+        let (row, tail) = if r + 1 < rows {
+            taken.split_at_mut(ld)
+        } else {
+            (taken, &mut [][..])
+        };
+        *slot = &mut row[..n];
+        rest = tail;
+    }
+    out
+}
+
+/// As [`rows_mut`], shared.
+fn rows(s: &[f64], ld: usize, n: usize, rows: usize) -> [&[f64]; 4] {
+    let mut out: [&[f64]; 4] = [&[]; 4];
+    for (r, slot) in out.iter_mut().enumerate().take(rows) {
+        *slot = &s[r * ld..r * ld + n];
+    }
+    out
+}
+
+/// Views of one batch, each row exactly `npoints` long: the loop works on locals, not through
+/// the `FricBatch` borrow, so the compiler keeps the row pointers in registers.
+struct Views<'b> {
+    lm: &'b mut [c_int],
+    tau: [&'b mut [f64]; 4],
+    ddtddg: [&'b mut [f64]; 4],
+    ddtddp: [&'b mut [f64]; 4],
+    dslip: Option<[&'b mut [f64]; 4]>,
+    sed: Option<&'b mut [f64]>,
+    sfd: Option<&'b mut [f64]>,
+    statev: [&'b mut [f64]; 4],
+    dgam: [&'b [f64]; 4],
+    taulm: Option<[&'b [f64]; 4]>,
+    press: &'b [f64],
+    dpress: &'b [f64],
+    chrlngth: &'b [f64],
+}
+
+/// The loop over points, one NFDIR. Returns the first point failure, if any.
+#[inline(always)]
+fn run<const N: usize>(
+    law: &Coulomb,
+    dtime: f64,
+    b: &mut FricBatch<'_>,
+    pnewdt: &mut f64,
+) -> Option<BatchError> {
+    let (n, ld) = (b.npoints, b.ld);
+    if n == 0 {
+        return None;
+    }
+    let mut v = Views {
+        lm: &mut b.lm[..n],
+        tau: rows_mut(b.tau, ld, n, N),
+        ddtddg: rows_mut(b.ddtddg, ld, n, N * N),
+        ddtddp: rows_mut(b.ddtddp, ld, n, N),
+        dslip: b.dslip.as_deref_mut().map(|d| rows_mut(d, ld, n, N)),
+        sed: b.sed.as_deref_mut().map(|s| &mut s[..n]),
+        sfd: b.sfd.as_deref_mut().map(|s| &mut s[..n]),
+        statev: rows_mut(b.statev, ld, n, CoulombState::NSTATV),
+        dgam: rows(b.dgam, ld, n, N),
+        taulm: b.taulm.map(|t| rows(t, ld, n, N)),
+        press: &b.press[..n],
+        dpress: &b.dpress[..n],
+        chrlngth: &b.chrlngth[..n],
+    };
+    let mut first: Option<(usize, LawError)> = None;
+    let mut failed = 0usize;
+    let mut ratio = f64::INFINITY;
+    for i in 0..n {
+        match point::<N>(law, dtime, &mut v, i) {
+            Ok(r) => ratio = ratio.min(r),
+            Err(e) => {
+                failed += 1;
+                fail_point::<N>(&mut v, i, &e);
+                if first.is_none() {
+                    first = Some((i, e));
+                }
+            }
+        }
+    }
+    if failed > 0 {
+        ratio = ratio.min(CUTBACK_RATIO);
+    }
+    if ratio.is_finite() {
+        lower(pnewdt, ratio);
+    }
+    first.map(|(i, error)| BatchError {
+        point: Some(i),
+        failed,
+        error,
+    })
+}
+
+/// One point: reads its inputs, updates it and writes its outputs, as `fric_` does (everything
+/// computed before the first write). Returns the law's suggested step ratio.
+#[inline(always)]
+fn point<const N: usize>(
+    law: &Coulomb,
+    dtime: f64,
+    v: &mut Views<'_>,
+    i: usize,
+) -> Result<f64, LawError> {
+    let entry = match v.lm[i] {
+        0 => EntryFlag::Motion,
+        1 => EntryFlag::ExactStick,
+        2 => return Ok(f64::INFINITY),
+        other => return Err(bad_lm(other)),
+    };
+    let mut inc = Increment::<N> {
+        pressure: v.press[i],
+        dpressure: v.dpress[i],
+        dtime,
+        characteristic_length: v.chrlngth[i],
+        entry,
+        ..Increment::default()
+    };
+    for a in 0..N {
+        inc.tau[a] = v.tau[a][i];
+        inc.dgam[a] = v.dgam[a][i];
+    }
+    if entry == EntryFlag::ExactStick {
+        let Some(taulm) = &v.taulm else {
+            return Err(no_taulm());
+        };
+        for (x, row) in inc.taulm.iter_mut().zip(taulm) {
+            *x = row[i];
+        }
+    }
+    let sv = [v.statev[0][i], v.statev[1][i], v.statev[2][i]];
+    let state = CoulombState::from_statev(&sv)?;
+    let up = law.update(&inc, &state)?;
+    let mut end_state = [0.0; CoulombState::NSTATV];
+    up.state.write_statev(&mut end_state);
+    for (r, x) in end_state.iter().enumerate() {
+        v.statev[r][i] = *x;
+    }
+    match up.contact {
+        Contact::ExactStick => {
+            v.lm[i] = 1;
+            if let Some(d) = &mut v.dslip {
+                for row in d.iter_mut().take(N) {
+                    row[i] = 0.0;
+                }
+            }
+            if let Some(s) = &mut v.sed {
+                s[i] = 0.0;
+            }
+            if let Some(s) = &mut v.sfd {
+                s[i] = 0.0;
+            }
+        }
+        Contact::Motion(t) => {
+            v.lm[i] = 0;
+            for a in 0..N {
+                v.tau[a][i] = t.tau[a];
+                v.ddtddp[a][i] = t.ddtddp[a];
+                for c in 0..N {
+                    // DDTDDG(a,c) in Fortran order per point.
+                    v.ddtddg[a + c * N][i] = t.ddtddg[a][c];
+                }
+            }
+            if let Some(d) = &mut v.dslip {
+                for (row, x) in d.iter_mut().zip(t.dslip) {
+                    row[i] = x;
+                }
+            }
+            if let Some(s) = &mut v.sed {
+                s[i] = t.sed;
+            }
+            if let Some(s) = &mut v.sfd {
+                s[i] = t.sfd;
+            }
+        }
+    }
+    Ok(up.outcome.step_ratio)
+}
+
+#[cold]
+#[inline(never)]
+fn bad_lm(lm: c_int) -> LawError {
+    LawError::Input(format!("LM = {lm} on entry; expected 0, 1 or 2"))
+}
+
+#[cold]
+#[inline(never)]
+fn no_taulm() -> LawError {
+    LawError::Input("LM = 1 on entry but no TAULM array was given".into())
+}
+
+/// `fric_`'s failure outputs for one point, and the report.
+#[cold]
+#[inline(never)]
+fn fail_point<const N: usize>(v: &mut Views<'_>, i: usize, e: &LawError) {
+    for a in 0..N {
+        v.ddtddp[a][i] = 0.0;
+        for c in 0..N {
+            v.ddtddg[a + c * N][i] = 0.0;
+        }
+    }
+    if let Some(d) = &mut v.dslip {
+        for row in d.iter_mut().take(N) {
+            row[i] = 0.0;
+        }
+    }
+    if let Some(s) = &mut v.sfd {
+        s[i] = 0.0;
+    }
+    let site = Site {
+        routine: "ifl_fric_batch",
+        interaction: String::new(),
+        place: format!("batch point {i}"),
+    };
+    report(&site, &e.to_string(), true);
+}
+
+/// Borrows `len` entries of a C array; NULL is allowed only when `len` is 0 or `optional`.
+///
+/// # Safety
+/// `p` is NULL or points to `len` valid entries, not aliased by another argument.
+unsafe fn c_slice<'a, T>(p: *const T, len: usize, name: &str) -> Result<Option<&'a [T]>, LawError> {
+    if p.is_null() {
+        return if len == 0 {
+            Ok(Some(&[]))
+        } else {
+            Err(LawError::Input(format!("{name} is a NULL pointer")))
+        };
+    }
+    // SAFETY: as documented.
+    Ok(Some(unsafe { std::slice::from_raw_parts(p, len) }))
+}
+
+/// As [`c_slice`], mutable.
+///
+/// # Safety
+/// As [`c_slice`], and writable.
+unsafe fn c_slice_mut<'a, T>(p: *mut T, len: usize, name: &str) -> Result<&'a mut [T], LawError> {
+    if p.is_null() {
+        return if len == 0 {
+            Ok(&mut [])
+        } else {
+            Err(LawError::Input(format!("{name} is a NULL pointer")))
+        };
+    }
+    // SAFETY: as documented.
+    Ok(unsafe { std::slice::from_raw_parts_mut(p, len) })
+}
+
+/// Many independent `fric_` points in one call (structure of arrays, leading dimension `ld`).
+///
+/// Component `a` (0-based) of point `i` is at `x[i + a*ld]`; `DDTDDG(a,b)` of point `i` at
+/// `ddtddg[i + (a + b*nfdir)*ld]`; `lm`, `sed`, `sfd`, `press`, `dpress`, `chrlngth` have one
+/// entry per point. For speed, pad `ld` a little above a multiple of 512 (rows a power of two
+/// bytes apart share cache sets; `docs/benchmarks-batch.md`). `props`/`nprops`, `nstatv` and `dtime` are shared by all points and mean
+/// what they mean for `fric_` (`docs/props.md`); `statev` has `nstatv` rows.
+///
+/// Every point gets bit for bit what `fric_` gives it. A point with unusable input gets
+/// `fric_`'s failure outputs, the others are still computed, and the call returns the first
+/// failure's status. A fault of the whole batch (`ld < npoints`, `nfdir` not 1 or 2, bad
+/// `PROPS`, `nstatv < 3`, a NULL required array) writes nothing but `*pnewdt`. `*pnewdt` is only
+/// ever lowered (to 0.25 on any failure). `dslip`, `sed`, `sfd` may be NULL (not written);
+/// `taulm` may be NULL when no point enters with `LM = 1`.
+///
+/// # Safety
+/// Every non-NULL array holds at least `ld*(components-1) + npoints` entries (`components` as
+/// above: `nfdir`, `nfdir*nfdir`, `nstatv` or 1; none when `npoints` is 0); `props` holds
+/// `nprops`; `pnewdt` is NULL or writable; output arrays do not overlap each other or the inputs.
+#[allow(clippy::too_many_arguments)]
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ifl_fric_batch(
+    npoints: usize,
+    ld: usize,
+    nfdir: c_int,
+    props: *const f64,
+    nprops: c_int,
+    nstatv: c_int,
+    dtime: f64,
+    lm: *mut c_int,
+    tau: *mut f64,
+    ddtddg: *mut f64,
+    ddtddp: *mut f64,
+    dslip: *mut f64,
+    sed: *mut f64,
+    sfd: *mut f64,
+    statev: *mut f64,
+    dgam: *const f64,
+    taulm: *const f64,
+    press: *const f64,
+    dpress: *const f64,
+    chrlngth: *const f64,
+    pnewdt: *mut f64,
+) -> IflStatus {
+    let mut point_fault: Result<(), Fault> = Ok(());
+    let whole = boundary(
+        || Site {
+            routine: "ifl_fric_batch",
+            interaction: String::new(),
+            place: format!("batch of {npoints} points"),
+        },
+        || {
+            let n = usize::try_from(nfdir)
+                .ok()
+                .filter(|n| *n == 1 || *n == 2)
+                .ok_or_else(|| {
+                    LawError::Parameter(format!("NFDIR = {nfdir}; expected 1 (2-D) or 2 (3-D)"))
+                })?;
+            let nstatv = usize::try_from(nstatv)
+                .ok()
+                .filter(|s| *s >= CoulombState::NSTATV)
+                .ok_or_else(|| {
+                    LawError::Parameter(format!(
+                        "NSTATV = {nstatv} but the Coulomb law needs {}",
+                        CoulombState::NSTATV
+                    ))
+                })?;
+            if ld < npoints {
+                return Err(LawError::Parameter(format!(
+                    "leading dimension ld = {ld} is less than npoints = {npoints}"
+                )));
+            }
+            let nprops = usize::try_from(nprops)
+                .map_err(|_| LawError::Parameter(format!("NPROPS = {nprops} is negative")))?;
+            let len = |components: usize| -> Result<usize, LawError> {
+                if npoints == 0 {
+                    return Ok(0);
+                }
+                ld.checked_mul(components - 1)
+                    .and_then(|x| x.checked_add(npoints))
+                    .ok_or_else(|| LawError::Parameter("ld × components overflows".into()))
+            };
+            let (l1, ln, lnn, ls) = (len(1)?, len(n)?, len(n * n)?, len(nstatv)?);
+            // SAFETY: sizes per the contract above; NULL handled by the helpers.
+            let mut batch = unsafe {
+                FricBatch {
+                    npoints,
+                    ld,
+                    nfdir: n,
+                    nstatv,
+                    lm: c_slice_mut(lm, l1, "lm")?,
+                    tau: c_slice_mut(tau, ln, "tau")?,
+                    ddtddg: c_slice_mut(ddtddg, lnn, "ddtddg")?,
+                    ddtddp: c_slice_mut(ddtddp, ln, "ddtddp")?,
+                    dslip: optional_mut(dslip, ln),
+                    sed: optional_mut(sed, l1),
+                    sfd: optional_mut(sfd, l1),
+                    statev: c_slice_mut(statev, ls, "statev")?,
+                    dgam: c_slice(dgam, ln, "dgam")?.unwrap_or(&[]),
+                    taulm: if taulm.is_null() {
+                        None
+                    } else {
+                        c_slice(taulm, ln, "taulm")?
+                    },
+                    press: c_slice(press, l1, "press")?.unwrap_or(&[]),
+                    dpress: c_slice(dpress, l1, "dpress")?.unwrap_or(&[]),
+                    chrlngth: c_slice(chrlngth, l1, "chrlngth")?.unwrap_or(&[]),
+                }
+            };
+            // SAFETY: props holds nprops entries per the contract.
+            let props = unsafe { c_slice(props, nprops, "props")? }.unwrap_or(&[]);
+            let mut ratio = f64::INFINITY;
+            let r = fric_batch(props, dtime, &mut batch, &mut ratio);
+            if ratio < f64::INFINITY && !pnewdt.is_null() {
+                // SAFETY: writable per the contract.
+                unsafe {
+                    let current = pnewdt.read();
+                    if current.is_nan() || ratio < current {
+                        pnewdt.write(ratio);
+                    }
+                }
+            }
+            match r {
+                Ok(()) => Ok(()),
+                // A whole-batch fault: let the boundary report it once.
+                Err(BatchError {
+                    point: None, error, ..
+                }) => Err(error),
+                // Point faults were reported point by point.
+                Err(BatchError { error, .. }) => {
+                    point_fault = Err(match error {
+                        LawError::Parameter(_) => Fault::Parameter,
+                        LawError::Config(_) => Fault::Config,
+                        LawError::Input(_) => Fault::Input,
+                        LawError::Numerical(_) => Fault::Numerical,
+                    });
+                    Ok(())
+                }
+            }
+        },
+        || {
+            if !pnewdt.is_null() {
+                // SAFETY: writable per the contract.
+                unsafe {
+                    let current = pnewdt.read();
+                    if current.is_nan() || current > CUTBACK_RATIO {
+                        pnewdt.write(CUTBACK_RATIO);
+                    }
+                }
+            }
+        },
+    );
+    whole.and(point_fault).into()
+}
+
+/// An optional output: NULL → `None`.
+///
+/// # Safety
+/// `p` is NULL or points to `len` writable entries.
+unsafe fn optional_mut<'a>(p: *mut f64, len: usize) -> Option<&'a mut [f64]> {
+    if p.is_null() {
+        None
+    } else {
+        // SAFETY: as documented.
+        Some(unsafe { std::slice::from_raw_parts_mut(p, len) })
+    }
+}

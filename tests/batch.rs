@@ -1,0 +1,428 @@
+//! The batch entry point against `fric_` called once per point: bit-identical outputs on random
+//! inputs (stick, slip, exact stick, shear limit, γ_crit from CHRLNGTH, NFDIR 1 and 2, LM 0/1/2,
+//! padded leading dimensions), through both the Rust API and the C entry `ifl_fric_batch`;
+//! `fric_`'s failure outputs for a bad point; nothing but PNEWDT written on a whole-batch fault.
+
+use interfacial::abi::host::FricCall;
+use interfacial::abi::{FricBatch, IflStatus, fric_batch, ifl_fric_batch};
+
+/// A small deterministic generator (xorshift64*), so failures reproduce.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn range(&mut self, a: f64, b: f64) -> f64 {
+        a + (b - a) * self.next()
+    }
+    fn pick(&mut self, n: usize) -> usize {
+        ((self.next() * n as f64) as usize).min(n - 1)
+    }
+}
+
+/// Inputs and outputs of `npoints` points in the batch layout; outputs start as a sentinel so
+/// that "not written" is compared too.
+#[derive(Clone, Debug)]
+struct Points {
+    n: usize,
+    ld: usize,
+    nfdir: usize,
+    nstatv: usize,
+    lm: Vec<i32>,
+    tau: Vec<f64>,
+    ddtddg: Vec<f64>,
+    ddtddp: Vec<f64>,
+    dslip: Vec<f64>,
+    sed: Vec<f64>,
+    sfd: Vec<f64>,
+    statev: Vec<f64>,
+    dgam: Vec<f64>,
+    taulm: Vec<f64>,
+    press: Vec<f64>,
+    dpress: Vec<f64>,
+    chrlngth: Vec<f64>,
+}
+
+const UNSET: f64 = 12345.678;
+
+fn random_points(rng: &mut Rng, n: usize, ld: usize, nfdir: usize, gamma_crit: f64) -> Points {
+    let nstatv = 4;
+    let mut p = Points {
+        n,
+        ld,
+        nfdir,
+        nstatv,
+        lm: vec![0; ld],
+        tau: vec![UNSET; ld * nfdir],
+        ddtddg: vec![UNSET; ld * nfdir * nfdir],
+        ddtddp: vec![UNSET; ld * nfdir],
+        dslip: vec![UNSET; ld * nfdir],
+        sed: vec![UNSET; ld],
+        sfd: vec![UNSET; ld],
+        statev: vec![UNSET; ld * nstatv],
+        dgam: vec![0.0; ld * nfdir],
+        taulm: vec![0.0; ld * nfdir],
+        press: vec![0.0; ld],
+        dpress: vec![0.0; ld],
+        chrlngth: vec![0.0; ld],
+    };
+    for i in 0..n {
+        p.lm[i] = [0, 0, 0, 1, 2][rng.pick(5)];
+        let pr = rng.range(-5.0, 150.0);
+        p.press[i] = pr;
+        p.dpress[i] = rng.range(-20.0, 20.0);
+        p.chrlngth[i] = rng.range(0.05, 2.0);
+        // |γ_pr|/γ_crit spread over stick and slip.
+        let scale = gamma_crit * [0.3, 1.0, 4.0][rng.pick(3)];
+        for a in 0..nfdir {
+            p.tau[i + a * ld] = rng.range(-30.0, 30.0);
+            p.dgam[i + a * ld] = rng.range(-1.0, 1.0) * scale;
+            p.taulm[i + a * ld] = rng.range(-60.0, 60.0);
+        }
+        p.statev[i] = rng.range(0.0, 1.0);
+        p.statev[i + ld] = rng.range(0.0, 1.0);
+        p.statev[i + 2 * ld] = rng.pick(3) as f64;
+        p.statev[i + 3 * ld] = -1.0;
+    }
+    p
+}
+
+/// Runs every point through `fric_` (FricCall) and returns the expected outputs and PNEWDT.
+fn per_point(props: &[f64], dtime: f64, input: &Points) -> (Points, f64) {
+    let mut out = input.clone();
+    let (ld, nf) = (input.ld, input.nfdir);
+    let mut pnewdt_min = 1e36f64;
+    for i in 0..input.n {
+        let mut c = FricCall::new(nf as i32, props);
+        c.nstatv = input.nstatv as i32;
+        c.statev = (0..input.nstatv)
+            .map(|r| input.statev[i + r * ld])
+            .collect();
+        c.lm = input.lm[i];
+        c.press = input.press[i];
+        c.dpress = input.dpress[i];
+        c.dtime = dtime;
+        c.chrlngth = input.chrlngth[i];
+        for a in 0..nf {
+            c.tau[a] = input.tau[i + a * ld];
+            c.dgam[a] = input.dgam[i + a * ld];
+            c.taulm[a] = input.taulm[i + a * ld];
+            c.ddtddp[a] = UNSET;
+            c.dslip[a] = UNSET;
+            for b in 0..nf {
+                c.ddtddg[a + b * nf] = UNSET;
+            }
+        }
+        c.sed = UNSET;
+        c.sfd = UNSET;
+        c.pnewdt = 1e36;
+        c.call();
+        pnewdt_min = pnewdt_min.min(c.pnewdt);
+        out.lm[i] = c.lm;
+        out.sed[i] = c.sed;
+        out.sfd[i] = c.sfd;
+        for a in 0..nf {
+            out.tau[i + a * ld] = c.tau[a];
+            out.ddtddp[i + a * ld] = c.ddtddp[a];
+            out.dslip[i + a * ld] = c.dslip[a];
+            for b in 0..nf {
+                out.ddtddg[i + (a + b * nf) * ld] = c.ddtddg[a + b * nf];
+            }
+        }
+        for r in 0..input.nstatv {
+            out.statev[i + r * ld] = c.statev[r];
+        }
+    }
+    (out, pnewdt_min)
+}
+
+fn via_rust(props: &[f64], dtime: f64, input: &Points) -> (Points, f64, bool) {
+    let mut p = input.clone();
+    let mut pnewdt = 1e36;
+    let ok = {
+        let mut b = FricBatch {
+            npoints: p.n,
+            ld: p.ld,
+            nfdir: p.nfdir,
+            nstatv: p.nstatv,
+            lm: &mut p.lm,
+            tau: &mut p.tau,
+            ddtddg: &mut p.ddtddg,
+            ddtddp: &mut p.ddtddp,
+            dslip: Some(&mut p.dslip),
+            sed: Some(&mut p.sed),
+            sfd: Some(&mut p.sfd),
+            statev: &mut p.statev,
+            dgam: &input.dgam,
+            taulm: Some(&input.taulm),
+            press: &input.press,
+            dpress: &input.dpress,
+            chrlngth: &input.chrlngth,
+        };
+        fric_batch(props, dtime, &mut b, &mut pnewdt).is_ok()
+    };
+    (p, pnewdt, ok)
+}
+
+fn via_c(props: &[f64], dtime: f64, input: &Points) -> (Points, f64, IflStatus) {
+    let mut p = input.clone();
+    let mut pnewdt = 1e36;
+    // SAFETY: every array is sized ld × components, as the contract requires.
+    let st = unsafe {
+        ifl_fric_batch(
+            p.n,
+            p.ld,
+            p.nfdir as i32,
+            props.as_ptr(),
+            props.len() as i32,
+            p.nstatv as i32,
+            dtime,
+            p.lm.as_mut_ptr(),
+            p.tau.as_mut_ptr(),
+            p.ddtddg.as_mut_ptr(),
+            p.ddtddp.as_mut_ptr(),
+            p.dslip.as_mut_ptr(),
+            p.sed.as_mut_ptr(),
+            p.sfd.as_mut_ptr(),
+            p.statev.as_mut_ptr(),
+            input.dgam.as_ptr(),
+            input.taulm.as_ptr(),
+            input.press.as_ptr(),
+            input.dpress.as_ptr(),
+            input.chrlngth.as_ptr(),
+            &mut pnewdt,
+        )
+    };
+    (p, pnewdt, st)
+}
+
+fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
+
+fn assert_identical(what: &str, a: &Points, b: &Points) {
+    assert_eq!(a.lm, b.lm, "{what}: LM");
+    for (name, x, y) in [
+        ("TAU", &a.tau, &b.tau),
+        ("DDTDDG", &a.ddtddg, &b.ddtddg),
+        ("DDTDDP", &a.ddtddp, &b.ddtddp),
+        ("DSLIP", &a.dslip, &b.dslip),
+        ("SED", &a.sed, &b.sed),
+        ("SFD", &a.sfd, &b.sfd),
+        ("STATEV", &a.statev, &b.statev),
+    ] {
+        assert_eq!(bits(x), bits(y), "{what}: {name}");
+    }
+}
+
+/// PROPS variants: elastic stick (absolute γ_crit, from CHRLNGTH, with τ_max) and exact stick.
+fn props_variants() -> Vec<(Vec<f64>, f64)> {
+    vec![
+        (vec![1.0, 0.3, 0.0, 0.0, 1e-3, 0.0, 0.0], 1e-3),
+        (vec![1.0, 0.45, 0.0, 0.0, 0.0, 0.01, 0.0], 5e-3),
+        (vec![1.0, 0.3, 0.0, 25.0, 2e-3, 0.0, 0.0], 2e-3),
+        (vec![1.0, 0.3, 0.0, 0.0, 1e-3, 0.0, 1.0], 1e-3),
+        (vec![1.0, 0.3], 5e-3),
+    ]
+}
+
+#[test]
+fn batch_is_bit_identical_to_fric_per_point() {
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let mut cases = 0;
+    for (props, gc) in props_variants() {
+        for nfdir in [1, 2] {
+            for (n, pad) in [(1usize, 0usize), (257, 0), (300, 13)] {
+                let input = random_points(&mut rng, n, n + pad, nfdir, gc);
+                let dtime = rng.range(1e-3, 2.0);
+                let (expected, pnewdt) = per_point(&props, dtime, &input);
+                assert_eq!(pnewdt, 1e36, "valid inputs must not cut back");
+                let (r, pr, ok) = via_rust(&props, dtime, &input);
+                assert!(ok);
+                assert_eq!(pr, pnewdt);
+                assert_identical("Rust API", &expected, &r);
+                let (c, pc, st) = via_c(&props, dtime, &input);
+                assert_eq!(st, IflStatus::Ok);
+                assert_eq!(pc, pnewdt);
+                assert_identical("ifl_fric_batch", &expected, &c);
+                // The padding between ld and n is never written.
+                assert!(c.sed[n..].iter().all(|x| *x == UNSET));
+                cases += 1;
+            }
+        }
+    }
+    assert_eq!(cases, 30);
+    // The random inputs cover every branch: count them in one case.
+    let input = random_points(&mut rng, 2000, 2000, 2, 1e-3);
+    let (out, _) = per_point(&props_variants()[0].0, 0.1, &input);
+    let (mut stick, mut slip, mut frictionless) = (0, 0, 0);
+    for i in 0..2000 {
+        match (input.lm[i], out.statev[i + 2 * 2000]) {
+            (2, _) => frictionless += 1,
+            (_, 0.0) => stick += 1,
+            (_, 1.0) => slip += 1,
+            _ => {}
+        }
+    }
+    assert!(stick > 100 && slip > 100 && frictionless > 100);
+}
+
+#[test]
+fn a_bad_point_gets_fric_failure_outputs_and_the_rest_are_computed() {
+    let mut rng = Rng(42);
+    let props = props_variants()[0].0.clone();
+    for nfdir in [1, 2] {
+        let mut input = random_points(&mut rng, 50, 50, nfdir, 1e-3);
+        input.lm[7] = 0;
+        input.dgam[7] = f64::NAN;
+        input.lm[20] = 0;
+        input.press[20] = f64::INFINITY;
+        let (expected, pnewdt) = per_point(&props, 0.5, &input);
+        assert_eq!(pnewdt, 0.25);
+        let (c, pc, st) = via_c(&props, 0.5, &input);
+        assert_eq!(st, IflStatus::BadInput);
+        assert_eq!(pc, 0.25);
+        assert_identical("bad point", &expected, &c);
+        let msg = FricCall::last_error();
+        assert!(
+            msg.contains("ifl_fric_batch") && msg.contains("point 20"),
+            "{msg}"
+        );
+        let mut p = input.clone();
+        let mut pn = 1e36;
+        let mut b = FricBatch {
+            npoints: p.n,
+            ld: p.ld,
+            nfdir: p.nfdir,
+            nstatv: p.nstatv,
+            lm: &mut p.lm,
+            tau: &mut p.tau,
+            ddtddg: &mut p.ddtddg,
+            ddtddp: &mut p.ddtddp,
+            dslip: None,
+            sed: None,
+            sfd: None,
+            statev: &mut p.statev,
+            dgam: &input.dgam,
+            taulm: Some(&input.taulm),
+            press: &input.press,
+            dpress: &input.dpress,
+            chrlngth: &input.chrlngth,
+        };
+        let e = fric_batch(&props, 0.5, &mut b, &mut pn).unwrap_err();
+        assert_eq!((e.point, e.failed), (Some(7), 2));
+        assert_eq!(pn, 0.25);
+    }
+}
+
+#[test]
+fn whole_batch_faults_write_only_pnewdt() {
+    let mut rng = Rng(7);
+    let input = random_points(&mut rng, 10, 10, 2, 1e-3);
+    let good = props_variants()[0].0.clone();
+    // Bad PROPS (μ < 0), bad NFDIR, ld < npoints, short NSTATV, NULL arrays.
+    let mut bad_mu = good.clone();
+    bad_mu[1] = -1.0;
+    let (c, pc, st) = via_c(&bad_mu, 0.5, &input);
+    assert_eq!((st, pc), (IflStatus::BadParameter, 0.25));
+    assert_identical("bad PROPS", &input, &c);
+    assert!(FricCall::last_error().contains("ifl_fric_batch"));
+    let mut p = input.clone();
+    for (nfdir, ld, nstatv, expect) in [
+        (3, 10, 4, IflStatus::BadParameter),
+        (2, 9, 4, IflStatus::BadParameter),
+        (2, 10, 2, IflStatus::BadParameter),
+    ] {
+        let mut pnewdt = 1e36;
+        // SAFETY: arrays as sized for the valid case; the call must refuse before reading.
+        let st = unsafe {
+            ifl_fric_batch(
+                10,
+                ld,
+                nfdir,
+                good.as_ptr(),
+                7,
+                nstatv,
+                0.5,
+                p.lm.as_mut_ptr(),
+                p.tau.as_mut_ptr(),
+                p.ddtddg.as_mut_ptr(),
+                p.ddtddp.as_mut_ptr(),
+                std::ptr::null_mut(),
+                std::ptr::null_mut(),
+                std::ptr::null_mut(),
+                p.statev.as_mut_ptr(),
+                input.dgam.as_ptr(),
+                std::ptr::null(),
+                input.press.as_ptr(),
+                input.dpress.as_ptr(),
+                std::ptr::null(),
+                &mut pnewdt,
+            )
+        };
+        assert_eq!((st, pnewdt), (expect, 0.25));
+        assert_identical("refused batch", &input, &p);
+    }
+    // A required array NULL: refused with BadInput, naming it.
+    let mut pnewdt = 1e36;
+    // SAFETY: as above; chrlngth NULL must be refused.
+    let st = unsafe {
+        ifl_fric_batch(
+            10,
+            10,
+            2,
+            good.as_ptr(),
+            7,
+            4,
+            0.5,
+            p.lm.as_mut_ptr(),
+            p.tau.as_mut_ptr(),
+            p.ddtddg.as_mut_ptr(),
+            p.ddtddp.as_mut_ptr(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            p.statev.as_mut_ptr(),
+            input.dgam.as_ptr(),
+            input.taulm.as_ptr(),
+            input.press.as_ptr(),
+            input.dpress.as_ptr(),
+            std::ptr::null(),
+            &mut pnewdt,
+        )
+    };
+    assert_eq!((st, pnewdt), (IflStatus::BadInput, 0.25));
+    assert!(FricCall::last_error().contains("chrlngth"));
+    assert_identical("NULL chrlngth", &input, &p);
+    // An empty batch is fine with NULL everywhere.
+    // SAFETY: npoints = 0: nothing is read or written.
+    let st = unsafe {
+        ifl_fric_batch(
+            0,
+            0,
+            1,
+            good.as_ptr(),
+            7,
+            3,
+            0.5,
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            std::ptr::null(),
+            std::ptr::null(),
+            std::ptr::null(),
+            std::ptr::null(),
+            std::ptr::null(),
+            std::ptr::null_mut(),
+        )
+    };
+    assert_eq!(st, IflStatus::Ok);
+}

@@ -1,0 +1,249 @@
+//! The scene driver (examples/scenes/) on its reduced sweep: every built-in scene meets its closed
+//! form within the accuracy its chart claims; the explicit stability boundary measured on the F6
+//! map is within one grid cell of the theoretical limit Δt = 2/sqrt((k + K_f)/m); implicit
+//! stepping never diverges; scene files are checked before anything runs.
+//!
+//! The driver's modules are compiled into this test by path, so the test runs the same code.
+#![allow(dead_code)]
+
+#[path = "../examples/scenes/circle.rs"]
+mod circle;
+#[path = "../examples/scenes/oscillator.rs"]
+mod oscillator;
+#[path = "../examples/scenes/pull.rs"]
+mod pull;
+#[path = "../examples/scenes/scene.rs"]
+mod scene;
+#[path = "../examples/scenes/stability.rs"]
+mod stability;
+
+use oscillator::{Integrator, Oscillator, Stick, Verdict, simulate};
+use scene::{Scene, run_point};
+use stability::{Cell, measured_boundary, run_map, theoretical_boundary};
+
+const SCENES: [(&str, &str); 3] = [
+    ("f6.toml", include_str!("../examples/scenes/data/f6.toml")),
+    ("f1.toml", include_str!("../examples/scenes/data/f1.toml")),
+    ("f2.toml", include_str!("../examples/scenes/data/f2.toml")),
+];
+
+fn f6() -> Scene {
+    Scene::parse(SCENES[0].1, SCENES[0].0).expect("f6.toml")
+}
+
+#[test]
+fn every_scene_meets_the_accuracy_its_chart_claims() {
+    let mut checked = 0;
+    for (name, text) in SCENES {
+        let scene = Scene::parse(text, name).expect("built-in scene file");
+        for m in &scene.methods {
+            for &step in &scene.file.quick_steps {
+                let p = run_point(&scene, m, step);
+                assert!(
+                    p.meets_claim(),
+                    "{name}: {} at step {step}: error {} > claim {} ({})",
+                    m.spec.label,
+                    p.error,
+                    p.claim,
+                    p.verdict
+                );
+                assert!(!p.error.is_nan(), "{name}: {} gave NaN", m.spec.label);
+                if p.claim.is_finite() {
+                    assert_eq!(p.verdict, "ok", "{name}: {} at {step}", m.spec.label);
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked >= 15, "only {checked} claimed points");
+}
+
+#[test]
+fn exact_stick_converges_at_first_order_in_the_step() {
+    // Halving Δt twice (÷4) must shrink the error of exact stick by at least 2 (first order
+    // gives 4; transitions falling at random places in a step make it noisy).
+    let o = f6().file.oscillator.expect("F6");
+    let e = |dt: f64| simulate(&o, Integrator::Implicit { alpha: 0.0 }, Stick::Exact, dt).error();
+    let (coarse, fine) = (e(0.02), e(0.005));
+    assert!(
+        fine.is_finite() && fine * 2.0 <= coarse,
+        "{coarse} → {fine}"
+    );
+}
+
+#[test]
+fn closed_form_of_the_oscillator_is_self_consistent() {
+    // x(t) = x_k + R cos(ωt − φ) starts at x₁ with ẋ = v₀ and ends the slip at x₂ with ẋ = v₀.
+    let o = f6().file.oscillator.expect("F6");
+    let r = o.amplitude().hypot(o.belt_speed / o.omega());
+    let x = |t: f64| o.x_kinetic() + r * (o.omega() * t - o.phase()).cos();
+    let v = |t: f64| -r * o.omega() * (o.omega() * t - o.phase()).sin();
+    let ts = o.t_slip();
+    assert!((x(0.0) - o.x_slip_start()).abs() < 1e-12);
+    assert!((v(0.0) - o.belt_speed).abs() < 1e-12);
+    assert!((x(ts) - o.x_slip_end()).abs() < 1e-12);
+    assert!((v(ts) - o.belt_speed).abs() < 1e-12);
+    // Slip is forward throughout (v < v₀ strictly inside), so the dissipation is μ_k N × slip.
+    for i in 1..100 {
+        assert!(v(ts * f64::from(i) / 100.0) < o.belt_speed);
+    }
+    // The stick phase brings x₂ back to x₁ at the belt speed.
+    assert!((o.x_slip_end() + o.belt_speed * o.t_stick() - o.x_slip_start()).abs() < 1e-12);
+}
+
+#[test]
+fn measured_explicit_boundary_is_the_theoretical_limit_within_one_cell() {
+    let scene = f6();
+    let o = scene.file.oscillator.expect("F6");
+    let spec = scene
+        .file
+        .maps
+        .iter()
+        .find(|m| m.integrator == "explicit")
+        .expect("explicit map");
+    let map = run_map(&o, spec, true, |_, _| {}).expect("map");
+    assert!(map.gammas.len() >= 5);
+    for r in 0..map.gammas.len() {
+        let measured = measured_boundary(&map, r);
+        let theory = theoretical_boundary(&o, &map, r);
+        let (Some(m), Some(t)) = (measured, theory) else {
+            panic!("row {r}: measured {measured:?}, theory {theory:?}");
+        };
+        assert!(
+            m.abs_diff(t) <= 1,
+            "γ_crit {}: first unstable column {m} (Δt {}), theory {t} (limit {})",
+            map.gammas[r],
+            map.dts[m],
+            o.explicit_limit(map.gammas[r])
+        );
+        // Below the limit nothing is unstable; beyond 2·sqrt(m/k) (the spring alone) every cell
+        // diverges.
+        assert!(map.cells[r][..m].iter().all(|c| !c.unstable()));
+        let spring_limit = 2.0 * (o.mass / o.spring).sqrt();
+        for (c, dt) in map.dts.iter().enumerate() {
+            if *dt > spring_limit * 1.05 {
+                assert_eq!(map.cells[r][c], Cell::Diverged, "Δt {dt}");
+            }
+        }
+    }
+    assert!(map.errors.iter().flatten().all(|e| !e.is_nan()));
+}
+
+#[test]
+fn implicit_stepping_never_diverges() {
+    let scene = f6();
+    let o = scene.file.oscillator.expect("F6");
+    let spec = scene
+        .file
+        .maps
+        .iter()
+        .find(|m| m.integrator == "hht")
+        .expect("implicit map");
+    let map = run_map(&o, spec, true, |_, _| {}).expect("map");
+    assert!(map.cells.iter().flatten().all(|c| *c != Cell::Diverged));
+    assert!(map.errors.iter().flatten().all(|e| !e.is_nan()));
+}
+
+#[test]
+fn explicit_stepping_blows_up_beyond_the_spring_limit_without_nan() {
+    let o = f6().file.oscillator.expect("F6");
+    let run = simulate(
+        &o,
+        Integrator::Explicit,
+        Stick::Elastic { gamma_crit: 1e-3 },
+        2.5,
+    );
+    assert_eq!(run.verdict, Verdict::Diverged);
+    assert!(!run.error().is_nan());
+}
+
+#[test]
+fn scene_files_are_checked_before_running() {
+    let base = SCENES[0].1;
+    let bad = [
+        (
+            base.replace("mu_kinetic = 0.5", "mu_kinetic = 0.7"),
+            "must exceed mu_kinetic",
+        ),
+        (
+            base.replacen(
+                "integrator = \"newmark\"\nstick = \"exact\"",
+                "integrator = \"explicit\"\nstick = \"exact\"",
+                1,
+            ),
+            "explicit stepping needs elastic stick",
+        ),
+        (
+            base.replacen(
+                "label = \"explicit CD, elastic γc=1e-3\"",
+                "label = \"x\"\nlaw = \"rate-and-state\"",
+                1,
+            ),
+            "law 'rate-and-state' is not available",
+        ),
+        (
+            base.replace("mass = 1.0", "mass = -1.0"),
+            "mass = -1 must be finite and > 0",
+        ),
+        (base.replace("[oscillator]", "[oscilator]"), "unknown field"),
+    ];
+    for (text, expected) in bad {
+        let e = Scene::parse(&text, "user.toml").expect_err(expected);
+        assert!(e.contains(expected) && e.starts_with("user.toml"), "{e}");
+    }
+}
+
+#[test]
+fn a_user_point_file_runs_like_a_built_in_scene() {
+    // The --point path: a user's own F6 parameters, one method, one step.
+    let text = r#"
+        id = "MINE"
+        title = "my oscillator"
+        steps = [0.01]
+        quick_steps = [0.01]
+        [oscillator]
+        mass = 2.0
+        spring = 8.0
+        normal_force = 10.0
+        mu_static = 0.5
+        mu_kinetic = 0.3
+        belt_speed = 0.2
+        cycles = 2
+        [[method]]
+        label = "Newmark, exact"
+        integrator = "newmark"
+        stick = "exact"
+        claim_floor = 0.0
+        claim_slope = 8.0
+    "#;
+    let scene = Scene::parse(text, "mine.toml").expect("user scene");
+    let p = run_point(&scene, &scene.methods[0], 0.01);
+    assert!(p.meets_claim() && p.verdict == "ok", "{p:?}");
+    assert!(p.calls > 0 && p.error < 0.05);
+}
+
+#[test]
+fn the_oscillator_keeps_its_parameters_out_of_nan() {
+    let o = Oscillator {
+        mass: 1.0,
+        spring: 1.0,
+        normal_force: 1.0,
+        mu_static: 0.6,
+        mu_kinetic: 0.5,
+        belt_speed: 0.1,
+        cycles: 1,
+    };
+    for dt in [1e-3, 0.05, 1.0, 3.0] {
+        for (i, s) in [
+            (Integrator::Explicit, Stick::Elastic { gamma_crit: 1e-4 }),
+            (
+                Integrator::Implicit { alpha: -0.1 },
+                Stick::Elastic { gamma_crit: 1e-4 },
+            ),
+            (Integrator::Implicit { alpha: 0.0 }, Stick::Exact),
+        ] {
+            let r = simulate(&o, i, s, dt);
+            assert!(!r.error().is_nan(), "{i:?} {s:?} {dt}");
+        }
+    }
+}
