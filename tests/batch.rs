@@ -330,6 +330,13 @@ fn whole_batch_faults_write_only_pnewdt() {
     assert_eq!((st, pc), (IflStatus::BadParameter, 0.25));
     assert_identical("bad PROPS", &input, &c);
     assert!(FricCall::last_error().contains("ifl_fric_batch"));
+    // The adhesive law (PROPS(1) = 2, here with S_a > 0 so it is not the Coulomb special case)
+    // has no batch kernel: refused as a whole, naming the law.
+    let adhesive = [2.0, 0.3, -1.0, 1.0, 0.0, 0.0, 0.0, 1e-3];
+    let (c, pc, st) = via_c(&adhesive, 0.5, &input);
+    assert_eq!((st, pc), (IflStatus::BadParameter, 0.25));
+    assert_identical("adhesive PROPS", &input, &c);
+    assert!(FricCall::last_error().contains("runs law 1 (Coulomb) only"));
     let mut p = input.clone();
     for (nfdir, ld, nstatv, expect) in [
         (3, 10, 4, IflStatus::BadParameter),

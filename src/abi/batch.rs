@@ -119,6 +119,15 @@ pub fn fric_batch(
         .map_err(whole);
     let law = match checked {
         Ok(FrictionLaw::Coulomb(law)) => law,
+        // The batch kernel is the Coulomb law's; the adhesive law (PROPS(1) = 2) goes through
+        // fric_ or uinter_ per point.
+        Ok(FrictionLaw::Adhesive(_)) => {
+            lower(pnewdt, CUTBACK_RATIO);
+            return Err(whole(LawError::Parameter(
+                "PROPS(1) = 2 (adhesive): the batch entry runs law 1 (Coulomb) only; call fric_ per point"
+                    .into(),
+            )));
+        }
         Err(e) => {
             lower(pnewdt, CUTBACK_RATIO);
             return Err(e);
