@@ -373,10 +373,13 @@ impl Coulomb {
             Contact::Motion(t) => {
                 check_traction(t)?;
                 let slip = norm(&t.dslip);
+                // Both saturate at f64::MAX rather than overflow: a finite slip over a subnormal
+                // DTIME, or a sum near f64::MAX, would otherwise store ∞ in STATEV, which the
+                // next increment refuses as corrupted.
                 CoulombState {
-                    accumulated_slip: state.accumulated_slip + slip,
+                    accumulated_slip: (state.accumulated_slip + slip).min(f64::MAX),
                     slip_rate: if inc.dtime > 0.0 {
-                        slip / inc.dtime
+                        (slip / inc.dtime).min(f64::MAX)
                     } else {
                         0.0
                     },
