@@ -27,7 +27,7 @@ for t in "${targets[@]}"; do
   flags=(-max_total_time="$seconds" -print_final_stats=1)
   if [ "$t" = config ]; then
     args+=(seeds/config)
-    flags+=(-dict=config.dict)
+    flags+=(-dict=config.dict -max_len=4096)
   fi
   if cargo fuzz run --release "$t" "${args[@]}" -- "${flags[@]}" >"$work/$t.log" 2>&1; then
     grep -E '^(Done|stat::number_of_executed_units)' "$work/$t.log" || true

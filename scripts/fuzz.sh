@@ -25,7 +25,7 @@ corpus="corpus/$target"
 mkdir -p "$corpus"
 extra=()
 if [ "$target" = config ]; then
-  extra=(-dict=config.dict)
+  extra=(-dict=config.dict -max_len=4096)
   seeds=(seeds/config)
 else
   seeds=()

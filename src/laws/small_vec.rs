@@ -12,11 +12,22 @@ pub(crate) fn norm<const N: usize>(v: &[f64; N]) -> f64 {
         return v[0].abs();
     }
     let s = dot(v, v);
-    if (f64::MIN_POSITIVE..f64::INFINITY).contains(&s) {
+    if is_positive_normal(s) {
         s.sqrt()
+    } else if *v == [0.0; N] {
+        // The zero vector (a sticking point's slip): common, and exactly 0 without scaling.
+        0.0
     } else {
         scaled_norm(v)
     }
+}
+
+/// `f64::MIN_POSITIVE ≤ x < ∞`, in one integer comparison of the bits (negative values, NaN,
+/// zero and subnormals all fall outside): the range test of the per-call path.
+#[inline(always)]
+fn is_positive_normal(x: f64) -> bool {
+    x.to_bits().wrapping_sub(f64::MIN_POSITIVE.to_bits())
+        < f64::INFINITY.to_bits() - f64::MIN_POSITIVE.to_bits()
 }
 
 /// `m·|v/m|` with m the largest |entry|: no overflow or underflow in the squares. NaN in, NaN
@@ -70,7 +81,7 @@ pub(crate) fn scale<const N: usize>(v: &[f64; N], s: f64) -> [f64; N] {
 #[inline]
 #[must_use]
 pub(crate) fn unit<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
-    if N > 1 && !(f64::MIN_POSITIVE..f64::INFINITY).contains(&len) {
+    if N > 1 && !is_positive_normal(len) {
         return unit_of_extreme(v, len);
     }
     let mut out = *v;
