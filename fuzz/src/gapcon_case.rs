@@ -165,6 +165,9 @@ impl GapconCase {
                 &c.npred,
                 &kstep,
                 &kinc,
+                // AREA, never read (CalculiX's variant only).
+                #[cfg(feature = "calculix")]
+                &f64::NAN,
                 c.ciname.len(),
                 c.slname.len(),
                 c.msname.len(),
