@@ -3,7 +3,8 @@
 //! and `INTERFACIAL_STRICT=1` to abort on the first error.
 //!
 //! The only global mutable state of the library lives here: the set of causes already printed
-//! (a mutex, touched only on the error path) and the environment read once.
+//! (a mutex, touched only on the error path, at most [`MAX_CAUSES`] entries) and the
+//! environment read once.
 
 use std::cell::RefCell;
 use std::collections::HashSet;
@@ -59,15 +60,36 @@ pub(crate) fn report(site: &Site, cause: &str, per_interaction: bool) -> String 
         ""
     };
     let key = format!("{}\u{1f}{}\u{1f}{}", site.routine, scope, cause);
-    let first = SEEN
+    let verdict = SEEN
         .get_or_init(|| Mutex::new(HashSet::new()))
         .lock()
-        .map(|mut seen| seen.insert(key))
+        .map(|mut seen| {
+            if seen.len() < MAX_CAUSES {
+                if seen.insert(key) {
+                    Verdict::Print
+                } else {
+                    Verdict::Repeat
+                }
+            } else if seen.contains(&key) || !seen.insert(SUPPRESSED_KEY.to_owned()) {
+                // Full: the set no longer grows (one more entry, the suppression marker).
+                Verdict::Repeat
+            } else {
+                Verdict::Suppress
+            }
+        })
         // A poisoned set still reports: better a repeated line than a lost one.
-        .unwrap_or(true);
+        .unwrap_or(Verdict::Print);
     let s = settings();
-    if first {
-        emit(s, &message);
+    match verdict {
+        Verdict::Print => emit(s, &message),
+        Verdict::Suppress => emit(
+            s,
+            &format!(
+                "interfacial: {MAX_CAUSES} distinct error causes reported; further messages \
+                 suppressed (ifl_last_error still gives each call's message)"
+            ),
+        ),
+        Verdict::Repeat => {}
     }
     if s.strict {
         emit(
@@ -77,6 +99,20 @@ pub(crate) fn report(site: &Site, cause: &str, per_interaction: bool) -> String 
         std::process::abort();
     }
     message
+}
+
+/// Distinct causes printed per process; then one "further messages suppressed" line and no
+/// more, so that a run meeting ever new causes (each with its own numbers) neither floods the
+/// log nor grows the set of causes seen without bound.
+pub(crate) const MAX_CAUSES: usize = 10_000;
+
+/// Set entry marking that the suppression line has been printed (no real key is empty).
+const SUPPRESSED_KEY: &str = "";
+
+enum Verdict {
+    Print,
+    Repeat,
+    Suppress,
 }
 
 fn emit(s: &Settings, line: &str) {

@@ -118,9 +118,11 @@ pub enum FrictionStatus {
 /// `DROT` of the tangent directions needs no treatment (the host rotates `TAU` itself).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct CoulombState {
-    /// Accumulated equivalent slip Σ|Δγ^sl| (path length of inelastic slip).
+    /// Accumulated equivalent slip Σ|Δγ^sl| (path length of inelastic slip); saturates at
+    /// f64::MAX.
     pub accumulated_slip: f64,
-    /// Equivalent slip rate of the last increment, |Δγ^sl|/Δt (0 when Δt ≤ 0).
+    /// Equivalent slip rate of the last increment, |Δγ^sl|/Δt (0 when Δt ≤ 0); saturates at
+    /// f64::MAX.
     pub slip_rate: f64,
     /// Stick, slip or exact stick in the last increment.
     pub status: FrictionStatus,
@@ -373,10 +375,13 @@ impl Coulomb {
             Contact::Motion(t) => {
                 check_traction(t)?;
                 let slip = norm(&t.dslip);
+                // Both saturate at f64::MAX rather than overflow: a finite slip over a subnormal
+                // DTIME, or a sum near f64::MAX, would otherwise store ∞ in STATEV, which the
+                // next increment refuses as corrupted.
                 CoulombState {
-                    accumulated_slip: state.accumulated_slip + slip,
+                    accumulated_slip: saturate(state.accumulated_slip + slip),
                     slip_rate: if inc.dtime > 0.0 {
-                        slip / inc.dtime
+                        saturate(slip / inc.dtime)
                     } else {
                         0.0
                     },
@@ -486,6 +491,13 @@ impl Coulomb {
             sfd: dot(&tau, &inc.dgam).max(0.0),
         })
     }
+}
+
+/// `x` capped at f64::MAX (`x` is never NaN here: a sum or quotient of finite values ≥ 0 with
+/// a positive divisor). One compare-and-select, cheaper than `f64::min`'s NaN handling.
+#[inline(always)]
+fn saturate(x: f64) -> f64 {
+    if x > f64::MAX { f64::MAX } else { x }
 }
 
 #[inline(always)]

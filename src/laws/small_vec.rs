@@ -2,11 +2,55 @@
 //! With N = 1 the compiler folds them to scalar code, which is the "2-D runs scalar code"
 //! promise of the contract without a second implementation.
 
-/// Euclidean norm; for N = 1 exactly `|v₁|`.
+/// Euclidean norm; for N = 1 exactly `|v₁|`. Correct over the whole f64 range: when `v·v`
+/// overflows, underflows or is subnormal, the norm is taken of `v` scaled by its largest entry
+/// (as `hypot` does), so entries near f64::MAX or among the subnormals keep their length.
 #[inline]
 #[must_use]
 pub(crate) fn norm<const N: usize>(v: &[f64; N]) -> f64 {
-    if N == 1 { v[0].abs() } else { dot(v, v).sqrt() }
+    if N == 1 {
+        return v[0].abs();
+    }
+    let s = dot(v, v);
+    if is_positive_normal(s) {
+        s.sqrt()
+    } else if *v == [0.0; N] {
+        // The zero vector (a sticking point's slip): common, and exactly 0 without scaling.
+        0.0
+    } else {
+        scaled_norm(v)
+    }
+}
+
+/// `f64::MIN_POSITIVE ≤ x < ∞`, in one integer comparison of the bits (negative values, NaN,
+/// zero and subnormals all fall outside): the range test of the per-call path.
+#[inline(always)]
+fn is_positive_normal(x: f64) -> bool {
+    x.to_bits().wrapping_sub(f64::MIN_POSITIVE.to_bits())
+        < f64::INFINITY.to_bits() - f64::MIN_POSITIVE.to_bits()
+}
+
+/// `m·|v/m|` with m the largest |entry|: no overflow or underflow in the squares. NaN in, NaN
+/// out; ∞ in, ∞ out.
+#[cold]
+#[inline(never)]
+fn scaled_norm<const N: usize>(v: &[f64; N]) -> f64 {
+    let mut m = 0.0f64;
+    for x in v {
+        if x.is_nan() {
+            return f64::NAN;
+        }
+        m = m.max(x.abs());
+    }
+    if m == 0.0 || m == f64::INFINITY {
+        return m;
+    }
+    let mut s = 0.0;
+    for x in v {
+        let r = x / m;
+        s += r * r;
+    }
+    m * s.sqrt()
 }
 
 #[inline]
@@ -30,11 +74,35 @@ pub(crate) fn scale<const N: usize>(v: &[f64; N], s: f64) -> [f64; N] {
 }
 
 /// `v/len`, dividing each entry (not multiplying by `1/len`), so that in 1-D the direction is
-/// exactly ±1 and τ = τ_crit·n lands exactly on μp.
+/// exactly ±1 and τ = τ_crit·n lands exactly on μp. `len` is `norm(v)`; when it is subnormal
+/// its rounding is coarse (up to 41 % for two entries of the smallest subnormal), and when it
+/// overflows every entry divides to 0, so then the direction is taken of `v` scaled exactly by
+/// a power of two instead.
 #[inline]
 #[must_use]
 pub(crate) fn unit<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
+    if N > 1 && !is_positive_normal(len) {
+        return unit_of_extreme(v, len);
+    }
     let mut out = *v;
+    for x in &mut out {
+        *x /= len;
+    }
+    out
+}
+
+/// The direction of a vector whose norm `len` is subnormal or overflows (zero or NaN entries
+/// give NaN, as `v/len` would).
+#[cold]
+#[inline(never)]
+fn unit_of_extreme<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
+    // 2^±600: exact on entries below f64::MIN_POSITIVE (up) or near f64::MAX (down), and takes
+    // them far from both ends of the range.
+    const UP: f64 = f64::from_bits((1023 + 600) << 52);
+    const DOWN: f64 = f64::from_bits((1023 - 600) << 52);
+    let w = scale(v, if len < 1.0 { UP } else { DOWN });
+    let len = norm(&w);
+    let mut out = w;
     for x in &mut out {
         *x /= len;
     }
@@ -86,4 +154,50 @@ pub(crate) fn transverse_projection<const N: usize>(n: &[f64; N], s: f64) -> [[f
 #[must_use]
 pub(crate) fn all_finite<const N: usize>(v: &[f64; N]) -> bool {
     v.iter().all(|x| x.is_finite())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn norm_over_the_whole_range() {
+        // 3-4-5 at every scale: the squares overflow above ~1e154 and underflow below ~1e-154.
+        for scale_by in [1.0, 1e300, 1e-300, 1e-320, f64::MAX / 5.0] {
+            let v = [3.0 * scale_by, 4.0 * scale_by];
+            let expected = 5.0 * scale_by;
+            let n = norm(&v);
+            assert!(
+                (n - expected).abs() <= expected * 1e-15 + 1e-323,
+                "{scale_by}: {n} vs {expected}"
+            );
+        }
+        assert_eq!(norm(&[0.0, 0.0]), 0.0);
+        assert_eq!(norm(&[-5e-324, 0.0]), 5e-324);
+        assert_eq!(norm(&[f64::MAX, 0.0]), f64::MAX);
+        assert_eq!(norm(&[f64::INFINITY, 1.0]), f64::INFINITY);
+        assert!(norm(&[f64::NAN, f64::INFINITY]).is_nan());
+        assert!(norm(&[f64::NAN, 1.0]).is_nan());
+    }
+
+    #[test]
+    fn unit_vectors_of_tiny_and_huge_vectors_have_length_one() {
+        for v in [
+            [5e-324, 5e-324],
+            [-5e-324, 1.5e-323],
+            [3e-320, -4e-320],
+            [1e-300, 1e-300],
+            [1e300, -1e300],
+            [f64::MAX, f64::MAX],
+        ] {
+            let n = unit(&v, norm(&v));
+            let len = (n[0] * n[0] + n[1] * n[1]).sqrt();
+            assert!((len - 1.0).abs() < 1e-15, "{v:?}: {n:?}");
+            // Same direction: the cross product vanishes and the dot product is positive.
+            assert!((n[0] * v[1].signum() - n[1] * v[0].signum()).abs() < 1.0 + 1e-15);
+            assert!(n[0] * v[0] + n[1] * v[1] > 0.0);
+        }
+        // 1-D stays exactly ±1.
+        assert_eq!(unit(&[-5e-324], 5e-324), [-1.0]);
+    }
 }

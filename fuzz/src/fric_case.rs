@@ -1,0 +1,445 @@
+//! One `fric_` call decoded from fuzzer bytes: all 39 arguments and the 3 hidden lengths, every
+//! array allocated with exactly the length the call declares (so AddressSanitizer reports any
+//! access past it), and the properties every call must have.
+//!
+//! Shared by the `fric` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
+
+use std::ffi::{CStr, c_char};
+
+use crate::bytes::Bytes;
+use interfacial::abi::{fric_, ifl_clear_error, ifl_last_error};
+
+/// Written into every output before the call, to see what the call wrote.
+pub const UNWRITTEN: f64 = -7.77e77;
+
+/// Every `fric_` argument. Arrays have exactly their declared lengths.
+#[derive(Clone, Debug)]
+pub struct FricCase {
+    pub lm: i32,
+    pub nfdir: i32,
+    pub nstatv: i32,
+    pub nprops: i32,
+    pub mcrd: i32,
+    pub npred: i32,
+    pub kstep: i32,
+    pub kinc: i32,
+    pub noel: i32,
+    pub npt: i32,
+    pub node: i32,
+    pub npatch: i32,
+    /// `TAU(NFDIR)`.
+    pub tau: Vec<f64>,
+    /// `DGAM(NFDIR)`.
+    pub dgam: Vec<f64>,
+    /// `TAULM(NFDIR)`.
+    pub taulm: Vec<f64>,
+    /// `SLIP(NFDIR)`.
+    pub slip: Vec<f64>,
+    /// `STATEV(NSTATV)`.
+    pub statev: Vec<f64>,
+    /// `PROPS(NPROPS)`.
+    pub props: Vec<f64>,
+    pub press: f64,
+    pub dpress: f64,
+    pub ddpddh: f64,
+    pub dtime: f64,
+    pub chrlngth: f64,
+    pub pnewdt: f64,
+    /// `TIME(2)`.
+    pub time: Vec<f64>,
+    /// `COORDS(MCRD)`.
+    pub coords: Vec<f64>,
+    /// `RCOORD(MCRD)`.
+    pub rcoord: Vec<f64>,
+    /// `DROT(2,2)`.
+    pub drot: Vec<f64>,
+    /// `TEMP(2)`.
+    pub temp: Vec<f64>,
+    /// `PREDEF(2,NPRED)`.
+    pub predef: Vec<f64>,
+    /// `CINAME`, `SLNAME`, `MSNAME`: the hidden lengths are these lengths.
+    pub ciname: Vec<u8>,
+    pub slname: Vec<u8>,
+    pub msname: Vec<u8>,
+    /// Pass NULL for the optional outputs `DSLIP`, `SED`, `SFD`, `DDTDDT`.
+    pub null_optional: bool,
+}
+
+fn len(n: i32) -> usize {
+    usize::try_from(n).unwrap_or(0)
+}
+
+fn vec_of(b: &mut Bytes, n: usize) -> Vec<f64> {
+    (0..n).map(|_| b.real()).collect()
+}
+
+impl FricCase {
+    /// A valid Coulomb call with `nfdir` directions and these `props`, `NSTATV = 3`, all reals
+    /// zero except `DTIME = CHRLNGTH = 1`, `PNEWDT = 1e36`, interaction name `"SI1"` (80 bytes).
+    pub fn coulomb(nfdir: i32, props: &[f64]) -> Self {
+        let n = len(nfdir);
+        let mut ciname = b"SI1".to_vec();
+        ciname.resize(80, b' ');
+        FricCase {
+            lm: 0,
+            nfdir,
+            nstatv: 3,
+            nprops: i32::try_from(props.len()).unwrap_or(i32::MAX),
+            mcrd: 3,
+            npred: 1,
+            kstep: 1,
+            kinc: 1,
+            noel: 1,
+            npt: 1,
+            node: 1,
+            npatch: 1,
+            tau: vec![0.0; n],
+            dgam: vec![0.0; n],
+            taulm: vec![0.0; n],
+            slip: vec![0.0; n],
+            statev: vec![0.0; 3],
+            props: props.to_vec(),
+            press: 0.0,
+            dpress: 0.0,
+            ddpddh: 0.0,
+            dtime: 1.0,
+            chrlngth: 1.0,
+            pnewdt: 1e36,
+            time: vec![0.0; 2],
+            coords: vec![0.0; 3],
+            rcoord: vec![0.0; 3],
+            drot: vec![1.0, 0.0, 0.0, 1.0],
+            temp: vec![20.0; 2],
+            predef: vec![0.0; 2],
+            ciname,
+            slname: vec![b' '; 80],
+            msname: vec![b' '; 80],
+            null_optional: false,
+        }
+    }
+
+    /// Decodes any byte string. The choices favour valid calls (NFDIR 1 or 2, NSTATV ≥ 3, a
+    /// Coulomb `PROPS`) so most inputs reach the law, but every bad shape stays reachable.
+    pub fn decode(data: &[u8]) -> Self {
+        let mut b = Bytes::new(data);
+        let nfdir = b.pick(&[1, 2, 1, 2, 1, 2, 1, 2, 1, 2, 1, 2, 0, 3, -1]);
+        let nstatv = b.pick(&[3, 3, 3, 3, 4, 5, 8, 2, 0, -1]);
+        let nprops = b.pick(&[2, 5, 7, 7, 7, 7, 7, 7, 6, 4, 3, 8, 9, 1, 0, -1]);
+        let lm = b.pick(&[0, 0, 0, 0, 1, 1, 2, -1, 3]);
+        let mcrd = b.pick(&[3, 2, 1, 0]);
+        let npred = b.pick(&[1, 0, 2]);
+        let n = len(nfdir);
+        let mut props = Vec::with_capacity(len(nprops));
+        for i in 0..len(nprops) {
+            let sel = b.u8();
+            let v = match (i, sel % 4) {
+                // PROPS(1): mostly the Coulomb code.
+                (0, 0..=2) => 1.0,
+                // PROPS(3) μ₂: mostly 0 or μ.
+                (2, 0 | 1) => 0.0,
+                (2, 2) => props[1],
+                // PROPS(4..6), PROPS(8..): mostly 0 ("off" / "default").
+                (3..=5 | 7.., 0 | 1) => 0.0,
+                // PROPS(7): stick mode 0, 1, 2.
+                (6, 0..=2) => f64::from(sel % 4),
+                _ => b.real(),
+            };
+            props.push(v);
+        }
+        let flags = b.u8();
+        let name = |b: &mut Bytes| {
+            let l = usize::from(b.u8());
+            let l = if l < 128 { 80 } else { l - 128 };
+            let printed = usize::from(b.u8() % 13);
+            let mut v = b.bytes(l.min(printed));
+            // Mostly a printable name, blank-padded to the hidden length.
+            if flags & 0x40 == 0 {
+                for x in &mut v {
+                    *x = b'A' + *x % 26;
+                }
+            }
+            v.resize(l, if flags & 0x20 == 0 { b' ' } else { 0 });
+            v
+        };
+        FricCase {
+            lm,
+            nfdir,
+            nstatv,
+            nprops,
+            mcrd,
+            npred,
+            kstep: 1,
+            kinc: 1,
+            noel: i32::from(b.u16()),
+            npt: 1,
+            node: i32::from(b.u16()),
+            npatch: 1,
+            tau: vec_of(&mut b, n),
+            dgam: vec_of(&mut b, n),
+            taulm: vec_of(&mut b, n),
+            slip: vec_of(&mut b, n),
+            statev: {
+                let mut s = vec_of(&mut b, len(nstatv));
+                // STATEV(3) is a status code; keep it one mostly.
+                if let Some(x) = s.get_mut(2) {
+                    *x = f64::from(b.u8() % 3);
+                }
+                s
+            },
+            props,
+            press: b.real(),
+            dpress: b.real(),
+            ddpddh: b.real(),
+            dtime: b.real(),
+            chrlngth: b.real(),
+            pnewdt: b.large(),
+            time: vec_of(&mut b, 2),
+            coords: vec_of(&mut b, len(mcrd)),
+            rcoord: vec_of(&mut b, len(mcrd)),
+            drot: vec_of(&mut b, 4),
+            temp: vec_of(&mut b, 2),
+            predef: vec_of(&mut b, 2 * len(npred)),
+            ciname: name(&mut b),
+            slname: name(&mut b),
+            msname: name(&mut b),
+            null_optional: flags & 0x80 != 0,
+        }
+    }
+
+    /// Calls `fric_` and checks every property; `Err` names the first one violated.
+    pub fn check(&self) -> Result<FricOutputs, String> {
+        let before = self.clone();
+        let c = self.clone();
+        let n = len(self.nfdir);
+        let mut out = FricOutputs {
+            lm: c.lm,
+            tau: c.tau.clone(),
+            ddtddg: vec![UNWRITTEN; n * n],
+            ddtddp: vec![UNWRITTEN; n],
+            dslip: vec![UNWRITTEN; n],
+            sed: UNWRITTEN,
+            sfd: UNWRITTEN,
+            ddtddt: vec![UNWRITTEN; 2 * n],
+            pnewdt: c.pnewdt,
+            statev: c.statev.clone(),
+            message: String::new(),
+        };
+        let opt = |p: *mut f64, null: bool| if null { std::ptr::null_mut() } else { p };
+        let null = c.null_optional;
+        ifl_clear_error();
+        // SAFETY: every array has exactly the length the call declares (NFDIR, NFDIR², 2·NFDIR,
+        // NSTATV, NPROPS, MCRD, 2·NPRED, the hidden name lengths); scalars are locals.
+        unsafe {
+            fric_(
+                &mut out.lm,
+                out.tau.as_mut_ptr(),
+                out.ddtddg.as_mut_ptr(),
+                out.ddtddp.as_mut_ptr(),
+                opt(out.dslip.as_mut_ptr(), null),
+                opt(&mut out.sed, null),
+                opt(&mut out.sfd, null),
+                opt(out.ddtddt.as_mut_ptr(), null),
+                &mut out.pnewdt,
+                out.statev.as_mut_ptr(),
+                c.dgam.as_ptr(),
+                c.taulm.as_ptr(),
+                &c.press,
+                &c.dpress,
+                &c.ddpddh,
+                c.slip.as_ptr(),
+                &c.kstep,
+                &c.kinc,
+                c.time.as_ptr(),
+                &c.dtime,
+                &c.noel,
+                c.ciname.as_ptr().cast::<c_char>(),
+                c.slname.as_ptr().cast::<c_char>(),
+                c.msname.as_ptr().cast::<c_char>(),
+                &c.npt,
+                &c.node,
+                &c.npatch,
+                c.coords.as_ptr(),
+                c.rcoord.as_ptr(),
+                c.drot.as_ptr(),
+                c.temp.as_ptr(),
+                c.predef.as_ptr(),
+                &c.nfdir,
+                &c.mcrd,
+                &c.npred,
+                &c.nstatv,
+                &c.chrlngth,
+                c.props.as_ptr(),
+                &c.nprops,
+                c.ciname.len(),
+                c.slname.len(),
+                c.msname.len(),
+            );
+            out.message = CStr::from_ptr(ifl_last_error())
+                .to_string_lossy()
+                .into_owned();
+        }
+        // The input arguments are never written (LM, TAU, PNEWDT, STATEV are in `out`).
+        if !same(&c, &before) {
+            return Err("an input argument was written".into());
+        }
+        self.check_outputs(&out)?;
+        Ok(out)
+    }
+
+    fn check_outputs(&self, out: &FricOutputs) -> Result<(), String> {
+        let refused = out.pnewdt.to_bits() != self.pnewdt.to_bits();
+        if refused == out.message.is_empty() {
+            return Err(format!(
+                "PNEWDT {} -> {} but message {:?}: a refusal must lower PNEWDT and report",
+                self.pnewdt, out.pnewdt, out.message
+            ));
+        }
+        if refused {
+            if out.pnewdt.is_nan() || out.pnewdt >= 1.0 {
+                return Err(format!("refused with PNEWDT = {}", out.pnewdt));
+            }
+            if !out.message.starts_with("interfacial: FRIC: interaction '") {
+                return Err(format!("message does not name routine: {:?}", out.message));
+            }
+            if out.lm != self.lm || bits(&out.tau) != bits(&self.tau) {
+                return Err("refused but LM or TAU changed".into());
+            }
+            if bits(&out.statev) != bits(&self.statev) {
+                return Err("refused but STATEV changed".into());
+            }
+            return Ok(());
+        }
+        // Success.
+        if self.lm == 2 {
+            let untouched = out.lm == 2
+                && bits(&out.tau) == bits(&self.tau)
+                && bits(&out.statev) == bits(&self.statev)
+                && out.written().is_empty();
+            return if untouched {
+                Ok(())
+            } else {
+                Err("LM = 2 on entry but an output was written".into())
+            };
+        }
+        if out.lm != 0 && out.lm != 1 {
+            return Err(format!("LM = {} on exit", out.lm));
+        }
+        let mut written = out.written();
+        if out.lm == 0 {
+            written.extend(&out.tau);
+        }
+        written.extend(&out.statev[..3]);
+        if let Some(x) = written.iter().find(|x| !x.is_finite()) {
+            return Err(format!("success with a non-finite output {x}: {out:?}"));
+        }
+        if bits(&out.statev[3..]) != bits(&self.statev[3..]) {
+            return Err("STATEV past the law's 3 entries was written".into());
+        }
+        if out.statev[1] < 0.0 || ![0.0, 1.0, 2.0].contains(&out.statev[2]) {
+            return Err(format!("bad state {:?}", &out.statev[..3]));
+        }
+        if out.statev[0] < self.statev[0] {
+            return Err("accumulated slip decreased".into());
+        }
+        for (name, x) in [("SED", out.sed), ("SFD", out.sfd)] {
+            if x != UNWRITTEN && x < 0.0 {
+                return Err(format!("{name} = {x} < 0"));
+            }
+        }
+        if out.lm == 0 {
+            self.check_cone(out)?;
+        }
+        Ok(())
+    }
+
+    /// |τ| ≤ τ_crit = min(μp, τ_max) (0 for p < 0), and |τ| = τ_crit while slipping.
+    fn check_cone(&self, out: &FricOutputs) -> Result<(), String> {
+        let get = |i: usize| self.props.get(i).copied().unwrap_or(0.0);
+        let (mu, tau_max) = (get(1), get(3));
+        let tau_max = if tau_max > 0.0 {
+            tau_max
+        } else {
+            f64::INFINITY
+        };
+        let tau_crit = if self.press < 0.0 {
+            0.0
+        } else {
+            (mu * self.press).min(tau_max)
+        };
+        let magnitude = out.tau.iter().fold(0.0f64, |s, x| s.hypot(*x));
+        // A few ulps, and a few hundred subnormal steps where τ_crit itself is tiny.
+        let tol = tau_crit * 1e-12 + 1e-321;
+        if magnitude > tau_crit + tol {
+            return Err(format!(
+                "|TAU| = {magnitude:e} above τ_crit = {tau_crit:e}: {out:?}"
+            ));
+        }
+        let elastic = get(6) == 0.0;
+        let slipping = out.statev[2] == 1.0;
+        if elastic && slipping && magnitude < tau_crit - tol && tau_crit >= f64::MIN_POSITIVE {
+            return Err(format!(
+                "slipping with |TAU| = {magnitude:e} below τ_crit = {tau_crit:e}: {out:?}"
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// What `fric_` wrote, and its message (empty on success).
+#[derive(Clone, Debug)]
+pub struct FricOutputs {
+    pub lm: i32,
+    pub tau: Vec<f64>,
+    pub ddtddg: Vec<f64>,
+    pub ddtddp: Vec<f64>,
+    pub dslip: Vec<f64>,
+    pub sed: f64,
+    pub sfd: f64,
+    pub ddtddt: Vec<f64>,
+    pub pnewdt: f64,
+    pub statev: Vec<f64>,
+    pub message: String,
+}
+
+impl FricOutputs {
+    /// The entries of DDTDDG, DDTDDP, DSLIP, SED, SFD, DDTDDT that the call wrote.
+    pub fn written(&self) -> Vec<f64> {
+        let all = self.ddtddg.iter().chain(&self.ddtddp).chain(&self.dslip);
+        all.chain([&self.sed, &self.sfd])
+            .chain(&self.ddtddt)
+            .copied()
+            .filter(|x| x.to_bits() != UNWRITTEN.to_bits())
+            .collect()
+    }
+}
+
+fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
+
+/// Bitwise equality of every input.
+fn same(a: &FricCase, b: &FricCase) -> bool {
+    let reals = |c: &FricCase| {
+        let scalars = [c.press, c.dpress, c.ddpddh, c.dtime, c.chrlngth];
+        let arrays = [
+            &c.dgam, &c.taulm, &c.slip, &c.props, &c.time, &c.coords, &c.rcoord, &c.drot, &c.temp,
+            &c.predef,
+        ];
+        let mut v = bits(&scalars);
+        for a in arrays {
+            v.extend(bits(a));
+        }
+        v
+    };
+    let ints = |c: &FricCase| {
+        [
+            c.nfdir, c.nstatv, c.nprops, c.mcrd, c.npred, c.kstep, c.kinc, c.noel, c.npt, c.node,
+            c.npatch,
+        ]
+    };
+    reals(a) == reals(b)
+        && ints(a) == ints(b)
+        && a.ciname == b.ciname
+        && a.slname == b.slname
+        && a.msname == b.msname
+}

@@ -1,0 +1,205 @@
+//! One `gapcon_` call decoded from fuzzer bytes, against a fixed configuration file with every
+//! conductance law and radiation; arrays of exactly the declared lengths.
+//!
+//! Shared by the `gapcon` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
+
+use std::ffi::{CStr, c_char};
+use std::sync::Once;
+
+use crate::bytes::Bytes;
+use interfacial::abi::{gapcon_, ifl_clear_error, ifl_last_error};
+
+/// The configuration every `gapcon_` case runs against: one interaction per law, radiation in
+/// kelvin and in °C, and no `"*"` entry, so unknown names take the error path.
+pub const CONFIG: &str = r#"
+[interactions.CONST.conductance]
+law = "constant"
+k = 4500.0
+
+[interactions.PTAB.conductance]
+law = "pressure-table"
+table = [[0.0, 1.0], [1e-300, 2.0], [100.0, 3.0], [1e300, 4.0]]
+
+[interactions.CTAB.conductance]
+law = "clearance-table"
+table = [[0.0, 10.0, 0.0], [1.0, 5.0, 0.0], [0.0, 20.0, 500.0], [1.0, 1.0, 500.0]]
+
+[interactions.GAS.conductance]
+law = "gas-gap"
+k_gas = 0.025
+g0 = 1e-6
+min_gap = 0.0
+
+[interactions.CMY.conductance]
+law = "cmy"
+k_s = 20.0
+m = 0.1
+sigma = 1e-6
+H_c = 3e9
+
+[interactions.RADK.radiation]
+view_factor = 0.8
+stefan_boltzmann = 5.670374419e-8
+absolute_zero = 0.0
+
+[interactions.BOTH.conductance]
+law = "gas-gap"
+k_gas = 0.025
+g0 = 0.0
+min_gap = 1e-9
+
+[interactions.BOTH.radiation]
+view_factor = 1.0
+stefan_boltzmann = 5.670374419e-8
+absolute_zero = -273.15
+"#;
+
+/// The configured names (and one that is not).
+pub const NAMES: [&str; 8] = [
+    "CONST", "PTAB", "CTAB", "GAS", "CMY", "RADK", "BOTH", "NONE",
+];
+
+/// Writes [`CONFIG`] to a file and points `INTERFACIAL_CONFIG` at it, before the first call;
+/// sends the library's messages to `/dev/null` unless `INTERFACIAL_LOG` is already set.
+pub fn setup() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        let path = std::env::temp_dir().join(format!(
+            "interfacial-fuzz-gapcon-{}.toml",
+            std::process::id()
+        ));
+        std::fs::write(&path, CONFIG).expect("write the fuzz configuration");
+        // SAFETY: set once, before any call into the library reads the environment (Once
+        // blocks other threads until it is done).
+        unsafe {
+            std::env::set_var("INTERFACIAL_CONFIG", &path);
+            if std::env::var_os("INTERFACIAL_LOG").is_none() {
+                std::env::set_var("INTERFACIAL_LOG", "/dev/null");
+            }
+        }
+    });
+}
+
+/// Every `gapcon_` argument the library may touch, and the rest.
+#[derive(Clone, Debug)]
+pub struct GapconCase {
+    /// `D(2)`: clearance, pressure.
+    pub d: [f64; 2],
+    /// `TEMP(2)`.
+    pub temp: [f64; 2],
+    /// `CINAME`; the hidden length is its length.
+    pub ciname: Vec<u8>,
+    /// `SLNAME`, `MSNAME`.
+    pub slname: Vec<u8>,
+    pub msname: Vec<u8>,
+    /// `FLOWM(2)`, `PREDEF(2,NPRED)`, `TIME(2)`, `COORDS(3)`: never read.
+    pub flowm: Vec<f64>,
+    pub predef: Vec<f64>,
+    pub time: Vec<f64>,
+    pub coords: Vec<f64>,
+    pub noel: i32,
+    pub node: i32,
+    pub npred: i32,
+}
+
+impl GapconCase {
+    /// Decodes any byte string; names are mostly configured ones, in any case and padding.
+    pub fn decode(data: &[u8]) -> Self {
+        let mut b = Bytes::new(data);
+        let sel = b.u8();
+        let base = NAMES[usize::from(sel) % NAMES.len()];
+        let mut ciname: Vec<u8> = if sel & 0x80 == 0 {
+            base.bytes().collect()
+        } else {
+            let l = usize::from(b.u8() % 24);
+            b.bytes(l)
+        };
+        if sel & 0x40 != 0 {
+            ciname.make_ascii_lowercase();
+        }
+        let pad = usize::from(b.u8());
+        let filler = if pad & 0x80 == 0 { b' ' } else { 0 };
+        ciname.resize(ciname.len() + (pad & 0x7f), filler);
+        let npred = b.pick(&[1, 0, 2]);
+        GapconCase {
+            d: [b.real(), b.real()],
+            temp: [b.real(), b.real()],
+            ciname,
+            slname: vec![b' '; 80],
+            msname: vec![b' '; usize::from(b.u8() % 81)],
+            flowm: vec![f64::NAN; 2],
+            predef: vec![f64::NAN; 2 * usize::try_from(npred).unwrap_or(0)],
+            time: vec![f64::NAN; 2],
+            coords: vec![f64::NAN; 3],
+            noel: i32::from(b.u16()),
+            node: i32::from(b.u16()),
+            npred,
+        }
+    }
+
+    /// Calls `gapcon_` and checks: `AK(1)` finite and ≥ 0 on success, 0 with a message naming
+    /// GAPCON on failure; `AK(2..5)` and every input left alone. Returns `AK(1)`.
+    pub fn check(&self) -> Result<f64, String> {
+        setup();
+        let guard = -7.77e77;
+        let mut ak = vec![guard; 5];
+        let c = self.clone();
+        let (kstep, kinc) = (1i32, 1i32);
+        ifl_clear_error();
+        // SAFETY: AK(5), D(2), TEMP(2) and the names with their exact hidden lengths; the
+        // unread arrays have their declared lengths too.
+        let message = unsafe {
+            gapcon_(
+                ak.as_mut_ptr(),
+                c.d.as_ptr(),
+                c.flowm.as_ptr(),
+                c.temp.as_ptr(),
+                c.predef.as_ptr(),
+                c.time.as_ptr(),
+                c.ciname.as_ptr().cast::<c_char>(),
+                c.slname.as_ptr().cast::<c_char>(),
+                c.msname.as_ptr().cast::<c_char>(),
+                c.coords.as_ptr(),
+                &c.noel,
+                &c.node,
+                &c.npred,
+                &kstep,
+                &kinc,
+                // AREA, never read (CalculiX's variant only).
+                #[cfg(feature = "calculix")]
+                &f64::NAN,
+                c.ciname.len(),
+                c.slname.len(),
+                c.msname.len(),
+            );
+            CStr::from_ptr(ifl_last_error())
+                .to_string_lossy()
+                .into_owned()
+        };
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        if bits(&c.d) != bits(&self.d)
+            || bits(&c.temp) != bits(&self.temp)
+            || c.ciname != self.ciname
+            || c.msname != self.msname
+        {
+            return Err("an input argument was written".into());
+        }
+        if ak[1..].iter().any(|x| *x != guard) {
+            return Err(format!("AK(2..5) written: {ak:?}"));
+        }
+        let k = ak[0];
+        if message.is_empty() {
+            if !(k.is_finite() && k >= 0.0) {
+                return Err(format!("success with AK(1) = {k}: {self:?}"));
+            }
+        } else {
+            if k != 0.0 {
+                return Err(format!("failure with AK(1) = {k}: {message}"));
+            }
+            if !message.starts_with("interfacial: GAPCON: interaction '") {
+                return Err(format!("message does not name the routine: {message:?}"));
+            }
+        }
+        Ok(k)
+    }
+}
