@@ -167,3 +167,30 @@ fn gapcon_checker_accepts_every_configured_law() {
         }
     }
 }
+
+/// Crash 3 (fuzz target `fric`, found on the merged adhesive law): PROPS(1) = 2 with
+/// μ_s = μ_d (coeffStatic = 0, "none") and v_½ = 1, a slip predictor about 10²⁶ times the
+/// stress it returns. τ was computed as T − k_s·Δs, which cancelled and came out 5·10⁻⁷
+/// (relative) above μp. The sliding stress is now evaluated from the law itself.
+const CRASH_ADHESIVE_CANCELLATION: [u8; 77] = [
+    85, 93, 230, 50, 195, 195, 195, 11, 2, 52, 52, 52, 52, 52, 52, 85, 172, 25, 205, 60, 254, 255,
+    255, 255, 255, 255, 255, 255, 255, 255, 255, 97, 97, 97, 97, 97, 97, 97, 97, 97, 255, 0, 255,
+    255, 255, 195, 250, 195, 11, 2, 2, 60, 254, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255,
+    97, 97, 97, 97, 97, 97, 97, 97, 97, 247, 2, 2, 255, 2,
+];
+
+#[test]
+fn crash_3_replays_clean() {
+    let case = FricCase::decode(&CRASH_ADHESIVE_CANCELLATION);
+    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
+    let out = checked(&case);
+    succeeded(&case, &out);
+    // Seed 004 with μ_s = μ_d = μ, S_a = k_μ = 0: sliding stress μp whatever the rate.
+    let mu_p = case.props[1] * case.press;
+    assert_eq!(out.lm, 0);
+    assert!(
+        close(out.tau[0].abs(), mu_p, 1e-13),
+        "{} vs {mu_p}",
+        out.tau[0]
+    );
+}

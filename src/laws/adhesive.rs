@@ -373,7 +373,6 @@ impl Adhesive {
         } else {
             2.0 * c / (root - b)
         };
-        let tau_eq = trial - k_s * slip_eq;
         // ∂g/∂Δs and ∂g/∂p at the root (g as a function of Δs): g_p is the effective coefficient.
         let denom = length_half + slip_eq;
         let (g_s, g_p) = if denom > 0.0 {
@@ -383,6 +382,13 @@ impl Adhesive {
             )
         } else {
             (0.0, mu_s)
+        };
+        // τ = g(Δs, p) at the root, evaluated from the law rather than as T − k_s·Δs: when the
+        // predictor is far outside the cone the difference cancels and loses every digit.
+        let tau_eq = if denom > 0.0 {
+            g_p * p_plus + self.shear_adhesion
+        } else {
+            trial - k_s * slip_eq
         };
         let g_p = if p < 0.0 { 0.0 } else { g_p };
         // r(Δs) = T − k_s Δs − g = 0: dΔs = (dT − Δs dk_s − g_p dp)/(k_s + g_s).
