@@ -4,6 +4,8 @@
 
 use crate::LawError;
 use crate::laws::coulomb::{Coulomb, StickMode};
+use crate::laws::coulomb_extended::{Damping, ExtendedCoulomb, Hht};
+use crate::laws::friction_coefficient::CoefficientLaw;
 
 /// `PROPS(1)` code of the Coulomb family.
 pub const LAW_COULOMB: i32 = 1;
@@ -12,11 +14,16 @@ pub const LAW_COULOMB: i32 = 1;
 /// missing trailing entries take their documented defaults.
 pub const COULOMB_NPROPS: usize = 7;
 
+/// Number of `PROPS` entries the extended Coulomb law reads (`PROPS(1..20)`, docs/props.md).
+pub const COULOMB_EXTENDED_NPROPS: usize = 20;
+
 /// A law selected and parametrised by `PROPS`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum FrictionLaw {
     /// `PROPS(1) = 1`.
     Coulomb(Coulomb),
+    /// `PROPS(1) = 1` with anisotropy, a μ law, HHT or damping (`PROPS(3)`, `PROPS(8..20)`).
+    CoulombExtended(ExtendedCoulomb),
 }
 
 /// Reads `PROPS(1)` (the law code) and the law's parameters.
@@ -28,6 +35,7 @@ pub enum FrictionLaw {
 pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
     match coulomb_fast(props) {
         Some(law) => Ok(FrictionLaw::Coulomb(law)),
+        None if props.len() >= 2 && props[0] == f64::from(LAW_COULOMB) => coulomb_extended(props),
         None => friction_law_checked(props),
     }
 }
@@ -67,7 +75,7 @@ pub fn friction_law_checked(props: &[f64]) -> Result<FrictionLaw, LawError> {
         ));
     };
     if code == f64::from(LAW_COULOMB) {
-        coulomb(props).map(FrictionLaw::Coulomb)
+        coulomb_extended(props)
     } else if code.is_finite() && code.fract() == 0.0 {
         Err(LawError::Parameter(format!(
             "PROPS(1) = {code} is not a known law code (1 = Coulomb)"
@@ -90,27 +98,8 @@ fn coulomb(props: &[f64]) -> Result<Coulomb, LawError> {
         )));
     }
     let get = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
-    if let Some((i, v)) = props
-        .iter()
-        .enumerate()
-        .skip(COULOMB_NPROPS)
-        .find(|(_, v)| **v != 0.0)
-    {
-        return Err(LawError::Parameter(format!(
-            "PROPS({}) = {v} is not used by the Coulomb law (PROPS(1..{COULOMB_NPROPS})); \
-             refusing to ignore it",
-            i + 1
-        )));
-    }
     let mu = get(2);
-    let mu2 = get(3);
     let mut law = Coulomb::new(mu).map_err(|e| in_props(2, e))?;
-    if mu2 != 0.0 && mu2 != mu {
-        return Err(LawError::Parameter(format!(
-            "PROPS(3) = μ₂ = {mu2} differs from μ = {mu}: anisotropic friction is not \
-             available yet; give PROPS(3) = 0 for isotropic friction"
-        )));
-    }
     let tau_max = get(4);
     if tau_max != 0.0 {
         law = law.with_shear_limit(tau_max).map_err(|e| in_props(4, e))?;
@@ -138,6 +127,125 @@ fn coulomb(props: &[f64]) -> Result<Coulomb, LawError> {
         }
     };
     Ok(law.with_stick(stick))
+}
+
+/// The whole law-1 layout (`PROPS(1..20)`, docs/props.md): the base entries, then anisotropy
+/// (`PROPS(3)`), the μ law (`PROPS(8..13)`), HHT (`PROPS(14..16)`), damping (`PROPS(17..19)`)
+/// and the frozen-μ switch (`PROPS(20)`). Returns the plain [`Coulomb`] when nothing beyond it
+/// is switched on (the cheapest path).
+pub fn coulomb_extended(props: &[f64]) -> Result<FrictionLaw, LawError> {
+    let get = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
+    if let Some((i, v)) = props
+        .iter()
+        .enumerate()
+        .skip(COULOMB_EXTENDED_NPROPS)
+        .find(|(_, v)| **v != 0.0)
+    {
+        return Err(unused_entry(
+            i + 1,
+            *v,
+            "the Coulomb law reads PROPS(1..20)",
+        ));
+    }
+    let base = coulomb(props)?;
+    let mu = get(2);
+    let mu2 = get(3);
+    let extras = (mu2 != 0.0 && mu2 != mu) || (8..=COULOMB_EXTENDED_NPROPS).any(|i| get(i) != 0.0);
+    if !extras {
+        return Ok(FrictionLaw::Coulomb(base));
+    }
+    let mut law = ExtendedCoulomb::new(base);
+    if mu2 != 0.0 && mu2 != mu {
+        law = law
+            .with_second_coefficient(mu2)
+            .map_err(|e| in_props(3, e))?;
+    }
+    // μ law: PROPS(8) selector, PROPS(9) μ_k, PROPS(10) d_c.
+    let mut coefficient = CoefficientLaw::default();
+    match get(8) {
+        0.0 => {
+            for i in [9, 10] {
+                if get(i) != 0.0 {
+                    return Err(unused_entry(i, get(i), "PROPS(8) = 0 (constant μ)"));
+                }
+            }
+        }
+        1.0 => {
+            let (mu_k, decay) = (get(9), get(10));
+            if mu.is_nan() || mu <= 0.0 {
+                return Err(LawError::Parameter(format!(
+                    "PROPS(2) = μ_s = {mu} must be > 0 with the exponential decay law \
+                     (PROPS(8) = 1)"
+                )));
+            }
+            if !(mu_k.is_finite() && mu_k >= 0.0) {
+                return Err(LawError::Parameter(format!(
+                    "PROPS(9) = μ_k = {mu_k} must be finite and ≥ 0"
+                )));
+            }
+            coefficient = coefficient
+                .with_exponential_decay(mu_k / mu, decay)
+                .map_err(|e| in_props(10, e))?;
+        }
+        other => {
+            return Err(LawError::Parameter(format!(
+                "PROPS(8) = {other} must be the μ law 0 (constant) or 1 (exponential decay)"
+            )));
+        }
+    }
+    if get(11) != 0.0 {
+        coefficient = coefficient
+            .with_pressure_reference(get(11))
+            .map_err(|e| in_props(11, e))?;
+    }
+    if get(12) != 0.0 {
+        coefficient = coefficient
+            .with_temperature(get(12), get(13))
+            .map_err(|e| in_props(12, e))?;
+    } else if get(13) != 0.0 {
+        return Err(unused_entry(
+            13,
+            get(13),
+            "PROPS(12) = 0 (no temperature law)",
+        ));
+    }
+    law = law.with_coefficient_law(coefficient);
+    // HHT: on when any of PROPS(14..16) is non-zero.
+    if (14..=16).any(|i| get(i) != 0.0) {
+        let hht = Hht::new(get(14), get(15), get(16)).map_err(|e| in_props(14, e))?;
+        law = law.with_hht(Some(hht));
+    }
+    // Damping: PROPS(17) c₀, PROPS(18) g₀, PROPS(19) f.
+    if get(17) != 0.0 {
+        let d = Damping::new(get(17), get(18), get(19)).map_err(|e| in_props(17, e))?;
+        law = law.with_damping(Some(d));
+    } else {
+        for i in [18, 19] {
+            if get(i) != 0.0 {
+                return Err(unused_entry(i, get(i), "PROPS(17) = 0 (no damping)"));
+            }
+        }
+    }
+    match get(20) {
+        0.0 => {}
+        1.0 if coefficient.is_rate_dependent() => law = law.with_frozen_coefficient(true),
+        1.0 => return Err(unused_entry(20, 1.0, "μ does not depend on the slip rate")),
+        other => {
+            return Err(LawError::Parameter(format!(
+                "PROPS(20) = {other} must be 0 (μ at the end-of-increment rate) or 1 (μ frozen \
+                 at the start of the increment)"
+            )));
+        }
+    }
+    Ok(FrictionLaw::CoulombExtended(law))
+}
+
+#[cold]
+#[inline(never)]
+fn unused_entry(index: usize, v: f64, why: &str) -> LawError {
+    LawError::Parameter(format!(
+        "PROPS({index}) = {v} is not read ({why}); refusing to ignore it"
+    ))
 }
 
 fn in_props(index: usize, e: LawError) -> LawError {
@@ -176,9 +284,12 @@ mod tests {
             let checked = friction_law_checked(&props);
             match (fast, checked) {
                 (Some(f), Ok(FrictionLaw::Coulomb(c))) => prop_assert_eq!(f, c),
+                (Some(_), Ok(other)) => prop_assert!(false, "fast path gave Coulomb, checked {other:?}"),
                 (None, Err(_)) => {}
                 // Longer PROPS with trailing zeros are valid but left to the checked path.
-                (None, Ok(_)) => prop_assert!(props.len() > COULOMB_NPROPS),
+                (None, Ok(FrictionLaw::Coulomb(_))) => prop_assert!(props.len() > COULOMB_NPROPS),
+                // Anisotropy or an extended entry: not the fast path's business.
+                (None, Ok(_)) => {}
                 (Some(_), Err(e)) => prop_assert!(false, "fast path accepted {props:?}: {e}"),
             }
         }
@@ -186,7 +297,9 @@ mod tests {
 
     #[test]
     fn minimal_props_take_defaults() {
-        let FrictionLaw::Coulomb(c) = friction_law(&[1.0, 0.3]).unwrap();
+        let Ok(FrictionLaw::Coulomb(c)) = friction_law(&[1.0, 0.3]) else {
+            panic!("plain Coulomb expected")
+        };
         assert_eq!(c.mu(), 0.3);
         assert_eq!(c.shear_limit(), None);
         assert_eq!(c.critical_slip(), CriticalSlip::Tolerance(0.005));
@@ -195,7 +308,10 @@ mod tests {
 
     #[test]
     fn full_props() {
-        let FrictionLaw::Coulomb(c) = friction_law(&[1.0, 0.3, 0.0, 7.0, 1e-3, 0.01, 1.0]).unwrap();
+        let Ok(FrictionLaw::Coulomb(c)) = friction_law(&[1.0, 0.3, 0.0, 7.0, 1e-3, 0.01, 1.0])
+        else {
+            panic!("plain Coulomb expected")
+        };
         assert_eq!(c.shear_limit(), Some(7.0));
         assert_eq!(c.critical_slip(), CriticalSlip::Absolute(1e-3));
         assert_eq!(c.stick(), StickMode::Exact);
@@ -209,12 +325,113 @@ mod tests {
             (&[3.0, 0.3][..], "PROPS(1) = 3"),
             (&[1.5, 0.3][..], "integer"),
             (&[1.0, -0.3][..], "PROPS(2)"),
-            (&[1.0, 0.3, 0.4][..], "PROPS(3)"),
+            (&[1.0, 0.3, -0.4][..], "PROPS(3)"),
             (&[1.0, 0.3, 0.0, -1.0][..], "PROPS(4)"),
             (&[1.0, 0.3, 0.0, 0.0, -1.0][..], "PROPS(5)"),
             (&[1.0, 0.3, 0.0, 0.0, 0.0, -1.0][..], "PROPS(6)"),
             (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 3.0][..], "PROPS(7)"),
-            (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0][..], "PROPS(8)"),
+            (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 2.0][..], "PROPS(8)"),
+            (
+                &[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.1][..],
+                "PROPS(9)",
+            ),
+            (
+                &[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, -0.1, 1.0][..],
+                "PROPS(9)",
+            ),
+            (
+                &[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.1, -1.0][..],
+                "PROPS(10)",
+            ),
+            (
+                &[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.1, 0.0][..],
+                "PROPS(10)",
+            ),
+            (
+                &[1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.1, 1.0][..],
+                "PROPS(2)",
+            ),
+            (
+                &[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -5.0][..],
+                "PROPS(11)",
+            ),
+            (
+                &[
+                    1.0,
+                    0.3,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    f64::NAN,
+                ][..],
+                "PROPS(12)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 20.0,
+                ][..],
+                "PROPS(13)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.5,
+                ][..],
+                "PROPS(14)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0,
+                ][..],
+                "PROPS(14)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                    -2.0,
+                ][..],
+                "PROPS(17)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                    0.0, 1.0,
+                ][..],
+                "PROPS(18)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                    1.0, 1.0, 1.5,
+                ][..],
+                "PROPS(17)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                    0.0, 0.0, 0.0, 1.0,
+                ][..],
+                "PROPS(20)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.1, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                    0.0, 0.0, 0.0, 2.0,
+                ][..],
+                "PROPS(20)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                    0.0, 0.0, 0.0, 0.0, 1.0,
+                ][..],
+                "PROPS(21)",
+            ),
         ] {
             let e = friction_law(props).unwrap_err().to_string();
             assert!(e.contains(needle), "{props:?}: {e}");

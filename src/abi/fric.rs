@@ -7,6 +7,7 @@ use super::{
     write_zeros,
 };
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
+use crate::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
 use crate::props::{FrictionLaw, friction_law};
 use crate::report::Site;
 use crate::{CUTBACK_RATIO, LawError};
@@ -88,9 +89,9 @@ pub unsafe extern "C" fn fric_(
     slname_len: usize,
     msname_len: usize,
 ) {
-    // Not read by the Coulomb law (see the doc comment for DROT).
+    // Not read by the Coulomb law (DROT and TEMP only by the extended law: docs/props.md).
     let _ = (
-        ddpddh, slip, kstep, kinc, time, npatch, coords, rcoord, drot, temp, predef,
+        ddpddh, slip, kstep, kinc, time, npatch, coords, rcoord, predef,
     );
     let _ = (mcrd, npred, slname, msname, slname_len, msname_len);
     let args = FricArgs {
@@ -114,6 +115,8 @@ pub unsafe extern "C" fn fric_(
         chrlngth,
         props,
         nprops,
+        temp,
+        drot,
     };
     let _ = boundary(
         // SAFETY (all three closures): the pointers are the host's, valid per the contract above.
@@ -145,6 +148,8 @@ struct FricArgs {
     chrlngth: *const f64,
     props: *const f64,
     nprops: *const c_int,
+    temp: *const f64,
+    drot: *const f64,
 }
 
 impl FricArgs {
@@ -167,16 +172,23 @@ impl FricArgs {
             let Ok(nprops) = usize::try_from(nprops) else {
                 return Err(negative_nprops(nprops));
             };
-            let FrictionLaw::Coulomb(law) = friction_law(slice(self.props, nprops, "PROPS")?)?;
+            let law = friction_law(slice(self.props, nprops, "PROPS")?)?;
             let nstatv = read(self.nstatv, "NSTATV")?;
             let nstatv = match usize::try_from(nstatv) {
                 Ok(n) if n >= CoulombState::NSTATV => n,
                 _ => return Err(short_nstatv(nstatv)),
             };
-            match read(self.nfdir, "NFDIR")? {
-                1 => self.point::<1>(&law, entry, nstatv),
-                2 => self.point::<2>(&law, entry, nstatv),
-                other => Err(bad_nfdir(other)),
+            match law {
+                FrictionLaw::Coulomb(law) => match read(self.nfdir, "NFDIR")? {
+                    1 => self.point::<1>(&law, entry, nstatv),
+                    2 => self.point::<2>(&law, entry, nstatv),
+                    other => Err(bad_nfdir(other)),
+                },
+                FrictionLaw::CoulombExtended(law) => match read(self.nfdir, "NFDIR")? {
+                    1 => self.point_extended::<1>(&law, entry, nstatv),
+                    2 => self.point_extended::<2>(&law, entry, nstatv),
+                    other => Err(bad_nfdir(other)),
+                },
             }
         }
     }
@@ -239,6 +251,92 @@ impl FricArgs {
         }
     }
 
+    /// One contact point with the extended Coulomb law (anisotropy, μ law, HHT, damping).
+    /// Computes everything before writing, like [`Self::point`].
+    unsafe fn point_extended<const N: usize>(
+        &self,
+        law: &ExtendedCoulomb,
+        entry: EntryFlag,
+        nstatv: usize,
+    ) -> Result<(), LawError> {
+        // SAFETY (whole body): arrays of N, N·N, 2N, NSTATV, 2 and 4 entries per the FRIC
+        // contract; STATEV is read only up to the checked NSTATV.
+        unsafe {
+            let needed = law.nstatv(N);
+            if nstatv < needed {
+                return Err(short_nstatv_extended(nstatv, needed));
+            }
+            let inc = Increment::<N> {
+                tau: read_array(self.tau, "TAU")?,
+                dgam: read_array(self.dgam, "DGAM")?,
+                taulm: if entry == EntryFlag::ExactStick {
+                    read_array(self.taulm, "TAULM")?
+                } else {
+                    [0.0; N]
+                },
+                pressure: read(self.press, "PRESS")?,
+                dpressure: read(self.dpress, "DPRESS")?,
+                dtime: read(self.dtime, "DTIME")?,
+                characteristic_length: read(self.chrlngth, "CHRLNGTH")?,
+                entry,
+            };
+            let mut conditions = Conditions::default();
+            if law.reads_temperature() {
+                let [t1, t2] = read_array::<2>(self.temp, "TEMP")?;
+                conditions.temperature = 0.5 * (t1 + t2);
+            }
+            if law.damping().is_some() && N == 2 {
+                // DROT(2,2), column-major: DROT(a,b) at (a-1) + 2(b-1).
+                let r = read_array::<4>(self.drot, "DROT")?;
+                conditions.drot = [[r[0], r[2]], [r[1], r[3]]];
+            }
+            let statev = slice(self.statev, nstatv, "STATEV")?;
+            let mut state = ExtendedState::<N> {
+                coulomb: CoulombState::from_statev(statev)?,
+                viscous: [0.0; N],
+            };
+            if law.damping().is_some() {
+                state.viscous.copy_from_slice(&statev[3..3 + N]);
+            }
+            let up = law.update(&inc, &conditions, &state)?;
+            let mut end_state = [0.0; CoulombState::NSTATV];
+            up.state.coulomb.write_statev(&mut end_state);
+            write_array(self.statev, &end_state);
+            if law.damping().is_some() {
+                write_array(self.statev.add(3), &up.state.viscous);
+            }
+            match up.contact {
+                Contact::ExactStick => {
+                    write(self.lm, 1);
+                    write_array(self.dslip, &[0.0; N]);
+                    write(self.sed, 0.0);
+                    write(self.sfd, 0.0);
+                }
+                Contact::Motion(t) => {
+                    write(self.lm, 0);
+                    write_array(self.tau, &t.tau);
+                    write_matrix(self.ddtddg, &t.ddtddg);
+                    write_array(self.ddtddp, &t.ddtddp);
+                    write_array(self.dslip, &t.dslip);
+                    write(self.sed, t.sed);
+                    write(self.sfd, t.sfd);
+                    // DDTDDT(a,1) and DDTDDT(a,2): θ̄ = (θ_slave + θ_master)/2, so each
+                    // surface temperature carries half of ∂τ/∂θ̄.
+                    if !self.ddtddt.is_null() {
+                        let half = scale_half(&up.ddtdtheta);
+                        write_array(self.ddtddt, &half);
+                        write_array(self.ddtddt.add(N), &half);
+                    }
+                }
+            }
+            let ratio = up.outcome.step_ratio;
+            if ratio.is_finite() && !self.pnewdt.is_null() && ratio < self.pnewdt.read() {
+                self.pnewdt.write(ratio);
+            }
+            Ok(())
+        }
+    }
+
     /// The documented safe outputs of a failed call.
     unsafe fn fail(&self) {
         // SAFETY: as in `run`; arrays are written only when NFDIR is known to be 1 or 2.
@@ -288,6 +386,23 @@ fn short_nstatv(nstatv: c_int) -> LawError {
         "NSTATV = {nstatv} but the Coulomb law needs {} state variables (*DEPVAR / the NSTATV \
          of *FRICTION, USER)",
         CoulombState::NSTATV
+    ))
+}
+
+fn scale_half<const N: usize>(v: &[f64; N]) -> [f64; N] {
+    let mut out = *v;
+    for x in &mut out {
+        *x *= 0.5;
+    }
+    out
+}
+
+#[cold]
+#[inline(never)]
+fn short_nstatv_extended(nstatv: usize, needed: usize) -> LawError {
+    LawError::Parameter(format!(
+        "NSTATV = {nstatv} but the Coulomb law with tangential damping needs {needed} (3 + NFDIR: \
+         STATEV(4..) keep the viscous stress)"
     ))
 }
 

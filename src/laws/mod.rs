@@ -1,7 +1,10 @@
 //! The contact-interface laws, one per file, each in the field's words and free of `unsafe`.
 
 pub mod coulomb;
+pub mod coulomb_extended;
+pub mod friction_coefficient;
 pub mod gap_conductance;
 pub mod gap_radiation;
+pub mod scalar_root;
 mod small_vec;
 pub mod table;
