@@ -149,6 +149,51 @@ void fric_(int *lm,
            size_t slname_len,
            size_t msname_len);
 
+/**
+ * Abaqus/Standard `FRIC_COEF`: μ of `nBlock` points and its derivatives, callable from Fortran as
+ * `CALL FRIC_COEF(...)`.
+ *
+ * `PROPS` has the `fric_` law-1 layout (docs/props.md); only the μ entries matter here
+ * (`PROPS(2)` μ₁, `PROPS(3)` μ₂, `PROPS(8..13)` the rate, pressure and temperature laws).
+ * For point k: the slip-rate magnitude is `slipData(k,1)`, the pressure `pressure(k)` and the
+ * temperature `tempAvg(k)` (read only with a temperature law). Writes:
+ * - `fCoef(k,1)` = μ₁ and `fCoef(k,2)` = μ₂ (= μ₁ when isotropic);
+ * - `fCoefDeriv(k,1,d)` = ∂μ_d/∂γ̇_eq, `fCoefDeriv(k,2,d)` = ∂μ_d/∂p,
+ *   `fCoefDeriv(k,3,d)` = ∂μ_d/∂θ̄, `fCoefDeriv(k,4..20,d)` = 0 (μ depends on nothing else).
+ *
+ * A negative pressure uses the μ of p = 0 with ∂μ/∂p = 0. `iData`, `rData`, `fieldAvg`,
+ * `surfSec`, `surfMain` are not read.
+ *
+ * On failure (bad `PROPS`, NaN or infinite input, a negative slip rate, `nBlock` < 0, a
+ * temperature law with `nTemp` = 0, overflow, internal panic) the whole block gets μ = 0 and
+ * zero derivatives, and one message per distinct cause is reported (FRIC_COEF has no
+ * `PNEWDT`; `INTERFACIAL_STRICT=1` aborts instead).
+ *
+ * # Safety
+ * Pointers valid for the FRIC_COEF signature: `fCoef(nBlock,2)`, `fCoefDeriv(nBlock,20,2)`,
+ * `props(nProps)`, `slipData(nBlock,6)`, `pressure(nBlock)`, `tempAvg(nBlock)` (when read),
+ * names of the given hidden lengths.
+ */
+void fric_coef_(double *fcoef,
+                double *fcoef_deriv,
+                const int *nblock,
+                const int *nprops,
+                const int *ntemp,
+                const int *nfields,
+                const int *idata,
+                const double *rdata,
+                const char *surf_int,
+                const char *surf_sec,
+                const char *surf_main,
+                const double *props,
+                const double *slip_data,
+                const double *pressure,
+                const double *temp_avg,
+                const double *field_avg,
+                size_t surf_int_len,
+                size_t surf_sec_len,
+                size_t surf_main_len);
+
 #if !defined(INTERFACIAL_CALCULIX)
 /**
  * Abaqus/Standard `GAPCON`: gap conductance `AK(1)` of one point, callable from Fortran as

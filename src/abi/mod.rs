@@ -12,11 +12,13 @@ use crate::LawError;
 use crate::report::{Site, report};
 
 pub mod fric;
+pub mod fric_coef;
 pub mod gapcon;
 pub mod host;
 pub mod native;
 
 pub use fric::fric_;
+pub use fric_coef::fric_coef_;
 pub use gapcon::gapcon_;
 pub use native::{
     IflConductance, IflStatus, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
