@@ -222,7 +222,16 @@ fn agrees_with_steady_sliding_through_fric() {
 #[test]
 fn bad_input_is_refused_cleanly() {
     let good = props(0.5, 0.0, Some((0.25, 3.0)), 0.0, Some((0.01, 0.0)));
-    let cases: &[(&str, Vec<f64>, [f64; 2], [f64; 2], [f64; 2], &str)] = &[
+    /// (what, PROPS, slip rates, pressures, temperatures, word in the message)
+    type Case = (
+        &'static str,
+        Vec<f64>,
+        [f64; 2],
+        [f64; 2],
+        [f64; 2],
+        &'static str,
+    );
+    let cases: &[Case] = &[
         (
             "μ_s < 0",
             props(-0.5, 0.0, None, 0.0, None),
