@@ -35,8 +35,10 @@ pub enum FrictionLaw {
 pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
     match coulomb_fast(props) {
         Some(law) => Ok(FrictionLaw::Coulomb(law)),
-        None if props.len() >= 2 && props[0] == f64::from(LAW_COULOMB) => coulomb_extended(props),
-        None => friction_law_checked(props),
+        None => match coulomb_extended_fast(props) {
+            Some(law) => Ok(law),
+            None => friction_law_checked(props),
+        },
     }
 }
 
@@ -63,6 +65,92 @@ fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
         _ => return None,
     };
     valid.then(|| Coulomb::from_validated(mu, tau_max, gamma_crit, tolerance, stick))
+}
+
+/// The extended law-1 layout (`PROPS(3)`, `PROPS(8..20)`) when valid, else `None` (the
+/// checked path then says what is wrong). Decides validity with plain comparisons and builds
+/// the law from already-validated parts; a property test checks it agrees with
+/// [`coulomb_extended`].
+#[inline]
+fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
+    if props.len() < 2
+        || props.len() > COULOMB_EXTENDED_NPROPS
+        || props[0] != f64::from(LAW_COULOMB)
+    {
+        return None;
+    }
+    let mut e = [0.0; COULOMB_EXTENDED_NPROPS + 1];
+    e[1..=props.len()].copy_from_slice(props);
+    let finite = |v: f64| v.is_finite();
+    let positive = |v: f64| v > 0.0 && v < f64::INFINITY;
+    let off_or_positive = |v: f64| v == 0.0 || positive(v);
+    let (mu, mu2) = (e[2], e[3]);
+    let stick = match e[7] {
+        0.0 => StickMode::Elastic,
+        1.0 => StickMode::Exact,
+        2.0 => StickMode::Rough,
+        _ => return None,
+    };
+    let decay = match e[8] {
+        0.0 if e[9] == 0.0 && e[10] == 0.0 => None,
+        1.0 if positive(mu) && (0.0..f64::INFINITY).contains(&e[9]) && positive(e[10]) => {
+            Some((e[9] / mu, e[10]))
+        }
+        _ => return None,
+    };
+    let hht_on = e[14] != 0.0 || e[15] != 0.0 || e[16] != 0.0;
+    let valid = (0.0..f64::INFINITY).contains(&mu)
+        && (mu2 == 0.0 || mu2 == mu || (positive(mu2) && mu > 0.0))
+        && off_or_positive(e[4])
+        && off_or_positive(e[5])
+        && off_or_positive(e[6])
+        && off_or_positive(e[11])
+        && finite(e[12])
+        && finite(e[13])
+        && (e[12] != 0.0 || e[13] == 0.0)
+        && (!hht_on
+            || ((-0.5..=0.0).contains(&e[14]) && off_or_positive(e[15]) && off_or_positive(e[16])))
+        && (if e[17] == 0.0 {
+            e[18] == 0.0 && e[19] == 0.0
+        } else {
+            positive(e[17]) && (0.0..f64::INFINITY).contains(&e[18]) && (0.0..1.0).contains(&e[19])
+        })
+        && (e[20] == 0.0 || (e[20] == 1.0 && decay.is_some()));
+    if !valid {
+        return None;
+    }
+    let base = Coulomb::from_validated(mu, e[4], e[5], e[6], stick);
+    let mu2 = if mu2 == 0.0 { mu } else { mu2 };
+    if mu2 == mu && e[8..].iter().all(|v| *v == 0.0) {
+        return Some(FrictionLaw::Coulomb(base));
+    }
+    let hht = hht_on.then(|| {
+        let alpha = e[14];
+        Hht {
+            alpha,
+            beta: if e[15] == 0.0 {
+                0.25 * (1.0 - alpha) * (1.0 - alpha)
+            } else {
+                e[15]
+            },
+            gamma: if e[16] == 0.0 { 0.5 - alpha } else { e[16] },
+        }
+    });
+    let damping = (e[17] != 0.0).then_some(Damping {
+        c0: e[17],
+        clearance: e[18],
+        fraction: e[19],
+    });
+    Some(FrictionLaw::CoulombExtended(
+        ExtendedCoulomb::from_validated(
+            base,
+            mu2,
+            CoefficientLaw::from_validated(decay, e[11], e[12], e[13]),
+            e[20] == 1.0,
+            hht,
+            damping,
+        ),
+    ))
 }
 
 /// The slow path of [`friction_law`], which says what is wrong.
@@ -291,6 +379,43 @@ mod tests {
                 // Anisotropy or an extended entry: not the fast path's business.
                 (None, Ok(_)) => {}
                 (Some(_), Err(e)) => prop_assert!(false, "fast path accepted {props:?}: {e}"),
+            }
+        }
+    }
+
+    fn extended_entry() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            4 => Just(0.0),
+            1 => Just(1.0),
+            1 => Just(2.0),
+            1 => Just(0.5),
+            1 => Just(-0.2),
+            1 => Just(-1.0),
+            1 => Just(f64::NAN),
+            1 => Just(f64::INFINITY),
+            1 => 0.0..3.0f64,
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 5000, failure_persistence: None, ..ProptestConfig::default() })]
+
+        /// The extended fast path accepts exactly what the checked path accepts (up to 20
+        /// entries), with the same law.
+        #[test]
+        fn extended_fast_and_checked_paths_agree(
+            mut props in prop::collection::vec(extended_entry(), 2..23),
+            mu in prop_oneof![Just(0.0), Just(0.3), Just(-0.1), 0.0..1.0f64],
+        ) {
+            props[0] = 1.0;
+            props[1] = mu;
+            let fast = coulomb_extended_fast(&props);
+            let checked = coulomb_extended(&props);
+            match (fast, checked) {
+                (Some(f), Ok(c)) => prop_assert_eq!(f, c),
+                (None, Err(_)) => {}
+                (None, Ok(c)) => prop_assert!(props.len() > COULOMB_EXTENDED_NPROPS, "{props:?} → {c:?}"),
+                (Some(f), Err(e)) => prop_assert!(false, "fast path accepted {props:?} as {f:?}: {e}"),
             }
         }
     }

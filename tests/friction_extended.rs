@@ -763,6 +763,33 @@ fn local_solve_iterations_over_a_sweep() {
     );
     assert_eq!(failures, 0);
     assert!(worst < MAX_LOCAL_ITERATIONS / 2, "worst {worst}");
+
+    // Steady sliding: the first guess is the slip at the start-of-increment rate (STATEV(2)),
+    // so once steady the solve stops at once.
+    let law = ExtendedCoulomb::new(base).with_coefficient_law(
+        CoefficientLaw::default()
+            .with_exponential_decay(0.5, 20.0)
+            .unwrap(),
+    );
+    let mut st = ExtendedState::<2>::default();
+    let mut tau = [0.0; 2];
+    let mut last = u32::MAX;
+    for k in 0..12 {
+        let inc = Increment::<2> {
+            tau,
+            dgam: [3e-3, 4e-3],
+            pressure: 100.0,
+            dpressure: if k == 0 { 100.0 } else { 0.0 },
+            dtime: 0.01,
+            ..Increment::default()
+        };
+        let u = law.update(&inc, &Conditions::default(), &st).unwrap();
+        tau = traction(u.contact).tau;
+        st = u.state;
+        last = u.iterations;
+    }
+    println!("local solve in steady sliding: {last} iteration(s)");
+    assert!(last <= 1, "{last}");
 }
 
 /// Every new PROPS entry out of range, and Δt ≤ 0 with a rate law or damping, NaN TEMP with a

@@ -26,7 +26,7 @@ use super::coulomb::{
     Increment, StickMode, Traction,
 };
 use super::friction_coefficient::{CoefficientLaw, Factor};
-use super::scalar_root::{RootFailure, bracketed_newton};
+use super::scalar_root::{RootFailure, bracketed_newton, newton_on_known_bracket};
 use super::small_vec::{all_finite, dot, norm, scale, unit};
 use crate::{LawError, Outcome};
 
@@ -237,6 +237,28 @@ impl ExtendedCoulomb {
         }
     }
 
+    /// From parts already validated by the caller (`props.rs`); `mu2` equals μ₁ when isotropic.
+    #[inline]
+    #[must_use]
+    pub(crate) fn from_validated(
+        base: Coulomb,
+        mu2: f64,
+        coefficient: CoefficientLaw,
+        frozen: bool,
+        hht: Option<Hht>,
+        damping: Option<Damping>,
+    ) -> Self {
+        ExtendedCoulomb {
+            base,
+            mu2,
+            coefficient,
+            frozen,
+            hht,
+            damping,
+            general: false,
+        }
+    }
+
     /// Anisotropic friction: μ₂ > 0 in direction 2 (μ₁ = the base μ, which must be > 0).
     pub fn with_second_coefficient(mut self, mu2: f64) -> Result<Self, LawError> {
         if !(mu2.is_finite() && mu2 > 0.0) {
@@ -425,10 +447,20 @@ impl ExtendedCoulomb {
             }
         }
         let (a, mbar) = self.scaling::<N>();
-        let scaled = Scaled {
-            tau: divide(&tau_friction, &a),
-            dgam: multiply(&inc.dgam, &a),
-            taulm: divide(&inc.taulm, &a),
+        // Isotropic friction skips the scaling (a = 1).
+        let anisotropic = a.iter().any(|x| *x != 1.0);
+        let scaled = if anisotropic {
+            Scaled {
+                tau: divide(&tau_friction, &a),
+                dgam: multiply(&inc.dgam, &a),
+                taulm: divide(&inc.taulm, &a),
+            }
+        } else {
+            Scaled {
+                tau: tau_friction,
+                dgam: inc.dgam,
+                taulm: inc.taulm,
+            }
         };
         let start_rate = state.coulomb.slip_rate;
 
@@ -470,20 +502,24 @@ impl ExtendedCoulomb {
         } = scaled_answer;
         // Back to the actual stresses and slips: τ_i = a_i τ̄_i, Δγ_i^sl = Δγ̄_i^sl/a_i, and the
         // linearized equations scaled with the same factors.
-        let mut out = Traction {
-            tau: multiply(&t.tau, &a),
-            ddtddg: t.ddtddg,
-            ddtddp: multiply(&t.ddtddp, &a),
-            dslip: divide(&t.dslip, &a),
-            sed: t.sed,
-            sfd: t.sfd,
-        };
-        for i in 0..N {
-            for j in 0..N {
-                out.ddtddg[i][j] *= a[i] * a[j];
+        let (mut out, ddtdtheta) = if anisotropic {
+            let mut out = Traction {
+                tau: multiply(&t.tau, &a),
+                ddtddg: t.ddtddg,
+                ddtddp: multiply(&t.ddtddp, &a),
+                dslip: divide(&t.dslip, &a),
+                sed: t.sed,
+                sfd: t.sfd,
+            };
+            for i in 0..N {
+                for j in 0..N {
+                    out.ddtddg[i][j] *= a[i] * a[j];
+                }
             }
-        }
-        let ddtdtheta = multiply(&ddtdtheta, &a);
+            (out, multiply(&ddtdtheta, &a))
+        } else {
+            (t, ddtdtheta)
+        };
         // Viscous damping: τ_v = c γ̇ = c Δγ/Δt_rate, tangent c/Δt_rate (seed 003).
         let mut viscous = [0.0; N];
         if let Some(d) = self.damping {
@@ -662,24 +698,40 @@ impl ExtendedCoulomb {
         let n = unit(&predictor, g);
         let rate_law = self.coefficient.is_rate_dependent() && !frozen;
         let (slip_eq, crit, iterations) = if rate_law {
+            // The last evaluation is kept: the solve usually stops at an evaluated point.
+            let mut last = (f64::NAN, Critical::default());
             let residual = |x: f64| {
                 let c = self.critical(mbar, x / rate_dt, p, theta);
+                last = (x, c);
                 (
                     stiffness * (g - x) - c.value,
                     -stiffness - c.d_rate / rate_dt,
                 )
             };
-            // Start from the rate-free answer s = γ̄_eq^pr − γ_crit.
-            let root = bracketed_newton(
+            // F(0) = k̄_s γ̄_eq^pr − τ̄_crit(0) > 0 (slip) and F(γ̄_eq^pr) = −τ̄_crit ≤ 0: the
+            // root is bracketed. Start from the slip at the start-of-increment rate (exact in
+            // steady sliding), else from the rate-free answer s = γ̄_eq^pr − γ_crit; stop at the
+            // round-off level of F.
+            let guess = if start_rate > 0.0 {
+                start_rate * rate_dt
+            } else {
+                g - gamma_crit
+            };
+            let root = newton_on_known_bracket(
                 residual,
-                0.0,
                 g,
-                g - gamma_crit,
+                0.0,
+                guess,
                 4.0 * f64::EPSILON * g,
+                8.0 * f64::EPSILON * (stiffness * g + k.value),
                 MAX_LOCAL_ITERATIONS,
             )
             .map_err(|e| local_solve_failed(e, g, rate_dt))?;
-            let c = self.critical(mbar, root.x / rate_dt, p, theta);
+            let c = if last.0 == root.x {
+                last.1
+            } else {
+                self.critical(mbar, root.x / rate_dt, p, theta)
+            };
             (root.x, c, root.iterations)
         } else if self.general {
             // The general path with a rate-free μ: the same solve (converges in one step).

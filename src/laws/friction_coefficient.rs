@@ -69,6 +69,38 @@ impl Default for CoefficientLaw {
 }
 
 impl CoefficientLaw {
+    /// From `PROPS` entries already checked by the caller (`props.rs`): the decay law when
+    /// `decay` is `Some((μ_k/μ_s ≥ 0, d_c > 0))`, p_ref > 0 or 0 (off), b_θ and θ_ref finite.
+    #[inline]
+    #[must_use]
+    pub(crate) fn from_validated(
+        decay: Option<(f64, f64)>,
+        pressure_ref: f64,
+        temperature_slope: f64,
+        temperature_ref: f64,
+    ) -> Self {
+        CoefficientLaw {
+            rate: match decay {
+                Some((kinetic_ratio, decay)) => RateLaw::ExponentialDecay {
+                    kinetic_ratio,
+                    decay,
+                },
+                None => RateLaw::Constant,
+            },
+            pressure_ref: if pressure_ref > 0.0 {
+                pressure_ref
+            } else {
+                f64::INFINITY
+            },
+            temperature_slope,
+            temperature_ref: if temperature_slope != 0.0 {
+                temperature_ref
+            } else {
+                0.0
+            },
+        }
+    }
+
     /// Exponential decay with r = μ_k/μ_s ≥ 0 and d_c > 0.
     pub fn with_exponential_decay(
         mut self,
@@ -153,7 +185,8 @@ impl CoefficientLaw {
                 kinetic_ratio: r,
                 decay: d,
             } => {
-                let e = (-d * rate.max(0.0)).exp();
+                // exp(−0) = 1 exactly: the rate-free value (stick stiffness) needs no exp.
+                let e = if rate > 0.0 { (-d * rate).exp() } else { 1.0 };
                 (r + (1.0 - r) * e, -d * (1.0 - r) * e)
             }
         };

@@ -34,28 +34,55 @@ pub fn bracketed_newton(
     x_tol: f64,
     max_iterations: u32,
 ) -> Result<Root, RootFailure> {
-    let (fa, _) = f(a);
-    let (fb, _) = f(b);
-    if !(fa.is_finite() && fb.is_finite()) {
-        return Err(RootFailure::NotBracketed);
-    }
-    if fa == 0.0 {
+    bracketed_newton_impl(&mut f, a, b, None, x0, x_tol, 0.0, max_iterations)
+}
+
+/// As [`bracketed_newton`] for a bracket whose signs the caller knows, f(`low`) ≤ 0 ≤
+/// f(`high`) (the two end evaluations are skipped), also stopping once |f(x)| ≤ `f_tol` (the
+/// round-off level of the residual, below which Newton steps are noise).
+pub fn newton_on_known_bracket(
+    mut f: impl FnMut(f64) -> (f64, f64),
+    low: f64,
+    high: f64,
+    x0: f64,
+    x_tol: f64,
+    f_tol: f64,
+    max_iterations: u32,
+) -> Result<Root, RootFailure> {
+    bracketed_newton_impl(
+        &mut f,
+        low,
+        high,
+        Some(()),
+        x0,
+        x_tol,
+        f_tol,
+        max_iterations,
+    )
+}
+
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn bracketed_newton_impl(
+    f: &mut impl FnMut(f64) -> (f64, f64),
+    a: f64,
+    b: f64,
+    oriented: Option<()>,
+    x0: f64,
+    x_tol: f64,
+    f_tol: f64,
+    max_iterations: u32,
+) -> Result<Root, RootFailure> {
+    let (mut low, mut high) = match oriented {
+        Some(()) => (a, b),
+        None => orient(f, a, b)?,
+    };
+    if low == high {
         return Ok(Root {
-            x: a,
+            x: low,
             iterations: 0,
         });
     }
-    if fb == 0.0 {
-        return Ok(Root {
-            x: b,
-            iterations: 0,
-        });
-    }
-    if (fa > 0.0) == (fb > 0.0) {
-        return Err(RootFailure::NotBracketed);
-    }
-    // Orient the bracket so that f(low) < 0 < f(high).
-    let (mut low, mut high) = if fa < 0.0 { (a, b) } else { (b, a) };
     let (lo, hi) = (a.min(b), a.max(b));
     let mut x = if x0.is_finite() {
         x0.clamp(lo, hi)
@@ -69,11 +96,16 @@ pub fn bracketed_newton(
         if !(fx.is_finite() && dfx.is_finite()) {
             return Err(RootFailure::NotConverged);
         }
-        if fx == 0.0 {
+        if fx.abs() <= f_tol {
             return Ok(Root {
                 x,
                 iterations: iteration - 1,
             });
+        }
+        if fx < 0.0 {
+            low = x;
+        } else {
+            high = x;
         }
         let newton_leaves_bracket = ((x - high) * dfx - fx) * ((x - low) * dfx - fx) > 0.0;
         let newton_too_slow = (2.0 * fx).abs() > (step_before * dfx).abs();
@@ -93,13 +125,32 @@ pub fn bracketed_newton(
             });
         }
         (fx, dfx) = f(x);
-        if fx < 0.0 {
-            low = x;
-        } else {
-            high = x;
-        }
     }
     Err(RootFailure::NotConverged)
+}
+
+/// Evaluates f at both ends and returns them as (low, high) with f(low) < 0 < f(high); a zero
+/// at an end returns that end twice.
+fn orient(
+    f: &mut impl FnMut(f64) -> (f64, f64),
+    a: f64,
+    b: f64,
+) -> Result<(f64, f64), RootFailure> {
+    let (fa, _) = f(a);
+    let (fb, _) = f(b);
+    if !(fa.is_finite() && fb.is_finite()) {
+        return Err(RootFailure::NotBracketed);
+    }
+    if fa == 0.0 {
+        return Ok((a, a));
+    }
+    if fb == 0.0 {
+        return Ok((b, b));
+    }
+    if (fa > 0.0) == (fb > 0.0) {
+        return Err(RootFailure::NotBracketed);
+    }
+    Ok(if fa < 0.0 { (a, b) } else { (b, a) })
 }
 
 #[cfg(test)]
@@ -118,6 +169,15 @@ mod tests {
         // A wrong (zero, then tiny) derivative forces bisection; the bracket still holds.
         let r = bracketed_newton(|x| (x.powi(3) - 0.001, 0.0), -1.0, 1.0, 0.9, 1e-14, 200).unwrap();
         assert!((r.x - 0.1).abs() < 1e-13);
+    }
+
+    #[test]
+    fn known_bracket_stops_at_the_residual_tolerance() {
+        // f(x) = 1 − x: f(2) < 0 < f(0).
+        let r =
+            newton_on_known_bracket(|x| (1.0 - x, -1.0), 2.0, 0.0, 0.3, 0.0, 1e-12, 10).unwrap();
+        assert!((r.x - 1.0).abs() <= 1e-12);
+        assert!(r.iterations <= 2);
     }
 
     #[test]
