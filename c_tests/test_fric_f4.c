@@ -9,7 +9,10 @@
  * mu(v) (and d mu/d v = -d_c (mu_s - mu_k) exp(-d_c v)). The slip tangent along the slip
  * direction is checked against a central difference of fric_'s own TAU.
  *
- * Also a damping case (seed 003, PROPS(17) = c0, NSTATV = 3 + NFDIR): tau = mu p + c0 v in
+ * Also scene F5 with a pressure-dependent mu = mu0/(1 + p/p_ref) (PROPS(11) = p_ref) and a shear
+ * limit tau_max: while sliding tau = min(mu(p) p, tau_max) and DDTDDP = mu0/(1 + p/p_ref)^2
+ * below the cap, 0 on it;
+ * a damping case (seed 003, PROPS(17) = c0, NSTATV = 3 + NFDIR): tau = mu p + c0 v in
  * steady sliding, tau = (k_s + c0/DTIME) DGAM in a first stick increment; and a bad DTIME with
  * a rate law (refused, PNEWDT < 1, state unchanged).
  */
@@ -157,6 +160,45 @@ static void damping(int nfdir)
     FH_NEAR(h.sfd, (MU_S * P + c0 * v) * v * DT, 1e-10, 0.0);
 }
 
+static void f5_pressure_mu(int nfdir)
+{
+    const double mu0 = 0.5, p_ref = 100.0, tau_max = 30.0;
+    const double d[2] = {nfdir == 1 ? 1.0 : 0.8, nfdir == 1 ? 0.0 : -0.6};
+    double props[20], p_before = 0.0;
+    fh_fric h;
+    int k, a;
+    for (k = 0; k < 20; k++) {
+        props[k] = 0.0;
+    }
+    props[0] = 1;
+    props[1] = mu0;
+    props[3] = tau_max;
+    props[4] = GAMMA_CRIT;
+    props[10] = p_ref;
+    fh_init(&h, nfdir, props, 11);
+    for (k = 1; k <= 200; k++) {
+        /* 2, 4, ..., 400, never exactly on the cap mu(p) p = 30 (p = 150). */
+        const double p = 2.0 * k + 0.5;
+        const double mu_p = mu0 * p / (1.0 + p / p_ref);
+        fh_context("F5 pressure-dependent mu, NFDIR=%d, p=%g", nfdir, p);
+        h.press = p;
+        h.dpress = p - p_before;
+        p_before = p;
+        for (a = 0; a < nfdir; a++) {
+            h.dgam[a] = 0.5 * GAMMA_CRIT * d[a];
+        }
+        fh_call_ok(&h);
+        if (k > 5) {
+            const double tc = fmin(mu_p, tau_max);
+            const double slope = mu_p < tau_max ? mu0 / pow(1.0 + p / p_ref, 2) : 0.0;
+            for (a = 0; a < nfdir; a++) {
+                FH_NEAR(h.tau[a], tc * d[a], 1e-12, 1e-13);
+                FH_NEAR(h.ddtddp[a], slope * d[a], 0.0, 1e-14);
+            }
+        }
+    }
+}
+
 static void bad_dtime(void)
 {
     double props[20];
@@ -192,6 +234,7 @@ int main(void)
             }
         }
         damping(nfdir);
+        f5_pressure_mu(nfdir);
     }
     bad_dtime();
     return fh_finish();

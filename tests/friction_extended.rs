@@ -669,6 +669,40 @@ fn damping_closed_forms() {
     }
 }
 
+/// With damping, the viscous stress kept in STATEV(4..5) is rotated by DROT before it is taken
+/// out of the incoming TAU: a TAU that is exactly the rotated viscous stress leaves no friction
+/// stress, so with DGAM = 0 the answer is zero (identity DROT would leave a residual stress).
+#[test]
+fn damping_state_is_rotated_by_drot() {
+    let mut props = vec![0.0; 17];
+    props[..5].copy_from_slice(&[1.0, 0.3, 0.0, 0.0, 1e-3]);
+    props[16] = 2.0;
+    let setup = |drot: [f64; 4]| {
+        let mut c = FricCall::new(2, &props);
+        c.statev = vec![0.0, 0.0, 1.0, 1.5, -0.5, 0.0, 0.0];
+        c.nstatv = 5;
+        c.set_guards();
+        c.press = 100.0;
+        c.dtime = 0.1;
+        // DROT = 90° rotation (column-major): (1.5, −0.5) → (0.5, 1.5).
+        c.drot = drot;
+        c.tau = [0.5, 1.5, c.tau[2], c.tau[3]];
+        c.call();
+        assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+        c
+    };
+    let rotated = setup([0.0, 1.0, -1.0, 0.0]);
+    assert!(
+        rotated.tau[0].abs() < 1e-15 && rotated.tau[1].abs() < 1e-15,
+        "{:?}",
+        rotated.tau
+    );
+    assert_eq!(&rotated.statev[3..5], &[0.0, 0.0]);
+    let identity = setup([1.0, 0.0, 0.0, 1.0]);
+    // Friction start stress (0.5, 1.5) − (1.5, −0.5) = (−1, 2), inside the cone: kept.
+    assert!((identity.tau[0] + 1.0).abs() < 1e-12 && (identity.tau[1] - 2.0).abs() < 1e-12);
+}
+
 /// The damping coefficient as a function of overclosure (seed 003): c₀ at zero overclosure and
 /// over the fraction f of the clearance interval, linear to 0 at clearance g₀.
 #[test]

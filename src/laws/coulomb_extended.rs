@@ -598,9 +598,10 @@ impl ExtendedCoulomb {
                 "DROT",
                 self.damping.is_none() || conditions.drot.iter().flatten().all(|x| x.is_finite()),
             ),
+            ("STATEV(4..) (viscous stress)", all_finite(&state.viscous)),
             (
-                "STATEV (viscous stress)",
-                all_finite(&state.viscous) && state.coulomb.slip_rate >= 0.0,
+                "STATEV(2) (slip rate, must be ≥ 0)",
+                state.coulomb.slip_rate >= 0.0,
             ),
         ];
         match named.iter().find(|(_, ok)| !ok) {
