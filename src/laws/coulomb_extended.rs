@@ -9,7 +9,7 @@
 //!   the increment, γ̇_eq = Δγ_eq^sl/Δt (backward Euler). In elastic stick the stick stiffness is
 //!   the one of the rate-free critical stress, k_s = τ_crit(0, p, θ̄)/γ_crit (the slip rate is
 //!   zero in stick, seed 000 after Eq. 5.2.3-1), so the slip increment s = Δγ_eq^sl solves the
-//!   scalar equation k_s·(γ_eq^pr − s) = τ_crit(s/Δt, p, θ̄), solved by a bracketed Newton
+//!   scalar equation k_s·(γ_eq^pr − s) = τ_crit(s/Δt, p, θ̄), solved by a bracketed Newton (Halley)
 //!   iteration ([`super::scalar_root`]); the consistent tangent is that of Eq. 5.2.3-3 with the
 //!   ∂μ/∂γ̇ term of this formulation. Optionally μ is frozen at its start-of-increment value;
 //! - exact stick with rate-dependent slip (Eq. 5.2.3-7 to 5.2.3-9);
@@ -26,7 +26,7 @@ use super::coulomb::{
     Increment, StickMode, Traction,
 };
 use super::friction_coefficient::{CoefficientLaw, Factor};
-use super::scalar_root::{RootFailure, bracketed_newton, newton_on_known_bracket};
+use super::scalar_root::{RootFailure, bracketed_newton, halley_on_known_bracket};
 use super::small_vec::{all_finite, dot, norm, scale, unit};
 use crate::{LawError, Outcome};
 
@@ -199,6 +199,7 @@ pub struct ExtendedUpdate<const N: usize> {
 struct Critical {
     value: f64,
     d_rate: f64,
+    d_rate2: f64,
     d_pressure: f64,
     d_temperature: f64,
 }
@@ -392,6 +393,7 @@ impl ExtendedCoulomb {
         let Factor {
             value,
             d_rate,
+            d_rate2,
             d_pressure,
             d_temperature,
         } = self.coefficient.factor(rate, p, theta);
@@ -406,6 +408,7 @@ impl ExtendedCoulomb {
             Critical {
                 value: mu * p,
                 d_rate: mbar * d_rate * p,
+                d_rate2: mbar * d_rate2 * p,
                 d_pressure: mu + mbar * d_pressure * p,
                 d_temperature: mbar * d_temperature * p,
             }
@@ -707,6 +710,7 @@ impl ExtendedCoulomb {
                 (
                     stiffness * (g - x) - c.value,
                     -stiffness - c.d_rate / rate_dt,
+                    -c.d_rate2 / (rate_dt * rate_dt),
                 )
             };
             // F(0) = k̄_s γ̄_eq^pr − τ̄_crit(0) > 0 (slip) and F(γ̄_eq^pr) = −τ̄_crit ≤ 0: the
@@ -718,7 +722,7 @@ impl ExtendedCoulomb {
             } else {
                 g - gamma_crit
             };
-            let root = newton_on_known_bracket(
+            let root = halley_on_known_bracket(
                 residual,
                 g,
                 0.0,

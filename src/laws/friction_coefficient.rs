@@ -39,6 +39,8 @@ pub struct Factor {
     pub value: f64,
     /// ∂f/∂γ̇_eq.
     pub d_rate: f64,
+    /// ∂²f/∂γ̇_eq² (used by the local solve's Halley step).
+    pub d_rate2: f64,
     /// ∂f/∂p.
     pub d_pressure: f64,
     /// ∂f/∂θ̄.
@@ -179,15 +181,15 @@ impl CoefficientLaw {
     #[must_use]
     pub fn factor(&self, rate: f64, pressure: f64, temperature: f64) -> Factor {
         // φ(γ̇) = r + (1 − r)·exp(−d_c γ̇), φ' = −d_c (1 − r) exp(−d_c γ̇).
-        let (phi, dphi) = match self.rate {
-            RateLaw::Constant => (1.0, 0.0),
+        let (phi, dphi, ddphi) = match self.rate {
+            RateLaw::Constant => (1.0, 0.0, 0.0),
             RateLaw::ExponentialDecay {
                 kinetic_ratio: r,
                 decay: d,
             } => {
                 // exp(−0) = 1 exactly: the rate-free value (stick stiffness) needs no exp.
                 let e = if rate > 0.0 { (-d * rate).exp() } else { 1.0 };
-                (r + (1.0 - r) * e, -d * (1.0 - r) * e)
+                (r + (1.0 - r) * e, -d * (1.0 - r) * e, d * d * (1.0 - r) * e)
             }
         };
         // π(p) = 1/(1 + p/p_ref), π' = −(1/p_ref) π².
@@ -207,6 +209,7 @@ impl CoefficientLaw {
         Factor {
             value: phi * pi * theta,
             d_rate: dphi * pi * theta,
+            d_rate2: ddphi * pi * theta,
             d_pressure: phi * dpi * theta,
             d_temperature: phi * pi * dtheta,
         }
