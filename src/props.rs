@@ -3,8 +3,8 @@
 //! parameters; the table in `docs/props.md` documents the same layout for users.
 
 use crate::LawError;
-use crate::laws::coulomb::{Coulomb, StickMode};
-use crate::laws::coulomb_extended::{Damping, ExtendedCoulomb, Hht};
+use crate::laws::coulomb::{Coulomb, CriticalSlip, DEFAULT_SLIP_TOLERANCE, StickMode};
+use crate::laws::coulomb_extended::{Damping, ExtendedCoulomb, Hht, SteadyTransport};
 use crate::laws::friction_coefficient::CoefficientLaw;
 
 /// `PROPS(1)` code of the Coulomb family.
@@ -85,8 +85,9 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
     let positive = |v: f64| v > 0.0 && v < f64::INFINITY;
     let off_or_positive = |v: f64| v == 0.0 || positive(v);
     let (mu, mu2) = (e[2], e[3]);
+    let viscous = e[7] == 3.0;
     let stick = match e[7] {
-        0.0 => StickMode::Elastic,
+        0.0 | 3.0 => StickMode::Elastic,
         1.0 => StickMode::Exact,
         2.0 => StickMode::Rough,
         _ => return None,
@@ -98,7 +99,12 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
         }
         _ => return None,
     };
-    let hht_on = e[14] != 0.0 || e[15] != 0.0 || e[16] != 0.0;
+    let hht_on = !viscous && (e[14] != 0.0 || e[15] != 0.0 || e[16] != 0.0);
+    let transport_ok = !viscous
+        || (e[5] == 0.0
+            && positive(e[14])
+            && [0.0, 1.0, 2.0, 3.0].contains(&e[15])
+            && e[16] == 0.0);
     let valid = (0.0..f64::INFINITY).contains(&mu)
         && (mu2 == 0.0 || mu2 == mu || (positive(mu2) && mu > 0.0))
         && off_or_positive(e[4])
@@ -115,13 +121,14 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
         } else {
             positive(e[17]) && (0.0..f64::INFINITY).contains(&e[18]) && (0.0..1.0).contains(&e[19])
         })
-        && (e[20] == 0.0 || (e[20] == 1.0 && decay.is_some()));
+        && (e[20] == 0.0 || (e[20] == 1.0 && decay.is_some()))
+        && transport_ok;
     if !valid {
         return None;
     }
     let base = Coulomb::from_validated(mu, e[4], e[5], e[6], stick);
     let mu2 = if mu2 == 0.0 { mu } else { mu2 };
-    if mu2 == mu && e[8..].iter().all(|v| *v == 0.0) {
+    if !viscous && mu2 == mu && e[8..].iter().all(|v| *v == 0.0) {
         return Some(FrictionLaw::Coulomb(base));
     }
     let hht = hht_on.then(|| {
@@ -141,6 +148,19 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
         clearance: e[18],
         fraction: e[19],
     });
+    let transport = viscous.then(|| SteadyTransport {
+        tolerance: if e[6] > 0.0 {
+            e[6]
+        } else {
+            DEFAULT_SLIP_TOLERANCE
+        },
+        omega: e[14],
+        axis: match e[15] {
+            1.0 => 0,
+            2.0 => 1,
+            _ => 2,
+        },
+    });
     Some(FrictionLaw::CoulombExtended(
         ExtendedCoulomb::from_validated(
             base,
@@ -149,7 +169,8 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
             e[20] == 1.0,
             hht,
             damping,
-        ),
+        )
+        .with_steady_transport(transport),
     ))
 }
 
@@ -210,7 +231,7 @@ fn coulomb(props: &[f64]) -> Result<Coulomb, LawError> {
         2.0 => StickMode::Rough,
         other => {
             return Err(LawError::Parameter(format!(
-                "PROPS(7) = {other} must be the stick mode 0 (elastic), 1 (exact) or 2 (rough)"
+                "PROPS(7) = {other} must be the stick mode 0 (elastic), 1 (exact), 2 (rough) or 3 (viscous, steady-state transport)"
             )));
         }
     };
@@ -235,10 +256,28 @@ pub fn coulomb_extended(props: &[f64]) -> Result<FrictionLaw, LawError> {
             "the Coulomb law reads PROPS(1..20)",
         ));
     }
-    let base = coulomb(props)?;
+    // PROPS(7) = 3: viscous stick for steady-state transport; the base law is read with an
+    // elastic-stick placeholder, and PROPS(14..15) are ω and the axis instead of HHT.
+    let viscous = get(7) == 3.0;
+    let base = if viscous {
+        if get(5) != 0.0 {
+            return Err(unused_entry(
+                5,
+                get(5),
+                "viscous stick uses the slip tolerance F_f = PROPS(6), not γ_crit",
+            ));
+        }
+        let mut elastic = props.to_vec();
+        elastic[6] = 0.0;
+        coulomb(&elastic)?
+    } else {
+        coulomb(props)?
+    };
     let mu = get(2);
     let mu2 = get(3);
-    let extras = (mu2 != 0.0 && mu2 != mu) || (8..=COULOMB_EXTENDED_NPROPS).any(|i| get(i) != 0.0);
+    let extras = viscous
+        || (mu2 != 0.0 && mu2 != mu)
+        || (8..=COULOMB_EXTENDED_NPROPS).any(|i| get(i) != 0.0);
     if !extras {
         return Ok(FrictionLaw::Coulomb(base));
     }
@@ -298,8 +337,33 @@ pub fn coulomb_extended(props: &[f64]) -> Result<FrictionLaw, LawError> {
         ));
     }
     law = law.with_coefficient_law(coefficient);
-    // HHT: on when any of PROPS(14..16) is non-zero.
-    if (14..=16).any(|i| get(i) != 0.0) {
+    if viscous {
+        let tolerance = match base.critical_slip() {
+            CriticalSlip::Tolerance(t) => t,
+            CriticalSlip::Absolute(_) => DEFAULT_SLIP_TOLERANCE,
+        };
+        let axis = match get(15) {
+            0.0 | 3.0 => 2,
+            1.0 => 0,
+            2.0 => 1,
+            other => {
+                return Err(LawError::Parameter(format!(
+                    "PROPS(15) = {other} must be the spinning axis 1 (x), 2 (y) or 3 (z, default)"
+                )));
+            }
+        };
+        if get(16) != 0.0 {
+            return Err(unused_entry(
+                16,
+                get(16),
+                "steady-state transport (PROPS(7) = 3)",
+            ));
+        }
+        let transport =
+            SteadyTransport::new(tolerance, get(14), axis).map_err(|e| in_props(14, e))?;
+        law = law.with_steady_transport(Some(transport));
+    } else if (14..=16).any(|i| get(i) != 0.0) {
+        // HHT: on when any of PROPS(14..16) is non-zero.
         let hht = Hht::new(get(14), get(15), get(16)).map_err(|e| in_props(14, e))?;
         law = law.with_hht(Some(hht));
     }
@@ -388,6 +452,7 @@ mod tests {
             4 => Just(0.0),
             1 => Just(1.0),
             1 => Just(2.0),
+            1 => Just(3.0),
             1 => Just(0.5),
             1 => Just(-0.2),
             1 => Just(-1.0),
@@ -454,7 +519,8 @@ mod tests {
             (&[1.0, 0.3, 0.0, -1.0][..], "PROPS(4)"),
             (&[1.0, 0.3, 0.0, 0.0, -1.0][..], "PROPS(5)"),
             (&[1.0, 0.3, 0.0, 0.0, 0.0, -1.0][..], "PROPS(6)"),
-            (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 3.0][..], "PROPS(7)"),
+            (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 4.0][..], "PROPS(7)"),
+            (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 3.0][..], "PROPS(14)"),
             (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 2.0][..], "PROPS(8)"),
             (
                 &[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.1][..],

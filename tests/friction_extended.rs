@@ -912,3 +912,124 @@ fn bad_extended_input_is_refused_cleanly() {
         assert!(c.guards_intact(), "{what}");
     }
 }
+
+/// Viscous stick for steady-state transport (PROPS(7) = 3, seed 000): γ̇_crit = 2·F_f·ω·R with R
+/// the distance of COORDS from the axis; viscous stick τ = κ_s·v (κ_s = μp/γ̇_crit, v = DGAM/DTIME,
+/// tangent κ_s/DTIME), slip τ = μ(v − γ̇_crit)·p·n; tangents against central differences in
+/// stick and in slip, NFDIR 1 and 2, constant and decaying μ; no memory of the start stress.
+#[test]
+fn steady_transport_viscous_stick() {
+    let (mu, p, ff, omega, dt) = (0.4, 50.0, 0.01, 20.0, 0.1);
+    for decay in [None, Some((0.2, 3.0))] {
+        for nfdir in [1usize, 2] {
+            let mut props = vec![0.0; 16];
+            props[..7].copy_from_slice(&[1.0, mu, 0.0, 0.0, 0.0, ff, 3.0]);
+            if let Some((mk, dc)) = decay {
+                props[7] = 1.0;
+                props[8] = mk;
+                props[9] = dc;
+            }
+            props[13] = omega;
+            props[14] = 3.0; // z axis
+            let at = |dgam: [f64; 2], press: f64| {
+                let mut c = FricCall::new(nfdir as i32, &props);
+                c.coords = [0.3, 0.4, 7.0]; // R = 0.5 about z
+                c.press = press;
+                c.dpress = press;
+                c.dtime = dt;
+                // A start stress, ignored: viscous stick has no memory.
+                c.tau[..nfdir].copy_from_slice(&[123.0, -45.0][..nfdir]);
+                c.dgam[..nfdir].copy_from_slice(&dgam[..nfdir]);
+                c.call();
+                assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+                assert!(c.guards_intact());
+                c
+            };
+            let rate_crit = 2.0 * ff * omega * 0.5;
+            let kappa = mu * p / rate_crit;
+            let dir = if nfdir == 1 { [1.0, 0.0] } else { [0.6, -0.8] };
+            let mu_of = |v: f64| match decay {
+                None => mu,
+                Some((mk, dc)) => mk + (mu - mk) * (-dc * v).exp(),
+            };
+            for (speed, sticks) in [(0.5 * rate_crit, true), (3.0 * rate_crit, false)] {
+                let dgam = [dir[0] * speed * dt, dir[1] * speed * dt];
+                let c = at(dgam, p);
+                let tau_eq = (0..nfdir).map(|i| c.tau[i].powi(2)).sum::<f64>().sqrt();
+                let expected = if sticks {
+                    kappa * speed
+                } else {
+                    mu_of(speed - rate_crit) * p
+                };
+                assert!(
+                    (tau_eq - expected).abs() < 1e-12 * expected,
+                    "{tau_eq} vs {expected}"
+                );
+                assert_eq!(c.statev[2], if sticks { 0.0 } else { 1.0 });
+                // DDTDDG and DDTDDP against central differences.
+                let h = 1e-7 * speed * dt;
+                for b in 0..nfdir {
+                    let (mut up, mut dn) = (dgam, dgam);
+                    up[b] += h;
+                    dn[b] -= h;
+                    let (cu, cd) = (at(up, p), at(dn, p));
+                    for a in 0..nfdir {
+                        let fd = (cu.tau[a] - cd.tau[a]) / (2.0 * h);
+                        let an = c.ddtddg(a, b);
+                        assert!(
+                            (fd - an).abs() <= 1e-6 * (kappa / dt),
+                            "DDTDDG({a},{b}) {an} vs {fd}"
+                        );
+                    }
+                }
+                let hp = 1e-5 * p;
+                let (cu, cd) = (at(dgam, p + hp), at(dgam, p - hp));
+                for a in 0..nfdir {
+                    let fd = (cu.tau[a] - cd.tau[a]) / (2.0 * hp);
+                    assert!(
+                        (fd - c.ddtddp[a]).abs() <= 1e-8,
+                        "DDTDDP {fd} vs {}",
+                        c.ddtddp[a]
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Steady transport bad input: ω ≤ 0, a bad axis, γ_crit given, a point on the axis, DTIME ≤ 0.
+#[test]
+fn steady_transport_bad_input() {
+    let mut good = vec![0.0; 16];
+    good[..7].copy_from_slice(&[1.0, 0.4, 0.0, 0.0, 0.0, 0.01, 3.0]);
+    good[13] = 20.0;
+    type Spoil = fn(&mut FricCall);
+    let cases: &[(&str, Spoil, &str)] = &[
+        ("ω = 0", |c| c.props[13] = 0.0, "PROPS(14)"),
+        ("ω < 0", |c| c.props[13] = -1.0, "PROPS(14)"),
+        ("axis 4", |c| c.props[14] = 4.0, "PROPS(15)"),
+        ("γ_crit given", |c| c.props[4] = 1e-3, "PROPS(5)"),
+        ("PROPS(16) set", |c| c.props[15] = 0.5, "PROPS(16)"),
+        ("on the axis", |c| c.coords = [0.0, 0.0, 3.0], "R = 0"),
+        ("COORDS NaN", |c| c.coords[1] = f64::NAN, "COORDS"),
+        ("MCRD 0", |c| c.mcrd = 0, "MCRD"),
+        ("DTIME = 0", |c| c.dtime = 0.0, "DTIME"),
+    ];
+    for (what, spoil, word) in cases {
+        let mut c = FricCall::new(2, &good);
+        c.coords = [1.0, 0.0, 0.0];
+        c.press = 10.0;
+        c.dgam = [1e-3, 0.0, 0.0];
+        c.dtime = 0.1;
+        c.statev[..3].copy_from_slice(&[0.5, 0.1, 1.0]);
+        let mut ok = c.clone();
+        ok.call();
+        assert_eq!(ok.pnewdt, 1e36, "{what}: {}", FricCall::last_error());
+        spoil(&mut c);
+        c.call();
+        assert!(c.pnewdt < 1.0, "{what}: not refused");
+        let msg = FricCall::last_error();
+        assert!(msg.contains(word) && msg.contains("FRIC"), "{what}: {msg}");
+        assert_eq!(&c.statev[..3], &[0.5, 0.1, 1.0], "{what}");
+    }
+}

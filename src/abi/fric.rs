@@ -90,10 +90,8 @@ pub unsafe extern "C" fn fric_(
     msname_len: usize,
 ) {
     // Not read by the Coulomb law (DROT and TEMP only by the extended law: docs/props.md).
-    let _ = (
-        ddpddh, slip, kstep, kinc, time, npatch, coords, rcoord, predef,
-    );
-    let _ = (mcrd, npred, slname, msname, slname_len, msname_len);
+    let _ = (ddpddh, slip, kstep, kinc, time, npatch, rcoord, predef);
+    let _ = (npred, slname, msname, slname_len, msname_len);
     let args = FricArgs {
         lm,
         tau,
@@ -117,6 +115,8 @@ pub unsafe extern "C" fn fric_(
         nprops,
         temp,
         drot,
+        coords,
+        mcrd,
     };
     let _ = boundary(
         // SAFETY (all three closures): the pointers are the host's, valid per the contract above.
@@ -150,6 +150,8 @@ struct FricArgs {
     nprops: *const c_int,
     temp: *const f64,
     drot: *const f64,
+    coords: *const f64,
+    mcrd: *const c_int,
 }
 
 impl FricArgs {
@@ -290,6 +292,20 @@ impl FricArgs {
                 let r = read_array::<4>(self.drot, "DROT")?;
                 conditions.drot = [[r[0], r[2]], [r[1], r[3]]];
             }
+            if law.steady_transport().is_some() {
+                // The radius R of γ̇_crit = 2 F_f ω R comes from COORDS(1..MCRD).
+                let mcrd = read(self.mcrd, "MCRD")?;
+                let n = match usize::try_from(mcrd) {
+                    Ok(n) if (1..=3).contains(&n) => n,
+                    _ => return Err(bad_mcrd(mcrd)),
+                };
+                let c = slice(self.coords, n, "COORDS")?;
+                if !c.iter().all(|x| x.is_finite()) {
+                    return Err(LawError::Input("COORDS is NaN or infinite".into()));
+                }
+                conditions.coords[..n].copy_from_slice(c);
+                conditions.ncoords = n;
+            }
             let statev = slice(self.statev, nstatv, "STATEV")?;
             let mut state = ExtendedState::<N> {
                 coulomb: CoulombState::from_statev(statev)?,
@@ -395,6 +411,14 @@ fn scale_half<const N: usize>(v: &[f64; N]) -> [f64; N] {
         *x *= 0.5;
     }
     out
+}
+
+#[cold]
+#[inline(never)]
+fn bad_mcrd(mcrd: c_int) -> LawError {
+    LawError::Input(format!(
+        "MCRD = {mcrd}; steady-state transport needs the point's coordinates (MCRD 1 to 3)"
+    ))
 }
 
 #[cold]

@@ -14,7 +14,9 @@
 //!   ∂μ/∂γ̇ term of this formulation. Optionally μ is frozen at its start-of-increment value;
 //! - exact stick with rate-dependent slip (Eq. 5.2.3-7 to 5.2.3-9);
 //! - Hilber-Hughes-Taylor dynamics: the time increment used for rates is β·Δt/γ;
-//! - viscous tangential damping τ_v = c·γ̇ (seed 003), added to the friction stress.
+//! - viscous tangential damping τ_v = c·γ̇ (seed 003), added to the friction stress;
+//! - viscous stick for steady-state transport (seed 000): τ = κ_s·γ̇^v, κ_s = τ_crit/γ̇_crit,
+//!   γ̇_crit = 2·F_f·ω·R, with R the distance of the point from the spinning axis.
 //!
 //! Every increment takes the cheapest exact path: isotropic friction skips the scaling, a μ
 //! that does not depend on the slip rate skips the local solve, NFDIR = 1 is scalar code.
@@ -127,6 +129,57 @@ impl Damping {
     }
 }
 
+/// Viscous stick for steady-state transport (seed 000): the allowable viscous slip rate is
+/// γ̇_crit = 2·F_f·ω·R, R the distance of the contact point (`COORDS`) from the spinning axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SteadyTransport {
+    /// F_f > 0, the slip tolerance.
+    pub tolerance: f64,
+    /// ω > 0, the angular spinning velocity.
+    pub omega: f64,
+    /// The spinning axis: the global axis 0 (x), 1 (y) or 2 (z) through the origin.
+    pub axis: usize,
+}
+
+impl SteadyTransport {
+    /// Validated steady-transport parameters.
+    pub fn new(tolerance: f64, omega: f64, axis: usize) -> Result<Self, LawError> {
+        if !(tolerance.is_finite() && tolerance > 0.0) {
+            return Err(LawError::Parameter(format!(
+                "slip tolerance F_f = {tolerance} must be finite and > 0"
+            )));
+        }
+        if !(omega.is_finite() && omega > 0.0) {
+            return Err(LawError::Parameter(format!(
+                "angular velocity ω = {omega} must be finite and > 0 for steady-state transport"
+            )));
+        }
+        if axis > 2 {
+            return Err(LawError::Parameter(format!(
+                "spinning axis {} must be 1 (x), 2 (y) or 3 (z)",
+                axis + 1
+            )));
+        }
+        Ok(SteadyTransport {
+            tolerance,
+            omega,
+            axis,
+        })
+    }
+
+    /// R: the distance of `coords` from the axis (only the first `coords.len()` coordinates).
+    #[must_use]
+    pub fn radius(&self, coords: &[f64]) -> f64 {
+        coords
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| *i != self.axis)
+            .map(|(_, x)| x * x)
+            .sum::<f64>()
+            .sqrt()
+    }
+}
+
 /// The extended Coulomb law. Built from a validated [`Coulomb`] (μ₁, τ_max, γ_crit, stick mode)
 /// with the `with_*` methods.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -137,6 +190,7 @@ pub struct ExtendedCoulomb {
     frozen: bool,
     hht: Option<Hht>,
     damping: Option<Damping>,
+    transport: Option<SteadyTransport>,
     /// Test hook: take the general path (scaling, local solve) even where a cheaper one is exact.
     general: bool,
 }
@@ -149,6 +203,11 @@ pub struct Conditions {
     /// Rotation increment of the tangent directions, `drot[a][b]` = DROT(a+1, b+1); applied to
     /// the viscous stress kept in the state.
     pub drot: [[f64; 2]; 2],
+    /// Coordinates of the contact point (`COORDS`, the first MCRD used); read only in
+    /// steady-state transport, for the radius R.
+    pub coords: [f64; 3],
+    /// How many of `coords` the host gave (MCRD, at most 3).
+    pub ncoords: usize,
 }
 
 impl Default for Conditions {
@@ -156,6 +215,8 @@ impl Default for Conditions {
         Conditions {
             temperature: 0.0,
             drot: [[1.0, 0.0], [0.0, 1.0]],
+            coords: [0.0; 3],
+            ncoords: 0,
         }
     }
 }
@@ -234,6 +295,7 @@ impl ExtendedCoulomb {
             frozen: false,
             hht: None,
             damping: None,
+            transport: None,
             general: false,
         }
     }
@@ -256,8 +318,22 @@ impl ExtendedCoulomb {
             frozen,
             hht,
             damping,
+            transport: None,
             general: false,
         }
+    }
+
+    /// Viscous stick for steady-state transport instead of elastic or exact stick.
+    #[must_use]
+    pub fn with_steady_transport(mut self, transport: Option<SteadyTransport>) -> Self {
+        self.transport = transport;
+        self
+    }
+
+    /// The steady-transport parameters, if that mode is on.
+    #[must_use]
+    pub fn steady_transport(&self) -> Option<SteadyTransport> {
+        self.transport
     }
 
     /// Anisotropic friction: μ₂ > 0 in direction 2 (μ₁ = the base μ, which must be > 0).
@@ -355,6 +431,7 @@ impl ExtendedCoulomb {
         self.mu2 == self.base.mu()
             && self.coefficient.is_constant()
             && self.damping.is_none()
+            && self.transport.is_none()
             && !self.general
     }
 
@@ -468,6 +545,9 @@ impl ExtendedCoulomb {
         let start_rate = state.coulomb.slip_rate;
 
         let answer = match stick {
+            _ if self.transport.is_some() => Some(
+                self.viscous_stick(inc, &scaled, mbar, theta, rate_dt, start_rate, conditions)?,
+            ),
             StickMode::Rough => None,
             StickMode::Elastic => {
                 let gamma_crit = self.base.critical_slip_for(inc.characteristic_length)?;
@@ -565,11 +645,12 @@ impl ExtendedCoulomb {
             Some(h) => h.rate_increment(dtime),
             None => dtime,
         };
-        let needs_rate =
-            (self.coefficient.is_rate_dependent() && !self.frozen) || self.damping.is_some();
+        let needs_rate = (self.coefficient.is_rate_dependent() && !self.frozen)
+            || self.damping.is_some()
+            || self.transport.is_some();
         if needs_rate && (dt.is_nan() || dt <= 0.0) {
             return Err(LawError::Input(format!(
-                "DTIME = {dtime} but the friction law needs a slip rate (rate-dependent μ or \
+                "DTIME = {dtime} but the friction law needs a slip rate (rate-dependent μ, steady transport or \
                  tangential damping): DTIME must be > 0"
             )));
         }
@@ -811,6 +892,89 @@ impl ExtendedCoulomb {
             ddtdtheta,
             slip_eq,
             iterations,
+        })
+    }
+
+    /// Viscous stick for steady-state transport (seed 000), in scaled variables: the predictor
+    /// is the relative velocity γ̇^pr = Δγ̄/Δt; viscous stick τ̄ = κ_s γ̇^pr while
+    /// |γ̇^pr| ≤ γ̇_crit (κ_s = τ̄_crit(0)/γ̇_crit), else slip with |γ̇^v| = γ̇_crit, so the
+    /// slip rate is |γ̇^pr| − γ̇_crit and τ̄ = τ̄_crit(|γ̇^pr| − γ̇_crit)·n. No memory: the stress
+    /// of the start of the increment is not used.
+    #[allow(clippy::too_many_arguments)]
+    fn viscous_stick<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        s: &Scaled<N>,
+        mbar: f64,
+        theta: f64,
+        dt: f64,
+        start_rate: f64,
+        conditions: &Conditions,
+    ) -> Result<ScaledTraction<N>, LawError> {
+        let Some(tr) = self.transport else {
+            return Err(LawError::Numerical(
+                "steady transport not configured".into(),
+            ));
+        };
+        let radius = tr.radius(&conditions.coords[..conditions.ncoords.min(3)]);
+        // γ̇_crit = 2 F_f ω R (seed 000).
+        let rate_crit = 2.0 * tr.tolerance * tr.omega * radius;
+        if !(rate_crit > 0.0 && rate_crit.is_finite()) {
+            return Err(LawError::Input(format!(
+                "COORDS = {:?} is on the spinning axis (R = {radius}): the allowable viscous slip \
+                 rate 2·F_f·ω·R must be > 0",
+                &conditions.coords[..conditions.ncoords.min(3)]
+            )));
+        }
+        let p = inc.pressure;
+        let k = self.critical(mbar, 0.0, p, theta);
+        let viscosity = k.value / rate_crit;
+        let predictor = scale(&s.dgam, 1.0 / dt);
+        let v = norm(&predictor);
+        if v <= rate_crit {
+            // Viscous stick: τ̄ = κ_s γ̇^pr, dτ̄/dΔγ̄ = κ_s/Δt.
+            return Ok(ScaledTraction {
+                traction: Traction {
+                    tau: scale(&predictor, viscosity),
+                    ddtddg: diag(viscosity / dt),
+                    ddtddp: scale(&predictor, k.d_pressure / rate_crit),
+                    dslip: [0.0; N],
+                    sed: 0.0,
+                    sfd: 0.0,
+                },
+                ddtdtheta: scale(&predictor, k.d_temperature / rate_crit),
+                slip_eq: 0.0,
+                iterations: 0,
+            });
+        }
+        let n = unit(&predictor, v);
+        let slip_rate = v - rate_crit;
+        let frozen = self.frozen && self.coefficient.is_rate_dependent();
+        let crit = self.critical(mbar, if frozen { start_rate } else { slip_rate }, p, theta);
+        let t = crit.value;
+        let t_r = if frozen { 0.0 } else { crit.d_rate };
+        let mut ddtddg = [[0.0; N]; N];
+        for i in 0..N {
+            for j in 0..N {
+                let delta = if i == j { 1.0 } else { 0.0 };
+                let proj = if N == 1 { 0.0 } else { delta - n[i] * n[j] };
+                // ∂γ̇^pr/∂Δγ̄ = I/Δt; the slip rate |γ̇^pr| − γ̇_crit moves with n/Δt.
+                ddtddg[i][j] = (t / v * proj + n[i] * n[j] * t_r) / dt;
+            }
+        }
+        let slip_eq = slip_rate * dt;
+        Ok(ScaledTraction {
+            traction: Traction {
+                tau: scale(&n, t),
+                ddtddg,
+                ddtddp: scale(&n, crit.d_pressure),
+                dslip: scale(&n, slip_eq),
+                sed: 0.0,
+                sfd: t * slip_eq,
+            },
+            ddtdtheta: scale(&n, crit.d_temperature),
+            slip_eq,
+            iterations: 0,
         })
     }
 
