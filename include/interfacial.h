@@ -74,6 +74,33 @@ extern "C" {
 #endif // __cplusplus
 
 /**
+ * Forced sliding for the law-1 `PROPS` of `fric_` (docs/props.md; μ₁, μ₂, the μ laws, τ_max):
+ * given the prescribed tangential slip velocity `velocity[nfdir]` (in the friction directions),
+ * the contact pressure and the mean surface temperature, writes
+ * - `tau[nfdir]`: τ = τ_crit(|v|, p, θ̄)·v/|v| (scaled as Eq. 5.2.3-10/11 when anisotropic);
+ * - `damping[nfdir*nfdir]` (column-major, `(a,b)` at `a + b*nfdir`): ∂τ_a/∂v_b, the
+ *   τ_crit/|v|·(δ − nn) term of the friction forces perpendicular to the slip plus the
+ *   nn·∂τ_crit/∂γ̇ term of a rate-dependent μ — both feed the damping matrix;
+ * - `stiffness[nfdir]`: ∂τ_a/∂p = n_a·∂τ_crit/∂p, the part that feeds the stiffness matrix.
+ *
+ * A zero velocity gives zeros. Returns `IflStatus::Ok`, or an error status with the message in
+ * `ifl_last_error` (outputs then zero when `nfdir` is 1 or 2).
+ *
+ * # Safety
+ * `props` holds `nprops` reals; `velocity`, `tau`, `stiffness` hold `nfdir` reals and
+ * `damping` `nfdir²` (outputs may not be NULL).
+ */
+enum IflStatus ifl_forced_sliding(const double *props,
+                                  int nprops,
+                                  int nfdir,
+                                  const double *velocity,
+                                  double pressure,
+                                  double temperature,
+                                  double *tau,
+                                  double *damping,
+                                  double *stiffness);
+
+/**
  * Abaqus/Standard `FRIC`: frictional stress, tangents, energies and state of one closed contact
  * point, callable from Fortran as `CALL FRIC(...)` with no interface block.
  *

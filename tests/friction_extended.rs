@@ -1033,3 +1033,99 @@ fn steady_transport_bad_input() {
         assert_eq!(&c.statev[..3], &[0.5, 0.1, 1.0], "{what}");
     }
 }
+
+/// Forced sliding through the native API (`ifl_forced_sliding`, seed 003): τ = τ_crit·v/|v|,
+/// the damping part ∂τ/∂v and the stiffness part ∂τ/∂p against central differences of τ, for
+/// constant and decaying μ, isotropic and anisotropic, with and without τ_max; zero velocity
+/// gives zeros; bad input gives an error status and zeroed outputs.
+#[test]
+fn forced_sliding_split() {
+    use interfacial::abi::{IflStatus, ifl_forced_sliding};
+    let call = |props: &[f64], nfdir: i32, v: [f64; 2], p: f64| {
+        let (mut tau, mut damping, mut stiffness) = ([9.0; 2], [9.0; 4], [9.0; 2]);
+        // SAFETY: arrays sized for nfdir ≤ 2.
+        let status = unsafe {
+            ifl_forced_sliding(
+                props.as_ptr(),
+                props.len() as i32,
+                nfdir,
+                v.as_ptr(),
+                p,
+                20.0,
+                tau.as_mut_ptr(),
+                damping.as_mut_ptr(),
+                stiffness.as_mut_ptr(),
+            )
+        };
+        (status, tau, damping, stiffness)
+    };
+    let mut decay = vec![0.0; 10];
+    decay[..10].copy_from_slice(&[1.0, 0.5, 0.0, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.2, 3.0]);
+    let mut aniso = decay.clone();
+    aniso[2] = 0.25;
+    let capped = [1.0, 0.5, 0.0, 30.0];
+    for props in [&[1.0, 0.5][..], &decay[..], &aniso[..], &capped[..]] {
+        for nfdir in [1, 2] {
+            let n = nfdir as usize;
+            let v = [0.3, -0.4];
+            let p = if props.len() == 4 { 100.0 } else { 40.0 };
+            let (status, tau, damping, stiffness) = call(props, nfdir, v, p);
+            assert_eq!(status, IflStatus::Ok, "{}", FricCall::last_error());
+            if props.len() == 2 {
+                // τ = μp v/|v|.
+                let speed = (0..n).map(|i| v[i] * v[i]).sum::<f64>().sqrt();
+                for i in 0..n {
+                    assert!((tau[i] - 0.5 * p * v[i] / speed).abs() < 1e-14);
+                }
+            }
+            if props.len() == 4 {
+                // On the cap: |τ| = τ_max and no pressure part.
+                let t = (0..n).map(|i| tau[i] * tau[i]).sum::<f64>().sqrt();
+                assert!((t - 30.0).abs() < 1e-12 && stiffness[..n].iter().all(|x| *x == 0.0));
+            }
+            let h = 1e-6;
+            for b in 0..n {
+                let (mut up, mut dn) = (v, v);
+                up[b] += h;
+                dn[b] -= h;
+                let (_, tu, _, _) = call(props, nfdir, up, p);
+                let (_, td, _, _) = call(props, nfdir, dn, p);
+                for a in 0..n {
+                    let fd = (tu[a] - td[a]) / (2.0 * h);
+                    let an = damping[a + b * n];
+                    assert!((fd - an).abs() < 1e-6 * p, "damping({a},{b}) {an} vs {fd}");
+                }
+            }
+            let hp = 1e-4;
+            let (_, tu, _, _) = call(props, nfdir, v, p + hp);
+            let (_, td, _, _) = call(props, nfdir, v, p - hp);
+            for a in 0..n {
+                let fd = (tu[a] - td[a]) / (2.0 * hp);
+                assert!(
+                    (fd - stiffness[a]).abs() < 1e-8,
+                    "stiffness({a}) {} vs {fd}",
+                    stiffness[a]
+                );
+            }
+        }
+    }
+    let (status, tau, damping, stiffness) = call(&[1.0, 0.5], 2, [0.0, 0.0], 10.0);
+    assert_eq!(status, IflStatus::Ok);
+    assert!(tau == [0.0; 2] && damping == [0.0; 4] && stiffness == [0.0; 2]);
+    for (props, nfdir, v, word) in [
+        (&[1.0, -0.5][..], 2, [0.1, 0.0], "PROPS(2)"),
+        (&[1.0, 0.5][..], 3, [0.1, 0.0], "nfdir = 3"),
+        (&[1.0, 0.5][..], 2, [f64::NAN, 0.0], "NaN"),
+    ] {
+        let (status, tau, _, _) = call(props, nfdir, v, 10.0);
+        assert_ne!(status, IflStatus::Ok);
+        let msg = FricCall::last_error();
+        assert!(
+            msg.contains(word) && msg.contains("ifl_forced_sliding"),
+            "{msg}"
+        );
+        if nfdir == 2 {
+            assert_eq!(tau, [0.0; 2]);
+        }
+    }
+}

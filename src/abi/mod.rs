@@ -11,12 +11,14 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use crate::LawError;
 use crate::report::{Site, report};
 
+pub mod forced_sliding;
 pub mod fric;
 pub mod fric_coef;
 pub mod gapcon;
 pub mod host;
 pub mod native;
 
+pub use forced_sliding::ifl_forced_sliding;
 pub use fric::fric_;
 pub use fric_coef::fric_coef_;
 pub use gapcon::gapcon_;

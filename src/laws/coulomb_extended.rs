@@ -255,6 +255,21 @@ pub struct ExtendedUpdate<const N: usize> {
     pub iterations: u32,
 }
 
+/// Forced sliding in static analysis (seed 003): the stress for a prescribed slip velocity and
+/// its linearization split the way complex eigenvalue extraction uses it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ForcedSliding<const N: usize> {
+    /// τ = τ_crit(|v|, p, θ̄)·v/|v| (0 when v = 0).
+    pub tau: [f64; N],
+    /// Damping part, `damping[a][b]` = ∂τ_a/∂v_b: τ_crit/|v|·(δ − nn), from the friction forces
+    /// perpendicular to the slip, plus nn·∂τ_crit/∂γ̇ when μ depends on the slip rate.
+    pub damping: [[f64; N]; N],
+    /// Stiffness part, ∂τ_a/∂p = n_a·∂τ_crit/∂p (the host multiplies by the normal stiffness).
+    pub stiffness_pressure: [f64; N],
+    /// ∂τ_a/∂θ̄.
+    pub temperature: [f64; N],
+}
+
 /// τ_crit(γ̇, p, θ̄) = min(μ̄·p, τ_max) in the scaled variables, with its partials.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 struct Critical {
@@ -489,6 +504,60 @@ impl ExtendedCoulomb {
                 d_pressure: mu + mbar * d_pressure * p,
                 d_temperature: mbar * d_temperature * p,
             }
+        }
+    }
+
+    /// Forced sliding (seed 003): the frictional stress for the prescribed slip velocity `v`
+    /// (independent of the displacements), and its linearization split into the damping part
+    /// (∂τ/∂v) and the stiffness part (∂τ/∂p). With anisotropy the scaled velocity of
+    /// Eq. 5.2.3-11 sets the direction and the rate. A zero velocity gives zero stress and
+    /// zero parts (no direction).
+    pub fn forced_sliding<const N: usize>(
+        &self,
+        velocity: &[f64; N],
+        pressure: f64,
+        temperature: f64,
+    ) -> Result<ForcedSliding<N>, LawError> {
+        if !(all_finite(velocity) && pressure.is_finite() && temperature.is_finite()) {
+            return Err(LawError::Input(
+                "slip velocity, pressure or temperature is NaN or infinite".into(),
+            ));
+        }
+        let (a, mbar) = self.scaling::<N>();
+        let v = multiply(velocity, &a);
+        let speed = norm(&v);
+        let zero = ForcedSliding {
+            tau: [0.0; N],
+            damping: [[0.0; N]; N],
+            stiffness_pressure: [0.0; N],
+            temperature: [0.0; N],
+        };
+        if speed == 0.0 {
+            return Ok(zero);
+        }
+        let n = unit(&v, speed);
+        let rate = if self.frozen { 0.0 } else { speed };
+        let c = self.critical(mbar, rate, pressure, temperature);
+        let d_rate = if self.frozen { 0.0 } else { c.d_rate };
+        let mut out = zero;
+        for i in 0..N {
+            out.tau[i] = a[i] * n[i] * c.value;
+            out.stiffness_pressure[i] = a[i] * n[i] * c.d_pressure;
+            out.temperature[i] = a[i] * n[i] * c.d_temperature;
+            for j in 0..N {
+                let delta = if i == j { 1.0 } else { 0.0 };
+                let proj = if N == 1 { 0.0 } else { delta - n[i] * n[j] };
+                out.damping[i][j] = a[i] * a[j] * (c.value / speed * proj + n[i] * n[j] * d_rate);
+            }
+        }
+        let finite = all_finite(&out.tau)
+            && all_finite(&out.stiffness_pressure)
+            && all_finite(&out.temperature)
+            && out.damping.iter().all(all_finite);
+        if finite {
+            Ok(out)
+        } else {
+            Err(LawError::Numerical("forced sliding overflowed".into()))
         }
     }
 
