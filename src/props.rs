@@ -42,6 +42,15 @@ pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
     }
 }
 
+/// The plain law-1 `PROPS` (isotropic, constant μ, `PROPS(1..7)`) when valid, else `None`: the
+/// hot path of `fric_`, which returns the small [`Coulomb`] rather than the whole
+/// [`FrictionLaw`] (whose extended variant is large to move around).
+#[inline(always)]
+#[must_use]
+pub fn plain_coulomb(props: &[f64]) -> Option<Coulomb> {
+    coulomb_fast(props)
+}
+
 /// The common case of [`friction_law`]: a valid Coulomb `PROPS`, or `None`.
 #[inline(always)]
 fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {

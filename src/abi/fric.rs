@@ -8,7 +8,7 @@ use super::{
 };
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
 use crate::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
-use crate::props::{FrictionLaw, friction_law};
+use crate::props::{FrictionLaw, friction_law, plain_coulomb};
 use crate::report::Site;
 use crate::{CUTBACK_RATIO, LawError};
 
@@ -174,12 +174,18 @@ impl FricArgs {
             let Ok(nprops) = usize::try_from(nprops) else {
                 return Err(negative_nprops(nprops));
             };
-            let law = friction_law(slice(self.props, nprops, "PROPS")?)?;
-            let nstatv = read(self.nstatv, "NSTATV")?;
-            let nstatv = match usize::try_from(nstatv) {
-                Ok(n) if n >= CoulombState::NSTATV => n,
-                _ => return Err(short_nstatv(nstatv)),
-            };
+            let props = slice(self.props, nprops, "PROPS")?;
+            // Hot path: the plain law, without building the whole FrictionLaw.
+            if let Some(law) = plain_coulomb(props) {
+                let nstatv = self.nstatv()?;
+                return match read(self.nfdir, "NFDIR")? {
+                    1 => self.point::<1>(&law, entry, nstatv),
+                    2 => self.point::<2>(&law, entry, nstatv),
+                    other => Err(bad_nfdir(other)),
+                };
+            }
+            let law = friction_law(props)?;
+            let nstatv = self.nstatv()?;
             match law {
                 FrictionLaw::Coulomb(law) => match read(self.nfdir, "NFDIR")? {
                     1 => self.point::<1>(&law, entry, nstatv),
@@ -192,6 +198,17 @@ impl FricArgs {
                     other => Err(bad_nfdir(other)),
                 },
             }
+        }
+    }
+
+    /// `NSTATV`, at least the Coulomb law's 3.
+    #[inline(always)]
+    unsafe fn nstatv(&self) -> Result<usize, LawError> {
+        // SAFETY: NSTATV is a valid pointer or NULL per the FRIC contract.
+        let nstatv = unsafe { read(self.nstatv, "NSTATV") }?;
+        match usize::try_from(nstatv) {
+            Ok(n) if n >= CoulombState::NSTATV => Ok(n),
+            _ => Err(short_nstatv(nstatv)),
         }
     }
 
