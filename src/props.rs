@@ -51,6 +51,17 @@ pub fn plain_coulomb(props: &[f64]) -> Option<Coulomb> {
     coulomb_fast(props)
 }
 
+/// A valid extended law-1 `PROPS` (anisotropy or `PROPS(8..20)`), else `None` (the plain law
+/// and invalid `PROPS` included): the second hot path of `fric_`.
+#[inline(always)]
+#[must_use]
+pub fn extended_coulomb(props: &[f64]) -> Option<ExtendedCoulomb> {
+    match coulomb_extended_fast(props) {
+        Some(FrictionLaw::CoulombExtended(law)) => Some(law),
+        _ => None,
+    }
+}
+
 /// The common case of [`friction_law`]: a valid Coulomb `PROPS`, or `None`.
 #[inline(always)]
 fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
@@ -80,7 +91,7 @@ fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
 /// checked path then says what is wrong). Decides validity with plain comparisons and builds
 /// the law from already-validated parts; a property test checks it agrees with
 /// [`coulomb_extended`].
-#[inline]
+#[inline(always)]
 fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
     if props.len() < 2
         || props.len() > COULOMB_EXTENDED_NPROPS

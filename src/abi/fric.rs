@@ -8,7 +8,7 @@ use super::{
 };
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
 use crate::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
-use crate::props::{FrictionLaw, friction_law, plain_coulomb};
+use crate::props::{FrictionLaw, extended_coulomb, friction_law, plain_coulomb};
 use crate::report::Site;
 use crate::{CUTBACK_RATIO, LawError};
 
@@ -181,6 +181,14 @@ impl FricArgs {
                 return match read(self.nfdir, "NFDIR")? {
                     1 => self.point::<1>(&law, entry, nstatv),
                     2 => self.point::<2>(&law, entry, nstatv),
+                    other => Err(bad_nfdir(other)),
+                };
+            }
+            if let Some(law) = extended_coulomb(props) {
+                let nstatv = self.nstatv()?;
+                return match read(self.nfdir, "NFDIR")? {
+                    1 => self.point_extended::<1>(&law, entry, nstatv),
+                    2 => self.point_extended::<2>(&law, entry, nstatv),
                     other => Err(bad_nfdir(other)),
                 };
             }

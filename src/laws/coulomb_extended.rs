@@ -478,6 +478,7 @@ impl ExtendedCoulomb {
     }
 
     /// τ_crit = min(μ̄·f(γ̇, p, θ̄)·p, τ_max) and its partials; 0 for p < 0.
+    #[inline(always)]
     fn critical(&self, mbar: f64, rate: f64, p: f64, theta: f64) -> Critical {
         if p < 0.0 {
             return Critical::default();
@@ -854,13 +855,15 @@ impl ExtendedCoulomb {
         let (slip_eq, crit, iterations) = if rate_law {
             // The last evaluation is kept: the solve usually stops at an evaluated point.
             let mut last = (f64::NAN, Critical::default());
+            // One division per solve, not three per iteration.
+            let per_dt = 1.0 / rate_dt;
             let residual = |x: f64| {
-                let c = self.critical(mbar, x / rate_dt, p, theta);
+                let c = self.critical(mbar, x * per_dt, p, theta);
                 last = (x, c);
                 (
                     stiffness * (g - x) - c.value,
-                    -stiffness - c.d_rate / rate_dt,
-                    -c.d_rate2 / (rate_dt * rate_dt),
+                    -stiffness - c.d_rate * per_dt,
+                    -c.d_rate2 * per_dt * per_dt,
                 )
             };
             // F(0) = k̄_s γ̄_eq^pr − τ̄_crit(0) > 0 (slip) and F(γ̄_eq^pr) = −τ̄_crit ≤ 0: the
@@ -885,7 +888,7 @@ impl ExtendedCoulomb {
             let c = if last.0 == root.x {
                 last.1
             } else {
-                self.critical(mbar, root.x / rate_dt, p, theta)
+                self.critical(mbar, root.x * per_dt, p, theta)
             };
             (root.x, c, root.iterations)
         } else if self.general {

@@ -139,28 +139,26 @@ fn bracketed_newton_impl(
         } else {
             high = x;
         }
-        // Halley's step (Newton's when f'' = 0): the Newton step with the slope corrected by
-        // the curvature, f' − f f''/(2f'); Newton's slope where the correction would flip it.
-        let slope = if ddfx == 0.0 || dfx == 0.0 {
-            dfx
+        // Halley's step δ = 2ff'/(2f'² − ff'') (Newton's f/f' when f'' = 0, and where the
+        // curvature term would flip the step), one division per iteration.
+        let denominator = 2.0 * dfx * dfx - fx * ddfx;
+        let candidate = if denominator > 0.0 {
+            2.0 * fx * dfx / denominator
         } else {
-            let corrected = dfx - 0.5 * fx * ddfx / dfx;
-            if corrected * dfx > 0.0 {
-                corrected
-            } else {
-                dfx
-            }
+            fx / dfx
         };
-        let newton_leaves_bracket = ((x - high) * slope - fx) * ((x - low) * slope - fx) > 0.0;
-        let newton_too_slow = (2.0 * fx).abs() > (step_before * slope).abs();
-        if newton_leaves_bracket || newton_too_slow || slope == 0.0 {
+        let target = x - candidate;
+        let inside = target >= low.min(high) && target <= low.max(high);
+        // Accept it when it stays inside the bracket and at least halves the step before last.
+        let fast_enough = 2.0 * candidate.abs() <= step_before.abs();
+        if inside && fast_enough {
+            step_before = step;
+            step = candidate;
+            x = target;
+        } else {
             step_before = step;
             step = 0.5 * (high - low);
             x = low + step;
-        } else {
-            step_before = step;
-            step = fx / slope;
-            x -= step;
         }
         if step.abs() <= x_tol {
             return Ok(Root {
