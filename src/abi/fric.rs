@@ -92,8 +92,127 @@ pub unsafe extern "C" fn fric_(
     // Not read by the Coulomb law (DROT and TEMP only by the extended law: docs/props.md).
     let _ = (ddpddh, slip, kstep, kinc, time, npatch, rcoord, predef);
     let _ = (npred, slname, msname, slname_len, msname_len);
+    // The plain law (isotropic, constant μ, PROPS(1..7)) is recognised first and takes a path
+    // that never touches the extended law's code, so its cost is what it was before the
+    // extended model existed; everything else (the extended law, bad PROPS) goes out of line.
+    // SAFETY: NPROPS and PROPS as the host passed them; NULL or negative gives None.
+    let Some(law) = (unsafe { plain_props(props, nprops) }) else {
+        // SAFETY: the host's pointers, passed on unchanged.
+        unsafe {
+            fric_general(
+                [
+                    lm.cast::<f64>(),
+                    tau,
+                    ddtddg,
+                    ddtddp,
+                    dslip,
+                    sed,
+                    sfd,
+                    ddtddt,
+                    pnewdt,
+                    statev,
+                ],
+                [
+                    dgam, taulm, press, dpress, dtime, chrlngth, props, temp, drot, coords,
+                ],
+                [nfdir, nstatv, nprops, mcrd, noel, node, npt],
+                ciname,
+                ciname_len,
+            )
+        };
+        return;
+    };
     let args = FricArgs {
         lm,
+        tau,
+        ddtddg,
+        ddtddp,
+        dslip,
+        sed,
+        sfd,
+        ddtddt,
+        pnewdt,
+        statev,
+        dgam,
+        taulm,
+        press,
+        dpress,
+        dtime,
+        nfdir,
+        nstatv,
+        chrlngth,
+        props,
+        nprops,
+        temp: std::ptr::null(),
+        drot: std::ptr::null(),
+        coords: std::ptr::null(),
+        mcrd: std::ptr::null(),
+    };
+    let _ = boundary(
+        // SAFETY (all three closures): the pointers are the host's, valid per the contract above.
+        || unsafe { site(ciname, ciname_len, noel, node, npt) },
+        || unsafe { args.run_plain(&law) },
+        || unsafe { args.fail() },
+    );
+}
+
+/// The plain law-1 `PROPS`, or `None` (also for a NULL or negative NPROPS/PROPS, which the
+/// general path then reports).
+///
+/// # Safety
+/// `nprops` is NULL or readable; `props` is NULL or holds NPROPS reals.
+#[inline(always)]
+unsafe fn plain_props(props: *const f64, nprops: *const c_int) -> Option<Coulomb> {
+    // SAFETY: as documented.
+    unsafe {
+        let n = usize::try_from(read(nprops, "NPROPS").ok()?).ok()?;
+        plain_coulomb(slice(props, n, "PROPS").ok()?)
+    }
+}
+
+/// `fric_` for everything but the plain law: the extended law, and every bad `PROPS` with its
+/// message. Out of line, with the pointers passed as plain values.
+///
+/// # Safety
+/// As `fric_`.
+// `cold` only for code layout and register allocation of the plain path in `fric_`; the
+// extended law is still fast once here (its own fast PROPS parser, docs/benchmarks.md).
+#[cold]
+#[inline(never)]
+unsafe fn fric_general(
+    out: [*mut f64; 10],
+    input: [*const f64; 10],
+    ints: [*const c_int; 7],
+    ciname: *const c_char,
+    ciname_len: usize,
+) {
+    let [
+        lm,
+        tau,
+        ddtddg,
+        ddtddp,
+        dslip,
+        sed,
+        sfd,
+        ddtddt,
+        pnewdt,
+        statev,
+    ] = out;
+    let [
+        dgam,
+        taulm,
+        press,
+        dpress,
+        dtime,
+        chrlngth,
+        props,
+        temp,
+        drot,
+        coords,
+    ] = input;
+    let [nfdir, nstatv, nprops, mcrd, noel, node, npt] = ints;
+    let args = FricArgs {
+        lm: lm.cast::<c_int>(),
         tau,
         ddtddg,
         ddtddp,
@@ -155,6 +274,30 @@ struct FricArgs {
 }
 
 impl FricArgs {
+    /// The plain law, already read from `PROPS` by [`plain_props`]: the checks of [`Self::run`]
+    /// in the same order, then the NFDIR-specific code.
+    #[inline(always)]
+    unsafe fn run_plain(&self, law: &Coulomb) -> Result<(), LawError> {
+        // SAFETY (whole body): as in `run`.
+        unsafe {
+            let lm_in = read(self.lm, "LM")?;
+            if lm_in == 2 {
+                return Ok(());
+            }
+            let entry = match lm_in {
+                0 => EntryFlag::Motion,
+                1 => EntryFlag::ExactStick,
+                other => return Err(bad_lm(other)),
+            };
+            let nstatv = self.nstatv()?;
+            match read(self.nfdir, "NFDIR")? {
+                1 => self.point::<1>(law, entry, nstatv),
+                2 => self.point::<2>(law, entry, nstatv),
+                other => Err(bad_nfdir(other)),
+            }
+        }
+    }
+
     /// Checks the sizes and the law once, then runs the NFDIR-specific code.
     #[inline(always)]
     unsafe fn run(&self) -> Result<(), LawError> {
@@ -175,15 +318,7 @@ impl FricArgs {
                 return Err(negative_nprops(nprops));
             };
             let props = slice(self.props, nprops, "PROPS")?;
-            // Hot path: the plain law, without building the whole FrictionLaw.
-            if let Some(law) = plain_coulomb(props) {
-                let nstatv = self.nstatv()?;
-                return match read(self.nfdir, "NFDIR")? {
-                    1 => self.point::<1>(&law, entry, nstatv),
-                    2 => self.point::<2>(&law, entry, nstatv),
-                    other => Err(bad_nfdir(other)),
-                };
-            }
+            // The extended law's own fast path (no FrictionLaw built and moved).
             if let Some(law) = extended_coulomb(props) {
                 let nstatv = self.nstatv()?;
                 return match read(self.nfdir, "NFDIR")? {
@@ -378,7 +513,9 @@ impl FricArgs {
         }
     }
 
-    /// The documented safe outputs of a failed call.
+    /// The documented safe outputs of a failed call. Inlined, so that no call takes the
+    /// arguments' address (which would keep them in memory on every call).
+    #[inline(always)]
     unsafe fn fail(&self) {
         // SAFETY: as in `run`; arrays are written only when NFDIR is known to be 1 or 2.
         unsafe {
@@ -397,6 +534,7 @@ impl FricArgs {
         }
     }
 
+    #[inline(always)]
     unsafe fn zero_tangents<const N: usize>(&self) {
         // SAFETY: N = NFDIR entries per array, N·N for the matrices, 2N for DDTDDT.
         unsafe {

@@ -733,6 +733,35 @@ impl ExtendedCoulomb {
         conditions: &Conditions,
         state: &ExtendedState<N>,
     ) -> Result<(), LawError> {
+        // x·0 is ±0 for finite x and NaN otherwise: one test for every input on the common
+        // path (TAULM, TEMP and DROT are 0/identity when not read); the names only on failure.
+        let mut probe = inc.pressure * 0.0 + inc.dpressure * 0.0 + inc.dtime * 0.0;
+        for i in 0..N {
+            probe += inc.tau[i] * 0.0 + inc.dgam[i] * 0.0 + state.viscous[i] * 0.0;
+        }
+        if self.base.stick() == StickMode::Exact && inc.entry == EntryFlag::ExactStick {
+            for x in &inc.taulm {
+                probe += x * 0.0;
+            }
+        }
+        probe += conditions.temperature * 0.0;
+        for x in conditions.drot.iter().flatten() {
+            probe += x * 0.0;
+        }
+        if probe == 0.0 && state.coulomb.slip_rate >= 0.0 {
+            return Ok(());
+        }
+        self.name_bad_input(inc, conditions, state)
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn name_bad_input<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        conditions: &Conditions,
+        state: &ExtendedState<N>,
+    ) -> Result<(), LawError> {
         let named = [
             ("PRESS", inc.pressure.is_finite()),
             ("DPRESS", inc.dpressure.is_finite()),
