@@ -77,6 +77,25 @@ void fric_(int *lm,                 /*  1 LM          in/out */
            size_t slname_len,       /* hidden length of SLNAME */
            size_t msname_len);      /* hidden length of MSNAME */
 
+/* FRIC_COEF (abi.md, current form): 16 arguments by reference + 3 hidden lengths. */
+void fric_coef_(double *fcoef,            /* fCoef(nBlock,2) */
+                double *fcoef_deriv,      /* fCoefDeriv(nBlock,20,2) */
+                const int *nblock,        /* nBlock */
+                const int *nprops,        /* nProps */
+                const int *ntemp,         /* nTemp */
+                const int *nfields,       /* nFields */
+                const int *idata,         /* iData */
+                const double *rdata,      /* rData */
+                const char *surf_int,     /* surfInt */
+                const char *surf_sec,     /* surfSec */
+                const char *surf_main,    /* surfMain */
+                const double *props,      /* props(nProps) */
+                const double *slip_data,  /* slipData(nBlock,6) */
+                const double *pressure,   /* pressure(nBlock) */
+                const double *temp_avg,   /* tempAvg(nBlock) */
+                const double *field_avg,  /* fieldAvg(nBlock,nFields) */
+                size_t surf_int_len, size_t surf_sec_len, size_t surf_main_len);
+
 const char *ifl_version(void);
 const char *ifl_last_error(void);
 size_t ifl_last_error_copy(char *buf, size_t len);

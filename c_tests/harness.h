@@ -36,7 +36,7 @@ enum {
     FH_MAT = FH_MAXDIR * FH_MAXDIR + 1,          /* DDTDDG(NFDIR,NFDIR) + guard */
     FH_DDT = 2 * FH_MAXDIR + 1,                  /* DDTDDT(NFDIR,2) + guard */
     FH_MAXSTATV = 12,                            /* STATEV(NSTATV) + guards after NSTATV */
-    FH_MAXPROPS = 12,
+    FH_MAXPROPS = 20,                            /* PROPS(1..20): the extended Coulomb layout */
     FH_NAMEBUF = 96                              /* room for bytes past a short hidden length */
 };
 

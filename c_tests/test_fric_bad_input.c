@@ -175,7 +175,7 @@ static void nprops_1(fh_fric *h) { h->nprops = 1; }
 static void law_code_3(fh_fric *h) { h->props[0] = 3.0; }
 static void law_code_1_5(fh_fric *h) { h->props[0] = 1.5; }
 static void mu_negative(fh_fric *h) { h->props[1] = -MU; }
-static void mu2_anisotropic(fh_fric *h) { h->props[2] = 0.4; }
+static void mu2_negative(fh_fric *h) { h->props[2] = -0.4; }
 static void stick_mode_5(fh_fric *h)
 {
     h->props[6] = 5.0;
@@ -231,7 +231,7 @@ static const bad_case CATALOGUE[] = {
     {"PROPS(1) = 3", law_code_3, "PROPS(1) = 3", NULL},
     {"PROPS(1) = 1.5", law_code_1_5, "PROPS(1) = 1.5", "integer"},
     {"mu < 0", mu_negative, "PROPS(2)", NULL},
-    {"anisotropic mu2", mu2_anisotropic, "PROPS(3)", "anisotropic"},
+    {"mu2 < 0", mu2_negative, "PROPS(3)", NULL},
     {"PROPS(7) = 5", stick_mode_5, "PROPS(7)", NULL},
     {"PROPS(8) != 0", props8_nonzero, "PROPS(8)", NULL},
     {"PRESS = NaN", press_nan, " PRESS", "NaN"},

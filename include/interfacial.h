@@ -117,6 +117,33 @@ enum IflStatus ifl_fric_batch(size_t npoints,
                               double *pnewdt);
 
 /**
+ * Forced sliding for the law-1 `PROPS` of `fric_` (docs/props.md; μ₁, μ₂, the μ laws, τ_max):
+ * given the prescribed tangential slip velocity `velocity[nfdir]` (in the friction directions),
+ * the contact pressure and the mean surface temperature, writes
+ * - `tau[nfdir]`: τ = τ_crit(|v|, p, θ̄)·v/|v| (scaled as Eq. 5.2.3-10/11 when anisotropic);
+ * - `damping[nfdir*nfdir]` (column-major, `(a,b)` at `a + b*nfdir`): ∂τ_a/∂v_b, the
+ *   τ_crit/|v|·(δ − nn) term of the friction forces perpendicular to the slip plus the
+ *   nn·∂τ_crit/∂γ̇ term of a rate-dependent μ — both feed the damping matrix;
+ * - `stiffness[nfdir]`: ∂τ_a/∂p = n_a·∂τ_crit/∂p, the part that feeds the stiffness matrix.
+ *
+ * A zero velocity gives zeros. Returns `IflStatus::Ok`, or an error status with the message in
+ * `ifl_last_error` (outputs then zero when `nfdir` is 1 or 2).
+ *
+ * # Safety
+ * `props` holds `nprops` reals; `velocity`, `tau`, `stiffness` hold `nfdir` reals and
+ * `damping` `nfdir²` (outputs may not be NULL).
+ */
+enum IflStatus ifl_forced_sliding(const double *props,
+                                  int nprops,
+                                  int nfdir,
+                                  const double *velocity,
+                                  double pressure,
+                                  double temperature,
+                                  double *tau,
+                                  double *damping,
+                                  double *stiffness);
+
+/**
  * Abaqus/Standard `FRIC`: frictional stress, tangents, energies and state of one closed contact
  * point, callable from Fortran as `CALL FRIC(...)` with no interface block.
  *
@@ -192,6 +219,51 @@ void fric_(int *lm,
            size_t ciname_len,
            size_t slname_len,
            size_t msname_len);
+
+/**
+ * Abaqus/Standard `FRIC_COEF`: μ of `nBlock` points and its derivatives, callable from Fortran as
+ * `CALL FRIC_COEF(...)`.
+ *
+ * `PROPS` has the `fric_` law-1 layout (docs/props.md); only the μ entries matter here
+ * (`PROPS(2)` μ₁, `PROPS(3)` μ₂, `PROPS(8..13)` the rate, pressure and temperature laws).
+ * For point k: the slip-rate magnitude is `slipData(k,1)`, the pressure `pressure(k)` and the
+ * temperature `tempAvg(k)` (read only with a temperature law). Writes:
+ * - `fCoef(k,1)` = μ₁ and `fCoef(k,2)` = μ₂ (= μ₁ when isotropic);
+ * - `fCoefDeriv(k,1,d)` = ∂μ_d/∂γ̇_eq, `fCoefDeriv(k,2,d)` = ∂μ_d/∂p,
+ *   `fCoefDeriv(k,3,d)` = ∂μ_d/∂θ̄, `fCoefDeriv(k,4..20,d)` = 0 (μ depends on nothing else).
+ *
+ * A negative pressure uses the μ of p = 0 with ∂μ/∂p = 0. `iData`, `rData`, `fieldAvg`,
+ * `surfSec`, `surfMain` are not read.
+ *
+ * On failure (bad `PROPS`, NaN or infinite input, a negative slip rate, `nBlock` < 0, a
+ * temperature law with `nTemp` = 0, overflow, internal panic) the whole block gets μ = 0 and
+ * zero derivatives, and one message per distinct cause is reported (FRIC_COEF has no
+ * `PNEWDT`; `INTERFACIAL_STRICT=1` aborts instead).
+ *
+ * # Safety
+ * Pointers valid for the FRIC_COEF signature: `fCoef(nBlock,2)`, `fCoefDeriv(nBlock,20,2)`,
+ * `props(nProps)`, `slipData(nBlock,6)`, `pressure(nBlock)`, `tempAvg(nBlock)` (when read),
+ * names of the given hidden lengths.
+ */
+void fric_coef_(double *fcoef,
+                double *fcoef_deriv,
+                const int *nblock,
+                const int *nprops,
+                const int *ntemp,
+                const int *nfields,
+                const int *idata,
+                const double *rdata,
+                const char *surf_int,
+                const char *surf_sec,
+                const char *surf_main,
+                const double *props,
+                const double *slip_data,
+                const double *pressure,
+                const double *temp_avg,
+                const double *field_avg,
+                size_t surf_int_len,
+                size_t surf_sec_len,
+                size_t surf_main_len);
 
 #if !defined(INTERFACIAL_CALCULIX)
 /**

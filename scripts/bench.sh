@@ -37,6 +37,7 @@ gfortran "${fflags[@]}" -I"$root/bench" -c "$root/bench/fric_ref.f" -o fric_ref.
 gfortran "${fflags[@]}" -I"$root/bench" -c "$root/bench/fric_nop.f" -o fric_nop.o
 gfortran "${fflags[@]}" -c "$root/bench/bench_fric.f90" -o bench_fric.o
 gfortran "${fflags[@]}" -o bench_fric bench_fric.o fric_ref.o fric_nop.o "$lib" "${native_libs[@]}"
+gfortran "${fflags[@]}" -o bench_rate "$root/bench/bench_rate.f90" "$lib" "${native_libs[@]}"
 gfortran "${fflags[@]}" -I"$root/bench" -c "$root/bench/gapcon_ref.f" -o gapcon_ref.o
 gfortran "${fflags[@]}" -I"$root/bench" -c "$root/bench/gapcon_nop.f" -o gapcon_nop.o
 gfortran "${fflags[@]}" -c "$root/bench/bench_gapcon.f90" -o bench_gapcon.o
@@ -48,6 +49,9 @@ gfortran "${fflags[@]}" -o bench_adhesive bench_adhesive.o fric_nop.o "$lib" "${
 
 echo "== bench_fric${*:+ $*}"
 ./bench_fric "$@" | tee bench_output.txt
+
+echo "== bench_rate ${1:-200} ${2:-15}"
+./bench_rate "${1:-200}" "${2:-15}" | tee bench_rate.txt
 
 # NREP and NRUN only: CASE numbers the rows of bench_fric.
 gapcon_args=("${1:-200}" "${2:-15}")
@@ -227,5 +231,18 @@ gfortran ${fflags[*]} -o bench_adhesive bench_adhesive.o fric_nop.o target/relea
 
 EOF
   cat bench_adhesive.txt
+## Rate-dependent friction: \`fric_\` with the decay law against constant μ
+
+[\`bench/bench_rate.f90\`](../bench/bench_rate.f90): the same host loop, NFDIR = 2, 4096 points
+all slipping (|γ_pr|/γ_crit 1.5–5), \`DTIME\` = 0.01, with three \`PROPS\` on the same points:
+constant μ = 0.6 (\`PROPS(1..5)\`, the plain path), the exponential decay law
+(\`PROPS(8..10) = 1, 0.3, 4\`: a bracketed Newton solve of the return map per call) and the
+same law with μ frozen at the start of the increment (\`PROPS(20) = 1\`, explicit). Target
+(issue 4): decay under 3× constant. Built as \`gfortran ${fflags[*]} -o bench_rate
+bench/bench_rate.f90 target/release/libinterfacial.a ${native_libs[*]}\`; run
+\`./bench_rate ${1:-200} ${2:-15}\`.
+
+EOF
+  cat bench_rate.txt
 } >"$doc"
 echo "== wrote $doc"

@@ -3,7 +3,9 @@
 //! parameters; the table in `docs/props.md` documents the same layout for users.
 
 use crate::LawError;
-use crate::laws::coulomb::{Coulomb, StickMode};
+use crate::laws::coulomb::{Coulomb, CriticalSlip, DEFAULT_SLIP_TOLERANCE, StickMode};
+use crate::laws::coulomb_extended::{Damping, ExtendedCoulomb, Hht, SteadyTransport};
+use crate::laws::friction_coefficient::CoefficientLaw;
 
 mod adhesive;
 pub(crate) use adhesive::adhesive_props;
@@ -16,6 +18,9 @@ pub const LAW_COULOMB: i32 = 1;
 /// missing trailing entries take their documented defaults.
 pub const COULOMB_NPROPS: usize = 7;
 
+/// Number of `PROPS` entries the extended Coulomb law reads (`PROPS(1..20)`, docs/props.md).
+pub const COULOMB_EXTENDED_NPROPS: usize = 20;
+
 /// A law selected and parametrised by `PROPS`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum FrictionLaw {
@@ -23,6 +28,8 @@ pub enum FrictionLaw {
     Coulomb(Coulomb),
     /// `PROPS(1) = 2`: adhesive friction (seed 004).
     Adhesive(AdhesiveProps),
+    /// `PROPS(1) = 1` with anisotropy, a μ law, HHT or damping (`PROPS(3)`, `PROPS(8..20)`).
+    CoulombExtended(ExtendedCoulomb),
 }
 
 /// Reads `PROPS(1)` (the law code) and the law's parameters.
@@ -34,10 +41,33 @@ pub enum FrictionLaw {
 pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
     match coulomb_fast(props) {
         Some(law) => Ok(FrictionLaw::Coulomb(law)),
-        None => match adhesive::adhesive_fast(props) {
+        None => match coulomb_extended_fast(props) {
             Some(law) => Ok(law),
-            None => friction_law_checked(props),
+            None => match adhesive::adhesive_fast(props) {
+                Some(law) => Ok(law),
+                None => friction_law_checked(props),
+            },
         },
+    }
+}
+
+/// The plain law-1 `PROPS` (isotropic, constant μ, `PROPS(1..7)`) when valid, else `None`: the
+/// hot path of `fric_`, which returns the small [`Coulomb`] rather than the whole
+/// [`FrictionLaw`] (whose extended variant is large to move around).
+#[inline(always)]
+#[must_use]
+pub fn plain_coulomb(props: &[f64]) -> Option<Coulomb> {
+    coulomb_fast(props)
+}
+
+/// A valid extended law-1 `PROPS` (anisotropy or `PROPS(8..20)`), else `None` (the plain law
+/// and invalid `PROPS` included): the second hot path of `fric_`.
+#[inline(always)]
+#[must_use]
+pub fn extended_coulomb(props: &[f64]) -> Option<ExtendedCoulomb> {
+    match coulomb_extended_fast(props) {
+        Some(FrictionLaw::CoulombExtended(law)) => Some(law),
+        _ => None,
     }
 }
 
@@ -66,6 +96,113 @@ fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
     valid.then(|| Coulomb::from_validated(mu, tau_max, gamma_crit, tolerance, stick))
 }
 
+/// The extended law-1 layout (`PROPS(3)`, `PROPS(8..20)`) when valid, else `None` (the
+/// checked path then says what is wrong). Decides validity with plain comparisons and builds
+/// the law from already-validated parts; a property test checks it agrees with
+/// [`coulomb_extended`].
+#[inline(always)]
+fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
+    if props.len() < 2
+        || props.len() > COULOMB_EXTENDED_NPROPS
+        || props[0] != f64::from(LAW_COULOMB)
+    {
+        return None;
+    }
+    let mut e = [0.0; COULOMB_EXTENDED_NPROPS + 1];
+    e[1..=props.len()].copy_from_slice(props);
+    let finite = |v: f64| v.is_finite();
+    let positive = |v: f64| v > 0.0 && v < f64::INFINITY;
+    let off_or_positive = |v: f64| v == 0.0 || positive(v);
+    let (mu, mu2) = (e[2], e[3]);
+    let viscous = e[7] == 3.0;
+    let stick = match e[7] {
+        0.0 | 3.0 => StickMode::Elastic,
+        1.0 => StickMode::Exact,
+        2.0 => StickMode::Rough,
+        _ => return None,
+    };
+    let decay = match e[8] {
+        0.0 if e[9] == 0.0 && e[10] == 0.0 => None,
+        1.0 if positive(mu) && (0.0..f64::INFINITY).contains(&e[9]) && positive(e[10]) => {
+            Some((e[9] / mu, e[10]))
+        }
+        _ => return None,
+    };
+    let hht_on = !viscous && (e[14] != 0.0 || e[15] != 0.0 || e[16] != 0.0);
+    let transport_ok = !viscous
+        || (e[5] == 0.0
+            && positive(e[14])
+            && [0.0, 1.0, 2.0, 3.0].contains(&e[15])
+            && e[16] == 0.0);
+    let valid = (0.0..f64::INFINITY).contains(&mu)
+        && (mu2 == 0.0 || mu2 == mu || (positive(mu2) && mu > 0.0))
+        && off_or_positive(e[4])
+        && off_or_positive(e[5])
+        && off_or_positive(e[6])
+        && off_or_positive(e[11])
+        && finite(e[12])
+        && finite(e[13])
+        && (e[12] != 0.0 || e[13] == 0.0)
+        && (!hht_on
+            || ((-0.5..=0.0).contains(&e[14]) && off_or_positive(e[15]) && off_or_positive(e[16])))
+        && (if e[17] == 0.0 {
+            e[18] == 0.0 && e[19] == 0.0
+        } else {
+            positive(e[17]) && (0.0..f64::INFINITY).contains(&e[18]) && (0.0..1.0).contains(&e[19])
+        })
+        && (e[20] == 0.0 || (e[20] == 1.0 && decay.is_some()))
+        && transport_ok;
+    if !valid {
+        return None;
+    }
+    let base = Coulomb::from_validated(mu, e[4], e[5], e[6], stick);
+    let mu2 = if mu2 == 0.0 { mu } else { mu2 };
+    if !viscous && mu2 == mu && e[8..].iter().all(|v| *v == 0.0) {
+        return Some(FrictionLaw::Coulomb(base));
+    }
+    let hht = hht_on.then(|| {
+        let alpha = e[14];
+        Hht {
+            alpha,
+            beta: if e[15] == 0.0 {
+                0.25 * (1.0 - alpha) * (1.0 - alpha)
+            } else {
+                e[15]
+            },
+            gamma: if e[16] == 0.0 { 0.5 - alpha } else { e[16] },
+        }
+    });
+    let damping = (e[17] != 0.0).then_some(Damping {
+        c0: e[17],
+        clearance: e[18],
+        fraction: e[19],
+    });
+    let transport = viscous.then(|| SteadyTransport {
+        tolerance: if e[6] > 0.0 {
+            e[6]
+        } else {
+            DEFAULT_SLIP_TOLERANCE
+        },
+        omega: e[14],
+        axis: match e[15] {
+            1.0 => 0,
+            2.0 => 1,
+            _ => 2,
+        },
+    });
+    Some(FrictionLaw::CoulombExtended(
+        ExtendedCoulomb::from_validated(
+            base,
+            mu2,
+            CoefficientLaw::from_validated(decay, e[11], e[12], e[13]),
+            e[20] == 1.0,
+            hht,
+            damping,
+        )
+        .with_steady_transport(transport),
+    ))
+}
+
 /// The slow path of [`friction_law`], which says what is wrong.
 #[cold]
 #[inline(never)]
@@ -76,7 +213,7 @@ pub fn friction_law_checked(props: &[f64]) -> Result<FrictionLaw, LawError> {
         ));
     };
     if code == f64::from(LAW_COULOMB) {
-        coulomb(props).map(FrictionLaw::Coulomb)
+        coulomb_extended(props)
     } else if code == f64::from(LAW_ADHESIVE) {
         adhesive::adhesive(props).map(AdhesiveProps::into_friction_law)
     } else if code.is_finite() && code.fract() == 0.0 {
@@ -101,27 +238,8 @@ fn coulomb(props: &[f64]) -> Result<Coulomb, LawError> {
         )));
     }
     let get = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
-    if let Some((i, v)) = props
-        .iter()
-        .enumerate()
-        .skip(COULOMB_NPROPS)
-        .find(|(_, v)| **v != 0.0)
-    {
-        return Err(LawError::Parameter(format!(
-            "PROPS({}) = {v} is not used by the Coulomb law (PROPS(1..{COULOMB_NPROPS})); \
-             refusing to ignore it",
-            i + 1
-        )));
-    }
     let mu = get(2);
-    let mu2 = get(3);
     let mut law = Coulomb::new(mu).map_err(|e| in_props(2, e))?;
-    if mu2 != 0.0 && mu2 != mu {
-        return Err(LawError::Parameter(format!(
-            "PROPS(3) = μ₂ = {mu2} differs from μ = {mu}: anisotropic friction is not \
-             available yet; give PROPS(3) = 0 for isotropic friction"
-        )));
-    }
     let tau_max = get(4);
     if tau_max != 0.0 {
         law = law.with_shear_limit(tau_max).map_err(|e| in_props(4, e))?;
@@ -144,11 +262,173 @@ fn coulomb(props: &[f64]) -> Result<Coulomb, LawError> {
         2.0 => StickMode::Rough,
         other => {
             return Err(LawError::Parameter(format!(
-                "PROPS(7) = {other} must be the stick mode 0 (elastic), 1 (exact) or 2 (rough)"
+                "PROPS(7) = {other} must be the stick mode 0 (elastic), 1 (exact), 2 (rough) or 3 (viscous, steady-state transport)"
             )));
         }
     };
     Ok(law.with_stick(stick))
+}
+
+/// The whole law-1 layout (`PROPS(1..20)`, docs/props.md): the base entries, then anisotropy
+/// (`PROPS(3)`), the μ law (`PROPS(8..13)`), HHT (`PROPS(14..16)`), damping (`PROPS(17..19)`)
+/// and the frozen-μ switch (`PROPS(20)`). Returns the plain [`Coulomb`] when nothing beyond it
+/// is switched on (the cheapest path).
+pub fn coulomb_extended(props: &[f64]) -> Result<FrictionLaw, LawError> {
+    let get = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
+    if let Some((i, v)) = props
+        .iter()
+        .enumerate()
+        .skip(COULOMB_EXTENDED_NPROPS)
+        .find(|(_, v)| **v != 0.0)
+    {
+        return Err(unused_entry(
+            i + 1,
+            *v,
+            "the Coulomb law reads PROPS(1..20)",
+        ));
+    }
+    // PROPS(7) = 3: viscous stick for steady-state transport; the base law is read with an
+    // elastic-stick placeholder, and PROPS(14..15) are ω and the axis instead of HHT.
+    let viscous = get(7) == 3.0;
+    let base = if viscous {
+        if get(5) != 0.0 {
+            return Err(unused_entry(
+                5,
+                get(5),
+                "viscous stick uses the slip tolerance F_f = PROPS(6), not γ_crit",
+            ));
+        }
+        let mut elastic = props.to_vec();
+        elastic[6] = 0.0;
+        coulomb(&elastic)?
+    } else {
+        coulomb(props)?
+    };
+    let mu = get(2);
+    let mu2 = get(3);
+    let extras = viscous
+        || (mu2 != 0.0 && mu2 != mu)
+        || (8..=COULOMB_EXTENDED_NPROPS).any(|i| get(i) != 0.0);
+    if !extras {
+        return Ok(FrictionLaw::Coulomb(base));
+    }
+    let mut law = ExtendedCoulomb::new(base);
+    if mu2 != 0.0 && mu2 != mu {
+        law = law
+            .with_second_coefficient(mu2)
+            .map_err(|e| in_props(3, e))?;
+    }
+    // μ law: PROPS(8) selector, PROPS(9) μ_k, PROPS(10) d_c.
+    let mut coefficient = CoefficientLaw::default();
+    match get(8) {
+        0.0 => {
+            for i in [9, 10] {
+                if get(i) != 0.0 {
+                    return Err(unused_entry(i, get(i), "PROPS(8) = 0 (constant μ)"));
+                }
+            }
+        }
+        1.0 => {
+            let (mu_k, decay) = (get(9), get(10));
+            if mu.is_nan() || mu <= 0.0 {
+                return Err(LawError::Parameter(format!(
+                    "PROPS(2) = μ_s = {mu} must be > 0 with the exponential decay law \
+                     (PROPS(8) = 1)"
+                )));
+            }
+            if !(mu_k.is_finite() && mu_k >= 0.0) {
+                return Err(LawError::Parameter(format!(
+                    "PROPS(9) = μ_k = {mu_k} must be finite and ≥ 0"
+                )));
+            }
+            coefficient = coefficient
+                .with_exponential_decay(mu_k / mu, decay)
+                .map_err(|e| in_props(10, e))?;
+        }
+        other => {
+            return Err(LawError::Parameter(format!(
+                "PROPS(8) = {other} must be the μ law 0 (constant) or 1 (exponential decay)"
+            )));
+        }
+    }
+    if get(11) != 0.0 {
+        coefficient = coefficient
+            .with_pressure_reference(get(11))
+            .map_err(|e| in_props(11, e))?;
+    }
+    if get(12) != 0.0 {
+        coefficient = coefficient
+            .with_temperature(get(12), get(13))
+            .map_err(|e| in_props(12, e))?;
+    } else if get(13) != 0.0 {
+        return Err(unused_entry(
+            13,
+            get(13),
+            "PROPS(12) = 0 (no temperature law)",
+        ));
+    }
+    law = law.with_coefficient_law(coefficient);
+    if viscous {
+        let tolerance = match base.critical_slip() {
+            CriticalSlip::Tolerance(t) => t,
+            CriticalSlip::Absolute(_) => DEFAULT_SLIP_TOLERANCE,
+        };
+        let axis = match get(15) {
+            0.0 | 3.0 => 2,
+            1.0 => 0,
+            2.0 => 1,
+            other => {
+                return Err(LawError::Parameter(format!(
+                    "PROPS(15) = {other} must be the spinning axis 1 (x), 2 (y) or 3 (z, default)"
+                )));
+            }
+        };
+        if get(16) != 0.0 {
+            return Err(unused_entry(
+                16,
+                get(16),
+                "steady-state transport (PROPS(7) = 3)",
+            ));
+        }
+        let transport =
+            SteadyTransport::new(tolerance, get(14), axis).map_err(|e| in_props(14, e))?;
+        law = law.with_steady_transport(Some(transport));
+    } else if (14..=16).any(|i| get(i) != 0.0) {
+        // HHT: on when any of PROPS(14..16) is non-zero.
+        let hht = Hht::new(get(14), get(15), get(16)).map_err(|e| in_props(14, e))?;
+        law = law.with_hht(Some(hht));
+    }
+    // Damping: PROPS(17) c₀, PROPS(18) g₀, PROPS(19) f.
+    if get(17) != 0.0 {
+        let d = Damping::new(get(17), get(18), get(19)).map_err(|e| in_props(17, e))?;
+        law = law.with_damping(Some(d));
+    } else {
+        for i in [18, 19] {
+            if get(i) != 0.0 {
+                return Err(unused_entry(i, get(i), "PROPS(17) = 0 (no damping)"));
+            }
+        }
+    }
+    match get(20) {
+        0.0 => {}
+        1.0 if coefficient.is_rate_dependent() => law = law.with_frozen_coefficient(true),
+        1.0 => return Err(unused_entry(20, 1.0, "μ does not depend on the slip rate")),
+        other => {
+            return Err(LawError::Parameter(format!(
+                "PROPS(20) = {other} must be 0 (μ at the end-of-increment rate) or 1 (μ frozen \
+                 at the start of the increment)"
+            )));
+        }
+    }
+    Ok(FrictionLaw::CoulombExtended(law))
+}
+
+#[cold]
+#[inline(never)]
+fn unused_entry(index: usize, v: f64, why: &str) -> LawError {
+    LawError::Parameter(format!(
+        "PROPS({index}) = {v} is not read ({why}); refusing to ignore it"
+    ))
 }
 
 fn in_props(index: usize, e: LawError) -> LawError {
@@ -187,13 +467,53 @@ mod tests {
             let checked = friction_law_checked(&props);
             match (fast, checked) {
                 (Some(f), Ok(FrictionLaw::Coulomb(c))) => prop_assert_eq!(f, c),
+                (Some(_), Ok(other)) => prop_assert!(false, "fast path gave Coulomb, checked {other:?}"),
                 (None, Err(_)) => {}
                 // PROPS(1) = 2 is never the Coulomb fast path's (even in its Coulomb special case).
                 (None, Ok(_)) if props[0] == 2.0 => {}
                 // Longer PROPS with trailing zeros are valid but left to the checked path.
-                (None, Ok(_)) => prop_assert!(props.len() > COULOMB_NPROPS),
+                (None, Ok(FrictionLaw::Coulomb(_))) => prop_assert!(props.len() > COULOMB_NPROPS),
+                // Anisotropy or an extended entry: not the fast path's business.
+                (None, Ok(_)) => {}
                 (Some(_), Err(e)) => prop_assert!(false, "fast path accepted {props:?}: {e}"),
-                (Some(_), Ok(other)) => prop_assert!(false, "fast path gave Coulomb, checked {other:?}"),
+            }
+        }
+    }
+
+    fn extended_entry() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            4 => Just(0.0),
+            1 => Just(1.0),
+            1 => Just(2.0),
+            1 => Just(3.0),
+            1 => Just(0.5),
+            1 => Just(-0.2),
+            1 => Just(-1.0),
+            1 => Just(f64::NAN),
+            1 => Just(f64::INFINITY),
+            1 => 0.0..3.0f64,
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 5000, failure_persistence: None, ..ProptestConfig::default() })]
+
+        /// The extended fast path accepts exactly what the checked path accepts (up to 20
+        /// entries), with the same law.
+        #[test]
+        fn extended_fast_and_checked_paths_agree(
+            mut props in prop::collection::vec(extended_entry(), 2..23),
+            mu in prop_oneof![Just(0.0), Just(0.3), Just(-0.1), 0.0..1.0f64],
+        ) {
+            props[0] = 1.0;
+            props[1] = mu;
+            let fast = coulomb_extended_fast(&props);
+            let checked = coulomb_extended(&props);
+            match (fast, checked) {
+                (Some(f), Ok(c)) => prop_assert_eq!(f, c),
+                (None, Err(_)) => {}
+                (None, Ok(c)) => prop_assert!(props.len() > COULOMB_EXTENDED_NPROPS, "{props:?} → {c:?}"),
+                (Some(f), Err(e)) => prop_assert!(false, "fast path accepted {props:?} as {f:?}: {e}"),
             }
         }
     }
@@ -201,7 +521,7 @@ mod tests {
     #[test]
     fn minimal_props_take_defaults() {
         let Ok(FrictionLaw::Coulomb(c)) = friction_law(&[1.0, 0.3]) else {
-            panic!("expected the Coulomb law")
+            panic!("plain Coulomb expected")
         };
         assert_eq!(c.mu(), 0.3);
         assert_eq!(c.shear_limit(), None);
@@ -213,7 +533,7 @@ mod tests {
     fn full_props() {
         let Ok(FrictionLaw::Coulomb(c)) = friction_law(&[1.0, 0.3, 0.0, 7.0, 1e-3, 0.01, 1.0])
         else {
-            panic!("expected the Coulomb law")
+            panic!("plain Coulomb expected")
         };
         assert_eq!(c.shear_limit(), Some(7.0));
         assert_eq!(c.critical_slip(), CriticalSlip::Absolute(1e-3));
@@ -228,12 +548,114 @@ mod tests {
             (&[3.0, 0.3][..], "PROPS(1) = 3"),
             (&[1.5, 0.3][..], "integer"),
             (&[1.0, -0.3][..], "PROPS(2)"),
-            (&[1.0, 0.3, 0.4][..], "PROPS(3)"),
+            (&[1.0, 0.3, -0.4][..], "PROPS(3)"),
             (&[1.0, 0.3, 0.0, -1.0][..], "PROPS(4)"),
             (&[1.0, 0.3, 0.0, 0.0, -1.0][..], "PROPS(5)"),
             (&[1.0, 0.3, 0.0, 0.0, 0.0, -1.0][..], "PROPS(6)"),
-            (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 3.0][..], "PROPS(7)"),
-            (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0][..], "PROPS(8)"),
+            (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 4.0][..], "PROPS(7)"),
+            (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 3.0][..], "PROPS(14)"),
+            (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 2.0][..], "PROPS(8)"),
+            (
+                &[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.1][..],
+                "PROPS(9)",
+            ),
+            (
+                &[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, -0.1, 1.0][..],
+                "PROPS(9)",
+            ),
+            (
+                &[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.1, -1.0][..],
+                "PROPS(10)",
+            ),
+            (
+                &[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.1, 0.0][..],
+                "PROPS(10)",
+            ),
+            (
+                &[1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.1, 1.0][..],
+                "PROPS(2)",
+            ),
+            (
+                &[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -5.0][..],
+                "PROPS(11)",
+            ),
+            (
+                &[
+                    1.0,
+                    0.3,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    f64::NAN,
+                ][..],
+                "PROPS(12)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 20.0,
+                ][..],
+                "PROPS(13)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.5,
+                ][..],
+                "PROPS(14)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0,
+                ][..],
+                "PROPS(14)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                    -2.0,
+                ][..],
+                "PROPS(17)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                    0.0, 1.0,
+                ][..],
+                "PROPS(18)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                    1.0, 1.0, 1.5,
+                ][..],
+                "PROPS(17)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                    0.0, 0.0, 0.0, 1.0,
+                ][..],
+                "PROPS(20)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.1, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                    0.0, 0.0, 0.0, 2.0,
+                ][..],
+                "PROPS(20)",
+            ),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                    0.0, 0.0, 0.0, 0.0, 1.0,
+                ][..],
+                "PROPS(21)",
+            ),
         ] {
             let e = friction_law(props).unwrap_err().to_string();
             assert!(e.contains(needle), "{props:?}: {e}");

@@ -161,9 +161,9 @@ fn cases() -> Vec<Case> {
             word: "PROPS(2)",
         },
         Case {
-            what: "anisotropic",
+            what: "μ₂ < 0",
             nfdir: 2,
-            spoil: |c| c.props[2] = 0.5,
+            spoil: |c| c.props[2] = -0.5,
             word: "PROPS(3)",
         },
         Case {
@@ -189,11 +189,11 @@ fn cases() -> Vec<Case> {
             word: "PROPS(7)",
         },
         Case {
-            what: "PROPS(8) set",
+            what: "PROPS(8) not a μ law",
             nfdir: 2,
             spoil: |c| {
                 c.props.resize(8, 0.0);
-                c.props[7] = 1.0;
+                c.props[7] = 5.0;
                 c.nprops = 8;
             },
             word: "PROPS(8)",

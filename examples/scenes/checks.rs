@@ -333,6 +333,77 @@ fn f5(rows: &mut Vec<Row>) {
     }
 }
 
+/// F3: the friction ellipse (μ₁ = 0.5, μ₂ = 0.2 in PROPS(3)), steady slip along twelve
+/// directions d: τ on (τ₁/μ₁)² + (τ₂/μ₂)² = p², parallel to (μ₁²d₁, μ₂²d₂).
+fn f3(rows: &mut Vec<Row>) {
+    let (mu1, mu2) = (0.5, 0.2);
+    let (mut ellipse_err, mut angle_err) = (0.0f64, 0.0f64);
+    for k in 0..12 {
+        let angle = f64::from(k) * std::f64::consts::PI / 6.0 + 0.1;
+        let d = [angle.cos(), angle.sin()];
+        let mut c = FricCall::new(2, &[1.0, mu1, mu2, 0.0, GAMMA_CRIT]);
+        let mut p_prev = 0.0;
+        for _ in 0..60 {
+            step(
+                &mut c,
+                &[0.3 * GAMMA_CRIT * d[0], 0.3 * GAMMA_CRIT * d[1]],
+                P,
+                p_prev,
+            );
+            p_prev = P;
+        }
+        let (t1, t2) = (c.tau[0], c.tau[1]);
+        ellipse_err = ellipse_err.max(((t1 / mu1).hypot(t2 / mu2) - P).abs());
+        let w = [mu1 * mu1 * d[0], mu2 * mu2 * d[1]];
+        angle_err = angle_err.max((t2.atan2(t1) - w[1].atan2(w[0])).abs());
+    }
+    rows.push(Row {
+        scene: "F3",
+        case: "μ₁ = 0.5, μ₂ = 0.2, 12 slip directions".into(),
+        quantity: "max |sqrt((τ₁/μ₁)²+(τ₂/μ₂)²) − p|",
+        exact: 0.0,
+        computed: ellipse_err,
+        tolerance: 1e-12 * P,
+    });
+    rows.push(Row {
+        scene: "F3",
+        case: "μ₁ = 0.5, μ₂ = 0.2, 12 slip directions".into(),
+        quantity: "max angle(τ) − angle(μ_i² d_i)",
+        exact: 0.0,
+        computed: angle_err,
+        tolerance: 1e-12,
+    });
+}
+
+/// F4: velocity steps with the exponential decay law μ(v) = μ_k + (μ_s − μ_k)·exp(−d_c v)
+/// (PROPS(8..10)), once steady τ = μ(v)·p; μ at the end-of-increment rate and frozen.
+fn f4(rows: &mut Vec<Row>) {
+    let (mu_s, mu_k, dc, dt) = (0.6, 0.3, 4.0, 0.01);
+    for frozen in [false, true] {
+        let mut props = vec![0.0; 20];
+        props[..10].copy_from_slice(&[1.0, mu_s, 0.0, 0.0, GAMMA_CRIT, 0.0, 0.0, 1.0, mu_k, dc]);
+        props[19] = if frozen { 1.0 } else { 0.0 };
+        let mut c = FricCall::new(1, &props);
+        c.dtime = dt;
+        let mut p_prev = 0.0;
+        for v in [0.05, 0.5, 0.2, 1.5] {
+            for _ in 0..40 {
+                step(&mut c, &[v * dt], P, p_prev);
+                p_prev = P;
+            }
+            let exact = (mu_k + (mu_s - mu_k) * (-dc * v).exp()) * P;
+            rows.push(Row {
+                scene: "F4",
+                case: format!("decay, v = {v}{}", if frozen { ", μ frozen" } else { "" }),
+                quantity: "steady τ = μ(v)·p",
+                exact,
+                computed: c.tau[0],
+                tolerance: 1e-12 * exact,
+            });
+        }
+    }
+}
+
 /// Thermal scenes' configuration: one interaction per law, written next to the other temporary
 /// files and named by INTERFACIAL_CONFIG before the first gapcon_ call.
 const THERMAL_CONFIG: &str = r#"
@@ -458,6 +529,8 @@ pub fn run() -> Result<Vec<Row>, String> {
     f1(&mut rows);
     f1_exact(&mut rows);
     f2(&mut rows);
+    f3(&mut rows);
+    f4(&mut rows);
     f5(&mut rows);
     t1(&mut rows);
     t2(&mut rows);

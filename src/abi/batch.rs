@@ -121,6 +121,14 @@ pub fn fric_batch(
         Ok(FrictionLaw::Coulomb(law)) => law,
         // The batch kernel is the Coulomb law's; the adhesive law (PROPS(1) = 2) goes through
         // fric_ or uinter_ per point.
+        // Anisotropy, μ laws, damping: the extended law goes through fric_ per point.
+        Ok(FrictionLaw::CoulombExtended(_)) => {
+            lower(pnewdt, CUTBACK_RATIO);
+            return Err(whole(LawError::Parameter(
+                "extended law-1 PROPS (PROPS(3) != PROPS(2) or PROPS(8..20)): the batch entry runs the plain Coulomb law only; call fric_ per point"
+                    .into(),
+            )));
+        }
         Ok(FrictionLaw::Adhesive(_)) => {
             lower(pnewdt, CUTBACK_RATIO);
             return Err(whole(LawError::Parameter(

@@ -7,7 +7,8 @@ use super::{
     write_zeros,
 };
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
-use crate::props::{FrictionLaw, friction_law};
+use crate::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
+use crate::props::{FrictionLaw, extended_coulomb, friction_law, plain_coulomb};
 use crate::report::Site;
 use crate::{CUTBACK_RATIO, LawError};
 
@@ -91,11 +92,39 @@ pub unsafe extern "C" fn fric_(
     slname_len: usize,
     msname_len: usize,
 ) {
-    // Not read by the Coulomb law (see the doc comment for DROT).
-    let _ = (
-        ddpddh, slip, kstep, kinc, time, npatch, coords, rcoord, drot, temp, predef,
-    );
-    let _ = (mcrd, npred, slname, msname, slname_len, msname_len);
+    // Not read by the Coulomb law (DROT and TEMP only by the extended law: docs/props.md).
+    let _ = (ddpddh, slip, kstep, kinc, time, npatch, rcoord, predef);
+    let _ = (npred, slname, msname, slname_len, msname_len);
+    // The plain law (isotropic, constant μ, PROPS(1..7)) is recognised first and takes a path
+    // that never touches the extended law's code, so its cost is what it was before the
+    // extended model existed; everything else (the extended law, bad PROPS) goes out of line.
+    // SAFETY: NPROPS and PROPS as the host passed them; NULL or negative gives None.
+    let Some(law) = (unsafe { plain_props(props, nprops) }) else {
+        // SAFETY: the host's pointers, passed on unchanged.
+        unsafe {
+            fric_general(
+                [
+                    lm.cast::<f64>(),
+                    tau,
+                    ddtddg,
+                    ddtddp,
+                    dslip,
+                    sed,
+                    sfd,
+                    ddtddt,
+                    pnewdt,
+                    statev,
+                ],
+                [
+                    dgam, taulm, press, dpress, dtime, chrlngth, props, temp, drot, coords,
+                ],
+                [nfdir, nstatv, nprops, mcrd, noel, node, npt],
+                ciname,
+                ciname_len,
+            )
+        };
+        return;
+    };
     let args = FricArgs {
         lm,
         tau,
@@ -117,6 +146,99 @@ pub unsafe extern "C" fn fric_(
         chrlngth,
         props,
         nprops,
+        temp: std::ptr::null(),
+        drot: std::ptr::null(),
+        coords: std::ptr::null(),
+        mcrd: std::ptr::null(),
+    };
+    let _ = boundary(
+        // SAFETY (all three closures): the pointers are the host's, valid per the contract above.
+        || unsafe { site(ciname, ciname_len, noel, node, npt) },
+        || unsafe { args.run_plain(&law) },
+        || unsafe { args.fail() },
+    );
+}
+
+/// The plain law-1 `PROPS`, or `None` (also for a NULL or negative NPROPS/PROPS, which the
+/// general path then reports).
+///
+/// # Safety
+/// `nprops` is NULL or readable; `props` is NULL or holds NPROPS reals.
+#[inline(always)]
+unsafe fn plain_props(props: *const f64, nprops: *const c_int) -> Option<Coulomb> {
+    // SAFETY: as documented.
+    unsafe {
+        let n = usize::try_from(read(nprops, "NPROPS").ok()?).ok()?;
+        plain_coulomb(slice(props, n, "PROPS").ok()?)
+    }
+}
+
+/// `fric_` for everything but the plain law: the extended law, and every bad `PROPS` with its
+/// message. Out of line, with the pointers passed as plain values.
+///
+/// # Safety
+/// As `fric_`.
+// `cold` only for code layout and register allocation of the plain path in `fric_`; the
+// extended law is still fast once here (its own fast PROPS parser, docs/benchmarks.md).
+#[cold]
+#[inline(never)]
+unsafe fn fric_general(
+    out: [*mut f64; 10],
+    input: [*const f64; 10],
+    ints: [*const c_int; 7],
+    ciname: *const c_char,
+    ciname_len: usize,
+) {
+    let [
+        lm,
+        tau,
+        ddtddg,
+        ddtddp,
+        dslip,
+        sed,
+        sfd,
+        ddtddt,
+        pnewdt,
+        statev,
+    ] = out;
+    let [
+        dgam,
+        taulm,
+        press,
+        dpress,
+        dtime,
+        chrlngth,
+        props,
+        temp,
+        drot,
+        coords,
+    ] = input;
+    let [nfdir, nstatv, nprops, mcrd, noel, node, npt] = ints;
+    let args = FricArgs {
+        lm: lm.cast::<c_int>(),
+        tau,
+        ddtddg,
+        ddtddp,
+        dslip,
+        sed,
+        sfd,
+        ddtddt,
+        pnewdt,
+        statev,
+        dgam,
+        taulm,
+        press,
+        dpress,
+        dtime,
+        nfdir,
+        nstatv,
+        chrlngth,
+        props,
+        nprops,
+        temp,
+        drot,
+        coords,
+        mcrd,
     };
     let _ = boundary(
         // SAFETY (all three closures): the pointers are the host's, valid per the contract above.
@@ -148,9 +270,37 @@ struct FricArgs {
     chrlngth: *const f64,
     props: *const f64,
     nprops: *const c_int,
+    temp: *const f64,
+    drot: *const f64,
+    coords: *const f64,
+    mcrd: *const c_int,
 }
 
 impl FricArgs {
+    /// The plain law, already read from `PROPS` by [`plain_props`]: the checks of [`Self::run`]
+    /// in the same order, then the NFDIR-specific code.
+    #[inline(always)]
+    unsafe fn run_plain(&self, law: &Coulomb) -> Result<(), LawError> {
+        // SAFETY (whole body): as in `run`.
+        unsafe {
+            let lm_in = read(self.lm, "LM")?;
+            if lm_in == 2 {
+                return Ok(());
+            }
+            let entry = match lm_in {
+                0 => EntryFlag::Motion,
+                1 => EntryFlag::ExactStick,
+                other => return Err(bad_lm(other)),
+            };
+            let nstatv = self.nstatv()?;
+            match read(self.nfdir, "NFDIR")? {
+                1 => self.point::<1>(law, entry, nstatv),
+                2 => self.point::<2>(law, entry, nstatv),
+                other => Err(bad_nfdir(other)),
+            }
+        }
+    }
+
     /// Checks the sizes and the law once, then runs the NFDIR-specific code.
     #[inline(always)]
     unsafe fn run(&self) -> Result<(), LawError> {
@@ -170,21 +320,47 @@ impl FricArgs {
             let Ok(nprops) = usize::try_from(nprops) else {
                 return Err(negative_nprops(nprops));
             };
-            let law = match friction_law(slice(self.props, nprops, "PROPS")?)? {
-                FrictionLaw::Coulomb(law) => law,
-                // (S_a = k_μ = v_½ = 0, μ_s = μ_d comes as the Coulomb law.)
-                FrictionLaw::Adhesive(a) => return self.adhesive(&a.law),
-            };
-            let nstatv = read(self.nstatv, "NSTATV")?;
-            let nstatv = match usize::try_from(nstatv) {
-                Ok(n) if n >= CoulombState::NSTATV => n,
-                _ => return Err(short_nstatv(nstatv)),
-            };
-            match read(self.nfdir, "NFDIR")? {
-                1 => self.point::<1>(&law, entry, nstatv),
-                2 => self.point::<2>(&law, entry, nstatv),
-                other => Err(bad_nfdir(other)),
+            let props = slice(self.props, nprops, "PROPS")?;
+            // The extended law's own fast path (no FrictionLaw built and moved).
+            if let Some(law) = extended_coulomb(props) {
+                let nstatv = self.nstatv()?;
+                return match read(self.nfdir, "NFDIR")? {
+                    1 => self.point_extended::<1>(&law, entry, nstatv),
+                    2 => self.point_extended::<2>(&law, entry, nstatv),
+                    other => Err(bad_nfdir(other)),
+                };
             }
+            match friction_law(props)? {
+                FrictionLaw::Coulomb(law) => {
+                    let nstatv = self.nstatv()?;
+                    match read(self.nfdir, "NFDIR")? {
+                        1 => self.point::<1>(&law, entry, nstatv),
+                        2 => self.point::<2>(&law, entry, nstatv),
+                        other => Err(bad_nfdir(other)),
+                    }
+                }
+                FrictionLaw::CoulombExtended(law) => {
+                    let nstatv = self.nstatv()?;
+                    match read(self.nfdir, "NFDIR")? {
+                        1 => self.point_extended::<1>(&law, entry, nstatv),
+                        2 => self.point_extended::<2>(&law, entry, nstatv),
+                        other => Err(bad_nfdir(other)),
+                    }
+                }
+                // (S_a = k_μ = v_½ = 0, μ_s = μ_d comes as the Coulomb law.)
+                FrictionLaw::Adhesive(a) => self.adhesive(&a.law),
+            }
+        }
+    }
+
+    /// `NSTATV`, at least the Coulomb law's 3.
+    #[inline(always)]
+    unsafe fn nstatv(&self) -> Result<usize, LawError> {
+        // SAFETY: NSTATV is a valid pointer or NULL per the FRIC contract.
+        let nstatv = unsafe { read(self.nstatv, "NSTATV") }?;
+        match usize::try_from(nstatv) {
+            Ok(n) if n >= CoulombState::NSTATV => Ok(n),
+            _ => Err(short_nstatv(nstatv)),
         }
     }
 
@@ -246,7 +422,109 @@ impl FricArgs {
         }
     }
 
-    /// The documented safe outputs of a failed call.
+    /// One contact point with the extended Coulomb law (anisotropy, μ law, HHT, damping).
+    /// Computes everything before writing, like [`Self::point`].
+    unsafe fn point_extended<const N: usize>(
+        &self,
+        law: &ExtendedCoulomb,
+        entry: EntryFlag,
+        nstatv: usize,
+    ) -> Result<(), LawError> {
+        // SAFETY (whole body): arrays of N, N·N, 2N, NSTATV, 2 and 4 entries per the FRIC
+        // contract; STATEV is read only up to the checked NSTATV.
+        unsafe {
+            let needed = law.nstatv(N);
+            if nstatv < needed {
+                return Err(short_nstatv_extended(nstatv, needed));
+            }
+            let inc = Increment::<N> {
+                tau: read_array(self.tau, "TAU")?,
+                dgam: read_array(self.dgam, "DGAM")?,
+                taulm: if entry == EntryFlag::ExactStick {
+                    read_array(self.taulm, "TAULM")?
+                } else {
+                    [0.0; N]
+                },
+                pressure: read(self.press, "PRESS")?,
+                dpressure: read(self.dpress, "DPRESS")?,
+                dtime: read(self.dtime, "DTIME")?,
+                characteristic_length: read(self.chrlngth, "CHRLNGTH")?,
+                entry,
+            };
+            let mut conditions = Conditions::default();
+            if law.reads_temperature() {
+                let [t1, t2] = read_array::<2>(self.temp, "TEMP")?;
+                conditions.temperature = 0.5 * (t1 + t2);
+            }
+            if law.damping().is_some() && N == 2 {
+                // DROT(2,2), column-major: DROT(a,b) at (a-1) + 2(b-1).
+                let r = read_array::<4>(self.drot, "DROT")?;
+                conditions.drot = [[r[0], r[2]], [r[1], r[3]]];
+            }
+            if law.steady_transport().is_some() {
+                // The radius R of γ̇_crit = 2 F_f ω R comes from COORDS(1..MCRD).
+                let mcrd = read(self.mcrd, "MCRD")?;
+                let n = match usize::try_from(mcrd) {
+                    Ok(n) if (1..=3).contains(&n) => n,
+                    _ => return Err(bad_mcrd(mcrd)),
+                };
+                let c = slice(self.coords, n, "COORDS")?;
+                if !c.iter().all(|x| x.is_finite()) {
+                    return Err(LawError::Input("COORDS is NaN or infinite".into()));
+                }
+                conditions.coords[..n].copy_from_slice(c);
+                conditions.ncoords = n;
+            }
+            let statev = slice(self.statev, nstatv, "STATEV")?;
+            let mut state = ExtendedState::<N> {
+                coulomb: CoulombState::from_statev(statev)?,
+                viscous: [0.0; N],
+            };
+            if law.damping().is_some() {
+                state.viscous.copy_from_slice(&statev[3..3 + N]);
+            }
+            let up = law.update(&inc, &conditions, &state)?;
+            let mut end_state = [0.0; CoulombState::NSTATV];
+            up.state.coulomb.write_statev(&mut end_state);
+            write_array(self.statev, &end_state);
+            if law.damping().is_some() {
+                write_array(self.statev.add(3), &up.state.viscous);
+            }
+            match up.contact {
+                Contact::ExactStick => {
+                    write(self.lm, 1);
+                    write_array(self.dslip, &[0.0; N]);
+                    write(self.sed, 0.0);
+                    write(self.sfd, 0.0);
+                }
+                Contact::Motion(t) => {
+                    write(self.lm, 0);
+                    write_array(self.tau, &t.tau);
+                    write_matrix(self.ddtddg, &t.ddtddg);
+                    write_array(self.ddtddp, &t.ddtddp);
+                    write_array(self.dslip, &t.dslip);
+                    write(self.sed, t.sed);
+                    write(self.sfd, t.sfd);
+                    // DDTDDT(a,1) and DDTDDT(a,2): θ̄ = (θ_slave + θ_master)/2, so each
+                    // surface temperature carries half of ∂τ/∂θ̄.
+                    if !self.ddtddt.is_null() {
+                        let half = scale_half(&up.ddtdtheta);
+                        write_array(self.ddtddt, &half);
+                        write_array(self.ddtddt.add(N), &half);
+                    }
+                }
+            }
+            let ratio = up.outcome.step_ratio;
+            if ratio.is_finite() && !self.pnewdt.is_null() && ratio < self.pnewdt.read() {
+                self.pnewdt.write(ratio);
+            }
+            Ok(())
+        }
+    }
+
+    /// The documented safe outputs of a failed call. Inlined, so that no call takes the
+    /// arguments' address (which would keep them in memory on every call).
+    #[inline(always)]
     unsafe fn fail(&self) {
         // SAFETY: as in `run`; arrays are written only when NFDIR is known to be 1 or 2.
         unsafe {
@@ -265,6 +543,7 @@ impl FricArgs {
         }
     }
 
+    #[inline(always)]
     unsafe fn zero_tangents<const N: usize>(&self) {
         // SAFETY: N = NFDIR entries per array, N·N for the matrices, 2N for DDTDDT.
         unsafe {
@@ -295,6 +574,31 @@ fn short_nstatv(nstatv: c_int) -> LawError {
         "NSTATV = {nstatv} but the Coulomb law needs {} state variables (*DEPVAR / the NSTATV \
          of *FRICTION, USER)",
         CoulombState::NSTATV
+    ))
+}
+
+fn scale_half<const N: usize>(v: &[f64; N]) -> [f64; N] {
+    let mut out = *v;
+    for x in &mut out {
+        *x *= 0.5;
+    }
+    out
+}
+
+#[cold]
+#[inline(never)]
+fn bad_mcrd(mcrd: c_int) -> LawError {
+    LawError::Input(format!(
+        "MCRD = {mcrd}; steady-state transport needs the point's coordinates (MCRD 1 to 3)"
+    ))
+}
+
+#[cold]
+#[inline(never)]
+fn short_nstatv_extended(nstatv: usize, needed: usize) -> LawError {
+    LawError::Parameter(format!(
+        "NSTATV = {nstatv} but the Coulomb law with tangential damping needs {needed} (3 + NFDIR: \
+         STATEV(4..) keep the viscous stress)"
     ))
 }
 

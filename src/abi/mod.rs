@@ -12,7 +12,9 @@ use crate::LawError;
 use crate::report::{Site, report};
 
 pub mod batch;
+pub mod forced_sliding;
 pub mod fric;
+pub mod fric_coef;
 pub mod gapcon;
 pub mod host;
 pub mod native;
@@ -20,7 +22,9 @@ pub mod uinter;
 pub mod uinter_host;
 
 pub use batch::{FricBatch, fric_batch, ifl_fric_batch};
+pub use forced_sliding::ifl_forced_sliding;
 pub use fric::fric_;
+pub use fric_coef::fric_coef_;
 pub use gapcon::gapcon_;
 pub use native::{
     IflConductance, IflStatus, ifl_clear_error, ifl_gap_conductance, ifl_last_error,

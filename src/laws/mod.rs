@@ -3,7 +3,10 @@
 pub mod adhesive;
 pub mod adhesive_interface;
 pub mod coulomb;
+pub mod coulomb_extended;
+pub mod friction_coefficient;
 pub mod gap_conductance;
 pub mod gap_radiation;
+pub mod scalar_root;
 mod small_vec;
 pub mod table;

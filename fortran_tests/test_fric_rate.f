@@ -1,0 +1,162 @@
+C=======================================================================
+C     test_fric_rate.f -- scene F4 "velocity steps" for the exponential
+C     decay law through FRIC and FRIC_COEF, called as a legacy
+C     Abaqus/Standard host calls user subroutines: fixed-form Fortran
+C     77, INCLUDE 'ABA_PARAM.INC', CHARACTER*80 names, plain CALLs.
+C     The Fortran twin of c_tests/test_fric_f4.c (rate-law part).
+C
+C     Law (docs/props.md): PROPS(8) = 1, mu_s = PROPS(2),
+C     mu_k = PROPS(9), d_c = PROPS(10):
+C       mu(v) = mu_k + (mu_s - mu_k) exp(-d_c v).
+C     Slip at v = 0.05, 0.5, 0.2, 1.5 with DGAM = v DTIME E; once
+C     steady |tau| = mu(v) p and STATEV(2) = v; FRIC_COEF returns
+C     fCoef(1,1) = mu(v), fCoefDeriv(1,1,1) = -d_c (mu_s-mu_k)
+C     exp(-d_c v).  NFDIR = 1 and 2, elastic and exact stick.
+C
+C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
+C=======================================================================
+      PROGRAM TFRATE
+      INCLUDE 'ABA_PARAM.INC'
+      COMMON /TALLY/ NPASS,NFAIL
+      NPASS = 0
+      NFAIL = 0
+      DO 20 NDIR = 1, 2
+        DO 10 LMODE = 0, 1
+          CALL STEPS(NDIR, LMODE)
+   10   CONTINUE
+   20 CONTINUE
+      WRITE (*,'(I0,A,I0,A)') NPASS, ' passed, ', NFAIL, ' failed'
+      IF (NFAIL .GT. 0) STOP 1
+      END
+
+      SUBROUTINE STEPS(NDIR, LMODE)
+      INCLUDE 'ABA_PARAM.INC'
+      CHARACTER*80 CINAME,SLNAME,MSNAME
+      PARAMETER (MG=4, MSV=6, SENT=-999.25D0, BIG=1.0D36)
+      DIMENSION TAU(MG),DDTDDG(MG*MG),DDTDDP(MG),DSLIP(MG),
+     1 DDTDDT(2*MG),STATEV(MSV),DGAM(MG),TAULM(MG),SLIP(MG),TIME(2),
+     2 COORDS(3),RCOORD(3),DROT(2,2),TEMP(2),PREDEF(2,1),PROPS(20),
+     3 E(2),V(4),FCOEF(1,2),FDERIV(1,20,2),SDATA(1,6),PRS(1),TAVG(1),
+     4 FAVG(1,1),IDATA(6),RDATA(8)
+      DATA V /0.05D0, 0.5D0, 0.2D0, 1.5D0/
+C
+      XMUS = 0.6D0
+      XMUK = 0.3D0
+      DC = 4.0D0
+      P = 50.0D0
+      GC = 1.0D-3
+      DO 5 I = 1, 20
+        PROPS(I) = 0.0D0
+    5 CONTINUE
+      PROPS(1) = 1.0D0
+      PROPS(2) = XMUS
+      PROPS(5) = GC
+      PROPS(7) = DBLE(LMODE)
+      PROPS(8) = 1.0D0
+      PROPS(9) = XMUK
+      PROPS(10) = DC
+      NPROPS = 20
+      NFDIR = NDIR
+      NSTATV = 3
+      E(1) = 1.0D0
+      E(2) = 0.0D0
+      IF (NFDIR .EQ. 2) THEN
+        E(1) = 0.6D0
+        E(2) = 0.8D0
+      END IF
+      DO 6 I = 1, MG
+        TAU(I) = 0.0D0
+        TAULM(I) = 0.0D0
+        SLIP(I) = 0.0D0
+    6 CONTINUE
+      DO 7 I = 1, MSV
+        STATEV(I) = SENT
+    7 CONTINUE
+      STATEV(1) = 0.0D0
+      STATEV(2) = 0.0D0
+      STATEV(3) = 0.0D0
+      DROT(1,1) = 1.0D0
+      DROT(2,1) = 0.0D0
+      DROT(1,2) = 0.0D0
+      DROT(2,2) = 1.0D0
+      TEMP(1) = 20.0D0
+      TEMP(2) = 20.0D0
+      PREDEF(1,1) = 0.0D0
+      PREDEF(2,1) = 0.0D0
+      CINAME = 'F4-RATE'
+      SLNAME = 'SLAVE'
+      MSNAME = 'MASTER'
+      DTIME = 0.01D0
+      TIME(1) = 0.0D0
+      TIME(2) = 0.0D0
+      PRESS = P
+      DPRESS = P
+      DDPDDH = 1.0D6
+      CHRLNGTH = 1.0D0
+      KSTEP = 1
+      KINC = 1
+      NOEL = 0
+      NPT = 1
+      NODE = 1
+      NPATCH = 1
+      MCRD = 3
+      NPRED = 1
+      LM = 0
+C
+      DO 40 IS = 1, 4
+        DO 30 K = 1, 40
+          DO 25 I = 1, NFDIR
+            DGAM(I) = V(IS) * DTIME * E(I)
+   25     CONTINUE
+          PNEWDT = BIG
+          CALL FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,
+     1     STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,KSTEP,KINC,TIME,
+     2     DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,NPATCH,COORDS,
+     3     RCOORD,DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,NSTATV,CHRLNGTH,
+     4     PROPS,NPROPS)
+          CALL CHECK(PNEWDT .EQ. BIG, 'PNEWDT not lowered')
+          CALL CHECK(LM .EQ. 0, 'LM = 0 while sliding')
+          DPRESS = 0.0D0
+   30   CONTINUE
+        TEQ = 0.0D0
+        DO 35 I = 1, NFDIR
+          TEQ = TEQ + TAU(I)**2
+   35   CONTINUE
+        TEQ = SQRT(TEQ)
+        XMU = XMUK + (XMUS - XMUK) * EXP(-DC * V(IS))
+        CALL CHECK(ABS(TEQ - XMU*P) .LE. 1.0D-12*XMU*P,
+     1   'steady |tau| = mu(v) p')
+        CALL CHECK(ABS(STATEV(2) - V(IS)) .LE. 1.0D-12*V(IS),
+     1   'STATEV(2) = v')
+        CALL CHECK(STATEV(4) .EQ. SENT, 'STATEV(4) untouched')
+C       FRIC_COEF for the same rate and pressure.
+        NBLOCK = 1
+        NTEMP = 1
+        NFIELD = 0
+        SDATA(1,1) = V(IS)
+        PRS(1) = P
+        TAVG(1) = 20.0D0
+        CALL FRIC_COEF(FCOEF,FDERIV,NBLOCK,NPROPS,NTEMP,NFIELD,
+     1   IDATA,RDATA,CINAME,SLNAME,MSNAME,PROPS,SDATA,PRS,TAVG,FAVG)
+        CALL CHECK(ABS(FCOEF(1,1) - XMU) .LE. 1.0D-15,
+     1   'FRIC_COEF mu(v)')
+        CALL CHECK(ABS(FCOEF(1,2) - XMU) .LE. 1.0D-15,
+     1   'FRIC_COEF mu2 = mu1 (isotropic)')
+        DMU = -DC * (XMUS - XMUK) * EXP(-DC * V(IS))
+        CALL CHECK(ABS(FDERIV(1,1,1) - DMU) .LE. 1.0D-14,
+     1   'FRIC_COEF d mu/d rate')
+        CALL CHECK(FDERIV(1,2,1) .EQ. 0.0D0, 'd mu/d p = 0')
+   40 CONTINUE
+      END
+
+      SUBROUTINE CHECK(OK, WHAT)
+      LOGICAL OK
+      CHARACTER*(*) WHAT
+      COMMON /TALLY/ NPASS,NFAIL
+      IF (OK) THEN
+        NPASS = NPASS + 1
+      ELSE
+        NFAIL = NFAIL + 1
+        WRITE (*,'(A,A)') 'FAIL: ', WHAT
+      END IF
+      END

@@ -1,0 +1,1291 @@
+//! The complete extended Coulomb model of seed 000 / 003, section 5.2.3, on top of the
+//! isotropic constant-μ law of [`super::coulomb`]:
+//!
+//! - anisotropic friction (μ₁ ≠ μ₂): the problem is solved in the scaled stresses
+//!   τ̄_i = (μ̄/μ_i)·τ_i and scaled slips γ̄_i = (μ_i/μ̄)·γ_i (Eq. 5.2.3-10, 5.2.3-11), where it is
+//!   isotropic with μ̄ = sqrt((μ₁² + μ₂²)/2); τ_max applies to the scaled stresses; the stick
+//!   stiffnesses are k_i = (μ_i/μ̄)²·k̄_s; tangents are scaled back with the same factors;
+//! - μ(γ̇_eq, p, θ̄) ([`super::friction_coefficient`]), with the slip rate taken at the end of
+//!   the increment, γ̇_eq = Δγ_eq^sl/Δt (backward Euler). In elastic stick the stick stiffness is
+//!   the one of the rate-free critical stress, k_s = τ_crit(0, p, θ̄)/γ_crit (the slip rate is
+//!   zero in stick, seed 000 after Eq. 5.2.3-1), so the slip increment s = Δγ_eq^sl solves the
+//!   scalar equation k_s·(γ_eq^pr − s) = τ_crit(s/Δt, p, θ̄), solved by a bracketed Newton (Halley)
+//!   iteration ([`super::scalar_root`]); the consistent tangent is that of Eq. 5.2.3-3 with the
+//!   ∂μ/∂γ̇ term of this formulation. Optionally μ is frozen at its start-of-increment value;
+//! - exact stick with rate-dependent slip (Eq. 5.2.3-7 to 5.2.3-9);
+//! - Hilber-Hughes-Taylor dynamics: the time increment used for rates is β·Δt/γ;
+//! - viscous tangential damping τ_v = c·γ̇ (seed 003), added to the friction stress;
+//! - viscous stick for steady-state transport (seed 000): τ = κ_s·γ̇^v, κ_s = τ_crit/γ̇_crit,
+//!   γ̇_crit = 2·F_f·ω·R, with R the distance of the point from the spinning axis.
+//!
+//! Every increment takes the cheapest exact path: isotropic friction skips the scaling, a μ
+//! that does not depend on the slip rate skips the local solve, NFDIR = 1 is scalar code.
+
+#![allow(clippy::needless_range_loop)] // index loops mirror the i, j of the seed's equations
+
+use super::coulomb::{
+    Contact, Coulomb, CoulombState, EXACT_STICK_TANGENT_FLOOR, EntryFlag, FrictionStatus,
+    Increment, StickMode, Traction,
+};
+use super::friction_coefficient::{CoefficientLaw, Factor};
+use super::scalar_root::{RootFailure, bracketed_newton, halley_on_known_bracket};
+use super::small_vec::{all_finite, dot, norm, scale, unit};
+use crate::{LawError, Outcome};
+
+/// Most iterations the local solve may take before the call asks for a cut-back.
+pub const MAX_LOCAL_ITERATIONS: u32 = 100;
+
+/// Hilber-Hughes-Taylor parameters of the host's time integration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hht {
+    /// α ∈ [−1/2, 0].
+    pub alpha: f64,
+    /// β > 0.
+    pub beta: f64,
+    /// γ > 0.
+    pub gamma: f64,
+}
+
+impl Hht {
+    /// HHT parameters; β = 0 and γ = 0 take Abaqus's relations β = (1 − α)²/4, γ = 1/2 − α.
+    pub fn new(alpha: f64, beta: f64, gamma: f64) -> Result<Self, LawError> {
+        if !(alpha.is_finite() && (-0.5..=0.0).contains(&alpha)) {
+            return Err(LawError::Parameter(format!(
+                "HHT α = {alpha} must be in [−1/2, 0]"
+            )));
+        }
+        let beta = if beta == 0.0 {
+            0.25 * (1.0 - alpha) * (1.0 - alpha)
+        } else {
+            beta
+        };
+        let gamma = if gamma == 0.0 { 0.5 - alpha } else { gamma };
+        if !(beta.is_finite() && beta > 0.0 && gamma.is_finite() && gamma > 0.0) {
+            return Err(LawError::Parameter(format!(
+                "HHT β = {beta} and γ = {gamma} must be finite and > 0"
+            )));
+        }
+        Ok(Hht { alpha, beta, gamma })
+    }
+
+    /// The time increment that turns a displacement increment into a velocity: with Newmark's
+    /// update ∂v/∂u = γ/(β·Δt), so Δt_rate = β·Δt/γ.
+    #[must_use]
+    pub fn rate_increment(&self, dtime: f64) -> f64 {
+        self.beta * dtime / self.gamma
+    }
+}
+
+/// Viscous tangential damping (seed 003): τ_v = c(h)·γ̇ with c = c₀ at zero overclosure.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Damping {
+    /// c₀ > 0: stress per relative tangential velocity at zero overclosure.
+    pub c0: f64,
+    /// g₀ ≥ 0: the clearance at which c vanishes (0: c = c₀ while closed, 0 when open).
+    pub clearance: f64,
+    /// f ∈ [0, 1): the fraction of [0, g₀] over which c = c₀.
+    pub fraction: f64,
+}
+
+impl Damping {
+    /// Validated damping parameters.
+    pub fn new(c0: f64, clearance: f64, fraction: f64) -> Result<Self, LawError> {
+        if !(c0.is_finite() && c0 > 0.0) {
+            return Err(LawError::Parameter(format!(
+                "tangential damping c₀ = {c0} must be finite and > 0"
+            )));
+        }
+        if !(clearance.is_finite() && clearance >= 0.0) {
+            return Err(LawError::Parameter(format!(
+                "damping clearance g₀ = {clearance} must be finite and ≥ 0"
+            )));
+        }
+        if !(fraction.is_finite() && (0.0..1.0).contains(&fraction)) {
+            return Err(LawError::Parameter(format!(
+                "damping clearance fraction f = {fraction} must be in [0, 1)"
+            )));
+        }
+        Ok(Damping {
+            c0,
+            clearance,
+            fraction,
+        })
+    }
+
+    /// c(h) for the overclosure h (positive when the surfaces penetrate, −h is the clearance):
+    /// c₀ for h ≥ −f·g₀, falling linearly to 0 at h = −g₀, 0 beyond (seed 003). `fric_` is
+    /// called for closed points only (h ≥ 0), so it always uses c₀.
+    #[must_use]
+    pub fn coefficient(&self, overclosure: f64) -> f64 {
+        let clearance = -overclosure;
+        let flat = self.fraction * self.clearance;
+        if clearance <= flat {
+            self.c0
+        } else if clearance >= self.clearance {
+            0.0
+        } else {
+            self.c0 * (self.clearance - clearance) / (self.clearance - flat)
+        }
+    }
+}
+
+/// Viscous stick for steady-state transport (seed 000): the allowable viscous slip rate is
+/// γ̇_crit = 2·F_f·ω·R, R the distance of the contact point (`COORDS`) from the spinning axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SteadyTransport {
+    /// F_f > 0, the slip tolerance.
+    pub tolerance: f64,
+    /// ω > 0, the angular spinning velocity.
+    pub omega: f64,
+    /// The spinning axis: the global axis 0 (x), 1 (y) or 2 (z) through the origin.
+    pub axis: usize,
+}
+
+impl SteadyTransport {
+    /// Validated steady-transport parameters.
+    pub fn new(tolerance: f64, omega: f64, axis: usize) -> Result<Self, LawError> {
+        if !(tolerance.is_finite() && tolerance > 0.0) {
+            return Err(LawError::Parameter(format!(
+                "slip tolerance F_f = {tolerance} must be finite and > 0"
+            )));
+        }
+        if !(omega.is_finite() && omega > 0.0) {
+            return Err(LawError::Parameter(format!(
+                "angular velocity ω = {omega} must be finite and > 0 for steady-state transport"
+            )));
+        }
+        if axis > 2 {
+            return Err(LawError::Parameter(format!(
+                "spinning axis {} must be 1 (x), 2 (y) or 3 (z)",
+                axis + 1
+            )));
+        }
+        Ok(SteadyTransport {
+            tolerance,
+            omega,
+            axis,
+        })
+    }
+
+    /// R: the distance of `coords` from the axis (only the first `coords.len()` coordinates).
+    #[must_use]
+    pub fn radius(&self, coords: &[f64]) -> f64 {
+        coords
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| *i != self.axis)
+            .map(|(_, x)| x * x)
+            .sum::<f64>()
+            .sqrt()
+    }
+}
+
+/// The extended Coulomb law. Built from a validated [`Coulomb`] (μ₁, τ_max, γ_crit, stick mode)
+/// with the `with_*` methods.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ExtendedCoulomb {
+    base: Coulomb,
+    mu2: f64,
+    coefficient: CoefficientLaw,
+    frozen: bool,
+    hht: Option<Hht>,
+    damping: Option<Damping>,
+    transport: Option<SteadyTransport>,
+    /// Test hook: take the general path (scaling, local solve) even where a cheaper one is exact.
+    general: bool,
+}
+
+/// The extra inputs the extended law reads.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Conditions {
+    /// Average surface temperature θ̄ = (TEMP(1) + TEMP(2))/2 (read only with a temperature law).
+    pub temperature: f64,
+    /// Rotation increment of the tangent directions, `drot[a][b]` = DROT(a+1, b+1); applied to
+    /// the viscous stress kept in the state.
+    pub drot: [[f64; 2]; 2],
+    /// Coordinates of the contact point (`COORDS`, the first MCRD used); read only in
+    /// steady-state transport, for the radius R.
+    pub coords: [f64; 3],
+    /// How many of `coords` the host gave (MCRD, at most 3).
+    pub ncoords: usize,
+}
+
+impl Default for Conditions {
+    fn default() -> Self {
+        Conditions {
+            temperature: 0.0,
+            drot: [[1.0, 0.0], [0.0, 1.0]],
+            coords: [0.0; 3],
+            ncoords: 0,
+        }
+    }
+}
+
+/// State of the extended law: the Coulomb state plus, with damping, the viscous stress of the
+/// last increment (kept so that the friction part of the incoming `TAU` can be recovered).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ExtendedState<const N: usize> {
+    /// `STATEV(1..3)`.
+    pub coulomb: CoulombState,
+    /// `STATEV(4..3+NFDIR)` with damping: τ_v at the end of the last increment.
+    pub viscous: [f64; N],
+}
+
+impl<const N: usize> Default for ExtendedState<N> {
+    fn default() -> Self {
+        ExtendedState {
+            coulomb: CoulombState::default(),
+            viscous: [0.0; N],
+        }
+    }
+}
+
+/// Result of [`ExtendedCoulomb::update`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ExtendedUpdate<const N: usize> {
+    /// Stress (friction + damping) and tangents, or exact stick.
+    pub contact: Contact<N>,
+    /// ∂τ_a/∂θ̄ (DDTDDT(a,1) = DDTDDT(a,2) = half of it).
+    pub ddtdtheta: [f64; N],
+    /// State at the end of the increment.
+    pub state: ExtendedState<N>,
+    /// Reliability and step ratio.
+    pub outcome: Outcome,
+    /// Iterations of the local solve (0 when none was needed).
+    pub iterations: u32,
+}
+
+/// Forced sliding in static analysis (seed 003): the stress for a prescribed slip velocity and
+/// its linearization split the way complex eigenvalue extraction uses it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ForcedSliding<const N: usize> {
+    /// τ = τ_crit(|v|, p, θ̄)·v/|v| (0 when v = 0).
+    pub tau: [f64; N],
+    /// Damping part, `damping[a][b]` = ∂τ_a/∂v_b: τ_crit/|v|·(δ − nn), from the friction forces
+    /// perpendicular to the slip, plus nn·∂τ_crit/∂γ̇ when μ depends on the slip rate.
+    pub damping: [[f64; N]; N],
+    /// Stiffness part, ∂τ_a/∂p = n_a·∂τ_crit/∂p (the host multiplies by the normal stiffness).
+    pub stiffness_pressure: [f64; N],
+    /// ∂τ_a/∂θ̄.
+    pub temperature: [f64; N],
+}
+
+/// τ_crit(γ̇, p, θ̄) = min(μ̄·p, τ_max) in the scaled variables, with its partials.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+struct Critical {
+    value: f64,
+    d_rate: f64,
+    d_rate2: f64,
+    d_pressure: f64,
+    d_temperature: f64,
+}
+
+/// The isotropic problem in scaled variables, as seen by one increment.
+struct Scaled<const N: usize> {
+    /// Friction stress at the start (scaled).
+    tau: [f64; N],
+    /// Relative motion increment (scaled).
+    dgam: [f64; N],
+    /// Lagrange stress (scaled).
+    taulm: [f64; N],
+}
+
+/// The scaled answer before unscaling.
+struct ScaledTraction<const N: usize> {
+    traction: Traction<N>,
+    ddtdtheta: [f64; N],
+    /// Scaled equivalent slip increment (the s of the μ law).
+    slip_eq: f64,
+    iterations: u32,
+}
+
+impl ExtendedCoulomb {
+    /// The extended law with everything off: behaves exactly as `base`.
+    #[must_use]
+    pub fn new(base: Coulomb) -> Self {
+        ExtendedCoulomb {
+            base,
+            mu2: base.mu(),
+            coefficient: CoefficientLaw::default(),
+            frozen: false,
+            hht: None,
+            damping: None,
+            transport: None,
+            general: false,
+        }
+    }
+
+    /// From parts already validated by the caller (`props.rs`); `mu2` equals μ₁ when isotropic.
+    #[inline]
+    #[must_use]
+    pub(crate) fn from_validated(
+        base: Coulomb,
+        mu2: f64,
+        coefficient: CoefficientLaw,
+        frozen: bool,
+        hht: Option<Hht>,
+        damping: Option<Damping>,
+    ) -> Self {
+        ExtendedCoulomb {
+            base,
+            mu2,
+            coefficient,
+            frozen,
+            hht,
+            damping,
+            transport: None,
+            general: false,
+        }
+    }
+
+    /// Viscous stick for steady-state transport instead of elastic or exact stick.
+    #[must_use]
+    pub fn with_steady_transport(mut self, transport: Option<SteadyTransport>) -> Self {
+        self.transport = transport;
+        self
+    }
+
+    /// The steady-transport parameters, if that mode is on.
+    #[must_use]
+    pub fn steady_transport(&self) -> Option<SteadyTransport> {
+        self.transport
+    }
+
+    /// Anisotropic friction: μ₂ > 0 in direction 2 (μ₁ = the base μ, which must be > 0).
+    pub fn with_second_coefficient(mut self, mu2: f64) -> Result<Self, LawError> {
+        if !(mu2.is_finite() && mu2 > 0.0) {
+            return Err(LawError::Parameter(format!(
+                "μ₂ = {mu2} must be finite and > 0"
+            )));
+        }
+        if mu2 != self.base.mu() && self.base.mu() <= 0.0 {
+            return Err(LawError::Parameter(format!(
+                "anisotropic friction needs μ₁ > 0 as well (μ₁ = {}, μ₂ = {mu2})",
+                self.base.mu()
+            )));
+        }
+        self.mu2 = mu2;
+        Ok(self)
+    }
+
+    /// μ(γ̇, p, θ̄) factors.
+    #[must_use]
+    pub fn with_coefficient_law(mut self, law: CoefficientLaw) -> Self {
+        self.coefficient = law;
+        self
+    }
+
+    /// Freeze μ at its start-of-increment value (explicit in the slip rate).
+    #[must_use]
+    pub fn with_frozen_coefficient(mut self, frozen: bool) -> Self {
+        self.frozen = frozen;
+        self
+    }
+
+    /// Dynamics with HHT time integration.
+    #[must_use]
+    pub fn with_hht(mut self, hht: Option<Hht>) -> Self {
+        self.hht = hht;
+        self
+    }
+
+    /// Viscous tangential damping.
+    #[must_use]
+    pub fn with_damping(mut self, damping: Option<Damping>) -> Self {
+        self.damping = damping;
+        self
+    }
+
+    /// Takes the general path (scaling even when isotropic, the local solve even when μ is
+    /// constant) — for the tests that show the cheap paths agree with it.
+    #[must_use]
+    pub fn with_general_path(mut self) -> Self {
+        self.general = true;
+        self
+    }
+
+    /// The base parameters (μ₁, τ_max, γ_crit, stick mode).
+    #[must_use]
+    pub fn base(&self) -> &Coulomb {
+        &self.base
+    }
+
+    /// μ₂ (equal to μ₁ when isotropic).
+    #[must_use]
+    pub fn mu2(&self) -> f64 {
+        self.mu2
+    }
+
+    /// The μ factors.
+    #[must_use]
+    pub fn coefficient_law(&self) -> &CoefficientLaw {
+        &self.coefficient
+    }
+
+    /// The damping, if any.
+    #[must_use]
+    pub fn damping(&self) -> Option<Damping> {
+        self.damping
+    }
+
+    /// True when the law reads the temperature.
+    #[must_use]
+    pub fn reads_temperature(&self) -> bool {
+        self.coefficient.is_temperature_dependent()
+    }
+
+    /// `STATEV` entries needed for NFDIR = `nfdir`.
+    #[must_use]
+    pub fn nstatv(&self, nfdir: usize) -> usize {
+        CoulombState::NSTATV + if self.damping.is_some() { nfdir } else { 0 }
+    }
+
+    /// True when nothing beyond the base law is switched on.
+    #[must_use]
+    pub fn is_plain(&self) -> bool {
+        self.mu2 == self.base.mu()
+            && self.coefficient.is_constant()
+            && self.damping.is_none()
+            && self.transport.is_none()
+            && !self.general
+    }
+
+    /// μ in directions 1 and 2 and their derivatives with respect to γ̇_eq, p and θ̄ (for
+    /// FRIC_COEF): (μ₁, μ₂, ∂/∂γ̇ of each, ∂/∂p of each, ∂/∂θ̄ of each).
+    #[must_use]
+    pub fn coefficients(&self, rate: f64, pressure: f64, temperature: f64) -> [[f64; 2]; 4] {
+        let f = self.coefficient.factor(rate, pressure, temperature);
+        let (m1, m2) = (self.base.mu(), self.mu2);
+        [
+            [m1 * f.value, m2 * f.value],
+            [m1 * f.d_rate, m2 * f.d_rate],
+            [m1 * f.d_pressure, m2 * f.d_pressure],
+            [m1 * f.d_temperature, m2 * f.d_temperature],
+        ]
+    }
+
+    /// Scaling factors a_i = μ_i/μ̄ and μ̄ (Eq. 5.2.3-10). NFDIR = 1 has direction 1 only: μ₁.
+    fn scaling<const N: usize>(&self) -> ([f64; N], f64) {
+        let m1 = self.base.mu();
+        if N == 1 || (self.mu2 == m1 && !self.general) {
+            return ([1.0; N], m1);
+        }
+        let mbar = (0.5 * (m1 * m1 + self.mu2 * self.mu2)).sqrt();
+        let mut a = [1.0; N];
+        a[0] = m1 / mbar;
+        a[1] = self.mu2 / mbar;
+        (a, mbar)
+    }
+
+    /// τ_crit = min(μ̄·f(γ̇, p, θ̄)·p, τ_max) and its partials; 0 for p < 0.
+    #[inline(always)]
+    fn critical(&self, mbar: f64, rate: f64, p: f64, theta: f64) -> Critical {
+        if p < 0.0 {
+            return Critical::default();
+        }
+        let Factor {
+            value,
+            d_rate,
+            d_rate2,
+            d_pressure,
+            d_temperature,
+        } = self.coefficient.factor(rate, p, theta);
+        let mu = mbar * value;
+        let tau_max = self.base.shear_limit().unwrap_or(f64::INFINITY);
+        if mu * p >= tau_max {
+            Critical {
+                value: tau_max,
+                ..Critical::default()
+            }
+        } else {
+            Critical {
+                value: mu * p,
+                d_rate: mbar * d_rate * p,
+                d_rate2: mbar * d_rate2 * p,
+                d_pressure: mu + mbar * d_pressure * p,
+                d_temperature: mbar * d_temperature * p,
+            }
+        }
+    }
+
+    /// Forced sliding (seed 003): the frictional stress for the prescribed slip velocity `v`
+    /// (independent of the displacements), and its linearization split into the damping part
+    /// (∂τ/∂v) and the stiffness part (∂τ/∂p). With anisotropy the scaled velocity of
+    /// Eq. 5.2.3-11 sets the direction and the rate. A zero velocity gives zero stress and
+    /// zero parts (no direction).
+    pub fn forced_sliding<const N: usize>(
+        &self,
+        velocity: &[f64; N],
+        pressure: f64,
+        temperature: f64,
+    ) -> Result<ForcedSliding<N>, LawError> {
+        if !(all_finite(velocity) && pressure.is_finite() && temperature.is_finite()) {
+            return Err(LawError::Input(
+                "slip velocity, pressure or temperature is NaN or infinite".into(),
+            ));
+        }
+        let (a, mbar) = self.scaling::<N>();
+        let v = multiply(velocity, &a);
+        let speed = norm(&v);
+        let zero = ForcedSliding {
+            tau: [0.0; N],
+            damping: [[0.0; N]; N],
+            stiffness_pressure: [0.0; N],
+            temperature: [0.0; N],
+        };
+        if speed == 0.0 {
+            return Ok(zero);
+        }
+        let n = unit(&v, speed);
+        let rate = if self.frozen { 0.0 } else { speed };
+        let c = self.critical(mbar, rate, pressure, temperature);
+        let d_rate = if self.frozen { 0.0 } else { c.d_rate };
+        let mut out = zero;
+        for i in 0..N {
+            out.tau[i] = a[i] * n[i] * c.value;
+            out.stiffness_pressure[i] = a[i] * n[i] * c.d_pressure;
+            out.temperature[i] = a[i] * n[i] * c.d_temperature;
+            for j in 0..N {
+                let delta = if i == j { 1.0 } else { 0.0 };
+                let proj = if N == 1 { 0.0 } else { delta - n[i] * n[j] };
+                out.damping[i][j] = a[i] * a[j] * (c.value / speed * proj + n[i] * n[j] * d_rate);
+            }
+        }
+        let finite = all_finite(&out.tau)
+            && all_finite(&out.stiffness_pressure)
+            && all_finite(&out.temperature)
+            && out.damping.iter().all(all_finite);
+        if finite {
+            Ok(out)
+        } else {
+            Err(LawError::Numerical("forced sliding overflowed".into()))
+        }
+    }
+
+    /// Integrates one increment.
+    pub fn update<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        conditions: &Conditions,
+        state: &ExtendedState<N>,
+    ) -> Result<ExtendedUpdate<N>, LawError> {
+        if self.is_plain() && self.hht.is_none() {
+            // Cheapest path: the isotropic constant-μ law itself.
+            let up = self.base.update(inc, &state.coulomb)?;
+            return Ok(ExtendedUpdate {
+                contact: up.contact,
+                ddtdtheta: [0.0; N],
+                state: ExtendedState {
+                    coulomb: up.state,
+                    viscous: [0.0; N],
+                },
+                outcome: up.outcome,
+                iterations: 0,
+            });
+        }
+        self.check_inputs(inc, conditions, state)?;
+        let stick = self.base.stick();
+        let rate_dt = self.rate_increment(inc.dtime)?;
+        let theta = conditions.temperature;
+
+        // Friction part of the incoming stress: TAU minus the (rotated) viscous stress.
+        let mut tau_friction = inc.tau;
+        if self.damping.is_some() {
+            let v = rotate(&conditions.drot, &state.viscous);
+            for i in 0..N {
+                tau_friction[i] -= v[i];
+            }
+        }
+        let (a, mbar) = self.scaling::<N>();
+        // Isotropic friction skips the scaling (a = 1).
+        let anisotropic = a.iter().any(|x| *x != 1.0);
+        let scaled = if anisotropic {
+            Scaled {
+                tau: divide(&tau_friction, &a),
+                dgam: multiply(&inc.dgam, &a),
+                taulm: divide(&inc.taulm, &a),
+            }
+        } else {
+            Scaled {
+                tau: tau_friction,
+                dgam: inc.dgam,
+                taulm: inc.taulm,
+            }
+        };
+        let start_rate = state.coulomb.slip_rate;
+
+        let answer = match stick {
+            _ if self.transport.is_some() => Some(
+                self.viscous_stick(inc, &scaled, mbar, theta, rate_dt, start_rate, conditions)?,
+            ),
+            StickMode::Rough => None,
+            StickMode::Elastic => {
+                let gamma_crit = self.base.critical_slip_for(inc.characteristic_length)?;
+                Some(
+                    self.elastic_stick(inc, &scaled, mbar, theta, rate_dt, start_rate, gamma_crit)?,
+                )
+            }
+            StickMode::Exact => {
+                let gamma_crit = self.base.critical_slip_for(inc.characteristic_length)?;
+                self.exact_stick(inc, &scaled, mbar, theta, rate_dt, start_rate, gamma_crit)
+            }
+        };
+
+        let Some(scaled_answer) = answer else {
+            return Ok(ExtendedUpdate {
+                contact: Contact::ExactStick,
+                ddtdtheta: [0.0; N],
+                state: ExtendedState {
+                    coulomb: CoulombState {
+                        accumulated_slip: state.coulomb.accumulated_slip,
+                        slip_rate: 0.0,
+                        status: FrictionStatus::ExactStick,
+                    },
+                    viscous: [0.0; N],
+                },
+                outcome: Outcome::CONVERGED,
+                iterations: 0,
+            });
+        };
+        let ScaledTraction {
+            traction: t,
+            ddtdtheta,
+            slip_eq,
+            iterations,
+        } = scaled_answer;
+        // Back to the actual stresses and slips: τ_i = a_i τ̄_i, Δγ_i^sl = Δγ̄_i^sl/a_i, and the
+        // linearized equations scaled with the same factors.
+        let (mut out, ddtdtheta) = if anisotropic {
+            let mut out = Traction {
+                tau: multiply(&t.tau, &a),
+                ddtddg: t.ddtddg,
+                ddtddp: multiply(&t.ddtddp, &a),
+                dslip: divide(&t.dslip, &a),
+                sed: t.sed,
+                sfd: t.sfd,
+            };
+            for i in 0..N {
+                for j in 0..N {
+                    out.ddtddg[i][j] *= a[i] * a[j];
+                }
+            }
+            (out, multiply(&ddtdtheta, &a))
+        } else {
+            (t, ddtdtheta)
+        };
+        // Viscous damping: τ_v = c γ̇ = c Δγ/Δt_rate, tangent c/Δt_rate (seed 003).
+        let mut viscous = [0.0; N];
+        if let Some(d) = self.damping {
+            let c = d.c0 / rate_dt;
+            viscous = scale(&inc.dgam, c);
+            for i in 0..N {
+                out.tau[i] += viscous[i];
+                out.ddtddg[i][i] += c;
+            }
+            out.sfd += dot(&viscous, &inc.dgam);
+        }
+        check_outputs(&out, &ddtdtheta)?;
+        let slip = norm(&out.dslip);
+        let coulomb = CoulombState {
+            accumulated_slip: state.coulomb.accumulated_slip + slip,
+            slip_rate: if rate_dt > 0.0 {
+                slip_eq / rate_dt
+            } else {
+                0.0
+            },
+            status: if slip > 0.0 {
+                FrictionStatus::Slip
+            } else {
+                FrictionStatus::Stick
+            },
+        };
+        Ok(ExtendedUpdate {
+            contact: Contact::Motion(out),
+            ddtdtheta,
+            state: ExtendedState { coulomb, viscous },
+            outcome: Outcome::CONVERGED,
+            iterations,
+        })
+    }
+
+    /// The time increment used for slip rates: Δt statically, β·Δt/γ with HHT. A rate law
+    /// (not frozen) or damping needs it positive.
+    fn rate_increment(&self, dtime: f64) -> Result<f64, LawError> {
+        let dt = match self.hht {
+            Some(h) => h.rate_increment(dtime),
+            None => dtime,
+        };
+        let needs_rate = (self.coefficient.is_rate_dependent() && !self.frozen)
+            || self.damping.is_some()
+            || self.transport.is_some();
+        if needs_rate && (dt.is_nan() || dt <= 0.0) {
+            return Err(LawError::Input(format!(
+                "DTIME = {dtime} but the friction law needs a slip rate (rate-dependent μ, steady transport or \
+                 tangential damping): DTIME must be > 0"
+            )));
+        }
+        Ok(dt)
+    }
+
+    fn check_inputs<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        conditions: &Conditions,
+        state: &ExtendedState<N>,
+    ) -> Result<(), LawError> {
+        // x·0 is ±0 for finite x and NaN otherwise: one test for every input on the common
+        // path (TAULM, TEMP and DROT are 0/identity when not read); the names only on failure.
+        let mut probe = inc.pressure * 0.0 + inc.dpressure * 0.0 + inc.dtime * 0.0;
+        for i in 0..N {
+            probe += inc.tau[i] * 0.0 + inc.dgam[i] * 0.0 + state.viscous[i] * 0.0;
+        }
+        if self.base.stick() == StickMode::Exact && inc.entry == EntryFlag::ExactStick {
+            for x in &inc.taulm {
+                probe += x * 0.0;
+            }
+        }
+        probe += conditions.temperature * 0.0;
+        for x in conditions.drot.iter().flatten() {
+            probe += x * 0.0;
+        }
+        if probe == 0.0 && state.coulomb.slip_rate >= 0.0 {
+            return Ok(());
+        }
+        self.name_bad_input(inc, conditions, state)
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn name_bad_input<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        conditions: &Conditions,
+        state: &ExtendedState<N>,
+    ) -> Result<(), LawError> {
+        let named = [
+            ("PRESS", inc.pressure.is_finite()),
+            ("DPRESS", inc.dpressure.is_finite()),
+            ("DGAM", all_finite(&inc.dgam)),
+            ("TAU", all_finite(&inc.tau)),
+            (
+                "TAULM",
+                !(self.base.stick() == StickMode::Exact && inc.entry == EntryFlag::ExactStick)
+                    || all_finite(&inc.taulm),
+            ),
+            ("DTIME", inc.dtime.is_finite()),
+            (
+                "TEMP",
+                !self.reads_temperature() || conditions.temperature.is_finite(),
+            ),
+            (
+                "DROT",
+                self.damping.is_none() || conditions.drot.iter().flatten().all(|x| x.is_finite()),
+            ),
+            ("STATEV(4..) (viscous stress)", all_finite(&state.viscous)),
+            (
+                "STATEV(2) (slip rate, must be ≥ 0)",
+                state.coulomb.slip_rate >= 0.0,
+            ),
+        ];
+        match named.iter().find(|(_, ok)| !ok) {
+            None => Ok(()),
+            Some((what, _)) => Err(LawError::Input(format!(
+                "{what} is NaN, infinite or out of range"
+            ))),
+        }
+    }
+
+    /// Elastic stick with the rate-dependent return map, in scaled variables.
+    #[allow(clippy::too_many_arguments)]
+    fn elastic_stick<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        s: &Scaled<N>,
+        mbar: f64,
+        theta: f64,
+        rate_dt: f64,
+        start_rate: f64,
+        gamma_crit: f64,
+    ) -> Result<ScaledTraction<N>, LawError> {
+        let p = inc.pressure;
+        let p0 = inc.pressure - inc.dpressure;
+        // Stick stiffness k̄_s = τ̄_crit(0, p, θ̄)/γ_crit at the end and at the start.
+        let k = self.critical(mbar, 0.0, p, theta);
+        let k0 = self.critical(mbar, 0.0, p0, theta);
+        // γ̄^el = τ̄/k̄_s(p₀); its θ̄-derivative (the start uses the same θ̄: FRIC has no ΔTEMP).
+        let (elastic_start, d_elastic_dtheta) = if k0.value > 0.0 {
+            (
+                scale(&s.tau, gamma_crit / k0.value),
+                scale(
+                    &s.tau,
+                    -gamma_crit * k0.d_temperature / (k0.value * k0.value),
+                ),
+            )
+        } else {
+            ([0.0; N], [0.0; N])
+        };
+        let mut predictor = elastic_start;
+        for i in 0..N {
+            predictor[i] += s.dgam[i];
+        }
+        let g = norm(&predictor);
+        let stiffness = k.value / gamma_crit;
+        let (stiffness_p, stiffness_theta) =
+            (k.d_pressure / gamma_crit, k.d_temperature / gamma_crit);
+        // The critical stress the stick test uses: at zero rate, or frozen at the start rate.
+        let frozen = self.frozen && self.coefficient.is_rate_dependent();
+        let stick_crit = if frozen {
+            self.critical(mbar, start_rate, p, theta)
+        } else {
+            k
+        };
+        if stiffness * g <= stick_crit.value || stiffness <= 0.0 {
+            if stiffness <= 0.0 && g > gamma_crit {
+                // No friction (p ≤ 0): zero stress, all motion beyond γ_crit is slip.
+                let n = unit(&predictor, g);
+                let slip_eq = g - gamma_crit;
+                return Ok(ScaledTraction {
+                    traction: Traction {
+                        tau: [0.0; N],
+                        ddtddg: [[0.0; N]; N],
+                        ddtddp: scale(&n, k.d_pressure),
+                        dslip: scale(&n, slip_eq),
+                        sed: 0.0,
+                        sfd: 0.0,
+                    },
+                    ddtdtheta: [0.0; N],
+                    slip_eq,
+                    iterations: 0,
+                });
+            }
+            // Stick (Eq. 5.2.3-1): τ̄ = k̄_s γ̄^pr.
+            let mut ddtdtheta = scale(&predictor, stiffness_theta);
+            for i in 0..N {
+                ddtdtheta[i] += stiffness * d_elastic_dtheta[i];
+            }
+            return Ok(ScaledTraction {
+                traction: Traction {
+                    tau: scale(&predictor, stiffness),
+                    ddtddg: diag(stiffness),
+                    ddtddp: scale(&predictor, stiffness_p),
+                    dslip: [0.0; N],
+                    sed: 0.5 * stiffness * g * g,
+                    sfd: 0.0,
+                },
+                ddtdtheta,
+                slip_eq: 0.0,
+                iterations: 0,
+            });
+        }
+
+        // Slip: k̄_s (γ̄_eq^pr − s) = τ̄_crit(s/Δt, p, θ̄).
+        let n = unit(&predictor, g);
+        let rate_law = self.coefficient.is_rate_dependent() && !frozen;
+        let (slip_eq, crit, iterations) = if rate_law {
+            // The last evaluation is kept: the solve usually stops at an evaluated point.
+            let mut last = (f64::NAN, Critical::default());
+            // One division per solve, not three per iteration.
+            let per_dt = 1.0 / rate_dt;
+            let residual = |x: f64| {
+                let c = self.critical(mbar, x * per_dt, p, theta);
+                last = (x, c);
+                (
+                    stiffness * (g - x) - c.value,
+                    -stiffness - c.d_rate * per_dt,
+                    -c.d_rate2 * per_dt * per_dt,
+                )
+            };
+            // F(0) = k̄_s γ̄_eq^pr − τ̄_crit(0) > 0 (slip) and F(γ̄_eq^pr) = −τ̄_crit ≤ 0: the
+            // root is bracketed. Start from the slip at the start-of-increment rate (exact in
+            // steady sliding), else from the rate-free answer s = γ̄_eq^pr − γ_crit; stop at the
+            // round-off level of F.
+            let guess = if start_rate > 0.0 {
+                start_rate * rate_dt
+            } else {
+                g - gamma_crit
+            };
+            let root = halley_on_known_bracket(
+                residual,
+                g,
+                0.0,
+                guess,
+                4.0 * f64::EPSILON * g,
+                8.0 * f64::EPSILON * (stiffness * g + k.value),
+                MAX_LOCAL_ITERATIONS,
+            )
+            .map_err(|e| local_solve_failed(e, g, rate_dt))?;
+            let c = if last.0 == root.x {
+                last.1
+            } else {
+                self.critical(mbar, root.x * per_dt, p, theta)
+            };
+            (root.x, c, root.iterations)
+        } else if self.general {
+            // The general path with a rate-free μ: the same solve (converges in one step).
+            let c = stick_crit;
+            let root = bracketed_newton(
+                |x| (stiffness * (g - x) - c.value, -stiffness),
+                0.0,
+                g,
+                g,
+                4.0 * f64::EPSILON * g,
+                MAX_LOCAL_ITERATIONS,
+            )
+            .map_err(|e| local_solve_failed(e, g, rate_dt))?;
+            (root.x, Critical { d_rate: 0.0, ..c }, root.iterations)
+        } else {
+            // Rate-free (constant or frozen μ): s = γ̄_eq^pr − τ̄_crit/k̄_s, explicit.
+            let c = Critical {
+                d_rate: 0.0,
+                ..stick_crit
+            };
+            let s_eq = if frozen {
+                g - c.value / stiffness
+            } else {
+                g - gamma_crit
+            };
+            (s_eq, c, 0)
+        };
+        let t = crit.value;
+        // Rate term per unit slip: ∂τ̄_crit/∂s = (∂τ̄_crit/∂γ̇)/Δt.
+        let t_s = if rate_law { crit.d_rate / rate_dt } else { 0.0 };
+        let d = stiffness + t_s;
+        if d == 0.0 || !d.is_finite() {
+            return Err(LawError::Numerical(format!(
+                "the rate softening of μ (∂τ_crit/∂γ̇/Δt = {t_s}) cancels the stick stiffness \
+                 {stiffness}: the slip increment is not a function of the motion"
+            )));
+        }
+        // Implicit derivatives of s from k̄_s (G − s) = τ̄_crit(s/Δt, p, θ̄).
+        let ds_dg = stiffness / d;
+        let ds_dp = (stiffness_p * (g - slip_eq) - crit.d_pressure) / d;
+        let ds_dtheta = (stiffness_theta * (g - slip_eq) - crit.d_temperature) / d;
+        let transverse = t / g;
+        // Eq. 5.2.3-3 in this formulation: (δ − nn) τ̄_crit/γ̄_eq^pr + nn (∂τ̄_crit/∂s) ∂s/∂G.
+        let mut ddtddg = [[0.0; N]; N];
+        for i in 0..N {
+            for j in 0..N {
+                let delta = if i == j { 1.0 } else { 0.0 };
+                let proj = if N == 1 { 0.0 } else { delta - n[i] * n[j] };
+                ddtddg[i][j] = transverse * proj + n[i] * n[j] * t_s * ds_dg;
+            }
+        }
+        let dtau_dp = t_s * ds_dp + crit.d_pressure;
+        // θ̄: through the start elastic slip v = ∂γ̄^pr/∂θ̄ and through τ̄_crit(·, θ̄).
+        let v = d_elastic_dtheta;
+        let nv = dot(&n, &v);
+        let dt_dtheta = t_s * (ds_dg * nv + ds_dtheta) + crit.d_temperature;
+        let mut ddtdtheta = [0.0; N];
+        for i in 0..N {
+            let proj_v = if N == 1 { 0.0 } else { v[i] - n[i] * nv };
+            ddtdtheta[i] = transverse * proj_v + n[i] * dt_dtheta;
+        }
+        Ok(ScaledTraction {
+            traction: Traction {
+                tau: scale(&n, t),
+                ddtddg,
+                ddtddp: scale(&n, dtau_dp),
+                dslip: scale(&n, slip_eq),
+                // |τ̄|²/(2k̄_s).
+                sed: 0.5 * t * t / stiffness,
+                sfd: t * slip_eq,
+            },
+            ddtdtheta,
+            slip_eq,
+            iterations,
+        })
+    }
+
+    /// Viscous stick for steady-state transport (seed 000), in scaled variables: the predictor
+    /// is the relative velocity γ̇^pr = Δγ̄/Δt; viscous stick τ̄ = κ_s γ̇^pr while
+    /// |γ̇^pr| ≤ γ̇_crit (κ_s = τ̄_crit(0)/γ̇_crit), else slip with |γ̇^v| = γ̇_crit, so the
+    /// slip rate is |γ̇^pr| − γ̇_crit and τ̄ = τ̄_crit(|γ̇^pr| − γ̇_crit)·n. No memory: the stress
+    /// of the start of the increment is not used.
+    #[allow(clippy::too_many_arguments)]
+    fn viscous_stick<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        s: &Scaled<N>,
+        mbar: f64,
+        theta: f64,
+        dt: f64,
+        start_rate: f64,
+        conditions: &Conditions,
+    ) -> Result<ScaledTraction<N>, LawError> {
+        let Some(tr) = self.transport else {
+            return Err(LawError::Numerical(
+                "steady transport not configured".into(),
+            ));
+        };
+        let radius = tr.radius(&conditions.coords[..conditions.ncoords.min(3)]);
+        // γ̇_crit = 2 F_f ω R (seed 000).
+        let rate_crit = 2.0 * tr.tolerance * tr.omega * radius;
+        if !(rate_crit > 0.0 && rate_crit.is_finite()) {
+            return Err(LawError::Input(format!(
+                "COORDS = {:?} is on the spinning axis (R = {radius}): the allowable viscous slip \
+                 rate 2·F_f·ω·R must be > 0",
+                &conditions.coords[..conditions.ncoords.min(3)]
+            )));
+        }
+        let p = inc.pressure;
+        let k = self.critical(mbar, 0.0, p, theta);
+        let viscosity = k.value / rate_crit;
+        let predictor = scale(&s.dgam, 1.0 / dt);
+        let v = norm(&predictor);
+        if v <= rate_crit {
+            // Viscous stick: τ̄ = κ_s γ̇^pr, dτ̄/dΔγ̄ = κ_s/Δt.
+            return Ok(ScaledTraction {
+                traction: Traction {
+                    tau: scale(&predictor, viscosity),
+                    ddtddg: diag(viscosity / dt),
+                    ddtddp: scale(&predictor, k.d_pressure / rate_crit),
+                    dslip: [0.0; N],
+                    sed: 0.0,
+                    sfd: 0.0,
+                },
+                ddtdtheta: scale(&predictor, k.d_temperature / rate_crit),
+                slip_eq: 0.0,
+                iterations: 0,
+            });
+        }
+        let n = unit(&predictor, v);
+        let slip_rate = v - rate_crit;
+        let frozen = self.frozen && self.coefficient.is_rate_dependent();
+        let crit = self.critical(mbar, if frozen { start_rate } else { slip_rate }, p, theta);
+        let t = crit.value;
+        let t_r = if frozen { 0.0 } else { crit.d_rate };
+        let mut ddtddg = [[0.0; N]; N];
+        for i in 0..N {
+            for j in 0..N {
+                let delta = if i == j { 1.0 } else { 0.0 };
+                let proj = if N == 1 { 0.0 } else { delta - n[i] * n[j] };
+                // ∂γ̇^pr/∂Δγ̄ = I/Δt; the slip rate |γ̇^pr| − γ̇_crit moves with n/Δt.
+                ddtddg[i][j] = (t / v * proj + n[i] * n[j] * t_r) / dt;
+            }
+        }
+        let slip_eq = slip_rate * dt;
+        Ok(ScaledTraction {
+            traction: Traction {
+                tau: scale(&n, t),
+                ddtddg,
+                ddtddp: scale(&n, crit.d_pressure),
+                dslip: scale(&n, slip_eq),
+                sed: 0.0,
+                sfd: t * slip_eq,
+            },
+            ddtdtheta: scale(&n, crit.d_temperature),
+            slip_eq,
+            iterations: 0,
+        })
+    }
+
+    /// Exact stick (LM = 1) with rate-dependent slip, Eq. 5.2.3-7 to 5.2.3-9, scaled.
+    #[allow(clippy::too_many_arguments)]
+    fn exact_stick<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        s: &Scaled<N>,
+        mbar: f64,
+        theta: f64,
+        rate_dt: f64,
+        start_rate: f64,
+        gamma_crit: f64,
+    ) -> Option<ScaledTraction<N>> {
+        let p = inc.pressure;
+        let frozen = self.frozen && self.coefficient.is_rate_dependent();
+        let stick_crit = self.critical(mbar, if frozen { start_rate } else { 0.0 }, p, theta);
+        let direction_source = match inc.entry {
+            EntryFlag::ExactStick => {
+                if norm(&s.taulm) <= stick_crit.value {
+                    return None;
+                }
+                s.taulm
+            }
+            EntryFlag::Motion => {
+                // Δγ·τ(t) < 0 is scale-invariant: Σ a_i Δγ_i τ_i/a_i.
+                if dot(&s.dgam, &s.tau) < 0.0 {
+                    return None;
+                }
+                if norm(&s.dgam) > 0.0 { s.dgam } else { s.tau }
+            }
+        };
+        let source_eq = norm(&direction_source);
+        let n = if source_eq > 0.0 {
+            unit(&direction_source, source_eq)
+        } else {
+            [0.0; N]
+        };
+        // All relative motion is slip: s = |Δγ̄|, γ̇ = s/Δt.
+        let slip_eq = norm(&s.dgam);
+        let rate_law = self.coefficient.is_rate_dependent() && !frozen;
+        let crit = if rate_law {
+            self.critical(mbar, slip_eq / rate_dt, p, theta)
+        } else {
+            stick_crit
+        };
+        let t = crit.value;
+        let t_s = if rate_law { crit.d_rate / rate_dt } else { 0.0 };
+        let m = if slip_eq > 0.0 {
+            unit(&s.dgam, slip_eq)
+        } else {
+            [0.0; N]
+        };
+        let floor = EXACT_STICK_TANGENT_FLOOR * gamma_crit;
+        let transverse = t / slip_eq.max(floor);
+        let mut ddtddg = [[0.0; N]; N];
+        for i in 0..N {
+            for j in 0..N {
+                let delta = if i == j { 1.0 } else { 0.0 };
+                let proj = if N == 1 { 0.0 } else { delta - n[i] * n[j] };
+                // Eq. 5.2.3-8: τ_crit/Δγ_eq (δ − nn) + n n (p/Δt) ∂μ/∂γ̇.
+                ddtddg[i][j] = transverse * proj + n[i] * m[j] * t_s;
+            }
+        }
+        let tau = scale(&n, t);
+        Some(ScaledTraction {
+            traction: Traction {
+                tau,
+                ddtddg,
+                ddtddp: scale(&n, crit.d_pressure),
+                dslip: s.dgam,
+                sed: 0.0,
+                sfd: dot(&tau, &s.dgam).max(0.0),
+            },
+            ddtdtheta: scale(&n, crit.d_temperature),
+            slip_eq,
+            iterations: 0,
+        })
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn local_solve_failed(e: RootFailure, g: f64, rate_dt: f64) -> LawError {
+    LawError::Numerical(format!(
+        "the rate-dependent return map did not converge ({e:?}, γ_eq^pr = {g}, Δt = {rate_dt}); \
+         cutting back"
+    ))
+}
+
+fn check_outputs<const N: usize>(t: &Traction<N>, ddtdtheta: &[f64; N]) -> Result<(), LawError> {
+    let ok = t.sed.is_finite()
+        && t.sfd.is_finite()
+        && all_finite(&t.tau)
+        && all_finite(&t.ddtddp)
+        && all_finite(&t.dslip)
+        && all_finite(ddtdtheta)
+        && t.ddtddg.iter().all(all_finite);
+    if ok {
+        Ok(())
+    } else {
+        Err(LawError::Numerical(
+            "the stress update overflowed (inputs too large for f64)".into(),
+        ))
+    }
+}
+
+fn diag<const N: usize>(s: f64) -> [[f64; N]; N] {
+    let mut m = [[0.0; N]; N];
+    for (i, row) in m.iter_mut().enumerate() {
+        row[i] = s;
+    }
+    m
+}
+
+fn multiply<const N: usize>(v: &[f64; N], a: &[f64; N]) -> [f64; N] {
+    let mut out = *v;
+    for i in 0..N {
+        out[i] *= a[i];
+    }
+    out
+}
+
+fn divide<const N: usize>(v: &[f64; N], a: &[f64; N]) -> [f64; N] {
+    let mut out = *v;
+    for i in 0..N {
+        out[i] /= a[i];
+    }
+    out
+}
+
+/// `DROT`·v in 3-D; the identity in 2-D (NFDIR = 1).
+fn rotate<const N: usize>(drot: &[[f64; 2]; 2], v: &[f64; N]) -> [f64; N] {
+    if N != 2 {
+        return *v;
+    }
+    let mut out = [0.0; N];
+    for i in 0..2 {
+        out[i] = drot[i][0] * v[0] + drot[i][1] * v[1];
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn base() -> Coulomb {
+        Coulomb::new(0.4)
+            .and_then(|c| c.with_critical_slip_absolute(1e-3))
+            .unwrap()
+    }
+
+    fn traction<const N: usize>(u: &ExtendedUpdate<N>) -> Traction<N> {
+        match u.contact {
+            Contact::Motion(t) => t,
+            Contact::ExactStick => panic!("expected motion"),
+        }
+    }
+
+    #[test]
+    fn anisotropic_stick_stiffnesses() {
+        // μ₁ = 0.4, μ₂ = 0.2: μ̄² = 0.1, k_i = (μ_i/μ̄)² μ̄ p/γ_crit.
+        let law = ExtendedCoulomb::new(base())
+            .with_second_coefficient(0.2)
+            .unwrap();
+        let inc = Increment::<2> {
+            dgam: [1e-5, 1e-5],
+            pressure: 100.0,
+            dpressure: 100.0,
+            ..Increment::default()
+        };
+        let u = law
+            .update(&inc, &Conditions::default(), &ExtendedState::default())
+            .unwrap();
+        let t = traction(&u);
+        let mbar = 0.1f64.sqrt();
+        let kbar = mbar * 100.0 / 1e-3;
+        let k1 = 0.16 / 0.1 * kbar;
+        let k2 = 0.04 / 0.1 * kbar;
+        assert!((t.ddtddg[0][0] - k1).abs() < 1e-9 * k1);
+        assert!((t.ddtddg[1][1] - k2).abs() < 1e-9 * k1);
+        assert!((t.tau[0] - k1 * 1e-5).abs() < 1e-9);
+    }
+
+    #[test]
+    fn decay_law_steady_slip_gives_mu_of_rate() {
+        let law = ExtendedCoulomb::new(base()).with_coefficient_law(
+            CoefficientLaw::default()
+                .with_exponential_decay(0.5, 3.0)
+                .unwrap(),
+        );
+        // Steady slip at v = 0.2 (Δγ = 0.02 per Δt = 0.1), from a steady start.
+        let mut st = ExtendedState::<1>::default();
+        let mut tau = [0.0];
+        for _ in 0..20 {
+            let inc = Increment::<1> {
+                tau,
+                dgam: [0.02],
+                pressure: 10.0,
+                dpressure: 0.0,
+                dtime: 0.1,
+                ..Increment::default()
+            };
+            let u = law.update(&inc, &Conditions::default(), &st).unwrap();
+            tau = traction(&u).tau;
+            st = u.state;
+        }
+        let mu = 0.2 + 0.2 * (-3.0f64 * 0.2).exp();
+        assert!((tau[0] - mu * 10.0).abs() < 1e-12 * mu * 10.0, "{tau:?}");
+    }
+}

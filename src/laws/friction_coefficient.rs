@@ -1,0 +1,260 @@
+//! The friction coefficient μ(γ̇_eq, p, θ̄) of the extended Coulomb model (seed 000, section
+//! 5.2.3: "μ … can be defined as a function of the contact pressure, the slip rate, the average
+//! surface temperature"), with its partial derivatives.
+//!
+//! μ is a product of a reference value and three dimensionless factors, each 1 when its feature
+//! is off:
+//!
+//! μ(γ̇, p, θ̄) = μ_s · φ(γ̇) · π(p) · Θ(θ̄)
+//!
+//! - φ, slip rate: exponential decay μ = μ_k + (μ_s − μ_k)·exp(−d_c·γ̇) (the form of Abaqus's
+//!   `*FRICTION, EXPONENTIAL DECAY`), i.e. φ = r + (1 − r)·exp(−d_c·γ̇) with r = μ_k/μ_s;
+//! - π, pressure: π = 1/(1 + p/p_ref), a friction coefficient that falls as the pressure rises,
+//!   so that μp saturates smoothly at μ_s·p_ref (a smooth counterpart of τ_max);
+//! - Θ, temperature: Θ = exp(−b_θ·(θ̄ − θ_ref)), softening (b_θ > 0) or hardening (b_θ < 0).
+//!
+//! With anisotropy every direction's coefficient is multiplied by the same factors, so the
+//! ratio μ₁/μ₂ (and with it the scaling of Eq. 5.2.3-10/11) is constant.
+
+use crate::LawError;
+
+/// How μ depends on the equivalent slip rate γ̇_eq.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum RateLaw {
+    /// μ does not depend on the slip rate.
+    Constant,
+    /// μ = μ_k + (μ_s − μ_k)·exp(−d_c·γ̇_eq), stored as r = μ_k/μ_s and d_c.
+    ExponentialDecay {
+        /// r = μ_k/μ_s (kinetic over static coefficient), ≥ 0.
+        kinetic_ratio: f64,
+        /// d_c > 0 (time per length).
+        decay: f64,
+    },
+}
+
+/// The dimensionless factor f = φ(γ̇)·π(p)·Θ(θ̄) of μ and its partial derivatives.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Factor {
+    /// f.
+    pub value: f64,
+    /// ∂f/∂γ̇_eq.
+    pub d_rate: f64,
+    /// ∂²f/∂γ̇_eq² (used by the local solve's Halley step).
+    pub d_rate2: f64,
+    /// ∂f/∂p.
+    pub d_pressure: f64,
+    /// ∂f/∂θ̄.
+    pub d_temperature: f64,
+}
+
+/// The validated factor laws (everything except the reference coefficients).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CoefficientLaw {
+    rate: RateLaw,
+    /// p_ref > 0, or `f64::INFINITY` when μ does not depend on pressure.
+    pressure_ref: f64,
+    /// b_θ (0 when μ does not depend on temperature).
+    temperature_slope: f64,
+    /// θ_ref.
+    temperature_ref: f64,
+}
+
+impl Default for CoefficientLaw {
+    fn default() -> Self {
+        CoefficientLaw {
+            rate: RateLaw::Constant,
+            pressure_ref: f64::INFINITY,
+            temperature_slope: 0.0,
+            temperature_ref: 0.0,
+        }
+    }
+}
+
+impl CoefficientLaw {
+    /// From `PROPS` entries already checked by the caller (`props.rs`): the decay law when
+    /// `decay` is `Some((μ_k/μ_s ≥ 0, d_c > 0))`, p_ref > 0 or 0 (off), b_θ and θ_ref finite.
+    #[inline]
+    #[must_use]
+    pub(crate) fn from_validated(
+        decay: Option<(f64, f64)>,
+        pressure_ref: f64,
+        temperature_slope: f64,
+        temperature_ref: f64,
+    ) -> Self {
+        CoefficientLaw {
+            rate: match decay {
+                Some((kinetic_ratio, decay)) => RateLaw::ExponentialDecay {
+                    kinetic_ratio,
+                    decay,
+                },
+                None => RateLaw::Constant,
+            },
+            pressure_ref: if pressure_ref > 0.0 {
+                pressure_ref
+            } else {
+                f64::INFINITY
+            },
+            temperature_slope,
+            temperature_ref: if temperature_slope != 0.0 {
+                temperature_ref
+            } else {
+                0.0
+            },
+        }
+    }
+
+    /// Exponential decay with r = μ_k/μ_s ≥ 0 and d_c > 0.
+    pub fn with_exponential_decay(
+        mut self,
+        kinetic_ratio: f64,
+        decay: f64,
+    ) -> Result<Self, LawError> {
+        if !(kinetic_ratio.is_finite() && kinetic_ratio >= 0.0) {
+            return Err(LawError::Parameter(format!(
+                "kinetic coefficient ratio μ_k/μ_s = {kinetic_ratio} must be finite and ≥ 0"
+            )));
+        }
+        if !(decay.is_finite() && decay > 0.0) {
+            return Err(LawError::Parameter(format!(
+                "decay coefficient d_c = {decay} must be finite and > 0"
+            )));
+        }
+        self.rate = RateLaw::ExponentialDecay {
+            kinetic_ratio,
+            decay,
+        };
+        Ok(self)
+    }
+
+    /// Pressure dependence π = 1/(1 + p/p_ref), p_ref > 0.
+    pub fn with_pressure_reference(mut self, p_ref: f64) -> Result<Self, LawError> {
+        if !(p_ref.is_finite() && p_ref > 0.0) {
+            return Err(LawError::Parameter(format!(
+                "reference pressure p_ref = {p_ref} must be finite and > 0"
+            )));
+        }
+        self.pressure_ref = p_ref;
+        Ok(self)
+    }
+
+    /// Temperature dependence Θ = exp(−b_θ·(θ̄ − θ_ref)).
+    pub fn with_temperature(mut self, slope: f64, reference: f64) -> Result<Self, LawError> {
+        if !(slope.is_finite() && reference.is_finite()) {
+            return Err(LawError::Parameter(format!(
+                "temperature coefficients b_θ = {slope}, θ_ref = {reference} must be finite"
+            )));
+        }
+        self.temperature_slope = slope;
+        self.temperature_ref = reference;
+        Ok(self)
+    }
+
+    /// The rate law.
+    #[must_use]
+    pub fn rate(&self) -> RateLaw {
+        self.rate
+    }
+
+    /// True when μ depends on the slip rate.
+    #[must_use]
+    pub fn is_rate_dependent(&self) -> bool {
+        self.rate != RateLaw::Constant
+    }
+
+    /// True when μ depends on the temperature (TEMP is read).
+    #[must_use]
+    pub fn is_temperature_dependent(&self) -> bool {
+        self.temperature_slope != 0.0
+    }
+
+    /// True when every factor is 1 (μ is the constant reference value).
+    #[must_use]
+    pub fn is_constant(&self) -> bool {
+        *self == CoefficientLaw::default()
+    }
+
+    /// f(γ̇, p, θ̄) and its partials. `rate` is the equivalent slip rate (≥ 0), `pressure` the
+    /// contact pressure (≥ 0; the caller handles p < 0), `temperature` θ̄ (ignored when the law
+    /// does not depend on it). The result may overflow for extreme temperatures; the caller
+    /// checks its outputs.
+    #[inline]
+    #[must_use]
+    pub fn factor(&self, rate: f64, pressure: f64, temperature: f64) -> Factor {
+        // φ(γ̇) = r + (1 − r)·exp(−d_c γ̇), φ' = −d_c (1 − r) exp(−d_c γ̇).
+        let (phi, dphi, ddphi) = match self.rate {
+            RateLaw::Constant => (1.0, 0.0, 0.0),
+            RateLaw::ExponentialDecay {
+                kinetic_ratio: r,
+                decay: d,
+            } => {
+                // exp(−0) = 1 exactly: the rate-free value (stick stiffness) needs no exp.
+                let e = if rate > 0.0 { (-d * rate).exp() } else { 1.0 };
+                (r + (1.0 - r) * e, -d * (1.0 - r) * e, d * d * (1.0 - r) * e)
+            }
+        };
+        // π(p) = 1/(1 + p/p_ref), π' = −(1/p_ref) π².
+        let (pi, dpi) = if self.pressure_ref.is_finite() {
+            let pi = 1.0 / (1.0 + pressure / self.pressure_ref);
+            (pi, -pi * pi / self.pressure_ref)
+        } else {
+            (1.0, 0.0)
+        };
+        // Θ(θ̄) = exp(−b_θ (θ̄ − θ_ref)), Θ' = −b_θ Θ.
+        let (theta, dtheta) = if self.temperature_slope != 0.0 {
+            let t = (-self.temperature_slope * (temperature - self.temperature_ref)).exp();
+            (t, -self.temperature_slope * t)
+        } else {
+            (1.0, 0.0)
+        };
+        Factor {
+            value: phi * pi * theta,
+            d_rate: dphi * pi * theta,
+            d_rate2: ddphi * pi * theta,
+            d_pressure: phi * dpi * theta,
+            d_temperature: phi * pi * dtheta,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decay_limits_and_derivatives() {
+        let law = CoefficientLaw::default()
+            .with_exponential_decay(0.5, 2.0)
+            .unwrap();
+        assert_eq!(law.factor(0.0, 1.0, 0.0).value, 1.0);
+        assert!((law.factor(1e3, 1.0, 0.0).value - 0.5).abs() < 1e-15);
+        // μ(γ̇) = μ_k + (μ_s − μ_k) e^{−d γ̇}: at γ̇ = ln 2/2, halfway.
+        let f = law.factor(std::f64::consts::LN_2 / 2.0, 1.0, 0.0);
+        assert!((f.value - 0.75).abs() < 1e-15);
+        assert!((f.d_rate - (-2.0 * 0.5 * 0.5)).abs() < 1e-15);
+    }
+
+    #[test]
+    fn pressure_and_temperature_factors() {
+        let law = CoefficientLaw::default()
+            .with_pressure_reference(100.0)
+            .unwrap()
+            .with_temperature(0.01, 20.0)
+            .unwrap();
+        let f = law.factor(0.0, 100.0, 20.0);
+        assert!((f.value - 0.5).abs() < 1e-15);
+        assert!((f.d_pressure + 0.25 / 100.0).abs() < 1e-18);
+        assert!((f.d_temperature + 0.01 * 0.5).abs() < 1e-16);
+        let g = law.factor(0.0, 0.0, 120.0);
+        assert!((g.value - (-1.0f64).exp()).abs() < 1e-15);
+    }
+
+    #[test]
+    fn bad_parameters() {
+        let l = CoefficientLaw::default();
+        assert!(l.with_exponential_decay(-0.1, 1.0).is_err());
+        assert!(l.with_exponential_decay(0.5, -1.0).is_err());
+        assert!(l.with_exponential_decay(0.5, 0.0).is_err());
+        assert!(l.with_pressure_reference(-1.0).is_err());
+        assert!(l.with_temperature(f64::NAN, 0.0).is_err());
+    }
+}
