@@ -352,9 +352,20 @@ impl FricCase {
         Ok(())
     }
 
-    /// |τ| ≤ τ_crit = min(μp, τ_max) (0 for p < 0), and |τ| = τ_crit while slipping.
+    /// |τ| ≤ τ_crit = min(μp, τ_max) (0 for p < 0), and |τ| = τ_crit while slipping, for the
+    /// plain law 1; the adhesive law (`PROPS(1) = 2`) against its own strength. The extended
+    /// law 1 (anisotropy, μ laws, damping: `PROPS(3)` ≠ 0, μ or any of `PROPS(8..)`) has a bound
+    /// that depends on the rate, the temperature and the damping state; its cone is checked in
+    /// `tests/friction_extended.rs`, here only the common properties.
     fn check_cone(&self, out: &FricOutputs) -> Result<(), String> {
         let get = |i: usize| self.props.get(i).copied().unwrap_or(0.0);
+        if get(0) == 2.0 {
+            return self.check_adhesive_strength(out);
+        }
+        let anisotropic = get(2) != 0.0 && get(2) != get(1);
+        if anisotropic || self.props.iter().skip(7).any(|x| *x != 0.0) {
+            return Ok(());
+        }
         let (mu, tau_max) = (get(1), get(3));
         let tau_max = if tau_max > 0.0 {
             tau_max
@@ -379,6 +390,22 @@ impl FricCase {
         if elastic && slipping && magnitude < tau_crit - tol && tau_crit >= f64::MIN_POSITIVE {
             return Err(format!(
                 "slipping with |TAU| = {magnitude:e} below τ_crit = {tau_crit:e}: {out:?}"
+            ));
+        }
+        Ok(())
+    }
+
+    /// Seed 004: |τ| ≤ (max(μ_s, μ_d) + k_μ·Δv)·p⁺ + S_a, Δv the slip rate the call reports in
+    /// `STATEV(2)` (the sliding stress at any rate, and the static strength in stick).
+    fn check_adhesive_strength(&self, out: &FricOutputs) -> Result<(), String> {
+        let get = |i: usize| self.props.get(i).copied().unwrap_or(0.0);
+        let (mu_d, mu_s, s_a, k_mu) = (get(1), get(2), get(3), get(5));
+        let p_plus = self.press.max(0.0);
+        let strength = (mu_d.max(mu_s) + k_mu * out.statev[1]) * p_plus + s_a;
+        let magnitude = out.tau.iter().fold(0.0f64, |s, x| s.hypot(*x));
+        if magnitude > strength * (1.0 + 1e-12) + 1e-321 {
+            return Err(format!(
+                "adhesive law: |TAU| = {magnitude:e} above its strength {strength:e}: {out:?}"
             ));
         }
         Ok(())
