@@ -194,3 +194,28 @@ fn crash_3_replays_clean() {
         out.tau[0]
     );
 }
+
+/// Crash 4 (fuzz target `fric`, on the merged extended law): anisotropic law 1 (μ₂ ≠ μ in
+/// PROPS(3)) slipping over DTIME = f64::MIN_POSITIVE stored STATEV(2) = ∞. The extended law
+/// now saturates its slip rate and accumulated slip at f64::MAX like the plain law.
+const CRASH_EXTENDED_SLIP_RATE: [u8; 96] = [
+    176, 42, 49, 14, 0, 0, 0, 70, 82, 4, 0, 31, 31, 98, 97, 100, 32, 112, 97, 114, 97, 109, 101,
+    116, 101, 114, 58, 32, 80, 82, 79, 80, 83, 40, 50, 41, 58, 32, 102, 114, 105, 99, 116, 105,
+    255, 255, 255, 255, 111, 99, 111, 32, 110, 101, 102, 102, 105, 99, 105, 101, 110, 116, 32, 206,
+    188, 32, 61, 32, 45, 48, 46, 48, 48, 48, 48, 43, 10, 49, 43, 14, 10, 4, 7, 14, 10, 12, 36, 42,
+    49, 0, 10, 12, 36, 42, 49, 17,
+];
+
+#[test]
+fn crash_4_replays_clean() {
+    let case = FricCase::decode(&CRASH_EXTENDED_SLIP_RATE);
+    assert_eq!(
+        (case.nfdir, case.dtime),
+        (2, f64::MIN_POSITIVE),
+        "the decoder changed: {case:?}"
+    );
+    assert!(case.props[2] != 0.0 && case.props[2] != case.props[1]);
+    let out = checked(&case);
+    succeeded(&case, &out);
+    assert_eq!(out.statev[1], f64::MAX);
+}

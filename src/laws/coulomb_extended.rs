@@ -687,9 +687,11 @@ impl ExtendedCoulomb {
         check_outputs(&out, &ddtdtheta)?;
         let slip = norm(&out.dslip);
         let coulomb = CoulombState {
-            accumulated_slip: state.coulomb.accumulated_slip + slip,
+            // Saturated at f64::MAX, as in the plain law: a finite slip over a subnormal DTIME
+            // must not store ∞ in STATEV (fuzz crash 4).
+            accumulated_slip: (state.coulomb.accumulated_slip + slip).min(f64::MAX),
             slip_rate: if rate_dt > 0.0 {
-                slip_eq / rate_dt
+                (slip_eq / rate_dt).min(f64::MAX)
             } else {
                 0.0
             },
