@@ -219,3 +219,21 @@ fn crash_4_replays_clean() {
     succeeded(&case, &out);
     assert_eq!(out.statev[1], f64::MAX);
 }
+
+/// Crash 5 (fuzz target `fric`): the adhesive law (PROPS(1) = 2) slipping over
+/// DTIME = 5·10⁻³²⁴ from an accumulated slip of f64::MAX stored ∞ in STATEV(1..2); it now
+/// saturates at f64::MAX like the Coulomb laws.
+const CRASH_ADHESIVE_SLIP_RATE: [u8; 65] = [
+    17, 100, 100, 226, 30, 215, 59, 10, 10, 10, 0, 30, 30, 30, 30, 50, 30, 100, 104, 100, 100, 100,
+    100, 100, 255, 100, 255, 5, 5, 5, 5, 5, 5, 5, 5, 5, 100, 255, 255, 100, 0, 43, 90, 90, 90, 3,
+    0, 0, 0, 0, 0, 0, 0, 90, 6, 0, 90, 90, 90, 90, 90, 42, 255, 100, 10,
+];
+
+#[test]
+fn crash_5_replays_clean() {
+    let case = FricCase::decode(&CRASH_ADHESIVE_SLIP_RATE);
+    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
+    let out = checked(&case);
+    succeeded(&case, &out);
+    assert_eq!((out.statev[0], out.statev[1]), (f64::MAX, f64::MAX));
+}

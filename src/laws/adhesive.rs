@@ -423,7 +423,12 @@ impl Adhesive {
                 sfd: tau_eq * slip_eq,
             },
             branch: SlideBranch::Slip,
-            slip_rate: if dtime > 0.0 { slip_eq / dtime } else { 0.0 },
+            // Saturated at f64::MAX: a finite slip over a subnormal DTIME must not give ∞.
+            slip_rate: if dtime > 0.0 {
+                (slip_eq / dtime).min(f64::MAX)
+            } else {
+                0.0
+            },
             stick_stiffness: k_s,
         }
     }
@@ -454,7 +459,7 @@ impl Adhesive {
             None => ([0.0; N], [0.0; N], SlideBranch::Stick),
         };
         let slip_rate = if dtime > 0.0 && branch == SlideBranch::Slip {
-            norm(&dslip) / dtime
+            (norm(&dslip) / dtime).min(f64::MAX)
         } else {
             0.0
         };
@@ -501,7 +506,7 @@ impl Adhesive {
         Ok(Update {
             contact: super::coulomb::Contact::Motion(s.traction),
             state: CoulombState {
-                accumulated_slip: state.accumulated_slip + slip,
+                accumulated_slip: (state.accumulated_slip + slip).min(f64::MAX),
                 slip_rate: s.slip_rate,
                 status: match s.branch {
                     SlideBranch::Slip => FrictionStatus::Slip,
