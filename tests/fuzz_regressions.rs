@@ -237,3 +237,30 @@ fn crash_5_replays_clean() {
     succeeded(&case, &out);
     assert_eq!((out.statev[0], out.statev[1]), (f64::MAX, f64::MAX));
 }
+
+/// Crash 6 (fuzz target `fric`): the adhesive law with μ_d = 0, k_μ = 2, p = Δt = f64::MAX.
+/// k_μ/Δt·Δs was subnormal (seven digits lost) before the multiplication by p, so τ came out
+/// 6·10⁻⁸ (relative) above the seed's k_μ·Δv·p + S_a. Now evaluated as (k_μ/Δt·p)·Δs.
+const CRASH_ADHESIVE_SUBNORMAL_RATE: [u8; 114] = [
+    17, 100, 100, 226, 30, 215, 59, 10, 10, 10, 0, 65, 30, 30, 30, 30, 50, 30, 100, 30, 215, 59,
+    10, 10, 10, 0, 65, 30, 30, 30, 30, 50, 30, 100, 104, 100, 100, 100, 100, 100, 255, 68, 255, 5,
+    5, 5, 5, 5, 5, 5, 5, 5, 100, 255, 255, 100, 0, 43, 90, 90, 90, 3, 0, 0, 0, 0, 0, 0, 90, 90, 42,
+    255, 100, 10, 104, 100, 100, 100, 100, 100, 255, 68, 255, 5, 5, 5, 5, 5, 5, 5, 5, 5, 100, 255,
+    255, 100, 0, 43, 90, 90, 90, 3, 0, 0, 0, 0, 0, 0, 90, 90, 42, 255, 100, 10,
+];
+
+#[test]
+fn crash_6_replays_clean() {
+    let case = FricCase::decode(&CRASH_ADHESIVE_SUBNORMAL_RATE);
+    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
+    let out = checked(&case);
+    succeeded(&case, &out);
+    // Seed 004 with μ_s = μ_d = 0: τ = k_μ·(Δs/Δt)·p + S_a.
+    let (s_a, k_mu) = (case.props[3], case.props[5]);
+    let expected = k_mu * out.dslip[0].abs() * (case.press / case.dtime) + s_a;
+    assert!(
+        close(out.tau[0].abs(), expected, 1e-13),
+        "{} vs {expected}",
+        out.tau[0]
+    );
+}

@@ -401,7 +401,21 @@ impl FricCase {
         let get = |i: usize| self.props.get(i).copied().unwrap_or(0.0);
         let (mu_d, mu_s, s_a, k_mu) = (get(1), get(2), get(3), get(5));
         let p_plus = self.press.max(0.0);
-        let strength = (mu_d.max(mu_s) + k_mu * out.statev[1]) * p_plus + s_a;
+        // The rate term from STATEV(2), and again from |DSLIP|·(p/Δt): STATEV(2) can be
+        // subnormal (few significant bits) while the law's own k_μ/Δt is not.
+        let via_state = k_mu * out.statev[1] * p_plus;
+        let slip = out.dslip.iter().fold(0.0f64, |s, x| s.hypot(*x));
+        let via_slip = if self.dtime > 0.0 && !out.dslip.contains(&UNWRITTEN) {
+            k_mu * slip * (p_plus / self.dtime)
+        } else {
+            0.0
+        };
+        let rate_term = if via_slip.is_finite() {
+            via_state.max(via_slip)
+        } else {
+            via_state
+        };
+        let strength = mu_d.max(mu_s) * p_plus + rate_term + s_a;
         let magnitude = out.tau.iter().fold(0.0f64, |s, x| s.hypot(*x));
         if magnitude > strength * (1.0 + 1e-12) + 1e-321 {
             return Err(format!(

@@ -385,8 +385,11 @@ impl Adhesive {
         };
         // τ = g(Δs, p) at the root, evaluated from the law rather than as T − k_s·Δs: when the
         // predictor is far outside the cone the difference cancels and loses every digit.
+        // (K·p⁺)·Δs rather than (K·Δs)·p⁺: K = k_μ/Δt times a small Δs can be subnormal.
         let tau_eq = if denom > 0.0 {
-            g_p * p_plus + self.shear_adhesion
+            (mu_s * length_half + mu_d * slip_eq) / denom * p_plus
+                + (k_per_length * p_plus) * slip_eq
+                + self.shear_adhesion
         } else {
             trial - k_s * slip_eq
         };
