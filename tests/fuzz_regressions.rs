@@ -6,6 +6,9 @@
 //! cases below do not depend on the byte encoding and stay meaningful if it changes.
 
 #[allow(dead_code)]
+#[path = "../fuzz/src/batch_case.rs"]
+mod batch_case;
+#[allow(dead_code)]
 #[path = "../fuzz/src/bytes.rs"]
 mod bytes;
 #[allow(dead_code)]
@@ -14,6 +17,9 @@ mod fric_case;
 #[allow(dead_code)]
 #[path = "../fuzz/src/gapcon_case.rs"]
 mod gapcon_case;
+#[allow(dead_code)]
+#[path = "../fuzz/src/uinter_case.rs"]
+mod uinter_case;
 
 use fric_case::{FricCase, FricOutputs};
 
@@ -165,5 +171,129 @@ fn gapcon_checker_accepts_every_configured_law() {
         } else {
             assert!(k > 0.0, "{name}: k = {k}");
         }
+    }
+}
+
+/// Crash 4 (uinter, first 30 s): sliding with a trial stress 10⁶ times the strength, the shear
+/// stress came out as T − k_s·Δs and lost ~ε·T to cancellation: |τ| = 9.9648437503674e-4
+/// against the strength μp + S_a = 9.9648437500001e-4. Fixed by evaluating τ from the seed's
+/// strength at the root (`src/laws/adhesive.rs`).
+const CRASH_UINTER_STRENGTH: [u8; 61] = [
+    0, 0, 0, 0, 0, 0, 1, 255, 0, 18, 0, 255, 2, 10, 1, 9, 0, 0, 9, 237, 158, 0, 0, 3, 0, 0, 158,
+    158, 245, 236, 65, 158, 97, 97, 0, 0, 0, 158, 158, 158, 245, 236, 158, 97, 97, 0, 0, 0, 158,
+    158, 245, 236, 189, 158, 97, 245, 236, 189, 158, 97, 10,
+];
+
+#[test]
+fn crash_4_replays_clean() {
+    let case = uinter_case::UinterCase::decode(&CRASH_UINTER_STRENGTH);
+    assert_eq!(case.ndir, 2, "the decoder changed: {case:?}");
+    let out = case
+        .check()
+        .unwrap_or_else(|e| panic!("{e}\ninput: {case:?}"));
+    assert!(out.message.is_empty(), "refused: {}", out.message);
+    assert_eq!(out.statev[2], 1.0, "slipping");
+}
+
+/// A sliding point far past the stick limit (trial stress 10⁶·g and 10¹²·g): the shear
+/// stress is the seed's strength μ_d·p + S_a to a few ulps, never above it.
+#[test]
+fn uinter_shear_far_past_the_stick_limit_is_the_strength() {
+    for ratio in [1e6, 1e12] {
+        // μ_d = 0.5, S_a = 2, K_n = 1000, γ_crit = 1e-6 (absolute), h = 0.01: p = 10.
+        let props = [2.0, 0.5, 0.0, 2.0, 0.0, 0.0, 0.0, 1e-6, 0.0, 1000.0];
+        let mut c = uinter_case::UinterCase::decode(&[]);
+        c.ndir = 3;
+        c.nstatv = 3;
+        c.nprops = 10;
+        c.props = props.to_vec();
+        c.stress = vec![10.0, 0.0, 0.0];
+        c.statev = vec![0.0; 3];
+        c.rdisp = vec![0.01, 0.0, 0.0];
+        let g = 0.5 * 10.0 + 2.0;
+        c.drdisp = vec![0.0, 0.6 * ratio * 1e-6, 0.8 * ratio * 1e-6];
+        c.dtime = 1.0;
+        c.chrlngth = 1.0;
+        c.pnewdt = 1e36;
+        let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
+        assert!(out.message.is_empty(), "refused: {}", out.message);
+        let tau = out.stress[1].hypot(out.stress[2]);
+        assert!(tau <= g * (1.0 + 4.0 * f64::EPSILON), "{tau} above {g}");
+        assert!((tau - g).abs() <= 4.0 * f64::EPSILON * g, "{tau} != {g}");
+        assert_eq!(out.statev[2], 1.0);
+        assert_eq!(out.stress[0], 10.0);
+    }
+}
+
+/// Crashes 5 and 6 (uinter, first minutes): a successful call stored ∞ in `STATEV`: the
+/// accumulated slip summed past f64::MAX, and the slip rate of a frictionless point
+/// (μ = S_a = 0) over a tiny `DTIME` overflowed. Both saturate at f64::MAX now, as in the
+/// Coulomb law (crash 1).
+const CRASH_UINTER_STATE: [&[u8]; 2] = [
+    &[
+        59, 32, 0, 0, 0, 0, 0, 97, 97, 0, 0, 201, 231, 10, 61, 10, 5, 5, 5, 5, 61, 10, 5, 5, 5,
+        126, 5, 5, 5, 5, 5, 5, 5, 5, 99, 111, 99, 111, 101, 102, 102, 83, 116, 97, 116, 105, 99, 5,
+        5, 5, 5,
+    ],
+    &[
+        9, 0, 0, 0, 0, 0, 0, 0, 0, 0, 19, 19, 19, 19, 19, 58, 5, 5, 5, 5, 5, 7, 7, 7, 7, 7, 5, 5,
+        5, 94, 94, 55, 126, 4, 4, 4, 4, 46, 46, 46, 46, 46, 46, 46, 46, 46, 46, 46, 46, 46, 46, 46,
+        19, 19, 19, 19, 58, 5, 5, 5, 5, 5, 5, 5, 5, 5, 46, 4, 4, 4, 4, 4, 74, 74, 104, 4, 4, 95,
+        255, 5,
+    ],
+];
+
+#[test]
+fn crashes_5_and_6_replay_clean() {
+    for bytes in CRASH_UINTER_STATE {
+        let case = uinter_case::UinterCase::decode(bytes);
+        case.check()
+            .unwrap_or_else(|e| panic!("{e}\ninput: {case:?}"));
+    }
+}
+
+/// A closed, sliding `uinter_` point: μ_d = 0.5, K_n = 1000, h = 0.01 (p = 10), γ_crit = 1e-6.
+fn sliding_uinter(mu: f64) -> uinter_case::UinterCase {
+    let mut c = uinter_case::UinterCase::decode(&[]);
+    c.ndir = 2;
+    c.nstatv = 3;
+    c.nprops = 10;
+    c.props = vec![2.0, mu, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-6, 0.0, 1000.0];
+    c.stress = vec![10.0, 0.0];
+    c.statev = vec![0.0; 3];
+    c.rdisp = vec![0.01, 0.0];
+    c.drdisp = vec![0.0, 1.0];
+    c.dtime = 1.0;
+    c.chrlngth = 1.0;
+    c.pnewdt = 1e36;
+    c
+}
+
+#[test]
+fn uinter_accumulated_slip_near_f64_max_saturates() {
+    let mut c = sliding_uinter(0.5);
+    c.statev[0] = f64::MAX;
+    let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
+    assert!(out.message.is_empty(), "refused: {}", out.message);
+    assert_eq!(out.statev[0], f64::MAX);
+    assert_eq!(out.statev[2], 1.0);
+    // Δs = 1 − γ_crit: the rate is Δs/Δt.
+    assert!((out.statev[1] - (1.0 - 1e-6)).abs() < 1e-15);
+}
+
+#[test]
+fn uinter_slip_rate_over_a_subnormal_dtime_saturates() {
+    for mu in [0.0, 0.5] {
+        let mut c = sliding_uinter(mu);
+        c.dtime = 5e-324;
+        let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
+        assert!(out.message.is_empty(), "refused: {}", out.message);
+        assert_eq!(out.statev[1], f64::MAX, "μ = {mu}");
+        assert!((out.statev[0] - (1.0 - 1e-6)).abs() < 1e-15);
+        // The next increment accepts the state.
+        let mut next = sliding_uinter(mu);
+        next.statev = out.statev.clone();
+        let again = next.check().unwrap_or_else(|e| panic!("{e}"));
+        assert!(again.message.is_empty(), "refused: {}", again.message);
     }
 }

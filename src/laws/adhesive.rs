@@ -373,9 +373,18 @@ impl Adhesive {
         } else {
             2.0 * c / (root - b)
         };
-        let tau_eq = trial - k_s * slip_eq;
         // ∂g/∂Δs and ∂g/∂p at the root (g as a function of Δs): g_p is the effective coefficient.
         let denom = length_half + slip_eq;
+        // τ = g(Δs) at the root, evaluated from the seed's strength (a sum of non-negative
+        // terms) rather than as T − k_s·Δs, whose cancellation loses ~ε·T: with T/g = 10⁶ that
+        // put τ 4·10⁻¹¹ above the strength (fuzz target `uinter`, docs/fuzzing.md).
+        let transition = if denom > 0.0 {
+            (mu_s * length_half + mu_d * slip_eq) / denom
+        } else {
+            mu_s
+        };
+        let tau_eq =
+            ((transition + k_per_length * slip_eq) * p_plus + self.shear_adhesion).min(trial);
         let (g_s, g_p) = if denom > 0.0 {
             (
                 ((mu_d - mu_s) * length_half / (denom * denom) + k_per_length) * p_plus,
@@ -417,7 +426,12 @@ impl Adhesive {
                 sfd: tau_eq * slip_eq,
             },
             branch: SlideBranch::Slip,
-            slip_rate: if dtime > 0.0 { slip_eq / dtime } else { 0.0 },
+            // Saturates at f64::MAX (a slip over a subnormal Δt), as in the Coulomb law.
+            slip_rate: if dtime > 0.0 {
+                (slip_eq / dtime).min(f64::MAX)
+            } else {
+                0.0
+            },
             stick_stiffness: k_s,
         }
     }
@@ -448,7 +462,7 @@ impl Adhesive {
             None => ([0.0; N], [0.0; N], SlideBranch::Stick),
         };
         let slip_rate = if dtime > 0.0 && branch == SlideBranch::Slip {
-            norm(&dslip) / dtime
+            (norm(&dslip) / dtime).min(f64::MAX)
         } else {
             0.0
         };
@@ -495,7 +509,8 @@ impl Adhesive {
         Ok(Update {
             contact: super::coulomb::Contact::Motion(s.traction),
             state: CoulombState {
-                accumulated_slip: state.accumulated_slip + slip,
+                // Saturates at f64::MAX rather than storing ∞ (fuzz target `uinter`).
+                accumulated_slip: (state.accumulated_slip + slip).min(f64::MAX),
                 slip_rate: s.slip_rate,
                 status: match s.branch {
                     SlideBranch::Slip => FrictionStatus::Slip,
