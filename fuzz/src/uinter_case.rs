@@ -433,7 +433,14 @@ impl UinterCase {
         let (mu_d, mu_s, s_a, k_mu) = (get(1), get(2), get(3), get(5));
         let mu = if mu_s > 0.0 { mu_s.max(mu_d) } else { mu_d };
         let p_plus = out.stress[0].max(0.0);
-        let bound = (mu + k_mu * out.statev[1]) * p_plus + s_a;
+        // A slip rate saturated at f64::MAX (a slip over a subnormal DTIME) no longer tells
+        // the rate the law used: no bound then for a rate-dependent law.
+        let rate = out.statev[1];
+        let bound = if rate == f64::MAX && k_mu > 0.0 {
+            f64::INFINITY
+        } else {
+            (mu + k_mu * rate) * p_plus + s_a
+        };
         let tol = bound * 1e-12 + 1e-321;
         if tau > bound + tol {
             return Err(format!(
