@@ -297,3 +297,49 @@ fn uinter_slip_rate_over_a_subnormal_dtime_saturates() {
         assert!(again.message.is_empty(), "refused: {}", again.message);
     }
 }
+
+/// Not a library defect (the CI run of `fric`, after the adhesive law joined `fric_`): the
+/// target's cone check was the Coulomb law's, τ_crit = min(μp, τ_max) = 0 for p < 0, and
+/// flagged an adhesive point (`PROPS(1) = 2`) sliding at p < 0 with |τ| = S_a = 2, which is
+/// the seed's law. The check now uses the adhesive strength for law 2.
+const FRIC_ADHESIVE_NEGATIVE_PRESSURE: [u8; 87] = [
+    255, 65, 2, 255, 255, 23, 255, 10, 10, 10, 0, 255, 255, 255, 58, 255, 10, 10, 10, 0, 18, 18,
+    18, 18, 228, 237, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 210, 93, 18, 18, 18,
+    18, 18, 18, 18, 18, 18, 18, 18, 18, 255, 2, 255, 18, 65, 49, 255, 7, 255, 255, 255, 255, 255,
+    255, 23, 255, 10, 10, 255, 65, 19, 250, 1, 10, 5, 114, 49, 5, 42, 5, 5, 1, 5,
+];
+
+#[test]
+fn fric_adhesive_at_negative_pressure_replays_clean() {
+    let case = FricCase::decode(&FRIC_ADHESIVE_NEGATIVE_PRESSURE);
+    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
+    let out = checked(&case);
+    succeeded(&case, &out);
+    // Sliding at p < 0: the stress is the shear adhesive strength S_a = PROPS(4).
+    assert_eq!(out.statev[2], 1.0);
+    assert_eq!(out.tau[0].abs(), case.props[3]);
+}
+
+/// Crash 7 (`fric`, adhesive law, 60 s run): a slip increment near f64::MAX with γ_crit near
+/// 10³⁰⁶ gave Δs ≈ 1.8·10³⁰⁸, and the transition (μ_s V + μ_d Δs)/(V + Δs) overflowed to ∞;
+/// at p < 0, ∞·0 = NaN, and the stress came out as the trial stress 2.4e-5 instead of
+/// S_a = 1.2e-7. The transition is now μ_d + (μ_s − μ_d)·V/(V + Δs) and the pressure part is
+/// skipped at p⁺ = 0 (`src/laws/adhesive.rs`).
+const CRASH_ADHESIVE_TRANSITION: [u8; 96] = [
+    65, 63, 166, 166, 10, 2, 255, 10, 2, 255, 10, 2, 5, 2, 21, 5, 5, 5, 5, 5, 0, 0, 0, 0, 0, 0, 0,
+    0, 5, 48, 5, 42, 42, 42, 42, 42, 42, 42, 37, 42, 42, 42, 42, 42, 42, 42, 42, 42, 42, 42, 42,
+    42, 42, 42, 42, 42, 42, 42, 204, 42, 42, 42, 255, 162, 255, 255, 255, 255, 255, 42, 42, 42, 42,
+    42, 42, 5, 166, 93, 5, 5, 44, 5, 61, 5, 5, 5, 5, 5, 177, 177, 158, 177, 177, 1, 1, 5,
+];
+
+#[test]
+fn crash_7_replays_clean() {
+    let case = FricCase::decode(&CRASH_ADHESIVE_TRANSITION);
+    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
+    let out = checked(&case);
+    if out.message.is_empty() && out.lm == 0 && case.press < 0.0 {
+        // Sliding at p < 0: the stress is S_a.
+        let tau = out.tau.iter().fold(0.0f64, |s, x| s.hypot(*x));
+        assert!(tau <= case.props[3] * (1.0 + 1e-12), "{tau}");
+    }
+}

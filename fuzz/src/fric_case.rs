@@ -355,6 +355,9 @@ impl FricCase {
     /// |τ| ≤ τ_crit = min(μp, τ_max) (0 for p < 0), and |τ| = τ_crit while slipping.
     fn check_cone(&self, out: &FricOutputs) -> Result<(), String> {
         let get = |i: usize| self.props.get(i).copied().unwrap_or(0.0);
+        if get(0) == 2.0 {
+            return self.check_adhesive_strength(out);
+        }
         let (mu, tau_max) = (get(1), get(3));
         let tau_max = if tau_max > 0.0 {
             tau_max
@@ -379,6 +382,30 @@ impl FricCase {
         if elastic && slipping && magnitude < tau_crit - tol && tau_crit >= f64::MIN_POSITIVE {
             return Err(format!(
                 "slipping with |TAU| = {magnitude:e} below τ_crit = {tau_crit:e}: {out:?}"
+            ));
+        }
+        Ok(())
+    }
+}
+
+impl FricCase {
+    /// The adhesive law (`PROPS(1) = 2`, docs/props.md): |τ| ≤ (max(μ_s, μ_d) + k_μ·Δv)·p⁺ +
+    /// S_a, with the slip rate Δv of `STATEV(2)`: the static strength in stick, the
+    /// rate-dependent one while sliding. S_a is carried at any pressure, negative included.
+    fn check_adhesive_strength(&self, out: &FricOutputs) -> Result<(), String> {
+        let get = |i: usize| self.props.get(i).copied().unwrap_or(0.0);
+        let (mu_d, mu_s, s_a, k_mu) = (get(1), get(2), get(3), get(5));
+        let mu = if mu_s > 0.0 { mu_s.max(mu_d) } else { mu_d };
+        let rate = out.statev[1];
+        let bound = if rate == f64::MAX && k_mu > 0.0 {
+            f64::INFINITY
+        } else {
+            (mu + k_mu * rate) * self.press.max(0.0) + s_a
+        };
+        let magnitude = out.tau.iter().fold(0.0f64, |s, x| s.hypot(*x));
+        if magnitude > bound + bound * 1e-12 + 1e-321 {
+            return Err(format!(
+                "|TAU| = {magnitude:e} above the adhesive strength {bound:e}: {out:?}"
             ));
         }
         Ok(())

@@ -378,17 +378,24 @@ impl Adhesive {
         // τ = g(Δs) at the root, evaluated from the seed's strength (a sum of non-negative
         // terms) rather than as T − k_s·Δs, whose cancellation loses ~ε·T: with T/g = 10⁶ that
         // put τ 4·10⁻¹¹ above the strength (fuzz target `uinter`, docs/fuzzing.md).
+        // The transition written as μ_d + (μ_s − μ_d)·V/(V + Δs), which cannot overflow (the
+        // seed's (μ_s V + μ_d Δs)/(V + Δs) does for Δs near f64::MAX); at p⁺ = 0 the
+        // pressure terms are 0 even when K·Δs is not finite.
         let transition = if denom > 0.0 {
-            (mu_s * length_half + mu_d * slip_eq) / denom
+            mu_d + (mu_s - mu_d) * (length_half / denom)
         } else {
             mu_s
         };
-        let tau_eq =
-            ((transition + k_per_length * slip_eq) * p_plus + self.shear_adhesion).min(trial);
+        let pressure_part = if p_plus > 0.0 {
+            (transition + k_per_length * slip_eq) * p_plus
+        } else {
+            0.0
+        };
+        let tau_eq = (pressure_part + self.shear_adhesion).min(trial);
         let (g_s, g_p) = if denom > 0.0 {
             (
                 ((mu_d - mu_s) * length_half / (denom * denom) + k_per_length) * p_plus,
-                (mu_s * length_half + mu_d * slip_eq) / denom + k_per_length * slip_eq,
+                transition + k_per_length * slip_eq,
             )
         } else {
             (0.0, mu_s)
