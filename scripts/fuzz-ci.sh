@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # CI fuzzing stage (run by scripts/test.sh): every cargo-fuzz target in fuzz/ for FUZZ_SECONDS
-# (default 60) each, with AddressSanitizer, from its seeds and a fresh corpus; fails on any crash,
-# sanitizer report or property violation. About 6 minutes with a cold build, 45 s of it for
+# (default 45) each, with AddressSanitizer, from its seeds and a fresh corpus; fails on any crash,
+# sanitizer report or property violation. About 6 minutes for the five targets with a cold build, 45 s of it for
 # installing cargo-fuzz when missing. Longer runs: scripts/fuzz.sh TARGET SECONDS.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-seconds="${FUZZ_SECONDS:-60}"
-targets=(fric gapcon config)
+seconds="${FUZZ_SECONDS:-45}"
+targets=(fric gapcon config uinter batch)
 
 if ! command -v cargo-fuzz >/dev/null 2>&1; then
   echo "== cargo install cargo-fuzz --locked"

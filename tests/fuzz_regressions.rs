@@ -6,6 +6,9 @@
 //! cases below do not depend on the byte encoding and stay meaningful if it changes.
 
 #[allow(dead_code)]
+#[path = "../fuzz/src/batch_case.rs"]
+mod batch_case;
+#[allow(dead_code)]
 #[path = "../fuzz/src/bytes.rs"]
 mod bytes;
 #[allow(dead_code)]
@@ -14,6 +17,9 @@ mod fric_case;
 #[allow(dead_code)]
 #[path = "../fuzz/src/gapcon_case.rs"]
 mod gapcon_case;
+#[allow(dead_code)]
+#[path = "../fuzz/src/uinter_case.rs"]
+mod uinter_case;
 
 use fric_case::{FricCase, FricOutputs};
 
@@ -168,7 +174,7 @@ fn gapcon_checker_accepts_every_configured_law() {
     }
 }
 
-/// Crash 3 (fuzz target `fric`, found on the merged adhesive law): PROPS(1) = 2 with
+/// Found by fuzz target `fric` on the merged adhesive law: PROPS(1) = 2 with
 /// μ_s = μ_d (coeffStatic = 0, "none") and v_½ = 1, a slip predictor about 10²⁶ times the
 /// stress it returns. τ was computed as T − k_s·Δs, which cancelled and came out 5·10⁻⁷
 /// (relative) above μp. The sliding stress is now evaluated from the law itself.
@@ -180,7 +186,7 @@ const CRASH_ADHESIVE_CANCELLATION: [u8; 77] = [
 ];
 
 #[test]
-fn crash_3_replays_clean() {
+fn fric_adhesive_cancellation_replays_clean() {
     let case = FricCase::decode(&CRASH_ADHESIVE_CANCELLATION);
     assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
     let out = checked(&case);
@@ -195,7 +201,7 @@ fn crash_3_replays_clean() {
     );
 }
 
-/// Crash 4 (fuzz target `fric`, on the merged extended law): anisotropic law 1 (μ₂ ≠ μ in
+/// Found by fuzz target `fric` on the merged extended law: anisotropic law 1 (μ₂ ≠ μ in
 /// PROPS(3)) slipping over DTIME = f64::MIN_POSITIVE stored STATEV(2) = ∞. The extended law
 /// now saturates its slip rate and accumulated slip at f64::MAX like the plain law.
 const CRASH_EXTENDED_SLIP_RATE: [u8; 96] = [
@@ -207,7 +213,7 @@ const CRASH_EXTENDED_SLIP_RATE: [u8; 96] = [
 ];
 
 #[test]
-fn crash_4_replays_clean() {
+fn fric_extended_slip_rate_replays_clean() {
     let case = FricCase::decode(&CRASH_EXTENDED_SLIP_RATE);
     assert_eq!(
         (case.nfdir, case.dtime),
@@ -220,7 +226,7 @@ fn crash_4_replays_clean() {
     assert_eq!(out.statev[1], f64::MAX);
 }
 
-/// Crash 5 (fuzz target `fric`): the adhesive law (PROPS(1) = 2) slipping over
+/// Found by fuzz target `fric`: the adhesive law (PROPS(1) = 2) slipping over
 /// DTIME = 5·10⁻³²⁴ from an accumulated slip of f64::MAX stored ∞ in STATEV(1..2); it now
 /// saturates at f64::MAX like the Coulomb laws.
 const CRASH_ADHESIVE_SLIP_RATE: [u8; 65] = [
@@ -230,7 +236,7 @@ const CRASH_ADHESIVE_SLIP_RATE: [u8; 65] = [
 ];
 
 #[test]
-fn crash_5_replays_clean() {
+fn fric_adhesive_slip_rate_replays_clean() {
     let case = FricCase::decode(&CRASH_ADHESIVE_SLIP_RATE);
     assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
     let out = checked(&case);
@@ -238,7 +244,7 @@ fn crash_5_replays_clean() {
     assert_eq!((out.statev[0], out.statev[1]), (f64::MAX, f64::MAX));
 }
 
-/// Crash 6 (fuzz target `fric`): the adhesive law with μ_d = 0, k_μ = 2, p = Δt = f64::MAX.
+/// Found by fuzz target `fric`: the adhesive law with μ_d = 0, k_μ = 2, p = Δt = f64::MAX.
 /// k_μ/Δt·Δs was subnormal (seven digits lost) before the multiplication by p, so τ came out
 /// 6·10⁻⁸ (relative) above the seed's k_μ·Δv·p + S_a. Now evaluated as (k_μ/Δt·p)·Δs.
 const CRASH_ADHESIVE_SUBNORMAL_RATE: [u8; 114] = [
@@ -250,7 +256,7 @@ const CRASH_ADHESIVE_SUBNORMAL_RATE: [u8; 114] = [
 ];
 
 #[test]
-fn crash_6_replays_clean() {
+fn fric_adhesive_subnormal_rate_replays_clean() {
     let case = FricCase::decode(&CRASH_ADHESIVE_SUBNORMAL_RATE);
     assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
     let out = checked(&case);
@@ -263,4 +269,174 @@ fn crash_6_replays_clean() {
         "{} vs {expected}",
         out.tau[0]
     );
+}
+
+/// Crash 4 (uinter, first 30 s): sliding with a trial stress 10⁶ times the strength, the shear
+/// stress came out as T − k_s·Δs and lost ~ε·T to cancellation: |τ| = 9.9648437503674e-4
+/// against the strength μp + S_a = 9.9648437500001e-4. Fixed by evaluating τ from the seed's
+/// strength at the root (`src/laws/adhesive.rs`).
+const CRASH_UINTER_STRENGTH: [u8; 61] = [
+    0, 0, 0, 0, 0, 0, 1, 255, 0, 18, 0, 255, 2, 10, 1, 9, 0, 0, 9, 237, 158, 0, 0, 3, 0, 0, 158,
+    158, 245, 236, 65, 158, 97, 97, 0, 0, 0, 158, 158, 158, 245, 236, 158, 97, 97, 0, 0, 0, 158,
+    158, 245, 236, 189, 158, 97, 245, 236, 189, 158, 97, 10,
+];
+
+#[test]
+fn crash_4_replays_clean() {
+    let case = uinter_case::UinterCase::decode(&CRASH_UINTER_STRENGTH);
+    assert_eq!(case.ndir, 2, "the decoder changed: {case:?}");
+    let out = case
+        .check()
+        .unwrap_or_else(|e| panic!("{e}\ninput: {case:?}"));
+    assert!(out.message.is_empty(), "refused: {}", out.message);
+    assert_eq!(out.statev[2], 1.0, "slipping");
+}
+
+/// A sliding point far past the stick limit (trial stress 10⁶·g and 10¹²·g): the shear
+/// stress is the seed's strength μ_d·p + S_a to a few ulps, never above it.
+#[test]
+fn uinter_shear_far_past_the_stick_limit_is_the_strength() {
+    for ratio in [1e6, 1e12] {
+        // μ_d = 0.5, S_a = 2, K_n = 1000, γ_crit = 1e-6 (absolute), h = 0.01: p = 10.
+        let props = [2.0, 0.5, 0.0, 2.0, 0.0, 0.0, 0.0, 1e-6, 0.0, 1000.0];
+        let mut c = uinter_case::UinterCase::decode(&[]);
+        c.ndir = 3;
+        c.nstatv = 3;
+        c.nprops = 10;
+        c.props = props.to_vec();
+        c.stress = vec![10.0, 0.0, 0.0];
+        c.statev = vec![0.0; 3];
+        c.rdisp = vec![0.01, 0.0, 0.0];
+        let g = 0.5 * 10.0 + 2.0;
+        c.drdisp = vec![0.0, 0.6 * ratio * 1e-6, 0.8 * ratio * 1e-6];
+        c.dtime = 1.0;
+        c.chrlngth = 1.0;
+        c.pnewdt = 1e36;
+        let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
+        assert!(out.message.is_empty(), "refused: {}", out.message);
+        let tau = out.stress[1].hypot(out.stress[2]);
+        assert!(tau <= g * (1.0 + 4.0 * f64::EPSILON), "{tau} above {g}");
+        assert!((tau - g).abs() <= 4.0 * f64::EPSILON * g, "{tau} != {g}");
+        assert_eq!(out.statev[2], 1.0);
+        assert_eq!(out.stress[0], 10.0);
+    }
+}
+
+/// Crashes 5 and 6 (uinter, first minutes): a successful call stored ∞ in `STATEV`: the
+/// accumulated slip summed past f64::MAX, and the slip rate of a frictionless point
+/// (μ = S_a = 0) over a tiny `DTIME` overflowed. Both saturate at f64::MAX now, as in the
+/// Coulomb law (crash 1).
+const CRASH_UINTER_STATE: [&[u8]; 2] = [
+    &[
+        59, 32, 0, 0, 0, 0, 0, 97, 97, 0, 0, 201, 231, 10, 61, 10, 5, 5, 5, 5, 61, 10, 5, 5, 5,
+        126, 5, 5, 5, 5, 5, 5, 5, 5, 99, 111, 99, 111, 101, 102, 102, 83, 116, 97, 116, 105, 99, 5,
+        5, 5, 5,
+    ],
+    &[
+        9, 0, 0, 0, 0, 0, 0, 0, 0, 0, 19, 19, 19, 19, 19, 58, 5, 5, 5, 5, 5, 7, 7, 7, 7, 7, 5, 5,
+        5, 94, 94, 55, 126, 4, 4, 4, 4, 46, 46, 46, 46, 46, 46, 46, 46, 46, 46, 46, 46, 46, 46, 46,
+        19, 19, 19, 19, 58, 5, 5, 5, 5, 5, 5, 5, 5, 5, 46, 4, 4, 4, 4, 4, 74, 74, 104, 4, 4, 95,
+        255, 5,
+    ],
+];
+
+#[test]
+fn crashes_5_and_6_replay_clean() {
+    for bytes in CRASH_UINTER_STATE {
+        let case = uinter_case::UinterCase::decode(bytes);
+        case.check()
+            .unwrap_or_else(|e| panic!("{e}\ninput: {case:?}"));
+    }
+}
+
+/// A closed, sliding `uinter_` point: μ_d = 0.5, K_n = 1000, h = 0.01 (p = 10), γ_crit = 1e-6.
+fn sliding_uinter(mu: f64) -> uinter_case::UinterCase {
+    let mut c = uinter_case::UinterCase::decode(&[]);
+    c.ndir = 2;
+    c.nstatv = 3;
+    c.nprops = 10;
+    c.props = vec![2.0, mu, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-6, 0.0, 1000.0];
+    c.stress = vec![10.0, 0.0];
+    c.statev = vec![0.0; 3];
+    c.rdisp = vec![0.01, 0.0];
+    c.drdisp = vec![0.0, 1.0];
+    c.dtime = 1.0;
+    c.chrlngth = 1.0;
+    c.pnewdt = 1e36;
+    c
+}
+
+#[test]
+fn uinter_accumulated_slip_near_f64_max_saturates() {
+    let mut c = sliding_uinter(0.5);
+    c.statev[0] = f64::MAX;
+    let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
+    assert!(out.message.is_empty(), "refused: {}", out.message);
+    assert_eq!(out.statev[0], f64::MAX);
+    assert_eq!(out.statev[2], 1.0);
+    // Δs = 1 − γ_crit: the rate is Δs/Δt.
+    assert!((out.statev[1] - (1.0 - 1e-6)).abs() < 1e-15);
+}
+
+#[test]
+fn uinter_slip_rate_over_a_subnormal_dtime_saturates() {
+    for mu in [0.0, 0.5] {
+        let mut c = sliding_uinter(mu);
+        c.dtime = 5e-324;
+        let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
+        assert!(out.message.is_empty(), "refused: {}", out.message);
+        assert_eq!(out.statev[1], f64::MAX, "μ = {mu}");
+        assert!((out.statev[0] - (1.0 - 1e-6)).abs() < 1e-15);
+        // The next increment accepts the state.
+        let mut next = sliding_uinter(mu);
+        next.statev = out.statev.clone();
+        let again = next.check().unwrap_or_else(|e| panic!("{e}"));
+        assert!(again.message.is_empty(), "refused: {}", again.message);
+    }
+}
+
+/// Not a library defect (the CI run of `fric`, after the adhesive law joined `fric_`): the
+/// target's cone check was the Coulomb law's, τ_crit = min(μp, τ_max) = 0 for p < 0, and
+/// flagged an adhesive point (`PROPS(1) = 2`) sliding at p < 0 with |τ| = S_a = 2, which is
+/// the seed's law. The check now uses the adhesive strength for law 2.
+const FRIC_ADHESIVE_NEGATIVE_PRESSURE: [u8; 87] = [
+    255, 65, 2, 255, 255, 23, 255, 10, 10, 10, 0, 255, 255, 255, 58, 255, 10, 10, 10, 0, 18, 18,
+    18, 18, 228, 237, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 18, 210, 93, 18, 18, 18,
+    18, 18, 18, 18, 18, 18, 18, 18, 18, 255, 2, 255, 18, 65, 49, 255, 7, 255, 255, 255, 255, 255,
+    255, 23, 255, 10, 10, 255, 65, 19, 250, 1, 10, 5, 114, 49, 5, 42, 5, 5, 1, 5,
+];
+
+#[test]
+fn fric_adhesive_at_negative_pressure_replays_clean() {
+    let case = FricCase::decode(&FRIC_ADHESIVE_NEGATIVE_PRESSURE);
+    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
+    let out = checked(&case);
+    succeeded(&case, &out);
+    // Sliding at p < 0: the stress is the shear adhesive strength S_a = PROPS(4).
+    assert_eq!(out.statev[2], 1.0);
+    assert_eq!(out.tau[0].abs(), case.props[3]);
+}
+
+/// Crash 7 (`fric`, adhesive law, 60 s run): a slip increment near f64::MAX with γ_crit near
+/// 10³⁰⁶ gave Δs ≈ 1.8·10³⁰⁸, and the transition (μ_s V + μ_d Δs)/(V + Δs) overflowed to ∞;
+/// at p < 0, ∞·0 = NaN, and the stress came out as the trial stress 2.4e-5 instead of
+/// S_a = 1.2e-7. The transition is now μ_d + (μ_s − μ_d)·V/(V + Δs) and the pressure part is
+/// skipped at p⁺ = 0 (`src/laws/adhesive.rs`).
+const CRASH_ADHESIVE_TRANSITION: [u8; 96] = [
+    65, 63, 166, 166, 10, 2, 255, 10, 2, 255, 10, 2, 5, 2, 21, 5, 5, 5, 5, 5, 0, 0, 0, 0, 0, 0, 0,
+    0, 5, 48, 5, 42, 42, 42, 42, 42, 42, 42, 37, 42, 42, 42, 42, 42, 42, 42, 42, 42, 42, 42, 42,
+    42, 42, 42, 42, 42, 42, 42, 204, 42, 42, 42, 255, 162, 255, 255, 255, 255, 255, 42, 42, 42, 42,
+    42, 42, 5, 166, 93, 5, 5, 44, 5, 61, 5, 5, 5, 5, 5, 177, 177, 158, 177, 177, 1, 1, 5,
+];
+
+#[test]
+fn crash_7_replays_clean() {
+    let case = FricCase::decode(&CRASH_ADHESIVE_TRANSITION);
+    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
+    let out = checked(&case);
+    if out.message.is_empty() && out.lm == 0 && case.press < 0.0 {
+        // Sliding at p < 0: the stress is S_a.
+        let tau = out.tau.iter().fold(0.0f64, |s, x| s.hypot(*x));
+        assert!(tau <= case.props[3] * (1.0 + 1e-12), "{tau}");
+    }
 }

@@ -92,3 +92,15 @@ impl<'a> Bytes<'a> {
         1.0 + 9.0 * f64::from(self.u16()) / 65536.0
     }
 }
+
+impl Bytes<'_> {
+    /// An ordinary positive real, 1.x · 10^(-6..=6): material parameters that are valid.
+    pub fn positive(&mut self) -> f64 {
+        self.mantissa() * 10f64.powi(i32::from(self.u8() % 13) - 6)
+    }
+
+    /// A real in [0, 1], in steps of 1/255.
+    pub fn unit(&mut self) -> f64 {
+        f64::from(self.u8()) / 255.0
+    }
+}

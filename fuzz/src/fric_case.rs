@@ -396,7 +396,8 @@ impl FricCase {
     }
 
     /// Seed 004: |τ| ≤ (max(μ_s, μ_d) + k_μ·Δv)·p⁺ + S_a, Δv the slip rate the call reports in
-    /// `STATEV(2)` (the sliding stress at any rate, and the static strength in stick).
+    /// `STATEV(2)` (the sliding stress at any rate, and the static strength in stick). S_a is
+    /// carried at any pressure, negative included.
     fn check_adhesive_strength(&self, out: &FricOutputs) -> Result<(), String> {
         let get = |i: usize| self.props.get(i).copied().unwrap_or(0.0);
         let (mu_d, mu_s, s_a, k_mu) = (get(1), get(2), get(3), get(5));
@@ -410,6 +411,10 @@ impl FricCase {
         } else {
             0.0
         };
+        // A rate saturated at f64::MAX with k_μ > 0: no finite bound to check.
+        if out.statev[1] == f64::MAX && k_mu > 0.0 {
+            return Ok(());
+        }
         let rate_term = if via_slip.is_finite() {
             via_state.max(via_slip)
         } else {

@@ -375,23 +375,31 @@ impl Adhesive {
         };
         // ∂g/∂Δs and ∂g/∂p at the root (g as a function of Δs): g_p is the effective coefficient.
         let denom = length_half + slip_eq;
+        // τ = g(Δs) at the root, evaluated from the seed's strength (a sum of non-negative
+        // terms) rather than as T − k_s·Δs, whose cancellation loses ~ε·T: with T/g = 10⁶ that
+        // put τ 4·10⁻¹¹ above the strength (fuzz target `uinter`, docs/fuzzing.md).
+        // The transition written as μ_d + (μ_s − μ_d)·V/(V + Δs), which cannot overflow (the
+        // seed's (μ_s V + μ_d Δs)/(V + Δs) does for Δs near f64::MAX); at p⁺ = 0 the
+        // pressure terms are 0 even when K·Δs is not finite.
+        let transition = if denom > 0.0 {
+            mu_d + (mu_s - mu_d) * (length_half / denom)
+        } else {
+            mu_s
+        };
+        let pressure_part = if p_plus > 0.0 {
+            // (K·p⁺)·Δs rather than (K·Δs)·p⁺: K·Δs can be subnormal (fuzz target `fric`).
+            transition * p_plus + (k_per_length * p_plus) * slip_eq
+        } else {
+            0.0
+        };
+        let tau_eq = (pressure_part + self.shear_adhesion).min(trial);
         let (g_s, g_p) = if denom > 0.0 {
             (
                 ((mu_d - mu_s) * length_half / (denom * denom) + k_per_length) * p_plus,
-                (mu_s * length_half + mu_d * slip_eq) / denom + k_per_length * slip_eq,
+                transition + k_per_length * slip_eq,
             )
         } else {
             (0.0, mu_s)
-        };
-        // τ = g(Δs, p) at the root, evaluated from the law rather than as T − k_s·Δs: when the
-        // predictor is far outside the cone the difference cancels and loses every digit.
-        // (K·p⁺)·Δs rather than (K·Δs)·p⁺: K = k_μ/Δt times a small Δs can be subnormal.
-        let tau_eq = if denom > 0.0 {
-            (mu_s * length_half + mu_d * slip_eq) / denom * p_plus
-                + (k_per_length * p_plus) * slip_eq
-                + self.shear_adhesion
-        } else {
-            trial - k_s * slip_eq
         };
         let g_p = if p < 0.0 { 0.0 } else { g_p };
         // r(Δs) = T − k_s Δs − g = 0: dΔs = (dT − Δs dk_s − g_p dp)/(k_s + g_s).
@@ -426,7 +434,7 @@ impl Adhesive {
                 sfd: tau_eq * slip_eq,
             },
             branch: SlideBranch::Slip,
-            // Saturated at f64::MAX: a finite slip over a subnormal DTIME must not give ∞.
+            // Saturates at f64::MAX (a slip over a subnormal Δt), as in the Coulomb law.
             slip_rate: if dtime > 0.0 {
                 (slip_eq / dtime).min(f64::MAX)
             } else {
@@ -509,6 +517,7 @@ impl Adhesive {
         Ok(Update {
             contact: super::coulomb::Contact::Motion(s.traction),
             state: CoulombState {
+                // Saturates at f64::MAX rather than storing ∞ (fuzz target `uinter`).
                 accumulated_slip: (state.accumulated_slip + slip).min(f64::MAX),
                 slip_rate: s.slip_rate,
                 status: match s.branch {

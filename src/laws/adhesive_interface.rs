@@ -200,6 +200,8 @@ impl AdhesiveInterface {
                 sed: s.traction.sed + 0.5 * p * p / k_n,
                 shear: s.traction,
                 state: InterfaceState {
+                    // Saturates at f64::MAX rather than storing ∞, which the next increment
+                    // would refuse as a corrupted state (fuzz target `uinter`).
                     accumulated_slip: (state.accumulated_slip + slip).min(f64::MAX),
                     slip_rate: s.slip_rate,
                     status: match s.branch {

@@ -688,7 +688,7 @@ impl ExtendedCoulomb {
         let slip = norm(&out.dslip);
         let coulomb = CoulombState {
             // Saturated at f64::MAX, as in the plain law: a finite slip over a subnormal DTIME
-            // must not store ∞ in STATEV (fuzz crash 4).
+            // must not store ∞ in STATEV (fuzz target `fric`).
             accumulated_slip: (state.coulomb.accumulated_slip + slip).min(f64::MAX),
             slip_rate: if rate_dt > 0.0 {
                 (slip_eq / rate_dt).min(f64::MAX)
