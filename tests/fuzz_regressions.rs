@@ -440,3 +440,27 @@ fn crash_7_replays_clean() {
         assert!(tau <= case.props[3] * (1.0 + 1e-12), "{tau}");
     }
 }
+
+/// Found by fuzz target `batch` after the extended law 1 was merged: an anisotropic `PROPS`
+/// (μ₂ in `PROPS(3)` ≠ μ) that `fric_` runs and the batch refuses as a whole (its kernel is the
+/// plain law's). The check now accepts that refusal, as for the adhesive law; the batch must
+/// write nothing but `pnewdt` and name the cause.
+const BATCH_EXTENDED_LAW: [u8; 13] = [26, 255, 255, 49, 0, 255, 0, 0, 255, 255, 40, 255, 255];
+
+#[test]
+fn batch_refuses_the_extended_law_as_a_whole() {
+    let case = batch_case::BatchCase::decode(&BATCH_EXTENDED_LAW);
+    assert!(
+        case.props[0] == 1.0 && case.props[2] != 0.0 && case.props[2] != case.props[1],
+        "the decoder changed: {case:?}"
+    );
+    let out = case
+        .check()
+        .unwrap_or_else(|e| panic!("{e}\ninput: {case:?}"));
+    assert!(
+        out.message.contains("extended law-1 PROPS"),
+        "{}",
+        out.message
+    );
+    assert_eq!(out.pnewdt, 0.25);
+}

@@ -290,7 +290,12 @@ impl BatchCase {
         }
         // A batch of the adhesive law may be refused as a whole (no batch kernel), unless it
         // reduces to the Coulomb law, in which case it must run like fric_.
-        let adhesive_refusal = !ok && untouched && out.message.contains("PROPS(1) = 2 (adhesive)");
+        // Likewise the extended law 1 (anisotropy, μ laws, damping): fric_ runs it, the batch
+        // kernel is the plain law's.
+        let adhesive_refusal = !ok
+            && untouched
+            && (out.message.contains("PROPS(1) = 2 (adhesive)")
+                || out.message.contains("extended law-1 PROPS"));
         let probe_refused = !self.bad_shape() && {
             let mut probe = FricCase::coulomb(self.nfdir, &self.props);
             probe.nstatv = self.nstatv;
