@@ -13,10 +13,15 @@
 //!   so that μp saturates smoothly at μ_s·p_ref (a smooth counterpart of τ_max);
 //! - Θ, temperature: Θ = exp(−b_θ·(θ̄ − θ_ref)), softening (b_θ > 0) or hardening (b_θ < 0).
 //!
+//! - or, replacing all three, a table μ_tab(γ̇, p, θ̄) from the configuration file
+//!   ([`FrictionTable`], Abaqus `*FRICTION` data lines): f = μ_tab/μ_ref with μ_ref = `PROPS(2)`,
+//!   so that direction 1 has μ₁ = μ_tab.
+//!
 //! With anisotropy every direction's coefficient is multiplied by the same factors, so the
 //! ratio μ₁/μ₂ (and with it the scaling of Eq. 5.2.3-10/11) is constant.
 
 use crate::LawError;
+use crate::laws::friction_table::FrictionTable;
 
 /// How μ depends on the equivalent slip rate γ̇_eq.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -29,6 +34,14 @@ pub enum RateLaw {
         kinetic_ratio: f64,
         /// d_c > 0 (time per length).
         decay: f64,
+    },
+    /// μ = μ_tab(γ̇, p, θ̄) from the configuration file; f = μ_tab/μ_ref (replaces the pressure
+    /// and temperature factors too).
+    Table {
+        /// The validated table (it lives as long as the process-wide configuration).
+        table: &'static FrictionTable,
+        /// 1/μ_ref, μ_ref = `PROPS(2)` > 0.
+        inv_mu_ref: f64,
     },
 }
 
@@ -126,6 +139,32 @@ impl CoefficientLaw {
         Ok(self)
     }
 
+    /// μ from a table: f = μ_tab(γ̇, p, θ̄)/μ_ref, μ_ref > 0 (the μ the direction-1 coefficient is
+    /// given as). The pressure and temperature factors must be off.
+    pub fn with_table(
+        mut self,
+        table: &'static FrictionTable,
+        mu_ref: f64,
+    ) -> Result<Self, LawError> {
+        if !(mu_ref.is_finite() && mu_ref > 0.0) {
+            return Err(LawError::Parameter(format!(
+                "reference coefficient μ_ref = {mu_ref} must be finite and > 0 with a μ table"
+            )));
+        }
+        if self.pressure_ref.is_finite() || self.temperature_slope != 0.0 {
+            return Err(LawError::Parameter(
+                "a μ table carries its own pressure and temperature dependence; the pressure \
+                 and temperature factors must be off"
+                    .into(),
+            ));
+        }
+        self.rate = RateLaw::Table {
+            table,
+            inv_mu_ref: 1.0 / mu_ref,
+        };
+        Ok(self)
+    }
+
     /// Pressure dependence π = 1/(1 + p/p_ref), p_ref > 0.
     pub fn with_pressure_reference(mut self, p_ref: f64) -> Result<Self, LawError> {
         if !(p_ref.is_finite() && p_ref > 0.0) {
@@ -165,6 +204,7 @@ impl CoefficientLaw {
     #[must_use]
     pub fn is_temperature_dependent(&self) -> bool {
         self.temperature_slope != 0.0
+            || matches!(self.rate, RateLaw::Table { table, .. } if table.depends_on_temperature())
     }
 
     /// True when every factor is 1 (μ is the constant reference value).
@@ -180,9 +220,20 @@ impl CoefficientLaw {
     #[inline]
     #[must_use]
     pub fn factor(&self, rate: f64, pressure: f64, temperature: f64) -> Factor {
+        if let RateLaw::Table { table, inv_mu_ref } = self.rate {
+            // Piecewise linear: f = μ_tab/μ_ref, no second derivative.
+            let v = table.eval(rate, pressure, temperature);
+            return Factor {
+                value: v.mu * inv_mu_ref,
+                d_rate: v.d_rate * inv_mu_ref,
+                d_rate2: 0.0,
+                d_pressure: v.d_pressure * inv_mu_ref,
+                d_temperature: v.d_temperature * inv_mu_ref,
+            };
+        }
         // φ(γ̇) = r + (1 − r)·exp(−d_c γ̇), φ' = −d_c (1 − r) exp(−d_c γ̇).
         let (phi, dphi, ddphi) = match self.rate {
-            RateLaw::Constant => (1.0, 0.0, 0.0),
+            RateLaw::Constant | RateLaw::Table { .. } => (1.0, 0.0, 0.0),
             RateLaw::ExponentialDecay {
                 kinetic_ratio: r,
                 decay: d,
