@@ -213,6 +213,31 @@ impl CoefficientLaw {
         *self == CoefficientLaw::default()
     }
 
+    /// The rate-free part of the factor for the decay law, split for the local solve: when μ
+    /// follows the exponential decay law, `Some(((π·Θ, ∂(π·Θ)/∂p, ∂(π·Θ)/∂θ̄), (r, d_c)))`
+    /// (π and Θ do not change while the solve varies the rate, so they are evaluated once);
+    /// `None` for the other laws. `factor` = φ(γ̇)·π·Θ with φ from [`decay_phi`].
+    #[inline]
+    #[must_use]
+    pub fn split_decay(&self, pressure: f64, temperature: f64) -> Option<([f64; 3], (f64, f64))> {
+        let RateLaw::ExponentialDecay {
+            kinetic_ratio,
+            decay,
+        } = self.rate
+        else {
+            return None;
+        };
+        let f = CoefficientLaw {
+            rate: RateLaw::Constant,
+            ..*self
+        }
+        .factor(0.0, pressure, temperature);
+        Some((
+            [f.value, f.d_pressure, f.d_temperature],
+            (kinetic_ratio, decay),
+        ))
+    }
+
     /// f(γ̇, p, θ̄) and its partials. `rate` is the equivalent slip rate (≥ 0), `pressure` the
     /// contact pressure (≥ 0; the caller handles p < 0), `temperature` θ̄ (ignored when the law
     /// does not depend on it). The result may overflow for extreme temperatures; the caller
@@ -265,6 +290,17 @@ impl CoefficientLaw {
             d_temperature: phi * pi * dtheta,
         }
     }
+}
+
+/// φ(γ̇) = r + (1 − r)·exp(−d_c γ̇) of the decay law with φ' and φ'' (the same expression as
+/// [`CoefficientLaw::factor`] uses).
+#[inline(always)]
+#[must_use]
+pub fn decay_phi(kinetic_ratio: f64, decay: f64, rate: f64) -> (f64, f64, f64) {
+    let (r, d) = (kinetic_ratio, decay);
+    let e = if rate > 0.0 { (-d * rate).exp() } else { 1.0 };
+    let a = (1.0 - r) * e;
+    (r + a, -d * a, d * d * a)
 }
 
 #[cfg(test)]
