@@ -246,15 +246,7 @@ impl CoefficientLaw {
     #[must_use]
     pub fn factor(&self, rate: f64, pressure: f64, temperature: f64) -> Factor {
         if let RateLaw::Table { table, inv_mu_ref } = self.rate {
-            // Piecewise linear: f = μ_tab/μ_ref, no second derivative.
-            let v = table.eval(rate, pressure, temperature);
-            return Factor {
-                value: v.mu * inv_mu_ref,
-                d_rate: v.d_rate * inv_mu_ref,
-                d_rate2: 0.0,
-                d_pressure: v.d_pressure * inv_mu_ref,
-                d_temperature: v.d_temperature * inv_mu_ref,
-            };
+            return table_factor(table, inv_mu_ref, rate, pressure, temperature);
         }
         // φ(γ̇) = r + (1 − r)·exp(−d_c γ̇), φ' = −d_c (1 − r) exp(−d_c γ̇).
         let (phi, dphi, ddphi) = match self.rate {
@@ -289,6 +281,27 @@ impl CoefficientLaw {
             d_pressure: phi * dpi * theta,
             d_temperature: phi * pi * dtheta,
         }
+    }
+}
+
+/// f = μ_tab/μ_ref of a table (piecewise linear: no second derivative). Out of line, so that
+/// the table lookup does not make [`CoefficientLaw::factor`] too large to inline for the
+/// closed-form laws.
+#[inline(never)]
+fn table_factor(
+    table: &FrictionTable,
+    inv_mu_ref: f64,
+    rate: f64,
+    pressure: f64,
+    temperature: f64,
+) -> Factor {
+    let v = table.eval(rate, pressure, temperature);
+    Factor {
+        value: v.mu * inv_mu_ref,
+        d_rate: v.d_rate * inv_mu_ref,
+        d_rate2: 0.0,
+        d_pressure: v.d_pressure * inv_mu_ref,
+        d_temperature: v.d_temperature * inv_mu_ref,
     }
 }
 
