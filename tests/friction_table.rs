@@ -580,3 +580,25 @@ fn bad_tables() {
         let _ = std::fs::remove_file(&path);
     }
 }
+
+/// Fuzz find (fric target): the extended law (anisotropic, constant μ) at p = 0 with a
+/// subnormal DTIME slips a finite amount; STATEV(2) = slip/DTIME saturates at f64::MAX like
+/// the plain law's, never ∞.
+#[test]
+fn extended_slip_rate_saturates_over_a_subnormal_dtime() {
+    let mut c = FricCall::new(2, &[1.0, 2524902.34375, 49.881744384765625, 0.0, 0.0]);
+    c.tau[..2].copy_from_slice(&[49.88, 49.88]);
+    c.dgam[..2].copy_from_slice(&[49.88, 49.88]);
+    c.press = 0.0;
+    c.dpress = 2.5e10;
+    c.dtime = f64::MIN_POSITIVE;
+    c.chrlngth = f64::MIN_POSITIVE;
+    c.call();
+    assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+    assert!(
+        c.statev[..3].iter().all(|x| x.is_finite()),
+        "{:?}",
+        c.statev
+    );
+    assert_eq!(c.statev[1], f64::MAX);
+}

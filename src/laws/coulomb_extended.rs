@@ -687,9 +687,11 @@ impl ExtendedCoulomb {
         check_outputs(&out, &ddtdtheta)?;
         let slip = norm(&out.dslip);
         let coulomb = CoulombState {
-            accumulated_slip: state.coulomb.accumulated_slip + slip,
+            // Both saturate at f64::MAX (docs/props.md), as the plain law's do: a finite slip over
+            // a subnormal DTIME would otherwise store ∞ (fuzz, fric target).
+            accumulated_slip: (state.coulomb.accumulated_slip + slip).min(f64::MAX),
             slip_rate: if rate_dt > 0.0 {
-                slip_eq / rate_dt
+                (slip_eq / rate_dt).min(f64::MAX)
             } else {
                 0.0
             },
