@@ -12,6 +12,13 @@
 //! table = [[0.0, 1.0], [100.0, 3.0]]      # [p, k] rows; [p, k, θ̄] for temperature dependence
 //! ```
 //!
+//! It also holds the μ tables of `fric_`/`fric_coef_` (`PROPS(8) = 2`), looked up the same way:
+//!
+//! ```toml
+//! [interactions.SI1.friction]
+//! table = [[0.5, 0.0], [0.3, 2.0]]        # [μ, γ̇] rows; [μ, γ̇, p] or [μ, γ̇, p, θ̄] too
+//! ```
+//!
 //! The full schema is in `docs/config.md`.
 
 use std::collections::BTreeMap;
@@ -21,6 +28,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::LawError;
+use crate::laws::friction_table::FrictionTable;
 use crate::laws::gap_conductance::{Conduction, GapLaw};
 use crate::laws::gap_radiation::Radiation;
 use crate::laws::table::{Table1, TemperatureTable};
@@ -46,6 +54,13 @@ struct FileSpec {
 struct InteractionSpec {
     conductance: Option<Spanned<ConductanceSpec>>,
     radiation: Option<Spanned<RadiationSpec>>,
+    friction: Option<Spanned<FrictionSpec>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FrictionSpec {
+    table: Spanned<Vec<Spanned<Vec<f64>>>>,
 }
 
 #[derive(Deserialize)]
@@ -83,6 +98,9 @@ pub struct Config {
     /// eight-byte keys and compares names only on a key match.
     gap_keys: Vec<u64>,
     fallback: Option<GapLaw>,
+    /// (name as written, [`name_key`] of the name, μ table), like `gap_laws`.
+    friction_tables: Vec<(String, u64, FrictionTable)>,
+    friction_fallback: Option<FrictionTable>,
 }
 
 /// FNV-1a hash of a name's bytes, upper-cased: equal for names that match ignoring ASCII case.
@@ -139,10 +157,53 @@ impl Config {
         })?;
         let mut gap_laws: Vec<(String, GapLaw)> = Vec::new();
         let mut fallback = None;
+        let mut friction_tables = Vec::new();
+        let mut friction_fallback = None;
+        let mut names: Vec<&String> = Vec::new();
         for (name, entry) in &spec.interactions {
             let key = format!("interactions.{}", toml_key(name));
             let span = entry.span();
             let entry = entry.get_ref();
+            if name != FALLBACK {
+                if name.trim() != name || name.is_empty() {
+                    return Err(at.error(
+                        span,
+                        &key,
+                        "interaction names cannot be empty or begin or end with blanks",
+                    ));
+                }
+                if let Some(other) = names.iter().find(|n| n.eq_ignore_ascii_case(name)) {
+                    return Err(at.error(
+                        span,
+                        &key,
+                        &format!("the same interaction as \"{other}\" (names match ignoring case)"),
+                    ));
+                }
+                names.push(name);
+            }
+            if entry.conductance.is_none() && entry.radiation.is_none() && entry.friction.is_none()
+            {
+                return Err(at.error(
+                    span,
+                    &key,
+                    &format!(
+                        "neither a thermal law nor a friction table; give [{key}.conductance], \
+                         [{key}.radiation] and/or [{key}.friction]"
+                    ),
+                ));
+            }
+            if let Some(f) = &entry.friction {
+                let table =
+                    friction_table(&at, &format!("{key}.friction.table"), &f.get_ref().table)?;
+                if name == FALLBACK {
+                    friction_fallback = Some(table);
+                } else {
+                    friction_tables.push((name.clone(), name_key(name.as_bytes()), table));
+                }
+            }
+            if entry.conductance.is_none() && entry.radiation.is_none() {
+                continue;
+            }
             let conduction = entry
                 .conductance
                 .as_ref()
@@ -164,20 +225,6 @@ impl Config {
                 fallback = Some(law);
                 continue;
             }
-            if name.trim() != name || name.is_empty() {
-                return Err(at.error(
-                    span,
-                    &key,
-                    "interaction names cannot be empty or begin or end with blanks",
-                ));
-            }
-            if let Some((other, _)) = gap_laws.iter().find(|(n, _)| n.eq_ignore_ascii_case(name)) {
-                return Err(at.error(
-                    span,
-                    &key,
-                    &format!("the same interaction as \"{other}\" (names match ignoring case)"),
-                ));
-            }
             gap_laws.push((name.clone(), law));
         }
         let gap_keys = gap_laws
@@ -189,6 +236,8 @@ impl Config {
             gap_laws,
             gap_keys,
             fallback,
+            friction_tables,
+            friction_fallback,
         })
     }
 
@@ -218,6 +267,61 @@ impl Config {
             .map(|(_, (_, law))| law)
             .or(self.fallback.as_ref())
     }
+}
+
+impl Config {
+    /// The μ table of an interaction (`[interactions.NAME.friction]`), looked up as
+    /// [`Config::gap_law`] does, else the `"*"` entry's.
+    #[must_use]
+    pub fn friction_table(&self, name: &[u8]) -> Option<&FrictionTable> {
+        let name = trim_fortran_name(name);
+        let key = name_key(name);
+        self.friction_tables
+            .iter()
+            .find(|(n, k, _)| *k == key && n.as_bytes().eq_ignore_ascii_case(name))
+            .map(|(_, _, t)| t)
+            .or(self.friction_fallback.as_ref())
+    }
+}
+
+/// The μ table of `name` (a Fortran name) from the process-wide configuration, or why there is
+/// none.
+pub(crate) fn friction_table_for(name: &[u8]) -> Result<&'static FrictionTable, LawError> {
+    let cfg = global().as_ref().map_err(|m| {
+        LawError::Config(format!(
+            "PROPS(8) = 2 (μ table) needs the configuration file: {m}"
+        ))
+    })?;
+    cfg.friction_table(name).ok_or_else(|| {
+        let shown = String::from_utf8_lossy(trim_fortran_name(name));
+        LawError::Parameter(format!(
+            "PROPS(8) = 2 (μ table) but {} has no [interactions.{}.friction] (and no \"*\" \
+             entry)",
+            cfg.path(),
+            toml_key(&shown)
+        ))
+    })
+}
+
+/// Reads and validates a `[μ, γ̇(, p(, θ̄))]` table; errors point at the row's line.
+fn friction_table(
+    at: &Locator,
+    key: &str,
+    table: &Spanned<Vec<Spanned<Vec<f64>>>>,
+) -> Result<FrictionTable, String> {
+    let rows: Vec<Vec<f64>> = table
+        .get_ref()
+        .iter()
+        .map(|r| r.get_ref().clone())
+        .collect();
+    FrictionTable::new(&rows).map_err(|e| {
+        let span = e
+            .row
+            .checked_sub(1)
+            .and_then(|r| table.get_ref().get(r))
+            .map_or_else(|| table.span(), Spanned::span);
+        at.error(span, key, &e.message)
+    })
 }
 
 /// The process-wide configuration, read once from `$INTERFACIAL_CONFIG` at first use.

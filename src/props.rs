@@ -6,6 +6,7 @@ use crate::LawError;
 use crate::laws::coulomb::{Coulomb, CriticalSlip, DEFAULT_SLIP_TOLERANCE, StickMode};
 use crate::laws::coulomb_extended::{Damping, ExtendedCoulomb, Hht, SteadyTransport};
 use crate::laws::friction_coefficient::CoefficientLaw;
+use crate::laws::friction_table::FrictionTable;
 
 mod adhesive;
 pub(crate) use adhesive::adhesive_props;
@@ -274,6 +275,16 @@ fn coulomb(props: &[f64]) -> Result<Coulomb, LawError> {
 /// and the frozen-μ switch (`PROPS(20)`). Returns the plain [`Coulomb`] when nothing beyond it
 /// is switched on (the cheapest path).
 pub fn coulomb_extended(props: &[f64]) -> Result<FrictionLaw, LawError> {
+    coulomb_extended_with_table(props, None)
+}
+
+/// [`coulomb_extended`] with the μ table `PROPS(8) = 2` selects (the interaction's
+/// `[interactions.NAME.friction]` of the configuration file, looked up by the caller); without
+/// one, `PROPS(8) = 2` is refused.
+pub fn coulomb_extended_with_table(
+    props: &[f64],
+    table: Option<&'static FrictionTable>,
+) -> Result<FrictionLaw, LawError> {
     let get = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
     if let Some((i, v)) = props
         .iter()
@@ -345,9 +356,32 @@ pub fn coulomb_extended(props: &[f64]) -> Result<FrictionLaw, LawError> {
                 .with_exponential_decay(mu_k / mu, decay)
                 .map_err(|e| in_props(10, e))?;
         }
+        2.0 => {
+            let Some(table) = table else {
+                return Err(LawError::Parameter(
+                    "PROPS(8) = 2 (μ table from INTERFACIAL_CONFIG) is read by fric_ and \
+                     fric_coef_ only, which look the table up by interaction name"
+                        .into(),
+                ));
+            };
+            for i in 9..=13 {
+                if get(i) != 0.0 {
+                    return Err(unused_entry(
+                        i,
+                        get(i),
+                        "PROPS(8) = 2: the μ table carries the rate, pressure and temperature \
+                         dependence",
+                    ));
+                }
+            }
+            coefficient = coefficient
+                .with_table(table, mu)
+                .map_err(|e| in_props(2, e))?;
+        }
         other => {
             return Err(LawError::Parameter(format!(
-                "PROPS(8) = {other} must be the μ law 0 (constant) or 1 (exponential decay)"
+                "PROPS(8) = {other} must be the μ law 0 (constant), 1 (exponential decay) or 2 \
+                 (table)"
             )));
         }
     }

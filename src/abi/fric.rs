@@ -6,8 +6,10 @@ use super::{
     boundary, fortran_string, read, read_array, slice, write, write_array, write_matrix,
     write_zeros,
 };
+use crate::config::friction_table_for;
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
 use crate::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
+use crate::props::coulomb_extended_with_table;
 use crate::props::{FrictionLaw, extended_coulomb, friction_law, plain_coulomb};
 use crate::report::Site;
 use crate::{CUTBACK_RATIO, LawError};
@@ -243,7 +245,7 @@ unsafe fn fric_general(
     let _ = boundary(
         // SAFETY (all three closures): the pointers are the host's, valid per the contract above.
         || unsafe { site(ciname, ciname_len, noel, node, npt) },
-        || unsafe { args.run() },
+        || unsafe { args.run(ciname, ciname_len) },
         || unsafe { args.fail() },
     );
 }
@@ -303,7 +305,9 @@ impl FricArgs {
 
     /// Checks the sizes and the law once, then runs the NFDIR-specific code.
     #[inline(always)]
-    unsafe fn run(&self) -> Result<(), LawError> {
+    /// `ciname` (of `ciname_len` bytes) is read only when `PROPS(8) = 2` asks for the
+    /// interaction's μ table.
+    unsafe fn run(&self, ciname: *const c_char, ciname_len: usize) -> Result<(), LawError> {
         // SAFETY (whole body): pointers valid per the FRIC contract; every array is read with
         // the length the host declared, after that length was checked.
         unsafe {
@@ -330,7 +334,18 @@ impl FricArgs {
                     other => Err(bad_nfdir(other)),
                 };
             }
-            match friction_law(props)? {
+            let law = if props.get(7) == Some(&2.0) {
+                // μ table (PROPS(8) = 2): the interaction's, from the configuration file.
+                let name = if ciname.is_null() {
+                    &[][..]
+                } else {
+                    std::slice::from_raw_parts(ciname.cast::<u8>(), ciname_len)
+                };
+                coulomb_extended_with_table(props, Some(friction_table_for(name)?))?
+            } else {
+                friction_law(props)?
+            };
+            match law {
                 FrictionLaw::Coulomb(law) => {
                     let nstatv = self.nstatv()?;
                     match read(self.nfdir, "NFDIR")? {

@@ -5,8 +5,9 @@ use std::ffi::{c_char, c_int};
 
 use super::{boundary, fortran_string, read, slice};
 use crate::LawError;
+use crate::config::friction_table_for;
 use crate::laws::coulomb_extended::ExtendedCoulomb;
-use crate::props::{FrictionLaw, friction_law};
+use crate::props::{FrictionLaw, coulomb_extended_with_table, friction_law};
 use crate::report::Site;
 
 /// Number of derivative slots per point and direction in `fCoefDeriv(nBlock,20,2)`.
@@ -70,6 +71,8 @@ pub unsafe extern "C" fn fric_coef_(
         slip_data,
         pressure,
         temp_avg,
+        surf_int,
+        surf_int_len,
     };
     let _ = boundary(
         // SAFETY (all three closures): the host's pointers, valid per the contract above.
@@ -93,6 +96,9 @@ struct CoefArgs {
     slip_data: *const f64,
     pressure: *const f64,
     temp_avg: *const f64,
+    /// The interaction name (read only for a μ table, `PROPS(8) = 2`).
+    surf_int: *const c_char,
+    surf_int_len: usize,
 }
 
 impl CoefArgs {
@@ -113,7 +119,19 @@ impl CoefArgs {
                     "nProps = {nprops} is negative"
                 )));
             };
-            let law = match friction_law(slice(self.props, nprops, "props")?)? {
+            let props = slice(self.props, nprops, "props")?;
+            let law = if props.get(7) == Some(&2.0) {
+                // μ table (PROPS(8) = 2): the interaction's, from the configuration file.
+                let name = if self.surf_int.is_null() {
+                    &[][..]
+                } else {
+                    std::slice::from_raw_parts(self.surf_int.cast::<u8>(), self.surf_int_len)
+                };
+                coulomb_extended_with_table(props, Some(friction_table_for(name)?))?
+            } else {
+                friction_law(props)?
+            };
+            let law = match law {
                 FrictionLaw::Coulomb(base) => ExtendedCoulomb::new(base),
                 FrictionLaw::CoulombExtended(law) => law,
                 FrictionLaw::Adhesive(_) => {
@@ -131,7 +149,7 @@ impl CoefArgs {
                 let ntemp = read(self.ntemp, "nTemp")?;
                 if ntemp < 1 {
                     return Err(LawError::Input(format!(
-                        "μ depends on temperature (PROPS(12)) but nTemp = {ntemp}"
+                        "μ depends on temperature (PROPS(12) or the μ table) but nTemp = {ntemp}"
                     )));
                 }
                 Some(slice(self.temp_avg, n, "tempAvg")?)

@@ -27,7 +27,7 @@ use super::coulomb::{
     Contact, Coulomb, CoulombState, EXACT_STICK_TANGENT_FLOOR, EntryFlag, FrictionStatus,
     Increment, StickMode, Traction,
 };
-use super::friction_coefficient::{CoefficientLaw, Factor};
+use super::friction_coefficient::{CoefficientLaw, Factor, decay_phi};
 use super::scalar_root::{RootFailure, bracketed_newton, halley_on_known_bracket};
 use super::small_vec::{all_finite, dot, norm, scale, unit};
 use crate::{LawError, Outcome};
@@ -687,8 +687,8 @@ impl ExtendedCoulomb {
         check_outputs(&out, &ddtdtheta)?;
         let slip = norm(&out.dslip);
         let coulomb = CoulombState {
-            // Saturated at f64::MAX, as in the plain law: a finite slip over a subnormal DTIME
-            // must not store ∞ in STATEV (fuzz target `fric`).
+            // Both saturate at f64::MAX (docs/props.md), as the plain law's do: a finite slip over
+            // a subnormal DTIME would otherwise store ∞ (fuzz, fric target).
             accumulated_slip: (state.coulomb.accumulated_slip + slip).min(f64::MAX),
             slip_rate: if rate_dt > 0.0 {
                 (slip_eq / rate_dt).min(f64::MAX)
@@ -884,19 +884,8 @@ impl ExtendedCoulomb {
         let n = unit(&predictor, g);
         let rate_law = self.coefficient.is_rate_dependent() && !frozen;
         let (slip_eq, crit, iterations) = if rate_law {
-            // The last evaluation is kept: the solve usually stops at an evaluated point.
-            let mut last = (f64::NAN, Critical::default());
             // One division per solve, not three per iteration.
             let per_dt = 1.0 / rate_dt;
-            let residual = |x: f64| {
-                let c = self.critical(mbar, x * per_dt, p, theta);
-                last = (x, c);
-                (
-                    stiffness * (g - x) - c.value,
-                    -stiffness - c.d_rate * per_dt,
-                    -c.d_rate2 * per_dt * per_dt,
-                )
-            };
             // F(0) = k̄_s γ̄_eq^pr − τ̄_crit(0) > 0 (slip) and F(γ̄_eq^pr) = −τ̄_crit ≤ 0: the
             // root is bracketed. Start from the slip at the start-of-increment rate (exact in
             // steady sliding), else from the rate-free answer s = γ̄_eq^pr − γ_crit; stop at the
@@ -906,22 +895,95 @@ impl ExtendedCoulomb {
             } else {
                 g - gamma_crit
             };
-            let root = halley_on_known_bracket(
-                residual,
-                g,
-                0.0,
-                guess,
-                4.0 * f64::EPSILON * g,
-                8.0 * f64::EPSILON * (stiffness * g + k.value),
-                MAX_LOCAL_ITERATIONS,
-            )
-            .map_err(|e| local_solve_failed(e, g, rate_dt))?;
-            let c = if last.0 == root.x {
-                last.1
+            let x_tol = 4.0 * f64::EPSILON * g;
+            let f_tol = 8.0 * f64::EPSILON * (stiffness * g + k.value);
+            let split = if p >= 0.0 {
+                self.coefficient.split_decay(p, theta)
             } else {
-                self.critical(mbar, root.x * per_dt, p, theta)
+                None
             };
-            (root.x, c, root.iterations)
+            if let Some(([pt, pt_p, pt_t], (r, d))) = split {
+                // The decay law: τ̄_crit = A·φ(s/Δt) below τ_max, A = μ̄·π(p)·Θ(θ̄)·p fixed
+                // during the solve, so each evaluation is one exp and a few products; the
+                // partials in p and θ̄ are formed once, at the root.
+                let tau_max = self.base.shear_limit().unwrap_or(f64::INFINITY);
+                let a = mbar * pt * p;
+                let mut last = (f64::NAN, 0.0, 0.0);
+                let residual = |x: f64| {
+                    let (phi, dphi, ddphi) = decay_phi(r, d, x * per_dt);
+                    last = (x, phi, dphi);
+                    let tc = a * phi;
+                    if tc >= tau_max {
+                        (stiffness * (g - x) - tau_max, -stiffness, 0.0)
+                    } else {
+                        (
+                            stiffness * (g - x) - tc,
+                            -stiffness - a * dphi * per_dt,
+                            -a * ddphi * per_dt * per_dt,
+                        )
+                    }
+                };
+                let root = halley_on_known_bracket(
+                    residual,
+                    g,
+                    0.0,
+                    guess,
+                    x_tol,
+                    f_tol,
+                    MAX_LOCAL_ITERATIONS,
+                )
+                .map_err(|e| local_solve_failed(e, g, rate_dt))?;
+                let (phi, dphi) = if last.0 == root.x {
+                    (last.1, last.2)
+                } else {
+                    let (phi, dphi, _) = decay_phi(r, d, root.x * per_dt);
+                    (phi, dphi)
+                };
+                let c = if a * phi >= tau_max {
+                    Critical {
+                        value: tau_max,
+                        ..Critical::default()
+                    }
+                } else {
+                    let mp = mbar * p;
+                    Critical {
+                        value: a * phi,
+                        d_rate: a * dphi,
+                        d_rate2: 0.0,
+                        d_pressure: mbar * phi * pt + mp * (phi * pt_p),
+                        d_temperature: mp * (phi * pt_t),
+                    }
+                };
+                (root.x, c, root.iterations)
+            } else {
+                // The last evaluation is kept: the solve usually stops at an evaluated point.
+                let mut last = (f64::NAN, Critical::default());
+                let residual = |x: f64| {
+                    let c = self.critical(mbar, x * per_dt, p, theta);
+                    last = (x, c);
+                    (
+                        stiffness * (g - x) - c.value,
+                        -stiffness - c.d_rate * per_dt,
+                        -c.d_rate2 * per_dt * per_dt,
+                    )
+                };
+                let root = halley_on_known_bracket(
+                    residual,
+                    g,
+                    0.0,
+                    guess,
+                    x_tol,
+                    f_tol,
+                    MAX_LOCAL_ITERATIONS,
+                )
+                .map_err(|e| local_solve_failed(e, g, rate_dt))?;
+                let c = if last.0 == root.x {
+                    last.1
+                } else {
+                    self.critical(mbar, root.x * per_dt, p, theta)
+                };
+                (root.x, c, root.iterations)
+            }
         } else if self.general {
             // The general path with a rate-free μ: the same solve (converges in one step).
             let c = stick_crit;

@@ -13,10 +13,15 @@
 //!   so that μp saturates smoothly at μ_s·p_ref (a smooth counterpart of τ_max);
 //! - Θ, temperature: Θ = exp(−b_θ·(θ̄ − θ_ref)), softening (b_θ > 0) or hardening (b_θ < 0).
 //!
+//! - or, replacing all three, a table μ_tab(γ̇, p, θ̄) from the configuration file
+//!   ([`FrictionTable`], Abaqus `*FRICTION` data lines): f = μ_tab/μ_ref with μ_ref = `PROPS(2)`,
+//!   so that direction 1 has μ₁ = μ_tab.
+//!
 //! With anisotropy every direction's coefficient is multiplied by the same factors, so the
 //! ratio μ₁/μ₂ (and with it the scaling of Eq. 5.2.3-10/11) is constant.
 
 use crate::LawError;
+use crate::laws::friction_table::FrictionTable;
 
 /// How μ depends on the equivalent slip rate γ̇_eq.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -29,6 +34,14 @@ pub enum RateLaw {
         kinetic_ratio: f64,
         /// d_c > 0 (time per length).
         decay: f64,
+    },
+    /// μ = μ_tab(γ̇, p, θ̄) from the configuration file; f = μ_tab/μ_ref (replaces the pressure
+    /// and temperature factors too).
+    Table {
+        /// The validated table (it lives as long as the process-wide configuration).
+        table: &'static FrictionTable,
+        /// 1/μ_ref, μ_ref = `PROPS(2)` > 0.
+        inv_mu_ref: f64,
     },
 }
 
@@ -126,6 +139,32 @@ impl CoefficientLaw {
         Ok(self)
     }
 
+    /// μ from a table: f = μ_tab(γ̇, p, θ̄)/μ_ref, μ_ref > 0 (the μ the direction-1 coefficient is
+    /// given as). The pressure and temperature factors must be off.
+    pub fn with_table(
+        mut self,
+        table: &'static FrictionTable,
+        mu_ref: f64,
+    ) -> Result<Self, LawError> {
+        if !(mu_ref.is_finite() && mu_ref > 0.0) {
+            return Err(LawError::Parameter(format!(
+                "reference coefficient μ_ref = {mu_ref} must be finite and > 0 with a μ table"
+            )));
+        }
+        if self.pressure_ref.is_finite() || self.temperature_slope != 0.0 {
+            return Err(LawError::Parameter(
+                "a μ table carries its own pressure and temperature dependence; the pressure \
+                 and temperature factors must be off"
+                    .into(),
+            ));
+        }
+        self.rate = RateLaw::Table {
+            table,
+            inv_mu_ref: 1.0 / mu_ref,
+        };
+        Ok(self)
+    }
+
     /// Pressure dependence π = 1/(1 + p/p_ref), p_ref > 0.
     pub fn with_pressure_reference(mut self, p_ref: f64) -> Result<Self, LawError> {
         if !(p_ref.is_finite() && p_ref > 0.0) {
@@ -165,12 +204,38 @@ impl CoefficientLaw {
     #[must_use]
     pub fn is_temperature_dependent(&self) -> bool {
         self.temperature_slope != 0.0
+            || matches!(self.rate, RateLaw::Table { table, .. } if table.depends_on_temperature())
     }
 
     /// True when every factor is 1 (μ is the constant reference value).
     #[must_use]
     pub fn is_constant(&self) -> bool {
         *self == CoefficientLaw::default()
+    }
+
+    /// The rate-free part of the factor for the decay law, split for the local solve: when μ
+    /// follows the exponential decay law, `Some(((π·Θ, ∂(π·Θ)/∂p, ∂(π·Θ)/∂θ̄), (r, d_c)))`
+    /// (π and Θ do not change while the solve varies the rate, so they are evaluated once);
+    /// `None` for the other laws. `factor` = φ(γ̇)·π·Θ with φ from [`decay_phi`].
+    #[inline]
+    #[must_use]
+    pub fn split_decay(&self, pressure: f64, temperature: f64) -> Option<([f64; 3], (f64, f64))> {
+        let RateLaw::ExponentialDecay {
+            kinetic_ratio,
+            decay,
+        } = self.rate
+        else {
+            return None;
+        };
+        let f = CoefficientLaw {
+            rate: RateLaw::Constant,
+            ..*self
+        }
+        .factor(0.0, pressure, temperature);
+        Some((
+            [f.value, f.d_pressure, f.d_temperature],
+            (kinetic_ratio, decay),
+        ))
     }
 
     /// f(γ̇, p, θ̄) and its partials. `rate` is the equivalent slip rate (≥ 0), `pressure` the
@@ -180,9 +245,12 @@ impl CoefficientLaw {
     #[inline]
     #[must_use]
     pub fn factor(&self, rate: f64, pressure: f64, temperature: f64) -> Factor {
+        if let RateLaw::Table { table, inv_mu_ref } = self.rate {
+            return table_factor(table, inv_mu_ref, rate, pressure, temperature);
+        }
         // φ(γ̇) = r + (1 − r)·exp(−d_c γ̇), φ' = −d_c (1 − r) exp(−d_c γ̇).
         let (phi, dphi, ddphi) = match self.rate {
-            RateLaw::Constant => (1.0, 0.0, 0.0),
+            RateLaw::Constant | RateLaw::Table { .. } => (1.0, 0.0, 0.0),
             RateLaw::ExponentialDecay {
                 kinetic_ratio: r,
                 decay: d,
@@ -214,6 +282,38 @@ impl CoefficientLaw {
             d_temperature: phi * pi * dtheta,
         }
     }
+}
+
+/// f = μ_tab/μ_ref of a table (piecewise linear: no second derivative). Out of line, so that
+/// the table lookup does not make [`CoefficientLaw::factor`] too large to inline for the
+/// closed-form laws.
+#[inline(never)]
+fn table_factor(
+    table: &FrictionTable,
+    inv_mu_ref: f64,
+    rate: f64,
+    pressure: f64,
+    temperature: f64,
+) -> Factor {
+    let v = table.eval(rate, pressure, temperature);
+    Factor {
+        value: v.mu * inv_mu_ref,
+        d_rate: v.d_rate * inv_mu_ref,
+        d_rate2: 0.0,
+        d_pressure: v.d_pressure * inv_mu_ref,
+        d_temperature: v.d_temperature * inv_mu_ref,
+    }
+}
+
+/// φ(γ̇) = r + (1 − r)·exp(−d_c γ̇) of the decay law with φ' and φ'' (the same expression as
+/// [`CoefficientLaw::factor`] uses).
+#[inline(always)]
+#[must_use]
+pub fn decay_phi(kinetic_ratio: f64, decay: f64, rate: f64) -> (f64, f64, f64) {
+    let (r, d) = (kinetic_ratio, decay);
+    let e = if rate > 0.0 { (-d * rate).exp() } else { 1.0 };
+    let a = (1.0 - r) * e;
+    (r + a, -d * a, d * d * a)
 }
 
 #[cfg(test)]

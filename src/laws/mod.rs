@@ -5,6 +5,7 @@ pub mod adhesive_interface;
 pub mod coulomb;
 pub mod coulomb_extended;
 pub mod friction_coefficient;
+pub mod friction_table;
 pub mod gap_conductance;
 pub mod gap_radiation;
 pub mod scalar_root;
