@@ -60,6 +60,19 @@ pub fn plain_coulomb(props: &[f64]) -> Option<Coulomb> {
     coulomb_fast(props)
 }
 
+/// [`plain_coulomb`], and also the adhesive law's Coulomb special case (`PROPS(1) = 2` with
+/// S_a = k_μ = v_½ = 0 and μ_s = μ_d, which `fric_` runs as the Coulomb law itself): the hot
+/// path of `fric_`. The adhesive layout is only looked at when the plain one did not match,
+/// out of line, so the plain law costs the same.
+#[inline(always)]
+#[must_use]
+pub fn plain_coulomb_or_special_case(props: &[f64]) -> Option<Coulomb> {
+    match coulomb_fast(props) {
+        Some(law) => Some(law),
+        None => adhesive::adhesive_coulomb_special_case(props),
+    }
+}
+
 /// A valid extended law-1 `PROPS` (anisotropy or `PROPS(8..20)`), else `None` (the plain law
 /// and invalid `PROPS` included): the second hot path of `fric_`.
 #[inline(always)]
