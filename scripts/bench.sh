@@ -231,6 +231,8 @@ gfortran ${fflags[*]} -o bench_adhesive bench_adhesive.o fric_nop.o target/relea
 
 EOF
   cat bench_adhesive.txt
+  cat <<EOF
+
 ## Rate-dependent friction: \`fric_\` with the decay law against constant μ
 
 [\`bench/bench_rate.f90\`](../bench/bench_rate.f90): the same host loop, NFDIR = 2, 4096 points

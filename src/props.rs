@@ -61,6 +61,19 @@ pub fn plain_coulomb(props: &[f64]) -> Option<Coulomb> {
     coulomb_fast(props)
 }
 
+/// [`plain_coulomb`], and also the adhesive law's Coulomb special case (`PROPS(1) = 2` with
+/// S_a = k_μ = v_½ = 0 and μ_s = μ_d, which `fric_` runs as the Coulomb law itself): the hot
+/// path of `fric_`. The adhesive layout is only looked at when the plain one did not match,
+/// out of line, so the plain law costs the same.
+#[inline(always)]
+#[must_use]
+pub fn plain_coulomb_or_special_case(props: &[f64]) -> Option<Coulomb> {
+    match coulomb_fast(props) {
+        Some(law) => Some(law),
+        None => adhesive::adhesive_coulomb_special_case(props),
+    }
+}
+
 /// A valid extended law-1 `PROPS` (anisotropy or `PROPS(8..20)`), else `None` (the plain law
 /// and invalid `PROPS` included): the second hot path of `fric_`.
 #[inline(always)]
@@ -73,28 +86,55 @@ pub fn extended_coulomb(props: &[f64]) -> Option<ExtendedCoulomb> {
 }
 
 /// The common case of [`friction_law`]: a valid Coulomb `PROPS`, or `None`.
+///
+/// The full layout (`NPROPS = 7`, what hosts pass) is read straight from the array; a shorter
+/// one is padded with zeros (the documented defaults) out of line.
 #[inline(always)]
 fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
-    if props.len() < 2 || props.len() > COULOMB_NPROPS || props[0] != f64::from(LAW_COULOMB) {
+    let e = match <&[f64; COULOMB_NPROPS]>::try_from(props) {
+        Ok(all) => *all,
+        Err(_) => coulomb_props_padded(props)?,
+    };
+    let [code, mu, mu2, tau_max, gamma_crit, tolerance, stick] = e;
+    // μ finite and ≥ 0; τ_max, γ_crit and the tolerance "0 (off / default) or finite and > 0":
+    // all four are 0 ≤ v < ∞. Adding +0 turns −0 into +0; after that a value is in range
+    // exactly when its sign bit is clear and its exponent is not all ones, i.e. when neither
+    // its bits nor its bits + 2⁵² have the top bit set. OR-ing those over the four values
+    // gives all four range tests in one test of the top bit (plain integer operations, no
+    // branch per value).
+    let out_of_range = |v: f64| {
+        let b = (v + 0.0).to_bits();
+        b | b.wrapping_add(1 << 52)
+    };
+    let flags = out_of_range(mu)
+        | out_of_range(tau_max)
+        | out_of_range(gamma_crit)
+        | out_of_range(tolerance);
+    let valid = code == f64::from(LAW_COULOMB) && flags >> 63 == 0 && (mu2 == 0.0 || mu2 == mu);
+    if !valid {
         return None;
     }
-    let get = |i: usize| if i < props.len() { props[i] } else { 0.0 };
-    let (mu, mu2, tau_max) = (props[1], get(2), get(3));
-    let (gamma_crit, tolerance, stick) = (get(4), get(5), get(6));
-    // "0 (feature off / default) or finite and > 0"
-    let off_or_positive = |v: f64| v == 0.0 || (v > 0.0 && v < f64::INFINITY);
-    let valid = (0.0..f64::INFINITY).contains(&mu)
-        && (mu2 == 0.0 || mu2 == mu)
-        && off_or_positive(tau_max)
-        && off_or_positive(gamma_crit)
-        && off_or_positive(tolerance);
     let stick = match stick {
         0.0 => StickMode::Elastic,
         1.0 => StickMode::Exact,
         2.0 => StickMode::Rough,
         _ => return None,
     };
-    valid.then(|| Coulomb::from_validated(mu, tau_max, gamma_crit, tolerance, stick))
+    Some(Coulomb::from_validated(
+        mu, tau_max, gamma_crit, tolerance, stick,
+    ))
+}
+
+/// `PROPS(1..NPROPS)` with 2 ≤ NPROPS < 7, padded with zeros to the Coulomb layout; `None`
+/// for other lengths (the checked path then names the problem).
+#[inline(never)]
+fn coulomb_props_padded(props: &[f64]) -> Option<[f64; COULOMB_NPROPS]> {
+    if props.len() < 2 || props.len() > COULOMB_NPROPS {
+        return None;
+    }
+    let mut e = [0.0; COULOMB_NPROPS];
+    e[..props.len()].copy_from_slice(props);
+    Some(e)
 }
 
 /// The extended law-1 layout (`PROPS(3)`, `PROPS(8..20)`) when valid, else `None` (the
@@ -510,6 +550,49 @@ mod tests {
                 // Anisotropy or an extended entry: not the fast path's business.
                 (None, Ok(_)) => {}
                 (Some(_), Err(e)) => prop_assert!(false, "fast path accepted {props:?}: {e}"),
+            }
+        }
+    }
+
+    /// The edges of the fast path's one-compare range test (0 ≤ v < ∞ for μ, τ_max, γ_crit
+    /// and the tolerance), value by value in every position, against the checked path.
+    #[test]
+    fn fast_path_range_edges_agree_with_checked_path() {
+        let edges = [
+            0.0,
+            -0.0,
+            f64::MIN_POSITIVE,
+            5e-324,
+            f64::MAX,
+            1.0,
+            -5e-324,
+            -1.0,
+            f64::MIN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            -f64::NAN,
+        ];
+        for position in [1, 3, 4, 5] {
+            for v in edges {
+                let mut props = vec![1.0, 0.3, 0.0, 0.0, 1e-3, 0.0, 0.0];
+                props[position] = v;
+                let fast = coulomb_fast(&props);
+                match friction_law_checked(&props) {
+                    Ok(FrictionLaw::Coulomb(c)) => {
+                        assert_eq!(fast, Some(c), "PROPS({}) = {v:e}", position + 1);
+                    }
+                    other => assert!(
+                        fast.is_none(),
+                        "PROPS({}) = {v:e}: fast {fast:?}, checked {other:?}",
+                        position + 1
+                    ),
+                }
+                // Short PROPS (padded out of line) when the entry is within them.
+                props.truncate(position + 1);
+                let short_checked =
+                    matches!(friction_law_checked(&props), Ok(FrictionLaw::Coulomb(_)));
+                assert_eq!(coulomb_fast(&props).is_some(), short_checked);
             }
         }
     }

@@ -10,7 +10,7 @@ use crate::config::friction_table_for;
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
 use crate::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
 use crate::props::coulomb_extended_with_table;
-use crate::props::{FrictionLaw, extended_coulomb, friction_law, plain_coulomb};
+use crate::props::{FrictionLaw, extended_coulomb, friction_law, plain_coulomb_or_special_case};
 use crate::report::Site;
 use crate::{CUTBACK_RATIO, LawError};
 
@@ -161,8 +161,9 @@ pub unsafe extern "C" fn fric_(
     );
 }
 
-/// The plain law-1 `PROPS`, or `None` (also for a NULL or negative NPROPS/PROPS, which the
-/// general path then reports).
+/// The plain law-1 `PROPS` (or the adhesive law's Coulomb special case, which runs the same
+/// code), or `None` (also for a NULL or negative NPROPS/PROPS, which the general path then
+/// reports).
 ///
 /// # Safety
 /// `nprops` is NULL or readable; `props` is NULL or holds NPROPS reals.
@@ -171,7 +172,7 @@ unsafe fn plain_props(props: *const f64, nprops: *const c_int) -> Option<Coulomb
     // SAFETY: as documented.
     unsafe {
         let n = usize::try_from(read(nprops, "NPROPS").ok()?).ok()?;
-        plain_coulomb(slice(props, n, "PROPS").ok()?)
+        plain_coulomb_or_special_case(slice(props, n, "PROPS").ok()?)
     }
 }
 

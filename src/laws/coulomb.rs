@@ -518,14 +518,16 @@ fn check_increment<const N: usize>(inc: &Increment<N>, stick: StickMode) -> Resu
     if probe == 0.0 {
         Ok(())
     } else {
-        Err(name_bad_input(inc, stick))
+        // By value: a reference would make the hot path keep the increment in memory.
+        Err(name_bad_input(*inc, stick))
     }
 }
 
 /// Names the first non-finite input (the slow path of [`check_increment`]).
 #[cold]
 #[inline(never)]
-fn name_bad_input<const N: usize>(inc: &Increment<N>, stick: StickMode) -> LawError {
+#[allow(clippy::needless_pass_by_value)]
+fn name_bad_input<const N: usize>(inc: Increment<N>, stick: StickMode) -> LawError {
     let what = if !inc.pressure.is_finite() {
         "PRESS"
     } else if !inc.dpressure.is_finite() {

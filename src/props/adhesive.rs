@@ -5,6 +5,7 @@
 use crate::LawError;
 use crate::laws::adhesive::{Adhesive, AdhesiveParameters};
 use crate::laws::adhesive_interface::AdhesiveInterface;
+use crate::laws::coulomb::{Coulomb, StickMode};
 
 use super::FrictionLaw;
 
@@ -68,6 +69,67 @@ impl AdhesiveProps {
 #[inline(always)]
 pub(crate) fn adhesive_fast(props: &[f64]) -> Option<FrictionLaw> {
     adhesive_props_fast(props).map(AdhesiveProps::into_friction_law)
+}
+
+/// The Coulomb law of a valid adhesive `PROPS` in its Coulomb special case, else `None` (any
+/// other adhesive `PROPS`, or not the adhesive law at all). Out of line: called by `fric_`'s
+/// plain path only when `PROPS` is not the plain Coulomb layout.
+///
+/// Decides with plain comparisons, like [`adhesive_props_fast`] (a property test checks that
+/// it agrees with that function followed by [`Adhesive::coulomb_special_case`]).
+#[inline(never)]
+pub(crate) fn adhesive_coulomb_special_case(props: &[f64]) -> Option<Coulomb> {
+    let e = match <&[f64; ADHESIVE_NPROPS]>::try_from(props) {
+        Ok(all) => *all,
+        Err(_) => {
+            if props.len() < 2 || props.len() > ADHESIVE_NPROPS {
+                return None;
+            }
+            // Absent entries read as 0 (an absent PROPS(3) means "no μ_s", as 0 does).
+            let mut e = [0.0; ADHESIVE_NPROPS];
+            e[..props.len()].copy_from_slice(props);
+            e
+        }
+    };
+    let [
+        code,
+        mu_d,
+        mu_s,
+        sa,
+        na,
+        kmu,
+        vhalf,
+        gamma_crit,
+        tolerance,
+        kn,
+        conductance,
+        eta,
+        f,
+    ] = e;
+    // 0 ≤ v < ∞ for μ_d, N_a, γ_crit, the tolerance and K_n, in one test of the top bit (as
+    // the Coulomb fast path in props.rs: +0 turns −0 into +0, then a value is in range
+    // exactly when neither its bits nor its bits + 2⁵² have the top bit set).
+    let out_of_range = |v: f64| {
+        let b = (v + 0.0).to_bits();
+        b | b.wrapping_add(1 << 52)
+    };
+    let flags = out_of_range(mu_d)
+        | out_of_range(na)
+        | out_of_range(gamma_crit)
+        | out_of_range(tolerance)
+        | out_of_range(kn);
+    // The special case: S_a = k_μ = v_½ = 0 and μ_s = μ_d (no static coefficient: PROPS(3)
+    // finite and ≤ 0, or equal to μ_d).
+    let special = code == f64::from(LAW_ADHESIVE)
+        && flags >> 63 == 0
+        && sa == 0.0
+        && kmu == 0.0
+        && vhalf == 0.0
+        && ((mu_s <= 0.0 && mu_s > f64::NEG_INFINITY) || mu_s == mu_d)
+        && (conductance == 0.0 || conductance == 1.0)
+        && (0.0..=1.0).contains(&eta)
+        && (0.0..=1.0).contains(&f);
+    special.then(|| Coulomb::from_validated(mu_d, 0.0, gamma_crit, tolerance, StickMode::Elastic))
 }
 
 /// [`adhesive_fast`] before the special case is recognised.
@@ -262,6 +324,39 @@ mod tests {
                 (None, Ok(_)) => prop_assert!(props.len() > ADHESIVE_NPROPS),
                 (Some(_), Err(e)) => prop_assert!(false, "fast path accepted {props:?}: {e}"),
             }
+        }
+    }
+
+    fn special_case_entry() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            6 => Just(0.0),
+            1 => Just(-0.0),
+            2 => Just(0.3),
+            1 => Just(1.0),
+            1 => Just(-1.0),
+            1 => Just(f64::NAN),
+            1 => Just(f64::INFINITY),
+            1 => Just(f64::NEG_INFINITY),
+            1 => Just(f64::MAX),
+            1 => Just(5e-324),
+            1 => 0.0..2.0f64,
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 5000, failure_persistence: None, ..ProptestConfig::default() })]
+        /// The Coulomb special case recognised by `fric_`'s plain path is exactly the one the
+        /// full adhesive parse finds.
+        #[test]
+        fn special_case_agrees_with_the_full_parse(
+            mut props in prop::collection::vec(special_case_entry(), 0..15),
+            lead in prop::bool::ANY,
+        ) {
+            if lead && !props.is_empty() {
+                props[0] = 2.0;
+            }
+            let full = adhesive_props_fast(&props).and_then(|a| a.law.coulomb_special_case());
+            prop_assert_eq!(adhesive_coulomb_special_case(&props), full, "{:?}", props);
         }
     }
 
