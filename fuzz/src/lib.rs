@@ -4,4 +4,5 @@
 pub mod bytes;
 pub mod config_case;
 pub mod fric_case;
+pub mod fric_coef_case;
 pub mod gapcon_case;
