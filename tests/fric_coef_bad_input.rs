@@ -1,4 +1,4 @@
-//! The bad-input catalogue (docs/bad-input.md, rows 52–66) for `fric_coef_` (FRIC_COEF) and
+//! The bad-input catalogue (docs/bad-input.md, rows 68–82) for `fric_coef_` (FRIC_COEF) and
 //! `ifl_forced_sliding`, through the real symbols with exactly sized arrays. Each case also
 //! passes the `fric_coef` fuzz target's property check (compiled in from `fuzz/src` by path):
 //! inputs unchanged, a refusal zeroes the block / the outputs and names the routine, a success
@@ -80,7 +80,7 @@ fn same_bits(a: &CoefOutputs, b: &CoefOutputs) -> bool {
     bits(a) == bits(b)
 }
 
-/// Row 52: a slip rate NaN, ±Inf or negative, at any point.
+/// Row 68: a slip rate NaN, ±Inf or negative, at any point.
 #[test]
 fn fric_coef_bad_slip_rate_is_refused() {
     for k in 0..3 {
@@ -92,7 +92,7 @@ fn fric_coef_bad_slip_rate_is_refused() {
     }
 }
 
-/// Row 53: a pressure NaN or ±Inf.
+/// Row 69: a pressure NaN or ±Inf.
 #[test]
 fn fric_coef_non_finite_pressure_is_refused() {
     for k in 0..3 {
@@ -104,7 +104,7 @@ fn fric_coef_non_finite_pressure_is_refused() {
     }
 }
 
-/// Row 54: a temperature NaN or ±Inf is refused with a temperature law and not read without.
+/// Row 70: a temperature NaN or ±Inf is refused with a temperature law and not read without.
 #[test]
 fn fric_coef_non_finite_temperature() {
     let mut constant = all_laws();
@@ -123,7 +123,7 @@ fn fric_coef_non_finite_temperature() {
     }
 }
 
-/// Row 55: NaN or ±Inf in what FRIC_COEF never reads (slipData(k,2..6), rData, fieldAvg) has
+/// Row 71: NaN or ±Inf in what FRIC_COEF never reads (slipData(k,2..6), rData, fieldAvg) has
 /// no effect on any output bit.
 #[test]
 fn fric_coef_unread_reals_have_no_effect() {
@@ -140,7 +140,7 @@ fn fric_coef_unread_reals_have_no_effect() {
     }
 }
 
-/// Row 56: NULL pointers. Read ones are refused and named; a NULL output array is refused
+/// Row 72: NULL pointers. Read ones are refused and named; a NULL output array is refused
 /// before anything is written (fuzz crash C1); a NULL nBlock writes nothing; nTemp and tempAvg
 /// may be NULL without a temperature law.
 #[test]
@@ -173,7 +173,7 @@ fn fric_coef_null_pointers() {
     }
 }
 
-/// Row 57: nBlock < 0 is refused and nothing written; nBlock = 0 is an empty block (PROPS still
+/// Row 73: nBlock < 0 is refused and nothing written; nBlock = 0 is an empty block (PROPS still
 /// checked).
 #[test]
 fn fric_coef_block_sizes() {
@@ -188,7 +188,7 @@ fn fric_coef_block_sizes() {
     }
 }
 
-/// Row 58: a temperature law with nTemp ≤ 0.
+/// Row 74: a temperature law with nTemp ≤ 0.
 #[test]
 fn fric_coef_temperature_law_needs_ntemp() {
     for nt in [0, -1] {
@@ -198,7 +198,7 @@ fn fric_coef_temperature_law_needs_ntemp() {
     }
 }
 
-/// Row 59: bad PROPS — sizes, non-finite entries, values out of range, entries not read, the
+/// Row 75: bad PROPS — sizes, non-finite entries, values out of range, entries not read, the
 /// adhesive law with its own features.
 #[test]
 fn fric_coef_bad_props() {
@@ -247,7 +247,7 @@ fn fric_coef_bad_props() {
     refused(&block(&[2.0, 0.3, 0.0, 1.0]), "PROPS(1) = 2");
 }
 
-/// Row 60: μ overflowing (Θ = exp(−b_θ(θ̄ − θ_ref)) past f64::MAX) is a numerical failure.
+/// Row 76: μ overflowing (Θ = exp(−b_θ(θ̄ − θ_ref)) past f64::MAX) is a numerical failure.
 #[test]
 fn fric_coef_overflow_is_refused() {
     let mut c = block(&all_laws());
@@ -255,7 +255,7 @@ fn fric_coef_overflow_is_refused() {
     refused(&c, "overflowed");
 }
 
-/// Row 61: a negative pressure is not an error: μ of p = 0, ∂μ/∂p = 0.
+/// Row 77: a negative pressure is not an error: μ of p = 0, ∂μ/∂p = 0.
 #[test]
 fn fric_coef_negative_pressure_uses_zero() {
     let p = all_laws();
@@ -303,7 +303,7 @@ fn slide_refused(case: &ForcedSlidingCase, status: IflStatus, needle: &str) {
     );
 }
 
-/// Row 62: velocity, pressure or temperature NaN or ±Inf.
+/// Row 78: velocity, pressure or temperature NaN or ±Inf.
 #[test]
 fn forced_sliding_non_finite_inputs() {
     for nfdir in [1, 2] {
@@ -321,7 +321,7 @@ fn forced_sliding_non_finite_inputs() {
     }
 }
 
-/// Row 63: NULL pointers.
+/// Row 79: NULL pointers.
 #[test]
 fn forced_sliding_null_pointers() {
     for (null, needle) in [
@@ -339,7 +339,7 @@ fn forced_sliding_null_pointers() {
     }
 }
 
-/// Row 64: nfdir other than 1 or 2, nprops < 0.
+/// Row 80: nfdir other than 1 or 2, nprops < 0.
 #[test]
 fn forced_sliding_bad_sizes() {
     for nfdir in [0, 3, -1] {
@@ -350,7 +350,7 @@ fn forced_sliding_bad_sizes() {
     slide_refused(&c, IflStatus::BadParameter, "nprops = -1 is negative");
 }
 
-/// Row 65: bad PROPS, as for FRIC_COEF.
+/// Row 81: bad PROPS, as for FRIC_COEF.
 #[test]
 fn forced_sliding_bad_props() {
     for i in 0..13 {
@@ -369,7 +369,7 @@ fn forced_sliding_bad_props() {
     );
 }
 
-/// Row 66: zero velocity and negative pressure are not errors (zeros); overflow is a numerical
+/// Row 82: zero velocity and negative pressure are not errors (zeros); overflow is a numerical
 /// failure with zeroed outputs.
 #[test]
 fn forced_sliding_edge_values() {
