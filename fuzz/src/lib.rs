@@ -5,5 +5,6 @@ pub mod batch_case;
 pub mod bytes;
 pub mod config_case;
 pub mod fric_case;
+pub mod fric_coef_case;
 pub mod gapcon_case;
 pub mod uinter_case;

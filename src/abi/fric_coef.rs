@@ -3,7 +3,7 @@
 
 use std::ffi::{c_char, c_int};
 
-use super::{boundary, fortran_string, read, slice};
+use super::{boundary, fortran_string, null_pointer, read, slice};
 use crate::LawError;
 use crate::config::friction_table_for;
 use crate::laws::coulomb_extended::ExtendedCoulomb;
@@ -142,6 +142,14 @@ impl CoefArgs {
             };
             if n == 0 {
                 return Ok(());
+            }
+            // The outputs are written through raw pointers below: refuse NULL ones first
+            // (fric_coef fuzz crash C1, docs/fuzzing.md).
+            if self.fcoef.is_null() {
+                return Err(null_pointer("fCoef"));
+            }
+            if self.fcoef_deriv.is_null() {
+                return Err(null_pointer("fCoefDeriv"));
             }
             let slip = slice(self.slip_data, 6 * n, "slipData")?;
             let pressure = slice(self.pressure, n, "pressure")?;

@@ -256,8 +256,15 @@ impl CoefficientLaw {
                 decay: d,
             } => {
                 // exp(−0) = 1 exactly: the rate-free value (stick stiffness) needs no exp.
-                let e = if rate > 0.0 { (-d * rate).exp() } else { 1.0 };
-                (r + (1.0 - r) * e, -d * (1.0 - r) * e, d * d * (1.0 - r) * e)
+                let (e, one_minus_e) = decay_terms(-d * rate);
+                // φ = e + r(1 − e): two terms ≥ 0, no cancellation. The form r + (1 − r)e
+                // lost φ(0) = 1 to round-off when r ≫ 1 (μ_k ≫ μ_s: μ = 0 at rest; fuzz
+                // target fric_coef, crash C2, docs/fuzzing.md).
+                (
+                    e + r * one_minus_e,
+                    -d * (1.0 - r) * e,
+                    d * d * (1.0 - r) * e,
+                )
             }
         };
         // π(p) = 1/(1 + p/p_ref), π' = −(1/p_ref) π².
@@ -311,9 +318,29 @@ fn table_factor(
 #[must_use]
 pub fn decay_phi(kinetic_ratio: f64, decay: f64, rate: f64) -> (f64, f64, f64) {
     let (r, d) = (kinetic_ratio, decay);
-    let e = if rate > 0.0 { (-d * rate).exp() } else { 1.0 };
+    let (e, one_minus_e) = if rate > 0.0 {
+        decay_terms(-d * rate)
+    } else {
+        (1.0, 0.0)
+    };
     let a = (1.0 - r) * e;
-    (r + a, -d * a, d * d * a)
+    // φ = e + r(1 − e) as in `factor` (no cancellation when r ≫ 1).
+    (e + r * one_minus_e, -d * a, d * d * a)
+}
+
+/// (e^x, 1 − e^x) for x ≤ 0, each to a few ulps with one exponential: near 0 through
+/// `exp_m1` (1 − e^x would cancel), elsewhere 1 − e^x ≥ 0.39 is exact enough. (1, 0) at x = 0.
+#[inline]
+fn decay_terms(x: f64) -> (f64, f64) {
+    if x == 0.0 {
+        (1.0, 0.0)
+    } else if x > -0.5 {
+        let m = x.exp_m1();
+        (1.0 + m, -m)
+    } else {
+        let e = x.exp();
+        (e, 1.0 - e)
+    }
 }
 
 #[cfg(test)]

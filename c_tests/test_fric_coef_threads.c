@@ -1,0 +1,406 @@
+/*
+ * fric_coef_ (Abaqus FRIC_COEF: the friction coefficient of a block of points and its
+ * derivatives) from 8 threads at once, compared bit for bit with a serial run of the same
+ * blocks (docs/threads-and-sanitizers.md).
+ *
+ * 16 384 blocks of 1..127 points (nBlock = 1 + b mod 127): 1 048 513 point evaluations per run.
+ * Every block has its own interaction (name "CF<b>") and its own law-1 PROPS drawn from a
+ * Lehmer generator (x <- 48271 x mod 2^31 - 1) seeded by the block's index, so a block's call
+ * does not depend on which thread makes it or when. Eight μ laws (docs/props.md):
+ *   0 constant isotropic, 1 constant anisotropic (PROPS(3)), 2 exponential decay (PROPS(8..10),
+ *   μ_k below or above μ_s), 3 decay + pressure (PROPS(11)), 4 decay + temperature
+ *   (PROPS(12..13), nTemp = 1), 5 pressure + temperature, anisotropic, 6 all of them,
+ *   7 a block with one bad point (NaN pressure or a negative slip rate): refused.
+ * Slip rates in [0, 5] (one in eight exactly 0), pressures in [-20, 300] (some negative),
+ * temperatures in [0, 200]. Every array is its own heap block of exactly the declared size
+ * (fCoef(nBlock,2), fCoefDeriv(nBlock,20,2), slipData(nBlock,6), ...), so an out-of-bounds
+ * access is an AddressSanitizer report in scripts/test-sanitizers.sh.
+ *
+ * Compared with the serial run: every output of every block (2 nBlock + 40 nBlock doubles),
+ * byte by byte, folded into a 64-bit FNV-1a digest per block; the 16 384 digests compared with
+ * memcmp; the counts of each kind of block. Checked on every block of both runs, against the
+ * closed form rather than the library:
+ *   μ_d = (μ_s,d e + μ_k,d (1 - e)) / (1 + p+/p_ref) · exp(-b (θ - θ_ref)), e = exp(-d_c γ̇),
+ *   μ_k,2 = μ_k μ₂/μ₁, to 1e-13 relative; ∂μ/∂γ̇ = -d_c (μ_s - μ_k) e π Θ for the decay law
+ *   (to 1e-12 of d_c μ_s); ∂μ/∂p = 0 for p < 0 and without p_ref; fCoefDeriv(k,4..20,d) = 0;
+ *   refused blocks: μ = 0 and every derivative 0, and this thread's ifl_last_error names
+ *   FRIC_COEF and the block's interaction.
+ *
+ * INTERFACIAL_TEST_SHRINK=n divides the number of blocks by n (valgrind, ASan runs).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <pthread.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+#include "interfacial.h"
+
+enum { N_THREADS = 8, FULL_BLOCKS = 16384, MAX_NBLOCK = 127, MIN_BLOCKS = 512, NPROPS = 13 };
+enum { N_LAWS = 8, LAW_BAD = 7 };
+static const char *const LAW_NAMES[N_LAWS] = {
+    "constant", "anisotropic", "decay", "decay+pressure", "decay+temperature",
+    "pressure+temperature anisotropic", "all", "refused"};
+
+/* ---- Lehmer generator (MINSTD): x <- 48271 x mod (2^31 - 1) ---------------------------- */
+#define LEHMER_M 2147483647u
+static uint32_t lehmer(uint32_t *x)
+{
+    *x = (uint32_t)(((uint64_t)*x * 48271u) % LEHMER_M);
+    return *x;
+}
+static double uniform(uint32_t *x, double lo, double hi)
+{
+    return lo + (hi - lo) * ((double)(lehmer(x) - 1u) / (double)(LEHMER_M - 1u));
+}
+
+/* ---- 64-bit FNV-1a over bytes ------------------------------------------------------------- */
+static uint64_t fnv1a(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *b = p;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        h ^= b[i];
+        h *= 1099511628211u;
+    }
+    return h;
+}
+
+typedef struct {
+    long kinds[N_LAWS];
+    long points;
+    long violations;
+    long alloc_fail;
+    char first_violation[256];
+} tally;
+
+static void violation(tally *t, int block, const char *what, double got, double want)
+{
+    if (t->violations++ == 0) {
+        snprintf(t->first_violation, sizeof t->first_violation,
+                 "block %d: %s: got %.17g, expected %.17g", block, what, got, want);
+    }
+}
+
+/* One block's law and inputs, all drawn from the block's own generator. */
+typedef struct {
+    int law, n, ntemp;
+    double props[NPROPS];
+    double *slip, *pressure, *temp;
+} block_in;
+
+static int draw_block(int b, block_in *in)
+{
+    uint32_t x = (uint32_t)b * 2654435761u % (LEHMER_M - 1u) + 1u;
+    int k, law, decay, pref, temp;
+    lehmer(&x);
+    law = (int)(lehmer(&x) % N_LAWS);
+    in->law = law;
+    in->n = 1 + b % MAX_NBLOCK;
+    memset(in->props, 0, sizeof in->props);
+    in->props[0] = 1.0;
+    in->props[1] = uniform(&x, 0.05, 0.9);
+    if (law == 1 || law == 5 || law == 6) {
+        in->props[2] = uniform(&x, 0.05, 0.9);
+    }
+    decay = law == 2 || law == 3 || law == 4 || law == 6 || law == LAW_BAD;
+    pref = law == 3 || law == 5 || law == 6;
+    temp = law == 4 || law == 5 || law == 6;
+    if (decay) {
+        in->props[7] = 1.0;
+        /* μ_k below μ_s mostly (decay), above it now and then (strengthening). */
+        in->props[8] = in->props[1] * uniform(&x, 0.0, lehmer(&x) % 4 == 0 ? 3.0 : 1.0);
+        in->props[9] = uniform(&x, 0.1, 10.0);
+    }
+    if (pref) {
+        in->props[10] = uniform(&x, 10.0, 500.0);
+    }
+    if (temp) {
+        in->props[11] = uniform(&x, -0.01, 0.01);
+        in->props[12] = uniform(&x, 0.0, 100.0);
+    }
+    in->ntemp = temp ? 1 : (int)(lehmer(&x) % 2);
+    in->slip = malloc(sizeof(double) * 6 * (size_t)in->n);
+    in->pressure = malloc(sizeof(double) * (size_t)in->n);
+    in->temp = malloc(sizeof(double) * (size_t)in->n);
+    if (in->slip == NULL || in->pressure == NULL || in->temp == NULL) {
+        return 0;
+    }
+    for (k = 0; k < 6 * in->n; k++) {
+        in->slip[k] = uniform(&x, 0.0, 5.0);
+    }
+    for (k = 0; k < in->n; k++) {
+        if (lehmer(&x) % 8 == 0) {
+            in->slip[k] = 0.0;
+        }
+        in->pressure[k] = uniform(&x, -20.0, 300.0);
+        in->temp[k] = uniform(&x, 0.0, 200.0);
+    }
+    if (law == LAW_BAD) {
+        k = (int)(lehmer(&x) % (uint32_t)in->n);
+        if (lehmer(&x) % 2 == 0) {
+            in->pressure[k] = NAN;
+        } else {
+            in->slip[k] = -uniform(&x, 0.1, 1.0);
+        }
+    }
+    return 1;
+}
+
+static void free_block(block_in *in)
+{
+    free(in->slip);
+    free(in->pressure);
+    free(in->temp);
+}
+
+/* The closed form of docs/props.md, written without the library's factorisation. */
+static void closed_form(const block_in *in, int k, double mu[2], double dmu_rate[2])
+{
+    const double *p = in->props;
+    double mu1 = p[1], mu2 = p[2] != 0.0 ? p[2] : p[1], pp = fmax(in->pressure[k], 0.0);
+    double e = 1.0, ome = 0.0, mk1 = 0.0, d = 0.0, pi = 1.0, th = 1.0, mk2;
+    if (p[7] == 1.0) {
+        d = p[9];
+        e = exp(-d * in->slip[k]);
+        ome = -expm1(-d * in->slip[k]);
+        mk1 = p[8];
+    }
+    mk2 = mk1 * mu2 / mu1;
+    if (p[10] > 0.0) {
+        pi = 1.0 / (1.0 + pp / p[10]);
+    }
+    if (p[11] != 0.0) {
+        th = exp(-p[11] * (in->temp[k] - p[12]));
+    }
+    mu[0] = (mu1 * e + mk1 * ome) * pi * th;
+    mu[1] = (mu2 * e + mk2 * ome) * pi * th;
+    dmu_rate[0] = -d * (mu1 - mk1) * e * pi * th;
+    dmu_rate[1] = -d * (mu2 - mk2) * e * pi * th;
+}
+
+static const char *const FIELD_NAMES[3] = {"mu1", "mu2", "?"};
+
+/* Calls fric_coef_ for block b and checks it; returns the digest of its outputs. */
+static uint64_t run_block(int b, tally *t)
+{
+    block_in in;
+    int n, nprops = NPROPS, nfields = 0, idata[3] = {1, 1, 1}, k, j, d;
+    double rdata[3] = {0.0, 0.0, 0.0}, field[1] = {0.0};
+    double *coef, *deriv;
+    char name[80], blank[80];
+    uint64_t h = 14695981039346656037u;
+
+    memset(&in, 0, sizeof in);
+    if (!draw_block(b, &in)) {
+        t->alloc_fail++;
+        free_block(&in);
+        return 0;
+    }
+    n = in.n;
+    coef = malloc(sizeof(double) * 2 * (size_t)n);
+    deriv = malloc(sizeof(double) * 40 * (size_t)n);
+    if (coef == NULL || deriv == NULL) {
+        t->alloc_fail++;
+        free(coef);
+        free(deriv);
+        free_block(&in);
+        return 0;
+    }
+    for (k = 0; k < 2 * n; k++) {
+        coef[k] = FH_GUARD;
+    }
+    for (k = 0; k < 40 * n; k++) {
+        deriv[k] = FH_GUARD;
+    }
+    memset(blank, ' ', sizeof blank);
+    memset(name, ' ', sizeof name);
+    k = snprintf(name, sizeof name, "CF%d", b);
+    name[k] = ' ';
+    fric_coef_(coef, deriv, &n, &nprops, &in.ntemp, &nfields, idata, rdata, name, blank, blank,
+               in.props, in.slip, in.pressure, in.temp, field, sizeof name, sizeof blank,
+               sizeof blank);
+    t->kinds[in.law]++;
+    t->points += n;
+    h = fnv1a(h, coef, sizeof(double) * 2 * (size_t)n);
+    h = fnv1a(h, deriv, sizeof(double) * 40 * (size_t)n);
+
+    if (in.law == LAW_BAD) {
+        char want[32];
+        const char *msg = ifl_last_error();
+        snprintf(want, sizeof want, "'CF%d'", b);
+        if (strstr(msg, "interfacial: FRIC_COEF: interaction") != msg || strstr(msg, want) == NULL) {
+            violation(t, b, "refusal message lacks FRIC_COEF or the interaction", 0.0, 0.0);
+        }
+        for (k = 0; k < 2 * n; k++) {
+            if (coef[k] != 0.0) {
+                violation(t, b, "refused block: mu not 0", coef[k], 0.0);
+            }
+        }
+        for (k = 0; k < 40 * n; k++) {
+            if (deriv[k] != 0.0) {
+                violation(t, b, "refused block: derivative not 0", deriv[k], 0.0);
+            }
+        }
+    } else {
+        for (k = 0; k < n; k++) {
+            double mu[2], dr[2];
+            closed_form(&in, k, mu, dr);
+            for (d = 0; d < 2; d++) {
+                double got = coef[k + n * d];
+                double drate = deriv[k + n * (0 + 20 * d)];
+                double dp = deriv[k + n * (1 + 20 * d)];
+                double dt = deriv[k + n * (2 + 20 * d)];
+                if (!(fabs(got - mu[d]) <= 1e-13 * mu[d])) {
+                    violation(t, b, FIELD_NAMES[d], got, mu[d]);
+                }
+                if (!(fabs(drate - dr[d]) <= 1e-12 * in.props[9] * in.props[1] * 4.0)) {
+                    violation(t, b, "d mu / d rate", drate, dr[d]);
+                }
+                if ((in.pressure[k] < 0.0 || in.props[10] == 0.0) && dp != 0.0) {
+                    violation(t, b, "d mu / d p without a pressure law or for p < 0", dp, 0.0);
+                }
+                if (in.props[11] == 0.0 && dt != 0.0) {
+                    violation(t, b, "d mu / d theta without a temperature law", dt, 0.0);
+                }
+                for (j = 3; j < 20; j++) {
+                    if (deriv[k + n * (j + 20 * d)] != 0.0) {
+                        violation(t, b, "fCoefDeriv(k,4..20,d) not 0", deriv[k + n * (j + 20 * d)],
+                                  0.0);
+                    }
+                }
+            }
+        }
+        if (ifl_last_error()[0] != '\0') {
+            violation(t, b, "a good block left a message", 0.0, 0.0);
+        }
+    }
+    free(coef);
+    free(deriv);
+    free_block(&in);
+    return h;
+}
+
+static void run_blocks(int first, int last, uint64_t *digests, tally *t)
+{
+    int b;
+    for (b = first; b < last; b++) {
+        ifl_clear_error();
+        digests[b] = run_block(b, t);
+    }
+}
+
+typedef struct {
+    int first, last;
+    uint64_t *digests;
+    tally t;
+} worker;
+
+static pthread_barrier_t start_line;
+
+static void *work(void *arg)
+{
+    worker *w = arg;
+    pthread_barrier_wait(&start_line);
+    run_blocks(w->first, w->last, w->digests, &w->t);
+    return NULL;
+}
+
+static int shrink_factor(void)
+{
+    const char *s = getenv("INTERFACIAL_TEST_SHRINK");
+    long v = s != NULL ? strtol(s, NULL, 10) : 1;
+    if (v < 1) {
+        return 1;
+    }
+    return v > FULL_BLOCKS / MIN_BLOCKS ? FULL_BLOCKS / MIN_BLOCKS : (int)v;
+}
+
+static void report_tally(const char *run, const tally *t)
+{
+    int k;
+    printf("%s: %ld point evaluations;", run, t->points);
+    for (k = 0; k < N_LAWS; k++) {
+        printf(" %s %ld%s", LAW_NAMES[k], t->kinds[k], k + 1 < N_LAWS ? "," : " blocks\n");
+    }
+    if (t->violations > 0) {
+        fprintf(stderr, "  %s: %ld violations, first: %s\n", run, t->violations,
+                t->first_violation);
+    }
+}
+
+int main(void)
+{
+    int shrink = shrink_factor(), blocks = FULL_BLOCKS / shrink, i, k, created = 0;
+    uint64_t *dig_par = calloc((size_t)blocks, sizeof *dig_par);
+    uint64_t *dig_ser = calloc((size_t)blocks, sizeof *dig_ser);
+    worker w[N_THREADS];
+    pthread_t tid[N_THREADS];
+    tally par, ser;
+
+    fh_context("allocation");
+    if (!FH_CHECK(dig_par != NULL && dig_ser != NULL)) {
+        return fh_finish();
+    }
+    memset(w, 0, sizeof w);
+    memset(&par, 0, sizeof par);
+    memset(&ser, 0, sizeof ser);
+
+    fh_context("%d threads, %d blocks", N_THREADS, blocks);
+    pthread_barrier_init(&start_line, NULL, N_THREADS);
+    for (i = 0; i < N_THREADS; i++) {
+        w[i].first = (int)((long)blocks * i / N_THREADS);
+        w[i].last = (int)((long)blocks * (i + 1) / N_THREADS);
+        w[i].digests = dig_par;
+        if (pthread_create(&tid[i], NULL, work, &w[i]) != 0) {
+            break;
+        }
+        created++;
+    }
+    if (!FH_CHECK(created == N_THREADS)) {
+        return fh_finish(); /* the barrier would never open */
+    }
+    for (i = 0; i < N_THREADS; i++) {
+        pthread_join(tid[i], NULL);
+        for (k = 0; k < N_LAWS; k++) {
+            par.kinds[k] += w[i].t.kinds[k];
+        }
+        par.points += w[i].t.points;
+        par.violations += w[i].t.violations;
+        par.alloc_fail += w[i].t.alloc_fail;
+        if (par.first_violation[0] == '\0') {
+            memcpy(par.first_violation, w[i].t.first_violation, sizeof par.first_violation);
+        }
+    }
+    pthread_barrier_destroy(&start_line);
+    report_tally("8 threads", &par);
+    FH_CHECK(par.alloc_fail == 0);
+    FH_CHECK(par.violations == 0);
+
+    fh_context("serial run");
+    run_blocks(0, blocks, dig_ser, &ser);
+    report_tally("serial", &ser);
+    FH_CHECK(ser.alloc_fail == 0);
+    FH_CHECK(ser.violations == 0);
+
+    fh_context("8 threads against the serial run");
+    FH_CHECK(memcmp(dig_par, dig_ser, sizeof *dig_par * (size_t)blocks) == 0);
+    FH_CHECK(memcmp(par.kinds, ser.kinds, sizeof par.kinds) == 0);
+    FH_CHECK(par.points == ser.points);
+    /* At least 1M point evaluations at full size; every law well represented. */
+    FH_CHECK(par.points >= 1000000L / shrink);
+    for (k = 0; k < N_LAWS; k++) {
+        fh_context("law %s", LAW_NAMES[k]);
+        FH_CHECK(par.kinds[k] >= blocks / (2 * N_LAWS));
+    }
+    for (i = 0, k = 0; i < blocks; i++) {
+        k += dig_par[i] != dig_ser[i];
+    }
+    printf("blocks whose outputs differ between the runs: %d of %d\n", k, blocks);
+    free(dig_par);
+    free(dig_ser);
+    return fh_finish();
+}

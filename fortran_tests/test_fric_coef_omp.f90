@@ -1,0 +1,315 @@
+! test_fric_coef_omp.f90 -- FRIC_COEF (the friction coefficient of a block of points) from an
+! OpenMP parallel loop (OMP_NUM_THREADS = 8, set by CTest), compared bit for bit with a serial
+! run of the same blocks. The Fortran twin of c_tests/test_fric_coef_threads.c; FRIC_COEF is
+! called as Abaqus user code calls it: a plain `call fric_coef(...)`, no interface block.
+!
+! 16 384 blocks of 1..127 points (nBlock = 1 + mod(b-1, 127)): 1 048 513 point evaluations per
+! run. Each block has its own law-1 PROPS drawn from a Lehmer generator x <- 48271 x mod
+! (2**31 - 1) seeded by the block's index, one of eight mu laws (docs/props.md): constant,
+! anisotropic, exponential decay, decay + pressure, decay + temperature, pressure + temperature
+! anisotropic, all of them, and a block with one bad point (NaN pressure or a negative slip
+! rate: refused). Every array is allocated at exactly its declared size, so valgrind sees any
+! access past it.
+!
+! Compared with the serial run: every output of every block (fCoef(nBlock,2) and
+! fCoefDeriv(nBlock,20,2)), bit patterns folded into a 62-bit digest per block (two
+! multiplicative hashes mod 2**31 - 1 over the 32-bit halves), and the counts of each law.
+! Checked on every block of both runs against the closed form, not against the library:
+! mu_d = (mu_s,d e + mu_k,d (1 - e)) / (1 + p+/p_ref) exp(-b (theta - theta_ref)),
+! e = exp(-d_c rate), to 1e-13 relative; d mu/d rate = -d_c (mu_s - mu_k) e pi Theta;
+! fCoefDeriv(k,4:20,d) = 0; a refused block has mu = 0, every derivative 0 and a message
+! naming FRIC_COEF. At least 8 OpenMP threads must have done work.
+!
+! INTERFACIAL_TEST_SHRINK=n divides the number of blocks by n (valgrind runs).
+! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
+
+module fric_coef_omp_support
+  use, intrinsic :: iso_fortran_env, only: int64
+  use, intrinsic :: iso_c_binding, only: c_char, c_size_t
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+  implicit none
+  integer, parameter :: dp = kind(1.0d0)
+  integer, parameter :: full_blocks = 16384, max_nblock = 127, min_blocks = 512
+  integer, parameter :: nthreads_min = 8, nprops = 13, n_laws = 8, law_bad = 8
+  integer(int64), parameter :: lehmer_m = 2147483647_int64
+  character(len=32), parameter :: law_names(n_laws) = [character(len=32) :: 'constant', &
+    'anisotropic', 'decay', 'decay+pressure', 'decay+temperature', &
+    'pressure+temperature aniso', 'all', 'refused']
+
+  integer :: npass = 0, nfail = 0
+
+  interface
+    function ifl_last_error_copy(buf, len) bind(c, name='ifl_last_error_copy') result(n)
+      import :: c_char, c_size_t
+      character(kind=c_char), dimension(*), intent(out) :: buf
+      integer(c_size_t), value :: len
+      integer(c_size_t) :: n
+    end function ifl_last_error_copy
+    subroutine ifl_clear_error() bind(c, name='ifl_clear_error')
+    end subroutine ifl_clear_error
+  end interface
+
+contains
+
+  subroutine check(ok, what)
+    logical, intent(in) :: ok
+    character(len=*), intent(in) :: what
+    if (ok) then
+      npass = npass + 1
+    else
+      nfail = nfail + 1
+      write (*, '(a,a)') 'FAIL: ', what
+    end if
+  end subroutine check
+
+  integer(int64) function lehmer(x)
+    integer(int64), intent(inout) :: x
+    x = mod(48271_int64*x, lehmer_m)
+    lehmer = x
+  end function lehmer
+
+  ! Uniform in [lo, hi).
+  real(dp) function uniform(x, lo, hi)
+    integer(int64), intent(inout) :: x
+    real(dp), intent(in) :: lo, hi
+    uniform = lo + (hi - lo)*(real(lehmer(x) - 1, dp)/real(lehmer_m - 2, dp))
+  end function uniform
+
+  ! Folds the bit pattern of v into the two hashes.
+  subroutine fold(h, v)
+    integer(int64), intent(inout) :: h(2)
+    real(dp), intent(in) :: v(:)
+    integer(int64) :: bits, lo, hi
+    integer :: i
+    do i = 1, size(v)
+      bits = transfer(v(i), 0_int64)
+      lo = iand(bits, 4294967295_int64)
+      hi = iand(ishft(bits, -32), 4294967295_int64)
+      h(1) = mod(mod(h(1)*48271_int64 + lo, lehmer_m)*48271_int64 + hi, lehmer_m)
+      h(2) = mod(mod(h(2)*16807_int64 + hi, lehmer_m)*16807_int64 + lo, lehmer_m)
+    end do
+  end subroutine fold
+
+  ! Calls FRIC_COEF for block ib, checks it, returns its digest and law.
+  subroutine run_block(ib, digest, law, npts, bad, first_bad)
+    integer, intent(in) :: ib
+    integer(int64), intent(out) :: digest(2)
+    integer, intent(out) :: law, npts
+    integer, intent(inout) :: bad
+    character(len=256), intent(inout) :: first_bad
+    integer(int64) :: x
+    integer :: n, k, d, j, ntemp, nfields, idata(3), npr
+    real(dp) :: props(nprops), rdata(3), field(1), pp, e, ome, mk(2), ms(2), pi, th, mu, dr
+    real(dp), allocatable :: coef(:, :), deriv(:, :, :), slip(:, :), press(:), temp(:)
+    character(len=80) :: name, blank
+    character(kind=c_char) :: msg(512)
+    integer(c_size_t) :: mlen
+    logical :: decay, pref, tlaw
+    character(len=200) :: what
+
+    x = mod(int(ib, int64)*2654435761_int64, lehmer_m - 1) + 1
+    x = mod(48271_int64*x, lehmer_m)
+    law = int(mod(lehmer(x), int(n_laws, int64))) + 1
+    n = 1 + mod(ib - 1, max_nblock)
+    npts = n
+    props = 0
+    props(1) = 1
+    props(2) = uniform(x, 0.05_dp, 0.9_dp)
+    if (law == 2 .or. law == 6 .or. law == 7) props(3) = uniform(x, 0.05_dp, 0.9_dp)
+    decay = law == 3 .or. law == 4 .or. law == 5 .or. law == 7 .or. law == law_bad
+    pref = law == 4 .or. law == 6 .or. law == 7
+    tlaw = law == 5 .or. law == 6 .or. law == 7
+    if (decay) then
+      props(8) = 1
+      if (mod(lehmer(x), 4_int64) == 0) then
+        props(9) = props(2)*uniform(x, 0.0_dp, 3.0_dp)
+      else
+        props(9) = props(2)*uniform(x, 0.0_dp, 1.0_dp)
+      end if
+      props(10) = uniform(x, 0.1_dp, 10.0_dp)
+    end if
+    if (pref) props(11) = uniform(x, 10.0_dp, 500.0_dp)
+    if (tlaw) then
+      props(12) = uniform(x, -0.01_dp, 0.01_dp)
+      props(13) = uniform(x, 0.0_dp, 100.0_dp)
+      ntemp = 1
+    else
+      ntemp = int(mod(lehmer(x), 2_int64))
+    end if
+    allocate (coef(n, 2), deriv(n, 20, 2), slip(n, 6), press(n), temp(n))
+    do j = 1, 6
+      do k = 1, n
+        slip(k, j) = uniform(x, 0.0_dp, 5.0_dp)
+      end do
+    end do
+    do k = 1, n
+      if (mod(lehmer(x), 8_int64) == 0) slip(k, 1) = 0
+      press(k) = uniform(x, -20.0_dp, 300.0_dp)
+      temp(k) = uniform(x, 0.0_dp, 200.0_dp)
+    end do
+    if (law == law_bad) then
+      k = 1 + int(mod(lehmer(x), int(n, int64)))
+      if (mod(lehmer(x), 2_int64) == 0) then
+        press(k) = ieee_value(1.0_dp, ieee_quiet_nan)
+      else
+        slip(k, 1) = -uniform(x, 0.1_dp, 1.0_dp)
+      end if
+    end if
+    coef = -7.77e77_dp
+    deriv = -7.77e77_dp
+    write (name, '(a,i0)') 'CF', ib
+    blank = ' '
+    nfields = 0
+    idata = 1
+    rdata = 0
+    field = 0
+    npr = nprops
+    call ifl_clear_error()
+    call fric_coef(coef, deriv, n, npr, ntemp, nfields, idata, rdata, name, blank, blank, &
+                   props, slip, press, temp, field)
+    digest = 0
+    call fold(digest, reshape(coef, [2*n]))
+    call fold(digest, reshape(deriv, [40*n]))
+
+    what = ' '
+    mlen = ifl_last_error_copy(msg, int(size(msg), c_size_t))
+    if (law == law_bad) then
+      if (any(coef /= 0) .or. any(deriv /= 0)) what = 'refused block not zeroed'
+      if (mlen < 40 .or. .not. starts_fric_coef(msg)) what = 'refusal message lacks FRIC_COEF'
+    else
+      if (mlen /= 0) what = 'a good block left a message'
+      ms = [props(2), merge(props(3), props(2), props(3) /= 0)]
+      do k = 1, n
+        pp = max(press(k), 0.0_dp)
+        e = 1
+        ome = 0
+        mk = 0
+        if (decay) then
+          e = exp(-props(10)*slip(k, 1))
+          ome = -(exp(-props(10)*slip(k, 1)) - 1)
+          if (props(10)*slip(k, 1) < 0.5_dp) ome = -expm1_series(-props(10)*slip(k, 1))
+          mk = [props(9), props(9)*ms(2)/ms(1)]
+        end if
+        pi = 1
+        if (pref) pi = 1/(1 + pp/props(11))
+        th = 1
+        if (tlaw) th = exp(-props(12)*(temp(k) - props(13)))
+        do d = 1, 2
+          mu = (ms(d)*e + mk(d)*ome)*pi*th
+          dr = -props(10)*(ms(d) - mk(d))*e*pi*th
+          if (.not. (abs(coef(k, d) - mu) <= 1e-13_dp*mu)) write (what, '(a,i0,a,i0,2es25.17)') &
+            'mu(', k, ',', d, coef(k, d), mu
+          if (.not. (abs(deriv(k, 1, d) - dr) <= 4e-12_dp*props(10)*props(2))) &
+            write (what, '(a,i0,2es25.17)') 'd mu/d rate at ', k, deriv(k, 1, d), dr
+          if ((press(k) < 0 .or. .not. pref) .and. deriv(k, 2, d) /= 0) what = 'd mu/d p not 0'
+          if (.not. tlaw .and. deriv(k, 3, d) /= 0) what = 'd mu/d theta not 0'
+          if (any(deriv(k, 4:20, d) /= 0)) what = 'fCoefDeriv(k,4:20,d) not 0'
+        end do
+      end do
+    end if
+    if (what /= ' ') then
+      !$omp critical (fric_coef_omp_first_bad)
+      bad = bad + 1
+      if (first_bad == ' ') write (first_bad, '(a,i0,a,a)') 'block ', ib, ': ', trim(what)
+      !$omp end critical (fric_coef_omp_first_bad)
+    end if
+    deallocate (coef, deriv, slip, press, temp)
+  end subroutine run_block
+
+  ! -expm1 is not in Fortran 2008: 1 - e**y for |y| < 0.5 by its series (to round-off).
+  real(dp) function expm1_series(y)
+    real(dp), intent(in) :: y
+    real(dp) :: term
+    integer :: i
+    term = y
+    expm1_series = y
+    do i = 2, 30
+      term = term*y/i
+      expm1_series = expm1_series + term
+    end do
+  end function expm1_series
+
+  logical function starts_fric_coef(msg)
+    character(kind=c_char), intent(in) :: msg(:)
+    character(len=*), parameter :: head = 'interfacial: FRIC_COEF: interaction'
+    integer :: i
+    starts_fric_coef = .true.
+    do i = 1, len(head)
+      if (msg(i) /= head(i:i)) starts_fric_coef = .false.
+    end do
+  end function starts_fric_coef
+
+  integer function shrink_factor()
+    character(len=32) :: v
+    integer :: stat, n
+    shrink_factor = 1
+    call get_environment_variable('INTERFACIAL_TEST_SHRINK', v, status=stat)
+    if (stat /= 0) return
+    read (v, *, iostat=stat) n
+    if (stat /= 0 .or. n < 1) return
+    shrink_factor = min(n, full_blocks/min_blocks)
+  end function shrink_factor
+end module fric_coef_omp_support
+
+program test_fric_coef_omp
+  use fric_coef_omp_support
+  use omp_lib, only: omp_get_thread_num, omp_get_max_threads
+  implicit none
+  integer :: nblocks, ib, k, bad_par, bad_ser, nworkers, ndiff, shrink
+  integer(int64), allocatable :: dig_par(:, :), dig_ser(:, :)
+  integer, allocatable :: law_par(:), law_ser(:), n_par(:), n_ser(:)
+  logical, allocatable :: worked(:)
+  character(len=256) :: first_par, first_ser
+  integer(int64) :: points
+
+  shrink = shrink_factor()
+  nblocks = full_blocks/shrink
+  allocate (dig_par(2, nblocks), dig_ser(2, nblocks), law_par(nblocks), law_ser(nblocks), &
+            n_par(nblocks), n_ser(nblocks), worked(0:max(omp_get_max_threads(), 1) - 1))
+  worked = .false.
+  bad_par = 0
+  bad_ser = 0
+  first_par = ' '
+  first_ser = ' '
+  call check(omp_get_max_threads() >= nthreads_min, 'OpenMP offers at least 8 threads '// &
+             '(OMP_NUM_THREADS)')
+
+  !$omp parallel do schedule(static) default(shared) private(ib)
+  do ib = 1, nblocks
+    worked(omp_get_thread_num()) = .true.
+    call run_block(ib, dig_par(:, ib), law_par(ib), n_par(ib), bad_par, first_par)
+  end do
+  !$omp end parallel do
+  nworkers = count(worked)
+  call check(nworkers >= nthreads_min, 'at least 8 OpenMP threads did work')
+  if (bad_par > 0) write (*, '(a,i0,a,a)') '  OpenMP: ', bad_par, ' violations, first: ', &
+    trim(first_par)
+  call check(bad_par == 0, 'every OpenMP block matches the closed form')
+
+  do ib = 1, nblocks
+    call run_block(ib, dig_ser(:, ib), law_ser(ib), n_ser(ib), bad_ser, first_ser)
+  end do
+  if (bad_ser > 0) write (*, '(a,i0,a,a)') '  serial: ', bad_ser, ' violations, first: ', &
+    trim(first_ser)
+  call check(bad_ser == 0, 'every serial block matches the closed form')
+
+  points = sum(int(n_par, int64))
+  write (*, '(a,i0,a,i0,a)', advance='no') 'blocks ', nblocks, ', point evaluations ', points, &
+    ', per law:'
+  do k = 1, n_laws
+    write (*, '(1x,a,1x,i0)', advance='no') trim(law_names(k)), count(law_par == k)
+    call check(count(law_par == k) >= nblocks/(2*n_laws), 'enough blocks of law '// &
+               trim(law_names(k)))
+  end do
+  write (*, '()')
+  call check(points >= 1000000_int64/shrink, 'at least 1M point evaluations (full size)')
+  call check(all(law_par == law_ser) .and. all(n_par == n_ser), 'same blocks in both runs')
+  ndiff = count(dig_par(1, :) /= dig_ser(1, :) .or. dig_par(2, :) /= dig_ser(2, :))
+  call check(ndiff == 0, 'every block: outputs bit for bit equal to the serial run')
+  write (*, '(i0,a,i0,a,i0,a)') nblocks, ' FRIC_COEF blocks on ', nworkers, &
+    ' OpenMP threads and serially: ', ndiff, ' blocks differ'
+
+  deallocate (dig_par, dig_ser, law_par, law_ser, n_par, n_ser, worked)
+  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
+  if (nfail > 0) error stop 1
+end program test_fric_coef_omp

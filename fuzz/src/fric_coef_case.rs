@@ -1,0 +1,641 @@
+//! One `fric_coef_` call (Abaqus FRIC_COEF) or one `ifl_forced_sliding` call decoded from fuzzer
+//! bytes, every array allocated with exactly the length the call declares (so AddressSanitizer
+//! reports any access past it), and the properties every call must have.
+//!
+//! Shared by the `fric_coef` fuzz target and `tests/fuzz_regressions_coef.rs` (included there by
+//! path).
+
+use std::ffi::{CStr, c_char, c_int};
+
+use crate::bytes::Bytes;
+use interfacial::abi::{
+    IflStatus, fric_coef_, ifl_clear_error, ifl_forced_sliding, ifl_last_error,
+};
+
+/// Written into every output before the call, to see what the call wrote.
+pub const UNWRITTEN: f64 = -7.77e77;
+
+/// Derivative slots per point and direction: `fCoefDeriv(nBlock,20,2)`.
+const NDERIV: usize = 20;
+
+fn len(n: i32) -> usize {
+    usize::try_from(n).unwrap_or(0)
+}
+
+fn vec_of(b: &mut Bytes, n: usize) -> Vec<f64> {
+    (0..n).map(|_| b.real()).collect()
+}
+
+fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
+
+/// A law-1 `PROPS` of `nprops` entries favouring valid μ laws (docs/props.md): `PROPS(1) = 1`,
+/// μ ≥ 0, `PROPS(3)` 0 or μ, `PROPS(4..7)` 0, the decay law, p_ref and the temperature law each
+/// on or off, `PROPS(14..)` 0 — and any real in any entry now and then.
+pub fn decode_props(b: &mut Bytes, nprops: usize) -> Vec<f64> {
+    let mut props: Vec<f64> = Vec::with_capacity(nprops);
+    for i in 0..nprops {
+        let sel = b.u8();
+        let on = |k: usize, props: &[f64]| props.get(k).is_some_and(|x| *x != 0.0);
+        let v = match (i, sel % 8) {
+            (0, 0..=6) => 1.0,
+            (1, 0..=6) => b.real().abs(),
+            (2, 0..=3) => 0.0,
+            (2, 4 | 5) => props[1],
+            (2, 6) => b.real().abs(),
+            (3..=6 | 13.., 0..=6) => 0.0,
+            (7, 0..=3) => 1.0,
+            (7, 4..=6) => 0.0,
+            (8 | 9, 0..=6) if on(7, &props) => b.real().abs(),
+            (8 | 9, 0..=6) => 0.0,
+            (10 | 11, 0..=2) => 0.0,
+            (10, 3..=6) => b.real().abs(),
+            (11, 3..=6) => b.real(),
+            (12, 0..=6) if on(11, &props) => b.real(),
+            (12, 0..=6) => 0.0,
+            _ => b.real(),
+        };
+        props.push(v);
+    }
+    props
+}
+
+fn name(b: &mut Bytes) -> Vec<u8> {
+    let l = usize::from(b.u8());
+    let l = if l < 128 { 80 } else { l - 128 };
+    let printed = usize::from(b.u8() % 13);
+    let mut v: Vec<u8> = b
+        .bytes(l.min(printed))
+        .iter()
+        .map(|x| b'A' + x % 26)
+        .collect();
+    v.resize(l, b' ');
+    v
+}
+
+/// Which pointer argument of `fric_coef_` is passed as NULL (a broken host).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CoefNull {
+    None,
+    FCoef,
+    FCoefDeriv,
+    NBlock,
+    NProps,
+    NTemp,
+    Props,
+    SlipData,
+    Pressure,
+    TempAvg,
+}
+
+/// Every `fric_coef_` argument. Arrays have exactly their declared lengths.
+#[derive(Clone, Debug)]
+pub struct FricCoefCase {
+    pub nblock: i32,
+    pub nprops: i32,
+    pub ntemp: i32,
+    pub nfields: i32,
+    /// `iData(3)`, `rData(3)`: not read by the library.
+    pub idata: Vec<i32>,
+    pub rdata: Vec<f64>,
+    /// `PROPS(NPROPS)`.
+    pub props: Vec<f64>,
+    /// `slipData(nBlock,6)`.
+    pub slip: Vec<f64>,
+    /// `pressure(nBlock)`.
+    pub pressure: Vec<f64>,
+    /// `tempAvg(nBlock)`.
+    pub temp: Vec<f64>,
+    /// `fieldAvg(nBlock,nFields)`.
+    pub field: Vec<f64>,
+    pub surf_int: Vec<u8>,
+    pub surf_sec: Vec<u8>,
+    pub surf_main: Vec<u8>,
+    pub null: CoefNull,
+}
+
+/// What `fric_coef_` wrote, and its message (empty on success).
+#[derive(Clone, Debug)]
+pub struct CoefOutputs {
+    /// `fCoef(nBlock,2)`.
+    pub coef: Vec<f64>,
+    /// `fCoefDeriv(nBlock,20,2)`.
+    pub deriv: Vec<f64>,
+    pub message: String,
+}
+
+impl CoefOutputs {
+    /// μ of point k (0-based) in direction d (0, 1).
+    pub fn mu(&self, n: usize, k: usize, d: usize) -> f64 {
+        self.coef[k + n * d]
+    }
+    /// `fCoefDeriv(k+1, j+1, d+1)`.
+    pub fn deriv(&self, n: usize, k: usize, j: usize, d: usize) -> f64 {
+        self.deriv[k + n * (j + NDERIV * d)]
+    }
+}
+
+impl FricCoefCase {
+    /// A valid block: these `props`, slip rates, pressures and temperatures (equal lengths),
+    /// `nTemp = 1`, no fields, interaction `"SI1"` (80 bytes).
+    pub fn block(props: &[f64], rate: &[f64], pressure: &[f64], temp: &[f64]) -> Self {
+        let n = rate.len();
+        let mut slip = vec![0.0; 6 * n];
+        slip[..n].copy_from_slice(rate);
+        let mut surf_int = b"SI1".to_vec();
+        surf_int.resize(80, b' ');
+        FricCoefCase {
+            nblock: i32::try_from(n).unwrap_or(i32::MAX),
+            nprops: i32::try_from(props.len()).unwrap_or(i32::MAX),
+            ntemp: 1,
+            nfields: 0,
+            idata: vec![1; 3],
+            rdata: vec![0.0; 3],
+            props: props.to_vec(),
+            slip,
+            pressure: pressure.to_vec(),
+            temp: temp.to_vec(),
+            field: Vec::new(),
+            surf_int,
+            surf_sec: vec![b' '; 80],
+            surf_main: vec![b' '; 80],
+            null: CoefNull::None,
+        }
+    }
+
+    /// Decodes any byte string; most inputs are a valid block with a valid μ law, but every bad
+    /// shape (nBlock ≤ 0, nProps out of range, nTemp = 0, NULL pointers) stays reachable.
+    pub fn decode(b: &mut Bytes) -> Self {
+        let nblock = b.pick(&[1, 1, 2, 3, 4, 5, 8, 17, 1, 2, 3, 0, -1]);
+        let nprops = b.pick(&[13, 13, 13, 13, 10, 8, 20, 2, 3, 7, 12, 21, 1, 0, -1]);
+        let ntemp = b.pick(&[1, 1, 1, 1, 2, 0, -1]);
+        let nfields = b.pick(&[0, 0, 1, 2, -1]);
+        let null = match b.u8() {
+            0 => CoefNull::FCoef,
+            1 => CoefNull::FCoefDeriv,
+            2 => CoefNull::NBlock,
+            3 => CoefNull::NProps,
+            4 => CoefNull::NTemp,
+            5 => CoefNull::Props,
+            6 => CoefNull::SlipData,
+            7 => CoefNull::Pressure,
+            8 => CoefNull::TempAvg,
+            _ => CoefNull::None,
+        };
+        let n = len(nblock);
+        let props = decode_props(b, len(nprops));
+        // Slip rates: mostly finite and ≥ 0 (slipData(k,1) is a magnitude).
+        let mut slip = vec_of(b, 6 * n);
+        let flags = b.u8();
+        if flags & 1 == 0 {
+            for x in &mut slip[..n] {
+                *x = x.abs();
+            }
+        }
+        FricCoefCase {
+            nblock,
+            nprops,
+            ntemp,
+            nfields,
+            idata: vec![b.u8().into(); 3],
+            rdata: vec_of(b, 3),
+            props,
+            slip,
+            pressure: vec_of(b, n),
+            temp: vec_of(b, n),
+            field: vec_of(b, n * len(nfields)),
+            surf_int: name(b),
+            surf_sec: name(b),
+            surf_main: name(b),
+            null,
+        }
+    }
+
+    /// Calls `fric_coef_` through its real symbol and checks every property; `Err` names the
+    /// first one violated.
+    pub fn check(&self) -> Result<CoefOutputs, String> {
+        let before = self.clone();
+        let c = self.clone();
+        let n = len(self.nblock);
+        let mut out = CoefOutputs {
+            coef: vec![UNWRITTEN; 2 * n],
+            deriv: vec![UNWRITTEN; 2 * NDERIV * n],
+            message: String::new(),
+        };
+        let null = c.null;
+        let mo = |p: *mut f64, which: CoefNull| {
+            if null == which {
+                std::ptr::null_mut()
+            } else {
+                p
+            }
+        };
+        let ro = |p: *const f64, which: CoefNull| {
+            if null == which { std::ptr::null() } else { p }
+        };
+        let io = |p: *const c_int, which: CoefNull| {
+            if null == which { std::ptr::null() } else { p }
+        };
+        ifl_clear_error();
+        // SAFETY: every array has exactly the length the call declares (2·nBlock, 40·nBlock,
+        // nProps, 6·nBlock, nBlock, nBlock, nBlock·nFields, the hidden name lengths); scalars
+        // are locals; NULL where `null` says so.
+        unsafe {
+            fric_coef_(
+                mo(out.coef.as_mut_ptr(), CoefNull::FCoef),
+                mo(out.deriv.as_mut_ptr(), CoefNull::FCoefDeriv),
+                io(&c.nblock, CoefNull::NBlock),
+                io(&c.nprops, CoefNull::NProps),
+                io(&c.ntemp, CoefNull::NTemp),
+                &c.nfields,
+                c.idata.as_ptr(),
+                c.rdata.as_ptr(),
+                c.surf_int.as_ptr().cast::<c_char>(),
+                c.surf_sec.as_ptr().cast::<c_char>(),
+                c.surf_main.as_ptr().cast::<c_char>(),
+                ro(c.props.as_ptr(), CoefNull::Props),
+                ro(c.slip.as_ptr(), CoefNull::SlipData),
+                ro(c.pressure.as_ptr(), CoefNull::Pressure),
+                ro(c.temp.as_ptr(), CoefNull::TempAvg),
+                c.field.as_ptr(),
+                c.surf_int.len(),
+                c.surf_sec.len(),
+                c.surf_main.len(),
+            );
+            out.message = CStr::from_ptr(ifl_last_error())
+                .to_string_lossy()
+                .into_owned();
+        }
+        if !same_coef(&c, &before) {
+            return Err("an input argument was written".into());
+        }
+        self.check_outputs(&out)?;
+        Ok(out)
+    }
+
+    fn check_outputs(&self, out: &CoefOutputs) -> Result<(), String> {
+        let n = len(self.nblock);
+        let written = |v: &[f64]| v.iter().any(|x| x.to_bits() != UNWRITTEN.to_bits());
+        let all = out.coef.iter().chain(&out.deriv);
+        if !out.message.is_empty() {
+            // Refused: one message naming the routine; the block zeroed when nBlock is
+            // readable and ≥ 0 (and the array not NULL), nothing written otherwise.
+            if !out
+                .message
+                .starts_with("interfacial: FRIC_COEF: interaction '")
+            {
+                return Err(format!(
+                    "message does not name FRIC_COEF: {:?}",
+                    out.message
+                ));
+            }
+            if self.null == CoefNull::NBlock {
+                if written(&out.coef) || written(&out.deriv) {
+                    return Err("nBlock NULL but an output was written".into());
+                }
+                return Ok(());
+            }
+            let zeroed = |v: &[f64], which| self.null == which || v.iter().all(|x| *x == 0.0);
+            if !zeroed(&out.coef, CoefNull::FCoef) || !zeroed(&out.deriv, CoefNull::FCoefDeriv) {
+                return Err(format!(
+                    "refused ({}) but the block is not zeroed",
+                    out.message
+                ));
+            }
+            return Ok(());
+        }
+        // Success.
+        // nTemp and tempAvg are read only with a temperature law (docs/props.md).
+        let unread =
+            matches!(self.null, CoefNull::NTemp | CoefNull::TempAvg) && !self.reads_temperature();
+        if self.null != CoefNull::None && n > 0 && !unread {
+            return Err(format!("a NULL {:?} was accepted", self.null));
+        }
+        if let Some(x) = all.clone().find(|x| !x.is_finite()) {
+            return Err(format!("success with a non-finite output {x}"));
+        }
+        if n > 0 && !(written(&out.coef) && written(&out.deriv)) {
+            return Err("success but the block was not written".into());
+        }
+        // PROPS(1) = 2 is accepted only where the adhesive law is the plain Coulomb law
+        // (docs/props.md, law 2): μ = PROPS(2) in both directions, constant.
+        let adhesive = self.prop(0) == 2.0;
+        let isotropic = adhesive || self.prop(2) == 0.0;
+        for k in 0..n {
+            let (rate, p) = (self.slip[k], self.pressure[k]);
+            if !(rate.is_finite() && rate >= 0.0 && p.is_finite()) {
+                return Err(format!(
+                    "point {k}: bad rate {rate} or pressure {p} accepted"
+                ));
+            }
+            for d in 0..2 {
+                let mu = out.mu(n, k, d);
+                if mu < 0.0 {
+                    return Err(format!("μ({k},{d}) = {mu} < 0"));
+                }
+                for j in 3..NDERIV {
+                    if out.deriv(n, k, j, d) != 0.0 {
+                        return Err(format!("fCoefDeriv({},{},{}) ≠ 0", k + 1, j + 1, d + 1));
+                    }
+                }
+                if p < 0.0 && out.deriv(n, k, 1, d) != 0.0 {
+                    return Err(format!("∂μ/∂p ≠ 0 at negative pressure, point {k}"));
+                }
+                if !self.reads_temperature() && out.deriv(n, k, 2, d) != 0.0 {
+                    return Err(format!("∂μ/∂θ ≠ 0 without a temperature law, point {k}"));
+                }
+            }
+            if isotropic && out.mu(n, k, 0).to_bits() != out.mu(n, k, 1).to_bits() {
+                return Err(format!("isotropic but μ₁ ≠ μ₂ at point {k}"));
+            }
+            if adhesive {
+                let still = (0..3).all(|j| out.deriv(n, k, j, 0) == 0.0);
+                if out.mu(n, k, 0) != self.prop(1) || !still {
+                    return Err(format!("PROPS(1) = 2 but μ ≠ PROPS(2) at point {k}"));
+                }
+            } else if let Some(direct) = self.direct(k) {
+                for (d, m) in direct.iter().enumerate() {
+                    let got = out.mu(n, k, d);
+                    if (got - m).abs() > 1e-12 * m.abs() {
+                        return Err(format!(
+                            "μ({k},{d}) = {got:e}, direct evaluation {m:e} (rate {rate:e}, p {p:e})"
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// `PROPS(i+1)`, 0 when absent.
+    fn prop(&self, i: usize) -> f64 {
+        self.props.get(i).copied().unwrap_or(0.0)
+    }
+
+    /// A law-1 temperature law (`PROPS(12)` of law 2 is a heat fraction, not read here).
+    fn reads_temperature(&self) -> bool {
+        self.prop(0) == 1.0 && self.prop(11) != 0.0
+    }
+
+    /// μ₁, μ₂ of point k straight from docs/props.md, written independently of the library:
+    /// μ_i = (μ_s,i·e + μ_k,i·(1 − e))·π·Θ with e = exp(−d_c·γ̇), 1 − e = −expm1(−d_c·γ̇),
+    /// μ_k,2 = μ_k·μ₂/μ₁, π = 1/(1 + p⁺/p_ref), Θ = exp(−b_θ(θ̄ − θ_ref)). `None` when an
+    /// intermediate leaves the normal range (the library multiplies in another order there).
+    fn direct(&self, k: usize) -> Option<[f64; 2]> {
+        let normal = |x: f64| x == 0.0 || (x.abs() > 1e-280 && x.abs() < 1e280);
+        let mu1 = self.prop(1);
+        let mu2 = if self.prop(2) != 0.0 {
+            self.prop(2)
+        } else {
+            mu1
+        };
+        let (rate, p) = (self.slip[k], self.pressure[k].max(0.0));
+        let (e, one_minus_e, mu_k1) = if self.prop(7) == 1.0 {
+            let x = self.prop(9) * rate;
+            ((-x).exp(), -(-x).exp_m1(), self.prop(8))
+        } else {
+            (1.0, 0.0, 0.0)
+        };
+        let ratio = mu2 / mu1;
+        // The library keeps r = μ_k/μ_s; an r out of the normal range (underflowing to 0,
+        // an absolute difference of at most μ_k) is not compared here.
+        let r = mu_k1 / mu1;
+        if mu_k1 != 0.0 && !(ratio.is_normal() && normal(ratio) && r.is_normal() && normal(r)) {
+            return None;
+        }
+        let mu_k2 = mu_k1 * ratio;
+        let pi = if self.prop(10) > 0.0 {
+            1.0 / (1.0 + p / self.prop(10))
+        } else {
+            1.0
+        };
+        let theta = if self.reads_temperature() {
+            (-self.prop(11) * (self.temp[k] - self.prop(12))).exp()
+        } else {
+            1.0
+        };
+        let m1 = (mu1 * e + mu_k1 * one_minus_e) * pi * theta;
+        let m2 = (mu2 * e + mu_k2 * one_minus_e) * pi * theta;
+        let parts = [mu1, mu2, e, one_minus_e, mu_k1, mu_k2, pi, theta, m1, m2];
+        let parts_ok = parts.iter().all(|x| normal(*x));
+        let products = [mu1 * e, mu_k1 * one_minus_e, mu2 * e, mu_k2 * one_minus_e];
+        (parts_ok && products.iter().all(|x| normal(*x))).then_some([m1, m2])
+    }
+}
+
+fn same_coef(a: &FricCoefCase, b: &FricCoefCase) -> bool {
+    let reals = |c: &FricCoefCase| {
+        let mut v = bits(&c.rdata);
+        for x in [&c.props, &c.slip, &c.pressure, &c.temp, &c.field] {
+            v.extend(bits(x));
+        }
+        v
+    };
+    reals(a) == reals(b)
+        && [a.nblock, a.nprops, a.ntemp, a.nfields] == [b.nblock, b.nprops, b.ntemp, b.nfields]
+        && a.idata == b.idata
+        && (&a.surf_int, &a.surf_sec, &a.surf_main) == (&b.surf_int, &b.surf_sec, &b.surf_main)
+}
+
+/// Which pointer argument of `ifl_forced_sliding` is passed as NULL.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SlideNull {
+    None,
+    Props,
+    Velocity,
+    Tau,
+    Damping,
+    Stiffness,
+}
+
+/// Every `ifl_forced_sliding` argument; arrays of exactly `nfdir` (`nfdir²`) entries.
+#[derive(Clone, Debug)]
+pub struct ForcedSlidingCase {
+    pub props: Vec<f64>,
+    pub nprops: i32,
+    pub nfdir: i32,
+    pub velocity: Vec<f64>,
+    pub pressure: f64,
+    pub temperature: f64,
+    pub null: SlideNull,
+}
+
+/// What `ifl_forced_sliding` wrote.
+#[derive(Clone, Debug)]
+pub struct SlideOutputs {
+    pub status: IflStatus,
+    pub tau: Vec<f64>,
+    pub damping: Vec<f64>,
+    pub stiffness: Vec<f64>,
+    pub message: String,
+}
+
+impl ForcedSlidingCase {
+    /// Decodes any byte string (mostly nfdir 1 or 2 and a valid law-1 `PROPS`).
+    pub fn decode(b: &mut Bytes) -> Self {
+        let nfdir = b.pick(&[1, 2, 1, 2, 1, 2, 0, 3, -1]);
+        let nprops = b.pick(&[13, 13, 10, 8, 4, 2, 20, 21, 1, 0, -1]);
+        let null = match b.u8() {
+            0 => SlideNull::Props,
+            1 => SlideNull::Velocity,
+            2 => SlideNull::Tau,
+            3 => SlideNull::Damping,
+            4 => SlideNull::Stiffness,
+            _ => SlideNull::None,
+        };
+        let props = decode_props(b, len(nprops));
+        ForcedSlidingCase {
+            props,
+            nprops,
+            nfdir,
+            velocity: vec_of(b, len(nfdir)),
+            pressure: b.real(),
+            temperature: b.real(),
+            null,
+        }
+    }
+
+    /// Calls `ifl_forced_sliding` and checks every property.
+    pub fn check(&self) -> Result<SlideOutputs, String> {
+        let before = self.clone();
+        let n = len(self.nfdir);
+        let mut out = SlideOutputs {
+            status: IflStatus::Ok,
+            tau: vec![UNWRITTEN; n],
+            damping: vec![UNWRITTEN; n * n],
+            stiffness: vec![UNWRITTEN; n],
+            message: String::new(),
+        };
+        let null = self.null;
+        let mo = |p: *mut f64, which| {
+            if null == which {
+                std::ptr::null_mut()
+            } else {
+                p
+            }
+        };
+        let ro = |p: *const f64, which| if null == which { std::ptr::null() } else { p };
+        ifl_clear_error();
+        // SAFETY: arrays of exactly nprops, nfdir, nfdir² entries; NULL where `null` says so.
+        unsafe {
+            out.status = ifl_forced_sliding(
+                ro(self.props.as_ptr(), SlideNull::Props),
+                self.nprops,
+                self.nfdir,
+                ro(self.velocity.as_ptr(), SlideNull::Velocity),
+                self.pressure,
+                self.temperature,
+                mo(out.tau.as_mut_ptr(), SlideNull::Tau),
+                mo(out.damping.as_mut_ptr(), SlideNull::Damping),
+                mo(out.stiffness.as_mut_ptr(), SlideNull::Stiffness),
+            );
+            out.message = CStr::from_ptr(ifl_last_error())
+                .to_string_lossy()
+                .into_owned();
+        }
+        let unchanged = bits(&self.props) == bits(&before.props)
+            && bits(&self.velocity) == bits(&before.velocity);
+        if !unchanged {
+            return Err("an input was written".into());
+        }
+        self.check_outputs(&out)?;
+        Ok(out)
+    }
+
+    fn check_outputs(&self, out: &SlideOutputs) -> Result<(), String> {
+        let n = len(self.nfdir);
+        if (out.status == IflStatus::Ok) != out.message.is_empty() {
+            return Err(format!(
+                "status {:?} with message {:?}",
+                out.status, out.message
+            ));
+        }
+        let outputs = [
+            (&out.tau, SlideNull::Tau),
+            (&out.damping, SlideNull::Damping),
+            (&out.stiffness, SlideNull::Stiffness),
+        ];
+        if out.status != IflStatus::Ok {
+            if !out.message.starts_with("interfacial: ifl_forced_sliding: ") {
+                return Err(format!(
+                    "message does not name the routine: {:?}",
+                    out.message
+                ));
+            }
+            // Outputs zeroed when nfdir is 1 or 2 (and the pointer not NULL).
+            let valid = self.nfdir == 1 || self.nfdir == 2;
+            for (v, which) in outputs {
+                if valid && self.null != which && v.iter().any(|x| *x != 0.0) {
+                    return Err(format!(
+                        "refused ({}) but {which:?} not zeroed",
+                        out.message
+                    ));
+                }
+            }
+            return Ok(());
+        }
+        if self.null != SlideNull::None {
+            return Err(format!("a NULL {:?} was accepted", self.null));
+        }
+        for (v, which) in outputs {
+            if let Some(x) = v
+                .iter()
+                .find(|x| !x.is_finite() || x.to_bits() == UNWRITTEN.to_bits())
+            {
+                return Err(format!("success but {which:?} holds {x}"));
+            }
+        }
+        // τ is parallel to the (scaled) velocity component by component: τ_a·v_a ≥ 0, and
+        // zero with no pressure or no velocity.
+        for a in 0..n {
+            if out.tau[a] * self.velocity[a] < 0.0 {
+                return Err(format!(
+                    "τ({a}) = {} against v = {}",
+                    out.tau[a], self.velocity[a]
+                ));
+            }
+        }
+        let still = self.velocity.iter().all(|v| *v == 0.0);
+        if (self.pressure <= 0.0 || still) && out.tau.iter().any(|t| *t != 0.0) {
+            return Err(format!(
+                "τ = {:?} with p = {} and v = {:?}",
+                out.tau, self.pressure, self.velocity
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// One fuzz input: the first byte picks the entry point (three in four `fric_coef_`).
+pub enum CoefCall {
+    Coef(FricCoefCase),
+    Slide(ForcedSlidingCase),
+}
+
+impl CoefCall {
+    pub fn decode(data: &[u8]) -> Self {
+        let mut b = Bytes::new(data);
+        if b.u8() % 4 == 3 {
+            CoefCall::Slide(ForcedSlidingCase::decode(&mut b))
+        } else {
+            CoefCall::Coef(FricCoefCase::decode(&mut b))
+        }
+    }
+
+    pub fn check(&self) -> Result<(), String> {
+        match self {
+            CoefCall::Coef(c) => c.check().map(|_| ()),
+            CoefCall::Slide(c) => c.check().map(|_| ()),
+        }
+    }
+}
+
+impl std::fmt::Debug for CoefCall {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            CoefCall::Coef(c) => c.fmt(f),
+            CoefCall::Slide(c) => c.fmt(f),
+        }
+    }
+}

@@ -1,0 +1,119 @@
+//! Every crash the `fric_coef` fuzz target found (docs/fuzzing.md), replayed as a plain test
+//! through the real `fric_coef_` / `ifl_forced_sliding` symbols with exactly sized arrays, plus
+//! the closed-form answers the fixes give.
+//!
+//! The target's decoder and property checks are compiled in from `fuzz/src` by path, so a
+//! replayed input is checked for exactly the properties the fuzzer checked. The explicit cases
+//! do not depend on the byte encoding and stay meaningful if it changes.
+
+#[allow(dead_code)]
+#[path = "../fuzz/src/bytes.rs"]
+mod bytes;
+#[allow(dead_code)]
+#[path = "../fuzz/src/fric_coef_case.rs"]
+mod fric_coef_case;
+
+use fric_coef_case::{CoefCall, CoefNull, FricCoefCase};
+
+/// Crash C1 (first seconds of fuzzing): a valid block of 2 points with `fCoef` NULL. The call
+/// computed μ and wrote it through the NULL pointer: SIGSEGV inside the library (no panic to
+/// catch). Fixed by refusing NULL output arrays before any work.
+const CRASH_C1: [u8; 4] = [52, 15, 52, 122];
+
+/// Crash C2: μ_s = 1.05e-12, μ_k = 9.8e12 (r = μ_k/μ_s ≈ 9e24): at rest μ came out 0 instead
+/// of μ_s, because φ = r + (1 − r)·e cancels to 0 for r ≫ 1/ε. Fixed by φ = e + r(1 − e).
+const CRASH_C2: [u8; 25] = [
+    126, 3, 121, 134, 96, 163, 44, 74, 187, 121, 1, 0, 249, 249, 249, 249, 249, 249, 249, 249, 249,
+    249, 249, 249, 33,
+];
+
+fn replay(data: &[u8]) -> CoefCall {
+    let call = CoefCall::decode(data);
+    if let Err(e) = call.check() {
+        panic!("{e}\ninput: {call:?}");
+    }
+    call
+}
+
+#[test]
+fn crash_c1_replays_clean() {
+    let CoefCall::Coef(case) = replay(&CRASH_C1) else {
+        panic!("the decoder changed: not a fric_coef_ call");
+    };
+    assert_eq!(case.null, CoefNull::FCoef, "the decoder changed: {case:?}");
+}
+
+#[test]
+fn null_output_arrays_are_refused_and_the_other_array_zeroed() {
+    let props = [1.0, 0.3];
+    for null in [CoefNull::FCoef, CoefNull::FCoefDeriv] {
+        let mut case = FricCoefCase::block(&props, &[0.1, 0.2], &[1.0, 2.0], &[0.0, 0.0]);
+        case.null = null;
+        let out = case.check().unwrap_or_else(|e| panic!("{e}"));
+        let name = if null == CoefNull::FCoef {
+            "fCoef is a NULL pointer"
+        } else {
+            "fCoefDeriv is a NULL pointer"
+        };
+        assert!(out.message.contains(name), "{}", out.message);
+        let other = if null == CoefNull::FCoef {
+            &out.deriv
+        } else {
+            &out.coef
+        };
+        assert!(other.iter().all(|x| *x == 0.0), "{other:?}");
+    }
+}
+
+#[test]
+fn crash_c2_replays_clean() {
+    let CoefCall::Coef(case) = replay(&CRASH_C2) else {
+        panic!("the decoder changed: not a fric_coef_ call");
+    };
+    assert_eq!(case.props[7], 1.0, "the decoder changed: {case:?}");
+    assert!(
+        case.props[8] / case.props[1] > 1e20,
+        "the decoder changed: {case:?}"
+    );
+    assert!(
+        case.props[9] > 0.0 && case.slip[0] == 0.0,
+        "the decoder changed: {case:?}"
+    );
+}
+
+#[test]
+fn decay_law_with_a_kinetic_coefficient_far_above_the_static_one() {
+    // μ = μ_s·e + μ_k·(1 − e), e = exp(−d_c·γ̇) (docs/props.md, PROPS(8) = 1).
+    // μ_s = 1e-3, μ_k = 1e20, d_c = 1.
+    let props = [
+        1.0, 1e-3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1e20, 1.0, 0.0, 0.0, 0.0,
+    ];
+    let rates = [0.0, 1e-30, 1e-20, 50.0];
+    let case = FricCoefCase::block(&props, &rates, &[1.0; 4], &[0.0; 4]);
+    let out = case.check().unwrap_or_else(|e| panic!("{e}"));
+    assert!(out.message.is_empty(), "{}", out.message);
+    let n = rates.len();
+    // At rest: μ_s exactly (was 0).
+    assert_eq!(out.mu(n, 0, 0), 1e-3);
+    // γ̇ = 1e-30: e = 1 − 1e-30 to within 1e-60, μ = 1e-3 + 1e20·1e-30 = 1e-3 + 1e-10.
+    let m = 1e-3 + 1e-10;
+    assert!(
+        (out.mu(n, 1, 0) - m).abs() <= 1e-15 * m,
+        "{}",
+        out.mu(n, 1, 0)
+    );
+    // γ̇ = 1e-20: μ = 1e-3 + 1 (to 1e-15).
+    assert!(
+        (out.mu(n, 2, 0) - 1.001).abs() <= 1e-15,
+        "{}",
+        out.mu(n, 2, 0)
+    );
+    // γ̇ = 50: e = e^{-50} ≈ 1.9e-22, μ = μ_k to round-off.
+    assert!((out.mu(n, 3, 0) - 1e20).abs() <= 1e20 * 1e-15);
+    // ∂μ/∂γ̇ = d_c(μ_k − μ_s)e: at rest 1e20 − 1e-3.
+    assert!((out.deriv(n, 0, 0, 0) - 1e20).abs() <= 1e20 * 1e-15);
+    // Isotropic: μ₂ = μ₁ bit for bit.
+    for k in 0..n {
+        assert_eq!(out.mu(n, k, 0).to_bits(), out.mu(n, k, 1).to_bits());
+    }
+}
