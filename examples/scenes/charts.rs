@@ -42,8 +42,10 @@ fn decades(values: impl Iterator<Item = f64>) -> (f64, f64) {
     )
 }
 
-/// Error against cost, one curve per method; `cost` picks the x value of a point. Points that
-/// did not complete (or whose error is not measurable) are left out of the curves; the error is
+/// Error against cost, one curve per method; `cost` picks the x value of a point. Points whose
+/// run did not end "ok" are left out of the curves and drawn apart in the method's colour: a
+/// cross at their error when it is measurable (chattering, rate-unstable, …), a triangle on the
+/// top edge when it is not (a library cut-back, PNEWDT < 1, or a diverged run). The error is
 /// floored at 1e-16 so that round-off-exact results stay on a log axis.
 pub fn work_precision(
     path: &Path,
@@ -58,11 +60,13 @@ pub fn work_precision(
         .iter()
         .filter(|p| p.verdict == "ok" && p.error.is_finite())
         .collect();
-    let (x0, x1) = decades(usable.iter().map(|p| cost(p)));
+    let failed: Vec<&Point> = points.iter().filter(|p| p.verdict != "ok").collect();
+    let (x0, x1) = decades(usable.iter().chain(&failed).map(|p| cost(p)));
     let (y0, y1) = decades(
         usable
             .iter()
-            .flat_map(|p| [p.error.max(1e-16), p.claim.max(1e-16)]),
+            .flat_map(|p| [p.error.max(1e-16), p.claim.max(1e-16)])
+            .chain(failed.iter().map(|p| p.error.max(1e-16))),
     );
     let root = SVGBackend::new(path, (820, 540)).into_drawing_area();
     root.fill(&WHITE).map_err(err)?;
@@ -95,6 +99,23 @@ pub fn work_precision(
             .map(|p| (cost(p), p.error.max(1e-16)))
             .collect();
         series.sort_by(|a, b| a.0.total_cmp(&b.0));
+        // Runs that did not end "ok": crosses at a measurable error, triangles on top.
+        let top = y1 / 10f64.powf(0.05 * (y1 / y0).log10());
+        let mine = || failed.iter().filter(|p| p.method == *m);
+        chart
+            .draw_series(
+                mine()
+                    .filter(|p| p.error.is_finite())
+                    .map(|p| Cross::new((cost(p), p.error.max(1e-16)), 4, color.stroke_width(2))),
+            )
+            .map_err(err)?;
+        chart
+            .draw_series(
+                mine()
+                    .filter(|p| !p.error.is_finite())
+                    .map(|p| TriangleMarker::new((cost(p), top), 5, color.filled())),
+            )
+            .map_err(err)?;
         if series.is_empty() {
             continue;
         }
@@ -132,6 +153,13 @@ pub fn work_precision(
         .legend(|(x, y)| {
             DashedPathElement::new(vec![(x, y), (x + 18, y)], 4, 3, BLACK.stroke_width(1))
         });
+    if !failed.is_empty() {
+        chart
+            .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
+            .map_err(err)?
+            .label("×: run not ok (verdict in the CSV); ▲ on top: no error (diverged, Newton failed, cut-back)")
+            .legend(|(x, y)| Cross::new((x + 9, y), 4, BLACK.stroke_width(2)));
+    }
     chart
         .configure_series_labels()
         .position(legend)

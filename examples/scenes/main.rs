@@ -26,6 +26,7 @@ mod oscillator;
 mod pull;
 mod scene;
 mod stability;
+mod velocity;
 
 use std::fmt::Write as _;
 use std::io::{IsTerminal as _, Write as _};
@@ -36,10 +37,11 @@ use scene::{Point, Scene, run_point};
 use stability::{Map, measured_boundary, run_map, theoretical_boundary};
 
 /// The built-in scene files, in the order they run.
-const SCENES: [(&str, &str); 3] = [
+const SCENES: [(&str, &str); 4] = [
     ("data/f6.toml", include_str!("data/f6.toml")),
     ("data/f1.toml", include_str!("data/f1.toml")),
     ("data/f2.toml", include_str!("data/f2.toml")),
+    ("data/f4.toml", include_str!("data/f4.toml")),
 ];
 
 struct Options {
@@ -317,6 +319,7 @@ fn main() {
         let error_label = match scene.kind {
             "oscillator" => "max relative error (T, x₂, energy/cycle)",
             "pull" => "max |γ − γ_exact| / (τ_c/K)",
+            "velocity" => "mean |τ − τ_law(v)| / swing of τ_law",
             _ => "lag angle error (rad)",
         };
         let written = write_points(&csv, &points)
