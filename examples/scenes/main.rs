@@ -8,7 +8,8 @@
 //!
 //! 1. Closed-form checks of every scene (F1, F2, F5 through `fric_`; T1, T2 through `gapcon_`).
 //! 2. Work-precision sweeps of the scenes in `examples/scenes/data/*.toml` (F6 stick-slip
-//!    oscillator, F1 pull through a spring, F2 circle): every method over its step sizes, error
+//!    oscillator, F1 pull through a spring, F2 circle, F4 velocity steps with the rate laws:
+//!    decay law implicit and with μ frozen, adhesive law): every method over its step sizes, error
 //!    against the closed form, wall time and `fric_` calls, each point held to the accuracy its
 //!    chart claims (dashed on the charts).
 //! 3. Stability maps of F6 over (Δt, γ_crit), with the explicit limit, and the check that the
