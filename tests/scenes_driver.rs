@@ -12,6 +12,8 @@ mod circle;
 mod oscillator;
 #[path = "../examples/scenes/pull.rs"]
 mod pull;
+#[path = "../examples/scenes/rate_map.rs"]
+mod rate_map;
 #[path = "../examples/scenes/scene.rs"]
 mod scene;
 #[path = "../examples/scenes/stability.rs"]
@@ -313,5 +315,41 @@ fn velocity_weakening_sliding_is_stable_above_the_closed_form_step_limit_only() 
         let (above, below) = (steady(1.3 * limit), steady(0.7 * limit));
         assert!(above < 1e-9, "{law:?}: Δt = 1.3 × limit {limit}: {above}");
         assert!(below > 1e-3, "{law:?}: Δt = 0.7 × limit {limit}: {below}");
+    }
+}
+
+#[test]
+fn rate_stability_maps_follow_the_closed_form_limit() {
+    // The reduced F4 maps over (Δt, d_c): in every row held to the linear limit the first
+    // settling Δt is within one cell of it, oscillating cells lie below it, and both classes
+    // occur (the map is not all one colour); the library never cuts back.
+    let v = f4().file.velocity.expect("F4");
+    for law in [velocity::RateLaw::Decay, velocity::RateLaw::DecayFrozen] {
+        let map = rate_map::RateMap::run(&v, law, 1e-3, 10, 4);
+        let mut checked = 0;
+        for r in 0..map.decays.len() {
+            assert!(
+                map.boundary_matches(r),
+                "{law:?}: row d_c = {}",
+                map.decays[r]
+            );
+            if map.checked(r) {
+                checked += 1;
+                let limit = map.limit(r);
+                for (c, cell) in map.cells[r].iter().enumerate() {
+                    if map.dts[c] < limit / 1.5 {
+                        assert_eq!(*cell, rate_map::RateCell::Oscillates, "{law:?} r{r} c{c}");
+                    }
+                    if map.dts[c] > 1.5 * limit {
+                        assert_eq!(*cell, rate_map::RateCell::Settles, "{law:?} r{r} c{c}");
+                    }
+                }
+            }
+        }
+        assert!(checked >= 2, "{law:?}: {checked} rows checked");
+        let cells: Vec<_> = map.cells.iter().flatten().collect();
+        assert!(cells.contains(&&rate_map::RateCell::Settles));
+        assert!(cells.contains(&&rate_map::RateCell::Oscillates));
+        assert!(!cells.contains(&&rate_map::RateCell::CutBack));
     }
 }
