@@ -8,7 +8,8 @@
 //!
 //! 1. Closed-form checks of every scene (F1, F2, F5 through `fric_`; T1, T2 through `gapcon_`).
 //! 2. Work-precision sweeps of the scenes in `examples/scenes/data/*.toml` (F6 stick-slip
-//!    oscillator, F1 pull through a spring, F2 circle): every method over its step sizes, error
+//!    oscillator, F1 pull through a spring, F2 circle, F4 velocity steps with the rate laws:
+//!    decay law implicit and with μ frozen, adhesive law): every method over its step sizes, error
 //!    against the closed form, wall time and `fric_` calls, each point held to the accuracy its
 //!    chart claims (dashed on the charts).
 //! 3. Stability maps of F6 over (Δt, γ_crit), with the explicit limit, and the check that the
@@ -24,8 +25,10 @@ mod checks;
 mod circle;
 mod oscillator;
 mod pull;
+mod rate_map;
 mod scene;
 mod stability;
+mod velocity;
 
 use std::fmt::Write as _;
 use std::io::{IsTerminal as _, Write as _};
@@ -36,10 +39,11 @@ use scene::{Point, Scene, run_point};
 use stability::{Map, measured_boundary, run_map, theoretical_boundary};
 
 /// The built-in scene files, in the order they run.
-const SCENES: [(&str, &str); 3] = [
+const SCENES: [(&str, &str); 4] = [
     ("data/f6.toml", include_str!("data/f6.toml")),
     ("data/f1.toml", include_str!("data/f1.toml")),
     ("data/f2.toml", include_str!("data/f2.toml")),
+    ("data/f4.toml", include_str!("data/f4.toml")),
 ];
 
 struct Options {
@@ -274,7 +278,8 @@ fn main() {
                     .sum::<usize>()
         })
         .sum::<usize>()
-        + usize::from(opts.point.is_none());
+        + usize::from(opts.point.is_none())
+        + scenes.iter().filter(|s| s.file.velocity.is_some()).count() * 2;
     let mut progress = Progress {
         done: 0,
         total,
@@ -299,6 +304,7 @@ fn main() {
     }
     let mut all_points = Vec::new();
     let mut maps: Vec<(usize, Map)> = Vec::new();
+    let mut rate_maps: Vec<rate_map::RateMap> = Vec::new();
     let mut outputs = Vec::new();
     for scene in &scenes {
         let points = sweep(scene, opts.quick, |w| progress.tick(w));
@@ -317,6 +323,7 @@ fn main() {
         let error_label = match scene.kind {
             "oscillator" => "max relative error (T, x₂, energy/cycle)",
             "pull" => "max |γ − γ_exact| / (τ_c/K)",
+            "velocity" => "mean |τ − τ_law(v)| / swing of τ_law",
             _ => "lag angle error (rad)",
         };
         let written = write_points(&csv, &points)
@@ -348,6 +355,41 @@ fn main() {
         }
         outputs.extend([csv, time_svg, calls_svg]);
         all_points.extend(points);
+        if let Some(v) = &scene.file.velocity {
+            // Rate-stability maps over (Δt, d_c) with a soft stick spring (γ_crit = 1e-3).
+            let (nx, ny) = if opts.quick { (10, 4) } else { (31, 13) };
+            for (i, law) in [velocity::RateLaw::Decay, velocity::RateLaw::DecayFrozen]
+                .into_iter()
+                .enumerate()
+            {
+                let map = rate_map::RateMap::run(v, law, 1e-3, nx, ny);
+                progress.tick(&format!("{id} rate map {}", i + 1));
+                let csv = opts.out.join(format!("{id}-map-{}.csv", i + 1));
+                let svg = opts.out.join(format!("{id}-map-{}.svg", i + 1));
+                let mut text = String::from("dt,decay,class,closed_form_limit\n");
+                for (r, row) in map.cells.iter().enumerate() {
+                    for (c, cell) in row.iter().enumerate() {
+                        let _ = writeln!(
+                            text,
+                            "{:e},{:e},{},{:e}",
+                            map.dts[c],
+                            map.decays[r],
+                            cell.name(),
+                            map.limit(r)
+                        );
+                    }
+                }
+                if let Err(e) = std::fs::write(&csv, text)
+                    .map_err(|e| format!("cannot write {}: {e}", csv.display()))
+                    .and_then(|()| charts::rate_map(&svg, &map))
+                {
+                    eprintln!("\nscenes: {e}");
+                    failures += 1;
+                }
+                outputs.extend([csv, svg]);
+                rate_maps.push(map);
+            }
+        }
         if let Some(o) = &scene.file.oscillator {
             for (i, spec) in scene.file.maps.iter().enumerate() {
                 let label = spec.label.clone();
@@ -428,6 +470,35 @@ fn main() {
                 String::new()
             };
             println!("  γ_crit {:.1e}: {counts}{boundary}", map.gammas[r]);
+        }
+    }
+    for map in &rate_maps {
+        println!("\n{}", map.title());
+        for r in 0..map.decays.len() {
+            let ok = map.boundary_matches(r);
+            if !ok {
+                failures += 1;
+            }
+            let first = map.cells[r]
+                .iter()
+                .position(|c| *c == rate_map::RateCell::Settles)
+                .map_or("none".into(), |c| format!("{:.3e}", map.dts[c]));
+            let cutbacks = map.cells[r]
+                .iter()
+                .filter(|c| **c == rate_map::RateCell::CutBack)
+                .count();
+            println!(
+                "  d_c {:>7.3}: closed-form limit {:.3e}, first settling Δt {first} ({}), cut-backs {cutbacks}",
+                map.decays[r],
+                map.limit(r),
+                if !map.checked(r) {
+                    "d_c v > 1: not held to the linear limit"
+                } else if ok {
+                    "within one cell"
+                } else {
+                    "MISMATCH"
+                }
+            );
         }
     }
     println!("\nWritten:");

@@ -16,6 +16,7 @@ use serde::Deserialize;
 use crate::circle::Circle;
 use crate::oscillator::{Integrator, Oscillator, Stick, Verdict, simulate};
 use crate::pull::Pull;
+use crate::velocity::{RateLaw, VelocitySteps};
 
 /// A scene file.
 #[derive(Clone, Debug, Deserialize)]
@@ -31,6 +32,8 @@ pub struct SceneFile {
     pub circle: Option<Circle>,
     /// F1 with a spring host (kind = "pull").
     pub pull: Option<Pull>,
+    /// F4 velocity steps with a rate law (kind = "velocity").
+    pub velocity: Option<VelocitySteps>,
     /// Step sizes of the full sweep (F6: Δt; F2: increments per turn; F1: increments per
     /// stick stretch τ_c/K).
     pub steps: Vec<f64>,
@@ -50,8 +53,9 @@ pub struct SceneFile {
 pub struct MethodSpec {
     /// Legend text.
     pub label: String,
-    /// The friction law: "coulomb" (the only one on this branch; rate laws and the adhesive law
-    /// join as new values).
+    /// The friction law: "coulomb" (F6, F1, F2); "decay" (law 1's exponential decay μ law at
+    /// the end-of-increment rate), "decay-frozen" (μ frozen at the start-of-increment rate,
+    /// `PROPS(20) = 1`) or "adhesive" (law 2, seed 004) in F4.
     #[serde(default = "coulomb")]
     pub law: String,
     /// F6: "explicit" (central differences), "newmark" or "hht"; F2: "return-map"; F1:
@@ -69,6 +73,9 @@ pub struct MethodSpec {
     pub claim_slope: f64,
     /// Claims hold only up to this step (e.g. the explicit stability limit); default: all.
     pub claim_max_step: Option<f64>,
+    /// Claims hold only from this step on (F4: the rate-stability limit of a velocity-weakening
+    /// law on the stick spring); default: all.
+    pub claim_min_step: Option<f64>,
 }
 
 fn coulomb() -> String {
@@ -104,6 +111,8 @@ pub struct MapSpec {
 pub enum Law {
     /// The extended Coulomb law through `fric_` (`PROPS(1) = 1`).
     Coulomb,
+    /// A rate law of F4.
+    Rate(RateLaw),
 }
 
 /// A parsed method.
@@ -123,10 +132,14 @@ impl Method {
     /// Checks a `[[method]]` table.
     pub fn parse(spec: &MethodSpec, kind: &str) -> Result<Method, String> {
         let law = match spec.law.as_str() {
-            "coulomb" => Law::Coulomb,
+            "coulomb" if kind != "velocity" => Law::Coulomb,
+            "decay" if kind == "velocity" => Law::Rate(RateLaw::Decay),
+            "decay-frozen" if kind == "velocity" => Law::Rate(RateLaw::DecayFrozen),
+            "adhesive" if kind == "velocity" => Law::Rate(RateLaw::Adhesive),
             other => {
                 return Err(format!(
-                    "method '{}': law '{other}' is not available (known: coulomb)",
+                    "method '{}': law '{other}' is not available in a {kind} scene (known: \
+                     coulomb in F6, F1, F2; decay, decay-frozen, adhesive in F4)",
                     spec.label
                 ));
             }
@@ -170,6 +183,9 @@ impl Method {
                 Integrator::Explicit
             }
             ("pull", "quasi-static") => Integrator::Explicit,
+            ("velocity", "quasi-static") if matches!(stick, Stick::Elastic { .. }) => {
+                Integrator::Explicit
+            }
             (k, i) => {
                 return Err(format!(
                     "method '{}': integrator '{i}' does not apply to a {k} scene",
@@ -213,6 +229,18 @@ impl Scene {
     pub fn parse(text: &str, origin: &str) -> Result<Scene, String> {
         let file: SceneFile = toml::from_str(text).map_err(|e| format!("{origin}: {e}"))?;
         let kind = match (&file.oscillator, &file.circle, &file.pull) {
+            _ if file.velocity.is_some() => {
+                if file.oscillator.is_some() || file.circle.is_some() || file.pull.is_some() {
+                    return Err(format!(
+                        "{origin}: give exactly one of [oscillator], [circle], [pull] or [velocity]"
+                    ));
+                }
+                if let Some(v) = &file.velocity {
+                    v.validate()
+                        .map_err(|e| format!("{origin}: [velocity] {e}"))?;
+                }
+                "velocity"
+            }
             (Some(o), None, None) => {
                 o.validate()
                     .map_err(|e| format!("{origin}: [oscillator] {e}"))?;
@@ -260,8 +288,11 @@ impl Scene {
         })
     }
 
-    /// The step in claim units: F6 Δt/T; F2 Δθ in radians; F1 Δu/(τ_c/K).
+    /// The step in claim units: F6 Δt/T; F2 Δθ in radians; F1 Δu/(τ_c/K); F4 Δt/hold.
     pub fn reference_step(&self, step: f64) -> f64 {
+        if let Some(v) = &self.file.velocity {
+            return step / v.hold;
+        }
         match (&self.file.oscillator, &self.file.circle) {
             (Some(o), _) => step / o.period(),
             // Increments per turn → Δθ in radians.
@@ -305,10 +336,11 @@ impl Point {
 
 /// Runs one method at one step.
 pub fn run_point(scene: &Scene, method: &Method, step: f64) -> Point {
-    let Law::Coulomb = method.law;
     let relative_step = scene.reference_step(step);
     let spec = &method.spec;
-    let claim = if spec.claim_max_step.is_none_or(|m| step <= m) {
+    let claim = if spec.claim_max_step.is_none_or(|m| step <= m)
+        && spec.claim_min_step.is_none_or(|m| step >= m)
+    {
         spec.claim_floor + spec.claim_slope * relative_step
     } else {
         f64::INFINITY
@@ -378,6 +410,30 @@ pub fn run_point(scene: &Scene, method: &Method, step: f64) -> Point {
         p.calls = run.calls;
         p.wall = run.wall;
         p.verdict = if run.ok { "ok" } else { "newton-failed" };
+    } else if let (Some(v), Law::Rate(law)) = (&scene.file.velocity, method.law) {
+        let gamma_crit = match method.stick {
+            Stick::Elastic { gamma_crit } => gamma_crit,
+            Stick::Exact => v.hold,
+        };
+        let mut run = v.run(law, gamma_crit, step);
+        for _ in 0..2 {
+            let again = v.run(law, gamma_crit, step);
+            if again.wall < run.wall {
+                run = again;
+            }
+        }
+        p.error = run.error;
+        p.details = vec![run.error, run.steady_error];
+        p.calls = run.calls;
+        p.wall = run.wall;
+        // PNEWDT < 1: the library's own local solve asked for a smaller step.
+        p.verdict = if !run.ok {
+            "cut-back"
+        } else if step < v.rate_stability_limit(law, gamma_crit) {
+            "rate-unstable"
+        } else {
+            "ok"
+        };
     }
     p
 }

@@ -219,7 +219,9 @@ fn check_sizes(b: &FricBatch<'_>) -> Result<(), LawError> {
 }
 
 /// Up to four rows of `n` entries, `ld` apart, borrowed from a structure-of-arrays slice whose
-/// length `check_sizes` has verified; rows past `rows` are empty.
+/// length `check_sizes` has verified; rows past `rows` are empty. Inlined, so that the loop
+/// over points sees every row's length as `n` and needs no bounds check per access.
+#[inline(always)]
 fn rows_mut(s: &mut [f64], ld: usize, n: usize, rows: usize) -> [&mut [f64]; 4] {
     let mut out: [&mut [f64]; 4] = [&mut [], &mut [], &mut [], &mut []];
     let mut rest = s;
@@ -237,6 +239,7 @@ fn rows_mut(s: &mut [f64], ld: usize, n: usize, rows: usize) -> [&mut [f64]; 4] 
 }
 
 /// As [`rows_mut`], shared.
+#[inline(always)]
 fn rows(s: &[f64], ld: usize, n: usize, rows: usize) -> [&[f64]; 4] {
     let mut out: [&[f64]; 4] = [&[]; 4];
     for (r, slot) in out.iter_mut().enumerate().take(rows) {

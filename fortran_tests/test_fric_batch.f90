@@ -1,0 +1,316 @@
+! test_fric_batch.f90 -- the batch entry ifl_fric_batch called from Fortran through
+! ISO_C_BINDING, the Fortran twin of c_tests/test_fric_batch.c. The structure-of-arrays layout is
+! a Fortran array X(LD, components): component a of point i is X(i, a), DDTDDG(a,c) of point i is
+! DDTDDG(i, a + (c-1)*NFDIR).
+!
+! - On pseudo-random points (stick, slip, exact stick, LM = 0/1/2, NFDIR 1 and 2, three PROPS
+!   variants, a padded leading dimension) every output equals what FRIC gives the same point
+!   called once per point (== on every entry: the batch runs the same code), and the padding
+!   rows past NPOINTS are never written.
+! - Closed forms at first contact: stick tau = (mu p/gc) dgam, DDTDDG = mu p/gc on the diagonal;
+!   slip |tau| = mu p.
+! - A point with a NaN input gets FRIC's failure outputs (DDTDDG, DDTDDP, DSLIP, SFD zero; LM,
+!   TAU, STATEV unchanged), the others are still computed, the status is IFL_STATUS_BAD_INPUT
+!   and PNEWDT is lowered to 0.25; NFDIR = 3 is refused as a whole (IFL_STATUS_BAD_PARAMETER,
+!   nothing written but PNEWDT).
+!
+! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
+
+module batch_api
+  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t
+  implicit none
+  integer(c_int), parameter :: ifl_status_ok = 0, ifl_status_bad_parameter = 1, &
+                               ifl_status_bad_input = 2
+  interface
+    ! include/interfacial.h: enum IflStatus ifl_fric_batch(size_t npoints, size_t ld, ...)
+    function ifl_fric_batch(npoints, ld, nfdir, props, nprops, nstatv, dtime, lm, tau, &
+                            ddtddg, ddtddp, dslip, sed, sfd, statev, dgam, taulm, press, &
+                            dpress, chrlngth, pnewdt) result(status) bind(c, name='ifl_fric_batch')
+      import :: c_int, c_double, c_size_t
+      integer(c_size_t), value :: npoints, ld
+      integer(c_int), value :: nfdir, nprops, nstatv
+      real(c_double), value :: dtime
+      real(c_double), intent(in) :: props(*), dgam(*), taulm(*), press(*), dpress(*), chrlngth(*)
+      integer(c_int), intent(inout) :: lm(*)
+      real(c_double), intent(inout) :: tau(*), statev(*), pnewdt
+      real(c_double), intent(inout) :: ddtddg(*), ddtddp(*), dslip(*), sed(*), sfd(*)
+      integer(c_int) :: status
+    end function ifl_fric_batch
+  end interface
+end module batch_api
+
+module batch_tally
+  implicit none
+  integer, parameter :: dp = kind(1.0d0)
+  integer :: npass = 0, nfail = 0
+  character(len=64) :: context = ''
+contains
+  subroutine check(ok, what)
+    logical, intent(in) :: ok
+    character(len=*), intent(in) :: what
+    if (ok) then
+      npass = npass + 1
+    else
+      nfail = nfail + 1
+      if (nfail <= 40) write (*, '(a,a,a,a)') 'FAIL [', trim(context), '] ', what
+    end if
+  end subroutine check
+end module batch_tally
+
+module batch_points
+  use batch_tally
+  implicit none
+  integer, parameter :: np = 33, ld = 37, nsv = 3
+  real(dp), parameter :: unset = 12345.678_dp, big = 1.0e36_dp
+  real(dp) :: seed = 4711.0_dp
+
+  ! One batch: every array LD rows, the rows past NP are padding.
+  type :: batch
+    integer :: lm(ld) = 0
+    real(dp) :: tau(ld, 2) = unset, ddtddg(ld, 4) = unset, ddtddp(ld, 2) = unset
+    real(dp) :: dslip(ld, 2) = unset, sed(ld) = unset, sfd(ld) = unset
+    real(dp) :: statev(ld, nsv) = unset, dgam(ld, 2) = 0, taulm(ld, 2) = 0
+    real(dp) :: press(ld) = 0, dpress(ld) = 0, chr(ld) = 1
+  end type batch
+
+contains
+
+  ! Park-Miller minimal standard generator, exact in double precision: a value in [a, b).
+  function uniform(a, b) result(x)
+    real(dp), intent(in) :: a, b
+    real(dp) :: x
+    seed = mod(seed*16807.0_dp, 2147483647.0_dp)
+    x = a + (b - a)*seed/2147483647.0_dp
+  end function uniform
+
+  subroutine random_batch(b, nfdir, gc)
+    type(batch), intent(out) :: b
+    integer, intent(in) :: nfdir
+    real(dp), intent(in) :: gc
+    integer :: i, a
+    real(dp) :: r, scale
+    do i = 1, np
+      scale = gc*merge(0.4_dp, 4.0_dp, uniform(0.0_dp, 1.0_dp) < 0.5_dp)
+      r = uniform(0.0_dp, 1.0_dp)
+      b%lm(i) = merge(0, merge(1, 2, r < 0.9_dp), r < 0.7_dp)
+      b%press(i) = uniform(-5.0_dp, 150.0_dp)
+      b%dpress(i) = uniform(-20.0_dp, 20.0_dp)
+      b%chr(i) = uniform(0.05_dp, 2.0_dp)
+      do a = 1, nfdir
+        b%tau(i, a) = uniform(-30.0_dp, 30.0_dp)
+        b%dgam(i, a) = uniform(-1.0_dp, 1.0_dp)*scale
+        b%taulm(i, a) = uniform(-60.0_dp, 60.0_dp)
+      end do
+      b%statev(i, 1) = uniform(0.0_dp, 1.0_dp)
+      b%statev(i, 2) = uniform(0.0_dp, 1.0_dp)
+      b%statev(i, 3) = real(int(uniform(0.0_dp, 2.999_dp)), dp)
+    end do
+  end subroutine random_batch
+
+  ! The same points through FRIC, one call each, the results stored back in the batch layout.
+  ! Returns the smallest PNEWDT FRIC asked for.
+  function per_point(b, nfdir, props, dtime) result(pnewdt)
+    type(batch), intent(inout) :: b
+    integer, intent(in) :: nfdir
+    real(dp), intent(in) :: props(:), dtime
+    real(dp) :: pnewdt
+    integer :: i, a, c, lm, nprops
+    real(dp) :: tau(2), ddtddg(4), ddtddp(2), dslip(2), sed, sfd, ddtddt(4), pn, statev(nsv)
+    real(dp) :: dgam(2), taulm(2), slip(2), time(2), coords(3), rcoord(3), drot(2, 2)
+    real(dp) :: temp(2), predef(2, 1), props_(8)
+    character(len=80) :: ciname, slname, msname
+    pnewdt = big
+    nprops = size(props)
+    props_ = 0
+    props_(1:nprops) = props
+    ciname = 'SI1'
+    slname = 'SLAVE'
+    msname = 'MASTER'
+    time = 0
+    coords = 0
+    rcoord = 0
+    drot = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+    temp = 20
+    predef = 0
+    slip = 0
+    do i = 1, np
+      lm = b%lm(i)
+      sed = b%sed(i)
+      sfd = b%sfd(i)
+      do a = 1, nfdir
+        tau(a) = b%tau(i, a)
+        dgam(a) = b%dgam(i, a)
+        taulm(a) = b%taulm(i, a)
+        ddtddp(a) = b%ddtddp(i, a)
+        dslip(a) = b%dslip(i, a)
+        do c = 1, nfdir
+          ddtddg(a + (c - 1)*nfdir) = b%ddtddg(i, a + (c - 1)*nfdir)
+        end do
+      end do
+      statev = b%statev(i, :)
+      ddtddt = 0
+      pn = big
+      call fric(lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pn, statev, dgam, taulm, &
+                b%press(i), b%dpress(i), 1.0e6_dp, slip, 1, 1, time, dtime, 0, ciname, slname, &
+                msname, 1, 1, 1, coords, rcoord, drot, temp, predef, nfdir, 3, 1, nsv, b%chr(i), &
+                props_, nprops)
+      pnewdt = min(pnewdt, pn)
+      b%lm(i) = lm
+      b%sed(i) = sed
+      b%sfd(i) = sfd
+      do a = 1, nfdir
+        b%tau(i, a) = tau(a)
+        b%ddtddp(i, a) = ddtddp(a)
+        b%dslip(i, a) = dslip(a)
+        do c = 1, nfdir
+          b%ddtddg(i, a + (c - 1)*nfdir) = ddtddg(a + (c - 1)*nfdir)
+        end do
+      end do
+      b%statev(i, :) = statev
+    end do
+  end function per_point
+
+  function batch_call(b, nfdir, props, dtime, pnewdt) result(status)
+    use batch_api
+    type(batch), intent(inout) :: b
+    integer, intent(in) :: nfdir
+    real(dp), intent(in) :: props(:), dtime
+    real(dp), intent(inout) :: pnewdt
+    integer(c_int) :: status
+    status = ifl_fric_batch(int(np, c_size_t), int(ld, c_size_t), int(nfdir, c_int), props, &
+                            int(size(props), c_int), int(nsv, c_int), dtime, b%lm, b%tau, &
+                            b%ddtddg, b%ddtddp, b%dslip, b%sed, b%sfd, b%statev, b%dgam, &
+                            b%taulm, b%press, b%dpress, b%chr, pnewdt)
+  end function batch_call
+
+  ! Every array entry by entry, padding included.
+  logical function same(x, y)
+    type(batch), intent(in) :: x, y
+    same = all(x%lm == y%lm) .and. all(x%tau == y%tau) .and. all(x%ddtddg == y%ddtddg) &
+           .and. all(x%ddtddp == y%ddtddp) .and. all(x%dslip == y%dslip) &
+           .and. all(x%sed == y%sed) .and. all(x%sfd == y%sfd) .and. all(x%statev == y%statev)
+  end function same
+
+  logical function padding_untouched(b)
+    type(batch), intent(in) :: b
+    padding_untouched = all(b%tau(np + 1:, :) == unset) .and. all(b%ddtddg(np + 1:, :) == unset) &
+                        .and. all(b%ddtddp(np + 1:, :) == unset) &
+                        .and. all(b%dslip(np + 1:, :) == unset) .and. all(b%sed(np + 1:) == unset) &
+                        .and. all(b%sfd(np + 1:) == unset) .and. all(b%statev(np + 1:, :) == unset)
+  end function padding_untouched
+
+end module batch_points
+
+program test_fric_batch
+  use batch_api
+  use batch_points
+  implicit none
+  real(dp), parameter :: mu = 0.3_dp, gc = 1.0e-3_dp
+  real(dp) :: variants(7, 3), pw, pb, ks
+  type(batch) :: in, want, got
+  integer :: v, nfdir, i
+  integer(c_int) :: status
+
+  variants(:, 1) = [1.0_dp, mu, 0.0_dp, 0.0_dp, gc, 0.0_dp, 0.0_dp]        ! elastic stick
+  variants(:, 2) = [1.0_dp, mu, 0.0_dp, 0.0_dp, gc, 0.0_dp, 1.0_dp]        ! exact stick
+  variants(:, 3) = [1.0_dp, 0.4_dp, 0.0_dp, 25.0_dp, 0.0_dp, 0.01_dp, 0.0_dp] ! tau_max, CHRLNGTH
+
+  ! Bit for bit against FRIC per point.
+  do v = 1, 3
+    do nfdir = 1, 2
+      write (context, '(a,i0,a,i0)') 'PROPS variant ', v, ', NFDIR = ', nfdir
+      call random_batch(in, nfdir, 2.0e-3_dp)
+      want = in
+      got = in
+      pb = big
+      pw = per_point(want, nfdir, variants(:, v), 0.1_dp)
+      status = batch_call(got, nfdir, variants(:, v), 0.1_dp, pb)
+      call check(status == ifl_status_ok, 'status OK')
+      call check(pw == big .and. pb == big, 'PNEWDT untouched')
+      call check(same(want, got), 'every output equals FRIC per point')
+      call check(padding_untouched(got), 'padding rows never written')
+    end do
+  end do
+
+  ! Closed forms at first contact (tau = 0, STATEV = 0), NFDIR = 2, p = 100, mu p = 30.
+  context = 'closed forms'
+  call random_batch(got, 2, gc)
+  got%lm = 0
+  got%tau = 0
+  got%statev = 0
+  got%press = 100
+  got%dpress = 0
+  ks = mu*100/gc
+  do i = 1, np
+    ! Odd points stick (|dgam| = 0.5 gc), even points slip (|dgam| = 3 gc).
+    got%dgam(i, 1) = merge(0.3_dp, 1.8_dp, mod(i, 2) == 1)*gc
+    got%dgam(i, 2) = merge(-0.4_dp, 2.4_dp, mod(i, 2) == 1)*gc
+  end do
+  pb = big
+  status = batch_call(got, 2, variants(:, 1), 0.1_dp, pb)
+  call check(status == ifl_status_ok, 'status OK')
+  do i = 1, np, 2
+    call check(abs(got%tau(i, 1) - ks*got%dgam(i, 1)) <= 1.0e-12_dp*30 .and. &
+               abs(got%tau(i, 2) - ks*got%dgam(i, 2)) <= 1.0e-12_dp*30, 'stick: tau = k_s dgam')
+    call check(abs(got%ddtddg(i, 1) - ks) <= 1.0e-12_dp*ks .and. got%ddtddg(i, 2) == 0 &
+               .and. got%ddtddg(i, 3) == 0 .and. abs(got%ddtddg(i, 4) - ks) <= 1.0e-12_dp*ks, &
+               'stick: DDTDDG = k_s I')
+  end do
+  do i = 2, np, 2
+    call check(abs(hypot(got%tau(i, 1), got%tau(i, 2)) - mu*100) <= 1.0e-12_dp*30, &
+               'slip: |tau| = mu p')
+    call check(abs(got%tau(i, 1)*got%dgam(i, 2) - got%tau(i, 2)*got%dgam(i, 1)) &
+               <= 1.0e-12_dp*30*gc, 'slip: tau along dgam')
+  end do
+
+  ! A NaN input in point 5: FRIC's failure outputs there, the others computed.
+  context = 'NaN in point 5'
+  call random_batch(in, 2, 2.0e-3_dp)
+  in%lm(1:np) = 0
+  want = in
+  got = in
+  pw = per_point(want, 2, variants(:, 1), 0.1_dp)
+  in%press(5) = ieee_nan()
+  got%press(5) = in%press(5)
+  pb = big
+  status = batch_call(got, 2, variants(:, 1), 0.1_dp, pb)
+  call check(status == ifl_status_bad_input, 'status BAD_INPUT')
+  call check(pb == 0.25_dp, 'PNEWDT lowered to 0.25')
+  call check(all(got%ddtddg(5, :) == 0) .and. all(got%ddtddp(5, 1:2) == 0) &
+             .and. all(got%dslip(5, 1:2) == 0) .and. got%sfd(5) == 0, &
+             'failed point: tangents, DSLIP, SFD zero')
+  call check(all(got%tau(5, :) == in%tau(5, :)) .and. all(got%statev(5, :) == in%statev(5, :)) &
+             .and. got%lm(5) == in%lm(5), 'failed point: TAU, STATEV, LM unchanged')
+  ! The other points as FRIC gives them (point 5 copied from the batch for the comparison).
+  want%tau(5, :) = got%tau(5, :)
+  want%ddtddg(5, :) = got%ddtddg(5, :)
+  want%ddtddp(5, :) = got%ddtddp(5, :)
+  want%dslip(5, :) = got%dslip(5, :)
+  want%sed(5) = got%sed(5)
+  want%sfd(5) = got%sfd(5)
+  want%statev(5, :) = got%statev(5, :)
+  want%lm(5) = got%lm(5)
+  call check(same(want, got), 'other points equal FRIC per point')
+
+  ! A fault of the whole batch: nothing written but PNEWDT.
+  context = 'NFDIR = 3'
+  call random_batch(in, 2, 2.0e-3_dp)
+  got = in
+  pb = big
+  status = batch_call(got, 3, variants(:, 1), 0.1_dp, pb)
+  call check(status == ifl_status_bad_parameter, 'status BAD_PARAMETER')
+  call check(pb == 0.25_dp, 'PNEWDT lowered to 0.25')
+  call check(same(in, got), 'nothing written')
+
+  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
+  if (nfail > 0) error stop 1
+
+contains
+
+  function ieee_nan() result(x)
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+    real(dp) :: x
+    x = ieee_value(x, ieee_quiet_nan)
+  end function ieee_nan
+
+end program test_fric_batch
