@@ -3,11 +3,13 @@
 //!
 //! Shared by the `gapcon` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
 
-use std::ffi::{CStr, c_char};
+use std::ffi::{CStr, CString, c_char};
 use std::sync::Once;
 
 use crate::bytes::Bytes;
-use interfacial::abi::{gapcon_, ifl_clear_error, ifl_last_error};
+use interfacial::abi::{
+    IflConductance, IflStatus, gapcon_, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
+};
 
 /// The configuration every `gapcon_` case runs against: one interaction per law, radiation in
 /// kelvin and in °C, and no `"*"` entry, so unknown names take the error path.
@@ -200,6 +202,76 @@ impl GapconCase {
                 return Err(format!("message does not name the routine: {message:?}"));
             }
         }
+        self.check_native(k, message.is_empty())?;
         Ok(k)
+    }
+
+    /// `ifl_gap_conductance` with the same name (when it has no NUL before its padding), the
+    /// clearance `D(1)`, the pressure `D(2)` and the surface temperatures: the same law, so it
+    /// succeeds exactly when `gapcon_` did, with k bit for bit `AK(1)` and finite derivatives;
+    /// on failure `*out` is zeroed. A NULL `out` is refused without a crash.
+    fn check_native(&self, ak1: f64, gapcon_ok: bool) -> Result<(), String> {
+        let end = self
+            .ciname
+            .iter()
+            .rposition(|b| *b != 0 && *b != b' ')
+            .map_or(0, |i| i + 1);
+        let core = &self.ciname[..end];
+        let Ok(name) = CString::new(core) else {
+            return Ok(()); // a NUL inside the name: not expressible as a C string
+        };
+        let mut out = IflConductance {
+            k: -7.77e77,
+            ..IflConductance::default()
+        };
+        // SAFETY: a NUL-terminated name and a writable IflConductance.
+        let status = unsafe {
+            ifl_gap_conductance(
+                name.as_ptr(),
+                self.d[0],
+                self.d[1],
+                self.temp[0],
+                self.temp[1],
+                &mut out,
+            )
+        };
+        if gapcon_ok {
+            if status != IflStatus::Ok || out.k.to_bits() != ak1.to_bits() {
+                return Err(format!(
+                    "ifl_gap_conductance disagrees with gapcon_ (AK(1) = {ak1}): {status:?} {out:?}"
+                ));
+            }
+            let all = [
+                out.dk_dd,
+                out.dk_dp,
+                out.dk_dtheta_mean,
+                out.dq_dtheta_a,
+                out.dq_dtheta_b,
+            ];
+            if all.iter().any(|x| !x.is_finite()) {
+                return Err(format!(
+                    "ifl_gap_conductance: non-finite derivative {out:?}"
+                ));
+            }
+        } else if status == IflStatus::Ok || out != IflConductance::default() {
+            return Err(format!(
+                "gapcon_ refused but ifl_gap_conductance gave {status:?} {out:?}"
+            ));
+        }
+        // SAFETY: NULL out must be refused, nothing written.
+        let null = unsafe {
+            ifl_gap_conductance(
+                name.as_ptr(),
+                self.d[0],
+                self.d[1],
+                self.temp[0],
+                self.temp[1],
+                std::ptr::null_mut(),
+            )
+        };
+        if null != IflStatus::BadInput {
+            return Err(format!("NULL out gave {null:?}"));
+        }
+        Ok(())
     }
 }
