@@ -464,3 +464,21 @@ fn batch_refuses_the_extended_law_as_a_whole() {
     );
     assert_eq!(out.pnewdt, 0.25);
 }
+
+/// Found by fuzz target `fric` on a clean checkout (seed 1, ~274 000 inputs): the adhesive law
+/// with k_μ = 5·10⁻³⁰⁶, Δt = 4.8·10¹⁰ (k_μ/Δt subnormal) and a slip of 3.5·10²⁵¹ returned τ
+/// 1.9·10⁻⁸ above k_μ·Δv·p. The rate term is now formed with its exponents kept apart.
+#[test]
+fn fric_adhesive_subnormal_rate_coefficient_replays_clean() {
+    let case = FricCase::decode(include_bytes!(
+        "../fuzz/regressions/fric-adhesive-subnormal-rate"
+    ));
+    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
+    let out = checked(&case);
+    succeeded(&case, &out);
+    // μ_d = 0, v_½ = 0: sliding stress k_μ·(Δs/Δt)·p + S_a, with the exact slip rate.
+    let slip = out.dslip[0].hypot(out.dslip[1]);
+    let expected = case.props[5] * (slip / case.dtime) * case.press + case.props[3];
+    let tau = out.tau[0].hypot(out.tau[1]);
+    assert!(close(tau, expected, 1e-13), "{tau} vs {expected}");
+}

@@ -387,8 +387,14 @@ impl Adhesive {
             mu_s
         };
         let pressure_part = if p_plus > 0.0 {
-            // (K·p⁺)·Δs rather than (K·Δs)·p⁺: K·Δs can be subnormal (fuzz target `fric`).
-            transition * p_plus + (k_per_length * p_plus) * slip_eq
+            // k_μ·Δs·p⁺/Δt with the exponents kept apart: every fixed order of the product
+            // under- or overflows in some range (fuzz target `fric`, docs/fuzzing.md).
+            let rate_term = if dtime > 0.0 && self.k_mu > 0.0 {
+                product_ratio(self.k_mu, slip_eq, p_plus, dtime)
+            } else {
+                0.0
+            };
+            transition * p_plus + rate_term
         } else {
             0.0
         };
@@ -548,6 +554,39 @@ fn name_bad_input<const N: usize>(inc: &Increment<N>) -> LawError {
 }
 
 /// Every stress, tangent and energy is finite (the inputs were; an overflow is refused).
+/// a·b·c/d for finite a, b, c ≥ 0 and d > 0, rounded a few times but never through a subnormal
+/// or an infinite intermediate unless the result itself is one: each factor is split into a
+/// mantissa in [1, 2) and a power of two, the mantissas multiplied, the powers added, and the
+/// result scaled once at the end (in two halves, so that 2^e itself cannot overflow).
+fn product_ratio(a: f64, b: f64, c: f64, d: f64) -> f64 {
+    fn split(x: f64) -> (f64, i32) {
+        if x == 0.0 {
+            return (0.0, 0);
+        }
+        // Subnormals: scale into the normal range first (exact).
+        let (x, shift) = if x < f64::MIN_POSITIVE {
+            (x * 2f64.powi(64), -64)
+        } else {
+            (x, 0)
+        };
+        let bits = x.to_bits();
+        let exponent = ((bits >> 52) & 0x7ff) as i32 - 1023;
+        let mantissa = f64::from_bits((bits & !(0x7ff << 52)) | (1023 << 52));
+        (mantissa, exponent + shift)
+    }
+    let (ma, ea) = split(a);
+    let (mb, eb) = split(b);
+    let (mc, ec) = split(c);
+    let (md, ed) = split(d);
+    let m = ma * mb * mc / md;
+    if m == 0.0 {
+        return 0.0;
+    }
+    let e = ea + eb + ec - ed;
+    let half = e / 2;
+    m * 2f64.powi(half) * 2f64.powi(e - half)
+}
+
 pub(crate) fn check_finite<const N: usize>(t: &Traction<N>) -> Result<(), LawError> {
     let mut ok = t.sed.is_finite() && t.sfd.is_finite();
     for a in 0..N {
@@ -608,6 +647,32 @@ mod tests {
         let s = l.slide(&[0.0], &[1.001e-3], 10.0, 10.0, 1.0, 1e-3).unwrap();
         assert_eq!(s.branch, SlideBranch::Slip);
         assert!((s.traction.tau[0] - 5.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn product_ratio_keeps_every_digit_across_the_range() {
+        // Against the straightforward product where it cannot under- or overflow.
+        for (a, b, c, d) in [
+            (0.3, 2.5, 7.0, 0.1),
+            (1e-3, 1e5, 3.0, 2e-2),
+            (5.0, 0.0, 1.0, 1.0),
+        ] {
+            let r = product_ratio(a, b, c, d);
+            assert!((r - a * b * c / d).abs() <= 1e-15 * (a * b * c / d));
+        }
+        // The fuzz case: k_μ/Δt subnormal, Δs huge; exact value by scaling powers of ten.
+        let r = product_ratio(
+            4.902993940401848e-306,
+            3.5369057121380733e251,
+            50590.0,
+            4.8e10,
+        );
+        let expected =
+            4.902993940401848 * 3.5369057121380733 * 5.059 / 4.8 * 1e-306 * 1e251 * 1e4 / 1e10;
+        assert!((r / expected - 1.0).abs() < 1e-14, "{r} vs {expected}");
+        // Results in the subnormal or overflow range come out as such, not as NaN.
+        assert_eq!(product_ratio(1e-200, 1e-200, 1.0, 1.0), 0.0);
+        assert_eq!(product_ratio(1e200, 1e200, 1.0, 1.0), f64::INFINITY);
     }
 
     #[test]
