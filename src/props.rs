@@ -52,16 +52,9 @@ pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
     }
 }
 
-/// The plain law-1 `PROPS` (isotropic, constant μ, `PROPS(1..7)`) when valid, else `None`: the
-/// hot path of `fric_`, which returns the small [`Coulomb`] rather than the whole
-/// [`FrictionLaw`] (whose extended variant is large to move around).
-#[inline(always)]
-#[must_use]
-pub fn plain_coulomb(props: &[f64]) -> Option<Coulomb> {
-    coulomb_fast(props)
-}
-
-/// [`plain_coulomb`], and also the adhesive law's Coulomb special case (`PROPS(1) = 2` with
+/// The plain law-1 `PROPS` (isotropic, constant μ, `PROPS(1..7)`) as the small [`Coulomb`]
+/// (not the whole [`FrictionLaw`], whose extended variant is large to move around), and also
+/// the adhesive law's Coulomb special case (`PROPS(1) = 2` with
 /// S_a = k_μ = v_½ = 0 and μ_s = μ_d, which `fric_` runs as the Coulomb law itself): the hot
 /// path of `fric_`. The adhesive layout is only looked at when the plain one did not match,
 /// out of line, so the plain law costs the same.
