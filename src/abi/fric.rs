@@ -1,6 +1,7 @@
 //! `fric_`: the Abaqus/Standard FRIC user subroutine.
 
 use std::ffi::{c_char, c_int};
+use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::{
     boundary, fortran_string, read, read_array, slice, write, write_array, write_matrix,
@@ -97,82 +98,260 @@ pub unsafe extern "C" fn fric_(
     // Not read by the Coulomb law (DROT and TEMP only by the extended law: docs/props.md).
     let _ = (ddpddh, slip, kstep, kinc, time, npatch, rcoord, predef);
     let _ = (npred, slname, msname, slname_len, msname_len);
-    // The plain law (isotropic, constant μ, PROPS(1..7)) is recognised first and takes a path
-    // that never touches the extended law's code, so its cost is what it was before the
-    // extended model existed; everything else (the extended law, bad PROPS) goes out of line.
-    // SAFETY: NPROPS and PROPS as the host passed them; NULL or negative gives None.
-    let Some(law) = (unsafe { plain_props(props, nprops) }) else {
-        // SAFETY: the host's pointers, passed on unchanged.
+    // The plain law (isotropic, constant μ, PROPS(1..7), or the adhesive law's Coulomb special
+    // case) with valid arguments takes one pass that tests everything with a few combined
+    // branches and never builds an error; anything else (the extended law, bad arguments with
+    // their messages) goes out of line to the checked path, which starts afresh (the fast
+    // path writes nothing unless it succeeds).
+    let handled = catch_unwind(AssertUnwindSafe(|| {
+        // SAFETY: the host's pointers, valid per the contract above.
         unsafe {
-            fric_general(
-                [
-                    lm.cast::<f64>(),
-                    tau,
-                    ddtddg,
-                    ddtddp,
-                    dslip,
-                    sed,
-                    sfd,
-                    ddtddt,
-                    pnewdt,
-                    statev,
-                ],
-                [
-                    dgam, taulm, press, dpress, dtime, chrlngth, props, temp, drot, coords,
-                ],
-                [nfdir, nstatv, nprops, mcrd, noel, node, npt],
-                ciname,
-                ciname_len,
+            plain_fast(
+                lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, statev, dgam, taulm, press,
+                dpress, dtime, nfdir, nstatv, chrlngth, props, nprops,
             )
-        };
+        }
+    }));
+    if matches!(handled, Ok(true)) {
         return;
+    }
+    // SAFETY: the host's pointers, passed on unchanged.
+    unsafe {
+        fric_general(
+            [
+                lm.cast::<f64>(),
+                tau,
+                ddtddg,
+                ddtddp,
+                dslip,
+                sed,
+                sfd,
+                ddtddt,
+                pnewdt,
+                statev,
+            ],
+            [
+                dgam, taulm, press, dpress, dtime, chrlngth, props, temp, drot, coords,
+            ],
+            [nfdir, nstatv, nprops, mcrd, noel, node, npt],
+            ciname,
+            ciname_len,
+        )
     };
-    let args = FricArgs {
-        lm,
-        tau,
-        ddtddg,
-        ddtddp,
-        dslip,
-        sed,
-        sfd,
-        ddtddt,
-        pnewdt,
-        statev,
-        dgam,
-        taulm,
-        press,
-        dpress,
-        dtime,
-        nfdir,
-        nstatv,
-        chrlngth,
-        props,
-        nprops,
-        temp: std::ptr::null(),
-        drot: std::ptr::null(),
-        coords: std::ptr::null(),
-        mcrd: std::ptr::null(),
-    };
-    let _ = boundary(
-        // SAFETY (all three closures): the pointers are the host's, valid per the contract above.
-        || unsafe { site(ciname, ciname_len, noel, node, npt) },
-        || unsafe { args.run_plain(&law) },
-        || unsafe { args.fail() },
-    );
 }
 
-/// The plain law-1 `PROPS` (or the adhesive law's Coulomb special case, which runs the same
-/// code), or `None` (also for a NULL or negative NPROPS/PROPS, which the general path then
-/// reports).
+/// The plain law's call when everything is valid: `true` when the call is done (outputs
+/// written, or `LM = 2` on entry), `false` with nothing written when anything is off (a NULL,
+/// a size, `PROPS` not the plain layout, a non-finite input or result), for the checked path
+/// to handle and name.
 ///
 /// # Safety
-/// `nprops` is NULL or readable; `props` is NULL or holds NPROPS reals.
+/// As `fric_`.
+#[allow(clippy::too_many_arguments)]
 #[inline(always)]
-unsafe fn plain_props(props: *const f64, nprops: *const c_int) -> Option<Coulomb> {
-    // SAFETY: as documented.
+unsafe fn plain_fast(
+    lm: *mut c_int,
+    tau: *mut f64,
+    ddtddg: *mut f64,
+    ddtddp: *mut f64,
+    dslip: *mut f64,
+    sed: *mut f64,
+    sfd: *mut f64,
+    ddtddt: *mut f64,
+    statev: *mut f64,
+    dgam: *const f64,
+    taulm: *const f64,
+    press: *const f64,
+    dpress: *const f64,
+    dtime: *const f64,
+    nfdir: *const c_int,
+    nstatv: *const c_int,
+    chrlngth: *const f64,
+    props: *const f64,
+    nprops: *const c_int,
+) -> bool {
+    // SAFETY (whole body): every pointer is tested for NULL before it is read; arrays are read
+    // with the lengths the host declared, after those were checked.
     unsafe {
-        let n = usize::try_from(read(nprops, "NPROPS").ok()?).ok()?;
-        plain_coulomb_or_special_case(slice(props, n, "PROPS").ok()?)
+        if lm.is_null() {
+            return false;
+        }
+        let entry = match *lm {
+            0 => EntryFlag::Motion,
+            1 => EntryFlag::ExactStick,
+            // Frictionless: nothing to do, whatever the rest says.
+            2 => return true,
+            _ => return false,
+        };
+        let Some(Ok(n)) = get(nprops).map(usize::try_from) else {
+            return false;
+        };
+        if props.is_null() {
+            return false;
+        }
+        let Some(law) = plain_coulomb_or_special_case(std::slice::from_raw_parts(props, n)) else {
+            return false;
+        };
+        match get(nstatv) {
+            Some(n) if n >= CoulombState::NSTATV as c_int => {}
+            _ => return false,
+        }
+        let out = Outputs {
+            lm,
+            tau,
+            ddtddg,
+            ddtddp,
+            dslip,
+            sed,
+            sfd,
+            ddtddt,
+            statev,
+        };
+        let input = Inputs {
+            tau,
+            dgam,
+            taulm,
+            press,
+            dpress,
+            dtime,
+            chrlngth,
+            statev,
+        };
+        match get(nfdir) {
+            Some(1) => point_fast::<1>(&law, entry, &input, &out),
+            Some(2) => point_fast::<2>(&law, entry, &input, &out),
+            _ => false,
+        }
+    }
+}
+
+/// `*p`, or `None` for NULL (read unaligned: Fortran guarantees nothing more than the C ABI).
+///
+/// # Safety
+/// `p` is NULL or points to a readable `T`.
+#[inline(always)]
+unsafe fn get<T: Copy>(p: *const T) -> Option<T> {
+    if p.is_null() {
+        None
+    } else {
+        // SAFETY: non-NULL, readable by contract.
+        Some(unsafe { p.read_unaligned() })
+    }
+}
+
+/// The pointers [`point_fast`] writes through.
+struct Outputs {
+    lm: *mut c_int,
+    tau: *mut f64,
+    ddtddg: *mut f64,
+    ddtddp: *mut f64,
+    dslip: *mut f64,
+    sed: *mut f64,
+    sfd: *mut f64,
+    ddtddt: *mut f64,
+    statev: *mut f64,
+}
+
+/// The pointers [`point_fast`] reads.
+struct Inputs {
+    tau: *const f64,
+    dgam: *const f64,
+    taulm: *const f64,
+    press: *const f64,
+    dpress: *const f64,
+    dtime: *const f64,
+    chrlngth: *const f64,
+    statev: *const f64,
+}
+
+/// One contact point of the plain law, N = NFDIR: as [`FricArgs::point`], with every test
+/// folded into the few branches of [`Coulomb::try_update`]; `false` (nothing written) when a
+/// pointer is NULL or an input or result is not finite.
+///
+/// # Safety
+/// As `fric_`, with `NSTATV ≥ 3` checked.
+#[inline(always)]
+unsafe fn point_fast<const N: usize>(
+    law: &Coulomb,
+    entry: EntryFlag,
+    input: &Inputs,
+    out: &Outputs,
+) -> bool {
+    let exact = entry == EntryFlag::ExactStick;
+    // SAFETY (whole body): each pointer is tested for NULL right before it is read (one branch
+    // each, and no load moves in front of its test); arrays of N, N·N, 2N and NSTATV ≥ 3
+    // entries per the FRIC contract.
+    unsafe {
+        let Some(pressure) = get(input.press) else {
+            return false;
+        };
+        let Some(dpressure) = get(input.dpress) else {
+            return false;
+        };
+        let Some(tau) = get(input.tau.cast::<[f64; N]>()) else {
+            return false;
+        };
+        let Some(dgam) = get(input.dgam.cast::<[f64; N]>()) else {
+            return false;
+        };
+        let taulm = if exact {
+            let Some(taulm) = get(input.taulm.cast::<[f64; N]>()) else {
+                return false;
+            };
+            taulm
+        } else {
+            [0.0; N]
+        };
+        let Some(dtime) = get(input.dtime) else {
+            return false;
+        };
+        let Some(characteristic_length) = get(input.chrlngth) else {
+            return false;
+        };
+        let inc = Increment::<N> {
+            tau,
+            dgam,
+            taulm,
+            pressure,
+            dpressure,
+            dtime,
+            characteristic_length,
+            entry,
+        };
+        if input.statev.is_null() {
+            return false;
+        }
+        let [s, rate, status] = input.statev.cast::<[f64; 3]>().read_unaligned();
+        let Some(state) = CoulombState::from_values(s, rate, status) else {
+            return false;
+        };
+        let Some(up) = law.try_update(&inc, &state) else {
+            return false;
+        };
+        let mut end_state = [0.0; CoulombState::NSTATV];
+        up.state.write_statev(&mut end_state);
+        write_array(out.statev, &end_state);
+        match up.contact {
+            Contact::ExactStick => {
+                write(out.lm, 1);
+                write_array(out.dslip, &[0.0; N]);
+                write(out.sed, 0.0);
+                write(out.sfd, 0.0);
+            }
+            Contact::Motion(t) => {
+                write(out.lm, 0);
+                write_array(out.tau, &t.tau);
+                write_matrix(out.ddtddg, &t.ddtddg);
+                write_array(out.ddtddp, &t.ddtddp);
+                write_array(out.dslip, &t.dslip);
+                write(out.sed, t.sed);
+                write(out.sfd, t.sfd);
+                // DDTDDT(NFDIR,2): μ does not depend on temperature.
+                write_zeros(out.ddtddt, 2 * N);
+            }
+        }
+        // The plain law always converges: PNEWDT is left alone.
+        true
     }
 }
 
@@ -280,30 +459,6 @@ struct FricArgs {
 }
 
 impl FricArgs {
-    /// The plain law, already read from `PROPS` by [`plain_props`]: the checks of [`Self::run`]
-    /// in the same order, then the NFDIR-specific code.
-    #[inline(always)]
-    unsafe fn run_plain(&self, law: &Coulomb) -> Result<(), LawError> {
-        // SAFETY (whole body): as in `run`.
-        unsafe {
-            let lm_in = read(self.lm, "LM")?;
-            if lm_in == 2 {
-                return Ok(());
-            }
-            let entry = match lm_in {
-                0 => EntryFlag::Motion,
-                1 => EntryFlag::ExactStick,
-                other => return Err(bad_lm(other)),
-            };
-            let nstatv = self.nstatv()?;
-            match read(self.nfdir, "NFDIR")? {
-                1 => self.point::<1>(law, entry, nstatv),
-                2 => self.point::<2>(law, entry, nstatv),
-                other => Err(bad_nfdir(other)),
-            }
-        }
-    }
-
     /// Checks the sizes and the law once, then runs the NFDIR-specific code.
     #[inline(always)]
     /// `ciname` (of `ciname_len` bytes) is read only when `PROPS(8) = 2` asks for the

@@ -138,17 +138,25 @@ impl CoulombState {
         let [s, rate, status, ..] = statev else {
             return Err(short_statev(statev.len()));
         };
-        if (s * 0.0 + rate * 0.0) != 0.0 {
-            return Err(corrupt_statev());
+        Self::from_values(*s, *rate, *status).ok_or_else(corrupt_statev)
+    }
+
+    /// The state from `STATEV(1..3)`; `None` when `STATEV(1)` or `STATEV(2)` is not finite.
+    /// An unknown status code reads as stick.
+    #[inline(always)]
+    #[must_use]
+    pub fn from_values(accumulated_slip: f64, slip_rate: f64, status: f64) -> Option<Self> {
+        if (accumulated_slip * 0.0 + slip_rate * 0.0) != 0.0 {
+            return None;
         }
-        let status = match *status {
+        let status = match status {
             1.0 => FrictionStatus::Slip,
             2.0 => FrictionStatus::ExactStick,
             _ => FrictionStatus::Stick,
         };
-        Ok(CoulombState {
-            accumulated_slip: *s,
-            slip_rate: *rate,
+        Some(CoulombState {
+            accumulated_slip,
+            slip_rate,
             status,
         })
     }
@@ -332,13 +340,29 @@ impl Coulomb {
     /// γ_crit for a characteristic contact length.
     #[inline(always)]
     pub fn critical_slip_for(&self, characteristic_length: f64) -> Result<f64, LawError> {
+        match self.critical_slip_if_defined(characteristic_length) {
+            Some(g) => Ok(g),
+            None => Err(bad_characteristic_length(
+                characteristic_length,
+                match self.critical_slip {
+                    CriticalSlip::Absolute(_) => 0.0,
+                    CriticalSlip::Tolerance(t) => t,
+                },
+            )),
+        }
+    }
+
+    /// γ_crit, or `None` when it is a tolerance and the characteristic length is not finite
+    /// and positive.
+    #[inline(always)]
+    fn critical_slip_if_defined(&self, characteristic_length: f64) -> Option<f64> {
         match self.critical_slip {
-            CriticalSlip::Absolute(g) => Ok(g),
+            CriticalSlip::Absolute(g) => Some(g),
             CriticalSlip::Tolerance(t) => {
                 if characteristic_length > 0.0 && characteristic_length < f64::INFINITY {
-                    Ok(t * characteristic_length)
+                    Some(t * characteristic_length)
                 } else {
-                    Err(bad_characteristic_length(characteristic_length, t))
+                    None
                 }
             }
         }
@@ -352,58 +376,106 @@ impl Coulomb {
         inc: &Increment<N>,
         state: &CoulombState,
     ) -> Result<Update<N>, LawError> {
+        match self.try_update(inc, state) {
+            Some(up) => Ok(up),
+            // By value: a reference would make the hot path keep the increment in memory.
+            None => Err(self.diagnose(*inc)),
+        }
+    }
+
+    /// [`Self::update`] without naming what went wrong: `None` when an input is not finite,
+    /// γ_crit cannot be formed from `CHRLNGTH`, or a result overflowed. The inputs and results
+    /// are tested together, with one branch, after the arithmetic (which cannot fail on
+    /// non-finite values, only carry them); [`Self::update`] then says which it was.
+    #[inline(always)]
+    pub(crate) fn try_update<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        state: &CoulombState,
+    ) -> Option<Update<N>> {
         #[cfg(test)]
         crate::testing::maybe_panic();
-        check_increment(inc, self.stick)?;
-        let contact = match self.stick {
-            StickMode::Rough => Contact::ExactStick,
+        // x·0 is ±0 for finite x and NaN otherwise: one sum tests every value at once.
+        let mut probe = input_probe(inc, self.stick);
+        let (contact, slip) = match self.stick {
+            StickMode::Rough => (Contact::ExactStick, 0.0),
             StickMode::Elastic => {
-                let gamma_crit = self.critical_slip_for(inc.characteristic_length)?;
-                Contact::Motion(self.elastic_stick(inc, gamma_crit))
+                let gamma_crit = self.critical_slip_if_defined(inc.characteristic_length)?;
+                let (t, slip) = self.elastic_stick(inc, gamma_crit);
+                probe += traction_probe(&t);
+                (Contact::Motion(t), slip)
             }
             StickMode::Exact => {
-                let gamma_crit = self.critical_slip_for(inc.characteristic_length)?;
-                self.exact_stick(inc, gamma_crit)
+                let gamma_crit = self.critical_slip_if_defined(inc.characteristic_length)?;
+                match self.exact_stick(inc, gamma_crit) {
+                    Some((t, slip)) => {
+                        probe += traction_probe(&t);
+                        (Contact::Motion(t), slip)
+                    }
+                    None => (Contact::ExactStick, 0.0),
+                }
             }
         };
+        if probe != 0.0 {
+            return None;
+        }
         let state = match &contact {
             Contact::ExactStick => CoulombState {
                 accumulated_slip: state.accumulated_slip,
                 slip_rate: 0.0,
                 status: FrictionStatus::ExactStick,
             },
-            Contact::Motion(t) => {
-                check_traction(t)?;
-                let slip = norm(&t.dslip);
-                // Both saturate at f64::MAX rather than overflow: a finite slip over a subnormal
-                // DTIME, or a sum near f64::MAX, would otherwise store ∞ in STATEV, which the
-                // next increment refuses as corrupted.
-                CoulombState {
-                    accumulated_slip: saturate(state.accumulated_slip + slip),
-                    slip_rate: if inc.dtime > 0.0 {
-                        saturate(slip / inc.dtime)
-                    } else {
-                        0.0
-                    },
-                    status: if slip > 0.0 {
-                        FrictionStatus::Slip
-                    } else {
-                        FrictionStatus::Stick
-                    },
-                }
-            }
+            // `slip` is the return map's Δγ_eq^sl (= |Δγ^sl|). Both state entries saturate at
+            // f64::MAX rather than overflow: a finite slip over a subnormal DTIME, or a sum
+            // near f64::MAX, would otherwise store ∞ in STATEV, which the next increment
+            // refuses as corrupted.
+            Contact::Motion(_) => CoulombState {
+                accumulated_slip: saturate(state.accumulated_slip + slip),
+                slip_rate: if inc.dtime > 0.0 {
+                    saturate(slip / inc.dtime)
+                } else {
+                    0.0
+                },
+                status: if slip > 0.0 {
+                    FrictionStatus::Slip
+                } else {
+                    FrictionStatus::Stick
+                },
+            },
         };
-        Ok(Update {
+        Some(Update {
             contact,
             state,
             outcome: Outcome::CONVERGED,
         })
     }
 
+    /// Why [`Self::try_update`] gave `None`, tested in the order a user fixes things: a
+    /// non-finite input, then `CHRLNGTH`, then an overflow of the results.
+    #[cold]
+    #[inline(never)]
+    #[allow(clippy::needless_pass_by_value)]
+    fn diagnose<const N: usize>(&self, inc: Increment<N>) -> LawError {
+        if input_probe(&inc, self.stick) != 0.0 {
+            return name_bad_input(inc, self.stick);
+        }
+        if self.stick != StickMode::Rough {
+            if let Err(e) = self.critical_slip_for(inc.characteristic_length) {
+                return e;
+            }
+        }
+        overflowed()
+    }
+
     /// Elastic stick with the backward-Euler return map (Eq. 5.2.3-2) and its consistent
-    /// linearization (Eq. 5.2.3-1 in stick, Eq. 5.2.3-3 in slip).
+    /// linearization (Eq. 5.2.3-1 in stick, Eq. 5.2.3-3 in slip); also the slip increment
+    /// Δγ_eq^sl (0 in stick).
     #[inline(always)]
-    fn elastic_stick<const N: usize>(&self, inc: &Increment<N>, gamma_crit: f64) -> Traction<N> {
+    fn elastic_stick<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        gamma_crit: f64,
+    ) -> (Traction<N>, f64) {
         // Elastic slip at the start, from the start-of-increment stiffness: γ̄^el = τ̄/k_s(p − Δp).
         let (tau_crit_start, _) = self.critical_stress(inc.pressure - inc.dpressure);
         let elastic_start = if tau_crit_start > 0.0 {
@@ -420,19 +492,20 @@ impl Coulomb {
         if predictor_eq <= gamma_crit {
             // Stick: τ = k_s γ^pr; dτ = k_s dγ + (τ/τ_crit)(∂τ_crit/∂p) dp (Eq. 5.2.3-1), written
             // as γ^pr (∂τ_crit/∂p)/γ_crit so it stays right at p = 0.
-            Traction {
+            let t = Traction {
                 tau: scale(&predictor, stiffness),
                 ddtddg: diagonal(stiffness),
                 ddtddp: scale(&predictor, dtau_crit_dp / gamma_crit),
                 dslip: [0.0; N],
                 sed: 0.5 * stiffness * predictor_eq * predictor_eq,
                 sfd: 0.0,
-            }
+            };
+            (t, 0.0)
         } else {
             // Slip: Δγ_eq^sl = γ_eq^pr − γ_crit, τ = n τ_crit (Eq. 5.2.3-2).
             let n = unit(&predictor, predictor_eq);
             let slip_eq = predictor_eq - gamma_crit;
-            Traction {
+            let t = Traction {
                 tau: scale(&n, tau_crit),
                 // Eq. 5.2.3-3: (δ_ij − n_i n_j) τ_crit/γ_eq^pr dγ_j + n_i ∂τ_crit/∂p dp.
                 ddtddg: transverse_projection(&n, tau_crit / predictor_eq),
@@ -441,27 +514,33 @@ impl Coulomb {
                 // |τ|²/(2k_s) with |τ| = τ_crit.
                 sed: 0.5 * tau_crit * gamma_crit,
                 sfd: tau_crit * slip_eq,
-            }
+            };
+            (t, slip_eq)
         }
     }
 
     /// Exact stick (Lagrange multipliers) with the seed's switching tests: a sticking point
     /// whose Lagrange stress exceeds τ_crit starts to slip; a slipping point whose motion
     /// reverses against the stress of the start of the increment sticks (Δγ_i τ_i(t) < 0).
+    /// `None` is exact stick (`LM = 1`); otherwise the slip stress and the slip Δγ_eq.
     #[inline(always)]
-    fn exact_stick<const N: usize>(&self, inc: &Increment<N>, gamma_crit: f64) -> Contact<N> {
+    fn exact_stick<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        gamma_crit: f64,
+    ) -> Option<(Traction<N>, f64)> {
         let (tau_crit, dtau_crit_dp) = self.critical_stress(inc.pressure);
         let direction_source = match inc.entry {
             EntryFlag::ExactStick => {
                 if norm(&inc.taulm) <= tau_crit {
-                    return Contact::ExactStick;
+                    return None;
                 }
                 // Release: slip along the Lagrange stress, the direction the host pushes.
                 inc.taulm
             }
             EntryFlag::Motion => {
                 if dot(&inc.dgam, &inc.tau) < 0.0 {
-                    return Contact::ExactStick;
+                    return None;
                 }
                 if norm(&inc.dgam) > 0.0 {
                     inc.dgam
@@ -479,7 +558,7 @@ impl Coulomb {
         let slip_eq = norm(&inc.dgam);
         let tau = scale(&n, tau_crit);
         let floor = EXACT_STICK_TANGENT_FLOOR * gamma_crit;
-        Contact::Motion(Traction {
+        let t = Traction {
             // Eq. 5.2.3-7: τ_i = τ_crit Δγ_i/Δγ_eq.
             tau,
             // Eq. 5.2.3-8.
@@ -489,7 +568,8 @@ impl Coulomb {
             dslip: inc.dgam,
             sed: 0.0,
             sfd: dot(&tau, &inc.dgam).max(0.0),
-        })
+        };
+        Some((t, slip_eq))
     }
 }
 
@@ -500,9 +580,10 @@ fn saturate(x: f64) -> f64 {
     if x > f64::MAX { f64::MAX } else { x }
 }
 
+/// ±0 when every input the stick mode reads is finite, NaN otherwise (x·0 is NaN exactly for
+/// x = ±∞ or NaN).
 #[inline(always)]
-fn check_increment<const N: usize>(inc: &Increment<N>, stick: StickMode) -> Result<(), LawError> {
-    // x·0 is ±0 for finite x and NaN otherwise: one test for all inputs on the common path.
+fn input_probe<const N: usize>(inc: &Increment<N>, stick: StickMode) -> f64 {
     let mut probe = inc.pressure * 0.0 + inc.dpressure * 0.0;
     if stick != StickMode::Rough {
         probe += inc.dtime * 0.0;
@@ -515,12 +596,7 @@ fn check_increment<const N: usize>(inc: &Increment<N>, stick: StickMode) -> Resu
             }
         }
     }
-    if probe == 0.0 {
-        Ok(())
-    } else {
-        // By value: a reference would make the hot path keep the increment in memory.
-        Err(name_bad_input(*inc, stick))
-    }
+    probe
 }
 
 /// Names the first non-finite input (the slow path of [`check_increment`]).
@@ -568,8 +644,9 @@ fn bad_characteristic_length(length: f64, tolerance: f64) -> LawError {
     ))
 }
 
+/// ±0 when every output of the increment is finite, NaN otherwise.
 #[inline(always)]
-fn check_traction<const N: usize>(t: &Traction<N>) -> Result<(), LawError> {
+fn traction_probe<const N: usize>(t: &Traction<N>) -> f64 {
     let mut probe = t.sed * 0.0 + t.sfd * 0.0;
     for a in 0..N {
         probe += t.tau[a] * 0.0 + t.ddtddp[a] * 0.0 + t.dslip[a] * 0.0;
@@ -577,11 +654,7 @@ fn check_traction<const N: usize>(t: &Traction<N>) -> Result<(), LawError> {
             probe += t.ddtddg[a][b] * 0.0;
         }
     }
-    if probe == 0.0 {
-        Ok(())
-    } else {
-        Err(overflowed())
-    }
+    probe
 }
 
 #[cold]

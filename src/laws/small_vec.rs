@@ -5,7 +5,7 @@
 /// Euclidean norm; for N = 1 exactly `|v₁|`. Correct over the whole f64 range: when `v·v`
 /// overflows, underflows or is subnormal, the norm is taken of `v` scaled by its largest entry
 /// (as `hypot` does), so entries near f64::MAX or among the subnormals keep their length.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub(crate) fn norm<const N: usize>(v: &[f64; N]) -> f64 {
     if N == 1 {
@@ -53,7 +53,7 @@ fn scaled_norm<const N: usize>(v: &[f64; N]) -> f64 {
     m * s.sqrt()
 }
 
-#[inline]
+#[inline(always)]
 #[must_use]
 pub(crate) fn dot<const N: usize>(a: &[f64; N], b: &[f64; N]) -> f64 {
     let mut s = 0.0;
@@ -63,7 +63,7 @@ pub(crate) fn dot<const N: usize>(a: &[f64; N], b: &[f64; N]) -> f64 {
     s
 }
 
-#[inline]
+#[inline(always)]
 #[must_use]
 pub(crate) fn scale<const N: usize>(v: &[f64; N], s: f64) -> [f64; N] {
     let mut out = *v;
@@ -78,7 +78,7 @@ pub(crate) fn scale<const N: usize>(v: &[f64; N], s: f64) -> [f64; N] {
 /// its rounding is coarse (up to 41 % for two entries of the smallest subnormal), and when it
 /// overflows every entry divides to 0, so then the direction is taken of `v` scaled exactly by
 /// a power of two instead.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub(crate) fn unit<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
     if N > 1 && !is_positive_normal(len) {
@@ -109,7 +109,7 @@ fn unit_of_extreme<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
     out
 }
 
-#[inline]
+#[inline(always)]
 #[must_use]
 pub(crate) fn add<const N: usize>(a: &[f64; N], b: &[f64; N]) -> [f64; N] {
     let mut out = *a;
@@ -120,7 +120,7 @@ pub(crate) fn add<const N: usize>(a: &[f64; N], b: &[f64; N]) -> [f64; N] {
 }
 
 /// `s·I` as an N×N matrix, `m[a][b]`.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub(crate) fn diagonal<const N: usize>(s: f64) -> [[f64; N]; N] {
     let mut m = [[0.0; N]; N];
@@ -133,7 +133,7 @@ pub(crate) fn diagonal<const N: usize>(s: f64) -> [[f64; N]; N] {
 /// `s·(I − n nᵀ)`: the projection onto the plane normal to the unit vector `n`, scaled. For
 /// N = 1 it is exactly zero (seed 000: "for two-dimensional problems the term involving
 /// (δ_ij − n_i n_j) vanishes").
-#[inline]
+#[inline(always)]
 #[must_use]
 pub(crate) fn transverse_projection<const N: usize>(n: &[f64; N], s: f64) -> [[f64; N]; N] {
     let mut m = [[0.0; N]; N];
