@@ -1077,6 +1077,102 @@ fn steady_transport_bad_input() {
     }
 }
 
+/// Anisotropic steady transport with seed 003's γ̇_crit = F_f·ω·R (PROPS(16) = 1): in the scaled
+/// variables of Eq. 5.2.3-10/11 (a_i = μ_i/μ̄, γ̇̄_i = a_i·γ̇_i) viscous stick is
+/// τ_i = a_i²·κ_s·γ̇_i with κ_s = μ̄p/γ̇_crit while |γ̇̄| ≤ γ̇_crit, and slip τ_i = a_i·μ̄(r)·p·n̄_i
+/// with n̄ = γ̇̄/|γ̇̄| and r = |γ̇̄| − γ̇_crit; STATEV(2) = r; DDTDDG and DDTDDP against central
+/// differences, constant and decaying μ.
+#[test]
+fn steady_transport_anisotropic_seed_003() {
+    let (mu1, mu2, p, ff, omega, dt): (f64, f64, f64, f64, f64, f64) =
+        (0.5, 0.2, 40.0, 0.02, 10.0, 0.05);
+    let mbar = (0.5 * (mu1 * mu1 + mu2 * mu2)).sqrt();
+    let a = [mu1 / mbar, mu2 / mbar];
+    let rate_crit = ff * omega * 2.0; // R = 2 about y
+    for decay in [None, Some((0.1, 2.0))] {
+        let mut props = vec![0.0; 16];
+        props[..7].copy_from_slice(&[1.0, mu1, mu2, 0.0, 0.0, ff, 3.0]);
+        if let Some((mk, dc)) = decay {
+            props[7] = 1.0;
+            props[8] = mk;
+            props[9] = dc;
+        }
+        props[13] = omega;
+        props[14] = 2.0; // y axis
+        props[15] = 1.0; // seed 003
+        // μ̄(r): every μ law multiplies μ₁ and μ₂ by the same factor.
+        let mbar_of = |r: f64| match decay {
+            None => mbar,
+            Some((mk, dc)) => mbar * (mk / mu1 + (1.0 - mk / mu1) * (-dc * r).exp()),
+        };
+        let at = |dgam: [f64; 2], press: f64| {
+            let mut c = FricCall::new(2, &props);
+            c.coords = [1.2, -9.0, -1.6]; // R = 2 about y
+            c.press = press;
+            c.dtime = dt;
+            c.dgam[..2].copy_from_slice(&dgam);
+            c.call();
+            assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+            assert!(c.guards_intact());
+            c
+        };
+        let dir = [0.8, 0.6];
+        // Scaled speed |γ̇̄| = speed·|(a₁d₁, a₂d₂)|.
+        let scaled = ((a[0] * dir[0]).powi(2) + (a[1] * dir[1]).powi(2)).sqrt();
+        for (scaled_speed, sticks) in [(0.6 * rate_crit, true), (2.5 * rate_crit, false)] {
+            let speed = scaled_speed / scaled;
+            let dgam = [dir[0] * speed * dt, dir[1] * speed * dt];
+            let c = at(dgam, p);
+            let kappa = mbar * p / rate_crit;
+            for i in 0..2 {
+                let expected = if sticks {
+                    a[i] * a[i] * kappa * speed * dir[i]
+                } else {
+                    let r = scaled_speed - rate_crit;
+                    a[i] * mbar_of(r) * p * a[i] * dir[i] / scaled
+                };
+                assert!(
+                    (c.tau[i] - expected).abs() <= 1e-12 * mu1 * p,
+                    "τ_{i} {} vs {expected} (stick {sticks}, decay {decay:?})",
+                    c.tau[i]
+                );
+            }
+            let r = if sticks {
+                0.0
+            } else {
+                scaled_speed - rate_crit
+            };
+            assert!((c.statev[1] - r).abs() <= 1e-12 * scaled_speed);
+            assert_eq!(c.statev[2], if sticks { 0.0 } else { 1.0 });
+            let h = 1e-7 * speed * dt;
+            for b in 0..2 {
+                let (mut up, mut dn) = (dgam, dgam);
+                up[b] += h;
+                dn[b] -= h;
+                let (cu, cd) = (at(up, p), at(dn, p));
+                for i in 0..2 {
+                    let fd = (cu.tau[i] - cd.tau[i]) / (2.0 * h);
+                    let an = c.ddtddg(i, b);
+                    assert!(
+                        (fd - an).abs() <= 1e-6 * (kappa / dt),
+                        "DDTDDG({i},{b}) {an} vs {fd} (stick {sticks}, decay {decay:?})"
+                    );
+                }
+            }
+            let hp = 1e-5 * p;
+            let (cu, cd) = (at(dgam, p + hp), at(dgam, p - hp));
+            for i in 0..2 {
+                let fd = (cu.tau[i] - cd.tau[i]) / (2.0 * hp);
+                assert!(
+                    (fd - c.ddtddp[i]).abs() <= 1e-8,
+                    "DDTDDP {fd} vs {}",
+                    c.ddtddp[i]
+                );
+            }
+        }
+    }
+}
+
 /// Seed 003's γ̇_crit = F_f·ω·R is seed 000's 2·F_f·ω·R with half the tolerance: the same
 /// call with PROPS(16) = 1 and F_f = 2f answers as PROPS(16) = 0 with F_f = f, bit for bit, in
 /// stick and in slip, isotropic and anisotropic; and PROPS(16) = 1 alone changes the answer.
