@@ -922,88 +922,91 @@ fn bad_extended_input_is_refused_cleanly() {
 #[test]
 fn steady_transport_viscous_stick() {
     let (mu, p, ff, omega, dt) = (0.4, 50.0, 0.01, 20.0, 0.1);
-    for (variant, factor) in [(0.0, 2.0), (1.0, 1.0)] {
-        for decay in [None, Some((0.2, 3.0))] {
-            for nfdir in [1usize, 2] {
-                let mut props = vec![0.0; 16];
-                props[15] = variant;
-                props[..7].copy_from_slice(&[1.0, mu, 0.0, 0.0, 0.0, ff, 3.0]);
-                if let Some((mk, dc)) = decay {
-                    props[7] = 1.0;
-                    props[8] = mk;
-                    props[9] = dc;
-                }
-                props[13] = omega;
-                props[14] = 3.0; // z axis
-                let at = |dgam: [f64; 2], press: f64| {
-                    let mut c = FricCall::new(nfdir as i32, &props);
-                    c.coords = [0.3, 0.4, 7.0]; // R = 0.5 about z
-                    c.press = press;
-                    c.dpress = press;
-                    c.dtime = dt;
-                    // A start stress, ignored: viscous stick has no memory.
-                    c.tau[..nfdir].copy_from_slice(&[123.0, -45.0][..nfdir]);
-                    c.dgam[..nfdir].copy_from_slice(&dgam[..nfdir]);
-                    c.call();
-                    assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
-                    assert!(c.guards_intact());
-                    c
+    let decays = [None, Some((0.2, 3.0))];
+    // PROPS(16) = 0: γ̇_crit = 2·F_f·ω·R; PROPS(16) = 1: F_f·ω·R.
+    for (variant, factor, decay) in [(0.0, 2.0), (1.0, 1.0)]
+        .into_iter()
+        .flat_map(|(v, f)| decays.map(|d| (v, f, d)))
+    {
+        for nfdir in [1usize, 2] {
+            let mut props = vec![0.0; 16];
+            props[15] = variant;
+            props[..7].copy_from_slice(&[1.0, mu, 0.0, 0.0, 0.0, ff, 3.0]);
+            if let Some((mk, dc)) = decay {
+                props[7] = 1.0;
+                props[8] = mk;
+                props[9] = dc;
+            }
+            props[13] = omega;
+            props[14] = 3.0; // z axis
+            let at = |dgam: [f64; 2], press: f64| {
+                let mut c = FricCall::new(nfdir as i32, &props);
+                c.coords = [0.3, 0.4, 7.0]; // R = 0.5 about z
+                c.press = press;
+                c.dpress = press;
+                c.dtime = dt;
+                // A start stress, ignored: viscous stick has no memory.
+                c.tau[..nfdir].copy_from_slice(&[123.0, -45.0][..nfdir]);
+                c.dgam[..nfdir].copy_from_slice(&dgam[..nfdir]);
+                c.call();
+                assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+                assert!(c.guards_intact());
+                c
+            };
+            let rate_crit = factor * ff * omega * 0.5;
+            let kappa = mu * p / rate_crit;
+            let dir = if nfdir == 1 { [1.0, 0.0] } else { [0.6, -0.8] };
+            let mu_of = |v: f64| match decay {
+                None => mu,
+                Some((mk, dc)) => mk + (mu - mk) * (-dc * v).exp(),
+            };
+            for (speed, sticks) in [(0.5 * rate_crit, true), (3.0 * rate_crit, false)] {
+                let dgam = [dir[0] * speed * dt, dir[1] * speed * dt];
+                let c = at(dgam, p);
+                let tau_eq = (0..nfdir).map(|i| c.tau[i].powi(2)).sum::<f64>().sqrt();
+                let expected = if sticks {
+                    kappa * speed
+                } else {
+                    mu_of(speed - rate_crit) * p
                 };
-                let rate_crit = factor * ff * omega * 0.5;
-                let kappa = mu * p / rate_crit;
-                let dir = if nfdir == 1 { [1.0, 0.0] } else { [0.6, -0.8] };
-                let mu_of = |v: f64| match decay {
-                    None => mu,
-                    Some((mk, dc)) => mk + (mu - mk) * (-dc * v).exp(),
-                };
-                for (speed, sticks) in [(0.5 * rate_crit, true), (3.0 * rate_crit, false)] {
-                    let dgam = [dir[0] * speed * dt, dir[1] * speed * dt];
-                    let c = at(dgam, p);
-                    let tau_eq = (0..nfdir).map(|i| c.tau[i].powi(2)).sum::<f64>().sqrt();
-                    let expected = if sticks {
-                        kappa * speed
-                    } else {
-                        mu_of(speed - rate_crit) * p
-                    };
-                    assert!(
-                        (tau_eq - expected).abs() < 1e-12 * expected,
-                        "{tau_eq} vs {expected}"
-                    );
-                    assert_eq!(c.statev[2], if sticks { 0.0 } else { 1.0 });
-                    // STATEV(1) from 0: the slip of the increment (v − γ̇_crit)Δt; STATEV(2) its rate.
-                    let slip_rate = if sticks { 0.0 } else { speed - rate_crit };
-                    assert!(
-                        (c.statev[1] - slip_rate).abs() <= 1e-12 * speed,
-                        "{}",
-                        c.statev[1]
-                    );
-                    assert!((c.statev[0] - slip_rate * dt).abs() <= 1e-12 * speed * dt);
-                    // DDTDDG and DDTDDP against central differences.
-                    let h = 1e-7 * speed * dt;
-                    for b in 0..nfdir {
-                        let (mut up, mut dn) = (dgam, dgam);
-                        up[b] += h;
-                        dn[b] -= h;
-                        let (cu, cd) = (at(up, p), at(dn, p));
-                        for a in 0..nfdir {
-                            let fd = (cu.tau[a] - cd.tau[a]) / (2.0 * h);
-                            let an = c.ddtddg(a, b);
-                            assert!(
-                                (fd - an).abs() <= 1e-6 * (kappa / dt),
-                                "DDTDDG({a},{b}) {an} vs {fd}"
-                            );
-                        }
-                    }
-                    let hp = 1e-5 * p;
-                    let (cu, cd) = (at(dgam, p + hp), at(dgam, p - hp));
+                assert!(
+                    (tau_eq - expected).abs() < 1e-12 * expected,
+                    "{tau_eq} vs {expected}"
+                );
+                assert_eq!(c.statev[2], if sticks { 0.0 } else { 1.0 });
+                // STATEV(1) from 0: the slip of the increment (v − γ̇_crit)Δt; STATEV(2) its rate.
+                let slip_rate = if sticks { 0.0 } else { speed - rate_crit };
+                assert!(
+                    (c.statev[1] - slip_rate).abs() <= 1e-12 * speed,
+                    "{}",
+                    c.statev[1]
+                );
+                assert!((c.statev[0] - slip_rate * dt).abs() <= 1e-12 * speed * dt);
+                // DDTDDG and DDTDDP against central differences.
+                let h = 1e-7 * speed * dt;
+                for b in 0..nfdir {
+                    let (mut up, mut dn) = (dgam, dgam);
+                    up[b] += h;
+                    dn[b] -= h;
+                    let (cu, cd) = (at(up, p), at(dn, p));
                     for a in 0..nfdir {
-                        let fd = (cu.tau[a] - cd.tau[a]) / (2.0 * hp);
+                        let fd = (cu.tau[a] - cd.tau[a]) / (2.0 * h);
+                        let an = c.ddtddg(a, b);
                         assert!(
-                            (fd - c.ddtddp[a]).abs() <= 1e-8,
-                            "DDTDDP {fd} vs {}",
-                            c.ddtddp[a]
+                            (fd - an).abs() <= 1e-6 * (kappa / dt),
+                            "DDTDDG({a},{b}) {an} vs {fd}"
                         );
                     }
+                }
+                let hp = 1e-5 * p;
+                let (cu, cd) = (at(dgam, p + hp), at(dgam, p - hp));
+                for a in 0..nfdir {
+                    let fd = (cu.tau[a] - cd.tau[a]) / (2.0 * hp);
+                    assert!(
+                        (fd - c.ddtddp[a]).abs() <= 1e-8,
+                        "DDTDDP {fd} vs {}",
+                        c.ddtddp[a]
+                    );
                 }
             }
         }
