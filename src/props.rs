@@ -4,7 +4,9 @@
 
 use crate::LawError;
 use crate::laws::coulomb::{Coulomb, CriticalSlip, DEFAULT_SLIP_TOLERANCE, StickMode};
-use crate::laws::coulomb_extended::{Damping, ExtendedCoulomb, Hht, SteadyTransport};
+use crate::laws::coulomb_extended::{
+    Damping, ExtendedCoulomb, Hht, SteadyTransport, ViscousSlipReference,
+};
 use crate::laws::friction_coefficient::CoefficientLaw;
 use crate::laws::friction_table::FrictionTable;
 
@@ -167,7 +169,7 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
         || (e[5] == 0.0
             && positive(e[14])
             && [0.0, 1.0, 2.0, 3.0].contains(&e[15])
-            && e[16] == 0.0);
+            && (e[16] == 0.0 || e[16] == 1.0));
     let valid = (0.0..f64::INFINITY).contains(&mu)
         && (mu2 == 0.0 || mu2 == mu || (positive(mu2) && mu > 0.0))
         && off_or_positive(e[4])
@@ -222,6 +224,12 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
             1.0 => 0,
             2.0 => 1,
             _ => 2,
+        },
+        // PROPS(16): 0 seed 000's γ̇_crit, 1 seed 003's.
+        reference: if e[16] == 1.0 {
+            ViscousSlipReference::RelativeVelocity
+        } else {
+            ViscousSlipReference::Circumferential
         },
     });
     Some(FrictionLaw::CoulombExtended(
@@ -332,7 +340,8 @@ pub fn coulomb_extended_with_table(
         ));
     }
     // PROPS(7) = 3: viscous stick for steady-state transport; the base law is read with an
-    // elastic-stick placeholder, and PROPS(14..15) are ω and the axis instead of HHT.
+    // elastic-stick placeholder, and PROPS(14..16) are ω, the axis and the γ̇_crit variant
+    // instead of HHT.
     let viscous = get(7) == 3.0;
     let base = if viscous {
         if get(5) != 0.0 {
@@ -450,15 +459,21 @@ pub fn coulomb_extended_with_table(
                 )));
             }
         };
-        if get(16) != 0.0 {
-            return Err(unused_entry(
-                16,
-                get(16),
-                "steady-state transport (PROPS(7) = 3)",
-            ));
-        }
-        let transport =
-            SteadyTransport::new(tolerance, get(14), axis).map_err(|e| in_props(14, e))?;
+        // PROPS(16): which seed's allowable viscous slip rate γ̇_crit (docs/props.md).
+        let reference = match get(16) {
+            0.0 => ViscousSlipReference::Circumferential,
+            1.0 => ViscousSlipReference::RelativeVelocity,
+            other => {
+                return Err(LawError::Parameter(format!(
+                    "PROPS(16) = {other} must select the allowable viscous slip rate of \
+                     steady-state transport: 0 (γ̇_crit = 2·F_f·ω·R, seed 000) or 1 \
+                     (γ̇_crit = F_f·ω·R, seed 003)"
+                )));
+            }
+        };
+        let transport = SteadyTransport::new(tolerance, get(14), axis)
+            .map_err(|e| in_props(14, e))?
+            .with_reference(reference);
         law = law.with_steady_transport(Some(transport));
     } else if (14..=16).any(|i| get(i) != 0.0) {
         // HHT: on when any of PROPS(14..16) is non-zero.
@@ -614,9 +629,42 @@ mod tests {
         fn extended_fast_and_checked_paths_agree(
             mut props in prop::collection::vec(extended_entry(), 2..23),
             mu in prop_oneof![Just(0.0), Just(0.3), Just(-0.1), 0.0..1.0f64],
+            // Steady-state transport often enough to reach its entries: PROPS(7) = 3 with
+            // ω, the axis and the γ̇_crit variant (PROPS(14..16)), PROPS(5) cleared or not, the
+            // other entries but μ cleared or not (else few draws are valid).
+            transport in prop::option::weighted(
+                0.3,
+                (
+                    prop_oneof![2 => 0.01..10.0f64, 1 => extended_entry()],
+                    prop_oneof![2 => (0..4).prop_map(f64::from), 1 => extended_entry()],
+                    prop_oneof![Just(0.0), Just(1.0), extended_entry()],
+                    prop::bool::ANY,
+                    prop::bool::ANY,
+                ),
+            ),
         ) {
             props[0] = 1.0;
             props[1] = mu;
+            if let Some((omega, axis, variant, clear_gamma, clear_rest)) = transport {
+                if props.len() < 16 {
+                    props.resize(16, 0.0);
+                }
+                props[6] = 3.0;
+                props[13] = omega;
+                props[14] = axis;
+                props[15] = variant;
+                if clear_gamma {
+                    props[4] = 0.0;
+                }
+                if clear_rest {
+                    for i in [2, 3, 5, 7, 8, 9, 10, 11, 12] {
+                        props[i] = 0.0;
+                    }
+                    for v in props.iter_mut().skip(16) {
+                        *v = 0.0;
+                    }
+                }
+            }
             let fast = coulomb_extended_fast(&props);
             let checked = coulomb_extended(&props);
             match (fast, checked) {
@@ -664,6 +712,12 @@ mod tests {
             (&[1.0, 0.3, 0.0, 0.0, 0.0, -1.0][..], "PROPS(6)"),
             (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 4.0][..], "PROPS(7)"),
             (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 3.0][..], "PROPS(14)"),
+            (
+                &[
+                    1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 3.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 5.0, 3.0, 2.0,
+                ][..],
+                "PROPS(16) = 2 must select the allowable viscous slip rate",
+            ),
             (&[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 2.0][..], "PROPS(8)"),
             (
                 &[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.1][..],

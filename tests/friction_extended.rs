@@ -913,16 +913,24 @@ fn bad_extended_input_is_refused_cleanly() {
     }
 }
 
-/// Viscous stick for steady-state transport (PROPS(7) = 3, seed 000): γ̇_crit = 2·F_f·ω·R with R
-/// the distance of COORDS from the axis; viscous stick τ = κ_s·v (κ_s = μp/γ̇_crit, v = DGAM/DTIME,
-/// tangent κ_s/DTIME), slip τ = μ(v − γ̇_crit)·p·n; tangents against central differences in
-/// stick and in slip, NFDIR 1 and 2, constant and decaying μ; no memory of the start stress.
+/// Viscous stick for steady-state transport (PROPS(7) = 3): γ̇_crit = 2·F_f·ω·R (seed 000,
+/// PROPS(16) = 0) or F_f·ω·R (seed 003, PROPS(16) = 1) with R the distance of COORDS from the
+/// axis; viscous stick τ = κ_s·v (κ_s = μp/γ̇_crit, v = DGAM/DTIME, tangent κ_s/DTIME), slip
+/// τ = μ(v − γ̇_crit)·p·n, STATEV(1..3) = (slip path, slip rate, status); tangents against
+/// central differences in stick and in slip, NFDIR 1 and 2, constant and decaying μ, both
+/// variants; no memory of the start stress.
 #[test]
 fn steady_transport_viscous_stick() {
     let (mu, p, ff, omega, dt) = (0.4, 50.0, 0.01, 20.0, 0.1);
-    for decay in [None, Some((0.2, 3.0))] {
+    let decays = [None, Some((0.2, 3.0))];
+    // PROPS(16) = 0: γ̇_crit = 2·F_f·ω·R; PROPS(16) = 1: F_f·ω·R.
+    for (variant, factor, decay) in [(0.0, 2.0), (1.0, 1.0)]
+        .into_iter()
+        .flat_map(|(v, f)| decays.map(|d| (v, f, d)))
+    {
         for nfdir in [1usize, 2] {
             let mut props = vec![0.0; 16];
+            props[15] = variant;
             props[..7].copy_from_slice(&[1.0, mu, 0.0, 0.0, 0.0, ff, 3.0]);
             if let Some((mk, dc)) = decay {
                 props[7] = 1.0;
@@ -945,7 +953,7 @@ fn steady_transport_viscous_stick() {
                 assert!(c.guards_intact());
                 c
             };
-            let rate_crit = 2.0 * ff * omega * 0.5;
+            let rate_crit = factor * ff * omega * 0.5;
             let kappa = mu * p / rate_crit;
             let dir = if nfdir == 1 { [1.0, 0.0] } else { [0.6, -0.8] };
             let mu_of = |v: f64| match decay {
@@ -966,6 +974,14 @@ fn steady_transport_viscous_stick() {
                     "{tau_eq} vs {expected}"
                 );
                 assert_eq!(c.statev[2], if sticks { 0.0 } else { 1.0 });
+                // STATEV(1) from 0: the slip of the increment (v − γ̇_crit)Δt; STATEV(2) its rate.
+                let slip_rate = if sticks { 0.0 } else { speed - rate_crit };
+                assert!(
+                    (c.statev[1] - slip_rate).abs() <= 1e-12 * speed,
+                    "{}",
+                    c.statev[1]
+                );
+                assert!((c.statev[0] - slip_rate * dt).abs() <= 1e-12 * speed * dt);
                 // DDTDDG and DDTDDP against central differences.
                 let h = 1e-7 * speed * dt;
                 for b in 0..nfdir {
@@ -1009,7 +1025,34 @@ fn steady_transport_bad_input() {
         ("ω < 0", |c| c.props[13] = -1.0, "PROPS(14)"),
         ("axis 4", |c| c.props[14] = 4.0, "PROPS(15)"),
         ("γ_crit given", |c| c.props[4] = 1e-3, "PROPS(5)"),
-        ("PROPS(16) set", |c| c.props[15] = 0.5, "PROPS(16)"),
+        (
+            "PROPS(16) = 0.5",
+            |c| c.props[15] = 0.5,
+            "PROPS(16) = 0.5 must select",
+        ),
+        (
+            "PROPS(16) = 2",
+            |c| c.props[15] = 2.0,
+            "PROPS(16) = 2 must select",
+        ),
+        (
+            "PROPS(16) = -1",
+            |c| c.props[15] = -1.0,
+            "PROPS(16) = -1 must select",
+        ),
+        (
+            "PROPS(16) NaN",
+            |c| c.props[15] = f64::NAN,
+            "PROPS(16) = NaN must select",
+        ),
+        (
+            "on the axis, seed 003",
+            |c| {
+                c.props[15] = 1.0;
+                c.coords = [0.0, 0.0, 3.0];
+            },
+            "F_f·ω·R must be > 0",
+        ),
         ("on the axis", |c| c.coords = [0.0, 0.0, 3.0], "R = 0"),
         ("COORDS NaN", |c| c.coords[1] = f64::NAN, "COORDS"),
         ("MCRD 0", |c| c.mcrd = 0, "MCRD"),
@@ -1022,6 +1065,7 @@ fn steady_transport_bad_input() {
         c.dgam = [1e-3, 0.0, 0.0];
         c.dtime = 0.1;
         c.statev[..3].copy_from_slice(&[0.5, 0.1, 1.0]);
+        c.tau[..2].copy_from_slice(&[2.0, -1.0]);
         let mut ok = c.clone();
         ok.call();
         assert_eq!(ok.pnewdt, 1e36, "{what}: {}", FricCall::last_error());
@@ -1031,6 +1075,147 @@ fn steady_transport_bad_input() {
         let msg = FricCall::last_error();
         assert!(msg.contains(word) && msg.contains("FRIC"), "{what}: {msg}");
         assert_eq!(&c.statev[..3], &[0.5, 0.1, 1.0], "{what}");
+        assert_eq!(&c.tau[..2], &[2.0, -1.0], "{what}");
+        assert!(c.guards_intact(), "{what}");
+    }
+}
+
+/// Anisotropic steady transport with seed 003's γ̇_crit = F_f·ω·R (PROPS(16) = 1): in the scaled
+/// variables of Eq. 5.2.3-10/11 (a_i = μ_i/μ̄, γ̇̄_i = a_i·γ̇_i) viscous stick is
+/// τ_i = a_i²·κ_s·γ̇_i with κ_s = μ̄p/γ̇_crit while |γ̇̄| ≤ γ̇_crit, and slip τ_i = a_i·μ̄(r)·p·n̄_i
+/// with n̄ = γ̇̄/|γ̇̄| and r = |γ̇̄| − γ̇_crit; STATEV(2) = r; DDTDDG and DDTDDP against central
+/// differences, constant and decaying μ.
+#[test]
+fn steady_transport_anisotropic_seed_003() {
+    let (mu1, mu2, p, ff, omega, dt): (f64, f64, f64, f64, f64, f64) =
+        (0.5, 0.2, 40.0, 0.02, 10.0, 0.05);
+    let mbar = (0.5 * (mu1 * mu1 + mu2 * mu2)).sqrt();
+    let a = [mu1 / mbar, mu2 / mbar];
+    let rate_crit = ff * omega * 2.0; // R = 2 about y
+    for decay in [None, Some((0.1, 2.0))] {
+        let mut props = vec![0.0; 16];
+        props[..7].copy_from_slice(&[1.0, mu1, mu2, 0.0, 0.0, ff, 3.0]);
+        if let Some((mk, dc)) = decay {
+            props[7] = 1.0;
+            props[8] = mk;
+            props[9] = dc;
+        }
+        props[13] = omega;
+        props[14] = 2.0; // y axis
+        props[15] = 1.0; // seed 003
+        // μ̄(r): every μ law multiplies μ₁ and μ₂ by the same factor.
+        let mbar_of = |r: f64| match decay {
+            None => mbar,
+            Some((mk, dc)) => mbar * (mk / mu1 + (1.0 - mk / mu1) * (-dc * r).exp()),
+        };
+        let at = |dgam: [f64; 2], press: f64| {
+            let mut c = FricCall::new(2, &props);
+            c.coords = [1.2, -9.0, -1.6]; // R = 2 about y
+            c.press = press;
+            c.dtime = dt;
+            c.dgam[..2].copy_from_slice(&dgam);
+            c.call();
+            assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+            assert!(c.guards_intact());
+            c
+        };
+        let dir = [0.8, 0.6];
+        // Scaled speed |γ̇̄| = speed·|(a₁d₁, a₂d₂)|.
+        let scaled = ((a[0] * dir[0]).powi(2) + (a[1] * dir[1]).powi(2)).sqrt();
+        for (scaled_speed, sticks) in [(0.6 * rate_crit, true), (2.5 * rate_crit, false)] {
+            let speed = scaled_speed / scaled;
+            let dgam = [dir[0] * speed * dt, dir[1] * speed * dt];
+            let c = at(dgam, p);
+            let kappa = mbar * p / rate_crit;
+            for i in 0..2 {
+                let expected = if sticks {
+                    a[i] * a[i] * kappa * speed * dir[i]
+                } else {
+                    let r = scaled_speed - rate_crit;
+                    a[i] * mbar_of(r) * p * a[i] * dir[i] / scaled
+                };
+                assert!(
+                    (c.tau[i] - expected).abs() <= 1e-12 * mu1 * p,
+                    "τ_{i} {} vs {expected} (stick {sticks}, decay {decay:?})",
+                    c.tau[i]
+                );
+            }
+            let r = if sticks {
+                0.0
+            } else {
+                scaled_speed - rate_crit
+            };
+            assert!((c.statev[1] - r).abs() <= 1e-12 * scaled_speed);
+            assert_eq!(c.statev[2], if sticks { 0.0 } else { 1.0 });
+            let h = 1e-7 * speed * dt;
+            for b in 0..2 {
+                let (mut up, mut dn) = (dgam, dgam);
+                up[b] += h;
+                dn[b] -= h;
+                let (cu, cd) = (at(up, p), at(dn, p));
+                for i in 0..2 {
+                    let fd = (cu.tau[i] - cd.tau[i]) / (2.0 * h);
+                    let an = c.ddtddg(i, b);
+                    assert!(
+                        (fd - an).abs() <= 1e-6 * (kappa / dt),
+                        "DDTDDG({i},{b}) {an} vs {fd} (stick {sticks}, decay {decay:?})"
+                    );
+                }
+            }
+            let hp = 1e-5 * p;
+            let (cu, cd) = (at(dgam, p + hp), at(dgam, p - hp));
+            for i in 0..2 {
+                let fd = (cu.tau[i] - cd.tau[i]) / (2.0 * hp);
+                assert!(
+                    (fd - c.ddtddp[i]).abs() <= 1e-8,
+                    "DDTDDP {fd} vs {}",
+                    c.ddtddp[i]
+                );
+            }
+        }
+    }
+}
+
+/// Seed 003's γ̇_crit = F_f·ω·R is seed 000's 2·F_f·ω·R with half the tolerance: the same
+/// call with PROPS(16) = 1 and F_f = 2f answers as PROPS(16) = 0 with F_f = f, bit for bit, in
+/// stick and in slip, isotropic and anisotropic; and PROPS(16) = 1 alone changes the answer.
+#[test]
+fn steady_transport_seed_003_is_seed_000_with_twice_the_tolerance() {
+    let (f, omega, dt, p) = (0.004, 30.0, 0.05, 80.0);
+    let call = |mu2: f64, tolerance: f64, variant: f64, dgam: [f64; 2]| {
+        let mut props = vec![0.0; 16];
+        props[..7].copy_from_slice(&[1.0, 0.3, mu2, 0.0, 0.0, tolerance, 3.0]);
+        props[13] = omega;
+        props[14] = 1.0; // x axis
+        props[15] = variant;
+        let mut c = FricCall::new(2, &props);
+        c.coords = [5.0, 0.6, -0.8]; // R = 1 about x
+        c.press = p;
+        c.dtime = dt;
+        c.dgam[..2].copy_from_slice(&dgam);
+        c.call();
+        assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+        c
+    };
+    // γ̇_crit = 2fω = 0.24 with R = 1: speeds 0.12 (stick) and 0.6 (slip).
+    for mu2 in [0.0, 0.5] {
+        for speed in [0.12, 0.6] {
+            let dgam = [0.6 * speed * dt, 0.8 * speed * dt];
+            let a = call(mu2, f, 0.0, dgam);
+            let b = call(mu2, 2.0 * f, 1.0, dgam);
+            assert_eq!(&a.tau[..2], &b.tau[..2]);
+            assert_eq!(a.ddtddg, b.ddtddg);
+            assert_eq!(&a.ddtddp[..2], &b.ddtddp[..2]);
+            assert_eq!(&a.statev[..3], &b.statev[..3]);
+            assert_eq!((a.sfd, a.sed), (b.sfd, b.sed));
+            let c = call(mu2, f, 1.0, dgam);
+            // Stick: κ_s doubles; slip (constant μ, same τ): the slip rate v − γ̇_crit grows.
+            assert!(
+                a.tau[..2] != c.tau[..2] && a.statev[..2] == c.statev[..2]
+                    || a.statev[1] < c.statev[1],
+                "PROPS(16) = 1 ignored"
+            );
+        }
     }
 }
 

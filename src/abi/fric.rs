@@ -633,7 +633,7 @@ impl FricArgs {
                 conditions.drot = [[r[0], r[2]], [r[1], r[3]]];
             }
             if law.steady_transport().is_some() {
-                // The radius R of γ̇_crit = 2 F_f ω R comes from COORDS(1..MCRD).
+                // The radius R of γ̇_crit = 2 F_f ω R (or F_f ω R) comes from COORDS(1..MCRD).
                 let mcrd = read(self.mcrd, "MCRD")?;
                 let n = match usize::try_from(mcrd) {
                     Ok(n) if (1..=3).contains(&n) => n,

@@ -16,7 +16,8 @@
 //! - Hilber-Hughes-Taylor dynamics: the time increment used for rates is β·Δt/γ;
 //! - viscous tangential damping τ_v = c·γ̇ (seed 003), added to the friction stress;
 //! - viscous stick for steady-state transport (seed 000): τ = κ_s·γ̇^v, κ_s = τ_crit/γ̇_crit,
-//!   γ̇_crit = 2·F_f·ω·R, with R the distance of the point from the spinning axis.
+//!   γ̇_crit = 2·F_f·ω·R, with R the distance of the point from the spinning axis, or seed 003's
+//!   variant γ̇_crit = F_f·ω·R (a fraction of the relative tangential velocity ω·R).
 //!
 //! Every increment takes the cheapest exact path: isotropic friction skips the scaling, a μ
 //! that does not depend on the slip rate skips the local solve, NFDIR = 1 is scalar code.
@@ -129,8 +130,22 @@ impl Damping {
     }
 }
 
+/// Which edition of the seed sets the allowable viscous slip rate γ̇_crit of steady-state
+/// transport (`PROPS(16)` when `PROPS(7) = 3`, docs/props.md).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum ViscousSlipReference {
+    /// Seed 000: "a fraction of the circumferential velocity", γ̇_crit = 2·F_f·ω·R.
+    #[default]
+    Circumferential,
+    /// Seed 003: "a fraction of the relative tangential velocity", γ̇_crit = F_f·ω·R, the
+    /// relative velocity being the transport velocity ω·R of the spinning surface against a
+    /// partner that does not spin (docs/props.md gives the reasons for this reading).
+    RelativeVelocity,
+}
+
 /// Viscous stick for steady-state transport (seed 000): the allowable viscous slip rate is
-/// γ̇_crit = 2·F_f·ω·R, R the distance of the contact point (`COORDS`) from the spinning axis.
+/// γ̇_crit = 2·F_f·ω·R, R the distance of the contact point (`COORDS`) from the spinning axis;
+/// seed 003's variant γ̇_crit = F_f·ω·R with [`ViscousSlipReference::RelativeVelocity`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SteadyTransport {
     /// F_f > 0, the slip tolerance.
@@ -139,6 +154,8 @@ pub struct SteadyTransport {
     pub omega: f64,
     /// The spinning axis: the global axis 0 (x), 1 (y) or 2 (z) through the origin.
     pub axis: usize,
+    /// The velocity γ̇_crit is a fraction of (seed 000 or seed 003).
+    pub reference: ViscousSlipReference,
 }
 
 impl SteadyTransport {
@@ -164,7 +181,26 @@ impl SteadyTransport {
             tolerance,
             omega,
             axis,
+            reference: ViscousSlipReference::Circumferential,
         })
+    }
+
+    /// The same parameters with γ̇_crit taken as seed `reference` defines it.
+    #[must_use]
+    pub fn with_reference(mut self, reference: ViscousSlipReference) -> Self {
+        self.reference = reference;
+        self
+    }
+
+    /// γ̇_crit at the distance `radius` from the axis: 2·F_f·ω·R (seed 000) or F_f·ω·R
+    /// (seed 003, a fraction F_f of the relative tangential velocity ω·R).
+    #[inline]
+    #[must_use]
+    pub fn critical_rate(&self, radius: f64) -> f64 {
+        match self.reference {
+            ViscousSlipReference::Circumferential => 2.0 * self.tolerance * self.omega * radius,
+            ViscousSlipReference::RelativeVelocity => self.tolerance * self.omega * radius,
+        }
     }
 
     /// R: the distance of `coords` from the axis (only the first `coords.len()` coordinates).
@@ -1060,7 +1096,8 @@ impl ExtendedCoulomb {
         })
     }
 
-    /// Viscous stick for steady-state transport (seed 000), in scaled variables: the predictor
+    /// Viscous stick for steady-state transport (seed 000; γ̇_crit of seed 000 or 003, see
+    /// [`SteadyTransport::critical_rate`]), in scaled variables: the predictor
     /// is the relative velocity γ̇^pr = Δγ̄/Δt; viscous stick τ̄ = κ_s γ̇^pr while
     /// |γ̇^pr| ≤ γ̇_crit (κ_s = τ̄_crit(0)/γ̇_crit), else slip with |γ̇^v| = γ̇_crit, so the
     /// slip rate is |γ̇^pr| − γ̇_crit and τ̄ = τ̄_crit(|γ̇^pr| − γ̇_crit)·n. No memory: the stress
@@ -1082,13 +1119,17 @@ impl ExtendedCoulomb {
             ));
         };
         let radius = tr.radius(&conditions.coords[..conditions.ncoords.min(3)]);
-        // γ̇_crit = 2 F_f ω R (seed 000).
-        let rate_crit = 2.0 * tr.tolerance * tr.omega * radius;
+        // γ̇_crit = 2 F_f ω R (seed 000) or F_f ω R (seed 003).
+        let rate_crit = tr.critical_rate(radius);
         if !(rate_crit > 0.0 && rate_crit.is_finite()) {
             return Err(LawError::Input(format!(
                 "COORDS = {:?} is on the spinning axis (R = {radius}): the allowable viscous slip \
-                 rate 2·F_f·ω·R must be > 0",
-                &conditions.coords[..conditions.ncoords.min(3)]
+                 rate {}F_f·ω·R must be > 0",
+                &conditions.coords[..conditions.ncoords.min(3)],
+                match tr.reference {
+                    ViscousSlipReference::Circumferential => "2·",
+                    ViscousSlipReference::RelativeVelocity => "",
+                }
             )));
         }
         let p = inc.pressure;

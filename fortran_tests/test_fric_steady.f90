@@ -1,0 +1,294 @@
+! test_fric_steady.f90 -- viscous stick for steady-state transport (PROPS(7) = 3,
+! docs/props.md) through FRIC, called as a user's Fortran 90 host calls it: a plain
+! `call fric(...)` with the 39 Abaqus arguments, no interface block. The Fortran twin of
+! c_tests/test_fric_steady.c, with the same scenes and closed forms.
+!
+! A disc spins at omega about the z axis; the point sits at COORDS = (0.3, 0.4, 2), R = 0.5.
+! gamma_dot_crit = 2 F_f omega R (seed 000, PROPS(16) = 0) or F_f omega R (seed 003,
+! PROPS(16) = 1). With v = |DGAM|/DTIME held constant along d, increment by increment:
+!   stick (v <= gamma_dot_crit): TAU = kappa_s v d, kappa_s = mu p/gamma_dot_crit,
+!     DDTDDG = kappa_s/DTIME I, DDTDDP = (mu v/gamma_dot_crit) d, DSLIP = 0, SFD = 0,
+!     STATEV(2) = STATEV(3) = 0;
+!   slip: TAU = mu(r) p d with r = v - gamma_dot_crit, DSLIP = r DTIME d, SFD = |TAU| r DTIME,
+!     STATEV(1) grows by r DTIME, STATEV(2) = r, STATEV(3) = 1,
+!     DDTDDG = (mu p/(v DTIME)) (I - d d) + d d mu'(r) p/DTIME, DDTDDP = mu(r) d;
+! SED = 0; TAU on entry not read. NFDIR 1 and 2, both variants, constant mu and the
+! exponential decay law. Bad input: PROPS(16) = 2, omega = 0 (PNEWDT < 1, a message naming
+! the entry, TAU and STATEV unchanged).
+!
+! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
+
+module steady_tally
+  use, intrinsic :: iso_c_binding, only: c_char, c_size_t
+  implicit none
+  integer, parameter :: dp = kind(1.0d0)
+  integer :: npass = 0, nfail = 0
+  character(len=96) :: scene = ''
+
+  interface
+    function ifl_last_error_copy(buf, len) bind(c, name='ifl_last_error_copy') result(n)
+      import :: c_char, c_size_t
+      character(kind=c_char), dimension(*), intent(out) :: buf
+      integer(c_size_t), value :: len
+      integer(c_size_t) :: n
+    end function ifl_last_error_copy
+    subroutine ifl_clear_error() bind(c, name='ifl_clear_error')
+    end subroutine ifl_clear_error
+  end interface
+
+contains
+
+  subroutine check(ok, what)
+    logical, intent(in) :: ok
+    character(len=*), intent(in) :: what
+    if (ok) then
+      npass = npass + 1
+    else
+      nfail = nfail + 1
+      if (nfail <= 40) write (*, '(a,a,a,a)') 'FAIL [', trim(scene), '] ', what
+    end if
+  end subroutine check
+
+  ! |got - want| <= rtol |want| + atol.
+  subroutine check_near(got, want, rtol, atol, what)
+    real(dp), intent(in) :: got, want, rtol, atol
+    character(len=*), intent(in) :: what
+    logical :: ok
+    ok = abs(got - want) <= rtol*abs(want) + atol
+    call check(ok, what)
+    if (.not. ok .and. nfail <= 40) write (*, '(a,1p,2e25.16)') '   got, expected:', got, want
+  end subroutine check_near
+
+  ! The calling thread's last message (ifl_last_error_copy), '' when there is none.
+  function last_error() result(msg)
+    character(len=2048) :: msg
+    character(kind=c_char) :: buf(2048)
+    integer(c_size_t) :: n
+    integer :: i
+    buf = ' '
+    n = ifl_last_error_copy(buf, int(size(buf), c_size_t))
+    msg = ' '
+    do i = 1, int(min(n, int(size(buf) - 1, c_size_t)))
+      msg(i:i) = buf(i)
+    end do
+  end function last_error
+
+  subroutine check_contains(msg, needle)
+    character(len=*), intent(in) :: msg, needle
+    call check(index(msg, needle) > 0, 'message contains "'//needle//'"')
+    if (index(msg, needle) == 0 .and. nfail <= 40) write (*, '(a,a)') '   message: ', trim(msg)
+  end subroutine check_contains
+end module steady_tally
+
+program test_fric_steady
+  use steady_tally
+  implicit none
+  real(dp), parameter :: mu = 0.4_dp, mu_k = 0.2_dp, dc = 3.0_dp, p = 50.0_dp, ff = 0.01_dp
+  real(dp), parameter :: omega = 20.0_dp, radius = 0.5_dp, dt = 0.1_dp
+  real(dp), parameter :: sentinel = -999.25_dp, big = 1.0e36_dp
+  integer, parameter :: mg = 8, msv = 8
+
+  ! FRIC arguments of one contact point; arrays longer than NFDIR / NSTATV.
+  integer :: lm, kstep, kinc, noel, npt, node, npatch, nfdir, mcrd, npred, nstatv, nprops
+  real(dp) :: tau(mg), ddtddg(mg), ddtddp(mg), dslip(mg), sed, sfd, ddtddt(mg), pnewdt
+  real(dp) :: statev(msv), dgam(mg), taulm(mg), press, dpress, ddpddh, slip(mg), time(2)
+  real(dp) :: dtime, coords(3), rcoord(3), drot(2, 2), temp(2), predef(2, 1), chrlngth
+  real(dp) :: props(20)
+  character(len=80) :: ciname, slname, msname
+  integer :: nd, variant, decay
+
+  do nd = 1, 2
+    do variant = 0, 1
+      do decay = 0, 1
+        call run_scene(nd, variant, decay)
+      end do
+    end do
+  end do
+  call bad_input()
+  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
+  if (nfail > 0 .or. npass == 0) error stop 1
+
+contains
+
+  real(dp) function mu_of(dec, rate)
+    integer, intent(in) :: dec
+    real(dp), intent(in) :: rate
+    mu_of = mu
+    if (dec == 1) mu_of = mu_k + (mu - mu_k)*exp(-dc*rate)
+  end function mu_of
+
+  real(dp) function dmu_of(dec, rate)
+    integer, intent(in) :: dec
+    real(dp), intent(in) :: rate
+    dmu_of = 0
+    if (dec == 1) dmu_of = -dc*(mu - mu_k)*exp(-dc*rate)
+  end function dmu_of
+
+  subroutine point(n, var, dec)
+    integer, intent(in) :: n, var, dec
+    props = 0
+    props(1) = 1
+    props(2) = mu
+    props(6) = ff
+    props(7) = 3 ! viscous stick, steady-state transport
+    if (dec == 1) then
+      props(8) = 1
+      props(9) = mu_k
+      props(10) = dc
+    end if
+    props(14) = omega
+    props(15) = 3 ! z axis
+    props(16) = real(var, dp)
+    nprops = 20
+    lm = 0
+    tau = sentinel
+    tau(1:n) = 0
+    ddtddg = sentinel
+    ddtddp = sentinel
+    dslip = sentinel
+    ddtddt = sentinel
+    statev = sentinel
+    statev(1:3) = 0
+    dgam = sentinel
+    dgam(1:n) = 0
+    taulm = 0
+    slip = 0
+    press = p
+    dpress = 0
+    ddpddh = 1.0e6_dp
+    kstep = 1
+    kinc = 1
+    time = 0
+    dtime = dt
+    noel = 17
+    ciname = 'DISC_PAD'
+    slname = 'PAD'
+    msname = 'DISC'
+    npt = 3
+    node = 42
+    npatch = 5
+    coords = [0.3_dp, 0.4_dp, 2.0_dp]
+    rcoord = coords
+    drot = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+    temp = 20
+    predef = 0
+    nfdir = n
+    mcrd = 3
+    npred = 1
+    nstatv = 3
+    chrlngth = 1
+  end subroutine point
+
+  subroutine call_fric()
+    pnewdt = big
+    call fric(lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pnewdt, statev, dgam, taulm, &
+              press, dpress, ddpddh, slip, kstep, kinc, time, dtime, noel, ciname, slname, &
+              msname, npt, node, npatch, coords, rcoord, drot, temp, predef, nfdir, mcrd, &
+              npred, nstatv, chrlngth, props, nprops)
+    call check(all(tau(nfdir + 1:) == sentinel), 'TAU past NFDIR untouched')
+    call check(all(ddtddg(nfdir*nfdir + 1:) == sentinel), 'DDTDDG past NFDIR**2 untouched')
+    call check(all(statev(nstatv + 1:) == sentinel), 'STATEV past NSTATV untouched')
+  end subroutine call_fric
+
+  subroutine run_scene(n, var, dec)
+    integer, intent(in) :: n, var, dec
+    real(dp) :: d(2), rate_crit, kappa, speeds(5), v, r, t, want, delta, proj, path
+    integer :: s, k, ia, ib
+    logical :: sticks
+    d = [1.0_dp, 0.0_dp]
+    if (n == 2) d = [0.6_dp, -0.8_dp]
+    rate_crit = ff*omega*radius
+    if (var == 0) rate_crit = 2*rate_crit
+    kappa = mu*p/rate_crit
+    ! Two speeds in stick (one just below the limit), two in slip, then stick again.
+    speeds = [0.4_dp, 0.999_dp, 1.5_dp, 4.0_dp, 0.7_dp]*rate_crit
+    path = 0
+    call point(n, var, dec)
+    do s = 1, 5
+      v = speeds(s)
+      sticks = v <= rate_crit
+      write (scene, '(a,i0,a,i0,a,i0,a,g0.4)') 'steady NFDIR=', n, ' PROPS(16)=', var, &
+        ' decay=', dec, ' v=', v
+      do k = 1, 3
+        ! TAU on entry is never read: a different one each increment.
+        tau(1) = 17.0_dp*k
+        if (n == 2) tau(2) = -17.0_dp*k
+        dgam(1:n) = v*dt*d(1:n)
+        call call_fric()
+        call check(pnewdt == big, 'PNEWDT not lowered')
+        call check(lm == 0, 'LM = 0')
+        call check(sed == 0, 'SED = 0')
+        if (sticks) then
+          do ia = 1, n
+            call check_near(tau(ia), kappa*v*d(ia), 1.0e-13_dp, 1.0e-13_dp*mu*p, &
+                            'stick TAU = kappa_s v d')
+            call check(dslip(ia) == 0, 'stick DSLIP = 0')
+            call check_near(ddtddp(ia), mu*v/rate_crit*d(ia), 1.0e-13_dp, 1.0e-15_dp, &
+                            'stick DDTDDP')
+            do ib = 1, n
+              want = 0
+              if (ia == ib) want = kappa/dt
+              call check_near(ddtddg(ia + (ib - 1)*n), want, 1.0e-13_dp, &
+                              1.0e-13_dp*kappa/dt, 'stick DDTDDG = kappa_s/DTIME I')
+            end do
+          end do
+          call check(sfd == 0, 'stick SFD = 0')
+          call check(statev(2) == 0 .and. statev(3) == 0, 'stick STATEV(2:3) = 0')
+        else
+          r = v - rate_crit
+          t = mu_of(dec, r)*p
+          do ia = 1, n
+            call check_near(tau(ia), t*d(ia), 1.0e-13_dp, 1.0e-13_dp*mu*p, &
+                            'slip TAU = mu(v - crit) p d')
+            call check_near(dslip(ia), r*dt*d(ia), 1.0e-13_dp, 1.0e-16_dp, 'slip DSLIP')
+            call check_near(ddtddp(ia), mu_of(dec, r)*d(ia), 1.0e-13_dp, 1.0e-15_dp, &
+                            'slip DDTDDP = mu d')
+            do ib = 1, n
+              delta = 0
+              if (ia == ib) delta = 1
+              proj = 0
+              if (n == 2) proj = delta - d(ia)*d(ib)
+              want = (t/v*proj + d(ia)*d(ib)*dmu_of(dec, r)*p)/dt
+              call check_near(ddtddg(ia + (ib - 1)*n), want, 1.0e-12_dp, &
+                              1.0e-12_dp*kappa/dt, 'slip DDTDDG')
+            end do
+          end do
+          path = path + r*dt
+          call check_near(sfd, t*r*dt, 1.0e-13_dp, 0.0_dp, 'slip SFD = |TAU| |DSLIP|')
+          call check(statev(3) == 1, 'slip STATEV(3) = 1')
+          call check_near(statev(2), r, 1.0e-13_dp, 0.0_dp, 'slip STATEV(2) = v - crit')
+        end if
+        call check_near(statev(1), path, 1.0e-13_dp, 0.0_dp, 'STATEV(1) = slip path')
+      end do
+    end do
+  end subroutine run_scene
+
+  subroutine refused(needle)
+    character(len=*), intent(in) :: needle
+    real(dp) :: tau0(2), statev0(3)
+    character(len=2048) :: msg
+    statev(1:3) = [0.5_dp, 0.1_dp, 1.0_dp]
+    tau(1:2) = [3.0_dp, -2.0_dp]
+    dgam(1) = 1.0e-3_dp
+    tau0 = tau(1:2)
+    statev0 = statev(1:3)
+    call ifl_clear_error()
+    call call_fric()
+    call check(pnewdt < 1, 'PNEWDT < 1')
+    msg = last_error()
+    call check_contains(msg, 'FRIC')
+    call check_contains(msg, needle)
+    call check(all(tau(1:2) == tau0), 'TAU unchanged')
+    call check(all(statev(1:3) == statev0), 'STATEV unchanged')
+  end subroutine refused
+
+  subroutine bad_input()
+    scene = 'steady transport: PROPS(16) = 2'
+    call point(2, 2, 0)
+    call refused('PROPS(16) = 2 must select')
+    scene = 'steady transport: omega = 0'
+    call point(2, 1, 0)
+    props(14) = 0
+    call refused('PROPS(14)')
+  end subroutine bad_input
+end program test_fric_steady
