@@ -318,10 +318,9 @@ unsafe fn point_fast<const N: usize>(
             characteristic_length,
             entry,
         };
-        if input.statev.is_null() {
+        let Some([s, rate, status]) = get(input.statev.cast::<[f64; 3]>()) else {
             return false;
-        }
-        let [s, rate, status] = input.statev.cast::<[f64; 3]>().read_unaligned();
+        };
         let Some(state) = CoulombState::from_values(s, rate, status) else {
             return false;
         };
