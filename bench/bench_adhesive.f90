@@ -26,7 +26,7 @@ module adh_data
   character(len=8), parameter :: names(nlaw) = [character(len=8) :: 'empty', 'coulomb', &
     'special', 'adhesive', 'uinter']
   real(dp) :: props(nlaw, 10)
-  integer :: nprops(nlaw) = [5, 5, 8, 8, 10]
+  integer :: nprops(nlaw) = [7, 7, 8, 8, 10]
   real(dp) :: tau0(2, npoints, nlaw), dgam(2, npoints, nlaw), press(npoints), dpress(npoints)
   integer(int64) :: rng = 7
 contains
@@ -38,8 +38,8 @@ contains
 
   subroutine setup()
     props = 0
-    props(1, 1:5) = [1.0_dp, 0.3_dp, 0.0_dp, 0.0_dp, gc]
-    props(2, 1:5) = [1.0_dp, 0.3_dp, 0.0_dp, 0.0_dp, gc]
+    props(1, 1:7) = [1.0_dp, 0.3_dp, 0.0_dp, 0.0_dp, gc, 0.0_dp, 0.0_dp]
+    props(2, 1:7) = [1.0_dp, 0.3_dp, 0.0_dp, 0.0_dp, gc, 0.0_dp, 0.0_dp]
     props(3, 1:8) = [2.0_dp, 0.3_dp, -1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, gc]
     props(4, 1:8) = [2.0_dp, 0.3_dp, 0.5_dp, 4.0_dp, 10.0_dp, 0.2_dp, 0.1_dp, gc]
     props(5, :) = [2.0_dp, 0.3_dp, 0.5_dp, 4.0_dp, 10.0_dp, 0.2_dp, 0.1_dp, gc, 0.0_dp, kn]

@@ -63,9 +63,24 @@ pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
 #[inline(always)]
 #[must_use]
 pub fn plain_coulomb_or_special_case(props: &[f64]) -> Option<Coulomb> {
-    match coulomb_fast(props) {
-        Some(law) => Some(law),
-        None => adhesive::adhesive_coulomb_special_case(props),
+    match <&[f64; COULOMB_NPROPS]>::try_from(props) {
+        Ok(all) => coulomb_from_entries(*all),
+        Err(_) => other_plain_layouts(props),
+    }
+}
+
+/// [`plain_coulomb_or_special_case`] for every `NPROPS` but 7: a shorter Coulomb `PROPS`, or
+/// the adhesive law's special case. One call out of line, chosen by `PROPS(1)`.
+#[inline(never)]
+fn other_plain_layouts(props: &[f64]) -> Option<Coulomb> {
+    match props.first() {
+        Some(&code) if code == f64::from(LAW_COULOMB) => {
+            coulomb_from_entries(coulomb_props_padded(props)?)
+        }
+        Some(&code) if code == f64::from(LAW_ADHESIVE) => {
+            adhesive::adhesive_coulomb_special_case(props)
+        }
+        _ => None,
     }
 }
 
@@ -90,6 +105,12 @@ fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
         Ok(all) => *all,
         Err(_) => coulomb_props_padded(props)?,
     };
+    coulomb_from_entries(e)
+}
+
+/// The plain Coulomb law of the seven `PROPS` entries (absent ones already zero), or `None`.
+#[inline(always)]
+fn coulomb_from_entries(e: [f64; COULOMB_NPROPS]) -> Option<Coulomb> {
     let [code, mu, mu2, tau_max, gamma_crit, tolerance, stick] = e;
     // μ finite and ≥ 0; τ_max, γ_crit and the tolerance "0 (off / default) or finite and > 0":
     // all four are 0 ≤ v < ∞. Adding +0 turns −0 into +0; after that a value is in range

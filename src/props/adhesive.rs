@@ -79,18 +79,12 @@ pub(crate) fn adhesive_fast(props: &[f64]) -> Option<FrictionLaw> {
 /// it agrees with that function followed by [`Adhesive::coulomb_special_case`]).
 #[inline(never)]
 pub(crate) fn adhesive_coulomb_special_case(props: &[f64]) -> Option<Coulomb> {
-    let e = match <&[f64; ADHESIVE_NPROPS]>::try_from(props) {
-        Ok(all) => *all,
-        Err(_) => {
-            if props.len() < 2 || props.len() > ADHESIVE_NPROPS {
-                return None;
-            }
-            // Absent entries read as 0 (an absent PROPS(3) means "no μ_s", as 0 does).
-            let mut e = [0.0; ADHESIVE_NPROPS];
-            e[..props.len()].copy_from_slice(props);
-            e
-        }
-    };
+    if props.len() < 2 || props.len() > ADHESIVE_NPROPS {
+        return None;
+    }
+    // Absent entries read as 0 (an absent PROPS(3) means "no μ_s", as 0 does); entry by entry
+    // rather than a copy of the given ones (a call to memcpy for ≤ 13 values).
+    let e: [f64; ADHESIVE_NPROPS] = std::array::from_fn(|i| props.get(i).copied().unwrap_or(0.0));
     let [
         code,
         mu_d,
