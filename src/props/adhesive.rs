@@ -72,12 +72,13 @@ pub(crate) fn adhesive_fast(props: &[f64]) -> Option<FrictionLaw> {
 }
 
 /// The Coulomb law of a valid adhesive `PROPS` in its Coulomb special case, else `None` (any
-/// other adhesive `PROPS`, or not the adhesive law at all). Out of line: called by `fric_`'s
-/// plain path only when `PROPS` is not the plain Coulomb layout.
+/// other adhesive `PROPS`, or not the adhesive law at all). Inlined into the out-of-line
+/// `other_plain_layouts` (props.rs), which `fric_`'s plain path calls only when `PROPS` is not
+/// the plain Coulomb layout.
 ///
 /// Decides with plain comparisons, like [`adhesive_props_fast`] (a property test checks that
 /// it agrees with that function followed by [`Adhesive::coulomb_special_case`]).
-#[inline(never)]
+#[inline]
 pub(crate) fn adhesive_coulomb_special_case(props: &[f64]) -> Option<Coulomb> {
     if props.len() < 2 || props.len() > ADHESIVE_NPROPS {
         return None;
