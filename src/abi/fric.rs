@@ -252,6 +252,51 @@ struct Outputs {
     statev: *mut f64,
 }
 
+impl Outputs {
+    /// Writes a successful answer: `STATEV(1..3)`, `LM`, and with relative motion `TAU`,
+    /// `DDTDDG`, `DDTDDP`, `DSLIP`, `SED`, `SFD` and both columns of `DDTDDT` (each
+    /// `ddtddt_column`); in exact stick `DSLIP`, `SED` and `SFD` are zero and the rest is left
+    /// alone. NULL optional outputs are skipped.
+    ///
+    /// # Safety
+    /// The pointers as `fric_` documents them, for NFDIR = N.
+    #[inline(always)]
+    unsafe fn write_answer<const N: usize>(
+        &self,
+        contact: &Contact<N>,
+        state: &CoulombState,
+        ddtddt_column: &[f64; N],
+    ) {
+        // SAFETY: arrays of N, N·N, 2N and NSTATV ≥ 3 entries per the FRIC contract.
+        unsafe {
+            let mut end_state = [0.0; CoulombState::NSTATV];
+            state.write_statev(&mut end_state);
+            write_array(self.statev, &end_state);
+            match contact {
+                Contact::ExactStick => {
+                    write(self.lm, 1);
+                    write_array(self.dslip, &[0.0; N]);
+                    write(self.sed, 0.0);
+                    write(self.sfd, 0.0);
+                }
+                Contact::Motion(t) => {
+                    write(self.lm, 0);
+                    write_array(self.tau, &t.tau);
+                    write_matrix(self.ddtddg, &t.ddtddg);
+                    write_array(self.ddtddp, &t.ddtddp);
+                    write_array(self.dslip, &t.dslip);
+                    write(self.sed, t.sed);
+                    write(self.sfd, t.sfd);
+                    if !self.ddtddt.is_null() {
+                        write_array(self.ddtddt, ddtddt_column);
+                        write_array(self.ddtddt.add(N), ddtddt_column);
+                    }
+                }
+            }
+        }
+    }
+}
+
 /// The pointers [`point_fast`] reads.
 struct Inputs {
     tau: *const f64,
@@ -327,28 +372,8 @@ unsafe fn point_fast<const N: usize>(
         let Some(up) = law.try_update(&inc, &state) else {
             return false;
         };
-        let mut end_state = [0.0; CoulombState::NSTATV];
-        up.state.write_statev(&mut end_state);
-        write_array(out.statev, &end_state);
-        match up.contact {
-            Contact::ExactStick => {
-                write(out.lm, 1);
-                write_array(out.dslip, &[0.0; N]);
-                write(out.sed, 0.0);
-                write(out.sfd, 0.0);
-            }
-            Contact::Motion(t) => {
-                write(out.lm, 0);
-                write_array(out.tau, &t.tau);
-                write_matrix(out.ddtddg, &t.ddtddg);
-                write_array(out.ddtddp, &t.ddtddp);
-                write_array(out.dslip, &t.dslip);
-                write(out.sed, t.sed);
-                write(out.sfd, t.sfd);
-                // DDTDDT(NFDIR,2): μ does not depend on temperature.
-                write_zeros(out.ddtddt, 2 * N);
-            }
-        }
+        // DDTDDT(NFDIR,2) = 0: μ does not depend on temperature.
+        out.write_answer(&up.contact, &up.state, &[0.0; N]);
         // The plain law always converges: PNEWDT is left alone.
         true
     }
@@ -458,6 +483,22 @@ struct FricArgs {
 }
 
 impl FricArgs {
+    /// The output pointers, for [`Outputs::write_answer`].
+    #[inline(always)]
+    fn outputs(&self) -> Outputs {
+        Outputs {
+            lm: self.lm,
+            tau: self.tau,
+            ddtddg: self.ddtddg,
+            ddtddp: self.ddtddp,
+            dslip: self.dslip,
+            sed: self.sed,
+            sfd: self.sfd,
+            ddtddt: self.ddtddt,
+            statev: self.statev,
+        }
+    }
+
     /// Checks the sizes and the law once, then runs the NFDIR-specific code.
     #[inline(always)]
     /// `ciname` (of `ciname_len` bytes) is read only when `PROPS(8) = 2` asks for the
@@ -559,31 +600,11 @@ impl FricArgs {
                 characteristic_length: read(self.chrlngth, "CHRLNGTH")?,
                 entry,
             };
-            let statev = self.statev;
-            let state = CoulombState::from_statev(slice(statev, nstatv, "STATEV")?)?;
+            let state = CoulombState::from_statev(slice(self.statev, nstatv, "STATEV")?)?;
             let up = law.update(&inc, &state)?;
-            let mut end_state = [0.0; CoulombState::NSTATV];
-            up.state.write_statev(&mut end_state);
-            write_array(statev, &end_state);
-            match up.contact {
-                Contact::ExactStick => {
-                    write(self.lm, 1);
-                    write_array(self.dslip, &[0.0; N]);
-                    write(self.sed, 0.0);
-                    write(self.sfd, 0.0);
-                }
-                Contact::Motion(t) => {
-                    write(self.lm, 0);
-                    write_array(self.tau, &t.tau);
-                    write_matrix(self.ddtddg, &t.ddtddg);
-                    write_array(self.ddtddp, &t.ddtddp);
-                    write_array(self.dslip, &t.dslip);
-                    write(self.sed, t.sed);
-                    write(self.sfd, t.sfd);
-                    // DDTDDT(NFDIR,2): μ does not depend on temperature.
-                    write_zeros(self.ddtddt, 2 * N);
-                }
-            }
+            // DDTDDT(NFDIR,2) = 0: μ does not depend on temperature.
+            self.outputs()
+                .write_answer(&up.contact, &up.state, &[0.0; N]);
             let ratio = up.outcome.step_ratio;
             if ratio.is_finite() && !self.pnewdt.is_null() && ratio < self.pnewdt.read() {
                 self.pnewdt.write(ratio);
