@@ -18,7 +18,7 @@ pub(crate) fn norm<const N: usize>(v: &[f64; N]) -> f64 {
         // The zero vector (a sticking point's slip): common, and exactly 0 without scaling.
         0.0
     } else {
-        scaled_norm(v)
+        scaled_norm(*v)
     }
 }
 
@@ -34,9 +34,10 @@ fn is_positive_normal(x: f64) -> bool {
 /// out; ∞ in, ∞ out.
 #[cold]
 #[inline(never)]
-fn scaled_norm<const N: usize>(v: &[f64; N]) -> f64 {
+#[allow(clippy::needless_pass_by_value)] // by value: a reference would keep `v` in memory at every caller
+fn scaled_norm<const N: usize>(v: [f64; N]) -> f64 {
     let mut m = 0.0f64;
-    for x in v {
+    for x in &v {
         if x.is_nan() {
             return f64::NAN;
         }
@@ -46,7 +47,7 @@ fn scaled_norm<const N: usize>(v: &[f64; N]) -> f64 {
         return m;
     }
     let mut s = 0.0;
-    for x in v {
+    for x in &v {
         let r = x / m;
         s += r * r;
     }
@@ -82,7 +83,7 @@ pub(crate) fn scale<const N: usize>(v: &[f64; N], s: f64) -> [f64; N] {
 #[must_use]
 pub(crate) fn unit<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
     if N > 1 && !is_positive_normal(len) {
-        return unit_of_extreme(v, len);
+        return unit_of_extreme(*v, len);
     }
     let mut out = *v;
     for x in &mut out {
@@ -95,12 +96,13 @@ pub(crate) fn unit<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
 /// give NaN, as `v/len` would).
 #[cold]
 #[inline(never)]
-fn unit_of_extreme<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
+#[allow(clippy::needless_pass_by_value)] // by value, as `scaled_norm`
+fn unit_of_extreme<const N: usize>(v: [f64; N], len: f64) -> [f64; N] {
     // 2^±600: exact on entries below f64::MIN_POSITIVE (up) or near f64::MAX (down), and takes
     // them far from both ends of the range.
     const UP: f64 = f64::from_bits((1023 + 600) << 52);
     const DOWN: f64 = f64::from_bits((1023 - 600) << 52);
-    let w = scale(v, if len < 1.0 { UP } else { DOWN });
+    let w = scale(&v, if len < 1.0 { UP } else { DOWN });
     let len = norm(&w);
     let mut out = w;
     for x in &mut out {
