@@ -44,6 +44,9 @@ fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-13 * b.abs()
 }
 
+/// Name, `PROPS`, start `STRESS`, start status, h, Δγ, end status, SPD.
+type Case<'a> = (&'a str, &'a [f64], &'a [f64], f64, f64, &'a [f64], f64, f64);
+
 #[test]
 fn spd_in_every_transition() {
     let adhesive = props(S_A, N_A);
@@ -54,7 +57,7 @@ fn spd_in_every_transition() {
     // S = 3·S_a/29 the bond holds at N = 1 and breaks at N = 9.99.
     let closed_shear_energy = 0.5 * 9.0 * GAMMA_CRIT / (MU_S * 50.0 + S_A);
     #[rustfmt::skip]
-    let cases: [(&str, &[f64], &[f64], f64, f64, &[f64], f64, f64); 15] = [
+    let cases: [Case; 15] = [
         // name, props, start STRESS, start status, h, Δγ, end status, SPD
         ("bonded -> broken (3-D)", &adhesive, &[-6.0, 2.0, -1.0], 3.0, -9.0 / K_N, &[0.0, 0.0],
          4.0, bonded_energy),
@@ -254,7 +257,7 @@ fn spd_along_random_paths() {
             0.0,
             K_N,
         ];
-        let mut c = UinterCall::new(ndir as i32, &p);
+        let mut c = UinterCall::new(ndir, &p);
         c.dtime = 0.1;
         let (amp, offset) = (rng.uniform(1e-4, 1e-3), rng.uniform(-0.6, 0.5));
         let (omega, slide) = (rng.uniform(0.05, 0.4), rng.uniform(0.1, 2.0) * p[7]);
