@@ -331,13 +331,14 @@ impl AdhesiveInterface {
     }
 }
 
-/// The elastic energy a breaking bond held at the start of the increment and does not return:
-/// ½|τ̄|²/k̄_s (k̄_s = τ_s(p̄)/γ_crit, the stick stiffness the start stress was built with, S_a/γ_crit
-/// while bonded) plus ½N̄²/K_n for a start tension N̄ > 0 (the spring snaps). A start compression
-/// contributes nothing: the penalty spring unloads through h = 0 and gives its energy back.
-/// Products ordered so that no square is formed; saturates at f64::MAX (as the accumulated
-/// slip does) instead of reporting ∞ for inputs near the f64 range (`f64::min` also maps the
-/// NaN of ∞·0, possible only there, to f64::MAX).
+/// The elastic energy a breaking bond held at the start of the increment and does not return
+/// (docs/uinter.md): ½|τ̄|²/k̄_s, with k̄_s = τ_s(p̄)/γ_crit the stick stiffness the start stress
+/// was built with (S_a/γ_crit while bonded), plus ½N̄²/K_n for a start tension N̄ > 0 (the
+/// spring snaps). A start compression contributes nothing: the penalty spring unloads through
+/// h = 0 and gives its energy back. Written as τ̄·(τ̄·γ_crit/τ_s) and N̄·(N̄/K_n) so that they
+/// overflow only when the energy does; then it saturates at f64::MAX (as the accumulated slip
+/// does) rather than reporting ∞ (`f64::min` also maps the NaN of ∞·0, possible only for
+/// |τ̄| beyond f64, to f64::MAX).
 fn released_energy(
     tau_start: f64,
     tau_s_start: f64,
