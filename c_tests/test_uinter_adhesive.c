@@ -10,7 +10,10 @@
  *       strength mu_d p + S_a + k_mu v p at once).
  *   A1  pull-off: bonded, shear S0 held, pulled apart in small steps: the bond holds (stress
  *       -N, LOPENCLOSE = 1) until N = N_a sqrt(1 - (S0/S_a)^2), then breaks (zero stress,
- *       LOPENCLOSE = 0); re-contact bonds again with the full strengths.
+ *       LOPENCLOSE = 0); re-contact bonds again with the full strengths. Energy balance: the
+ *       work done on the interface (from STRESS and RDISP only) equals SED + sum SPD after
+ *       every increment; SPD = 1/2 S0^2/k_s + 1/2 N_last^2/K_n at the break (the energy held at
+ *       the last bonded increment), 1/2 (0.99 N_a)^2/K_n at the second break, 0 otherwise.
  *   Bad input: negative strengths, coeffStatic < coeff, NaN -> PNEWDT = 0.25, outputs kept,
  *       one message naming the routine and the entry.
  *
@@ -224,32 +227,63 @@ static void onset(void)
     FH_NEAR(last_stick, MU_S * P + SA, 0.0, k_s * step);
 }
 
-/* A1: pull-off at N_a sqrt(1 - (S0/S_a)^2), reversible. */
+/* Energy bookkeeping of the A1 scene, from what a host sees: STRESS and RDISP. */
+typedef struct {
+    double work, spd_sum;
+} a1_energy;
+
+/* One A1 increment (NDIR = 3) to the overclosure h with the tangential motion dg along
+ * direction 2. The work of the increment is the trapezoid 1/2 (sigma_start + sigma_end) du per
+ * component while the point carries stress at the end (exact for the law's linear springs:
+ * K_n, and k_s = S_a/gamma_crit at p = 0), and sigma_end du = 0 for an increment that ends
+ * open (backward Euler: the break point inside the increment is unknown). Checks
+ * W = SED + sum SPD and SPD >= 0; returns SPD. */
+static double a1_step(ui_point *u, double h, double dg, a1_energy *e)
+{
+    const double s_start[3] = {u->stress[0], u->stress[1], u->stress[2]};
+    const double du[3] = {h - u->rdisp[0], 0.0, dg};
+    int i;
+    u->rdisp[0] = h;
+    u->drdisp[2] = dg;
+    u->spd = -1.0;
+    ui_call(u);
+    FH_CHECK(u->pnewdt == FH_PNEWDT_IN);
+    if (u->lopenclose == 1) {
+        for (i = 0; i < 3; i++) {
+            e->work += 0.5 * (s_start[i] + u->stress[i]) * du[i];
+        }
+    }
+    FH_CHECK(u->spd >= 0.0 && isfinite(u->spd));
+    e->spd_sum += u->spd;
+    FH_NEAR(e->work, u->sed + e->spd_sum, 1e-12, 0.0);
+    return u->spd;
+}
+
+/* A1: pull-off at N_a sqrt(1 - (S0/S_a)^2), reversible, with its energy balance. */
 static void pull_off(void)
 {
     const double props[10] = {2.0, MU_D, MU_S, SA, NA, 0.0, 0.0, GAMMA_CRIT, 0.0, KN};
-    const double s0 = 3.0;
-    double n_break, last_n = 0.0;
+    const double s0 = 3.0, k_s = SA / GAMMA_CRIT;
+    double n_break, last_n = 0.0, spd;
+    a1_energy e = {0.0, 0.0};
     ui_point u;
     int k, broke = 0;
     ui_init(&u, 3, props, 10);
     /* Bonded at zero pressure (touching) with shear S0 along direction 2: k_s = S_a/gamma_crit. */
-    u.rdisp[0] = 0.0;
-    u.drdisp[2] = s0 / (SA / GAMMA_CRIT);
     fh_context("A1 bond");
-    ui_call(&u);
+    spd = a1_step(&u, 0.0, s0 / k_s, &e);
     FH_NEAR(u.stress[2], s0, 1e-12, 0.0);
     FH_EXACT(u.stress[1], 0.0);
     FH_EXACT(u.lopenclose, 1);
-    u.drdisp[2] = 0.0;
+    FH_EXACT(spd, 0.0);
+    FH_NEAR(e.work, 0.5 * s0 * s0 / k_s, 1e-12, 0.0);
     n_break = NA * sqrt(1.0 - (s0 / SA) * (s0 / SA));
     for (k = 1; k <= 1000 && !broke; k++) {
         double n = 1e-2 * k;
-        u.rdisp[0] = -n / KN;
         fh_context("A1 pull N = %g", n);
-        ui_call(&u);
-        FH_CHECK(u.pnewdt == FH_PNEWDT_IN);
+        spd = a1_step(&u, -n / KN, 0.0, &e);
         if (u.lopenclose == 1) {
+            FH_EXACT(spd, 0.0);
             FH_CHECK(n < n_break);
             FH_NEAR(u.stress[0], -n, 1e-9, 0.0);
             FH_NEAR(u.stress[2], s0, 1e-12, 0.0);
@@ -263,28 +297,33 @@ static void pull_off(void)
             FH_EXACT(u.stress[2], 0.0);
             FH_EXACT(u.ddsddr[0], 0.0);
             FH_EXACT(u.lstate, 4);
+            FH_EXACT(u.sed, 0.0);
+            /* The energy the bond held at the last bonded increment, from K_n, k_s and the
+             * stresses the host imposed there. */
+            FH_NEAR(spd, 0.5 * s0 * s0 / k_s + 0.5 * last_n * last_n / KN, 1e-12, 0.0);
         }
     }
     fh_context("A1 break");
     FH_CHECK(broke);
     FH_NEAR(last_n, n_break, 0.0, 1e-2);
-    /* Closer again but still apart: free. */
-    u.rdisp[0] = -1e-9;
-    ui_call(&u);
+    /* Closer again but still apart, then touching: free, no work, no SPD. */
+    FH_EXACT(a1_step(&u, -1e-9, 0.0, &e), 0.0);
+    FH_EXACT(u.lopenclose, 0);
+    FH_EXACT(a1_step(&u, 0.0, 0.0, &e), 0.0);
     FH_EXACT(u.lopenclose, 0);
     /* Re-contact, then pull to 0.99 N_a (no shear now): bonded again. */
     fh_context("A1 re-contact");
-    u.rdisp[0] = 1e-4;
-    ui_call(&u);
+    FH_EXACT(a1_step(&u, 1e-4, 0.0, &e), 0.0);
     FH_EXACT(u.lopenclose, 1);
     FH_NEAR(u.stress[0], 1.0, 1e-12, 0.0);
-    u.rdisp[0] = -0.99 * NA / KN;
-    ui_call(&u);
+    FH_EXACT(a1_step(&u, -0.99 * NA / KN, 0.0, &e), 0.0);
     FH_EXACT(u.lopenclose, 1);
     FH_NEAR(u.stress[0], -0.99 * NA, 1e-12, 0.0);
-    u.rdisp[0] = -1.01 * NA / KN;
-    ui_call(&u);
+    /* Broken again: the re-formed bond's energy is reported again. */
+    fh_context("A1 second break");
+    spd = a1_step(&u, -1.01 * NA / KN, 0.0, &e);
     FH_EXACT(u.lopenclose, 0);
+    FH_NEAR(spd, 0.5 * (0.99 * NA) * (0.99 * NA) / KN, 1e-12, 0.0);
 }
 
 static void bad_input(void)

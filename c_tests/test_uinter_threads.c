@@ -207,6 +207,7 @@ static void run_point(int ip, uint64_t *digests, final_rec *fin, tally *t)
         h = fnv(h, statev, (size_t)nstatv * sizeof(double));
         h = fnv(h, &sed, sizeof sed);
         h = fnv(h, &sfd, sizeof sfd);
+        h = fnv(h, &spd, sizeof spd);
         h = fnv(h, &pnewdt, sizeof pnewdt);
         h = fnv(h, &lopenclose, sizeof lopenclose);
         h = fnv(h, &lstate, sizeof lstate);
@@ -240,7 +241,7 @@ static void run_point(int ip, uint64_t *digests, final_rec *fin, tally *t)
             finite = finite && isfinite(ddfddr[k]);
         }
         finite = finite && isfinite(flux[0]) && isfinite(flux[1]) && isfinite(sed) &&
-                 isfinite(sfd) && isfinite(statev[0]) && isfinite(statev[1]);
+                 isfinite(sfd) && isfinite(spd) && isfinite(statev[0]) && isfinite(statev[1]);
         if (!finite) {
             violation(t, "non-finite output", ip, inc);
         }
@@ -253,7 +254,7 @@ static void run_point(int ip, uint64_t *digests, final_rec *fin, tally *t)
         if (tau > bound * (1.0 + 1e-12)) {
             violation(t, "|tau| above the strength", ip, inc);
         }
-        if (sed < 0.0 || sfd < 0.0 || statev[0] < statev0[0] || statev[1] < 0.0) {
+        if (sed < 0.0 || sfd < 0.0 || spd < 0.0 || statev[0] < statev0[0] || statev[1] < 0.0) {
             violation(t, "negative energy or decreasing slip", ip, inc);
         }
         if (lstate != (int)statev[2] || lopenclose != (statev[2] != 4.0)) {

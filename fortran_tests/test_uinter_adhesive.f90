@@ -5,7 +5,10 @@
 !   F4  velocity steps v = 0.01, 0.1 (= v_half), 1, 0.3 with k_mu and v_half both non-zero:
 !       steady tau = ((mu_s v_half + mu_d v)/(v_half + v) + k_mu v) p + S_a (UINTER and FRIC);
 !   onset of sliding at mu_s p + S_a (FRIC, slip ramped at constant p, v_half = 0);
-!   A1  pull-off at N = N_a sqrt(1 - (S0/S_a)^2), re-bond on re-contact (UINTER, NDIR = 3);
+!   A1  pull-off at N = N_a sqrt(1 - (S0/S_a)^2), re-bond on re-contact (UINTER, NDIR = 3),
+!       with its energy balance: the work done on the interface (from STRESS and RDISP only)
+!       equals SED + sum SPD after every increment; SPD = 1/2 S0^2/k_s + 1/2 N_last^2/K_n at
+!       the break, 1/2 (0.99 N_a)^2/K_n at the second break, 0 otherwise;
 !   bad input: negative S_a, coeffStatic < coeff, NaN -> PNEWDT = 0.25, STRESS unchanged.
 ! Parameters: mu_d = 0.3, mu_s = 0.5, S_a = 4, N_a = 10, k_mu = 0.2, v_half = 0.1,
 ! gamma_crit = 1e-3, K_n = 1e4, p = 100, DTIME = 0.1.
@@ -172,45 +175,74 @@ contains
     call near(last, mus*p + sa, ks*step, 'onset stress')
   end subroutine onset
 
+  ! One A1 increment (NDIR = 3) to the overclosure h with the tangential motion dg along
+  ! direction 2. The work of the increment is the trapezoid 1/2 (sigma_start + sigma_end) du
+  ! per component while the point carries stress at the end (exact for the law's linear
+  ! springs), sigma_end du = 0 for an increment that ends open (backward Euler: the break point
+  ! inside the increment is unknown). Checks W = SED + sum SPD and SPD >= 0.
+  subroutine a1_step(h, dg, work, spdsum)
+    real(dp), intent(in) :: h, dg
+    real(dp), intent(inout) :: work, spdsum
+    real(dp) :: s_start(3), du(3)
+    s_start = stress(1:3)
+    du = [h - rdisp(1), 0.0_dp, dg]
+    rdisp(1) = h
+    drdisp(3) = dg
+    spd = -1
+    call call_uinter()
+    call check(pnewdt == big, 'PNEWDT not lowered')
+    if (lopenclose == 1) work = work + sum(0.5_dp*(s_start + stress(1:3))*du)
+    call check(spd >= 0, 'SPD >= 0')
+    spdsum = spdsum + spd
+    call near(work, sed + spdsum, 1.0e-12_dp*abs(sed + spdsum), 'W = SED + sum SPD')
+  end subroutine a1_step
+
   subroutine pull_off()
     integer :: k
-    real(dp) :: s0, nbreak, n, lastn
+    real(dp) :: s0, ks, nbreak, n, lastn, work, spdsum
     logical :: broke
     scene = 'A1 UINTER'
-    s0 = 3.0_dp
+    s0 = 3.0_dp; ks = sa/gc; work = 0; spdsum = 0
     call init(3, [2.0_dp, mud, mus, sa, na, 0.0_dp, 0.0_dp, gc, 0.0_dp, kn])
-    drdisp(3) = s0/(sa/gc)
-    call call_uinter()
+    call a1_step(0.0_dp, s0/ks, work, spdsum)
     call near(stress(3), s0, 1.0e-12_dp, 'bonded shear S0')
-    drdisp(3) = 0
+    call check(spd == 0, 'SPD = 0 while bonding')
+    call near(work, 0.5_dp*s0**2/ks, 1.0e-12_dp*work, 'work of the shear ramp')
     nbreak = na*sqrt(1.0_dp - (s0/sa)**2)
     broke = .false.; lastn = 0
     do k = 1, 1000
       n = 1.0e-2_dp*k
-      rdisp(1) = -n/kn
-      call call_uinter()
+      call a1_step(-n/kn, 0.0_dp, work, spdsum)
       if (lopenclose == 1) then
         call check(n < nbreak, 'holds below the ellipse')
         call near(stress(1), -n, 1.0e-9_dp, 'tension -N')
         call near(stress(3), s0, 1.0e-12_dp, 'shear held')
+        call check(spd == 0, 'SPD = 0 while bonded')
         lastn = n
       else
         broke = .true.
         call check(n >= nbreak .and. lastn < nbreak, 'breaks at N_a sqrt(1 - (S0/S_a)^2)')
         call check(stress(1) == 0 .and. stress(3) == 0 .and. lstate == 4, 'free after break')
+        call check(sed == 0, 'SED = 0 once broken')
+        ! The energy held at the last bonded increment, from K_n, k_s and the imposed stresses.
+        call near(spd, 0.5_dp*s0**2/ks + 0.5_dp*lastn**2/kn, 1.0e-12_dp*spd, 'SPD at the break')
         exit
       end if
     end do
     call check(broke, 'broke')
-    rdisp(1) = 1.0e-4_dp
-    call call_uinter()
-    call check(lopenclose == 1, 're-contact closes')
-    rdisp(1) = -0.99_dp*na/kn
-    call call_uinter()
-    call check(lopenclose == 1 .and. lstate == 3, 're-bonded with the full strength')
-    rdisp(1) = -1.01_dp*na/kn
-    call call_uinter()
+    ! Closer again but apart, then touching: free, no work, no SPD.
+    call a1_step(-1.0e-9_dp, 0.0_dp, work, spdsum)
+    call check(lopenclose == 0 .and. spd == 0, 'apart: free, SPD = 0')
+    call a1_step(0.0_dp, 0.0_dp, work, spdsum)
+    call check(lopenclose == 0 .and. spd == 0, 'touching: free, SPD = 0')
+    call a1_step(1.0e-4_dp, 0.0_dp, work, spdsum)
+    call check(lopenclose == 1 .and. spd == 0, 're-contact closes')
+    call a1_step(-0.99_dp*na/kn, 0.0_dp, work, spdsum)
+    call check(lopenclose == 1 .and. lstate == 3 .and. spd == 0, &
+               're-bonded with the full strength')
+    call a1_step(-1.01_dp*na/kn, 0.0_dp, work, spdsum)
     call check(lopenclose == 0, 'breaks past N_a')
+    call near(spd, 0.5_dp*(0.99_dp*na)**2/kn, 1.0e-12_dp*spd, 'SPD at the second break')
   end subroutine pull_off
 
   subroutine bad_input()

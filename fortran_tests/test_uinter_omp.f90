@@ -183,7 +183,7 @@ contains
       call mix_all(h1, h2, ddfddt)
       call mix_all(h1, h2, ddfddr)
       call mix_all(h1, h2, statev)
-      call mix_all(h1, h2, [sed, sfd, pnewdt, real(lopenclose, dp), real(lstate, dp)])
+      call mix_all(h1, h2, [sed, sfd, spd, pnewdt, real(lopenclose, dp), real(lstate, dp)])
       dig(inc) = h1*lehmer_m + h2
       if (nstatv > 3) then
         if (any(transfer(statev(4:), 0_int64, nstatv - 3) /= &
@@ -203,7 +203,8 @@ contains
       end if
       finite = all(ieee_is_finite(stress)) .and. all(ieee_is_finite(ddsddr)) .and. &
                all(ieee_is_finite(ddfddr)) .and. all(ieee_is_finite(flux)) .and. &
-               ieee_is_finite(sed) .and. ieee_is_finite(sfd) .and. all(ieee_is_finite(statev(1:2)))
+               ieee_is_finite(sed) .and. ieee_is_finite(sfd) .and. ieee_is_finite(spd) .and. &
+               all(ieee_is_finite(statev(1:2)))
       if (.not. finite) call fault('non-finite output')
       tau = 0.0_dp
       do a = 2, ndir
@@ -213,7 +214,8 @@ contains
       mu = max(props(2), props(3))
       bound = (mu + props(6)*statev(2))*max(p, 0.0_dp) + props(4)
       if (tau > bound*(1.0_dp + 1.0e-12_dp)) call fault('|tau| above the strength')
-      if (sed < 0.0_dp .or. sfd < 0.0_dp .or. statev(1) < statev0(1) .or. statev(2) < 0.0_dp) &
+      if (sed < 0.0_dp .or. sfd < 0.0_dp .or. spd < 0.0_dp .or. statev(1) < statev0(1) .or. &
+          statev(2) < 0.0_dp) &
         call fault('negative energy or decreasing slip')
       if (lstate /= nint(statev(3)) .or. lopenclose /= merge(0, 1, statev(3) == 4.0_dp)) &
         call fault('LSTATE/LOPENCLOSE disagree with STATEV(3)')

@@ -482,3 +482,29 @@ fn fric_adhesive_subnormal_rate_coefficient_replays_clean() {
     let tau = out.tau[0].hypot(out.tau[1]);
     assert!(close(tau, expected, 1e-13), "{tau} vs {expected}");
 }
+
+/// The `uinter` property check on a bond breaking (SPD > 0, allowed only then) and on the same
+/// call from an open start (SPD must be 0): bonded with S̄ = 3, N̄ = 8, pulled to N = 9
+/// (S_a = 4, N_a = 10, γ_crit = 1e-3, K_n = 1e4), SPD = ½·9·1e-3/4 + ½·64/1e4.
+#[test]
+fn uinter_breaking_bond_passes_the_spd_property() {
+    let mut c = uinter_case::UinterCase::decode(&[]);
+    c.ndir = 2;
+    c.nstatv = 3;
+    c.nprops = 10;
+    c.props = vec![2.0, 0.3, 0.0, 4.0, 10.0, 0.0, 0.0, 1e-3, 0.0, 1e4];
+    c.stress = vec![-8.0, 3.0];
+    c.statev = vec![0.0, 0.0, 3.0];
+    c.rdisp = vec![-9.0 / 1e4, 0.0];
+    c.drdisp = vec![0.0, 0.0];
+    c.dtime = 1.0;
+    c.chrlngth = 1.0;
+    c.pnewdt = 1e36;
+    c.null_optional = false;
+    let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
+    let want = 0.5 * 9.0 * 1e-3 / 4.0 + 0.5 * 64.0 / 1e4;
+    assert!(close(out.energies[2], want, 1e-14), "{:?}", out.energies);
+    c.statev[2] = 4.0;
+    let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
+    assert_eq!(out.energies[2], 0.0);
+}

@@ -413,8 +413,20 @@ impl UinterCase {
         self.check_strength(out, tau)?;
         if !self.null_optional {
             let [sed, sfd, spd, svd, scd] = out.energies;
-            if sed < 0.0 || sfd < 0.0 || [spd, svd, scd] != [0.0; 3] {
+            if sed < 0.0 || sfd < 0.0 || spd < 0.0 || [svd, scd] != [0.0; 2] {
                 return Err(format!("energies {:?}", out.energies));
+            }
+            // SPD is the energy of a bond breaking in this increment: a point not open at the
+            // start (STATEV(3) ≠ 4), apart at the end (RDISP(1) ≤ 0), open after the call, with
+            // separation adhesion (S_a, N_a > 0). Zero in every other increment.
+            let get = |i: usize| self.props.get(i).copied().unwrap_or(0.0);
+            let broke = self.statev[2] != 4.0
+                && code == 4
+                && self.rdisp[0] <= 0.0
+                && get(3) > 0.0
+                && get(4) > 0.0;
+            if spd != 0.0 && !broke {
+                return Err(format!("SPD = {spd:e} without a bond breaking: {out:?}"));
             }
             if bits(&out.dviscous) != bits(&vec![0.0; n * n])
                 || bits(&out.dstructural) != bits(&vec![0.0; n * n])

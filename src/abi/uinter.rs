@@ -24,15 +24,15 @@ use crate::{CUTBACK_RATIO, LawError};
 /// `CHRLNGTH`, `PROPS`, `NDIR`, `NSTATV`, `NPROPS`, and `TEMP(2)` (current surface
 /// temperatures) when `PROPS(11) = 1`. Writes `STRESS`, `DDSDDR(NDIR,NDIR)`,
 /// `DVISCOUS` and `DSTRUCTURAL` (zero), `FLUX(2)`, `DDFDDT(2,2)` (= −∂FLUX/∂TEMP),
-/// `DDSDDT(NDIR,2)` (zero), `DDFDDR(2,NDIR)`, `STATEV(1..3)`, `SED`, `SFD`, `SPD`, `SVD`,
-/// `SCD` (the last three zero), `LOPENCLOSE` (1 when the interface carries stress: closed or
-/// bonded; 0 when open) and `LSTATE` (the status code of `STATEV(3)`). Never reads or writes
-/// the other arguments.
+/// `DDSDDT(NDIR,2)` (zero), `DDFDDR(2,NDIR)`, `STATEV(1..3)`, `SED`, `SFD`, `SPD` (the
+/// energy released by a bond breaking in the increment, 0 otherwise), `SVD`, `SCD` (zero),
+/// `LOPENCLOSE` (1 when the interface carries stress: closed or bonded; 0 when open) and
+/// `LSTATE` (the status code of `STATEV(3)`). Never reads or writes the other arguments.
 ///
 /// On failure (bad `PROPS`, `NSTATV` < 3, `NDIR` not 2 or 3, NaN or infinite input, no thermal
 /// law for the interaction when `PROPS(11) = 1`, overflow, internal panic): `PNEWDT = 0.25`,
-/// `STRESS`, `STATEV`, `LOPENCLOSE`, `LSTATE` unchanged, the tangents zeroed (when `NDIR` is
-/// valid), one message per distinct cause.
+/// `STRESS`, `STATEV`, `LOPENCLOSE`, `LSTATE` unchanged, the tangents, `SFD` and `SPD` zeroed
+/// (the tangents when `NDIR` is valid), one message per distinct cause.
 ///
 /// # Safety
 /// The pointers must be valid for the UINTER signature with the sizes the host passes;
@@ -280,7 +280,7 @@ impl UinterArgs {
             }
             write(self.sed, r.sed);
             write(self.sfd, r.shear.sfd);
-            write(self.spd, 0.0);
+            write(self.spd, r.spd);
             write(self.svd, 0.0);
             write(self.scd, 0.0);
             write(self.lopenclose, c_int::from(r.closed));
@@ -369,6 +369,7 @@ impl UinterArgs {
                 }
             }
             write(self.sfd, 0.0);
+            write(self.spd, 0.0);
             if let Ok(ndir @ (2 | 3)) = read(self.ndir, "NDIR") {
                 let ndir = ndir as usize;
                 write_zeros(self.ddsddr, ndir * ndir);

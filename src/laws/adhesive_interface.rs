@@ -13,6 +13,12 @@
 //!   (S/S_a)² + (N/N_a)² < 1" (seed 004), else the bond breaks in this increment;
 //! - apart and not bonded (broken, or no separation adhesion): free, zero stress.
 //!
+//! Energy released by a breaking bond ([`InterfaceResponse::spd`], UINTER's `SPD`): the elastic
+//! energy the bond held at the start of the increment (the last converged state: with backward
+//! Euler the break point inside the increment is unknown) and that the separation does not
+//! give back as work, ½|τ̄|²/k̄_s + ½N̄²/K_n with N̄ = max(−p̄, 0); a compressive penalty energy
+//! ½p̄²/K_n is returned as the surfaces unload through h = 0, so it is not dissipated.
+//!
 //! State (`STATEV(1..3)`): accumulated slip, slip rate, and the status below.
 
 use super::adhesive::{Adhesive, SlideBranch};
@@ -124,6 +130,10 @@ pub struct InterfaceResponse<const N: usize> {
     pub dsfd_dgam: [f64; N],
     /// ∂SFD/∂h.
     pub dsfd_dh: f64,
+    /// Energy per unit area dissipated by a bond breaking in this increment (`SPD`): 0 unless
+    /// the point was bonded or closed at the start, the surfaces are apart and the separation
+    /// criterion fails. An output only: it enters no tangent.
+    pub spd: f64,
 }
 
 /// The adhesive law with a penalty normal stiffness K_n.
@@ -210,6 +220,7 @@ impl AdhesiveInterface {
                     },
                 },
                 closed: true,
+                spd: 0.0,
             }
         } else if was_bonded && self.law.separation_adhesion() {
             self.bonded(inc, state, gamma_crit)
@@ -256,7 +267,15 @@ impl AdhesiveInterface {
         let s_eq = norm(&shear);
         let measure = (s_eq / s_a).powi(2) + (tension / n_a).powi(2);
         if measure >= 1.0 {
-            return self.open(state);
+            let mut broken = self.open(state);
+            broken.spd = released_energy(
+                norm(&inc.shear_start),
+                tau_s_start,
+                gamma_crit,
+                -inc.normal_stress_start,
+                k_n,
+            );
+            return broken;
         }
         let mut ddtddg = [[0.0; N]; N];
         for (i, row) in ddtddg.iter_mut().enumerate() {
@@ -282,6 +301,7 @@ impl AdhesiveInterface {
             closed: true,
             dsfd_dgam: [0.0; N],
             dsfd_dh: 0.0,
+            spd: 0.0,
         }
     }
 
@@ -306,8 +326,39 @@ impl AdhesiveInterface {
             closed: false,
             dsfd_dgam: [0.0; N],
             dsfd_dh: 0.0,
+            spd: 0.0,
         }
     }
+}
+
+/// The elastic energy a breaking bond held at the start of the increment and does not return
+/// (docs/uinter.md): ½|τ̄|²/k̄_s, with k̄_s = τ_s(p̄)/γ_crit the stick stiffness the start stress
+/// was built with (S_a/γ_crit while bonded), plus ½N̄²/K_n for a start tension N̄ > 0 (the
+/// spring snaps). A start compression contributes nothing: the penalty spring unloads through
+/// h = 0 and gives its energy back. Written as τ̄·(τ̄·γ_crit/τ_s) and N̄·(N̄/K_n) so that they
+/// overflow only when the energy does; then it saturates at f64::MAX (as the accumulated slip
+/// does) rather than reporting ∞ (`f64::min` also maps the NaN of ∞·0, possible only for
+/// |τ̄| beyond f64, to f64::MAX).
+fn released_energy(
+    tau_start: f64,
+    tau_s_start: f64,
+    gamma_crit: f64,
+    tension: f64,
+    k_n: f64,
+) -> f64 {
+    // Start shear energy ½|τ̄|·|γ̄^el|, with γ̄^el = τ̄·γ_crit/τ_s(p̄) (the elastic slip the
+    // tangential law recovers from τ̄).
+    let shear = if tau_start > 0.0 && tau_s_start > 0.0 {
+        0.5 * tau_start * (tau_start * (gamma_crit / tau_s_start))
+    } else {
+        0.0
+    };
+    let normal = if tension > 0.0 {
+        0.5 * tension * (tension / k_n)
+    } else {
+        0.0
+    };
+    (shear + normal).min(f64::MAX)
 }
 
 /// Derivatives of SFD = |τ|·Δs (sliding; 0 otherwise) with respect to Δγ and p, from the
