@@ -3,6 +3,7 @@
 pub mod adhesive;
 pub mod adhesive_interface;
 pub mod coulomb;
+pub mod coulomb_batch;
 pub mod coulomb_extended;
 pub mod friction_coefficient;
 pub mod friction_table;
