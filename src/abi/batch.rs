@@ -9,7 +9,7 @@
 //!
 //! Each point gets exactly what `fric_` would give it with the same `PROPS`, `NSTATV`, `DTIME`
 //! and inputs, bit for bit (`tests/batch.rs`, `tests/batch_chunks.rs`). With elastic stick
-//! (`PROPS(7) = 0`), chunks of [`LANES`] points go through the SIMD-friendly kernel
+//! (`PROPS(7) = 0`), chunks of 4 points (`LANES`) go through the SIMD-friendly kernel
 //! [`crate::laws::coulomb_batch::ElasticStickKernel`] (the same IEEE operations in the same
 //! order, lane by lane); a chunk the kernel declines (any point with non-finite input, an
 //! extreme norm, `LM` ≠ 0, …), the tail of the batch and the other stick modes go point by
