@@ -340,11 +340,29 @@ fn chunks_dispatch<const N: usize>(
     tally: &mut Tally,
 ) -> usize {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
+    if !baseline_only() && std::arch::is_x86_feature_detected!("avx2") {
         // SAFETY: the processor supports AVX2 (checked just above).
         return unsafe { chunks_avx2::<N>(kernel, law, dtime, v, tally) };
     }
     chunks::<N>(kernel, law, dtime, v, tally)
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Unit tests: run the baseline build of [`chunks`] even on an AVX2 processor.
+    static BASELINE_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+#[inline(always)]
+fn baseline_only() -> bool {
+    #[cfg(test)]
+    {
+        BASELINE_ONLY.with(std::cell::Cell::get)
+    }
+    #[cfg(not(test))]
+    {
+        false
+    }
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -796,5 +814,77 @@ unsafe fn optional_mut<'a>(p: *mut f64, len: usize) -> Option<&'a mut [f64]> {
     } else {
         // SAFETY: as documented.
         Some(unsafe { std::slice::from_raw_parts_mut(p, len) })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The baseline (SSE2) and AVX2 builds of the chunk loop give the same bits; the
+    /// integration tests compare the build the processor selects with `fric_` per point.
+    #[test]
+    fn baseline_and_avx2_chunks_agree() {
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        for nfdir in [1usize, 2] {
+            let n = 103;
+            let random = |k: usize, s: f64, next: &mut dyn FnMut() -> f64| -> Vec<f64> {
+                (0..k * n).map(|_| s * next()).collect()
+            };
+            let dgam = random(nfdir, 4e-3, &mut next);
+            let press = random(1, 60.0, &mut next);
+            let dpress = random(1, 5.0, &mut next);
+            let chrlngth: Vec<f64> = random(1, 1.0, &mut next).iter().map(|x| 1.5 + x).collect();
+            let tau0 = random(nfdir, 5.0, &mut next);
+            let statev0: Vec<f64> = random(3, 1.0, &mut next).iter().map(|x| x.abs()).collect();
+            let props = [1.0, 0.3, 0.0, 12.0, 0.0, 0.002, 0.0];
+            let mut results = Vec::new();
+            for baseline in [true, false] {
+                BASELINE_ONLY.with(|b| b.set(baseline));
+                let mut lm = vec![0; n];
+                let mut tau = tau0.clone();
+                let mut statev = statev0.clone();
+                let mut ddtddg = vec![0.0; nfdir * nfdir * n];
+                let mut ddtddp = vec![0.0; nfdir * n];
+                let mut dslip = vec![0.0; nfdir * n];
+                let mut sed = vec![0.0; n];
+                let mut sfd = vec![0.0; n];
+                let mut pnewdt = 1.0;
+                let mut b = FricBatch {
+                    npoints: n,
+                    ld: n,
+                    nfdir,
+                    nstatv: 3,
+                    lm: &mut lm,
+                    tau: &mut tau,
+                    ddtddg: &mut ddtddg,
+                    ddtddp: &mut ddtddp,
+                    dslip: Some(&mut dslip),
+                    sed: Some(&mut sed),
+                    sfd: Some(&mut sfd),
+                    statev: &mut statev,
+                    dgam: &dgam,
+                    taulm: None,
+                    press: &press,
+                    dpress: &dpress,
+                    chrlngth: &chrlngth,
+                };
+                assert!(fric_batch(&props, 0.1, &mut b, &mut pnewdt).is_ok());
+                let all: Vec<u64> = [tau, statev, ddtddg, ddtddp, dslip, sed, sfd]
+                    .iter()
+                    .flatten()
+                    .map(|x| x.to_bits())
+                    .collect();
+                results.push(all);
+            }
+            BASELINE_ONLY.with(|b| b.set(false));
+            assert_eq!(results[0], results[1], "NFDIR {nfdir}");
+        }
     }
 }
