@@ -55,7 +55,7 @@ impl KinematicCoulomb {
     pub fn force(&self, f_normal: f64, f_stick: f64, area: f64) -> Result<f64, LawError> {
         if !f_normal.is_finite() {
             return Err(LawError::Input(format!(
-                "fNormal = {f_normal} is NaN or infinite"
+                "fNormal = {f_normal}; expected a finite force"
             )));
         }
         if !(f_stick.is_finite() && f_stick >= 0.0) {
