@@ -69,6 +69,23 @@ typedef struct IflConductance {
   double dq_dtheta_b;
 } IflConductance;
 
+#if !defined(INTERFACIAL_EXPLICIT_SINGLE)
+/**
+ * The Fortran `REAL` of the Abaqus/Explicit build `vfric_` is compiled for: `f64` for the
+ * double-precision executable (the default), `f32` with the cargo feature `explicit-single`
+ * (`vaba_param.inc` = `implicit real`). The law runs in `f64` either way: every `f32` input
+ * converts exactly, and the result rounds back once (docs/vfric.md).
+ */
+typedef double IflReal;
+#endif
+
+#if defined(INTERFACIAL_EXPLICIT_SINGLE)
+/**
+ * The Fortran `REAL` of the Abaqus/Explicit build `vfric_` is compiled for (see above).
+ */
+typedef float IflReal;
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -463,7 +480,8 @@ void uinter_(double *stress,
              size_t msname_len);
 
 /**
- * Abaqus/Explicit `VFRIC` (double precision build, `vaba_param.inc` = `implicit real*8`):
+ * Abaqus/Explicit `VFRIC` (double precision build by default, `vaba_param.inc` = `implicit
+ * real*8`; single precision with the cargo feature `explicit-single`, see [`IflReal`]):
  * the friction force of the `nContact` contact points of a block, callable from Fortran as
  * `CALL VFRIC(...)`; 42 arguments + 3 hidden lengths (`surfInt`, `surfSlv`, `surfMst`).
  *
@@ -491,8 +509,8 @@ void uinter_(double *stress,
  * `fStickForce(nContact)`, `fNormal(nContact)`, `jConSlvid(nContact)`, `areaSlv(nSlvNod)`,
  * `props(nProps)`, names of the given hidden lengths; the other pointers are not dereferenced.
  */
-void vfric_(double *f_tangential,
-            double *statev,
+void vfric_(IflReal *f_tangential,
+            IflReal *statev,
             const int *k_step,
             const int *k_inc,
             const int *n_contact,
@@ -510,29 +528,29 @@ void vfric_(double *f_tangential,
             const int *j_mst_uid,
             const int *j_con_slvid,
             const int *j_con_mstid,
-            const double *tim_step,
-            const double *tim_glb,
-            const double *d_tim_cur,
+            const IflReal *tim_step,
+            const IflReal *tim_glb,
+            const IflReal *d_tim_cur,
             const char *surf_int,
             const char *surf_slv,
             const char *surf_mst,
             const int *l_cont_type,
-            const double *d_slip_fric,
-            const double *f_stick_force,
-            const double *f_tang_prev,
-            const double *f_normal,
-            const double *friction_work,
-            const double *shape,
-            const double *coord_slv,
-            const double *coord_mst,
-            const double *dircos_sl,
-            const double *dircos_n,
-            const double *props,
-            const double *area_slv,
-            const double *temp_slv,
-            const double *pre_def_slv,
-            const double *temp_mst,
-            const double *pre_def_mst,
+            const IflReal *d_slip_fric,
+            const IflReal *f_stick_force,
+            const IflReal *f_tang_prev,
+            const IflReal *f_normal,
+            const IflReal *friction_work,
+            const IflReal *shape,
+            const IflReal *coord_slv,
+            const IflReal *coord_mst,
+            const IflReal *dircos_sl,
+            const IflReal *dircos_n,
+            const IflReal *props,
+            const IflReal *area_slv,
+            const IflReal *temp_slv,
+            const IflReal *pre_def_slv,
+            const IflReal *temp_mst,
+            const IflReal *pre_def_mst,
             size_t surf_int_len,
             size_t surf_slv_len,
             size_t surf_mst_len);

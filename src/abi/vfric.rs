@@ -4,13 +4,24 @@
 
 use std::ffi::{c_char, c_int};
 
-use super::{boundary, fortran_string, read, slice};
+use super::{boundary, fortran_string, read};
 use crate::LawError;
 use crate::laws::coulomb_kinematic::KinematicCoulomb;
 use crate::props::{FrictionLaw, friction_law};
 use crate::report::{Site, report};
 
-/// Abaqus/Explicit `VFRIC` (double precision build, `vaba_param.inc` = `implicit real*8`):
+/// The Fortran `REAL` of the Abaqus/Explicit build `vfric_` is compiled for: `f64` for the
+/// double-precision executable (the default), `f32` with the cargo feature `explicit-single`
+/// (`vaba_param.inc` = `implicit real`). The law runs in `f64` either way: every `f32` input
+/// converts exactly, and the result rounds back once (docs/vfric.md).
+#[cfg(not(feature = "explicit-single"))]
+pub type IflReal = f64;
+/// The Fortran `REAL` of the Abaqus/Explicit build `vfric_` is compiled for (see above).
+#[cfg(feature = "explicit-single")]
+pub type IflReal = f32;
+
+/// Abaqus/Explicit `VFRIC` (double precision build by default, `vaba_param.inc` = `implicit
+/// real*8`; single precision with the cargo feature `explicit-single`, see [`IflReal`]):
 /// the friction force of the `nContact` contact points of a block, callable from Fortran as
 /// `CALL VFRIC(...)`; 42 arguments + 3 hidden lengths (`surfInt`, `surfSlv`, `surfMst`).
 ///
@@ -40,8 +51,8 @@ use crate::report::{Site, report};
 #[allow(clippy::too_many_arguments)]
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn vfric_(
-    f_tangential: *mut f64,
-    statev: *mut f64,
+    f_tangential: *mut IflReal,
+    statev: *mut IflReal,
     k_step: *const c_int,
     k_inc: *const c_int,
     n_contact: *const c_int,
@@ -59,29 +70,29 @@ pub unsafe extern "C" fn vfric_(
     j_mst_uid: *const c_int,
     j_con_slvid: *const c_int,
     j_con_mstid: *const c_int,
-    tim_step: *const f64,
-    tim_glb: *const f64,
-    d_tim_cur: *const f64,
+    tim_step: *const IflReal,
+    tim_glb: *const IflReal,
+    d_tim_cur: *const IflReal,
     surf_int: *const c_char,
     surf_slv: *const c_char,
     surf_mst: *const c_char,
     l_cont_type: *const c_int,
-    d_slip_fric: *const f64,
-    f_stick_force: *const f64,
-    f_tang_prev: *const f64,
-    f_normal: *const f64,
-    friction_work: *const f64,
-    shape: *const f64,
-    coord_slv: *const f64,
-    coord_mst: *const f64,
-    dircos_sl: *const f64,
-    dircos_n: *const f64,
-    props: *const f64,
-    area_slv: *const f64,
-    temp_slv: *const f64,
-    pre_def_slv: *const f64,
-    temp_mst: *const f64,
-    pre_def_mst: *const f64,
+    d_slip_fric: *const IflReal,
+    f_stick_force: *const IflReal,
+    f_tang_prev: *const IflReal,
+    f_normal: *const IflReal,
+    friction_work: *const IflReal,
+    shape: *const IflReal,
+    coord_slv: *const IflReal,
+    coord_mst: *const IflReal,
+    dircos_sl: *const IflReal,
+    dircos_n: *const IflReal,
+    props: *const IflReal,
+    area_slv: *const IflReal,
+    temp_slv: *const IflReal,
+    pre_def_slv: *const IflReal,
+    temp_mst: *const IflReal,
+    pre_def_mst: *const IflReal,
     surf_int_len: usize,
     surf_slv_len: usize,
     surf_mst_len: usize,
@@ -156,16 +167,16 @@ pub unsafe extern "C" fn vfric_(
 }
 
 struct VfricArgs {
-    f_tangential: *mut f64,
+    f_tangential: *mut IflReal,
     n_contact: *const c_int,
     n_slv_nod: *const c_int,
     n_fric_dir: *const c_int,
     n_props: *const c_int,
     j_con_slvid: *const c_int,
-    f_stick_force: *const f64,
-    f_normal: *const f64,
-    props: *const f64,
-    area_slv: *const f64,
+    f_stick_force: *const IflReal,
+    f_normal: *const IflReal,
+    props: *const IflReal,
+    area_slv: *const IflReal,
     surf_int: *const c_char,
     surf_int_len: usize,
 }
@@ -207,7 +218,9 @@ impl VfricArgs {
             let nprops = read(self.n_props, "nProps")?;
             let nprops = usize::try_from(nprops)
                 .map_err(|_| LawError::Parameter(format!("nProps = {nprops} is negative")))?;
-            let law = match friction_law(slice(self.props, nprops, "props")?)? {
+            let props = reals(self.props, nprops, "props")?;
+            let props: Vec<f64> = props.iter().copied().map(to_f64).collect();
+            let law = match friction_law(&props)? {
                 FrictionLaw::Coulomb(law) => KinematicCoulomb::new(&law),
                 FrictionLaw::CoulombExtended(_) => {
                     return Err(LawError::Parameter(
@@ -229,8 +242,8 @@ impl VfricArgs {
             if self.f_tangential.is_null() {
                 return Err(LawError::Input("fTangential is a NULL pointer".into()));
             }
-            let normal = slice(self.f_normal, n, "fNormal")?;
-            let stick = slice(self.f_stick_force, n, "fStickForce")?;
+            let normal = reals(self.f_normal, n, "fNormal")?;
+            let stick = reals(self.f_stick_force, n, "fStickForce")?;
             let area = if law.needs_area() {
                 let nodes = read(self.n_slv_nod, "nSlvNod")?;
                 let nodes = usize::try_from(nodes)
@@ -239,7 +252,7 @@ impl VfricArgs {
                     return Err(LawError::Input("jConSlvid is a NULL pointer".into()));
                 }
                 let ids = std::slice::from_raw_parts(self.j_con_slvid, n);
-                Some((ids, slice(self.area_slv, nodes, "areaSlv")?))
+                Some((ids, reals(self.area_slv, nodes, "areaSlv")?))
             } else {
                 None
             };
@@ -251,7 +264,7 @@ impl VfricArgs {
                         usize::try_from(id)
                             .ok()
                             .and_then(|i| i.checked_sub(1))
-                            .and_then(|i| areas.get(i).copied())
+                            .and_then(|i| areas.get(i).copied().map(to_f64))
                             .ok_or_else(|| {
                                 LawError::Input(format!(
                                     "jConSlvid({}) = {id} is not a slave node 1..{}",
@@ -261,7 +274,7 @@ impl VfricArgs {
                             })
                     }
                 };
-                let force = a.and_then(|a| law.force(normal[k], stick[k], a));
+                let force = a.and_then(|a| law.force(to_f64(normal[k]), to_f64(stick[k]), a));
                 let f = match force {
                     Ok(f) => f,
                     Err(e) => {
@@ -276,7 +289,10 @@ impl VfricArgs {
                 };
                 // fTangential(1,k) = −F against the slip (0 − F: +0 without friction);
                 // fTangential(2,k) = 0.
-                self.f_tangential.add(k * nf).write(0.0 - f);
+                // In single precision the one rounding of the result: F is μ·F_N (an exact
+                // product of two f32 in f64, so this is the correctly rounded f32 product),
+                // τ_max·A likewise, or F_stick itself.
+                self.f_tangential.add(k * nf).write(to_real(0.0 - f));
                 if nf == 2 {
                     self.f_tangential.add(k * nf + 1).write(0.0);
                 }
@@ -302,4 +318,33 @@ impl VfricArgs {
             }
         }
     }
+}
+
+/// Borrows `len` reals of the build's precision (NULL allowed only when `len` is 0).
+///
+/// # Safety
+/// `p` is NULL or points to `len` readable `IflReal`s.
+unsafe fn reals<'a>(p: *const IflReal, len: usize, name: &str) -> Result<&'a [IflReal], LawError> {
+    if len == 0 {
+        Ok(&[])
+    } else if p.is_null() {
+        Err(LawError::Input(format!("{name} is a NULL pointer")))
+    } else {
+        // SAFETY: as documented.
+        Ok(unsafe { std::slice::from_raw_parts(p, len) })
+    }
+}
+
+/// A real of the build's precision in f64 (exact).
+#[inline]
+#[allow(clippy::useless_conversion)]
+fn to_f64(x: IflReal) -> f64 {
+    f64::from(x)
+}
+
+/// The f64 result in the build's precision (one rounding in single precision).
+#[inline]
+#[allow(clippy::cast_possible_truncation, clippy::unnecessary_cast)]
+fn to_real(x: f64) -> IflReal {
+    x as IflReal
 }
