@@ -9,7 +9,9 @@
  * of NRUN runs is reported (ns per point), with the median ratio as a noise check. Before timing,
  * both paths must agree bit for bit.
  *
- * Usage: bench_batch [NREP [NRUN]]   (defaults 200, 15)
+ * Usage: bench_batch [NREP [NRUN [CASE]]]   (defaults 200, 15, all cases)
+ * CASE 1..4 runs one case only (NFDIR 1 stick, 1 slip, 2 stick, 2 slip), for callgrind:
+ *   valgrind --tool=callgrind ./bench_batch 4 1 4
  */
 #include <math.h>
 #include <stdint.h>
@@ -155,11 +157,12 @@ static int cmp(const void *a, const void *b)
 int main(int argc, char **argv)
 {
     int nrep = argc > 1 ? atoi(argv[1]) : 200, nrun = argc > 2 ? atoi(argv[2]) : 15;
+    int only = argc > 3 ? atoi(argv[3]) : 0;
     int nfdir, slip, r, k, i;
     double *tf = malloc(sizeof(double) * (size_t)nrun), *tb = malloc(sizeof(double) * (size_t)nrun);
     double *ratio = malloc(sizeof(double) * (size_t)nrun);
     if (nrep < 1 || nrun < 1 || !tf || !tb || !ratio) {
-        fprintf(stderr, "usage: bench_batch [NREP [NRUN]]\n");
+        fprintf(stderr, "usage: bench_batch [NREP [NRUN [CASE]]]\n");
         return 2;
     }
     for (i = 0; i < 3; i++) {
@@ -170,6 +173,9 @@ int main(int argc, char **argv)
            "speed-up (median) |\n|---|---|---|---|---|---|\n");
     for (nfdir = 1; nfdir <= 2; nfdir++) {
         for (slip = 0; slip <= 1; slip++) {
+            if (only != 0 && only != 2 * (nfdir - 1) + slip + 1) {
+                continue;
+            }
             setup(nfdir, slip);
             if (check(nfdir) != 0) {
                 fprintf(stderr, "batch and fric_ disagree (NFDIR %d)\n", nfdir);

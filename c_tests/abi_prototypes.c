@@ -107,6 +107,24 @@ enum IflStatus ifl_fric_batch(size_t npoints, size_t ld, int nfdir, const double
                               const double *taulm, const double *press, const double *dpress,
                               const double *chrlngth, double *pnewdt);
 
+/* VFRIC (abi.md, section "VFRIC"), double-precision build: vaba_param.inc = IMPLICIT REAL*8, so
+ * every real is double and names starting I-N (nContact, jConSlvid, lContType, ...) are int;
+ * 42 explicit arguments + the hidden lengths of surfInt, surfSlv, surfMst. */
+void vfric_(double *fTangential, double *statev, const int *kStep, const int *kInc,
+            const int *nContact, const int *nFacNod, const int *nSlvNod, const int *nMstNod,
+            const int *nFricDir, const int *nDir, const int *nStateVar, const int *nProps,
+            const int *nTemp, const int *nPred, const int *numDefTfv, const int *jSlvUid,
+            const int *jMstUid, const int *jConSlvid, const int *jConMstid,
+            const double *timStep, const double *timGlb, const double *dTimCur,
+            const char *surfInt, const char *surfSlv, const char *surfMst,
+            const int *lContType, const double *dSlipFric, const double *fStickForce,
+            const double *fTangPrev, const double *fNormal, const double *frictionWork,
+            const double *shape, const double *coordSlv, const double *coordMst,
+            const double *dircosSl, const double *dircosN, const double *props,
+            const double *areaSlv, const double *tempSlv, const double *preDefSlv,
+            const double *tempMst, const double *preDefMst, size_t surfInt_len,
+            size_t surfSlv_len, size_t surfMst_len);
+
 /* Function-pointer types spelled out once more: assigning the library's functions to them is
  * a constraint violation if the types differ. */
 typedef void fric_fn(int *, double *, double *, double *, double *, double *, double *,

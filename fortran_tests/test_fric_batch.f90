@@ -5,7 +5,7 @@
 !
 ! - On pseudo-random points (stick, slip, exact stick, LM = 0/1/2, NFDIR 1 and 2, three PROPS
 !   variants, a padded leading dimension) every output equals what FRIC gives the same point
-!   called once per point (== on every entry: the batch runs the same code), and the padding
+!   called once per point (== on every entry: the batch is bit-identical), and the padding
 !   rows past NPOINTS are never written.
 ! - Closed forms at first contact: stick tau = (mu p/gc) dgam, DDTDDG = mu p/gc on the diagonal;
 !   slip |tau| = mu p.

@@ -69,6 +69,23 @@ typedef struct IflConductance {
   double dq_dtheta_b;
 } IflConductance;
 
+#if !defined(INTERFACIAL_EXPLICIT_SINGLE)
+/**
+ * The Fortran `REAL` of the Abaqus/Explicit build `vfric_` is compiled for: `f64` for the
+ * double-precision executable (the default), `f32` with the cargo feature `explicit-single`
+ * (`vaba_param.inc` = `implicit real`). The law runs in `f64` either way: every `f32` input
+ * converts exactly, and the result rounds back once (docs/vfric.md).
+ */
+typedef double IflReal;
+#endif
+
+#if defined(INTERFACIAL_EXPLICIT_SINGLE)
+/**
+ * The Fortran `REAL` of the Abaqus/Explicit build `vfric_` is compiled for (see above).
+ */
+typedef float IflReal;
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -461,6 +478,82 @@ void uinter_(double *stress,
              size_t ciname_len,
              size_t slname_len,
              size_t msname_len);
+
+/**
+ * Abaqus/Explicit `VFRIC` (double precision build by default, `vaba_param.inc` = `implicit
+ * real*8`; single precision with the cargo feature `explicit-single`, see [`IflReal`]):
+ * the friction force of the `nContact` contact points of a block, callable from Fortran as
+ * `CALL VFRIC(...)`; 42 arguments + 3 hidden lengths (`surfInt`, `surfSlv`, `surfMst`).
+ *
+ * `PROPS` has the law-1 layout of `fric_` (docs/props.md), plain Coulomb only: μ =
+ * `PROPS(2)`, τ_max = `PROPS(4)` (a force cap τ_max·`areaSlv` of the point's slave node),
+ * `PROPS(7)` = 2 rough friction; γ_crit and the slip tolerance are ignored (kinematic stick is
+ * exact). For contact point k:
+ *
+ * `fTangential(1,k) = −min(μ·fNormal(k), τ_max·areaSlv(jConSlvid(k)), fStickForce(k))`
+ * (0 when `fNormal(k) < 0`; −`fStickForce(k)` with rough friction), `fTangential(2,k) = 0`
+ * when `nFricDir = 2` (the local 1-direction is the slip direction).
+ *
+ * `statev` is not written (the law keeps no state in kinematic contact). Every other argument
+ * is only read for sizes or not at all.
+ *
+ * Bad input at a point (NaN or infinite `fNormal`, a negative or non-finite `fStickForce`, a
+ * bad area or slave-node index when τ_max is set): that point gets no friction force (0) and
+ * one message per distinct cause is reported, naming `VFRIC`, the interaction and the point.
+ * A fault of the whole call (bad `PROPS`, an extended or adhesive law, `nFricDir` not 1 or 2,
+ * NULL arrays, an internal panic): every point gets 0 and the cause is reported. VFRIC has no
+ * `PNEWDT`; `INTERFACIAL_STRICT=1` aborts on the first error instead.
+ *
+ * # Safety
+ * Pointers valid for the VFRIC signature: `fTangential(nFricDir,nContact)`,
+ * `fStickForce(nContact)`, `fNormal(nContact)`, `jConSlvid(nContact)`, `areaSlv(nSlvNod)`,
+ * `props(nProps)`, names of the given hidden lengths; the other pointers are not dereferenced.
+ */
+void vfric_(IflReal *f_tangential,
+            IflReal *statev,
+            const int *k_step,
+            const int *k_inc,
+            const int *n_contact,
+            const int *n_fac_nod,
+            const int *n_slv_nod,
+            const int *n_mst_nod,
+            const int *n_fric_dir,
+            const int *n_dir,
+            const int *n_state_var,
+            const int *n_props,
+            const int *n_temp,
+            const int *n_pred,
+            const int *num_def_tfv,
+            const int *j_slv_uid,
+            const int *j_mst_uid,
+            const int *j_con_slvid,
+            const int *j_con_mstid,
+            const IflReal *tim_step,
+            const IflReal *tim_glb,
+            const IflReal *d_tim_cur,
+            const char *surf_int,
+            const char *surf_slv,
+            const char *surf_mst,
+            const int *l_cont_type,
+            const IflReal *d_slip_fric,
+            const IflReal *f_stick_force,
+            const IflReal *f_tang_prev,
+            const IflReal *f_normal,
+            const IflReal *friction_work,
+            const IflReal *shape,
+            const IflReal *coord_slv,
+            const IflReal *coord_mst,
+            const IflReal *dircos_sl,
+            const IflReal *dircos_n,
+            const IflReal *props,
+            const IflReal *area_slv,
+            const IflReal *temp_slv,
+            const IflReal *pre_def_slv,
+            const IflReal *temp_mst,
+            const IflReal *pre_def_mst,
+            size_t surf_int_len,
+            size_t surf_slv_len,
+            size_t surf_mst_len);
 
 #ifdef __cplusplus
 }  // extern "C"

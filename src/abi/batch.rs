@@ -8,15 +8,20 @@
 //! Arrays with one entry per point (`lm`, `press`, …) are indexed by `i` alone.
 //!
 //! Each point gets exactly what `fric_` would give it with the same `PROPS`, `NSTATV`, `DTIME`
-//! and inputs: the same law, the same code ([`crate::laws::coulomb::Coulomb::update`]), so the
-//! results are bit-identical (`tests/batch.rs` checks it on random inputs). What is saved is
-//! per-call overhead: `PROPS` is read once, sizes are checked once, one panic guard for the
-//! whole batch, no pointer chasing per argument.
+//! and inputs, bit for bit (`tests/batch.rs`, `tests/batch_chunks.rs`). With elastic stick
+//! (`PROPS(7) = 0`), chunks of 4 points (`LANES`) go through the SIMD-friendly kernel
+//! [`crate::laws::coulomb_batch::ElasticStickKernel`] (the same IEEE operations in the same
+//! order, lane by lane); a chunk the kernel declines (any point with non-finite input, an
+//! extreme norm, `LM` ≠ 0, …), the tail of the batch and the other stick modes go point by
+//! point through [`crate::laws::coulomb::Coulomb::update`], which gives the messages and safe
+//! outputs. Besides the kernel, what is saved is per-call overhead: `PROPS` is read once, sizes
+//! are checked once, one panic guard for the whole batch, no pointer chasing per argument.
 
 use std::ffi::c_int;
 
 use super::{Fault, IflStatus, boundary};
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
+use crate::laws::coulomb_batch::{ChunkInput, ElasticStickKernel};
 use crate::props::{FrictionLaw, friction_law};
 use crate::report::{Site, report};
 use crate::{CUTBACK_RATIO, LawError};
@@ -293,21 +298,25 @@ fn run<const N: usize>(
         dpress: &b.dpress[..n],
         chrlngth: &b.chrlngth[..n],
     };
-    let mut first: Option<(usize, LawError)> = None;
-    let mut failed = 0usize;
-    let mut ratio = f64::INFINITY;
-    for i in 0..n {
-        match point::<N>(law, dtime, &mut v, i) {
-            Ok(r) => ratio = ratio.min(r),
-            Err(e) => {
-                failed += 1;
-                fail_point::<N>(&mut v, i, &e);
-                if first.is_none() {
-                    first = Some((i, e));
-                }
-            }
-        }
+    let mut tally = Tally {
+        first: None,
+        failed: 0,
+        ratio: f64::INFINITY,
+    };
+    let mut i = 0;
+    // Elastic stick: whole chunks through the SIMD-friendly kernel; a chunk it declines (a
+    // point not on the common path, LM ≠ 0) and the tail go point by point.
+    if let Some(kernel) = ElasticStickKernel::new(law) {
+        i = chunks_dispatch::<N>(&kernel, law, dtime, &mut v, &mut tally);
     }
+    for j in i..n {
+        tally.one::<N>(law, dtime, &mut v, j);
+    }
+    let Tally {
+        first,
+        failed,
+        mut ratio,
+    } = tally;
     if failed > 0 {
         ratio = ratio.min(CUTBACK_RATIO);
     }
@@ -319,6 +328,171 @@ fn run<const N: usize>(
         failed,
         error,
     })
+}
+
+/// [`chunks`] compiled for AVX2 when the processor has it (same IEEE operations, so the same
+/// bits; wider registers and three-operand instructions), else for the baseline.
+fn chunks_dispatch<const N: usize>(
+    kernel: &ElasticStickKernel,
+    law: &Coulomb,
+    dtime: f64,
+    v: &mut Views<'_>,
+    tally: &mut Tally,
+) -> usize {
+    #[cfg(target_arch = "x86_64")]
+    if !baseline_only() && std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the processor supports AVX2 (checked just above).
+        return unsafe { chunks_avx2::<N>(kernel, law, dtime, v, tally) };
+    }
+    chunks::<N>(kernel, law, dtime, v, tally)
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Unit tests: run the baseline build of [`chunks`] even on an AVX2 processor.
+    static BASELINE_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+#[inline(always)]
+fn baseline_only() -> bool {
+    #[cfg(test)]
+    {
+        BASELINE_ONLY.with(std::cell::Cell::get)
+    }
+    #[cfg(not(test))]
+    {
+        false
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn chunks_avx2<const N: usize>(
+    kernel: &ElasticStickKernel,
+    law: &Coulomb,
+    dtime: f64,
+    v: &mut Views<'_>,
+    tally: &mut Tally,
+) -> usize {
+    chunks::<N>(kernel, law, dtime, v, tally)
+}
+
+/// The whole chunks of the batch through the kernel; returns where the tail starts.
+#[inline(always)]
+fn chunks<const N: usize>(
+    kernel: &ElasticStickKernel,
+    law: &Coulomb,
+    dtime: f64,
+    v: &mut Views<'_>,
+    tally: &mut Tally,
+) -> usize {
+    let n = v.lm.len();
+    let has_taulm = v.taulm.is_some();
+    let mut i = 0;
+    while i + LANES <= n {
+        if !chunk::<N>(kernel, dtime, v, i, has_taulm) {
+            for j in i..i + LANES {
+                tally.one::<N>(law, dtime, v, j);
+            }
+        }
+        i += LANES;
+    }
+    i
+}
+
+/// Points per chunk of the elastic-stick kernel.
+const LANES: usize = 4;
+
+/// The running result of a batch: first failure, failure count, smallest step ratio.
+struct Tally {
+    first: Option<(usize, LawError)>,
+    failed: usize,
+    ratio: f64,
+}
+
+impl Tally {
+    /// Point `i` through the per-point path.
+    #[inline(always)]
+    fn one<const N: usize>(&mut self, law: &Coulomb, dtime: f64, v: &mut Views<'_>, i: usize) {
+        match point::<N>(law, dtime, v, i) {
+            Ok(r) => self.ratio = self.ratio.min(r),
+            Err(e) => {
+                self.failed += 1;
+                fail_point::<N>(v, i, &e);
+                if self.first.is_none() {
+                    self.first = Some((i, e));
+                }
+            }
+        }
+    }
+}
+
+/// Points `i .. i + LANES` through the elastic-stick kernel. Returns false, having written
+/// nothing, when a point enters with `LM` other than 0 (or 1 with `TAULM` given, which elastic
+/// stick treats alike) or the kernel declines the chunk.
+#[inline(always)]
+fn chunk<const N: usize>(
+    kernel: &ElasticStickKernel,
+    dtime: f64,
+    v: &mut Views<'_>,
+    i: usize,
+    has_taulm: bool,
+) -> bool {
+    let lm: &[c_int; LANES] = match v.lm[i..].first_chunk() {
+        Some(lm) => lm,
+        None => return false,
+    };
+    let mut motion = true;
+    for x in lm {
+        motion &= *x == 0 || (*x == 1 && has_taulm);
+    }
+    if !motion {
+        return false;
+    }
+    // Rows are `npoints` long and i + LANES ≤ npoints: the fallback is never taken.
+    let load = |row: &[f64]| -> [f64; LANES] {
+        row.get(i..)
+            .and_then(<[f64]>::first_chunk)
+            .copied()
+            .unwrap_or([f64::NAN; LANES])
+    };
+    let input = ChunkInput::<N, LANES> {
+        tau: std::array::from_fn(|a| load(v.tau[a])),
+        dgam: std::array::from_fn(|a| load(v.dgam[a])),
+        pressure: load(v.press),
+        dpressure: load(v.dpress),
+        characteristic_length: load(v.chrlngth),
+        accumulated_slip: load(v.statev[0]),
+        slip_rate: load(v.statev[1]),
+    };
+    let Some(out) = kernel.update(&input, dtime) else {
+        return false;
+    };
+    let store = |row: &mut [f64], x: &[f64; LANES]| row[i..i + LANES].copy_from_slice(x);
+    v.lm[i..i + LANES].fill(0);
+    for a in 0..N {
+        store(v.tau[a], &out.tau[a]);
+        store(v.ddtddp[a], &out.ddtddp[a]);
+        for c in 0..N {
+            // DDTDDG(a,c) in Fortran order per point.
+            store(v.ddtddg[a + c * N], &out.ddtddg[a][c]);
+        }
+    }
+    if let Some(d) = &mut v.dslip {
+        for (row, x) in d.iter_mut().zip(&out.dslip) {
+            store(row, x);
+        }
+    }
+    if let Some(s) = &mut v.sed {
+        store(s, &out.sed);
+    }
+    if let Some(s) = &mut v.sfd {
+        store(s, &out.sfd);
+    }
+    for (r, x) in out.statev.iter().enumerate() {
+        store(v.statev[r], x);
+    }
+    true
 }
 
 /// One point: reads its inputs, updates it and writes its outputs, as `fric_` does (everything
@@ -640,5 +814,77 @@ unsafe fn optional_mut<'a>(p: *mut f64, len: usize) -> Option<&'a mut [f64]> {
     } else {
         // SAFETY: as documented.
         Some(unsafe { std::slice::from_raw_parts_mut(p, len) })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The baseline (SSE2) and AVX2 builds of the chunk loop give the same bits; the
+    /// integration tests compare the build the processor selects with `fric_` per point.
+    #[test]
+    fn baseline_and_avx2_chunks_agree() {
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        for nfdir in [1usize, 2] {
+            let n = 103;
+            let random = |k: usize, s: f64, next: &mut dyn FnMut() -> f64| -> Vec<f64> {
+                (0..k * n).map(|_| s * next()).collect()
+            };
+            let dgam = random(nfdir, 4e-3, &mut next);
+            let press = random(1, 60.0, &mut next);
+            let dpress = random(1, 5.0, &mut next);
+            let chrlngth: Vec<f64> = random(1, 1.0, &mut next).iter().map(|x| 1.5 + x).collect();
+            let tau0 = random(nfdir, 5.0, &mut next);
+            let statev0: Vec<f64> = random(3, 1.0, &mut next).iter().map(|x| x.abs()).collect();
+            let props = [1.0, 0.3, 0.0, 12.0, 0.0, 0.002, 0.0];
+            let mut results = Vec::new();
+            for baseline in [true, false] {
+                BASELINE_ONLY.with(|b| b.set(baseline));
+                let mut lm = vec![0; n];
+                let mut tau = tau0.clone();
+                let mut statev = statev0.clone();
+                let mut ddtddg = vec![0.0; nfdir * nfdir * n];
+                let mut ddtddp = vec![0.0; nfdir * n];
+                let mut dslip = vec![0.0; nfdir * n];
+                let mut sed = vec![0.0; n];
+                let mut sfd = vec![0.0; n];
+                let mut pnewdt = 1.0;
+                let mut b = FricBatch {
+                    npoints: n,
+                    ld: n,
+                    nfdir,
+                    nstatv: 3,
+                    lm: &mut lm,
+                    tau: &mut tau,
+                    ddtddg: &mut ddtddg,
+                    ddtddp: &mut ddtddp,
+                    dslip: Some(&mut dslip),
+                    sed: Some(&mut sed),
+                    sfd: Some(&mut sfd),
+                    statev: &mut statev,
+                    dgam: &dgam,
+                    taulm: None,
+                    press: &press,
+                    dpress: &dpress,
+                    chrlngth: &chrlngth,
+                };
+                assert!(fric_batch(&props, 0.1, &mut b, &mut pnewdt).is_ok());
+                let all: Vec<u64> = [tau, statev, ddtddg, ddtddp, dslip, sed, sfd]
+                    .iter()
+                    .flatten()
+                    .map(|x| x.to_bits())
+                    .collect();
+                results.push(all);
+            }
+            BASELINE_ONLY.with(|b| b.set(false));
+            assert_eq!(results[0], results[1], "NFDIR {nfdir}");
+        }
     }
 }

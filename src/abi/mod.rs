@@ -20,6 +20,7 @@ pub mod host;
 pub mod native;
 pub mod uinter;
 pub mod uinter_host;
+pub mod vfric;
 
 pub use batch::{FricBatch, fric_batch, ifl_fric_batch};
 pub use forced_sliding::ifl_forced_sliding;
@@ -31,6 +32,7 @@ pub use native::{
     ifl_last_error_copy, ifl_version,
 };
 pub use uinter::uinter_;
+pub use vfric::vfric_;
 
 /// What went wrong in an entry point, for callers that return a status.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

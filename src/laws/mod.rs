@@ -3,7 +3,9 @@
 pub mod adhesive;
 pub mod adhesive_interface;
 pub mod coulomb;
+pub mod coulomb_batch;
 pub mod coulomb_extended;
+pub mod coulomb_kinematic;
 pub mod friction_coefficient;
 pub mod friction_table;
 pub mod gap_conductance;

@@ -1,0 +1,307 @@
+//! Coulomb friction with elastic stick (seed 000, section 5.2.3) for `W` independent points at
+//! once: the kernel of the batch entry point `ifl_fric_batch`.
+//!
+//! Same formulas, in the same order, as [`Coulomb::update`] with [`StickMode::Elastic`]
+//! (`src/laws/coulomb.rs`), written lane by lane without branches: both the stick and the slip
+//! answer are computed and one is selected per lane, so that the compiler can run the lanes in
+//! SIMD registers. Every operation is an IEEE add, subtract, multiply, divide or square root
+//! (correctly rounded, and Rust never contracts `a*b + c` into a fused multiply-add), so each
+//! lane's result is bit for bit the scalar one.
+//!
+//! The kernel only answers when every lane takes the common path of the scalar law: finite
+//! inputs and state, a usable γ_crit, norms whose squares are normal numbers (or exact zeros),
+//! finite outputs. Otherwise it answers `None` and the caller runs the chunk through
+//! [`Coulomb::update`] point by point, which gives the rare cases (the scaled norm of extreme
+//! vectors, the named error messages) exactly as before.
+
+use super::coulomb::{Coulomb, CriticalSlip, StickMode};
+
+/// Inputs of `W` points (`[..][l]` is lane `l`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ChunkInput<const N: usize, const W: usize> {
+    /// Frictional stress at the start of the increment, component `a` in `tau[a]`.
+    pub tau: [[f64; W]; N],
+    /// Relative tangential motion increment Δγ.
+    pub dgam: [[f64; W]; N],
+    /// Contact pressure at the end of the increment.
+    pub pressure: [f64; W],
+    /// Pressure increment.
+    pub dpressure: [f64; W],
+    /// Characteristic contact length (`CHRLNGTH`).
+    pub characteristic_length: [f64; W],
+    /// `STATEV(1)`: accumulated slip at the start.
+    pub accumulated_slip: [f64; W],
+    /// `STATEV(2)`: slip rate of the previous increment (only checked for finiteness).
+    pub slip_rate: [f64; W],
+}
+
+/// Outputs of `W` points, as [`super::coulomb::Traction`] and the end state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ChunkOutput<const N: usize, const W: usize> {
+    /// Frictional stress at the end of the increment.
+    pub tau: [[f64; W]; N],
+    /// `ddtddg[a][b]` = ∂τ_a/∂Δγ_b.
+    pub ddtddg: [[[f64; W]; N]; N],
+    /// ∂τ_a/∂p.
+    pub ddtddp: [[f64; W]; N],
+    /// Inelastic slip increment Δγ^sl.
+    pub dslip: [[f64; W]; N],
+    /// Elastic energy density.
+    pub sed: [f64; W],
+    /// Frictional dissipation of the increment.
+    pub sfd: [f64; W],
+    /// `STATEV(1..3)` at the end: accumulated slip, slip rate, status (0 stick, 1 slip).
+    pub statev: [[f64; W]; 3],
+}
+
+/// The parameters of a Coulomb law with elastic stick, read once for a whole batch.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ElasticStickKernel {
+    mu: f64,
+    /// `f64::INFINITY` without a shear limit, as in [`Coulomb`].
+    tau_max: f64,
+    /// γ_crit when it is absolute (`Some`), else the tolerance times `CHRLNGTH`.
+    absolute: Option<f64>,
+    tolerance: f64,
+}
+
+impl ElasticStickKernel {
+    /// The kernel of `law`, or `None` when its stick is not elastic (exact stick and rough
+    /// friction stay on the per-point path).
+    #[must_use]
+    pub fn new(law: &Coulomb) -> Option<Self> {
+        if law.stick() != StickMode::Elastic {
+            return None;
+        }
+        let (absolute, tolerance) = match law.critical_slip() {
+            CriticalSlip::Absolute(g) => (Some(g), 0.0),
+            CriticalSlip::Tolerance(t) => (None, t),
+        };
+        Some(ElasticStickKernel {
+            mu: law.mu(),
+            tau_max: law.shear_limit().unwrap_or(f64::INFINITY),
+            absolute,
+            tolerance,
+        })
+    }
+
+    /// τ_crit = min(μp, τ_max) and ∂τ_crit/∂p, 0 for p < 0, lane by lane:
+    /// [`Coulomb::critical_stress`] with selects instead of branches (the same product μp; the
+    /// same comparisons, as `0 ≤ p` for `!(p < 0)`, equal for every p but NaN, which the probes
+    /// send to the scalar path anyway).
+    #[inline(always)]
+    fn critical_stress<const W: usize>(&self, p: [f64; W]) -> ([f64; W], [f64; W]) {
+        let mu_p = p.map(|p| self.mu * p);
+        let capped = Le([self.tau_max; W], mu_p);
+        let closed = Le([0.0; W], p);
+        let tau_crit = select(closed, select(capped, [self.tau_max; W], mu_p), [0.0; W]);
+        let slope = select(closed, select(capped, [0.0; W], [self.mu; W]), [0.0; W]);
+        (tau_crit, slope)
+    }
+
+    /// One increment of `W` points with time increment `dtime` (backward Euler, elastic stick),
+    /// or `None` when any lane leaves the common path (see the module documentation); then
+    /// nothing has been written anywhere and the caller uses [`Coulomb::update`] per point.
+    ///
+    /// Every line is one operation on all `W` lanes (`[f64; W]` arrays), the shape the
+    /// compiler's SLP vectoriser turns into SIMD instructions.
+    #[inline(always)]
+    #[must_use]
+    pub fn update<const N: usize, const W: usize>(
+        &self,
+        inc: &ChunkInput<N, W>,
+        dtime: f64,
+    ) -> Option<ChunkOutput<N, W>> {
+        let p = inc.pressure;
+        let dp = inc.dpressure;
+        // x·0 is ±0 for finite x and NaN otherwise: the sum over every input of every lane is 0
+        // exactly when the scalar path's probes (check_increment, from_statev) all pass.
+        let mut probe = map2(p, dp, |p, dp| p * 0.0 + dp * 0.0);
+        probe = map3(probe, inc.accumulated_slip, inc.slip_rate, |q, s, r| {
+            q + (s * 0.0 + r * 0.0)
+        });
+        for a in 0..N {
+            probe = map3(probe, inc.tau[a], inc.dgam[a], |q, t, g| {
+                q + (t * 0.0 + g * 0.0)
+            });
+        }
+        // γ_crit: absolute, or tolerance × CHRLNGTH for 0 < CHRLNGTH < ∞ (else the scalar
+        // path names the bad CHRLNGTH).
+        let length = inc.characteristic_length;
+        let gamma_crit: [f64; W] = match self.absolute {
+            Some(g) => [g; W],
+            None => {
+                let t = self.tolerance;
+                probe = map2(probe, length, |q, c| {
+                    q + if c > 0.0 && c < f64::INFINITY {
+                        0.0
+                    } else {
+                        f64::NAN
+                    }
+                });
+                length.map(|c| t * c)
+            }
+        };
+        // Elastic slip at the start: γ̄^el = τ̄·(γ_crit/τ_crit(p − Δp)), 0 without friction.
+        let (tau_crit_start, _) = self.critical_stress(map2(p, dp, |p, dp| p - dp));
+        let start_factor = map2(gamma_crit, tau_crit_start, |g, t| g / t);
+        // Elastic predictor γ^pr = γ̄^el + Δγ.
+        let predictor: [[f64; W]; N] = std::array::from_fn(|a| {
+            let elastic = map3(inc.tau[a], start_factor, tau_crit_start, |t, f, c| {
+                if c > 0.0 { t * f } else { 0.0 }
+            });
+            map2(elastic, inc.dgam[a], |e, g| e + g)
+        });
+        let predictor_eq = norm_common(&predictor, &mut probe);
+        let (tau_crit, dtau_crit_dp) = self.critical_stress(p);
+        let stiffness = map2(tau_crit, gamma_crit, |t, g| t / g);
+        // Stick where γ_eq^pr ≤ γ_crit (the comparison is repeated in each select, a SIMD mask).
+        let stick = Le(predictor_eq, gamma_crit);
+
+        // Slip (Eq. 5.2.3-2): n = γ^pr/γ_eq^pr, Δγ_eq^sl = γ_eq^pr − γ_crit.
+        let n: [[f64; W]; N] =
+            std::array::from_fn(|a| map2(predictor[a], predictor_eq, |x, e| x / e));
+        let slip_eq = map2(predictor_eq, gamma_crit, |e, g| e - g);
+        let transverse = map2(tau_crit, predictor_eq, |t, e| t / e);
+        let stick_dp = map2(dtau_crit_dp, gamma_crit, |d, g| d / g);
+        let mut out = ChunkOutput {
+            tau: [[0.0; W]; N],
+            ddtddg: [[[0.0; W]; N]; N],
+            ddtddp: [[0.0; W]; N],
+            dslip: [[0.0; W]; N],
+            sed: [0.0; W],
+            sfd: [0.0; W],
+            statev: [[0.0; W]; 3],
+        };
+        for a in 0..N {
+            // Stick: τ = k_s γ^pr (Eq. 5.2.3-1); slip: τ = n τ_crit (Eq. 5.2.3-2).
+            out.tau[a] = select(
+                stick,
+                map2(predictor[a], stiffness, |x, k| x * k),
+                map2(n[a], tau_crit, |x, t| x * t),
+            );
+            // Stick: γ^pr (∂τ_crit/∂p)/γ_crit (Eq. 5.2.3-1); slip: n ∂τ_crit/∂p (Eq. 5.2.3-3).
+            out.ddtddp[a] = select(
+                stick,
+                map2(predictor[a], stick_dp, |x, d| x * d),
+                map2(n[a], dtau_crit_dp, |x, d| x * d),
+            );
+            out.dslip[a] = select(stick, [0.0; W], map2(n[a], slip_eq, |x, s| x * s));
+            for b in 0..N {
+                let delta = if a == b { 1.0 } else { 0.0 };
+                // Stick: k_s δ_ab (Eq. 5.2.3-1). Slip: (δ_ab − n_a n_b) τ_crit/γ_eq^pr
+                // (Eq. 5.2.3-3), exactly 0 in 2-D (N = 1).
+                let slip_tangent = if N == 1 {
+                    [0.0; W]
+                } else {
+                    map3(transverse, n[a], n[b], |t, x, y| t * (delta - x * y))
+                };
+                let stick_tangent = if a == b { stiffness } else { [0.0; W] };
+                out.ddtddg[a][b] = select(stick, stick_tangent, slip_tangent);
+            }
+        }
+        // Stick: k_s|γ^pr|²/2; slip: |τ|²/(2k_s) with |τ| = τ_crit. Dissipation τ_crit Δγ_eq^sl.
+        out.sed = select(
+            stick,
+            map2(stiffness, predictor_eq, |k, e| 0.5 * k * e * e),
+            map2(tau_crit, gamma_crit, |t, g| 0.5 * t * g),
+        );
+        out.sfd = select(stick, [0.0; W], map2(tau_crit, slip_eq, |t, s| t * s));
+
+        // The scalar path's output probe (check_traction).
+        let mut probe_out = map2(out.sed, out.sfd, |e, f| e * 0.0 + f * 0.0);
+        for a in 0..N {
+            probe_out = map3(probe_out, out.tau[a], out.ddtddp[a], |q, t, d| {
+                q + (t * 0.0 + d * 0.0)
+            });
+            probe_out = map2(probe_out, out.dslip[a], |q, d| q + d * 0.0);
+            for b in 0..N {
+                probe_out = map2(probe_out, out.ddtddg[a][b], |q, d| q + d * 0.0);
+            }
+        }
+        // End state: accumulated slip and slip rate, both saturating at f64::MAX.
+        let slip = norm_common(&out.dslip, &mut probe);
+        out.statev[0] = map2(inc.accumulated_slip, slip, |s, d| saturate(s + d));
+        out.statev[1] = slip.map(|d| {
+            if dtime > 0.0 {
+                saturate(d / dtime)
+            } else {
+                0.0
+            }
+        });
+        out.statev[2] = slip.map(|d| if d > 0.0 { 1.0 } else { 0.0 });
+
+        let mut total = dtime * 0.0;
+        for l in 0..W {
+            total += probe[l] + probe_out[l];
+        }
+        (total == 0.0).then_some(out)
+    }
+}
+
+/// Lane by lane `f(a, b)`.
+#[inline(always)]
+fn map2<const W: usize>(a: [f64; W], b: [f64; W], f: impl Fn(f64, f64) -> f64) -> [f64; W] {
+    std::array::from_fn(|l| f(a[l], b[l]))
+}
+
+/// Lane by lane `f(a, b, c)`.
+#[inline(always)]
+fn map3<const W: usize>(
+    a: [f64; W],
+    b: [f64; W],
+    c: [f64; W],
+    f: impl Fn(f64, f64, f64) -> f64,
+) -> [f64; W] {
+    std::array::from_fn(|l| f(a[l], b[l], c[l]))
+}
+
+/// The lanes where `x ≤ y`.
+#[derive(Clone, Copy)]
+struct Le<const W: usize>([f64; W], [f64; W]);
+
+/// Lane by lane `if x ≤ y { a } else { b }`.
+#[inline(always)]
+fn select<const W: usize>(m: Le<W>, a: [f64; W], b: [f64; W]) -> [f64; W] {
+    std::array::from_fn(|l| if m.0[l] <= m.1[l] { a[l] } else { b[l] })
+}
+
+/// The Euclidean norm of each lane when the scalar `norm` (`small_vec.rs`) takes its direct
+/// path: |v₁| for N = 1; for N = 2 √(v·v) when v·v is a normal number, which √ of the same sum
+/// reproduces, or 0 for the zero vector (√0 = 0). Otherwise (v·v overflowed, underflowed or is
+/// NaN) the scalar path scales the vector: such a lane adds NaN to `probe`.
+#[inline(always)]
+fn norm_common<const N: usize, const W: usize>(
+    v: &[[f64; W]; N],
+    probe: &mut [f64; W],
+) -> [f64; W] {
+    if N == 1 {
+        return v[0].map(f64::abs);
+    }
+    // The scalar dot product starts from 0.0; 0.0 + x = x bit for bit here since x = v₀² is
+    // never −0.
+    let mut s = v[0].map(|x| x * x);
+    // Σ|v_a| is 0 exactly for the zero vector (a sum of non-negative numbers rounds to 0 only
+    // when they all are 0).
+    let mut length1 = v[0].map(f64::abs);
+    for row in &v[1..] {
+        s = map2(s, *row, |s, x| s + x * x);
+        length1 = map2(length1, *row, |m, x| m + x.abs());
+    }
+    // NaN unless MIN_POSITIVE ≤ v·v < ∞ or v = 0; written as selects (SIMD masks).
+    // s·0 is NaN for s = ∞ or NaN.
+    let in_range = select(
+        Le([f64::MIN_POSITIVE; W], s),
+        s.map(|s| s * 0.0),
+        [f64::NAN; W],
+    );
+    let flag = select(Le(length1, [0.0; W]), [0.0; W], in_range);
+    *probe = map2(*probe, flag, |q, f| q + f);
+    s.map(f64::sqrt)
+}
+
+/// `x` capped at f64::MAX, as the scalar path stores the state.
+#[inline(always)]
+fn saturate(x: f64) -> f64 {
+    if x > f64::MAX { f64::MAX } else { x }
+}

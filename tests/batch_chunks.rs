@@ -1,0 +1,398 @@
+//! The chunked elastic-stick kernel of the batch entry (`src/laws/coulomb_batch.rs`), property
+//! tested:
+//! - through `ifl_fric_batch` against `fric_` called once per point, bit for bit, with
+//!   `npoints` rarely a multiple of the chunk, points of every kind mixed inside each chunk
+//!   (stick, slip, slip capped by τ_max, negative and zero pressure, no motion), and sometimes
+//!   one unusable input in one point: that point gets `fric_`'s message and failure outputs,
+//!   every other point its normal result;
+//! - directly against `Coulomb::update`, lane by lane: on ordinary inputs the kernel answers
+//!   and agrees bit for bit; on inputs spread over the whole f64 range it either declines the
+//!   chunk or agrees, and it always declines when the scalar law refuses a lane.
+
+use interfacial::abi::IflStatus;
+use interfacial::abi::host::FricCall;
+use interfacial::abi::ifl_fric_batch;
+use interfacial::laws::coulomb::{Contact, Coulomb, CoulombState, Increment};
+use interfacial::laws::coulomb_batch::{ChunkInput, ElasticStickKernel};
+use proptest::prelude::*;
+
+/// xorshift64*: the points of a case from its seed.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn range(&mut self, a: f64, b: f64) -> f64 {
+        a + (b - a) * self.next()
+    }
+    fn pick(&mut self, n: usize) -> usize {
+        ((self.next() * n as f64) as usize).min(n - 1)
+    }
+}
+
+/// Law-1 PROPS with elastic stick: μ = 0.3; γ_crit absolute (10⁻³) or 1 % of CHRLNGTH; with or
+/// without τ_max = 20.
+fn props(variant: usize) -> Vec<f64> {
+    let tau_max = if variant & 1 == 1 { 20.0 } else { 0.0 };
+    let (gc, tol) = if variant & 2 == 0 {
+        (1e-3, 0.0)
+    } else {
+        (0.0, 0.01)
+    };
+    vec![1.0, 0.3, 0.0, tau_max, gc, tol, 0.0]
+}
+
+const UNSET: f64 = 12345.678;
+const NSTATV: usize = 4;
+
+/// One batch in the structure-of-arrays layout.
+#[derive(Clone, Debug)]
+struct Batch {
+    n: usize,
+    ld: usize,
+    nfdir: usize,
+    lm: Vec<i32>,
+    tau: Vec<f64>,
+    ddtddg: Vec<f64>,
+    ddtddp: Vec<f64>,
+    dslip: Vec<f64>,
+    sed: Vec<f64>,
+    sfd: Vec<f64>,
+    statev: Vec<f64>,
+    dgam: Vec<f64>,
+    taulm: Vec<f64>,
+    press: Vec<f64>,
+    dpress: Vec<f64>,
+    chrlngth: Vec<f64>,
+}
+
+/// Points of every kind, drawn independently, so that chunks mix them.
+fn mixed_points(seed: u64, n: usize, ld: usize, nfdir: usize) -> Batch {
+    let mut rng = Rng(seed | 1);
+    let mut b = Batch {
+        n,
+        ld,
+        nfdir,
+        lm: vec![0; ld],
+        tau: vec![UNSET; ld * nfdir],
+        ddtddg: vec![UNSET; ld * nfdir * nfdir],
+        ddtddp: vec![UNSET; ld * nfdir],
+        dslip: vec![UNSET; ld * nfdir],
+        sed: vec![UNSET; ld],
+        sfd: vec![UNSET; ld],
+        statev: vec![UNSET; ld * NSTATV],
+        dgam: vec![UNSET; ld * nfdir],
+        taulm: vec![0.0; ld * nfdir],
+        press: vec![UNSET; ld],
+        dpress: vec![UNSET; ld],
+        chrlngth: vec![UNSET; ld],
+    };
+    for i in 0..n {
+        // 0 stick, 1 slip, 2 slip at high pressure (capped when τ_max is set), 3 negative
+        // pressure, 4 zero pressure, 5 no motion.
+        let kind = rng.pick(6);
+        let p = match kind {
+            2 => rng.range(100.0, 200.0),
+            3 => rng.range(-5.0, -1e-3),
+            4 => 0.0,
+            _ => rng.range(1.0, 60.0),
+        };
+        b.press[i] = p;
+        b.dpress[i] = if kind == 4 { 0.0 } else { rng.range(-5.0, 5.0) };
+        let length = rng.range(0.05, 0.2);
+        b.chrlngth[i] = length;
+        // γ_crit is 10⁻³ or 0.01·CHRLNGTH (5·10⁻⁴ … 2·10⁻³): scale the motion on 10⁻³.
+        let motion = match kind {
+            0 => 1e-4,
+            5 => 0.0,
+            _ => 1e-2,
+        };
+        for a in 0..nfdir {
+            b.tau[i + a * ld] = rng.range(-0.5, 0.5) * 0.3 * p.max(0.0);
+            b.dgam[i + a * ld] = rng.range(-1.0, 1.0) * motion;
+        }
+        b.statev[i] = rng.range(0.0, 1.0);
+        b.statev[i + ld] = rng.range(0.0, 1.0);
+        b.statev[i + 2 * ld] = rng.pick(2) as f64;
+        b.statev[i + 3 * ld] = -7.0;
+    }
+    b
+}
+
+/// Every point through `fric_`; returns the outputs, the smallest PNEWDT and, per point, the
+/// message `fric_` reported (empty when it succeeded).
+fn per_point(props: &[f64], dtime: f64, input: &Batch) -> (Batch, f64, Vec<String>) {
+    let mut out = input.clone();
+    let (ld, nf) = (input.ld, input.nfdir);
+    let mut pnewdt = 1e36f64;
+    let mut messages = Vec::new();
+    for i in 0..input.n {
+        let mut c = FricCall::new(nf as i32, props);
+        c.nstatv = NSTATV as i32;
+        c.statev = (0..NSTATV).map(|r| input.statev[i + r * ld]).collect();
+        c.lm = input.lm[i];
+        c.press = input.press[i];
+        c.dpress = input.dpress[i];
+        c.dtime = dtime;
+        c.chrlngth = input.chrlngth[i];
+        for a in 0..nf {
+            c.tau[a] = input.tau[i + a * ld];
+            c.dgam[a] = input.dgam[i + a * ld];
+            c.taulm[a] = input.taulm[i + a * ld];
+            c.ddtddp[a] = UNSET;
+            c.dslip[a] = UNSET;
+            for b in 0..nf {
+                c.ddtddg[a + b * nf] = UNSET;
+            }
+        }
+        c.sed = UNSET;
+        c.sfd = UNSET;
+        c.pnewdt = 1e36;
+        interfacial::abi::ifl_clear_error();
+        c.call();
+        messages.push(FricCall::last_error());
+        pnewdt = pnewdt.min(c.pnewdt);
+        out.lm[i] = c.lm;
+        out.sed[i] = c.sed;
+        out.sfd[i] = c.sfd;
+        for a in 0..nf {
+            out.tau[i + a * ld] = c.tau[a];
+            out.ddtddp[i + a * ld] = c.ddtddp[a];
+            out.dslip[i + a * ld] = c.dslip[a];
+            for b in 0..nf {
+                out.ddtddg[i + (a + b * nf) * ld] = c.ddtddg[a + b * nf];
+            }
+        }
+        for r in 0..NSTATV {
+            out.statev[i + r * ld] = c.statev[r];
+        }
+    }
+    (out, pnewdt, messages)
+}
+
+fn via_c(props: &[f64], dtime: f64, input: &Batch) -> (Batch, f64, IflStatus) {
+    let mut p = input.clone();
+    let mut pnewdt = 1e36;
+    // SAFETY: every array holds ld × its component count, as the contract requires.
+    let st = unsafe {
+        ifl_fric_batch(
+            p.n,
+            p.ld,
+            p.nfdir as i32,
+            props.as_ptr(),
+            props.len() as i32,
+            NSTATV as i32,
+            dtime,
+            p.lm.as_mut_ptr(),
+            p.tau.as_mut_ptr(),
+            p.ddtddg.as_mut_ptr(),
+            p.ddtddp.as_mut_ptr(),
+            p.dslip.as_mut_ptr(),
+            p.sed.as_mut_ptr(),
+            p.sfd.as_mut_ptr(),
+            p.statev.as_mut_ptr(),
+            input.dgam.as_ptr(),
+            input.taulm.as_ptr(),
+            input.press.as_ptr(),
+            input.dpress.as_ptr(),
+            input.chrlngth.as_ptr(),
+            &mut pnewdt,
+        )
+    };
+    (p, pnewdt, st)
+}
+
+fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
+
+fn identical(a: &Batch, b: &Batch) -> Result<(), TestCaseError> {
+    prop_assert_eq!(&a.lm, &b.lm, "LM");
+    for (name, x, y) in [
+        ("TAU", &a.tau, &b.tau),
+        ("DDTDDG", &a.ddtddg, &b.ddtddg),
+        ("DDTDDP", &a.ddtddp, &b.ddtddp),
+        ("DSLIP", &a.dslip, &b.dslip),
+        ("SED", &a.sed, &b.sed),
+        ("SFD", &a.sfd, &b.sfd),
+        ("STATEV", &a.statev, &b.statev),
+    ] {
+        prop_assert_eq!(bits(x), bits(y), "{}", name);
+    }
+    Ok(())
+}
+
+/// Spoils one input of point `i`: NaN or ∞ in PRESS, DPRESS, DGAM, TAU, STATEV(1), or a zero
+/// CHRLNGTH (refused only when γ_crit is a tolerance).
+fn spoil(b: &mut Batch, i: usize, what: usize, a: usize) {
+    let ld = b.ld;
+    let a = a % b.nfdir;
+    match what {
+        0 => b.press[i] = f64::NAN,
+        1 => b.dpress[i] = f64::INFINITY,
+        2 => b.dgam[i + a * ld] = f64::NAN,
+        3 => b.tau[i + a * ld] = f64::NEG_INFINITY,
+        4 => b.statev[i] = f64::NAN,
+        _ => b.chrlngth[i] = 0.0,
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn chunks_match_fric_per_point(
+        seed in any::<u64>(),
+        n in 1usize..40,
+        pad in 0usize..6,
+        nfdir in 1usize..=2,
+        variant in 0usize..4,
+        dtime in prop_oneof![Just(0.0), 1e-3..2.0f64],
+        bad in proptest::option::of((0usize..40, 0usize..6, 0usize..2)),
+    ) {
+        let props = props(variant);
+        let mut input = mixed_points(seed, n, n + pad, nfdir);
+        let bad = bad.map(|(i, what, a)| (i % n, what, a));
+        if let Some((i, what, a)) = bad {
+            spoil(&mut input, i, what, a);
+        }
+        let (expected, pnewdt, messages) = per_point(&props, dtime, &input);
+        let failing: Vec<usize> = (0..n).filter(|i| !messages[*i].is_empty()).collect();
+        let (got, got_pnewdt, status) = via_c(&props, dtime, &input);
+        identical(&expected, &got)?;
+        prop_assert_eq!(got_pnewdt, pnewdt);
+        // The padding between npoints and ld is never written.
+        prop_assert!(got.sed[n..].iter().all(|x| *x == UNSET));
+        match (bad, failing.as_slice()) {
+            (None, []) => prop_assert_eq!(status, IflStatus::Ok),
+            // A zero CHRLNGTH is fine with an absolute γ_crit.
+            (Some((_, 5, _)), []) if variant & 2 == 0 => prop_assert_eq!(status, IflStatus::Ok),
+            (Some((i, _, _)), [f]) => {
+                prop_assert_eq!(*f, i);
+                prop_assert_eq!(status, IflStatus::BadInput);
+                prop_assert_eq!(pnewdt, 0.25);
+                // fric_'s cause, reported for the batch point.
+                let msg = FricCall::last_error();
+                let place = format!("ifl_fric_batch: interaction '' (batch point {i})");
+                prop_assert!(msg.contains(&place), "{}", msg);
+                let cause = messages[i].split_once("): ").map(|(_, c)| c).unwrap_or_default();
+                prop_assert!(!cause.is_empty() && msg.ends_with(cause), "{} / {}", msg, cause);
+            }
+            (b, f) => prop_assert!(false, "unexpected failures {:?} for {:?}", f, b),
+        }
+    }
+}
+
+/// A value spread over the whole f64 range (both signs, subnormals, near f64::MAX) or, half
+/// the time, an ordinary one.
+fn wide(rng: &mut Rng) -> f64 {
+    let sign = if rng.next() < 0.5 { -1.0 } else { 1.0 };
+    match rng.pick(4) {
+        0 => sign * 2f64.powf(rng.range(-1074.0, 1023.9)),
+        1 => 0.0,
+        _ => sign * rng.range(0.0, 2.0),
+    }
+}
+
+const W: usize = 4;
+
+/// Lane `l` through the scalar law.
+fn scalar(
+    law: &Coulomb,
+    inc: &ChunkInput<2, W>,
+    dtime: f64,
+    l: usize,
+) -> Option<(Contact<2>, CoulombState)> {
+    let i = Increment::<2> {
+        tau: [inc.tau[0][l], inc.tau[1][l]],
+        dgam: [inc.dgam[0][l], inc.dgam[1][l]],
+        pressure: inc.pressure[l],
+        dpressure: inc.dpressure[l],
+        dtime,
+        characteristic_length: inc.characteristic_length[l],
+        ..Increment::default()
+    };
+    let state =
+        CoulombState::from_statev(&[inc.accumulated_slip[l], inc.slip_rate[l], 0.0]).ok()?;
+    let up = law.update(&i, &state).ok()?;
+    Some((up.contact, up.state))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn kernel_declines_or_agrees_with_the_scalar_law(
+        seed in any::<u64>(),
+        extreme in any::<bool>(),
+        absolute in any::<bool>(),
+        tau_max in prop_oneof![Just(None), (1e-3..1e3f64).prop_map(Some)],
+    ) {
+        let mut rng = Rng(seed | 1);
+        let mut law = Coulomb::new(0.3).unwrap();
+        law = if absolute {
+            law.with_critical_slip_absolute(1e-3).unwrap()
+        } else {
+            law.with_slip_tolerance(0.01).unwrap()
+        };
+        if let Some(t) = tau_max {
+            law = law.with_shear_limit(t).unwrap();
+        }
+        let kernel = ElasticStickKernel::new(&law).unwrap();
+        // With `extreme`, one lane gets a common scale 2^k (k over the whole exponent range)
+        // on its stress and motion, so that its norms overflow or underflow together, and
+        // wide values elsewhere; the other lanes stay ordinary.
+        let odd = if extreme { rng.pick(W) } else { W };
+        let scale = 2f64.powi(rng.range(-1074.0, 1023.0) as i32);
+        let mut draw = |l: usize, ordinary: (f64, f64), scaled: bool| {
+            let x = rng.range(ordinary.0, ordinary.1);
+            match (l == odd, scaled) {
+                (false, _) => x,
+                (true, true) => x * scale,
+                (true, false) => if rng.next() < 0.5 { x } else { wide(&mut rng) },
+            }
+        };
+        let mut lanes_of = |ordinary: (f64, f64), scaled: bool| -> [f64; W] {
+            std::array::from_fn(|l| draw(l, ordinary, scaled))
+        };
+        let inc = ChunkInput::<2, W> {
+            tau: [lanes_of((-3.0, 3.0), true), lanes_of((-3.0, 3.0), true)],
+            dgam: [lanes_of((-5e-3, 5e-3), true), lanes_of((-5e-3, 5e-3), true)],
+            pressure: lanes_of((-2.0, 40.0), false),
+            dpressure: lanes_of((-5.0, 5.0), false),
+            characteristic_length: lanes_of((0.05, 0.2), false),
+            accumulated_slip: lanes_of((0.0, 1.0), false),
+            slip_rate: lanes_of((0.0, 1.0), false),
+        };
+        let dtime = 0.1;
+        let lanes: Vec<_> = (0..W).map(|l| scalar(&law, &inc, dtime, l)).collect();
+        let got = kernel.update(&inc, dtime);
+        if !extreme {
+            prop_assert!(got.is_some(), "ordinary inputs must stay on the kernel");
+        }
+        let Some(out) = got else { return Ok(()) };
+        for (l, lane) in lanes.iter().enumerate() {
+            let Some((Contact::Motion(t), state)) = lane else {
+                return Err(TestCaseError::fail(format!("lane {l}: the scalar law refused it, the kernel answered")));
+            };
+            for a in 0..2 {
+                prop_assert_eq!(out.tau[a][l].to_bits(), t.tau[a].to_bits());
+                prop_assert_eq!(out.ddtddp[a][l].to_bits(), t.ddtddp[a].to_bits());
+                prop_assert_eq!(out.dslip[a][l].to_bits(), t.dslip[a].to_bits());
+                for b in 0..2 {
+                    prop_assert_eq!(out.ddtddg[a][b][l].to_bits(), t.ddtddg[a][b].to_bits());
+                }
+            }
+            prop_assert_eq!(out.sed[l].to_bits(), t.sed.to_bits());
+            prop_assert_eq!(out.sfd[l].to_bits(), t.sfd.to_bits());
+            let mut sv = [0.0; 3];
+            state.write_statev(&mut sv);
+            for (row, x) in out.statev.iter().zip(sv) {
+                prop_assert_eq!(row[l].to_bits(), x.to_bits());
+            }
+        }
+    }
+}
