@@ -219,8 +219,9 @@ impl ElasticStickKernel {
                 probe_out = map2(probe_out, out.ddtddg[a][b], |q, d| q + d * 0.0);
             }
         }
-        // End state: accumulated slip and slip rate, both saturating at f64::MAX.
-        let slip = norm_common(&out.dslip, &mut probe);
+        // End state from the return map's slip Δγ_eq^sl (0 in stick), as the scalar path:
+        // accumulated slip and slip rate, both saturating at f64::MAX.
+        let slip = select(stick, [0.0; W], slip_eq);
         out.statev[0] = map2(inc.accumulated_slip, slip, |s, d| saturate(s + d));
         out.statev[1] = slip.map(|d| {
             if dtime > 0.0 {
