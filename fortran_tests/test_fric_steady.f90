@@ -18,70 +18,8 @@
 !
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 
-module steady_tally
-  use, intrinsic :: iso_c_binding, only: c_char, c_size_t
-  implicit none
-  integer, parameter :: dp = kind(1.0d0)
-  integer :: npass = 0, nfail = 0
-  character(len=96) :: scene = ''
-
-  interface
-    function ifl_last_error_copy(buf, len) bind(c, name='ifl_last_error_copy') result(n)
-      import :: c_char, c_size_t
-      character(kind=c_char), dimension(*), intent(out) :: buf
-      integer(c_size_t), value :: len
-      integer(c_size_t) :: n
-    end function ifl_last_error_copy
-    subroutine ifl_clear_error() bind(c, name='ifl_clear_error')
-    end subroutine ifl_clear_error
-  end interface
-
-contains
-
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (ok) then
-      npass = npass + 1
-    else
-      nfail = nfail + 1
-      if (nfail <= 40) write (*, '(a,a,a,a)') 'FAIL [', trim(scene), '] ', what
-    end if
-  end subroutine check
-
-  ! |got - want| <= rtol |want| + atol.
-  subroutine check_near(got, want, rtol, atol, what)
-    real(dp), intent(in) :: got, want, rtol, atol
-    character(len=*), intent(in) :: what
-    logical :: ok
-    ok = abs(got - want) <= rtol*abs(want) + atol
-    call check(ok, what)
-    if (.not. ok .and. nfail <= 40) write (*, '(a,1p,2e25.16)') '   got, expected:', got, want
-  end subroutine check_near
-
-  ! The calling thread's last message (ifl_last_error_copy), '' when there is none.
-  function last_error() result(msg)
-    character(len=2048) :: msg
-    character(kind=c_char) :: buf(2048)
-    integer(c_size_t) :: n
-    integer :: i
-    buf = ' '
-    n = ifl_last_error_copy(buf, int(size(buf), c_size_t))
-    msg = ' '
-    do i = 1, int(min(n, int(size(buf) - 1, c_size_t)))
-      msg(i:i) = buf(i)
-    end do
-  end function last_error
-
-  subroutine check_contains(msg, needle)
-    character(len=*), intent(in) :: msg, needle
-    call check(index(msg, needle) > 0, 'message contains "'//needle//'"')
-    if (index(msg, needle) == 0 .and. nfail <= 40) write (*, '(a,a)') '   message: ', trim(msg)
-  end subroutine check_contains
-end module steady_tally
-
 program test_fric_steady
-  use steady_tally
+  use harness_tally
   implicit none
   real(dp), parameter :: mu = 0.4_dp, mu_k = 0.2_dp, dc = 3.0_dp, p = 50.0_dp, ff = 0.01_dp
   real(dp), parameter :: omega = 20.0_dp, radius = 0.5_dp, dt = 0.1_dp
