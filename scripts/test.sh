@@ -11,6 +11,9 @@ echo "== Rust tests"
 cargo test --locked
 echo "== Rust tests of the CalculiX variant (gapcon_ with AREA)"
 cargo test --locked --features calculix --test gapcon_abi --test header
+echo "== Rust tests of the single-precision Explicit build (vfric_ with REAL*4, docs/vfric.md)"
+cargo clippy --locked --all-targets --features explicit-single -- -D warnings
+cargo test --locked --features explicit-single --test vfric
 echo "== C and Fortran harnesses"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j2
