@@ -136,16 +136,37 @@ fn coulomb_props_padded(props: &[f64]) -> Option<[f64; COULOMB_NPROPS]> {
 /// [`coulomb_extended`].
 #[inline(always)]
 fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
-    if props.len() < 2
-        || props.len() > COULOMB_EXTENDED_NPROPS
-        || props[0] != f64::from(LAW_COULOMB)
-    {
+    // e[i] = PROPS(i), missing trailing entries 0. The full layout (NPROPS = 20) is copied as a
+    // fixed-size array; a shorter one is padded out of line.
+    let e = match <&[f64; COULOMB_EXTENDED_NPROPS]>::try_from(props) {
+        Ok(all) => {
+            let mut e = [0.0; COULOMB_EXTENDED_NPROPS + 1];
+            e[1..].copy_from_slice(all);
+            e
+        }
+        Err(_) => extended_props_padded(props)?,
+    };
+    if e[1] != f64::from(LAW_COULOMB) {
         return None;
     }
-    let mut e = [0.0; COULOMB_EXTENDED_NPROPS + 1];
-    e[1..=props.len()].copy_from_slice(props);
-    let finite = |v: f64| v.is_finite();
     let positive = |v: f64| v > 0.0 && v < f64::INFINITY;
+    // The ranges every layout checks, in one test of the top bit as in `coulomb_fast`:
+    // 0 ≤ v < ∞ for μ, τ_max, γ_crit, the slip tolerance and p_ref ("0 or > 0"), |v| < ∞ for
+    // b_θ and θ_ref (finite).
+    let out_of_range = |v: f64| {
+        let b = (v + 0.0).to_bits();
+        b | b.wrapping_add(1 << 52)
+    };
+    let flags = out_of_range(e[2])
+        | out_of_range(e[4])
+        | out_of_range(e[5])
+        | out_of_range(e[6])
+        | out_of_range(e[11])
+        | out_of_range(e[12].abs())
+        | out_of_range(e[13].abs());
+    if flags >> 63 != 0 {
+        return None;
+    }
     let off_or_positive = |v: f64| v == 0.0 || positive(v);
     let (mu, mu2) = (e[2], e[3]);
     let viscous = e[7] == 3.0;
@@ -168,14 +189,8 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
             && positive(e[14])
             && [0.0, 1.0, 2.0, 3.0].contains(&e[15])
             && e[16] == 0.0);
-    let valid = (0.0..f64::INFINITY).contains(&mu)
-        && (mu2 == 0.0 || mu2 == mu || (positive(mu2) && mu > 0.0))
-        && off_or_positive(e[4])
-        && off_or_positive(e[5])
-        && off_or_positive(e[6])
-        && off_or_positive(e[11])
-        && finite(e[12])
-        && finite(e[13])
+    // (μ, τ_max, γ_crit, tolerance, p_ref, b_θ, θ_ref: the `flags` above.)
+    let valid = (mu2 == 0.0 || mu2 == mu || (positive(mu2) && mu > 0.0))
         && (e[12] != 0.0 || e[13] == 0.0)
         && (!hht_on
             || ((-0.5..=0.0).contains(&e[14]) && off_or_positive(e[15]) && off_or_positive(e[16])))
@@ -235,6 +250,18 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
         )
         .with_steady_transport(transport),
     ))
+}
+
+/// `PROPS(1..NPROPS)` with 2 ≤ NPROPS < 20 as `e[i] = PROPS(i)`, padded with zeros; `None`
+/// for other lengths.
+#[inline(never)]
+fn extended_props_padded(props: &[f64]) -> Option<[f64; COULOMB_EXTENDED_NPROPS + 1]> {
+    if props.len() < 2 || props.len() > COULOMB_EXTENDED_NPROPS {
+        return None;
+    }
+    let mut e = [0.0; COULOMB_EXTENDED_NPROPS + 1];
+    e[1..=props.len()].copy_from_slice(props);
+    Some(e)
 }
 
 /// The slow path of [`friction_law`], which says what is wrong.
