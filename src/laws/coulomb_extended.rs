@@ -755,7 +755,7 @@ impl ExtendedCoulomb {
     /// case does not need: the scaled copies, the viscous stress, one evaluation of the factor
     /// (the rate-free stiffness k̄_s and the solve's A share π(p)·Θ(θ̄)), and the θ̄ derivatives
     /// when μ does not depend on temperature (∂τ/∂θ̄ = 0 then).
-    #[inline(never)]
+    #[inline]
     fn isotropic_decay<const N: usize>(
         &self,
         inc: &Increment<N>,
