@@ -178,12 +178,28 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
     };
     let decay = match e[8] {
         0.0 if e[9] == 0.0 && e[10] == 0.0 => None,
-        1.0 if positive(mu) && (0.0..f64::INFINITY).contains(&e[9]) && positive(e[10]) => {
+        // μ_k/μ_s must stay finite (μ_s subnormal overflows it: the checked path refuses).
+        1.0 if positive(mu)
+            && (0.0..f64::INFINITY).contains(&e[9])
+            && positive(e[10])
+            && e[9] / mu < f64::INFINITY =>
+        {
             Some((e[9] / mu, e[10]))
         }
         _ => return None,
     };
-    let hht_on = !viscous && (e[14] != 0.0 || e[15] != 0.0 || e[16] != 0.0);
+    // PROPS(14..19) (HHT or steady transport, damping) all ±0, the common case, in one
+    // integer test: then HHT and damping are off and, unless PROPS(7) = 3 (which needs ω in
+    // PROPS(14)), there is nothing more to check.
+    let tail_off = ((e[14].to_bits()
+        | e[15].to_bits()
+        | e[16].to_bits()
+        | e[17].to_bits()
+        | e[18].to_bits()
+        | e[19].to_bits())
+        << 1)
+        == 0;
+    let hht_on = !tail_off && !viscous && (e[14] != 0.0 || e[15] != 0.0 || e[16] != 0.0);
     let transport_ok = !viscous
         || (e[5] == 0.0
             && positive(e[14])
@@ -192,15 +208,20 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
     // (μ, τ_max, γ_crit, tolerance, p_ref, b_θ, θ_ref: the `flags` above.)
     let valid = (mu2 == 0.0 || mu2 == mu || (positive(mu2) && mu > 0.0))
         && (e[12] != 0.0 || e[13] == 0.0)
-        && (!hht_on
-            || ((-0.5..=0.0).contains(&e[14]) && off_or_positive(e[15]) && off_or_positive(e[16])))
-        && (if e[17] == 0.0 {
-            e[18] == 0.0 && e[19] == 0.0
-        } else {
-            positive(e[17]) && (0.0..f64::INFINITY).contains(&e[18]) && (0.0..1.0).contains(&e[19])
-        })
         && (e[20] == 0.0 || (e[20] == 1.0 && decay.is_some()))
-        && transport_ok;
+        && ((tail_off && !viscous)
+            || ((!hht_on
+                || ((-0.5..=0.0).contains(&e[14])
+                    && off_or_positive(e[15])
+                    && off_or_positive(e[16])))
+                && (if e[17] == 0.0 {
+                    e[18] == 0.0 && e[19] == 0.0
+                } else {
+                    positive(e[17])
+                        && (0.0..f64::INFINITY).contains(&e[18])
+                        && (0.0..1.0).contains(&e[19])
+                })
+                && transport_ok));
     if !valid {
         return None;
     }
@@ -613,6 +634,54 @@ mod tests {
                 let short_checked =
                     matches!(friction_law_checked(&props), Ok(FrictionLaw::Coulomb(_)));
                 assert_eq!(coulomb_fast(&props).is_some(), short_checked);
+            }
+        }
+    }
+
+    /// The edges of the extended fast path's one-test ranges (PROPS(2, 4, 5, 6, 11): 0 ≤ v < ∞;
+    /// PROPS(12, 13): finite) and of its "PROPS(14..19) all ±0" test, value by value in every
+    /// position, on a decay-law layout and on a damping layout, against the checked path.
+    #[test]
+    fn extended_fast_path_range_edges_agree_with_checked_path() {
+        let edges = [
+            0.0,
+            -0.0,
+            f64::MIN_POSITIVE,
+            5e-324,
+            f64::MAX,
+            0.5,
+            1.0,
+            3.0,
+            -5e-324,
+            -1.0,
+            f64::MIN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            -f64::NAN,
+        ];
+        let mut decay = [0.0; COULOMB_EXTENDED_NPROPS];
+        decay[..10].copy_from_slice(&[1.0, 0.6, 0.0, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.3, 4.0]);
+        let mut damped = decay;
+        damped[16] = 2.0;
+        let mut spinning = [0.0; COULOMB_EXTENDED_NPROPS];
+        spinning[..7].copy_from_slice(&[1.0, 0.6, 0.0, 0.0, 0.0, 0.0, 3.0]);
+        spinning[13] = 10.0;
+        for layout in [decay, damped, spinning] {
+            for position in [1, 3, 4, 5, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19] {
+                for v in edges {
+                    let mut props = layout;
+                    props[position] = v;
+                    let fast = coulomb_extended_fast(&props);
+                    match coulomb_extended(&props) {
+                        Ok(law) => assert_eq!(fast, Some(law), "PROPS({}) = {v:e}", position + 1),
+                        Err(e) => assert!(
+                            fast.is_none(),
+                            "PROPS({}) = {v:e}: fast {fast:?}, checked {e}",
+                            position + 1
+                        ),
+                    }
+                }
             }
         }
     }

@@ -787,7 +787,8 @@ impl ExtendedCoulomb {
             return Err(no_rate_increment(inc.dtime));
         }
         let gamma_crit = self.base.critical_slip_for(inc.characteristic_length)?;
-        let with_theta = self.coefficient.is_temperature_dependent();
+        // (The decay law has no table: only Θ(θ̄) reads the temperature.)
+        let with_theta = self.coefficient.has_temperature_factor();
         let mbar = self.base.mu();
         let tau_max = self.base.shear_limit().unwrap_or(f64::INFINITY);
         let start_rate = state.coulomb.slip_rate;

@@ -207,6 +207,14 @@ impl CoefficientLaw {
             || matches!(self.rate, RateLaw::Table { table, .. } if table.depends_on_temperature())
     }
 
+    /// True when the temperature factor Θ(θ̄) is on (b_θ ≠ 0): for the closed-form laws, the
+    /// same as [`Self::is_temperature_dependent`].
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn has_temperature_factor(&self) -> bool {
+        self.temperature_slope != 0.0
+    }
+
     /// True when every factor is 1 (μ is the constant reference value).
     #[must_use]
     pub fn is_constant(&self) -> bool {
