@@ -178,13 +178,13 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
     };
     let decay = match e[8] {
         0.0 if e[9] == 0.0 && e[10] == 0.0 => None,
-        // μ_k/μ_s must stay finite (μ_s subnormal overflows it: the checked path refuses).
-        1.0 if positive(mu)
-            && (0.0..f64::INFINITY).contains(&e[9])
-            && positive(e[10])
-            && e[9] / mu < f64::INFINITY =>
-        {
-            Some((e[9] / mu, e[10]))
+        1.0 if positive(mu) && (0.0..f64::INFINITY).contains(&e[9]) && positive(e[10]) => {
+            // μ_k/μ_s must stay finite (a subnormal μ_s overflows it; the checked path refuses).
+            let ratio = e[9] / mu;
+            if ratio == f64::INFINITY {
+                return None;
+            }
+            Some((ratio, e[10]))
         }
         _ => return None,
     };

@@ -1296,6 +1296,18 @@ impl ExtendedCoulomb {
         let x_tol = 4.0 * f64::EPSILON * g;
         let tau_max = self.base.shear_limit().unwrap_or(f64::INFINITY);
         let a = mbar * pt * p;
+        // φ lies between 1 (at rest) and r (fast): the root lies between the slips for the
+        // largest and the smallest of τ̄_crit, so a guess outside is moved to the nearer one.
+        // (Only the first guess: its rounding does not matter, so one division.)
+        let guess = {
+            let t_small = (a * r.min(1.0)).min(tau_max);
+            let t_large = (a * r.max(1.0)).min(tau_max);
+            let compliance = 1.0 / stiffness;
+            // max/min, not clamp: no panic on a NaN bound; the solver clips into [0, γ̄_eq^pr].
+            guess
+                .max(g - t_large * compliance)
+                .min(g - t_small * compliance)
+        };
         let mut last = (f64::NAN, 0.0, 0.0);
         let residual = |x: f64| {
             let (phi, dphi, ddphi) = decay_phi(r, d, x * per_dt);
