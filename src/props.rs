@@ -149,7 +149,9 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
     if e[1] != f64::from(LAW_COULOMB) {
         return None;
     }
-    let positive = |v: f64| v > 0.0 && v < f64::INFINITY;
+    // 0 < v < ∞ in one unsigned comparison of the bits: +0 wraps to the top, negative values,
+    // ∞ and NaN are at or above the bits of ∞.
+    let positive = |v: f64| v.to_bits().wrapping_sub(1) < f64::INFINITY.to_bits().wrapping_sub(1);
     // The ranges every layout checks, in one test of the top bit as in `coulomb_fast`:
     // 0 ≤ v < ∞ for μ, τ_max, γ_crit, the slip tolerance and p_ref ("0 or > 0"), |v| < ∞ for
     // b_θ and θ_ref (finite).
@@ -668,7 +670,7 @@ mod tests {
         spinning[..7].copy_from_slice(&[1.0, 0.6, 0.0, 0.0, 0.0, 0.0, 3.0]);
         spinning[13] = 10.0;
         for layout in [decay, damped, spinning] {
-            for position in [1, 3, 4, 5, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19] {
+            for position in 1..COULOMB_EXTENDED_NPROPS {
                 for v in edges {
                     let mut props = layout;
                     props[position] = v;
