@@ -1308,32 +1308,12 @@ impl ExtendedCoulomb {
                 .max(g - t_large * compliance)
                 .min(g - t_small * compliance)
         };
-        let mut last = (f64::NAN, 0.0, 0.0);
-        let residual = |x: f64| {
-            let (phi, dphi, ddphi) = decay_phi(r, d, x * per_dt);
-            last = (x, phi, dphi);
-            let tc = a * phi;
-            if tc >= tau_max {
-                (stiffness * (g - x) - tau_max, -stiffness, 0.0)
-            } else {
-                (
-                    stiffness * (g - x) - tc,
-                    -stiffness - a * dphi * per_dt,
-                    -a * ddphi * per_dt * per_dt,
-                )
-            }
-        };
         // F(0) = k̄_s γ̄_eq^pr − τ̄_crit(0) > 0 (slip) and F(γ̄_eq^pr) = −τ̄_crit ≤ 0: the root is
         // bracketed.
-        let root =
-            halley_on_known_bracket(residual, g, 0.0, guess, x_tol, f_tol, MAX_LOCAL_ITERATIONS)
+        let (x, phi, dphi, iterations) =
+            decay_halley(r, d, a, tau_max, stiffness, g, per_dt, guess, x_tol, f_tol)
                 .map_err(|e| local_solve_failed(e, g, rate_dt))?;
-        let (phi, dphi) = if last.0 == root.x {
-            (last.1, last.2)
-        } else {
-            let (phi, dphi, _) = decay_phi(r, d, root.x * per_dt);
-            (phi, dphi)
-        };
+        let root_x = x;
         let c = if a * phi >= tau_max {
             Critical {
                 value: tau_max,
@@ -1349,7 +1329,7 @@ impl ExtendedCoulomb {
                 d_temperature: mp * (phi * pt_t),
             }
         };
-        Ok((root.x, c, root.iterations))
+        Ok((root_x, c, iterations))
     }
 
     /// Viscous stick for steady-state transport (seed 000), in scaled variables: the predictor
@@ -1512,6 +1492,94 @@ impl ExtendedCoulomb {
             iterations: 0,
         })
     }
+}
+
+/// The decay law's local solve F(s) = k̄_s (γ̄_eq^pr − s) − min(A·φ(s/Δt), τ_max) = 0 on the
+/// bracket F(γ̄_eq^pr) ≤ 0 ≤ F(0): the safeguarded Halley iteration of
+/// [`halley_on_known_bracket`] step for step (the same tests in the same order), written out
+/// for this residual, so that the few values it carries stay in registers. Returns (s, φ, φ'
+/// at s, steps).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn decay_halley(
+    r: f64,
+    d: f64,
+    a: f64,
+    tau_max: f64,
+    stiffness: f64,
+    g: f64,
+    per_dt: f64,
+    guess: f64,
+    x_tol: f64,
+    f_tol: f64,
+) -> Result<(f64, f64, f64, u32), RootFailure> {
+    // F, F', F'' and φ, φ' at x.
+    let eval = |x: f64| {
+        let (phi, dphi, ddphi) = decay_phi(r, d, x * per_dt);
+        let tc = a * phi;
+        let f = if tc >= tau_max {
+            (stiffness * (g - x) - tau_max, -stiffness, 0.0)
+        } else {
+            (
+                stiffness * (g - x) - tc,
+                -stiffness - a * dphi * per_dt,
+                -a * ddphi * per_dt * per_dt,
+            )
+        };
+        (f, phi, dphi)
+    };
+    // Bracket [low, high] = [γ̄_eq^pr, 0] with F(low) ≤ 0 ≤ F(high).
+    let (mut low, mut high) = (g, 0.0);
+    if low == high {
+        let (_, phi, dphi) = eval(low);
+        return Ok((low, phi, dphi, 0));
+    }
+    let mut x = if guess.is_finite() {
+        guess.clamp(0.0, g)
+    } else {
+        0.5 * g
+    };
+    let mut step_before = g;
+    let mut step = step_before;
+    let ((mut fx, mut dfx, mut ddfx), mut phi, mut dphi) = eval(x);
+    for iteration in 1..=MAX_LOCAL_ITERATIONS {
+        if !(fx.is_finite() && dfx.is_finite()) {
+            return Err(RootFailure::NotConverged);
+        }
+        if fx.abs() <= f_tol {
+            return Ok((x, phi, dphi, iteration - 1));
+        }
+        if fx < 0.0 {
+            low = x;
+        } else {
+            high = x;
+        }
+        // Halley's step δ = 2ff'/(2f'² − ff''), Newton's f/f' where the curvature term would
+        // flip it; accepted when inside the bracket and at least halving the step before last.
+        let denominator = 2.0 * dfx * dfx - fx * ddfx;
+        let candidate = if denominator > 0.0 {
+            2.0 * fx * dfx / denominator
+        } else {
+            fx / dfx
+        };
+        let target = x - candidate;
+        let inside = target >= low.min(high) && target <= low.max(high);
+        let fast_enough = 2.0 * candidate.abs() <= step_before.abs();
+        if inside && fast_enough {
+            step_before = step;
+            step = candidate;
+            x = target;
+        } else {
+            step_before = step;
+            step = 0.5 * (high - low);
+            x = low + step;
+        }
+        ((fx, dfx, ddfx), phi, dphi) = eval(x);
+        if step.abs() <= x_tol {
+            return Ok((x, phi, dphi, iteration));
+        }
+    }
+    Err(RootFailure::NotConverged)
 }
 
 #[cold]
