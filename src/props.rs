@@ -159,16 +159,39 @@ fn coulomb_props_padded(props: &[f64]) -> Option<[f64; COULOMB_NPROPS]> {
 /// [`coulomb_extended`].
 #[inline(always)]
 fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
-    if props.len() < 2
-        || props.len() > COULOMB_EXTENDED_NPROPS
-        || props[0] != f64::from(LAW_COULOMB)
-    {
+    // e[i] = PROPS(i), missing trailing entries 0. The full layout (NPROPS = 20) is copied as a
+    // fixed-size array; a shorter one is padded out of line.
+    let e = match <&[f64; COULOMB_EXTENDED_NPROPS]>::try_from(props) {
+        Ok(all) => {
+            let mut e = [0.0; COULOMB_EXTENDED_NPROPS + 1];
+            e[1..].copy_from_slice(all);
+            e
+        }
+        Err(_) => extended_props_padded(props)?,
+    };
+    if e[1] != f64::from(LAW_COULOMB) {
         return None;
     }
-    let mut e = [0.0; COULOMB_EXTENDED_NPROPS + 1];
-    e[1..=props.len()].copy_from_slice(props);
-    let finite = |v: f64| v.is_finite();
-    let positive = |v: f64| v > 0.0 && v < f64::INFINITY;
+    // 0 < v < ∞ in one unsigned comparison of the bits: +0 wraps to the top, negative values,
+    // ∞ and NaN are at or above the bits of ∞.
+    let positive = |v: f64| v.to_bits().wrapping_sub(1) < f64::INFINITY.to_bits().wrapping_sub(1);
+    // The ranges every layout checks, in one test of the top bit as in `coulomb_fast`:
+    // 0 ≤ v < ∞ for μ, τ_max, γ_crit, the slip tolerance and p_ref ("0 or > 0"), |v| < ∞ for
+    // b_θ and θ_ref (finite).
+    let out_of_range = |v: f64| {
+        let b = (v + 0.0).to_bits();
+        b | b.wrapping_add(1 << 52)
+    };
+    let flags = out_of_range(e[2])
+        | out_of_range(e[4])
+        | out_of_range(e[5])
+        | out_of_range(e[6])
+        | out_of_range(e[11])
+        | out_of_range(e[12].abs())
+        | out_of_range(e[13].abs());
+    if flags >> 63 != 0 {
+        return None;
+    }
     let off_or_positive = |v: f64| v == 0.0 || positive(v);
     let (mu, mu2) = (e[2], e[3]);
     let viscous = e[7] == 3.0;
@@ -181,34 +204,49 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
     let decay = match e[8] {
         0.0 if e[9] == 0.0 && e[10] == 0.0 => None,
         1.0 if positive(mu) && (0.0..f64::INFINITY).contains(&e[9]) && positive(e[10]) => {
-            Some((e[9] / mu, e[10]))
+            // μ_k/μ_s must stay finite (a subnormal μ_s overflows it; the checked path refuses).
+            let ratio = e[9] / mu;
+            if ratio == f64::INFINITY {
+                return None;
+            }
+            Some((ratio, e[10]))
         }
         _ => return None,
     };
-    let hht_on = !viscous && (e[14] != 0.0 || e[15] != 0.0 || e[16] != 0.0);
+    // PROPS(14..19) (HHT or steady transport, damping) all ±0, the common case, in one
+    // integer test: then HHT and damping are off and, unless PROPS(7) = 3 (which needs ω in
+    // PROPS(14)), there is nothing more to check.
+    let tail_off = ((e[14].to_bits()
+        | e[15].to_bits()
+        | e[16].to_bits()
+        | e[17].to_bits()
+        | e[18].to_bits()
+        | e[19].to_bits())
+        << 1)
+        == 0;
+    let hht_on = !tail_off && !viscous && (e[14] != 0.0 || e[15] != 0.0 || e[16] != 0.0);
     let transport_ok = !viscous
         || (e[5] == 0.0
             && positive(e[14])
             && [0.0, 1.0, 2.0, 3.0].contains(&e[15])
             && (e[16] == 0.0 || e[16] == 1.0));
-    let valid = (0.0..f64::INFINITY).contains(&mu)
-        && (mu2 == 0.0 || mu2 == mu || (positive(mu2) && mu > 0.0))
-        && off_or_positive(e[4])
-        && off_or_positive(e[5])
-        && off_or_positive(e[6])
-        && off_or_positive(e[11])
-        && finite(e[12])
-        && finite(e[13])
+    // (μ, τ_max, γ_crit, tolerance, p_ref, b_θ, θ_ref: the `flags` above.)
+    let valid = (mu2 == 0.0 || mu2 == mu || (positive(mu2) && mu > 0.0))
         && (e[12] != 0.0 || e[13] == 0.0)
-        && (!hht_on
-            || ((-0.5..=0.0).contains(&e[14]) && off_or_positive(e[15]) && off_or_positive(e[16])))
-        && (if e[17] == 0.0 {
-            e[18] == 0.0 && e[19] == 0.0
-        } else {
-            positive(e[17]) && (0.0..f64::INFINITY).contains(&e[18]) && (0.0..1.0).contains(&e[19])
-        })
         && (e[20] == 0.0 || (e[20] == 1.0 && decay.is_some()))
-        && transport_ok;
+        && ((tail_off && !viscous)
+            || ((!hht_on
+                || ((-0.5..=0.0).contains(&e[14])
+                    && off_or_positive(e[15])
+                    && off_or_positive(e[16])))
+                && (if e[17] == 0.0 {
+                    e[18] == 0.0 && e[19] == 0.0
+                } else {
+                    positive(e[17])
+                        && (0.0..f64::INFINITY).contains(&e[18])
+                        && (0.0..1.0).contains(&e[19])
+                })
+                && transport_ok));
     if !valid {
         return None;
     }
@@ -264,6 +302,18 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
         )
         .with_steady_transport(transport),
     ))
+}
+
+/// `PROPS(1..NPROPS)` with 2 ≤ NPROPS < 20 as `e[i] = PROPS(i)`, padded with zeros; `None`
+/// for other lengths.
+#[inline(never)]
+fn extended_props_padded(props: &[f64]) -> Option<[f64; COULOMB_EXTENDED_NPROPS + 1]> {
+    if props.len() < 2 || props.len() > COULOMB_EXTENDED_NPROPS {
+        return None;
+    }
+    let mut e = [0.0; COULOMB_EXTENDED_NPROPS + 1];
+    e[1..=props.len()].copy_from_slice(props);
+    Some(e)
 }
 
 /// The slow path of [`friction_law`], which says what is wrong.
@@ -622,6 +672,54 @@ mod tests {
                 let short_checked =
                     matches!(friction_law_checked(&props), Ok(FrictionLaw::Coulomb(_)));
                 assert_eq!(coulomb_fast(&props).is_some(), short_checked);
+            }
+        }
+    }
+
+    /// The edges of the extended fast path's one-test ranges (PROPS(2, 4, 5, 6, 11): 0 ≤ v < ∞;
+    /// PROPS(12, 13): finite) and of its "PROPS(14..19) all ±0" test, value by value in every
+    /// position, on a decay-law layout and on a damping layout, against the checked path.
+    #[test]
+    fn extended_fast_path_range_edges_agree_with_checked_path() {
+        let edges = [
+            0.0,
+            -0.0,
+            f64::MIN_POSITIVE,
+            5e-324,
+            f64::MAX,
+            0.5,
+            1.0,
+            3.0,
+            -5e-324,
+            -1.0,
+            f64::MIN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            -f64::NAN,
+        ];
+        let mut decay = [0.0; COULOMB_EXTENDED_NPROPS];
+        decay[..10].copy_from_slice(&[1.0, 0.6, 0.0, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.3, 4.0]);
+        let mut damped = decay;
+        damped[16] = 2.0;
+        let mut spinning = [0.0; COULOMB_EXTENDED_NPROPS];
+        spinning[..7].copy_from_slice(&[1.0, 0.6, 0.0, 0.0, 0.0, 0.0, 3.0]);
+        spinning[13] = 10.0;
+        for layout in [decay, damped, spinning] {
+            for position in 1..COULOMB_EXTENDED_NPROPS {
+                for v in edges {
+                    let mut props = layout;
+                    props[position] = v;
+                    let fast = coulomb_extended_fast(&props);
+                    match coulomb_extended(&props) {
+                        Ok(law) => assert_eq!(fast, Some(law), "PROPS({}) = {v:e}", position + 1),
+                        Err(e) => assert!(
+                            fast.is_none(),
+                            "PROPS({}) = {v:e}: fast {fast:?}, checked {e}",
+                            position + 1
+                        ),
+                    }
+                }
             }
         }
     }

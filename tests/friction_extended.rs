@@ -485,6 +485,87 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// The decay law's lean path (isotropic, elastic stick, no damping: no scaled copies, one
+    /// factor evaluation, θ̄ work only with a temperature law, the solve's first guess moved
+    /// into the root's interval) against the general path (scaling with a = μ_i/μ̄, the
+    /// general return map) for the same law: stress, tangents, slip, energies, ∂τ/∂θ̄ and the
+    /// state agree to round-off, in stick and slip, with and without p/θ̄ dependence, HHT,
+    /// τ_max, a frozen μ, μ_k above or below μ_s, and any start rate.
+    #[test]
+    fn lean_decay_path_agrees_with_the_general_path(
+        mu in 0.05..1.0f64,
+        ratio in prop_oneof![0.0..1.0f64, 1.0..5.0f64],
+        dc in 0.1..50.0f64,
+        tau_max in prop_oneof![Just(0.0), 1.0..100.0f64],
+        p0 in 1.0..200.0f64,
+        dpf in -0.5..1.0f64,
+        tf in prop::array::uniform2(-0.6..0.6f64),
+        gf in prop::array::uniform2(-6.0..6.0f64),
+        p_ref in prop_oneof![Just(0.0), 10.0..500.0f64],
+        temperature in prop_oneof![Just(None), (-0.02..0.02f64, 0.0..100.0f64).prop_map(Some)],
+        theta in 0.0..200.0f64,
+        hht in prop::bool::ANY,
+        frozen in prop::bool::ANY,
+        start_rate in prop_oneof![Just(0.0), 0.0..2.0f64],
+        dtime in 1e-3..1.0f64,
+    ) {
+        let mut base = Coulomb::new(mu).unwrap().with_critical_slip_absolute(1e-3).unwrap();
+        if tau_max > 0.0 {
+            base = base.with_shear_limit(tau_max).unwrap();
+        }
+        let mut coefficient = CoefficientLaw::default().with_exponential_decay(ratio, dc).unwrap();
+        if p_ref > 0.0 {
+            coefficient = coefficient.with_pressure_reference(p_ref).unwrap();
+        }
+        if let Some((b, t0)) = temperature {
+            coefficient = coefficient.with_temperature(b, t0).unwrap();
+        }
+        let lean = ExtendedCoulomb::new(base)
+            .with_coefficient_law(coefficient)
+            .with_frozen_coefficient(frozen)
+            .with_hht(hht.then(|| Hht::new(-0.05, 0.0, 0.0).unwrap()));
+        let general = lean.with_general_path();
+        let inc = Increment::<2> {
+            tau: [tf[0] * mu * p0, tf[1] * mu * p0],
+            dgam: [gf[0] * 1e-3, gf[1] * 1e-3],
+            pressure: p0 * (1.0 + dpf),
+            dpressure: p0 * dpf,
+            dtime,
+            ..Increment::default()
+        };
+        let conditions = Conditions { temperature: theta, ..Conditions::default() };
+        let st = ExtendedState::<2> {
+            coulomb: CoulombState { slip_rate: start_rate, ..CoulombState::default() },
+            ..ExtendedState::default()
+        };
+        let a = lean.update(&inc, &conditions, &st).unwrap();
+        let b = general.update(&inc, &conditions, &st).unwrap();
+        prop_assert_eq!(a.state.coulomb.status, b.state.coulomb.status);
+        let (Contact::Motion(x), Contact::Motion(y)) = (a.contact, b.contact) else {
+            return Err(TestCaseError::fail("elastic stick answers LM = 0"));
+        };
+        // Scales: the stress μ_s p (up to r·μ_s p), the stiffness μ_s p/γ_crit.
+        let stress = mu * p0 * 2.0 * ratio.max(1.0);
+        let close = |u: f64, v: f64, scale: f64| (u - v).abs() <= 1e-10 * scale;
+        for i in 0..2 {
+            prop_assert!(close(x.tau[i], y.tau[i], stress), "{x:?} {y:?}");
+            prop_assert!(close(x.ddtddp[i], y.ddtddp[i], stress / p0), "{x:?} {y:?}");
+            prop_assert!(close(x.dslip[i], y.dslip[i], 1e-2), "{x:?} {y:?}");
+            prop_assert!(close(a.ddtdtheta[i], b.ddtdtheta[i], stress), "{a:?} {b:?}");
+            for j in 0..2 {
+                prop_assert!(close(x.ddtddg[i][j], y.ddtddg[i][j], stress / 1e-3), "{x:?} {y:?}");
+            }
+        }
+        prop_assert!(close(x.sfd, y.sfd, stress * 1e-2));
+        prop_assert!(close(x.sed, y.sed, stress * 1e-3));
+        let rate_scale = 1e-2 / dtime;
+        prop_assert!(close(a.state.coulomb.slip_rate, b.state.coulomb.slip_rate, rate_scale));
+    }
+}
+
 /// Scene F3: steady slip along d at angle θ with μ₁ ≠ μ₂: the stress sits on the friction
 /// ellipse (τ₁/μ₁)² + (τ₂/μ₂)² = p², with τ_i ∝ μ_i²·d_i.
 #[test]

@@ -207,6 +207,14 @@ impl CoefficientLaw {
             || matches!(self.rate, RateLaw::Table { table, .. } if table.depends_on_temperature())
     }
 
+    /// True when the temperature factor Θ(θ̄) is on (b_θ ≠ 0): for the closed-form laws, the
+    /// same as [`Self::is_temperature_dependent`].
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn has_temperature_factor(&self) -> bool {
+        self.temperature_slope != 0.0
+    }
+
     /// True when every factor is 1 (μ is the constant reference value).
     #[must_use]
     pub fn is_constant(&self) -> bool {
@@ -236,6 +244,31 @@ impl CoefficientLaw {
             [f.value, f.d_pressure, f.d_temperature],
             (kinetic_ratio, decay),
         ))
+    }
+
+    /// The rate-free part of the factor, π(p)·Θ(θ̄), with ∂/∂p and ∂/∂θ̄: the same numbers as
+    /// `factor(0, p, θ̄)` gives for the closed-form laws (φ(0) = 1 exactly), without the rate
+    /// law. For the stick stiffness k_s = τ_crit(0, p, θ̄)/γ_crit of the decay law, whose
+    /// local solve uses the same three numbers ([`Self::split_decay`]).
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn rate_free(&self, pressure: f64, temperature: f64) -> [f64; 3] {
+        // π(p) = 1/(1 + p/p_ref), π' = −(1/p_ref) π².
+        let (pi, dpi) = if self.pressure_ref.is_finite() {
+            let pi = 1.0 / (1.0 + pressure / self.pressure_ref);
+            (pi, -pi * pi / self.pressure_ref)
+        } else {
+            (1.0, 0.0)
+        };
+        // Θ(θ̄) = exp(−b_θ (θ̄ − θ_ref)), Θ' = −b_θ Θ.
+        let (theta, dtheta) = if self.temperature_slope != 0.0 {
+            let t = (-self.temperature_slope * (temperature - self.temperature_ref)).exp();
+            (t, -self.temperature_slope * t)
+        } else {
+            (1.0, 0.0)
+        };
+        // As `factor` with φ = 1: 1·π·Θ = π·Θ, 1·π'·Θ = π'·Θ, 1·π·Θ' = π·Θ' (exact products).
+        [pi * theta, dpi * theta, pi * dtheta]
     }
 
     /// f(γ̇, p, θ̄) and its partials. `rate` is the equivalent slip rate (≥ 0), `pressure` the

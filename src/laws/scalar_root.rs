@@ -71,7 +71,9 @@ pub fn newton_on_known_bracket(
 
 /// As [`newton_on_known_bracket`] with Halley's step δ = 2ff'/(2f'² − ff'') (cubic convergence)
 /// when `f` also returns f''; the same safeguards (a step that leaves the bracket, or shrinks
-/// too slowly, is replaced by bisection), so it cannot diverge either.
+/// too slowly, is replaced by bisection), so it cannot diverge either. Inlined, so that the
+/// residual's captures stay in registers.
+#[inline(always)]
 pub fn halley_on_known_bracket(
     mut f: impl FnMut(f64) -> (f64, f64, f64),
     low: f64,
