@@ -18,7 +18,8 @@
 
 #include "harness.h"
 
-enum { NC = 9, NSLV = 12, MAXDIR = 3, NSV = 2 };
+/* MAXDIR: nDir of the refused nFricDir = 3 case, so its setup stays inside the arrays. */
+enum { NC = 9, NSLV = 12, MAXDIR = 4, NSV = 2 };
 #define GUARD (-7.77e77)
 
 typedef struct {
