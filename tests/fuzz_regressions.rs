@@ -508,3 +508,44 @@ fn uinter_breaking_bond_passes_the_spd_property() {
     let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
     assert_eq!(out.energies[2], 0.0);
 }
+
+/// Crash 15 (uinter, CI run of 2026-11-23 after the decoder learnt SPD): sliding with k_μ > 0
+/// over a `DTIME` of f64::MIN_POSITIVE; ∂τ/∂p is finite but DDSDDR(1+a,1) = ∂τ_a/∂p·K_n
+/// overflowed to ∞ on a call that succeeded. Now refused as an overflow (cut-back).
+const CRASH_UINTER_TANGENT_OVERFLOW: [u8; 83] = [
+    255, 1, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 68, 4, 4, 4, 4, 4, 4, 4,
+    243, 251, 251, 251, 4, 0, 85, 0, 2, 0, 0, 103, 0, 0, 0, 0, 4, 4, 4, 4, 4, 4, 4, 85, 0, 4, 14,
+    4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 248, 251, 253, 255, 5, 83, 0,
+];
+
+#[test]
+fn uinter_tangent_overflow_is_refused() {
+    let case = uinter_case::UinterCase::decode(&CRASH_UINTER_TANGENT_OVERFLOW);
+    let out = case
+        .check()
+        .unwrap_or_else(|e| panic!("{e}\ninput: {case:?}"));
+    assert!(out.message.contains("overflowed"), "{}", out.message);
+    assert!(out.pnewdt < 1.0);
+}
+
+/// The same defect without the byte encoding: a start shear of 1000 against a strength
+/// S_a = 1 (start elastic slip τ̄·γ_crit/τ_s = 1), k_μ = 1, K_n = 10¹⁰ at h = 10⁻³¹⁰ (p = 10⁻³⁰⁰)
+/// and Δt = 10⁻³⁰⁰: the slip ≈ 1 gives Δv ≈ 10³⁰⁰, so ∂τ/∂p ≈ k_μ·Δv ≈ 10³⁰⁰ is finite while
+/// ∂τ/∂p·K_n ≈ 10³¹⁰ is not.
+#[test]
+fn uinter_tangent_overflow_of_the_pressure_column_is_a_cut_back() {
+    let mut c = sliding_uinter(0.5);
+    c.props = vec![2.0, 0.5, 0.0, 1.0, 0.0, 1.0, 0.0, 1e-3, 0.0, 1e10];
+    c.rdisp = vec![1e-310, 0.0];
+    c.stress = vec![1e-300, 1000.0];
+    c.drdisp = vec![0.0, 0.0];
+    c.dtime = 1e-300;
+    let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
+    assert!(out.message.contains("overflowed"), "{}", out.message);
+    assert!(out.pnewdt < 1.0);
+    assert_eq!(out.statev, c.statev, "STATEV unchanged");
+    // With an ordinary step the same point is computed.
+    c.dtime = 1.0;
+    let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
+    assert!(out.message.is_empty(), "{}", out.message);
+}
