@@ -8,3 +8,4 @@ pub mod fric_case;
 pub mod fric_coef_case;
 pub mod gapcon_case;
 pub mod uinter_case;
+pub mod vfric_case;

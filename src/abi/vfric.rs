@@ -7,7 +7,7 @@ use std::ffi::{c_char, c_int};
 use super::{boundary, fortran_string, read};
 use crate::LawError;
 use crate::laws::coulomb_kinematic::KinematicCoulomb;
-use crate::props::{FrictionLaw, friction_law};
+use crate::props::{FrictionLaw, LAW_ADHESIVE, friction_law};
 use crate::report::{Site, report};
 
 /// The Fortran `REAL` of the Abaqus/Explicit build `vfric_` is compiled for: `f64` for the
@@ -220,6 +220,11 @@ impl VfricArgs {
                 .map_err(|_| LawError::Parameter(format!("nProps = {nprops} is negative")))?;
             let props = reals(self.props, nprops, "props")?;
             let props: Vec<f64> = props.iter().copied().map(to_f64).collect();
+            // The adhesive layout in its Coulomb special case (μ_s = μ_d, no adhesion) parses
+            // as a plain Coulomb law; VFRIC refuses law 2 in every form (docs/vfric.md).
+            if props.first() == Some(&f64::from(LAW_ADHESIVE)) {
+                return Err(adhesive_refused());
+            }
             let law = match friction_law(&props)? {
                 FrictionLaw::Coulomb(law) => KinematicCoulomb::new(&law),
                 FrictionLaw::CoulombExtended(_) => {
@@ -229,12 +234,7 @@ impl VfricArgs {
                             .into(),
                     ));
                 }
-                FrictionLaw::Adhesive(_) => {
-                    return Err(LawError::Parameter(
-                        "PROPS(1) = 2 (adhesive): VFRIC runs law 1 (Coulomb) only (docs/vfric.md)"
-                            .into(),
-                    ));
-                }
+                FrictionLaw::Adhesive(_) => return Err(adhesive_refused()),
             };
             if n == 0 {
                 return Ok(());
@@ -318,6 +318,13 @@ impl VfricArgs {
             }
         }
     }
+}
+
+/// The refusal of `PROPS(1) = 2`.
+fn adhesive_refused() -> LawError {
+    LawError::Parameter(
+        "PROPS(1) = 2 (adhesive): VFRIC runs law 1 (Coulomb) only (docs/vfric.md)".into(),
+    )
 }
 
 /// Borrows `len` reals of the build's precision (NULL allowed only when `len` is 0).

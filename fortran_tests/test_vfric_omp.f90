@@ -1,0 +1,343 @@
+! test_vfric_omp.f90 -- VFRIC (Abaqus/Explicit, double precision: the friction force of a block
+! of contact points) from an OpenMP parallel loop (OMP_NUM_THREADS = 8, set by CTest), compared
+! bit for bit with a serial run of the same blocks. The Fortran twin of
+! c_tests/test_vfric_threads.c; VFRIC is called as Abaqus/Explicit user code calls it: a plain
+! `call vfric(...)` with the 42 arguments, no interface block.
+!
+! 16 384 blocks of 1..127 contact points (nContact = 1 + mod(b-1, 127)): 1 048 513 point
+! evaluations per run. Each block has its own interaction ("VF<b>"), nFricDir (1 or 2), 1..64
+! slave nodes with areas in [0.1, 2] and law-1 PROPS drawn from a Lehmer generator
+! x <- 48271 x mod (2**31 - 1) seeded by the block's index, one of seven kinds: plain Coulomb,
+! tau_max, rough (PROPS(7) = 2), exact stick with tau_max, tau_max with one to three bad points
+! (fNormal NaN, fStickForce < 0, jConSlvid past nSlvNod), a refused call (mu < 0, the adhesive
+! law, mu2 /= mu) and nFricDir = 3. Every array is allocated at exactly its declared size, so
+! valgrind sees any access past it.
+!
+! Compared with the serial run: every fTangential entry of every block and the block's message
+! (ifl_last_error_copy of the calling thread), folded into a 62-bit digest per block (two
+! multiplicative hashes mod 2**31 - 1), and the counts of each kind. Checked on every block of
+! both runs against docs/vfric.md, not against the library: fTangential(1,k) =
+! 0 - min(mu F_N, tau_max A, F_stick) bit for bit (0 for F_N < 0, 0 - F_stick when rough),
+! fTangential(2,k) = +0; a bad point +0 and a message naming VFRIC, the interaction and the
+! last bad point; a refused call +0 everywhere (nothing written for nFricDir = 3) and a message
+! naming VFRIC, the interaction and "(block)"; statev untouched; no message for a good block.
+! At least 8 OpenMP threads must have done work.
+!
+! INTERFACIAL_TEST_SHRINK=n divides the number of blocks by n (valgrind runs).
+! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
+
+module vfric_omp_support
+  use, intrinsic :: iso_fortran_env, only: int64
+  use, intrinsic :: iso_c_binding, only: c_char, c_size_t
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+  implicit none
+  integer, parameter :: dp = kind(1.0d0)
+  integer, parameter :: full_blocks = 16384, max_ncontact = 127, min_blocks = 512
+  integer, parameter :: nthreads_min = 8, nprops = 7, n_kinds = 7, max_slaves = 64
+  integer, parameter :: kind_bad_points = 5, kind_refused = 6, kind_nfricdir = 7
+  integer, parameter :: n_unread = 3*3*max_ncontact
+  integer(int64), parameter :: lehmer_m = 2147483647_int64
+  real(dp), parameter :: guard = -7.77e77_dp
+  character(len=16), parameter :: kind_names(n_kinds) = [character(len=16) :: 'plain', &
+    'tau_max', 'rough', 'exact stick', 'bad points', 'refused', 'nFricDir 3']
+
+  integer :: npass = 0, nfail = 0
+
+  interface
+    function ifl_last_error_copy(buf, len) bind(c, name='ifl_last_error_copy') result(n)
+      import :: c_char, c_size_t
+      character(kind=c_char), dimension(*), intent(out) :: buf
+      integer(c_size_t), value :: len
+      integer(c_size_t) :: n
+    end function ifl_last_error_copy
+    subroutine ifl_clear_error() bind(c, name='ifl_clear_error')
+    end subroutine ifl_clear_error
+  end interface
+
+contains
+
+  subroutine check(ok, what)
+    logical, intent(in) :: ok
+    character(len=*), intent(in) :: what
+    if (ok) then
+      npass = npass + 1
+    else
+      nfail = nfail + 1
+      write (*, '(a,a)') 'FAIL: ', what
+    end if
+  end subroutine check
+
+  integer(int64) function lehmer(x)
+    integer(int64), intent(inout) :: x
+    x = mod(48271_int64*x, lehmer_m)
+    lehmer = x
+  end function lehmer
+
+  ! Uniform in [lo, hi).
+  real(dp) function uniform(x, lo, hi)
+    integer(int64), intent(inout) :: x
+    real(dp), intent(in) :: lo, hi
+    uniform = lo + (hi - lo)*(real(lehmer(x) - 1, dp)/real(lehmer_m - 2, dp))
+  end function uniform
+
+  ! Folds a 64-bit pattern into the two hashes.
+  subroutine fold_bits(h, bits)
+    integer(int64), intent(inout) :: h(2)
+    integer(int64), intent(in) :: bits
+    integer(int64) :: lo, hi
+    lo = iand(bits, 4294967295_int64)
+    hi = iand(ishft(bits, -32), 4294967295_int64)
+    h(1) = mod(mod(h(1)*48271_int64 + lo, lehmer_m)*48271_int64 + hi, lehmer_m)
+    h(2) = mod(mod(h(2)*16807_int64 + hi, lehmer_m)*16807_int64 + lo, lehmer_m)
+  end subroutine fold_bits
+
+  logical function same_bits(a, b)
+    real(dp), intent(in) :: a, b
+    same_bits = transfer(a, 0_int64) == transfer(b, 0_int64)
+  end function same_bits
+
+  ! Calls VFRIC for block ib, checks it, returns its digest, kind and size.
+  subroutine run_block(ib, digest, kind, npts, nbad_pts, bad, first_bad)
+    integer, intent(in) :: ib
+    integer(int64), intent(out) :: digest(2)
+    integer, intent(out) :: kind, npts, nbad_pts
+    integer, intent(inout) :: bad
+    character(len=256), intent(inout) :: first_bad
+    integer(int64) :: x
+    integer :: n, nf, nslv, k, j, nbad, last_bad, ndir, npr, one, two, four, ints(4)
+    real(dp) :: props(nprops), f, want, unread(n_unread)
+    real(dp), allocatable :: ftan(:, :), statev(:, :), normal(:), stick(:), area(:)
+    integer, allocatable :: slave(:)
+    logical, allocatable :: isbad(:)
+    character(len=80) :: name, blank
+    character(kind=c_char) :: msg(512)
+    character(len=512) :: text
+    character(len=64) :: head, point
+    integer(c_size_t) :: mlen
+    character(len=200) :: what
+
+    x = mod(int(ib, int64)*2654435761_int64, lehmer_m - 1) + 1
+    x = mod(48271_int64*x, lehmer_m)
+    kind = int(mod(lehmer(x), int(n_kinds, int64))) + 1
+    n = 1 + mod(ib - 1, max_ncontact)
+    npts = n
+    if (kind == kind_nfricdir) then
+      nf = 3
+    else
+      nf = 1 + int(mod(lehmer(x), 2_int64))
+    end if
+    nslv = 1 + int(mod(lehmer(x), int(max_slaves, int64)))
+    props = 0
+    props(1) = 1
+    props(2) = uniform(x, 0.05_dp, 0.9_dp)
+    if (kind /= 1) props(4) = uniform(x, 1.0_dp, 50.0_dp)
+    if (kind == 3) props(7) = 2
+    if (kind == 4) props(7) = 1
+    allocate (ftan(nf, n), statev(2, n), normal(n), stick(n), area(nslv), slave(n), isbad(n))
+    do k = 1, nslv
+      area(k) = uniform(x, 0.1_dp, 2.0_dp)
+    end do
+    do k = 1, n
+      normal(k) = uniform(x, -20.0_dp, 300.0_dp)
+      stick(k) = uniform(x, 0.0_dp, 100.0_dp)
+      slave(k) = 1 + int(mod(lehmer(x), int(nslv, int64)))
+    end do
+    isbad = .false.
+    last_bad = 0
+    if (kind == kind_bad_points) then
+      do nbad = 1 + int(mod(lehmer(x), 3_int64)), 1, -1
+        k = 1 + int(mod(lehmer(x), int(n, int64)))
+        select case (mod(lehmer(x), 3_int64))
+        case (0)
+          normal(k) = ieee_value(1.0_dp, ieee_quiet_nan)
+        case (1)
+          stick(k) = -uniform(x, 0.1_dp, 1.0_dp)
+        case default
+          slave(k) = nslv + 1
+        end select
+        isbad(k) = .true.
+        last_bad = max(last_bad, k)
+      end do
+    end if
+    if (kind == kind_refused) then
+      select case (mod(lehmer(x), 3_int64))
+      case (0)
+        props(2) = -props(2)
+      case (1)
+        props(1) = 2
+      case default
+        props(3) = 2*props(2)
+      end select
+    end if
+    nbad_pts = count(isbad)
+    ftan = guard
+    do k = 1, n
+      statev(:, k) = [0.5_dp*k, -0.25_dp*k]
+    end do
+    unread = 1
+    ints = 1
+    one = 1
+    two = 2
+    four = 4
+    ndir = nf + 1
+    npr = nprops
+    write (name, '(a,i0)') 'VF', ib
+    blank = ' '
+    call ifl_clear_error()
+    call vfric(ftan, statev, one, one, n, four, nslv, four, nf, ndir, two, npr, one, one, one, &
+               ints, ints, slave, ints, unread, unread, unread, name, blank, blank, ints, unread, &
+               stick, unread, normal, unread, unread, unread, unread, unread, unread, props, area, &
+               unread, unread, unread, unread)
+    mlen = ifl_last_error_copy(msg, int(size(msg), c_size_t))
+    text = ' '
+    do j = 1, min(int(mlen), len(text))
+      text(j:j) = msg(j)
+    end do
+    digest = 0
+    do k = 1, n
+      do j = 1, nf
+        call fold_bits(digest, transfer(ftan(j, k), 0_int64))
+      end do
+    end do
+    do j = 1, min(int(mlen), len(text))
+      call fold_bits(digest, int(ichar(text(j:j)), int64))
+    end do
+
+    what = ' '
+    do k = 1, n
+      if (.not. (same_bits(statev(1, k), 0.5_dp*k) .and. same_bits(statev(2, k), -0.25_dp*k))) &
+        what = 'statev written'
+    end do
+    write (head, '(a,i0,a)') 'interfacial: VFRIC: interaction ''VF', ib, ''''
+    if (kind == kind_refused .or. kind == kind_nfricdir) then
+      if (index(text, trim(head)) /= 1 .or. index(text, '(block)') == 0) &
+        what = 'refusal message lacks VFRIC, the interaction or (block)'
+      do k = 1, n
+        do j = 1, nf
+          if (kind == kind_refused) then
+            want = 0
+          else
+            want = guard
+          end if
+          if (.not. same_bits(ftan(j, k), want)) write (what, '(a,i0,a,i0,2es25.17)') &
+            'refused call: fTangential(', j, ',', k, ftan(j, k), want
+        end do
+      end do
+    else
+      do k = 1, n
+        if (isbad(k)) then
+          want = 0
+        else
+          if (props(7) == 2) then
+            f = stick(k)
+          else if (normal(k) < 0) then
+            f = 0
+          else
+            f = props(2)*normal(k)
+            if (props(4) > 0) f = min(f, props(4)*area(slave(k)))
+            f = min(f, stick(k))
+          end if
+          want = 0.0_dp - f
+          if (.not. (ftan(1, k) >= -stick(k) .and. ftan(1, k) <= 0)) &
+            what = 'fTangential(1,k) outside [-fStickForce, 0]'
+        end if
+        if (.not. same_bits(ftan(1, k), want)) write (what, '(a,i0,a,2es25.17)') &
+          'fTangential(1,', k, ')', ftan(1, k), want
+        if (nf == 2) then
+          if (.not. same_bits(ftan(2, k), 0.0_dp)) what = 'fTangential(2,k) not +0'
+        end if
+      end do
+      if (kind == kind_bad_points) then
+        write (point, '(a,i0,a)') '(contact point ', last_bad, ')'
+        if (index(text, trim(head)) /= 1 .or. index(text, trim(point)) == 0) &
+          what = 'bad-point message lacks VFRIC, the interaction or the last bad point'
+      else if (mlen /= 0) then
+        what = 'a good block left a message'
+      end if
+    end if
+    if (what /= ' ') then
+      !$omp critical (vfric_omp_first_bad)
+      bad = bad + 1
+      if (first_bad == ' ') write (first_bad, '(a,i0,a,a)') 'block ', ib, ': ', trim(what)
+      !$omp end critical (vfric_omp_first_bad)
+    end if
+    deallocate (ftan, statev, normal, stick, area, slave, isbad)
+  end subroutine run_block
+
+  integer function shrink_factor()
+    character(len=32) :: v
+    integer :: stat, n
+    shrink_factor = 1
+    call get_environment_variable('INTERFACIAL_TEST_SHRINK', v, status=stat)
+    if (stat /= 0) return
+    read (v, *, iostat=stat) n
+    if (stat /= 0 .or. n < 1) return
+    shrink_factor = min(n, full_blocks/min_blocks)
+  end function shrink_factor
+end module vfric_omp_support
+
+program test_vfric_omp
+  use vfric_omp_support
+  use omp_lib, only: omp_get_thread_num, omp_get_max_threads
+  implicit none
+  integer :: nblocks, ib, k, bad_par, bad_ser, nworkers, ndiff, shrink
+  integer(int64), allocatable :: dig_par(:, :), dig_ser(:, :)
+  integer, allocatable :: kind_par(:), kind_ser(:), n_par(:), n_ser(:), b_par(:), b_ser(:)
+  logical, allocatable :: worked(:)
+  character(len=256) :: first_par, first_ser
+  integer(int64) :: points
+
+  shrink = shrink_factor()
+  nblocks = full_blocks/shrink
+  allocate (dig_par(2, nblocks), dig_ser(2, nblocks), kind_par(nblocks), kind_ser(nblocks), &
+            n_par(nblocks), n_ser(nblocks), b_par(nblocks), b_ser(nblocks), &
+            worked(0:max(omp_get_max_threads(), 1) - 1))
+  worked = .false.
+  bad_par = 0
+  bad_ser = 0
+  first_par = ' '
+  first_ser = ' '
+  call check(omp_get_max_threads() >= nthreads_min, 'OpenMP offers at least 8 threads '// &
+             '(OMP_NUM_THREADS)')
+
+  !$omp parallel do schedule(static) default(shared) private(ib)
+  do ib = 1, nblocks
+    worked(omp_get_thread_num()) = .true.
+    call run_block(ib, dig_par(:, ib), kind_par(ib), n_par(ib), b_par(ib), bad_par, first_par)
+  end do
+  !$omp end parallel do
+  nworkers = count(worked)
+  call check(nworkers >= nthreads_min, 'at least 8 OpenMP threads did work')
+  if (bad_par > 0) write (*, '(a,i0,a,a)') '  OpenMP: ', bad_par, ' violations, first: ', &
+    trim(first_par)
+  call check(bad_par == 0, 'every OpenMP block matches docs/vfric.md')
+
+  do ib = 1, nblocks
+    call run_block(ib, dig_ser(:, ib), kind_ser(ib), n_ser(ib), b_ser(ib), bad_ser, first_ser)
+  end do
+  if (bad_ser > 0) write (*, '(a,i0,a,a)') '  serial: ', bad_ser, ' violations, first: ', &
+    trim(first_ser)
+  call check(bad_ser == 0, 'every serial block matches docs/vfric.md')
+
+  points = sum(int(n_par, int64))
+  write (*, '(a,i0,a,i0,a,i0,a)', advance='no') 'blocks ', nblocks, ', point evaluations ', &
+    points, ' (', sum(b_par), ' bad points), per kind:'
+  do k = 1, n_kinds
+    write (*, '(1x,a,1x,i0)', advance='no') trim(kind_names(k)), count(kind_par == k)
+    call check(count(kind_par == k) >= nblocks/(2*n_kinds), 'enough blocks of kind '// &
+               trim(kind_names(k)))
+  end do
+  write (*, '()')
+  call check(points >= 1000000_int64/shrink, 'at least 1M point evaluations (full size)')
+  call check(sum(b_par) >= nblocks/(2*n_kinds), 'enough bad points')
+  call check(all(kind_par == kind_ser) .and. all(n_par == n_ser) .and. all(b_par == b_ser), &
+             'same blocks in both runs')
+  ndiff = count(dig_par(1, :) /= dig_ser(1, :) .or. dig_par(2, :) /= dig_ser(2, :))
+  call check(ndiff == 0, 'every block: forces and message bit for bit equal to the serial run')
+  write (*, '(i0,a,i0,a,i0,a)') nblocks, ' VFRIC blocks on ', nworkers, &
+    ' OpenMP threads and serially: ', ndiff, ' blocks differ'
+
+  deallocate (dig_par, dig_ser, kind_par, kind_ser, n_par, n_ser, b_par, b_ser, worked)
+  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
+  if (nfail > 0) error stop 1
+end program test_vfric_omp

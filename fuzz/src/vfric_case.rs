@@ -1,0 +1,603 @@
+//! One `vfric_` call (Abaqus/Explicit VFRIC, double-precision build) decoded from fuzzer bytes,
+//! with guard values around every array the library may write (`fTangential`, `statev`) and
+//! every input kept for comparison, and the properties every call must have (docs/vfric.md).
+//!
+//! Shared by the `vfric` fuzz target and `tests/fuzz_regressions_vfric.rs` (included there by
+//! path).
+
+use std::ffi::{CStr, c_char, c_int};
+
+use crate::bytes::Bytes;
+use interfacial::abi::{ifl_clear_error, ifl_last_error, vfric_};
+
+/// Written into every output entry and guard before the call, to see what the call wrote.
+pub const UNWRITTEN: f64 = -7.77e77;
+
+/// Guard entries on each side of `fTangential` and `statev`.
+pub const GUARD: usize = 4;
+
+/// Length of the shared buffers passed for the arguments VFRIC does not read (`dSlipFric`,
+/// `fTangPrev`, coordinates, …): every one of them is at most this long for the sizes drawn.
+const UNREAD_LEN: usize = 3 * 3 * 18 + 8;
+
+fn len(n: i32) -> usize {
+    usize::try_from(n).unwrap_or(0)
+}
+
+fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
+
+/// Which pointer argument is passed as NULL. VFRIC documents the ones it reads as refused when
+/// NULL (a fault of the whole call), and the others as never dereferenced (`Unread`: all of
+/// them NULL at once).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum VfricNull {
+    None,
+    FTangential,
+    FNormal,
+    FStickForce,
+    JConSlvid,
+    AreaSlv,
+    Props,
+    NContact,
+    NFricDir,
+    NProps,
+    NSlvNod,
+    Unread,
+}
+
+/// Every argument of one VFRIC call that the library may read, plus the unread ones as shared
+/// buffers. Arrays have exactly their declared lengths.
+#[derive(Clone, Debug)]
+pub struct VfricCase {
+    pub ncontact: i32,
+    pub nfricdir: i32,
+    pub nslvnod: i32,
+    pub nprops: i32,
+    /// `fNormal(nContact)`, `fStickForce(nContact)`, `jConSlvid(nContact)`.
+    pub normal: Vec<f64>,
+    pub stick: Vec<f64>,
+    pub slave: Vec<i32>,
+    /// `areaSlv(nSlvNod)`.
+    pub area: Vec<f64>,
+    /// `PROPS(nProps)`.
+    pub props: Vec<f64>,
+    /// `statev(nStateVar, nContact)` with nStateVar = 2.
+    pub statev: Vec<f64>,
+    /// Stand-in for every real array VFRIC does not read.
+    pub unread: Vec<f64>,
+    pub surf_int: Vec<u8>,
+    pub null: VfricNull,
+}
+
+/// What the call wrote: `fTangential` with `GUARD` entries each side, `statev` likewise, and
+/// the message (empty when none).
+#[derive(Clone, Debug)]
+pub struct VfricOutputs {
+    pub tangential: Vec<f64>,
+    pub statev: Vec<f64>,
+    pub message: String,
+}
+
+impl VfricOutputs {
+    /// `fTangential(d+1, k+1)` for `nFricDir = nf`.
+    pub fn force(&self, nf: usize, k: usize, d: usize) -> f64 {
+        self.tangential[GUARD + k * nf + d]
+    }
+}
+
+/// What docs/vfric.md says the call does as a whole.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Expect {
+    /// Refused; the block cannot or must not be written.
+    RefusedUnwritten,
+    /// Refused; every entry of fTangential(nFricDir, nContact) is 0.
+    RefusedZeroed,
+    /// nContact = 0: nothing to do, no message.
+    Empty,
+    /// Computed point by point.
+    Points,
+}
+
+/// The plain law-1 `PROPS` VFRIC accepts (docs/vfric.md, "Parameters", and docs/props.md),
+/// written from the documentation: `PROPS(1) = 1`; μ, τ_max, γ_crit, tolerance each finite and
+/// ≥ 0; `PROPS(3)` 0 or μ; `PROPS(7)` 0, 1 or 2; `PROPS(8..)` absent or 0.
+pub fn plain_law(props: &[f64]) -> bool {
+    let get = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
+    let range = |v: f64| v.is_finite() && v >= 0.0;
+    props.len() >= 2
+        && get(1) == 1.0
+        && [get(2), get(4), get(5), get(6)].into_iter().all(range)
+        && (get(3) == 0.0 || get(3) == get(2))
+        && matches!(get(7), 0.0 | 1.0 | 2.0)
+        && props.iter().skip(7).all(|v| *v == 0.0)
+}
+
+/// A law-1 `PROPS` of `nprops` entries, mostly a valid plain law (μ, τ_max on or off, a stick
+/// mode), now and then an anisotropic, extended, viscous, adhesive or plain bad entry.
+fn decode_props(b: &mut Bytes, nprops: usize) -> Vec<f64> {
+    let mut props: Vec<f64> = Vec::with_capacity(nprops);
+    for i in 0..nprops {
+        let sel = b.u8() % 8;
+        let v = match (i, sel) {
+            (0, 0..=6) => 1.0,
+            (1, 0..=3) => b.positive(),
+            (1, 4 | 5) => b.real().abs(),
+            (1, 6) => 0.0,
+            (2, 0..=3) => 0.0,
+            (2, 4 | 5) => props[1],
+            (2, 6) => b.real().abs(),
+            (3, 0..=3) => 0.0,
+            (3, 4 | 5) => b.positive(),
+            (3, 6) => b.real().abs(),
+            (4 | 5, 0..=5) => 0.0,
+            (4 | 5, 6) => b.positive(),
+            (6, 0..=2) => 0.0,
+            (6, 3) => 1.0,
+            (6, 4 | 5) => 2.0,
+            (6, 6) => 3.0,
+            (7.., 0..=6) => 0.0,
+            _ => b.real(),
+        };
+        props.push(v);
+    }
+    props
+}
+
+fn name(b: &mut Bytes) -> Vec<u8> {
+    let l = usize::from(b.u8());
+    let l = if l < 128 { 80 } else { l - 128 };
+    let printed = usize::from(b.u8() % 13);
+    let mut v: Vec<u8> = b
+        .bytes(l.min(printed))
+        .iter()
+        .map(|x| b'A' + x % 26)
+        .collect();
+    v.resize(l, b' ');
+    v
+}
+
+impl VfricCase {
+    /// A valid block: these `props`, normal and stick forces (equal lengths), every point on
+    /// slave node `slave[k]` of `area`, `nFricDir = nf`, interaction `"VF1"` (80 bytes).
+    pub fn block(
+        props: &[f64],
+        nf: i32,
+        normal: &[f64],
+        stick: &[f64],
+        slave: &[i32],
+        area: &[f64],
+    ) -> Self {
+        let n = normal.len();
+        let mut surf_int = b"VF1".to_vec();
+        surf_int.resize(80, b' ');
+        VfricCase {
+            ncontact: i32::try_from(n).unwrap_or(i32::MAX),
+            nfricdir: nf,
+            nslvnod: i32::try_from(area.len()).unwrap_or(i32::MAX),
+            nprops: i32::try_from(props.len()).unwrap_or(i32::MAX),
+            normal: normal.to_vec(),
+            stick: stick.to_vec(),
+            slave: slave.to_vec(),
+            area: area.to_vec(),
+            props: props.to_vec(),
+            statev: vec![3.25; 2 * n],
+            unread: vec![0.5; UNREAD_LEN],
+            surf_int,
+            null: VfricNull::None,
+        }
+    }
+
+    /// Decodes any byte string; most inputs are a valid block of a valid plain law, but every
+    /// bad shape (nContact ≤ 0, nFricDir ∉ {1, 2}, bad PROPS, slave nodes out of range, NULL
+    /// pointers) stays reachable.
+    pub fn decode(data: &[u8]) -> Self {
+        let mut b = Bytes::new(data);
+        let b = &mut b;
+        let ncontact = b.pick(&[1, 1, 2, 3, 4, 5, 8, 17, 1, 2, 3, 0, -1]);
+        let nfricdir = b.pick(&[1, 2, 1, 2, 1, 2, 1, 2, 0, 3, -1]);
+        let nslvnod = b.pick(&[1, 2, 3, 4, 8, 17, 2, 3, 0, -1]);
+        let nprops = b.pick(&[7, 7, 7, 7, 7, 7, 2, 3, 4, 5, 6, 8, 13, 20, 21, 1, 0, -1]);
+        let null = match b.u8() {
+            0 => VfricNull::FTangential,
+            1 => VfricNull::FNormal,
+            2 => VfricNull::FStickForce,
+            3 => VfricNull::JConSlvid,
+            4 => VfricNull::AreaSlv,
+            5 => VfricNull::Props,
+            6 => VfricNull::NContact,
+            7 => VfricNull::NFricDir,
+            8 => VfricNull::NProps,
+            9 => VfricNull::NSlvNod,
+            10..=40 => VfricNull::Unread,
+            _ => VfricNull::None,
+        };
+        let (n, nodes) = (len(ncontact), len(nslvnod));
+        let props = decode_props(b, len(nprops));
+        // Forces of every class; the flags make them mostly physical (F_N ≥ 0, F_stick ≥ 0)
+        // and, now and then, put μ·F_N and F_stick close together.
+        let flags = b.u8();
+        let mut normal: Vec<f64> = (0..n).map(|_| b.real()).collect();
+        let mut stick: Vec<f64> = (0..n).map(|_| b.real()).collect();
+        if flags & 1 == 0 {
+            normal.iter_mut().for_each(|x| *x = x.abs());
+        }
+        if flags & 2 == 0 {
+            stick.iter_mut().for_each(|x| *x = x.abs());
+        }
+        if flags & 12 == 0 {
+            // F_stick = μ·F_N·s, s in [0, 2]: stick and slip in equal measure.
+            let mu = props.get(1).copied().unwrap_or(0.0);
+            for (s, f) in stick.iter_mut().zip(&normal) {
+                *s = mu * f * 2.0 * b.unit();
+            }
+        }
+        let slave = (0..n)
+            .map(|_| match b.u8() {
+                x @ 0..=199 => 1 + i32::from(x) % nslvnod.max(1),
+                200..=209 => 0,
+                210..=219 => -1,
+                220..=229 => nslvnod.saturating_add(1),
+                230..=239 => i32::MAX,
+                240..=249 => i32::MIN,
+                _ => nslvnod,
+            })
+            .collect();
+        let mut area: Vec<f64> = (0..nodes).map(|_| b.real()).collect();
+        if flags & 16 == 0 {
+            area.iter_mut().for_each(|x| *x = x.abs());
+        }
+        VfricCase {
+            ncontact,
+            nfricdir,
+            nslvnod,
+            nprops,
+            normal,
+            stick,
+            slave,
+            area,
+            props,
+            statev: (0..2 * n).map(|_| b.real()).collect(),
+            unread: (0..UNREAD_LEN).map(|_| b.real()).collect(),
+            surf_int: name(b),
+            null,
+        }
+    }
+
+    /// Calls `vfric_` through its real symbol and checks every property; `Err` names the first
+    /// one violated.
+    pub fn check(&self) -> Result<VfricOutputs, String> {
+        let before = self.clone();
+        let c = self.clone();
+        let n = len(c.ncontact);
+        let nf = len(c.nfricdir);
+        let mut out = VfricOutputs {
+            tangential: vec![UNWRITTEN; nf * n + 2 * GUARD],
+            statev: [
+                vec![UNWRITTEN; GUARD],
+                c.statev.clone(),
+                vec![UNWRITTEN; GUARD],
+            ]
+            .concat(),
+            message: String::new(),
+        };
+        let null = c.null;
+        let unread = null == VfricNull::Unread;
+        let ro = |p: *const f64, which: VfricNull| {
+            if null == which || (unread && which == VfricNull::Unread) {
+                std::ptr::null()
+            } else {
+                p
+            }
+        };
+        let io = |p: *const c_int, which: VfricNull| {
+            if null == which || (unread && which == VfricNull::Unread) {
+                std::ptr::null()
+            } else {
+                p
+            }
+        };
+        let ftan = if null == VfricNull::FTangential {
+            std::ptr::null_mut()
+        } else {
+            // SAFETY: GUARD < the vector's length.
+            unsafe { out.tangential.as_mut_ptr().add(GUARD) }
+        };
+        let statev = if unread {
+            std::ptr::null_mut()
+        } else {
+            // SAFETY: as above.
+            unsafe { out.statev.as_mut_ptr().add(GUARD) }
+        };
+        let u = c.unread.as_ptr();
+        let (one, two, four): (c_int, c_int, c_int) = (1, 2, 4);
+        let ints: [c_int; 64] = [1; 64];
+        let ip = ints.as_ptr();
+        let blank = [b' '; 8];
+        let ndir = c.nfricdir.saturating_add(1);
+        ifl_clear_error();
+        // SAFETY: every array the call reads has exactly the length it declares (nContact,
+        // nSlvNod, nProps, the name's hidden length), fTangential(nFricDir, nContact) and
+        // statev(2, nContact) lie inside their guards; the arrays VFRIC does not read point to
+        // buffers longer than any of them; NULL where `null` says so.
+        unsafe {
+            vfric_(
+                ftan,
+                statev,
+                io(&one, VfricNull::Unread),
+                io(&one, VfricNull::Unread),
+                io(&c.ncontact, VfricNull::NContact),
+                io(&four, VfricNull::Unread),
+                io(&c.nslvnod, VfricNull::NSlvNod),
+                io(&four, VfricNull::Unread),
+                io(&c.nfricdir, VfricNull::NFricDir),
+                io(&ndir, VfricNull::Unread),
+                io(&two, VfricNull::Unread),
+                io(&c.nprops, VfricNull::NProps),
+                io(&one, VfricNull::Unread),
+                io(&one, VfricNull::Unread),
+                io(&one, VfricNull::Unread),
+                io(ip, VfricNull::Unread),
+                io(ip, VfricNull::Unread),
+                io(c.slave.as_ptr(), VfricNull::JConSlvid),
+                io(ip, VfricNull::Unread),
+                ro(u, VfricNull::Unread),
+                ro(u, VfricNull::Unread),
+                ro(u, VfricNull::Unread),
+                c.surf_int.as_ptr().cast::<c_char>(),
+                blank.as_ptr().cast::<c_char>(),
+                blank.as_ptr().cast::<c_char>(),
+                io(ip, VfricNull::Unread),
+                ro(u, VfricNull::Unread),
+                ro(c.stick.as_ptr(), VfricNull::FStickForce),
+                ro(u, VfricNull::Unread),
+                ro(c.normal.as_ptr(), VfricNull::FNormal),
+                ro(u, VfricNull::Unread),
+                ro(u, VfricNull::Unread),
+                ro(u, VfricNull::Unread),
+                ro(u, VfricNull::Unread),
+                ro(u, VfricNull::Unread),
+                ro(u, VfricNull::Unread),
+                ro(c.props.as_ptr(), VfricNull::Props),
+                ro(c.area.as_ptr(), VfricNull::AreaSlv),
+                ro(u, VfricNull::Unread),
+                ro(u, VfricNull::Unread),
+                ro(u, VfricNull::Unread),
+                ro(u, VfricNull::Unread),
+                c.surf_int.len(),
+                blank.len(),
+                blank.len(),
+            );
+            out.message = CStr::from_ptr(ifl_last_error())
+                .to_string_lossy()
+                .into_owned();
+        }
+        let unchanged = bits(&c.normal) == bits(&before.normal)
+            && bits(&c.stick) == bits(&before.stick)
+            && c.slave == before.slave
+            && bits(&c.area) == bits(&before.area)
+            && bits(&c.props) == bits(&before.props)
+            && bits(&c.unread) == bits(&before.unread)
+            && c.surf_int == before.surf_int
+            && ints.iter().all(|x| *x == 1)
+            && (c.ncontact, c.nfricdir, c.nslvnod, c.nprops)
+                == (
+                    before.ncontact,
+                    before.nfricdir,
+                    before.nslvnod,
+                    before.nprops,
+                );
+        if !unchanged {
+            return Err("an input argument was written".into());
+        }
+        if bits(&out.statev[GUARD..GUARD + 2 * n]) != bits(&self.statev)
+            || out.statev[..GUARD]
+                .iter()
+                .chain(&out.statev[GUARD + 2 * n..])
+                .any(|x| x.to_bits() != UNWRITTEN.to_bits())
+        {
+            return Err("statev (or around it) was written".into());
+        }
+        let t = &out.tangential;
+        if t[..GUARD]
+            .iter()
+            .chain(&t[t.len() - GUARD..])
+            .any(|x| x.to_bits() != UNWRITTEN.to_bits())
+        {
+            return Err("written outside fTangential(nFricDir, nContact)".into());
+        }
+        self.check_outputs(&out)?;
+        Ok(out)
+    }
+
+    /// `PROPS(i)`, 0 when absent.
+    fn prop(&self, i: usize) -> f64 {
+        self.props.get(i - 1).copied().unwrap_or(0.0)
+    }
+
+    fn rough(&self) -> bool {
+        self.prop(7) == 2.0
+    }
+
+    /// The force cap τ_max·A applies (docs/vfric.md: areaSlv is read only then).
+    fn needs_area(&self) -> bool {
+        self.prop(4) > 0.0 && !self.rough()
+    }
+
+    /// The whole-call outcome docs/vfric.md gives.
+    fn expect(&self) -> Expect {
+        use VfricNull as N;
+        let null = self.null;
+        if matches!(null, N::NContact | N::NFricDir)
+            || self.ncontact < 0
+            || !(self.nfricdir == 1 || self.nfricdir == 2)
+        {
+            return Expect::RefusedUnwritten;
+        }
+        let refused = if null == N::FTangential {
+            Expect::RefusedUnwritten
+        } else {
+            Expect::RefusedZeroed
+        };
+        let props_ok = null != N::NProps
+            && self.nprops >= 0
+            && (null != N::Props || self.nprops == 0)
+            && plain_law(&self.props);
+        if !props_ok {
+            return refused;
+        }
+        if self.ncontact == 0 {
+            return Expect::Empty;
+        }
+        if matches!(null, N::FTangential | N::FNormal | N::FStickForce) {
+            return refused;
+        }
+        if self.needs_area()
+            && (matches!(null, N::NSlvNod | N::JConSlvid)
+                || self.nslvnod < 0
+                || (null == N::AreaSlv && self.nslvnod > 0))
+        {
+            return refused;
+        }
+        Expect::Points
+    }
+
+    /// Point k (0-based) by the closed form of docs/vfric.md: `Ok(F)` for a valid point,
+    /// `Err(true)` for a bad point, `Err(false)` for a point whose output is 0 either way and
+    /// whose message is optional (a bad area at a point in tension, where the area is not
+    /// needed).
+    pub fn expected_force(&self, k: usize) -> Result<f64, bool> {
+        let (fnormal, fstick) = (self.normal[k], self.stick[k]);
+        if !(fnormal.is_finite() && fstick.is_finite() && fstick >= 0.0) {
+            return Err(true);
+        }
+        if self.rough() {
+            return Ok(fstick);
+        }
+        let cap = if self.needs_area() {
+            let node = usize::try_from(self.slave[k])
+                .ok()
+                .filter(|i| (1..=len(self.nslvnod)).contains(i));
+            let Some(node) = node else {
+                return Err(true);
+            };
+            let a = self.area[node - 1];
+            if !(a.is_finite() && a >= 0.0) {
+                return Err(fnormal >= 0.0);
+            }
+            self.prop(4) * a
+        } else {
+            f64::INFINITY
+        };
+        if fnormal < 0.0 {
+            return Ok(0.0);
+        }
+        Ok((self.prop(2) * fnormal).min(cap).min(fstick))
+    }
+
+    fn check_outputs(&self, out: &VfricOutputs) -> Result<(), String> {
+        let n = len(self.ncontact);
+        let nf = len(self.nfricdir);
+        let block = &out.tangential[GUARD..GUARD + nf * n];
+        let unwritten = |x: &f64| x.to_bits() == UNWRITTEN.to_bits();
+        let names = out.message.starts_with("interfacial: VFRIC: interaction '");
+        match self.expect() {
+            Expect::RefusedUnwritten | Expect::RefusedZeroed => {
+                if !names {
+                    return Err(format!(
+                        "refused without a VFRIC message: {:?}",
+                        out.message
+                    ));
+                }
+                let zeroed = self.expect() == Expect::RefusedZeroed;
+                if zeroed && block.iter().any(|x| x.to_bits() != 0) {
+                    return Err(format!("refused ({}) but the block is not +0", out.message));
+                }
+                if !zeroed && !block.iter().all(unwritten) {
+                    return Err(format!("refused ({}) and wrote the block", out.message));
+                }
+                if !out.message.contains("(block)") {
+                    return Err(format!("a call fault not named as such: {}", out.message));
+                }
+                Ok(())
+            }
+            Expect::Empty => {
+                if out.message.is_empty() {
+                    Ok(())
+                } else {
+                    Err(format!("nContact = 0 with a message: {}", out.message))
+                }
+            }
+            Expect::Points => {
+                let mut last_bad = None;
+                for k in 0..n {
+                    let f1 = out.force(nf, k, 0);
+                    if nf == 2 && out.force(nf, k, 1).to_bits() != 0 {
+                        return Err(format!(
+                            "fTangential(2,{}) = {} ≠ +0",
+                            k + 1,
+                            out.force(nf, k, 1)
+                        ));
+                    }
+                    let want = match self.expected_force(k) {
+                        Ok(f) => {
+                            if !(f1 >= -self.stick[k] && f1 <= 0.0) {
+                                return Err(format!(
+                                    "fTangential(1,{}) = {f1} outside [-fStickForce, 0]",
+                                    k + 1
+                                ));
+                            }
+                            0.0 - f
+                        }
+                        Err(bad) => {
+                            if bad {
+                                last_bad = Some(k);
+                            }
+                            0.0
+                        }
+                    };
+                    if f1.to_bits() != want.to_bits() {
+                        return Err(format!(
+                            "fTangential(1,{}) = {f1:e}, closed form {want:e} (F_N {:e}, \
+                             F_stick {:e})",
+                            k + 1,
+                            self.normal[k],
+                            self.stick[k]
+                        ));
+                    }
+                }
+                if out.message.is_empty() {
+                    return match last_bad {
+                        None => Ok(()),
+                        Some(k) => Err(format!("bad point {} without a message", k + 1)),
+                    };
+                }
+                if !names {
+                    return Err(format!("a message not naming VFRIC: {:?}", out.message));
+                }
+                // The last message names the last point reported.
+                let named = out
+                    .message
+                    .split("(contact point ")
+                    .nth(1)
+                    .and_then(|s| s.split(')').next())
+                    .and_then(|s| s.parse::<usize>().ok())
+                    .and_then(|k| k.checked_sub(1));
+                match named {
+                    Some(k)
+                        if k < n
+                            && self.expected_force(k).is_err()
+                            && last_bad.is_none_or(|b| b <= k) =>
+                    {
+                        Ok(())
+                    }
+                    _ => Err(format!(
+                        "message {:?} does not name the last bad point ({last_bad:?})",
+                        out.message
+                    )),
+                }
+            }
+        }
+    }
+}
