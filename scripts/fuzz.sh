@@ -4,16 +4,18 @@
 # fuzz/corpus/TARGET (git-ignored; reused by the next run). Any crash stops the run and is
 # written to fuzz/artifacts/TARGET; this script then exits non-zero.
 #
-# Usage: scripts/fuzz.sh TARGET [SECONDS]      TARGET: fric | gapcon | config
+# Usage: scripts/fuzz.sh TARGET [SECONDS]      TARGET: fric | gapcon | config | uinter | batch |
+#                                             fric_coef | vfric
 # Needs cargo-fuzz (cargo install cargo-fuzz --locked). The toolchain is stable: RUSTC_BOOTSTRAP=1
 # lets cargo-fuzz pass its nightly-only sanitizer flags. Extra libFuzzer flags: FUZZ_FLAGS.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-target="${1:?usage: scripts/fuzz.sh fric|gapcon|config [SECONDS]}"
+target="${1:?usage: scripts/fuzz.sh fric|gapcon|config|uinter|batch|fric_coef|vfric [SECONDS]}"
 seconds="${2:-300}"
 case "$target" in
-  fric | gapcon | config) ;;
-  *) echo "fuzz.sh: unknown target '$target' (fric, gapcon, config)" >&2; exit 2 ;;
+  fric | gapcon | config | uinter | batch | fric_coef | vfric) ;;
+  *) echo "fuzz.sh: unknown target '$target' (fric, gapcon, config, uinter, batch, fric_coef, vfric)" >&2
+    exit 2 ;;
 esac
 command -v cargo-fuzz >/dev/null 2>&1 || {
   echo "fuzz.sh: cargo-fuzz is not installed: cargo install cargo-fuzz --locked" >&2
