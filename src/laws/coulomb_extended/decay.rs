@@ -1,0 +1,424 @@
+//! The exponential-decay law's fast return map (seed 000, section 5.2.3, with
+//! μ = μ_k + (μ_s − μ_k)·exp(−d_c·γ̇_eq)): the lean isotropic elastic-stick path that
+//! [`super::ExtendedCoulomb::update`] takes first when it applies, and the local solve of the
+//! return map in the end-of-increment slip rate (a safeguarded Halley iteration).
+
+#![allow(clippy::needless_range_loop)] // index loops mirror the i, j of the seed's equations
+
+use super::*;
+
+impl ExtendedCoulomb {
+    /// (r, d_c) when [`Self::update`] can take [`Self::isotropic_decay`]: the decay law with
+    /// isotropic friction (or NFDIR = 1), elastic stick, no damping, no steady transport.
+    #[inline(always)]
+    pub(super) fn lean_decay<const N: usize>(&self) -> Option<(f64, f64)> {
+        match self.coefficient.rate() {
+            RateLaw::ExponentialDecay {
+                kinetic_ratio,
+                decay,
+            } if !self.general
+                && self.damping.is_none()
+                && self.transport.is_none()
+                && self.base.stick() == StickMode::Elastic
+                && (N == 1 || self.mu2 == self.base.mu()) =>
+            {
+                Some((kinetic_ratio, decay))
+            }
+            _ => None,
+        }
+    }
+
+    /// [`Self::update`] for the decay law, isotropic, in elastic stick, without damping or
+    /// steady transport ([`Self::lean_decay`]): the same arithmetic as the general path
+    /// (`check_inputs`, `elastic_stick` with a = 1, μ̄ = μ₁, no unscaling), without what this
+    /// case does not need: the scaled copies, the viscous stress, one evaluation of the factor
+    /// (the rate-free stiffness k̄_s and the solve's A share π(p)·Θ(θ̄)), and the θ̄ derivatives
+    /// when μ does not depend on temperature (∂τ/∂θ̄ = 0 then).
+    #[inline]
+    pub(super) fn isotropic_decay<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        theta: f64,
+        state: &ExtendedState<N>,
+        (r, d): (f64, f64),
+    ) -> Result<ExtendedUpdate<N>, LawError> {
+        // The input test of `check_inputs` (no TAULM in elastic stick, no DROT or viscous
+        // stress without damping; θ̄ is 0 when not read).
+        let mut probe = inc.pressure * 0.0 + inc.dpressure * 0.0 + inc.dtime * 0.0;
+        for i in 0..N {
+            probe += inc.tau[i] * 0.0 + inc.dgam[i] * 0.0;
+        }
+        probe += theta * 0.0;
+        if !(probe == 0.0 && state.coulomb.slip_rate >= 0.0) {
+            let conditions = Conditions {
+                temperature: theta,
+                ..Conditions::default()
+            };
+            self.name_bad_input(inc, &conditions, state)?;
+        }
+        // The time increment for rates (`rate_increment`): a rate law needs it > 0 unless μ
+        // is frozen.
+        let rate_dt = match self.hht {
+            Some(h) => h.rate_increment(inc.dtime),
+            None => inc.dtime,
+        };
+        if !self.frozen && (rate_dt.is_nan() || rate_dt <= 0.0) {
+            return Err(no_rate_increment(inc.dtime));
+        }
+        let gamma_crit = self.base.critical_slip_for(inc.characteristic_length)?;
+        // (The decay law has no table: only Θ(θ̄) reads the temperature.)
+        let with_theta = self.coefficient.has_temperature_factor();
+        let mbar = self.base.mu();
+        let tau_max = self.base.shear_limit().unwrap_or(f64::INFINITY);
+        let start_rate = state.coulomb.slip_rate;
+        let p = inc.pressure;
+        let p0 = inc.pressure - inc.dpressure;
+        // τ̄_crit(0, p, θ̄) as `critical` forms it, from f = π·Θ (φ(0) = 1).
+        let rate_free = |pressure: f64, f: [f64; 3]| -> Critical {
+            if pressure < 0.0 {
+                return Critical::default();
+            }
+            let mu = mbar * f[0];
+            if mu * pressure >= tau_max {
+                Critical {
+                    value: tau_max,
+                    ..Critical::default()
+                }
+            } else {
+                Critical {
+                    value: mu * pressure,
+                    d_rate: 0.0,
+                    d_rate2: 0.0,
+                    d_pressure: mu + mbar * f[1] * pressure,
+                    d_temperature: mbar * f[2] * pressure,
+                }
+            }
+        };
+        // Stick stiffness k̄_s = τ̄_crit(0, p, θ̄)/γ_crit at the end and at the start.
+        let factor = self.coefficient.rate_free(p, theta);
+        let k = rate_free(p, factor);
+        let k0 = rate_free(p0, self.coefficient.rate_free(p0, theta));
+        // γ^el = τ/k_s(p₀) and its θ̄-derivative (as in `elastic_stick`).
+        let (elastic_start, d_elastic_dtheta) = if k0.value > 0.0 {
+            (
+                scale(&inc.tau, gamma_crit / k0.value),
+                if with_theta {
+                    scale(
+                        &inc.tau,
+                        -gamma_crit * k0.d_temperature / (k0.value * k0.value),
+                    )
+                } else {
+                    [0.0; N]
+                },
+            )
+        } else {
+            ([0.0; N], [0.0; N])
+        };
+        let mut predictor = elastic_start;
+        for i in 0..N {
+            predictor[i] += inc.dgam[i];
+        }
+        let g = norm(&predictor);
+        let stiffness = k.value / gamma_crit;
+        let stiffness_p = k.d_pressure / gamma_crit;
+        let stiffness_theta = k.d_temperature / gamma_crit;
+        let stick_crit = if self.frozen {
+            self.critical(mbar, start_rate, p, theta)
+        } else {
+            k
+        };
+        let (traction, ddtdtheta, slip_eq, iterations) =
+            if stiffness * g <= stick_crit.value || stiffness <= 0.0 {
+                if stiffness <= 0.0 && g > gamma_crit {
+                    // No friction (p ≤ 0): zero stress, all motion beyond γ_crit is slip.
+                    let n = unit(&predictor, g);
+                    let slip_eq = g - gamma_crit;
+                    (
+                        Traction {
+                            tau: [0.0; N],
+                            ddtddg: [[0.0; N]; N],
+                            ddtddp: scale(&n, k.d_pressure),
+                            dslip: scale(&n, slip_eq),
+                            sed: 0.0,
+                            sfd: 0.0,
+                        },
+                        [0.0; N],
+                        slip_eq,
+                        0,
+                    )
+                } else {
+                    // Stick (Eq. 5.2.3-1): τ = k_s γ^pr.
+                    let mut ddtdtheta = scale(&predictor, stiffness_theta);
+                    for i in 0..N {
+                        ddtdtheta[i] += stiffness * d_elastic_dtheta[i];
+                    }
+                    (
+                        Traction {
+                            tau: scale(&predictor, stiffness),
+                            ddtddg: diag(stiffness),
+                            ddtddp: scale(&predictor, stiffness_p),
+                            dslip: [0.0; N],
+                            sed: 0.5 * stiffness * g * g,
+                            sfd: 0.0,
+                        },
+                        ddtdtheta,
+                        0.0,
+                        0,
+                    )
+                }
+            } else {
+                // Slip: k_s (γ_eq^pr − s) = τ_crit(s/Δt, p, θ̄).
+                let n = unit(&predictor, g);
+                let (slip_eq, crit, iterations) = if self.frozen {
+                    // μ frozen at the start rate: s = γ_eq^pr − τ_crit/k_s, explicit.
+                    (g - stick_crit.value / stiffness, stick_crit, 0)
+                } else {
+                    // Start from the slip at the start-of-increment rate, else from the rate-free
+                    // answer; stop at the round-off level of F (as `elastic_stick`).
+                    let guess = if start_rate > 0.0 {
+                        start_rate * rate_dt
+                    } else {
+                        g - gamma_crit
+                    };
+                    let f_tol = 8.0 * f64::EPSILON * (stiffness * g + k.value);
+                    // p ≥ 0 here (k_s > 0).
+                    self.solve_decay(factor, (r, d), mbar, p, g, stiffness, rate_dt, guess, f_tol)?
+                };
+                let t = crit.value;
+                // ∂τ_crit/∂s = (∂τ_crit/∂γ̇)/Δt (0 when frozen).
+                let t_s = if self.frozen {
+                    0.0
+                } else {
+                    crit.d_rate / rate_dt
+                };
+                let dd = stiffness + t_s;
+                if dd == 0.0 || !dd.is_finite() {
+                    return Err(rate_softening_cancels(t_s, stiffness));
+                }
+                // Implicit derivatives of s from k_s (G − s) = τ_crit(s/Δt, p, θ̄).
+                let ds_dg = stiffness / dd;
+                let ds_dp = (stiffness_p * (g - slip_eq) - crit.d_pressure) / dd;
+                let transverse = t / g;
+                // Eq. 5.2.3-3: (δ − nn) τ_crit/γ_eq^pr + nn (∂τ_crit/∂s) ∂s/∂G.
+                let mut ddtddg = [[0.0; N]; N];
+                for i in 0..N {
+                    for j in 0..N {
+                        let delta = if i == j { 1.0 } else { 0.0 };
+                        let proj = if N == 1 { 0.0 } else { delta - n[i] * n[j] };
+                        ddtddg[i][j] = transverse * proj + n[i] * n[j] * t_s * ds_dg;
+                    }
+                }
+                let dtau_dp = t_s * ds_dp + crit.d_pressure;
+                let mut ddtdtheta = [0.0; N];
+                if with_theta {
+                    // θ̄: through the start elastic slip v = ∂γ^pr/∂θ̄ and through τ_crit(·, θ̄).
+                    let ds_dtheta = (stiffness_theta * (g - slip_eq) - crit.d_temperature) / dd;
+                    let v = d_elastic_dtheta;
+                    let nv = dot(&n, &v);
+                    let dt_dtheta = t_s * (ds_dg * nv + ds_dtheta) + crit.d_temperature;
+                    for i in 0..N {
+                        let proj_v = if N == 1 { 0.0 } else { v[i] - n[i] * nv };
+                        ddtdtheta[i] = transverse * proj_v + n[i] * dt_dtheta;
+                    }
+                }
+                (
+                    Traction {
+                        tau: scale(&n, t),
+                        ddtddg,
+                        ddtddp: scale(&n, dtau_dp),
+                        dslip: scale(&n, slip_eq),
+                        // |τ|²/(2k_s).
+                        sed: 0.5 * t * t / stiffness,
+                        sfd: t * slip_eq,
+                    },
+                    ddtdtheta,
+                    slip_eq,
+                    iterations,
+                )
+            };
+        // `check_outputs` in one test: x·0 is 0 for finite x, NaN otherwise.
+        let mut probe = traction.sed * 0.0 + traction.sfd * 0.0;
+        for i in 0..N {
+            probe +=
+                (traction.tau[i] + traction.ddtddp[i] + traction.dslip[i] + ddtdtheta[i]) * 0.0;
+            for j in 0..N {
+                probe += traction.ddtddg[i][j] * 0.0;
+            }
+        }
+        if probe != 0.0 {
+            check_outputs(&traction, &ddtdtheta)?;
+        }
+        let slip = norm(&traction.dslip);
+        Ok(ExtendedUpdate {
+            contact: Contact::Motion(traction),
+            ddtdtheta,
+            state: ExtendedState {
+                coulomb: CoulombState {
+                    // Saturating at f64::MAX, as in `update`.
+                    accumulated_slip: (state.coulomb.accumulated_slip + slip).min(f64::MAX),
+                    slip_rate: if rate_dt > 0.0 {
+                        (slip_eq / rate_dt).min(f64::MAX)
+                    } else {
+                        0.0
+                    },
+                    status: if slip > 0.0 {
+                        FrictionStatus::Slip
+                    } else {
+                        FrictionStatus::Stick
+                    },
+                },
+                viscous: [0.0; N],
+            },
+            outcome: Outcome::CONVERGED,
+            iterations,
+        })
+    }
+
+    /// The decay law's local solve of k̄_s (γ̄_eq^pr − s) = τ̄_crit(s/Δt, p, θ̄) for the slip
+    /// s, with τ̄_crit = A·φ(s/Δt) below τ_max, A = μ̄·π(p)·Θ(θ̄)·p fixed during the solve (so each
+    /// evaluation is one exp and a few products); the partials in p and θ̄ are formed once, at
+    /// the root. `factor` = (π·Θ, ∂(π·Θ)/∂p, ∂(π·Θ)/∂θ̄), `law` = (r, d_c) of
+    /// [`CoefficientLaw::split_decay`]. Returns (s, τ̄_crit and its partials at s, iterations).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    pub(super) fn solve_decay(
+        &self,
+        [pt, pt_p, pt_t]: [f64; 3],
+        (r, d): (f64, f64),
+        mbar: f64,
+        p: f64,
+        g: f64,
+        stiffness: f64,
+        rate_dt: f64,
+        guess: f64,
+        f_tol: f64,
+    ) -> Result<(f64, Critical, u32), LawError> {
+        // One division per solve, not three per iteration.
+        let per_dt = 1.0 / rate_dt;
+        let x_tol = 4.0 * f64::EPSILON * g;
+        let tau_max = self.base.shear_limit().unwrap_or(f64::INFINITY);
+        let a = mbar * pt * p;
+        // φ lies between 1 (at rest) and r (fast): the root lies between the slips for the
+        // largest and the smallest of τ̄_crit, so a guess outside is moved to the nearer one.
+        // (Only the first guess: its rounding does not matter, so one division.)
+        let guess = {
+            let t_small = (a * r.min(1.0)).min(tau_max);
+            let t_large = (a * r.max(1.0)).min(tau_max);
+            let compliance = 1.0 / stiffness;
+            // max/min, not clamp: no panic on a NaN bound; the solver clips into [0, γ̄_eq^pr].
+            guess
+                .max(g - t_large * compliance)
+                .min(g - t_small * compliance)
+        };
+        // F(0) = k̄_s γ̄_eq^pr − τ̄_crit(0) > 0 (slip) and F(γ̄_eq^pr) = −τ̄_crit ≤ 0: the root is
+        // bracketed.
+        let (x, phi, dphi, iterations) =
+            decay_halley(r, d, a, tau_max, stiffness, g, per_dt, guess, x_tol, f_tol)
+                .map_err(|e| local_solve_failed(e, g, rate_dt))?;
+        let root_x = x;
+        let c = if a * phi >= tau_max {
+            Critical {
+                value: tau_max,
+                ..Critical::default()
+            }
+        } else {
+            let mp = mbar * p;
+            Critical {
+                value: a * phi,
+                d_rate: a * dphi,
+                d_rate2: 0.0,
+                d_pressure: mbar * phi * pt + mp * (phi * pt_p),
+                d_temperature: mp * (phi * pt_t),
+            }
+        };
+        Ok((root_x, c, iterations))
+    }
+}
+
+/// The decay law's local solve F(s) = k̄_s (γ̄_eq^pr − s) − min(A·φ(s/Δt), τ_max) = 0 on the
+/// bracket F(γ̄_eq^pr) ≤ 0 ≤ F(0): the safeguarded Halley iteration of
+/// [`halley_on_known_bracket`] step for step (the same tests in the same order), written out
+/// for this residual, so that the few values it carries stay in registers. Returns (s, φ, φ'
+/// at s, steps).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn decay_halley(
+    r: f64,
+    d: f64,
+    a: f64,
+    tau_max: f64,
+    stiffness: f64,
+    g: f64,
+    per_dt: f64,
+    guess: f64,
+    x_tol: f64,
+    f_tol: f64,
+) -> Result<(f64, f64, f64, u32), RootFailure> {
+    // F, F', F'' and φ, φ' at x.
+    let eval = |x: f64| {
+        let (phi, dphi, ddphi) = decay_phi(r, d, x * per_dt);
+        let tc = a * phi;
+        let f = if tc >= tau_max {
+            (stiffness * (g - x) - tau_max, -stiffness, 0.0)
+        } else {
+            (
+                stiffness * (g - x) - tc,
+                -stiffness - a * dphi * per_dt,
+                -a * ddphi * per_dt * per_dt,
+            )
+        };
+        (f, phi, dphi)
+    };
+    // Bracket [low, high] = [γ̄_eq^pr, 0] with F(low) ≤ 0 ≤ F(high).
+    let (mut low, mut high) = (g, 0.0);
+    if low == high {
+        let (_, phi, dphi) = eval(low);
+        return Ok((low, phi, dphi, 0));
+    }
+    let mut x = if guess.is_finite() {
+        guess.clamp(0.0, g)
+    } else {
+        0.5 * g
+    };
+    let mut step_before = g;
+    let mut step = step_before;
+    let ((mut fx, mut dfx, mut ddfx), mut phi, mut dphi) = eval(x);
+    for iteration in 1..=MAX_LOCAL_ITERATIONS {
+        if !(fx.is_finite() && dfx.is_finite()) {
+            return Err(RootFailure::NotConverged);
+        }
+        if fx.abs() <= f_tol {
+            return Ok((x, phi, dphi, iteration - 1));
+        }
+        if fx < 0.0 {
+            low = x;
+        } else {
+            high = x;
+        }
+        // Halley's step δ = 2ff'/(2f'² − ff''), Newton's f/f' where the curvature term would
+        // flip it; accepted when inside the bracket and at least halving the step before last.
+        let denominator = 2.0 * dfx * dfx - fx * ddfx;
+        let candidate = if denominator > 0.0 {
+            2.0 * fx * dfx / denominator
+        } else {
+            fx / dfx
+        };
+        let target = x - candidate;
+        let inside = target >= low.min(high) && target <= low.max(high);
+        let fast_enough = 2.0 * candidate.abs() <= step_before.abs();
+        if inside && fast_enough {
+            step_before = step;
+            step = candidate;
+            x = target;
+        } else {
+            step_before = step;
+            step = 0.5 * (high - low);
+            x = low + step;
+        }
+        ((fx, dfx, ddfx), phi, dphi) = eval(x);
+        if step.abs() <= x_tol {
+            return Ok((x, phi, dphi, iteration));
+        }
+    }
+    Err(RootFailure::NotConverged)
+}
