@@ -1,8 +1,9 @@
-//! Closed-form checks: the friction and thermal scenes of `shared/design/scenes.md` driven
-//! increment by increment through `fric_` and `gapcon_` (the entry points a Fortran host calls),
-//! one row per checked quantity, each compared with its closed-form answer.
+//! Closed-form checks: the friction, thermal and adhesive scenes of `shared/design/scenes.md`
+//! driven increment by increment through `fric_`, `gapcon_` and `uinter_` (the entry points a
+//! Fortran host calls), one row per checked quantity, each compared with its closed-form answer.
 
 use interfacial::abi::host::{FricCall, GapconCall};
+use interfacial::abi::uinter_host::UinterCall;
 use interfacial::abi::{IflConductance, IflStatus, ifl_gap_conductance};
 
 const MU: f64 = 0.3;
@@ -515,6 +516,118 @@ fn t2(rows: &mut Vec<Row>) {
     }
 }
 
+/// The adhesive law of A1 (seed 004) through `uinter_`: μ_d = 0.3, μ_s = 0.5, S_a = 4, N_a = 10,
+/// γ_crit = 10⁻³, K_n = 10⁴ (`PROPS` layout of docs/props.md, law 2).
+const A1_PROPS: [f64; 10] = [2.0, 0.3, 0.5, 4.0, 10.0, 0.0, 0.0, 1e-3, 0.0, 1e4];
+
+/// One quasi-static `uinter_` increment (NDIR = 3) to the normal position `h` (overclosure,
+/// positive in contact) with the tangential motion `dg` along direction 2.
+fn a1_step(u: &mut UinterCall, h: f64, dg: f64) {
+    u.rdisp[0] = h;
+    u.drdisp = [0.0, 0.0, dg];
+    u.pnewdt = 1e36;
+    u.call();
+    assert_eq!(u.pnewdt, 1e36, "{}", FricCall::last_error());
+}
+
+/// A1 adhesive pull-off through `uinter_`: bonded with a held shear S₀, pulled apart in steps
+/// until the bond breaks at N = N_a·sqrt(1 − (S₀/S_a)²) (located as a host would: coarse steps,
+/// then a cut back to the last bonded state and fine steps), the energy the bond held released
+/// as SPD, re-bonding on re-contact with the full strength; and, closed, the onset of sliding at
+/// μ_s·p + S_a.
+fn a1(rows: &mut Vec<Row>) {
+    let (s_a, n_a, k_n, gc, mu_s): (f64, f64, f64, f64, f64) = (4.0, 10.0, 1e4, 1e-3, 0.5);
+    let s0: f64 = 3.0;
+    let k_s = s_a / gc;
+    let n_break = n_a * (1.0 - (s0 / s_a) * (s0 / s_a)).sqrt();
+    let mut u = UinterCall::new(3, &A1_PROPS);
+    // Touching (p = 0) and sheared by S₀ along direction 2: bonded, k_s = S_a/γ_crit.
+    a1_step(&mut u, 0.0, s0 / k_s);
+    rows.push(Row {
+        scene: "A1",
+        case: "bonded at p = 0, shear held".into(),
+        quantity: "shear stress S₀",
+        exact: s0,
+        computed: u.stress[2],
+        tolerance: 1e-12 * s0,
+    });
+    // Pull: coarse steps of 10⁻² in N, then back to the last bonded state and steps of 10⁻⁵.
+    let mut last_bonded = u.clone();
+    let mut n_last = 0.0;
+    for (start, step) in [(0.0, 1e-2), (f64::NAN, 1e-5)] {
+        let from = if start.is_nan() { n_last } else { start };
+        u = last_bonded.clone();
+        for k in 1..=2000 {
+            let n = from + step * f64::from(k);
+            a1_step(&mut u, -n / k_n, 0.0);
+            if u.lopenclose != 1 {
+                break;
+            }
+            last_bonded = u.clone();
+            n_last = n;
+        }
+    }
+    rows.push(Row {
+        scene: "A1",
+        case: format!("pull-off with S₀ = {s0}, steps 10⁻⁵"),
+        quantity: "tension at the last bonded step",
+        exact: n_break,
+        computed: n_last,
+        tolerance: 1e-5,
+    });
+    rows.push(Row {
+        scene: "A1",
+        case: "broken bond".into(),
+        quantity: "SPD = ½S₀²/k_s + ½N²/K_n",
+        exact: 0.5 * s0 * s0 / k_s + 0.5 * n_last * n_last / k_n,
+        computed: u.energies[2],
+        tolerance: 1e-12,
+    });
+    // Re-contact bonds again with the full strengths: no shear now, so it holds up to N_a.
+    a1_step(&mut u, 1e-4, 0.0);
+    a1_step(&mut u, -0.99 * n_a / k_n, 0.0);
+    rows.push(Row {
+        scene: "A1",
+        case: "re-bonded after re-contact, pulled to 0.99 N_a".into(),
+        quantity: "normal stress −N",
+        exact: -0.99 * n_a,
+        computed: if u.lopenclose == 1 { u.stress[0] } else { 0.0 },
+        tolerance: 1e-12 * n_a,
+    });
+    a1_step(&mut u, -1.01 * n_a / k_n, 0.0);
+    rows.push(Row {
+        scene: "A1",
+        case: "re-bonded, pulled to 1.01 N_a".into(),
+        quantity: "normal stress (broken: 0)",
+        exact: 0.0,
+        computed: u.stress[0],
+        tolerance: 0.0,
+    });
+    // Sliding onset in contact at p = 100: shear ramped in steps of 1.23·10⁻²·γ_crit (not a
+    // divisor of the onset slip, so the last stick is strictly inside one step) sticks with
+    // τ = k_s·γ up to μ_s·p + S_a.
+    let p = 100.0;
+    let mut u = UinterCall::new(3, &A1_PROPS);
+    let step = 1.23e-2 * gc;
+    let k_stick = (mu_s * p + s_a) / gc;
+    let mut last_stick = 0.0;
+    for _ in 0..1000 {
+        a1_step(&mut u, p / k_n, step);
+        if u.statev[2] != 0.0 {
+            break;
+        }
+        last_stick = u.stress[2];
+    }
+    rows.push(Row {
+        scene: "A1",
+        case: format!("onset of sliding at p = {p}"),
+        quantity: "last stick stress, μ_s·p + S_a",
+        exact: mu_s * p + s_a,
+        computed: last_stick,
+        tolerance: k_stick * step,
+    });
+}
+
 /// Runs every check (the thermal ones through a configuration file written to the temporary
 /// directory and named by INTERFACIAL_CONFIG before the first `gapcon_` call).
 pub fn run() -> Result<Vec<Row>, String> {
@@ -534,6 +647,7 @@ pub fn run() -> Result<Vec<Row>, String> {
     f5(&mut rows);
     t1(&mut rows);
     t2(&mut rows);
+    a1(&mut rows);
     let _ = std::fs::remove_file(&config);
     Ok(rows)
 }

@@ -6,7 +6,8 @@
 //!     cargo run --release --example scenes -- --out DIR    # charts and CSV to DIR
 //!     cargo run --release --example scenes -- --point my.toml   # your own scene file only
 //!
-//! 1. Closed-form checks of every scene (F1, F2, F5 through `fric_`; T1, T2 through `gapcon_`).
+//! 1. Closed-form checks of every scene (F1–F5 through `fric_`; T1, T2 through `gapcon_`; A1
+//!    through `uinter_`).
 //! 2. Work-precision sweeps of the scenes in `examples/scenes/data/*.toml` (F6 stick-slip
 //!    oscillator, F1 pull through a spring, F2 circle, F4 velocity steps with the rate laws:
 //!    decay law implicit and with μ frozen, adhesive law): every method over its step sizes, error
@@ -293,7 +294,7 @@ fn main() {
     let mut failures = 0;
     let mut check_rows = Vec::new();
     if opts.point.is_none() {
-        progress.tick("closed-form checks (F1, F2, F5, T1, T2)");
+        progress.tick("closed-form checks (F1-F5, T1, T2, A1)");
         match checks::run() {
             Ok(rows) => check_rows = rows,
             Err(e) => {
