@@ -401,8 +401,8 @@ impl Coulomb {
             StickMode::Rough => (Contact::ExactStick, 0.0),
             StickMode::Elastic => {
                 let gamma_crit = self.critical_slip_if_defined(inc.characteristic_length)?;
-                let (t, slip) = self.elastic_stick(inc, gamma_crit);
-                probe += traction_probe(&t);
+                let (t, slip, results) = self.elastic_stick(inc, gamma_crit);
+                probe += results;
                 (Contact::Motion(t), slip)
             }
             StickMode::Exact => {
@@ -469,13 +469,24 @@ impl Coulomb {
 
     /// Elastic stick with the backward-Euler return map (Eq. 5.2.3-2) and its consistent
     /// linearization (Eq. 5.2.3-1 in stick, Eq. 5.2.3-3 in slip); also the slip increment
-    /// Δγ_eq^sl (0 in stick).
+    /// Δγ_eq^sl (0 in stick) and a probe that is ±0 exactly when every result is finite (for
+    /// finite inputs).
+    ///
+    /// The probe tests a few scalars instead of the results (6 of them for NFDIR = 1, 12 for
+    /// NFDIR = 2): in stick |γ^pr_i| ≤ γ_eq^pr ≤ γ_crit and in slip |n_i| ≤ 1, each up to a few
+    /// roundings, so every result is bounded by τ_crit, k_s, ∂τ_crit/∂p or Δγ_eq^sl times
+    /// 1 + (a few ε) — τ = k_s γ^pr ≤ τ_crit, (∂τ_crit/∂p/γ_crit) γ^pr ≤ ∂τ_crit/∂p,
+    /// (δ − nn) τ_crit/γ_eq^pr ≤ k_s since γ_eq^pr > γ_crit in slip — or it is SED or SFD.
+    /// Those scalars times [`HEADROOM`] finite, γ_crit, k_s and ∂τ_crit/∂p/γ_crit finite (a
+    /// product with an infinite factor and a zero one is NaN), SED and SFD finite: every result
+    /// is finite. They are ready before the slip branch's division, so the test adds little to
+    /// the call (docs/performance.md).
     #[inline(always)]
     fn elastic_stick<const N: usize>(
         &self,
         inc: &Increment<N>,
         gamma_crit: f64,
-    ) -> (Traction<N>, f64) {
+    ) -> (Traction<N>, f64, f64) {
         // Elastic slip at the start, from the start-of-increment stiffness: γ̄^el = τ̄/k_s(p − Δp).
         let (tau_crit_start, _) = self.critical_stress(inc.pressure - inc.dpressure);
         let elastic_start = if tau_crit_start > 0.0 {
@@ -488,19 +499,24 @@ impl Coulomb {
         let predictor_eq = norm(&predictor);
         let (tau_crit, dtau_crit_dp) = self.critical_stress(inc.pressure);
         let stiffness = tau_crit / gamma_crit;
+        // x·0 is ±0 for finite x and NaN otherwise.
+        let bounds = (gamma_crit * 0.0 + (tau_crit * HEADROOM) * 0.0)
+            + ((stiffness * HEADROOM) * 0.0 + (dtau_crit_dp * HEADROOM) * 0.0);
 
         if predictor_eq <= gamma_crit {
             // Stick: τ = k_s γ^pr; dτ = k_s dγ + (τ/τ_crit)(∂τ_crit/∂p) dp (Eq. 5.2.3-1), written
             // as γ^pr (∂τ_crit/∂p)/γ_crit so it stays right at p = 0.
+            let pressure_factor = dtau_crit_dp / gamma_crit;
             let t = Traction {
                 tau: scale(&predictor, stiffness),
                 ddtddg: diagonal(stiffness),
-                ddtddp: scale(&predictor, dtau_crit_dp / gamma_crit),
+                ddtddp: scale(&predictor, pressure_factor),
                 dslip: [0.0; N],
                 sed: 0.5 * stiffness * predictor_eq * predictor_eq,
                 sfd: 0.0,
             };
-            (t, 0.0)
+            let probe = bounds + (pressure_factor * 0.0 + t.sed * 0.0);
+            (t, 0.0, probe)
         } else {
             // Slip: Δγ_eq^sl = γ_eq^pr − γ_crit, τ = n τ_crit (Eq. 5.2.3-2).
             let n = unit(&predictor, predictor_eq);
@@ -515,7 +531,10 @@ impl Coulomb {
                 sed: 0.5 * tau_crit * gamma_crit,
                 sfd: tau_crit * slip_eq,
             };
-            (t, slip_eq)
+            // Δγ_eq^sl finite also means γ_eq^pr finite (not NaN): the slip branch is then the
+            // γ_eq^pr > γ_crit of the test above.
+            let probe = bounds + ((slip_eq * HEADROOM) * 0.0 + (t.sed * 0.0 + t.sfd * 0.0));
+            (t, slip_eq, probe)
         }
     }
 
@@ -572,6 +591,10 @@ impl Coulomb {
         Some((t, slip_eq))
     }
 }
+
+/// 1 + 2⁻²⁰: a bound x with x·HEADROOM finite leaves room for the few roundings (each a
+/// relative 2⁻⁵³) between x and the results it bounds ([`Coulomb::elastic_stick`]).
+pub(crate) const HEADROOM: f64 = 1.0 + 1.0 / 1_048_576.0;
 
 /// `x` capped at f64::MAX (`x` is never NaN here: a sum or quotient of finite values ≥ 0 with
 /// a positive divisor). One compare-and-select, cheaper than `f64::min`'s NaN handling.

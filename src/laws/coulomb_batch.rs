@@ -14,7 +14,7 @@
 //! [`Coulomb::update`] point by point, which gives the rare cases (the scaled norm of extreme
 //! vectors, the named error messages) exactly as before.
 
-use super::coulomb::{Coulomb, CriticalSlip, StickMode};
+use super::coulomb::{Coulomb, CriticalSlip, HEADROOM, StickMode};
 
 /// Inputs of `W` points (`[..][l]` is lane `l`).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -208,17 +208,21 @@ impl ElasticStickKernel {
         );
         out.sfd = select(stick, [0.0; W], map2(tau_crit, slip_eq, |t, s| t * s));
 
-        // The scalar path's output probe (check_traction).
-        let mut probe_out = map2(out.sed, out.sfd, |e, f| e * 0.0 + f * 0.0);
-        for a in 0..N {
-            probe_out = map3(probe_out, out.tau[a], out.ddtddp[a], |q, t, d| {
-                q + (t * 0.0 + d * 0.0)
-            });
-            probe_out = map2(probe_out, out.dslip[a], |q, d| q + d * 0.0);
-            for b in 0..N {
-                probe_out = map2(probe_out, out.ddtddg[a][b], |q, d| q + d * 0.0);
-            }
-        }
+        // The scalar path's test of its results (`Coulomb::elastic_stick`): the few scalars that
+        // bound every result, the same values lane by lane, so the kernel answers exactly when
+        // the scalar law does.
+        let common: [f64; W] = std::array::from_fn(|l| {
+            (gamma_crit[l] * 0.0 + (tau_crit[l] * HEADROOM) * 0.0)
+                + ((stiffness[l] * HEADROOM) * 0.0 + (dtau_crit_dp[l] * HEADROOM) * 0.0)
+        });
+        let branch = select(
+            stick,
+            map2(stick_dp, out.sed, |q, e| q * 0.0 + e * 0.0),
+            map3(slip_eq, out.sed, out.sfd, |s, e, f| {
+                (s * HEADROOM) * 0.0 + (e * 0.0 + f * 0.0)
+            }),
+        );
+        let probe_out = map2(common, branch, |c, b| c + b);
         // End state from the return map's slip Δγ_eq^sl (0 in stick), as the scalar path:
         // accumulated slip and slip rate, both saturating at f64::MAX.
         let slip = select(stick, [0.0; W], slip_eq);
