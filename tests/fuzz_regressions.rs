@@ -549,3 +549,28 @@ fn uinter_tangent_overflow_of_the_pressure_column_is_a_cut_back() {
     let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
     assert!(out.message.is_empty(), "{}", out.message);
 }
+
+/// Finding 14 (`fric`, a 3-minute run with a random seed, 2026-11-23): elastic stick with
+/// τ_max = f64::MIN_POSITIVE and γ_crit ≈ 4.4·10⁹, so k_s = τ_crit/γ_crit ≈ 5·10⁻³¹⁸ is subnormal
+/// and kept only five digits: τ = k_s·γ^pr came out 4.4·10⁻⁷ (relative) above τ_crit. The stick
+/// stress is now formed as τ_crit·(γ^pr/γ_crit), with γ^pr/γ_crit ≤ 1.
+const FRIC_SUBNORMAL_STIFFNESS: [u8; 98] = [
+    0, 0, 2, 50, 7, 0, 0, 7, 7, 91, 7, 7, 30, 191, 4, 175, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96,
+    96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 91, 7, 7, 30, 191, 4, 175,
+    96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96, 96,
+    96, 58, 229, 229, 229, 96, 229, 229, 229, 229, 229, 229, 96, 229, 229, 229, 229, 229, 229, 96,
+    96, 170, 3, 41,
+];
+
+#[test]
+fn fric_stick_with_a_subnormal_stiffness_stays_on_the_cone() {
+    let case = FricCase::decode(&FRIC_SUBNORMAL_STIFFNESS);
+    assert_eq!(
+        case.props[3],
+        f64::MIN_POSITIVE,
+        "the decoder changed: {case:?}"
+    );
+    let out = checked(&case);
+    succeeded(&case, &out);
+    assert!(out.tau[0].abs() <= f64::MIN_POSITIVE, "{}", out.tau[0]);
+}

@@ -475,7 +475,7 @@ impl Coulomb {
     /// The probe tests a few scalars instead of the results (6 of them for NFDIR = 1, 12 for
     /// NFDIR = 2): in stick |γ^pr_i| ≤ γ_eq^pr ≤ γ_crit and in slip |n_i| ≤ 1, each up to a few
     /// roundings, so every result is bounded by τ_crit, k_s, ∂τ_crit/∂p or Δγ_eq^sl times
-    /// 1 + (a few ε) — τ = k_s γ^pr ≤ τ_crit, (∂τ_crit/∂p/γ_crit) γ^pr ≤ ∂τ_crit/∂p,
+    /// 1 + (a few ε) — τ = τ_crit γ^pr/γ_crit ≤ τ_crit, (∂τ_crit/∂p/γ_crit) γ^pr ≤ ∂τ_crit/∂p,
     /// (δ − nn) τ_crit/γ_eq^pr ≤ k_s since γ_eq^pr > γ_crit in slip — or it is SED or SFD.
     /// Those scalars times [`HEADROOM`] finite, γ_crit, k_s and ∂τ_crit/∂p/γ_crit finite (a
     /// product with an infinite factor and a zero one is NaN), SED and SFD finite: every result
@@ -508,7 +508,10 @@ impl Coulomb {
             // as γ^pr (∂τ_crit/∂p)/γ_crit so it stays right at p = 0.
             let pressure_factor = dtau_crit_dp / gamma_crit;
             let t = Traction {
-                tau: scale(&predictor, stiffness),
+                // k_s γ^pr formed as τ_crit·(γ^pr/γ_crit): the same stress, but γ^pr/γ_crit ≤ 1
+                // keeps it within τ_crit to round-off even where k_s = τ_crit/γ_crit is subnormal
+                // (τ_max near f64::MIN_POSITIVE: fuzz target `fric`).
+                tau: std::array::from_fn(|i| predictor[i] / gamma_crit * tau_crit),
                 ddtddg: diagonal(stiffness),
                 ddtddp: scale(&predictor, pressure_factor),
                 dslip: [0.0; N],

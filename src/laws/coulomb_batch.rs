@@ -174,10 +174,11 @@ impl ElasticStickKernel {
             statev: [[0.0; W]; 3],
         };
         for a in 0..N {
-            // Stick: τ = k_s γ^pr (Eq. 5.2.3-1); slip: τ = n τ_crit (Eq. 5.2.3-2).
+            // Stick: τ = k_s γ^pr = τ_crit γ^pr/γ_crit (Eq. 5.2.3-1, formed as the scalar law
+            // does); slip: τ = n τ_crit (Eq. 5.2.3-2).
             out.tau[a] = select(
                 stick,
-                map2(predictor[a], stiffness, |x, k| x * k),
+                map3(predictor[a], gamma_crit, tau_crit, |x, g, t| x / g * t),
                 map2(n[a], tau_crit, |x, t| x * t),
             );
             // Stick: γ^pr (∂τ_crit/∂p)/γ_crit (Eq. 5.2.3-1); slip: n ∂τ_crit/∂p (Eq. 5.2.3-3).
