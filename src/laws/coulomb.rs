@@ -379,7 +379,25 @@ impl Coulomb {
         match self.try_update(inc, state) {
             Some(up) => Ok(up),
             // By value: a reference would make the hot path keep the increment in memory.
-            None => Err(self.diagnose(*inc)),
+            None => self.update_rare(*inc, *state),
+        }
+    }
+
+    /// The increments [`Self::try_update`] leaves aside: elastic stick with a stiffness
+    /// k_s = τ_crit/γ_crit below f64's normal range, where k_s·γ^pr keeps too few digits (the
+    /// stick stress is then formed as τ_crit·(γ^pr/γ_crit)), and every failure, which
+    /// [`Self::diagnose`] names.
+    #[cold]
+    #[inline(never)]
+    #[allow(clippy::needless_pass_by_value)]
+    fn update_rare<const N: usize>(
+        &self,
+        inc: Increment<N>,
+        state: CoulombState,
+    ) -> Result<Update<N>, LawError> {
+        match self.integrate(&inc, &state, true) {
+            Some(up) => Ok(up),
+            None => Err(self.diagnose(inc)),
         }
     }
 
@@ -387,11 +405,25 @@ impl Coulomb {
     /// γ_crit cannot be formed from `CHRLNGTH`, or a result overflowed. The inputs and results
     /// are tested together, with one branch, after the arithmetic (which cannot fail on
     /// non-finite values, only carry them); [`Self::update`] then says which it was.
+    /// Also `None` for elastic stick with a subnormal k_s (the stick stress is then formed
+    /// differently, by [`Self::update`]).
     #[inline(always)]
     pub(crate) fn try_update<const N: usize>(
         &self,
         inc: &Increment<N>,
         state: &CoulombState,
+    ) -> Option<Update<N>> {
+        self.integrate(inc, state, false)
+    }
+
+    /// The increment, with the stick stress of elastic stick formed for a subnormal k_s when
+    /// `small_stiffness` (else such an increment gives `None`).
+    #[inline(always)]
+    fn integrate<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        state: &CoulombState,
+        small_stiffness: bool,
     ) -> Option<Update<N>> {
         #[cfg(test)]
         crate::testing::maybe_panic();
@@ -401,7 +433,7 @@ impl Coulomb {
             StickMode::Rough => (Contact::ExactStick, 0.0),
             StickMode::Elastic => {
                 let gamma_crit = self.critical_slip_if_defined(inc.characteristic_length)?;
-                let (t, slip, results) = self.elastic_stick(inc, gamma_crit);
+                let (t, slip, results) = self.elastic_stick(inc, gamma_crit, small_stiffness);
                 probe += results;
                 (Contact::Motion(t), slip)
             }
@@ -482,10 +514,16 @@ impl Coulomb {
     /// is finite. They are ready before the slip branch's division, so the test adds little to
     /// the call (docs/performance.md).
     #[inline(always)]
+    ///
+    /// Where k_s = τ_crit/γ_crit is subnormal, k_s·γ^pr keeps too few digits (τ_max near
+    /// f64::MIN_POSITIVE: fuzz target `fric`): without `small_stiffness` the probe then fails,
+    /// with it the stick stress is τ_crit·(γ^pr/γ_crit) (γ^pr/γ_crit ≤ 1: within τ_crit to
+    /// round-off). Only the rare path pays for that division.
     fn elastic_stick<const N: usize>(
         &self,
         inc: &Increment<N>,
         gamma_crit: f64,
+        small_stiffness: bool,
     ) -> (Traction<N>, f64, f64) {
         // Elastic slip at the start, from the start-of-increment stiffness: γ̄^el = τ̄/k_s(p − Δp).
         let (tau_crit_start, _) = self.critical_stress(inc.pressure - inc.dpressure);
@@ -500,18 +538,25 @@ impl Coulomb {
         let (tau_crit, dtau_crit_dp) = self.critical_stress(inc.pressure);
         let stiffness = tau_crit / gamma_crit;
         // x·0 is ±0 for finite x and NaN otherwise.
+        let subnormal = stiffness > 0.0 && stiffness < f64::MIN_POSITIVE;
         let bounds = (gamma_crit * 0.0 + (tau_crit * HEADROOM) * 0.0)
-            + ((stiffness * HEADROOM) * 0.0 + (dtau_crit_dp * HEADROOM) * 0.0);
+            + ((stiffness * HEADROOM) * 0.0 + (dtau_crit_dp * HEADROOM) * 0.0)
+            + if subnormal && !small_stiffness {
+                f64::NAN
+            } else {
+                0.0
+            };
 
         if predictor_eq <= gamma_crit {
             // Stick: τ = k_s γ^pr; dτ = k_s dγ + (τ/τ_crit)(∂τ_crit/∂p) dp (Eq. 5.2.3-1), written
             // as γ^pr (∂τ_crit/∂p)/γ_crit so it stays right at p = 0.
             let pressure_factor = dtau_crit_dp / gamma_crit;
             let t = Traction {
-                // k_s γ^pr formed as τ_crit·(γ^pr/γ_crit): the same stress, but γ^pr/γ_crit ≤ 1
-                // keeps it within τ_crit to round-off even where k_s = τ_crit/γ_crit is subnormal
-                // (τ_max near f64::MIN_POSITIVE: fuzz target `fric`).
-                tau: std::array::from_fn(|i| predictor[i] / gamma_crit * tau_crit),
+                tau: if small_stiffness && subnormal {
+                    std::array::from_fn(|i| predictor[i] / gamma_crit * tau_crit)
+                } else {
+                    scale(&predictor, stiffness)
+                },
                 ddtddg: diagonal(stiffness),
                 ddtddp: scale(&predictor, pressure_factor),
                 dslip: [0.0; N],

@@ -174,11 +174,11 @@ impl ElasticStickKernel {
             statev: [[0.0; W]; 3],
         };
         for a in 0..N {
-            // Stick: τ = k_s γ^pr = τ_crit γ^pr/γ_crit (Eq. 5.2.3-1, formed as the scalar law
-            // does); slip: τ = n τ_crit (Eq. 5.2.3-2).
+            // Stick: τ = k_s γ^pr (Eq. 5.2.3-1; a subnormal k_s declined the chunk below);
+            // slip: τ = n τ_crit (Eq. 5.2.3-2).
             out.tau[a] = select(
                 stick,
-                map3(predictor[a], gamma_crit, tau_crit, |x, g, t| x / g * t),
+                map2(predictor[a], stiffness, |x, k| x * k),
                 map2(n[a], tau_crit, |x, t| x * t),
             );
             // Stick: γ^pr (∂τ_crit/∂p)/γ_crit (Eq. 5.2.3-1); slip: n ∂τ_crit/∂p (Eq. 5.2.3-3).
@@ -212,9 +212,13 @@ impl ElasticStickKernel {
         // The scalar path's test of its results (`Coulomb::elastic_stick`): the few scalars that
         // bound every result, the same values lane by lane, so the kernel answers exactly when
         // the scalar law does.
+        // A subnormal k_s declines the chunk: the scalar law then forms the stick stress
+        // differently (`Coulomb::update`).
         let common: [f64; W] = std::array::from_fn(|l| {
+            let subnormal = stiffness[l] > 0.0 && stiffness[l] < f64::MIN_POSITIVE;
             (gamma_crit[l] * 0.0 + (tau_crit[l] * HEADROOM) * 0.0)
                 + ((stiffness[l] * HEADROOM) * 0.0 + (dtau_crit_dp[l] * HEADROOM) * 0.0)
+                + if subnormal { f64::NAN } else { 0.0 }
         });
         let branch = select(
             stick,
