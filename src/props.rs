@@ -65,6 +65,9 @@ pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
 pub fn plain_coulomb_or_special_case(props: &[f64]) -> Option<Coulomb> {
     match <&[f64; COULOMB_NPROPS]>::try_from(props) {
         Ok(all) => coulomb_from_entries(*all),
+        // Law 1 with more than 7 entries is the extended layout: no call to find that out
+        // (the rate laws' path starts here too).
+        Err(_) if props.len() > COULOMB_NPROPS && props[0] == f64::from(LAW_COULOMB) => None,
         Err(_) => other_plain_layouts(props),
     }
 }

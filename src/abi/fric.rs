@@ -115,29 +115,16 @@ pub unsafe extern "C" fn fric_(
     if matches!(handled, Ok(true)) {
         return;
     }
-    // SAFETY: the host's pointers, passed on unchanged.
+    // SAFETY: the host's pointers, passed on unchanged. The same argument list as `fric_`, in
+    // tail position: the compiler passes the call on as a jump, with nothing to copy.
     unsafe {
         fric_general(
-            [
-                lm.cast::<f64>(),
-                tau,
-                ddtddg,
-                ddtddp,
-                dslip,
-                sed,
-                sfd,
-                ddtddt,
-                pnewdt,
-                statev,
-            ],
-            [
-                dgam, taulm, press, dpress, dtime, chrlngth, props, temp, drot, coords,
-            ],
-            [nfdir, nstatv, nprops, mcrd, noel, node, npt],
-            ciname,
-            ciname_len,
+            lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pnewdt, statev, dgam, taulm, press,
+            dpress, ddpddh, slip, kstep, kinc, time, dtime, noel, ciname, slname, msname, npt,
+            node, npatch, coords, rcoord, drot, temp, predef, nfdir, mcrd, npred, nstatv, chrlngth,
+            props, nprops, ciname_len, slname_len, msname_len,
         )
-    };
+    }
 }
 
 /// The plain law's call when everything is valid: `true` when the call is done (outputs
@@ -388,40 +375,55 @@ unsafe fn point_fast<const N: usize>(
 // extended law is still fast once here (its own fast PROPS parser, docs/benchmarks.md).
 #[cold]
 #[inline(never)]
-unsafe fn fric_general(
-    out: [*mut f64; 10],
-    input: [*const f64; 10],
-    ints: [*const c_int; 7],
+#[allow(clippy::too_many_arguments)]
+unsafe extern "C" fn fric_general(
+    lm: *mut c_int,
+    tau: *mut f64,
+    ddtddg: *mut f64,
+    ddtddp: *mut f64,
+    dslip: *mut f64,
+    sed: *mut f64,
+    sfd: *mut f64,
+    ddtddt: *mut f64,
+    pnewdt: *mut f64,
+    statev: *mut f64,
+    dgam: *const f64,
+    taulm: *const f64,
+    press: *const f64,
+    dpress: *const f64,
+    ddpddh: *const f64,
+    slip: *const f64,
+    kstep: *const c_int,
+    kinc: *const c_int,
+    time: *const f64,
+    dtime: *const f64,
+    noel: *const c_int,
     ciname: *const c_char,
+    slname: *const c_char,
+    msname: *const c_char,
+    npt: *const c_int,
+    node: *const c_int,
+    npatch: *const c_int,
+    coords: *const f64,
+    rcoord: *const f64,
+    drot: *const f64,
+    temp: *const f64,
+    predef: *const f64,
+    nfdir: *const c_int,
+    mcrd: *const c_int,
+    npred: *const c_int,
+    nstatv: *const c_int,
+    chrlngth: *const f64,
+    props: *const f64,
+    nprops: *const c_int,
     ciname_len: usize,
+    slname_len: usize,
+    msname_len: usize,
 ) {
-    let [
-        lm,
-        tau,
-        ddtddg,
-        ddtddp,
-        dslip,
-        sed,
-        sfd,
-        ddtddt,
-        pnewdt,
-        statev,
-    ] = out;
-    let [
-        dgam,
-        taulm,
-        press,
-        dpress,
-        dtime,
-        chrlngth,
-        props,
-        temp,
-        drot,
-        coords,
-    ] = input;
-    let [nfdir, nstatv, nprops, mcrd, noel, node, npt] = ints;
+    let _ = (ddpddh, slip, kstep, kinc, time, npatch, rcoord, predef);
+    let _ = (npred, slname, msname, slname_len, msname_len);
     let args = FricArgs {
-        lm: lm.cast::<c_int>(),
+        lm,
         tau,
         ddtddg,
         ddtddp,
