@@ -898,4 +898,83 @@ mod tests {
         assert_eq!(CoulombState::from_statev(&v).unwrap(), s);
         assert!(CoulombState::from_statev(&v[..2]).is_err());
     }
+
+    /// A value anywhere in the f64 range (both signs, subnormals, near f64::MAX), or zero, or an
+    /// ordinary one.
+    fn wide(state: &mut u64) -> f64 {
+        *state ^= *state << 13;
+        *state ^= *state >> 7;
+        *state ^= *state << 17;
+        let u = (*state >> 11) as f64 / (1u64 << 53) as f64;
+        let sign = if *state & 1 == 0 { 1.0 } else { -1.0 };
+        match *state % 4 {
+            0 => sign * 2f64.powf(-1074.0 + u * 2097.9),
+            1 => 0.0,
+            _ => sign * 2.0 * u,
+        }
+    }
+
+    /// The finiteness test of elastic stick looks at the scalars that bound the results, not at
+    /// the results: whatever the magnitudes, an answer has only finite results, every stress
+    /// within τ_crit to round-off, and the state is finite. (The `fric` fuzz target checks the
+    /// same through `fric_`; this runs the whole range in every `cargo test`.)
+    #[test]
+    fn elastic_stick_answers_are_finite_over_the_whole_range() {
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut answered = [0usize; 2];
+        for case in 0..200_000 {
+            let mu = wide(&mut state).abs();
+            let tau_max = if case % 3 == 0 {
+                wide(&mut state).abs()
+            } else {
+                0.0
+            };
+            let gamma = wide(&mut state).abs();
+            let Ok(law) = Coulomb::new(mu).and_then(|l| {
+                let l = l.with_critical_slip_absolute(if gamma > 0.0 { gamma } else { 1e-3 })?;
+                if tau_max > 0.0 {
+                    l.with_shear_limit(tau_max)
+                } else {
+                    Ok(l)
+                }
+            }) else {
+                continue;
+            };
+            let inc = Increment::<2> {
+                tau: [wide(&mut state), wide(&mut state)],
+                dgam: [wide(&mut state), wide(&mut state)],
+                pressure: wide(&mut state),
+                dpressure: wide(&mut state),
+                dtime: wide(&mut state).abs(),
+                ..Increment::default()
+            };
+            let start = CoulombState::default();
+            let Ok(up) = law.update(&inc, &start) else {
+                continue;
+            };
+            let Contact::Motion(t) = up.contact else {
+                panic!("elastic stick answered LM = 1");
+            };
+            let values = [t.sed, t.sfd, up.state.accumulated_slip, up.state.slip_rate];
+            let all = t
+                .tau
+                .iter()
+                .chain(&t.ddtddp)
+                .chain(&t.dslip)
+                .chain(t.ddtddg.iter().flatten());
+            assert!(
+                all.chain(&values).all(|x| x.is_finite()),
+                "case {case}: {law:?} {inc:?} gave {t:?}"
+            );
+            let (tau_crit, _) = law.critical_stress(inc.pressure);
+            let stress = t.tau[0].hypot(t.tau[1]);
+            assert!(
+                stress <= tau_crit * (1.0 + 1e-12) + f64::from_bits(1),
+                "case {case}: |τ| = {stress} above τ_crit = {tau_crit}: {law:?} {inc:?}"
+            );
+            answered[usize::from(up.state.status == FrictionStatus::Slip)] += 1;
+        }
+        // Both branches were reached often enough for the test to mean something.
+        assert!(answered[0] > 1000 && answered[1] > 1000, "{answered:?}");
+    }
 }
