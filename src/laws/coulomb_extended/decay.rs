@@ -248,7 +248,9 @@ impl ExtendedCoulomb {
         if probe != 0.0 {
             check_outputs(&traction, &ddtdtheta)?;
         }
-        let slip = norm(&traction.dslip);
+        // The return map's Δγ_eq^sl (0 in stick), not |DSLIP| again: the same value without a
+        // second square root (as the plain law's state).
+        let slip = slip_eq;
         Ok(ExtendedUpdate {
             contact: Contact::Motion(traction),
             ddtdtheta,
