@@ -95,9 +95,6 @@ pub unsafe extern "C" fn fric_(
     slname_len: usize,
     msname_len: usize,
 ) {
-    // Not read by the Coulomb law (DROT and TEMP only by the extended law: docs/props.md).
-    let _ = (ddpddh, slip, kstep, kinc, time, npatch, rcoord, predef);
-    let _ = (npred, slname, msname, slname_len, msname_len);
     // The plain law (isotropic, constant μ, PROPS(1..7), or the adhesive law's Coulomb special
     // case) with valid arguments takes one pass that tests everything with a few combined
     // branches and never builds an error; anything else (the extended law, bad arguments with
@@ -115,8 +112,9 @@ pub unsafe extern "C" fn fric_(
     if matches!(handled, Ok(true)) {
         return;
     }
-    // SAFETY: the host's pointers, passed on unchanged. The same argument list as `fric_`, in
-    // tail position: the compiler passes the call on as a jump, with nothing to copy.
+    // SAFETY: the host's pointers, passed on unchanged. The same argument list as `fric_`:
+    // packing the pointers into arrays here had cost the plain path above its register
+    // allocation (docs/performance.md, fourth pass).
     unsafe {
         fric_general(
             lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pnewdt, statev, dgam, taulm, press,
