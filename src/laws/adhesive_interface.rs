@@ -228,9 +228,12 @@ impl AdhesiveInterface {
             self.open(state)
         };
         let t = &response.shear;
+        // ∂τ_a/∂p·K_n is the host's DDSDDR(1+a,1): it can overflow where neither factor does
+        // (a slip rate over a DTIME near f64::MIN_POSITIVE with k_μ > 0: fuzz target `uinter`).
         let ok = response.normal_stress.is_finite()
             && response.sed.is_finite()
-            && super::adhesive::check_finite(t).is_ok();
+            && super::adhesive::check_finite(t).is_ok()
+            && t.ddtddp.iter().all(|d| (d * response.dp_dh).is_finite());
         if ok {
             Ok(response)
         } else {
