@@ -12,7 +12,9 @@
 //! increment. Tangents are derivatives of the end-of-increment stress with the start of the
 //! increment held fixed.
 
-use super::small_vec::{add, all_finite, diagonal, dot, norm, scale, transverse_projection, unit};
+use super::small_vec::{
+    add, all_finite, diagonal, dot, norm, scale, transverse_projection, unit, within_length,
+};
 use crate::{LawError, Outcome};
 
 /// Default slip tolerance: γ_crit = 0.005 × characteristic contact length (seed 000: "0.5% of
@@ -534,7 +536,6 @@ impl Coulomb {
         };
         // Elastic predictor γ^pr = γ̄^el + Δγ.
         let predictor = add(&elastic_start, &inc.dgam);
-        let predictor_eq = norm(&predictor);
         let (tau_crit, dtau_crit_dp) = self.critical_stress(inc.pressure);
         let stiffness = tau_crit / gamma_crit;
         // x·0 is ±0 for finite x and NaN otherwise.
@@ -547,26 +548,29 @@ impl Coulomb {
                 0.0
             };
 
-        if predictor_eq <= gamma_crit {
+        if within_length(&predictor, gamma_crit) {
             // Stick: τ = k_s γ^pr; dτ = k_s dγ + (τ/τ_crit)(∂τ_crit/∂p) dp (Eq. 5.2.3-1), written
             // as γ^pr (∂τ_crit/∂p)/γ_crit so it stays right at p = 0.
             let pressure_factor = dtau_crit_dp / gamma_crit;
+            let tau = if small_stiffness && subnormal {
+                std::array::from_fn(|i| predictor[i] / gamma_crit * tau_crit)
+            } else {
+                scale(&predictor, stiffness)
+            };
             let t = Traction {
-                tau: if small_stiffness && subnormal {
-                    std::array::from_fn(|i| predictor[i] / gamma_crit * tau_crit)
-                } else {
-                    scale(&predictor, stiffness)
-                },
+                tau,
                 ddtddg: diagonal(stiffness),
                 ddtddp: scale(&predictor, pressure_factor),
                 dslip: [0.0; N],
-                sed: 0.5 * stiffness * predictor_eq * predictor_eq,
+                // k_s|γ^pr|²/2 as τ·γ^pr/2: no square root in stick.
+                sed: 0.5 * dot(&tau, &predictor),
                 sfd: 0.0,
             };
             let probe = bounds + (pressure_factor * 0.0 + t.sed * 0.0);
             (t, 0.0, probe)
         } else {
             // Slip: Δγ_eq^sl = γ_eq^pr − γ_crit, τ = n τ_crit (Eq. 5.2.3-2).
+            let predictor_eq = norm(&predictor);
             let n = unit(&predictor, predictor_eq);
             let slip_eq = predictor_eq - gamma_crit;
             let t = Traction {

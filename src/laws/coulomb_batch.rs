@@ -152,11 +152,27 @@ impl ElasticStickKernel {
             });
             map2(elastic, inc.dgam[a], |e, g| e + g)
         });
-        let predictor_eq = norm_common(&predictor, &mut probe);
+        let (predictor_sq, predictor_eq) = norm_common(&predictor, &mut probe);
         let (tau_crit, dtau_crit_dp) = self.critical_stress(p);
         let stiffness = map2(tau_crit, gamma_crit, |t, g| t / g);
-        // Stick where γ_eq^pr ≤ γ_crit (the comparison is repeated in each select, a SIMD mask).
-        let stick = Le(predictor_eq, gamma_crit);
+        // Stick where γ_eq^pr ≤ γ_crit, decided as the scalar law decides it
+        // (`small_vec::within_length`): for N = 2 on the squares when γ_crit² is a normal
+        // number, else or when they say no on the norm. As a mask `key ≤ 0` (the comparison is
+        // repeated in each select, a SIMD mask).
+        let stick_key: [f64; W] = std::array::from_fn(|l| {
+            let g2 = gamma_crit[l] * gamma_crit[l];
+            let on_squares = (N > 1)
+                & (f64::MIN_POSITIVE..f64::INFINITY).contains(&g2)
+                & (predictor_sq[l] <= g2);
+            if on_squares | (predictor_eq[l] <= gamma_crit[l]) {
+                0.0
+            } else {
+                1.0
+            }
+        });
+        let stick = Le(stick_key, [0.0; W]);
+        let stick_tau: [[f64; W]; N] =
+            std::array::from_fn(|a| map2(predictor[a], stiffness, |x, k| x * k));
 
         // Slip (Eq. 5.2.3-2): n = γ^pr/γ_eq^pr, Δγ_eq^sl = γ_eq^pr − γ_crit.
         let n: [[f64; W]; N] =
@@ -176,11 +192,7 @@ impl ElasticStickKernel {
         for a in 0..N {
             // Stick: τ = k_s γ^pr (Eq. 5.2.3-1; a subnormal k_s declined the chunk below);
             // slip: τ = n τ_crit (Eq. 5.2.3-2).
-            out.tau[a] = select(
-                stick,
-                map2(predictor[a], stiffness, |x, k| x * k),
-                map2(n[a], tau_crit, |x, t| x * t),
-            );
+            out.tau[a] = select(stick, stick_tau[a], map2(n[a], tau_crit, |x, t| x * t));
             // Stick: γ^pr (∂τ_crit/∂p)/γ_crit (Eq. 5.2.3-1); slip: n ∂τ_crit/∂p (Eq. 5.2.3-3).
             out.ddtddp[a] = select(
                 stick,
@@ -201,10 +213,15 @@ impl ElasticStickKernel {
                 out.ddtddg[a][b] = select(stick, stick_tangent, slip_tangent);
             }
         }
-        // Stick: k_s|γ^pr|²/2; slip: |τ|²/(2k_s) with |τ| = τ_crit. Dissipation τ_crit Δγ_eq^sl.
+        // Stick: k_s|γ^pr|²/2 as τ·γ^pr/2 (the scalar `dot`, from 0.0 in the same order);
+        // slip: |τ|²/(2k_s) with |τ| = τ_crit. Dissipation τ_crit Δγ_eq^sl.
+        let mut stick_work = [0.0; W];
+        for a in 0..N {
+            stick_work = map3(stick_work, stick_tau[a], predictor[a], |w, t, x| w + t * x);
+        }
         out.sed = select(
             stick,
-            map2(stiffness, predictor_eq, |k, e| 0.5 * k * e * e),
+            stick_work.map(|w| 0.5 * w),
             map2(tau_crit, gamma_crit, |t, g| 0.5 * t * g),
         );
         out.sfd = select(stick, [0.0; W], map2(tau_crit, slip_eq, |t, s| t * s));
@@ -276,17 +293,17 @@ fn select<const W: usize>(m: Le<W>, a: [f64; W], b: [f64; W]) -> [f64; W] {
     std::array::from_fn(|l| if m.0[l] <= m.1[l] { a[l] } else { b[l] })
 }
 
-/// The Euclidean norm of each lane when the scalar `norm` (`small_vec.rs`) takes its direct
-/// path: |v₁| for N = 1; for N = 2 √(v·v) when v·v is a normal number, which √ of the same sum
+/// The sum of squares v·v (for N = 2 the scalar `dot(v, v)`, which the stick test uses) and the
+/// Euclidean norm of each lane when the scalar `norm` (`small_vec.rs`) takes its direct path: |v₁| for N = 1; for N = 2 √(v·v) when v·v is a normal number, which √ of the same sum
 /// reproduces, or 0 for the zero vector (√0 = 0). Otherwise (v·v overflowed, underflowed or is
 /// NaN) the scalar path scales the vector: such a lane adds NaN to `probe`.
 #[inline(always)]
 fn norm_common<const N: usize, const W: usize>(
     v: &[[f64; W]; N],
     probe: &mut [f64; W],
-) -> [f64; W] {
+) -> ([f64; W], [f64; W]) {
     if N == 1 {
-        return v[0].map(f64::abs);
+        return (v[0].map(|x| x * x), v[0].map(f64::abs));
     }
     // The scalar dot product starts from 0.0; 0.0 + x = x bit for bit here since x = v₀² is
     // never −0.
@@ -307,7 +324,7 @@ fn norm_common<const N: usize, const W: usize>(
     );
     let flag = select(Le(length1, [0.0; W]), [0.0; W], in_range);
     *probe = map2(*probe, flag, |q, f| q + f);
-    s.map(f64::sqrt)
+    (s, s.map(f64::sqrt))
 }
 
 /// `x` capped at f64::MAX, as the scalar path stores the state.

@@ -22,6 +22,20 @@ pub(crate) fn norm<const N: usize>(v: &[f64; N]) -> f64 {
     }
 }
 
+/// `|v| ≤ bound`, for N = 2 first on the squares, v·v ≤ bound², which needs no square root and
+/// is exact to rounding whenever bound² is a normal number (then v·v ≤ bound² bounds |v| by
+/// bound·(1 + 2ε), and an underflowed v·v means |v| below the smallest such bound); otherwise,
+/// or when the squares say no, on [`norm`]. A NaN entry gives `false`.
+#[inline(always)]
+#[must_use]
+pub(crate) fn within_length<const N: usize>(v: &[f64; N], bound: f64) -> bool {
+    if N == 1 {
+        return v[0].abs() <= bound;
+    }
+    let bound_sq = bound * bound;
+    (is_positive_normal(bound_sq) && dot(v, v) <= bound_sq) || norm(v) <= bound
+}
+
 /// `f64::MIN_POSITIVE ≤ x < ∞`, in one integer comparison of the bits (negative values, NaN,
 /// zero and subnormals all fall outside): the range test of the per-call path.
 #[inline(always)]
@@ -201,5 +215,53 @@ mod tests {
         }
         // 1-D stays exactly ±1.
         assert_eq!(unit(&[-5e-324], 5e-324), [-1.0]);
+    }
+
+    /// `within_length` against the exactly rounded length (`hypot`): the same answer except in
+    /// a band of a few ε about |v| = bound, and never "within" for |v| beyond bound·(1 + 4ε) —
+    /// the margin the Coulomb law's stick stress relies on. Vectors and bounds over the whole
+    /// f64 range, with bounds put near |v| on purpose.
+    #[test]
+    fn within_length_agrees_with_the_norm_up_to_rounding() {
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut wide = || {
+            let bits = next();
+            let exponent = (bits >> 53) % 2046 + 1;
+            f64::from_bits((exponent << 52) | (bits & ((1 << 52) - 1)))
+                * if bits & (1 << 52) == 0 { 1.0 } else { -1.0 }
+        };
+        let band = 4.0 * f64::EPSILON;
+        for i in 0..200_000 {
+            let v = [wide(), wide()];
+            let length = v[0].hypot(v[1]);
+            let bound = match i % 4 {
+                0 => wide().abs(),
+                1 => length,
+                2 => length * (1.0 + band * 2.0),
+                _ => length * (1.0 - band * 2.0),
+            };
+            if !(bound > 0.0 && bound < f64::INFINITY && length < f64::INFINITY) {
+                continue;
+            }
+            let within = within_length(&v, bound);
+            if length > bound * (1.0 + band) {
+                assert!(!within, "{v:?} within {bound}");
+            }
+            if length < bound * (1.0 - band) {
+                assert!(within, "{v:?} not within {bound}");
+            }
+        }
+        assert!(within_length(&[3.0, 4.0], 5.0));
+        assert!(!within_length(&[3.0, 4.0], 4.999_999));
+        assert!(!within_length(&[f64::NAN, 0.0], 1.0));
+        assert!(!within_length(&[f64::MAX, f64::MAX], 1e200));
+        assert!(within_length(&[1e-170, 1e-170], 1e-160));
+        assert!(!within_length(&[-2.0], 1.5));
     }
 }
