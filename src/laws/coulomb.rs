@@ -13,7 +13,7 @@
 //! increment held fixed.
 
 use super::small_vec::{
-    add, all_finite, diagonal, dot, norm, scale, transverse_projection, unit, within_length,
+    add, all_finite, diagonal, dot, length_beyond, norm, scale, transverse_projection, unit,
 };
 use crate::{LawError, Outcome};
 
@@ -548,45 +548,53 @@ impl Coulomb {
                 0.0
             };
 
-        if within_length(&predictor, gamma_crit) {
-            // Stick: τ = k_s γ^pr; dτ = k_s dγ + (τ/τ_crit)(∂τ_crit/∂p) dp (Eq. 5.2.3-1), written
-            // as γ^pr (∂τ_crit/∂p)/γ_crit so it stays right at p = 0.
-            let pressure_factor = dtau_crit_dp / gamma_crit;
-            let tau = if small_stiffness && subnormal {
-                std::array::from_fn(|i| predictor[i] / gamma_crit * tau_crit)
-            } else {
-                scale(&predictor, stiffness)
-            };
-            let t = Traction {
-                tau,
-                ddtddg: diagonal(stiffness),
-                ddtddp: scale(&predictor, pressure_factor),
-                dslip: [0.0; N],
-                // k_s|γ^pr|²/2 as τ·γ^pr/2: no square root in stick.
-                sed: 0.5 * dot(&tau, &predictor),
-                sfd: 0.0,
-            };
-            let probe = bounds + (pressure_factor * 0.0 + t.sed * 0.0);
-            (t, 0.0, probe)
-        } else {
-            // Slip: Δγ_eq^sl = γ_eq^pr − γ_crit, τ = n τ_crit (Eq. 5.2.3-2).
-            let predictor_eq = norm(&predictor);
-            let n = unit(&predictor, predictor_eq);
-            let slip_eq = predictor_eq - gamma_crit;
-            let t = Traction {
-                tau: scale(&n, tau_crit),
-                // Eq. 5.2.3-3: (δ_ij − n_i n_j) τ_crit/γ_eq^pr dγ_j + n_i ∂τ_crit/∂p dp.
-                ddtddg: transverse_projection(&n, tau_crit / predictor_eq),
-                ddtddp: scale(&n, dtau_crit_dp),
-                dslip: scale(&n, slip_eq),
-                // |τ|²/(2k_s) with |τ| = τ_crit.
-                sed: 0.5 * tau_crit * gamma_crit,
-                sfd: tau_crit * slip_eq,
-            };
-            // Δγ_eq^sl finite also means γ_eq^pr finite (not NaN): the slip branch is then the
-            // γ_eq^pr > γ_crit of the test above.
-            let probe = bounds + ((slip_eq * HEADROOM) * 0.0 + (t.sed * 0.0 + t.sfd * 0.0));
-            (t, slip_eq, probe)
+        match length_beyond(&predictor, gamma_crit) {
+            None => {
+                // Stick: τ = k_s γ^pr; dτ = k_s dγ + (τ/τ_crit)(∂τ_crit/∂p) dp (Eq. 5.2.3-1), written
+                // as γ^pr (∂τ_crit/∂p)/γ_crit so it stays right at p = 0.
+                let pressure_factor = dtau_crit_dp / gamma_crit;
+                let tau = if small_stiffness && subnormal {
+                    std::array::from_fn(|i| predictor[i] / gamma_crit * tau_crit)
+                } else {
+                    scale(&predictor, stiffness)
+                };
+                let t = Traction {
+                    tau,
+                    ddtddg: diagonal(stiffness),
+                    ddtddp: scale(&predictor, pressure_factor),
+                    dslip: [0.0; N],
+                    // k_s|γ^pr|²/2 as τ·γ^pr/2: no square root in stick.
+                    sed: 0.5 * dot(&tau, &predictor),
+                    sfd: 0.0,
+                };
+                let probe = bounds + (pressure_factor * 0.0 + t.sed * 0.0);
+                (t, 0.0, probe)
+            }
+            Some(predictor_eq) => {
+                // Slip: Δγ_eq^sl = γ_eq^pr − γ_crit, τ = n τ_crit (Eq. 5.2.3-2).
+                let n = unit(&predictor, predictor_eq);
+                let slip_eq = predictor_eq - gamma_crit;
+                let transverse = tau_crit / predictor_eq;
+                let t = Traction {
+                    tau: scale(&n, tau_crit),
+                    // Eq. 5.2.3-3: (δ_ij − n_i n_j) τ_crit/γ_eq^pr dγ_j + n_i ∂τ_crit/∂p dp; in
+                    // 2-D exactly 0 (n² = 1).
+                    ddtddg: if N == 1 {
+                        [[0.0; N]; N]
+                    } else {
+                        transverse_projection(&n, transverse)
+                    },
+                    ddtddp: scale(&n, dtau_crit_dp),
+                    dslip: scale(&n, slip_eq),
+                    // |τ|²/(2k_s) with |τ| = τ_crit.
+                    sed: 0.5 * tau_crit * gamma_crit,
+                    sfd: tau_crit * slip_eq,
+                };
+                // Δγ_eq^sl finite also means γ_eq^pr finite (not NaN): the slip branch is then the
+                // γ_eq^pr > γ_crit of the test above.
+                let probe = bounds + ((slip_eq * HEADROOM) * 0.0 + (t.sed * 0.0 + t.sfd * 0.0));
+                (t, slip_eq, probe)
+            }
         }
     }
 

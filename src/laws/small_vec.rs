@@ -22,18 +22,22 @@ pub(crate) fn norm<const N: usize>(v: &[f64; N]) -> f64 {
     }
 }
 
-/// `|v| ≤ bound`, for N = 2 first on the squares, v·v ≤ bound², which needs no square root and
-/// is exact to rounding whenever bound² is a normal number (then v·v ≤ bound² bounds |v| by
-/// bound·(1 + 2ε), and an underflowed v·v means |v| below the smallest such bound); otherwise,
-/// or when the squares say no, on [`norm`]. A NaN entry gives `false`.
+/// `None` when |v| ≤ bound, else `Some(|v|)` (`Some(NaN)` for a NaN entry). For N = 2 the test
+/// is first made on the squares, v·v ≤ bound², which needs no square root and is exact to
+/// rounding whenever bound² is a normal number (v·v ≤ bound² then bounds |v| by bound·(1 + 2ε),
+/// and an underflowed v·v means |v| below the smallest such bound); otherwise, or when the
+/// squares say no, on [`norm`], which is then returned.
 #[inline(always)]
 #[must_use]
-pub(crate) fn within_length<const N: usize>(v: &[f64; N], bound: f64) -> bool {
-    if N == 1 {
-        return v[0].abs() <= bound;
+pub(crate) fn length_beyond<const N: usize>(v: &[f64; N], bound: f64) -> Option<f64> {
+    if N > 1 {
+        let bound_sq = bound * bound;
+        if is_positive_normal(bound_sq) && dot(v, v) <= bound_sq {
+            return None;
+        }
     }
-    let bound_sq = bound * bound;
-    (is_positive_normal(bound_sq) && dot(v, v) <= bound_sq) || norm(v) <= bound
+    let length = norm(v);
+    if length <= bound { None } else { Some(length) }
 }
 
 /// `f64::MIN_POSITIVE ≤ x < ∞`, in one integer comparison of the bits (negative values, NaN,
@@ -217,12 +221,12 @@ mod tests {
         assert_eq!(unit(&[-5e-324], 5e-324), [-1.0]);
     }
 
-    /// `within_length` against the exactly rounded length (`hypot`): the same answer except in
+    /// `length_beyond` against the exactly rounded length (`hypot`): the same answer except in
     /// a band of a few ε about |v| = bound, and never "within" for |v| beyond bound·(1 + 4ε) —
     /// the margin the Coulomb law's stick stress relies on. Vectors and bounds over the whole
     /// f64 range, with bounds put near |v| on purpose.
     #[test]
-    fn within_length_agrees_with_the_norm_up_to_rounding() {
+    fn length_beyond_agrees_with_the_norm_up_to_rounding() {
         let mut state = 0x2545_f491_4f6c_dd1du64;
         let mut next = move || {
             state ^= state << 13;
@@ -249,7 +253,10 @@ mod tests {
             if !(bound > 0.0 && bound < f64::INFINITY && length < f64::INFINITY) {
                 continue;
             }
-            let within = within_length(&v, bound);
+            let within = length_beyond(&v, bound).is_none();
+            if let Some(l) = length_beyond(&v, bound) {
+                assert!(l == norm(&v), "{v:?}: {l} is not the norm");
+            }
             if length > bound * (1.0 + band) {
                 assert!(!within, "{v:?} within {bound}");
             }
@@ -257,11 +264,11 @@ mod tests {
                 assert!(within, "{v:?} not within {bound}");
             }
         }
-        assert!(within_length(&[3.0, 4.0], 5.0));
-        assert!(!within_length(&[3.0, 4.0], 4.999_999));
-        assert!(!within_length(&[f64::NAN, 0.0], 1.0));
-        assert!(!within_length(&[f64::MAX, f64::MAX], 1e200));
-        assert!(within_length(&[1e-170, 1e-170], 1e-160));
-        assert!(!within_length(&[-2.0], 1.5));
+        assert!(length_beyond(&[3.0, 4.0], 5.0).is_none());
+        assert!(length_beyond(&[3.0, 4.0], 4.999_999).is_some());
+        assert!(length_beyond(&[f64::NAN, 0.0], 1.0).is_some());
+        assert!(length_beyond(&[f64::MAX, f64::MAX], 1e200).is_some());
+        assert!(length_beyond(&[1e-170, 1e-170], 1e-160).is_none());
+        assert!(length_beyond(&[-2.0], 1.5).is_some());
     }
 }
