@@ -80,9 +80,13 @@ pub(crate) fn adhesive_fast(props: &[f64]) -> Option<FrictionLaw> {
 /// it agrees with that function followed by [`Adhesive::coulomb_special_case`]).
 #[inline]
 pub(crate) fn adhesive_coulomb_special_case(props: &[f64]) -> Option<Coulomb> {
-    // The layout a friction-only host passes (up to γ_crit): read as one array, no padding.
+    // The layouts a friction-only host passes (up to γ_crit, or up to the slip tolerance):
+    // read as one array, no padding.
     if let Ok(first_eight) = <&[f64; 8]>::try_from(props) {
-        return special_case_of_eight(*first_eight);
+        return special_case_of_friction_entries(*first_eight, 0.0);
+    }
+    if let Ok(&[e0, e1, e2, e3, e4, e5, e6, e7, tolerance]) = <&[f64; 9]>::try_from(props) {
+        return special_case_of_friction_entries([e0, e1, e2, e3, e4, e5, e6, e7], tolerance);
     }
     if props.len() < 2 || props.len() > ADHESIVE_NPROPS {
         return None;
@@ -131,11 +135,11 @@ pub(crate) fn adhesive_coulomb_special_case(props: &[f64]) -> Option<Coulomb> {
     special.then(|| Coulomb::from_validated(mu_d, 0.0, gamma_crit, tolerance, StickMode::Elastic))
 }
 
-/// [`adhesive_coulomb_special_case`] for `NPROPS = 8`: the absent entries (tolerance, K_n, the
-/// conductance flag, η, f) read as 0, which is each one's valid default, so only the eight
-/// given ones are tested.
+/// [`adhesive_coulomb_special_case`] for `NPROPS` = 8 or 9: the absent entries (the slip
+/// tolerance when `NPROPS = 8`, K_n, the conductance flag, η, f) read as 0, which is each one's
+/// valid default, so only the given ones are tested.
 #[inline(always)]
-fn special_case_of_eight(e: [f64; 8]) -> Option<Coulomb> {
+fn special_case_of_friction_entries(e: [f64; 8], tolerance: f64) -> Option<Coulomb> {
     let [code, mu_d, mu_s, sa, na, kmu, vhalf, gamma_crit] = e;
     // 0 ≤ v < ∞ for μ_d, N_a and γ_crit in one test of the top bit, as in the general case.
     let out_of_range = |v: f64| {
@@ -144,11 +148,15 @@ fn special_case_of_eight(e: [f64; 8]) -> Option<Coulomb> {
     };
     // No static coefficient: μ_s = μ_d, or −∞ < μ_s ≤ 0, which is −μ_s in range (same test).
     let static_flag = if mu_s == mu_d { 0 } else { out_of_range(-mu_s) };
-    let flags = out_of_range(mu_d) | out_of_range(na) | out_of_range(gamma_crit) | static_flag;
+    let flags = out_of_range(mu_d)
+        | out_of_range(na)
+        | out_of_range(gamma_crit)
+        | out_of_range(tolerance)
+        | static_flag;
     // S_a = k_μ = v_½ = 0 (either sign of zero): no bit but the sign bits set.
     let zeros = (sa.to_bits() | kmu.to_bits() | vhalf.to_bits()) << 1 == 0;
     let special = code == f64::from(LAW_ADHESIVE) && flags >> 63 == 0 && zeros;
-    special.then(|| Coulomb::from_validated(mu_d, 0.0, gamma_crit, 0.0, StickMode::Elastic))
+    special.then(|| Coulomb::from_validated(mu_d, 0.0, gamma_crit, tolerance, StickMode::Elastic))
 }
 
 /// [`adhesive_fast`] before the special case is recognised.
@@ -370,8 +378,8 @@ mod tests {
         fn special_case_agrees_with_the_full_parse(
             mut props in prop_oneof![
                 prop::collection::vec(special_case_entry(), 0..15),
-                // NPROPS = 8 has its own route.
-                prop::collection::vec(special_case_entry(), 8..=8),
+                // NPROPS = 8 and 9 have their own route.
+                prop::collection::vec(special_case_entry(), 8..=9),
             ],
             lead in prop::bool::ANY,
         ) {
