@@ -14,6 +14,7 @@
 
 use super::small_vec::{
     add, all_finite, diagonal, dot, length_beyond, norm, scale, transverse_projection, unit,
+    unit_unless_infinite,
 };
 use crate::{LawError, Outcome};
 
@@ -572,7 +573,7 @@ impl Coulomb {
             }
             Some(predictor_eq) => {
                 // Slip: Δγ_eq^sl = γ_eq^pr − γ_crit, τ = n τ_crit (Eq. 5.2.3-2).
-                let n = unit(&predictor, predictor_eq);
+                let n = unit_unless_infinite(&predictor, predictor_eq);
                 let slip_eq = predictor_eq - gamma_crit;
                 let transverse = tau_crit / predictor_eq;
                 let t = Traction {

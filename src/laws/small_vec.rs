@@ -110,6 +110,21 @@ pub(crate) fn unit<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
     out
 }
 
+/// [`unit`] for a caller that refuses its results when `len` is infinite (the elastic-stick
+/// slip, whose slip increment is then infinite): one comparison instead of the range test.
+#[inline(always)]
+#[must_use]
+pub(crate) fn unit_unless_infinite<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
+    if N > 1 && len < f64::MIN_POSITIVE {
+        return unit_of_extreme(*v, len);
+    }
+    let mut out = *v;
+    for x in &mut out {
+        *x /= len;
+    }
+    out
+}
+
 /// The direction of a vector whose norm `len` is subnormal or overflows (zero or NaN entries
 /// give NaN, as `v/len` would).
 #[cold]
