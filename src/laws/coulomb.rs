@@ -149,19 +149,41 @@ impl CoulombState {
     #[inline(always)]
     #[must_use]
     pub fn from_values(accumulated_slip: f64, slip_rate: f64, status: f64) -> Option<Self> {
-        if (accumulated_slip * 0.0 + slip_rate * 0.0) != 0.0 {
-            return None;
-        }
+        let state = Self::from_values_unchecked(accumulated_slip, slip_rate, status);
+        state.is_finite().then_some(state)
+    }
+
+    /// [`Self::from_values`] without the finiteness test, for a caller whose update tests the
+    /// state with its inputs (`Coulomb::try_update` does).
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn from_values_unchecked(
+        accumulated_slip: f64,
+        slip_rate: f64,
+        status: f64,
+    ) -> Self {
         let status = match status {
             1.0 => FrictionStatus::Slip,
             2.0 => FrictionStatus::ExactStick,
             _ => FrictionStatus::Stick,
         };
-        Some(CoulombState {
+        CoulombState {
             accumulated_slip,
             slip_rate,
             status,
-        })
+        }
+    }
+
+    /// `STATEV(1)` and `STATEV(2)` finite.
+    #[inline(always)]
+    fn is_finite(&self) -> bool {
+        self.probe() == 0.0
+    }
+
+    /// ±0 when both scalars are finite, NaN otherwise (x·0).
+    #[inline(always)]
+    fn probe(&self) -> f64 {
+        self.accumulated_slip * 0.0 + self.slip_rate * 0.0
     }
 
     /// Writes the state into the first [`Self::NSTATV`] entries of `statev` (nothing else).
@@ -400,7 +422,7 @@ impl Coulomb {
     ) -> Result<Update<N>, LawError> {
         match self.integrate(&inc, &state, true) {
             Some(up) => Ok(up),
-            None => Err(self.diagnose(inc)),
+            None => Err(self.diagnose(inc, &state)),
         }
     }
 
@@ -430,17 +452,25 @@ impl Coulomb {
     ) -> Option<Update<N>> {
         #[cfg(test)]
         crate::testing::maybe_panic();
-        // x·0 is ±0 for finite x and NaN otherwise: one sum tests every value at once.
-        let mut probe = input_probe(inc, self.stick);
+        // x·0 is ±0 for finite x and NaN otherwise: one sum tests every value at once. The
+        // state (STATEV) is tested with the inputs.
+        let mut probe = state.probe() + (inc.pressure * 0.0 + inc.dpressure * 0.0);
         let (contact, slip) = match self.stick {
             StickMode::Rough => (Contact::ExactStick, 0.0),
             StickMode::Elastic => {
                 let gamma_crit = self.critical_slip_if_defined(inc.characteristic_length)?;
                 let (t, slip, results) = self.elastic_stick(inc, gamma_crit, small_stiffness);
-                probe += results;
+                // Δγ is not tested on its own here: it enters γ^pr, and a non-finite γ^pr takes
+                // the slip branch with a non-finite Δγ_eq^sl, which the results' test refuses.
+                let mut inputs = inc.dtime * 0.0;
+                for x in &inc.tau {
+                    inputs += x * 0.0;
+                }
+                probe += inputs + results;
                 (Contact::Motion(t), slip)
             }
             StickMode::Exact => {
+                probe += input_probe(inc, StickMode::Exact);
                 let gamma_crit = self.critical_slip_if_defined(inc.characteristic_length)?;
                 match self.exact_stick(inc, gamma_crit) {
                     Some((t, slip)) => {
@@ -486,11 +516,14 @@ impl Coulomb {
     }
 
     /// Why [`Self::try_update`] gave `None`, tested in the order a user fixes things: a
-    /// non-finite input, then `CHRLNGTH`, then an overflow of the results.
+    /// non-finite state or input, then `CHRLNGTH`, then an overflow of the results.
     #[cold]
     #[inline(never)]
     #[allow(clippy::needless_pass_by_value)]
-    fn diagnose<const N: usize>(&self, inc: Increment<N>) -> LawError {
+    fn diagnose<const N: usize>(&self, inc: Increment<N>, state: &CoulombState) -> LawError {
+        if !state.is_finite() {
+            return corrupt_statev();
+        }
         if input_probe(&inc, self.stick) != 0.0 {
             return name_bad_input(inc, self.stick);
         }
@@ -887,6 +920,53 @@ mod tests {
             l.update(&inc, &CoulombState::default()).unwrap().contact,
             Contact::ExactStick
         );
+    }
+
+    /// The one-pass update tests Δγ through the results and the state with the inputs: every
+    /// non-finite Δγ (in stick and slip, 2-D and 3-D) and state is still refused, and named.
+    #[test]
+    fn non_finite_slip_increment_and_state_are_refused_and_named() {
+        let law = law();
+        let state = CoulombState::default();
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            for tau in [0.0, 1.0] {
+                let inc = Increment::<2> {
+                    tau: [tau, 0.0],
+                    dgam: [bad, 1e-9],
+                    pressure: 10.0,
+                    dpressure: 0.0,
+                    ..Default::default()
+                };
+                let e = law.update(&inc, &state).unwrap_err().to_string();
+                assert!(e.contains("DGAM"), "{bad}: {e}");
+                let inc = Increment::<1> {
+                    tau: [tau],
+                    dgam: [bad],
+                    pressure: 10.0,
+                    ..Default::default()
+                };
+                let e = law.update(&inc, &state).unwrap_err().to_string();
+                assert!(e.contains("DGAM"), "{bad}: {e}");
+            }
+            let inc = Increment::<2> {
+                dgam: [1e-9, 0.0],
+                pressure: 10.0,
+                ..Default::default()
+            };
+            for corrupt in [
+                CoulombState {
+                    accumulated_slip: bad,
+                    ..state
+                },
+                CoulombState {
+                    slip_rate: bad,
+                    ..state
+                },
+            ] {
+                let e = law.update(&inc, &corrupt).unwrap_err().to_string();
+                assert!(e.contains("STATEV"), "{bad}: {e}");
+            }
+        }
     }
 
     #[test]
