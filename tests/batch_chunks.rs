@@ -12,7 +12,7 @@
 use interfacial::abi::IflStatus;
 use interfacial::abi::host::FricCall;
 use interfacial::abi::ifl_fric_batch;
-use interfacial::laws::coulomb::{Contact, Coulomb, CoulombState, Increment};
+use interfacial::laws::coulomb::{Contact, Coulomb, CoulombState, FrictionStatus, Increment};
 use interfacial::laws::coulomb_batch::{ChunkInput, ElasticStickKernel};
 use proptest::prelude::*;
 
@@ -330,6 +330,8 @@ proptest! {
         extreme in any::<bool>(),
         absolute in any::<bool>(),
         tau_max in prop_oneof![Just(None), (1e-3..1e3f64).prop_map(Some)],
+        // Every ordinary lane sticks: the kernel's stick-only route (no slip work).
+        sticking in any::<bool>(),
     ) {
         let mut rng = Rng(seed | 1);
         let mut law = Coulomb::new(0.3).unwrap();
@@ -358,11 +360,17 @@ proptest! {
         let mut lanes_of = |ordinary: (f64, f64), scaled: bool| -> [f64; W] {
             std::array::from_fn(|l| draw(l, ordinary, scaled))
         };
+        // Sticking: p − Δp ≥ 0.5, so |γ̄^el| ≤ 0.05·γ_crit/0.15 and |Δγ| ≤ γ_crit/50.
+        let (tau_range, dgam_range, p_range, dp_range) = if sticking {
+            ((-0.05, 0.05), (-1e-5, 1e-5), (1.0, 40.0), (-0.5, 0.5))
+        } else {
+            ((-3.0, 3.0), (-5e-3, 5e-3), (-2.0, 40.0), (-5.0, 5.0))
+        };
         let inc = ChunkInput::<2, W> {
-            tau: [lanes_of((-3.0, 3.0), true), lanes_of((-3.0, 3.0), true)],
-            dgam: [lanes_of((-5e-3, 5e-3), true), lanes_of((-5e-3, 5e-3), true)],
-            pressure: lanes_of((-2.0, 40.0), false),
-            dpressure: lanes_of((-5.0, 5.0), false),
+            tau: [lanes_of(tau_range, true), lanes_of(tau_range, true)],
+            dgam: [lanes_of(dgam_range, true), lanes_of(dgam_range, true)],
+            pressure: lanes_of(p_range, false),
+            dpressure: lanes_of(dp_range, false),
             characteristic_length: lanes_of((0.05, 0.2), false),
             accumulated_slip: lanes_of((0.0, 1.0), false),
             slip_rate: lanes_of((0.0, 1.0), false),
@@ -388,6 +396,9 @@ proptest! {
             }
             prop_assert_eq!(out.sed[l].to_bits(), t.sed.to_bits());
             prop_assert_eq!(out.sfd[l].to_bits(), t.sfd.to_bits());
+            if sticking && !extreme {
+                prop_assert_eq!(state.status, FrictionStatus::Stick, "lane {}", l);
+            }
             let mut sv = [0.0; 3];
             state.write_statev(&mut sv);
             for (row, x) in out.statev.iter().zip(sv) {

@@ -105,6 +105,10 @@ impl ElasticStickKernel {
     ///
     /// Every line is one operation on all `W` lanes (`[f64; W]` arrays), the shape the
     /// compiler's SLP vectoriser turns into SIMD instructions.
+    ///
+    /// A chunk whose lanes all stick by the test on the squares (the common case of a closed,
+    /// sticking contact) skips the slip branch's square roots and divisions: the same code with
+    /// the stick mask known to be all set, so its answer is the same bit for bit.
     #[inline(always)]
     #[must_use]
     pub fn update<const N: usize, const W: usize>(
@@ -112,6 +116,55 @@ impl ElasticStickKernel {
         inc: &ChunkInput<N, W>,
         dtime: f64,
     ) -> Option<ChunkOutput<N, W>> {
+        let gamma_crit = self.gamma_crit(inc);
+        let predictor = self.predictor(inc, &gamma_crit);
+        if all_stick_on_squares(&predictor, &gamma_crit) {
+            self.update_lanes::<N, W, true>(inc, dtime, &gamma_crit, &predictor)
+        } else {
+            self.update_lanes::<N, W, false>(inc, dtime, &gamma_crit, &predictor)
+        }
+    }
+
+    /// γ_crit lane by lane: absolute, or tolerance × CHRLNGTH (a bad CHRLNGTH is refused by
+    /// [`Self::update_lanes`]'s probe).
+    #[inline(always)]
+    fn gamma_crit<const N: usize, const W: usize>(&self, inc: &ChunkInput<N, W>) -> [f64; W] {
+        match self.absolute {
+            Some(g) => [g; W],
+            None => inc.characteristic_length.map(|c| self.tolerance * c),
+        }
+    }
+
+    /// Elastic predictor γ^pr = γ̄^el + Δγ with γ̄^el = τ̄·(γ_crit/τ_crit(p − Δp)), 0 without
+    /// friction at the start.
+    #[inline(always)]
+    fn predictor<const N: usize, const W: usize>(
+        &self,
+        inc: &ChunkInput<N, W>,
+        gamma_crit: &[f64; W],
+    ) -> [[f64; W]; N] {
+        let (tau_crit_start, _) =
+            self.critical_stress(map2(inc.pressure, inc.dpressure, |p, dp| p - dp));
+        let start_factor = map2(*gamma_crit, tau_crit_start, |g, t| g / t);
+        std::array::from_fn(|a| {
+            let elastic = map3(inc.tau[a], start_factor, tau_crit_start, |t, f, c| {
+                if c > 0.0 { t * f } else { 0.0 }
+            });
+            map2(elastic, inc.dgam[a], |e, g| e + g)
+        })
+    }
+
+    /// [`Self::update`] from γ_crit and the predictor; with `STICK_ONLY` every lane is known
+    /// to stick.
+    #[inline(always)]
+    fn update_lanes<const N: usize, const W: usize, const STICK_ONLY: bool>(
+        &self,
+        inc: &ChunkInput<N, W>,
+        dtime: f64,
+        gamma_crit: &[f64; W],
+        predictor: &[[f64; W]; N],
+    ) -> Option<ChunkOutput<N, W>> {
+        let (gamma_crit, predictor) = (*gamma_crit, *predictor);
         let p = inc.pressure;
         let dp = inc.dpressure;
         // x·0 is ±0 for finite x and NaN otherwise: the sum over every input of every lane is 0
@@ -127,39 +180,27 @@ impl ElasticStickKernel {
         }
         // γ_crit: absolute, or tolerance × CHRLNGTH for 0 < CHRLNGTH < ∞ (else the scalar
         // path names the bad CHRLNGTH).
-        let length = inc.characteristic_length;
-        let gamma_crit: [f64; W] = match self.absolute {
-            Some(g) => [g; W],
-            None => {
-                let t = self.tolerance;
-                probe = map2(probe, length, |q, c| {
-                    q + if c > 0.0 && c < f64::INFINITY {
-                        0.0
-                    } else {
-                        f64::NAN
-                    }
-                });
-                length.map(|c| t * c)
-            }
-        };
-        // Elastic slip at the start: γ̄^el = τ̄·(γ_crit/τ_crit(p − Δp)), 0 without friction.
-        let (tau_crit_start, _) = self.critical_stress(map2(p, dp, |p, dp| p - dp));
-        let start_factor = map2(gamma_crit, tau_crit_start, |g, t| g / t);
-        // Elastic predictor γ^pr = γ̄^el + Δγ.
-        let predictor: [[f64; W]; N] = std::array::from_fn(|a| {
-            let elastic = map3(inc.tau[a], start_factor, tau_crit_start, |t, f, c| {
-                if c > 0.0 { t * f } else { 0.0 }
+        if self.absolute.is_none() {
+            probe = map2(probe, inc.characteristic_length, |q, c| {
+                q + if c > 0.0 && c < f64::INFINITY {
+                    0.0
+                } else {
+                    f64::NAN
+                }
             });
-            map2(elastic, inc.dgam[a], |e, g| e + g)
-        });
+        }
         let (predictor_sq, predictor_eq) = norm_common(&predictor, &mut probe);
         let (tau_crit, dtau_crit_dp) = self.critical_stress(p);
         let stiffness = map2(tau_crit, gamma_crit, |t, g| t / g);
         // Stick where γ_eq^pr ≤ γ_crit, decided as the scalar law decides it
-        // (`small_vec::within_length`): for N = 2 on the squares when γ_crit² is a normal
+        // (`small_vec::length_beyond`): for N = 2 on the squares when γ_crit² is a normal
         // number, else or when they say no on the norm. As a mask `key ≤ 0` (the comparison is
-        // repeated in each select, a SIMD mask).
+        // repeated in each select, a SIMD mask); all set when `STICK_ONLY`, so that the
+        // compiler drops the slip branch's work.
         let stick_key: [f64; W] = std::array::from_fn(|l| {
+            if STICK_ONLY {
+                return 0.0;
+            }
             let g2 = gamma_crit[l] * gamma_crit[l];
             let on_squares = (N > 1)
                 & (f64::MIN_POSITIVE..f64::INFINITY).contains(&g2)
@@ -264,6 +305,30 @@ impl ElasticStickKernel {
         }
         (total == 0.0).then_some(out)
     }
+}
+
+/// Every lane sticks by the first test of `small_vec::length_beyond`: v·v ≤ γ_crit² with
+/// γ_crit² normal (N = 2), |v| ≤ γ_crit (N = 1). v·v summed as [`norm_common`] sums it.
+#[inline(always)]
+fn all_stick_on_squares<const N: usize, const W: usize>(
+    predictor: &[[f64; W]; N],
+    gamma_crit: &[f64; W],
+) -> bool {
+    let mut sticks = true;
+    for l in 0..W {
+        let g = gamma_crit[l];
+        sticks &= if N == 1 {
+            predictor[0][l].abs() <= g
+        } else {
+            let mut s = predictor[0][l] * predictor[0][l];
+            for row in &predictor[1..] {
+                s += row[l] * row[l];
+            }
+            let g2 = g * g;
+            (f64::MIN_POSITIVE..f64::INFINITY).contains(&g2) & (s <= g2)
+        };
+    }
+    sticks
 }
 
 /// Lane by lane `f(a, b)`.
