@@ -548,13 +548,14 @@ impl Coulomb {
     /// Those scalars times [`HEADROOM`] finite, γ_crit, k_s and ∂τ_crit/∂p/γ_crit finite (a
     /// product with an infinite factor and a zero one is NaN), SED and SFD finite: every result
     /// is finite. They are ready before the slip branch's division, so the test adds little to
-    /// the call (docs/performance.md).
-    #[inline(always)]
+    /// the call (docs/performance.md). Stick is decided on the squares where it can be
+    /// (`small_vec::length_beyond`): |γ^pr| ≤ γ_crit·(1 + 2ε), within the same roundings.
     ///
     /// Where k_s = τ_crit/γ_crit is subnormal, k_s·γ^pr keeps too few digits (τ_max near
     /// f64::MIN_POSITIVE: fuzz target `fric`): without `small_stiffness` the probe then fails,
     /// with it the stick stress is τ_crit·(γ^pr/γ_crit) (γ^pr/γ_crit ≤ 1: within τ_crit to
     /// round-off). Only the rare path pays for that division.
+    #[inline(always)]
     fn elastic_stick<const N: usize>(
         &self,
         inc: &Increment<N>,
@@ -584,8 +585,8 @@ impl Coulomb {
 
         match length_beyond(&predictor, gamma_crit) {
             None => {
-                // Stick: τ = k_s γ^pr; dτ = k_s dγ + (τ/τ_crit)(∂τ_crit/∂p) dp (Eq. 5.2.3-1), written
-                // as γ^pr (∂τ_crit/∂p)/γ_crit so it stays right at p = 0.
+                // Stick: τ = k_s γ^pr; dτ = k_s dγ + (τ/τ_crit)(∂τ_crit/∂p) dp (Eq. 5.2.3-1),
+                // written as γ^pr (∂τ_crit/∂p)/γ_crit so it stays right at p = 0.
                 let pressure_factor = dtau_crit_dp / gamma_crit;
                 let tau = if small_stiffness && subnormal {
                     std::array::from_fn(|i| predictor[i] / gamma_crit * tau_crit)

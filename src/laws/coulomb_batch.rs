@@ -359,7 +359,8 @@ fn select<const W: usize>(m: Le<W>, a: [f64; W], b: [f64; W]) -> [f64; W] {
 }
 
 /// The sum of squares v·v (for N = 2 the scalar `dot(v, v)`, which the stick test uses) and the
-/// Euclidean norm of each lane when the scalar `norm` (`small_vec.rs`) takes its direct path: |v₁| for N = 1; for N = 2 √(v·v) when v·v is a normal number, which √ of the same sum
+/// Euclidean norm of each lane when the scalar `norm` (`small_vec.rs`) takes its direct path:
+/// |v₁| for N = 1; for N = 2 √(v·v) when v·v is a normal number, which √ of the same sum
 /// reproduces, or 0 for the zero vector (√0 = 0). Otherwise (v·v overflowed, underflowed or is
 /// NaN) the scalar path scales the vector: such a lane adds NaN to `probe`.
 #[inline(always)]
