@@ -607,7 +607,13 @@ impl Coulomb {
             }
             Some(predictor_eq) => {
                 // Slip: Δγ_eq^sl = γ_eq^pr − γ_crit, τ = n τ_crit (Eq. 5.2.3-2).
-                let n = unit_unless_infinite(&predictor, predictor_eq);
+                // In 2-D n = ±1, the sign of γ^pr: γ^pr/|γ^pr| for every γ^pr this branch can
+                // answer (finite, beyond γ_crit > 0), without the division.
+                let n = if N == 1 {
+                    [1.0f64.copysign(predictor[0]); N]
+                } else {
+                    unit_unless_infinite(&predictor, predictor_eq)
+                };
                 let slip_eq = predictor_eq - gamma_crit;
                 let transverse = tau_crit / predictor_eq;
                 let t = Traction {
