@@ -28,6 +28,20 @@ impl ExtendedCoulomb {
         }
     }
 
+    /// [`Self::update`] when it would take [`Self::isotropic_decay`] and that succeeds; `None`
+    /// otherwise (another path, or an error, which `update` names when asked). For the rate
+    /// law's fast path in `fric_`, which falls back on the checked path on `None`.
+    #[inline(always)]
+    pub(crate) fn try_update_lean_decay<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        theta: f64,
+        state: &ExtendedState<N>,
+    ) -> Option<ExtendedUpdate<N>> {
+        let decay = self.lean_decay::<N>()?;
+        self.isotropic_decay(inc, theta, state, decay).ok()
+    }
+
     /// [`Self::update`] for the decay law, isotropic, in elastic stick, without damping or
     /// steady transport ([`Self::lean_decay`]): the same arithmetic as the general path
     /// (`check_inputs`, `elastic_stick` with a = 1, μ̄ = μ₁, no unscaling), without what this
