@@ -353,9 +353,14 @@ impl ExtendedCoulomb {
 
 /// The decay law's local solve F(s) = k̄_s (γ̄_eq^pr − s) − min(A·φ(s/Δt), τ_max) = 0 on the
 /// bracket F(γ̄_eq^pr) ≤ 0 ≤ F(0): the safeguarded Halley iteration of
-/// [`halley_on_known_bracket`] step for step (the same tests in the same order), written out
-/// for this residual, so that the few values it carries stay in registers. Returns (s, φ, φ'
-/// at s, steps).
+/// [`halley_on_known_bracket`] step for step (the same tests with the same tolerances), written
+/// out for this residual, so that the few values it carries stay in registers. Returns (s, φ,
+/// φ' at s, steps).
+///
+/// For r = μ_k/μ_s ≤ 1, φ = e + r(1 − e) with e = exp(−d_c s/Δt) from `exp` alone: both
+/// terms are ≥ 0 and 1 − e is exact for e ≥ ½ (Sterbenz), so φ is as accurate as e, and the
+/// `exp_m1` branch of [`decay_phi`] (needed for r > 1, where r(1 − e) must not lose 1 − e to
+/// cancellation) is not taken.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn decay_halley(
@@ -370,21 +375,8 @@ fn decay_halley(
     x_tol: f64,
     f_tol: f64,
 ) -> Result<(f64, f64, f64, u32), RootFailure> {
-    // F, F', F'' and φ, φ' at x.
-    let eval = |x: f64| {
-        let (phi, dphi, ddphi) = decay_phi(r, d, x * per_dt);
-        let tc = a * phi;
-        let f = if tc >= tau_max {
-            (stiffness * (g - x) - tau_max, -stiffness, 0.0)
-        } else {
-            (
-                stiffness * (g - x) - tc,
-                -stiffness - a * dphi * per_dt,
-                -a * ddphi * per_dt * per_dt,
-            )
-        };
-        (f, phi, dphi)
-    };
+    let mut residual = DecayResidual::new(r, d, a, tau_max, stiffness, g, per_dt);
+    let mut eval = |x: f64| residual.eval(x);
     // Bracket [low, high] = [γ̄_eq^pr, 0] with F(low) ≤ 0 ≤ F(high).
     let (mut low, mut high) = (g, 0.0);
     if low == high {
@@ -399,18 +391,17 @@ fn decay_halley(
     let mut step_before = g;
     let mut step = step_before;
     let ((mut fx, mut dfx, mut ddfx), mut phi, mut dphi) = eval(x);
+    if fx.abs() <= f_tol {
+        return Ok((x, phi, dphi, 0));
+    }
     for iteration in 1..=MAX_LOCAL_ITERATIONS {
         if !(fx.is_finite() && dfx.is_finite()) {
             return Err(RootFailure::NotConverged);
         }
-        if fx.abs() <= f_tol {
-            return Ok((x, phi, dphi, iteration - 1));
-        }
-        if fx < 0.0 {
-            low = x;
-        } else {
-            high = x;
-        }
+        // (Selects, not branches: the side is as likely one as the other.)
+        let below = fx < 0.0;
+        low = if below { x } else { low };
+        high = if below { high } else { x };
         // Halley's step δ = 2ff'/(2f'² − ff''), Newton's f/f' where the curvature term would
         // flip it; accepted when inside the bracket and at least halving the step before last.
         let denominator = 2.0 * dfx * dfx - fx * ddfx;
@@ -432,9 +423,189 @@ fn decay_halley(
             x = low + step;
         }
         ((fx, dfx, ddfx), phi, dphi) = eval(x);
-        if step.abs() <= x_tol {
+        // Converged by the step or by the residual (the residual test of the next iteration
+        // of `halley_on_known_bracket`, made here: one exit instead of two).
+        if (step.abs() <= x_tol) | (fx.abs() <= f_tol) {
             return Ok((x, phi, dphi, iteration));
         }
     }
     Err(RootFailure::NotConverged)
+}
+
+/// F(s) of [`decay_halley`] with what it needs, and the last point where `exp` was called.
+struct DecayResidual {
+    r: f64,
+    d: f64,
+    a: f64,
+    tau_max: f64,
+    stiffness: f64,
+    g: f64,
+    per_dt: f64,
+    /// r ≤ 1: φ from e alone (see [`decay_halley`]).
+    lean: bool,
+    /// c = d_c/Δt (e = exp(−c s)), A·r, B = A(1 − r), B·c and B·c², for the lean case:
+    /// τ̄_crit = A·r + B·e, F' = −k̄_s + B·c·e, F'' = −B·c²·e.
+    c: f64,
+    ar: f64,
+    b: f64,
+    bc: f64,
+    bcc: f64,
+    /// The last x where `exp` was called (NaN before the first) and its e.
+    anchor_x: f64,
+    anchor_e: f64,
+}
+
+impl DecayResidual {
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn new(r: f64, d: f64, a: f64, tau_max: f64, stiffness: f64, g: f64, per_dt: f64) -> Self {
+        let c = d * per_dt;
+        let b = a * (1.0 - r);
+        DecayResidual {
+            r,
+            d,
+            a,
+            tau_max,
+            stiffness,
+            g,
+            per_dt,
+            lean: r <= 1.0,
+            c,
+            ar: a * r,
+            b,
+            bc: b * c,
+            bcc: b * c * c,
+            anchor_x: f64::NAN,
+            anchor_e: f64::NAN,
+        }
+    }
+
+    /// (F, F', F'') and φ, φ' at x.
+    #[inline(always)]
+    fn eval(&mut self, x: f64) -> ((f64, f64, f64), f64, f64) {
+        let Self {
+            r,
+            d,
+            a,
+            tau_max,
+            stiffness,
+            g,
+            per_dt,
+            c,
+            ..
+        } = *self;
+        if self.lean {
+            // e(x) = e(x_a)·exp(u), u = c (x_a − x): within |u| ≤ 2⁻⁸ of the last exact e,
+            // exp(u) from its Taylor series to u⁵ (the rest, u⁶/720 < 5·10⁻¹⁸, is below the
+            // rounding of e), grouped for a short chain of dependent operations; NaN (so
+            // `exp`) before the first call.
+            let u = c * (self.anchor_x - x);
+            let e = if u.abs() <= 1.0 / 256.0 {
+                let u2 = u * u;
+                let p = (u + 0.5 * u2)
+                    + (u2 * u) * ((1.0 / 6.0 + u * (1.0 / 24.0)) + u2 * (1.0 / 120.0));
+                self.anchor_e + self.anchor_e * p
+            } else {
+                let e = if x > 0.0 { (-c * x).exp() } else { 1.0 };
+                (self.anchor_x, self.anchor_e) = (x, e);
+                e
+            };
+            let tc = self.ar + self.b * e;
+            let f = if tc >= tau_max {
+                (stiffness * (g - x) - tau_max, -stiffness, 0.0)
+            } else {
+                (
+                    stiffness * (g - x) - tc,
+                    -stiffness + self.bc * e,
+                    -self.bcc * e,
+                )
+            };
+            // φ = e + r(1 − e), φ' = −d_c (1 − r) e (in the rate), as `decay_phi`.
+            (f, e + r * (1.0 - e), -d * ((1.0 - r) * e))
+        } else {
+            let (phi, dphi, ddphi) = decay_phi(r, d, x * per_dt);
+            let tc = a * phi;
+            let f = if tc >= tau_max {
+                (stiffness * (g - x) - tau_max, -stiffness, 0.0)
+            } else {
+                (
+                    stiffness * (g - x) - tc,
+                    -stiffness - a * dphi * per_dt,
+                    -a * ddphi * per_dt * per_dt,
+                )
+            };
+            (f, phi, dphi)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 4000, failure_persistence: None, ..ProptestConfig::default() })]
+
+        /// The residual's e = exp(−c·s) continued from the last exact evaluation (Taylor series
+        /// within |u| ≤ 2⁻⁸) against `exp` at the point itself: a few ulps, at any distance
+        /// inside the radius, either side, and the first call (no anchor) is `exp` itself.
+        #[test]
+        fn continued_exponential_matches_exp(
+            c in prop_oneof![1e-3..1.0f64, 1.0..1e4f64],
+            anchor in 0.0..2.0f64,
+            fraction in -1.0..1.0f64,
+        ) {
+            let mut res = DecayResidual::new(0.5, c, 1.0, f64::INFINITY, 1.0, 1.0, 1.0);
+            let x0 = anchor / c;
+            let ((..), phi0, _) = res.eval(x0);
+            let e0 = (-c * x0).exp();
+            prop_assert_eq!(phi0, e0 + 0.5 * (1.0 - e0));
+            // A point within the Taylor radius of x0 (u = c·(x0 − x)).
+            let x = x0 - fraction / 256.0 / c;
+            prop_assume!(x > 0.0);
+            let ((..), phi, dphi) = res.eval(x);
+            let exact = (-c * x).exp();
+            // φ = e + r(1 − e) and φ' = −d(1 − r)e with r = 1/2, d = c (per_dt = 1).
+            let e = -2.0 * dphi / c;
+            prop_assert!((e - exact).abs() <= 4.0 * f64::EPSILON * exact, "{e:e} vs {exact:e}");
+            prop_assert!((phi - (exact + 0.5 * (1.0 - exact))).abs() <= 4.0 * f64::EPSILON);
+        }
+
+        /// The solve's root against an independent evaluation of the residual with `exp` at the
+        /// root: F within a few times the stopping tolerance, φ and φ' those of the root, for
+        /// μ_k below and above μ_s (the continued and the `exp_m1` evaluations), with and
+        /// without τ_max, from any first guess.
+        #[test]
+        fn decay_root_has_round_off_residual(
+            r in prop_oneof![0.0..1.0f64, 1.0..4.0f64],
+            d in 0.1..50.0f64,
+            a in 1.0..100.0f64,
+            cap in prop_oneof![Just(f64::INFINITY), 0.5..150.0f64],
+            gamma_crit in 1e-4..1e-2f64,
+            over in 1.05..10.0f64,
+            dt in 1e-3..1.0f64,
+            guess_fraction in -0.5..1.5f64,
+        ) {
+            let stiffness = a / gamma_crit;
+            // Slipping: k·g above τ_crit at rest (φ = 1), capped by τ_max.
+            let g = over * a.min(cap) / stiffness;
+            let per_dt = 1.0 / dt;
+            let f_tol = 8.0 * f64::EPSILON * (stiffness * g + a);
+            let x_tol = 4.0 * f64::EPSILON * g;
+            let Ok((x, phi, dphi, _)) =
+                decay_halley(r, d, a, cap, stiffness, g, per_dt, guess_fraction * g, x_tol, f_tol)
+            else {
+                return Err(TestCaseError::fail("no convergence"));
+            };
+            let e = (-d * (x * per_dt)).exp();
+            let phi_exact = e + r * (1.0 - e);
+            let f = stiffness * (g - x) - (a * phi_exact).min(cap);
+            // Stopped by the step (the residual then is the slope times that step) or by F.
+            let slope = stiffness + a * d * (1.0 - r).abs() * per_dt;
+            prop_assert!(f.abs() <= 4.0 * f_tol + 4.0 * slope * x_tol, "F = {f:e}, tol {f_tol:e}");
+            prop_assert!((phi - phi_exact).abs() <= 8.0 * f64::EPSILON * phi_exact.max(1.0));
+            prop_assert!((dphi + d * (1.0 - r) * e).abs() <= 8.0 * f64::EPSILON * d * (1.0 - r).abs().max(1.0));
+        }
+    }
 }
