@@ -79,6 +79,8 @@ impl ExtendedCoulomb {
         if !self.frozen && (rate_dt.is_nan() || rate_dt <= 0.0) {
             return Err(no_rate_increment(inc.dtime));
         }
+        // (∞ when frozen with Δt = 0: then unused.)
+        let per_dt = 1.0 / rate_dt;
         let gamma_crit = self.base.critical_slip_for(inc.characteristic_length)?;
         // (The decay law has no table: only Θ(θ̄) reads the temperature.)
         let with_theta = self.coefficient.has_temperature_factor();
@@ -196,22 +198,25 @@ impl ExtendedCoulomb {
                     };
                     let f_tol = 8.0 * f64::EPSILON * (stiffness * g + k.value);
                     // p ≥ 0 here (k_s > 0).
-                    self.solve_decay(factor, (r, d), mbar, p, g, stiffness, rate_dt, guess, f_tol)?
+                    self.solve_decay(factor, (r, d), mbar, p, g, stiffness, per_dt, guess, f_tol)
+                        .map_err(|e| local_solve_failed(e, g, rate_dt))?
                 };
                 let t = crit.value;
                 // ∂τ_crit/∂s = (∂τ_crit/∂γ̇)/Δt (0 when frozen).
                 let t_s = if self.frozen {
                     0.0
                 } else {
-                    crit.d_rate / rate_dt
+                    crit.d_rate * per_dt
                 };
                 let dd = stiffness + t_s;
                 if dd == 0.0 || !dd.is_finite() {
                     return Err(rate_softening_cancels(t_s, stiffness));
                 }
                 // Implicit derivatives of s from k_s (G − s) = τ_crit(s/Δt, p, θ̄).
-                let ds_dg = stiffness / dd;
-                let ds_dp = (stiffness_p * (g - slip_eq) - crit.d_pressure) / dd;
+                // One division for the three implicit derivatives.
+                let per_dd = 1.0 / dd;
+                let ds_dg = stiffness * per_dd;
+                let ds_dp = (stiffness_p * (g - slip_eq) - crit.d_pressure) * per_dd;
                 let transverse = t / g;
                 // Eq. 5.2.3-3: (δ − nn) τ_crit/γ_eq^pr + nn (∂τ_crit/∂s) ∂s/∂G.
                 let mut ddtddg = [[0.0; N]; N];
@@ -226,7 +231,7 @@ impl ExtendedCoulomb {
                 let mut ddtdtheta = [0.0; N];
                 if with_theta {
                     // θ̄: through the start elastic slip v = ∂γ^pr/∂θ̄ and through τ_crit(·, θ̄).
-                    let ds_dtheta = (stiffness_theta * (g - slip_eq) - crit.d_temperature) / dd;
+                    let ds_dtheta = (stiffness_theta * (g - slip_eq) - crit.d_temperature) * per_dd;
                     let v = d_elastic_dtheta;
                     let nv = dot(&n, &v);
                     let dt_dtheta = t_s * (ds_dg * nv + ds_dtheta) + crit.d_temperature;
@@ -305,12 +310,10 @@ impl ExtendedCoulomb {
         p: f64,
         g: f64,
         stiffness: f64,
-        rate_dt: f64,
+        per_dt: f64,
         guess: f64,
         f_tol: f64,
-    ) -> Result<(f64, Critical, u32), LawError> {
-        // One division per solve, not three per iteration.
-        let per_dt = 1.0 / rate_dt;
+    ) -> Result<(f64, Critical, u32), RootFailure> {
         let x_tol = 4.0 * f64::EPSILON * g;
         let tau_max = self.base.shear_limit().unwrap_or(f64::INFINITY);
         let a = mbar * pt * p;
@@ -329,8 +332,7 @@ impl ExtendedCoulomb {
         // F(0) = k̄_s γ̄_eq^pr − τ̄_crit(0) > 0 (slip) and F(γ̄_eq^pr) = −τ̄_crit ≤ 0: the root is
         // bracketed.
         let (x, phi, dphi, iterations) =
-            decay_halley(r, d, a, tau_max, stiffness, g, per_dt, guess, x_tol, f_tol)
-                .map_err(|e| local_solve_failed(e, g, rate_dt))?;
+            decay_halley(r, d, a, tau_max, stiffness, g, per_dt, guess, x_tol, f_tol)?;
         let root_x = x;
         let c = if a * phi >= tau_max {
             Critical {
@@ -398,10 +400,10 @@ fn decay_halley(
         if !(fx.is_finite() && dfx.is_finite()) {
             return Err(RootFailure::NotConverged);
         }
-        // (Selects, not branches: the side is as likely one as the other.)
+        // Selects on the bits, not branches: the side is as likely one as the other.
         let below = fx < 0.0;
-        low = if below { x } else { low };
-        high = if below { high } else { x };
+        low = select(below, x, low);
+        high = select(below, high, x);
         // Halley's step δ = 2ff'/(2f'² − ff''), Newton's f/f' where the curvature term would
         // flip it; accepted when inside the bracket and at least halving the step before last.
         let denominator = 2.0 * dfx * dfx - fx * ddfx;
@@ -430,6 +432,13 @@ fn decay_halley(
         }
     }
     Err(RootFailure::NotConverged)
+}
+
+/// `if c { a } else { b }` as bit operations, so that the compiler makes no branch of it.
+#[inline(always)]
+fn select(c: bool, a: f64, b: f64) -> f64 {
+    let mask = u64::from(c).wrapping_neg();
+    f64::from_bits((a.to_bits() & mask) | (b.to_bits() & !mask))
 }
 
 /// F(s) of [`decay_halley`] with what it needs, and the last point where `exp` was called.
