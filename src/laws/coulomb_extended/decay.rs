@@ -324,10 +324,12 @@ impl ExtendedCoulomb {
             let t_small = (a * r.min(1.0)).min(tau_max);
             let t_large = (a * r.max(1.0)).min(tau_max);
             let compliance = 1.0 / stiffness;
-            // max/min, not clamp: no panic on a NaN bound; the solver clips into [0, γ̄_eq^pr].
-            guess
-                .max(g - t_large * compliance)
-                .min(g - t_small * compliance)
+            let (low, high) = (g - t_large * compliance, g - t_small * compliance);
+            // Comparisons, not `f64::max`/`min` (whose NaN rules cost a few operations on the
+            // way to the first exp; a NaN bound leaves the guess alone all the same), not
+            // `clamp` (no panic on a NaN bound); the solver clips into [0, γ̄_eq^pr].
+            let guess = if guess < low { low } else { guess };
+            if guess > high { high } else { guess }
         };
         // F(0) = k̄_s γ̄_eq^pr − τ̄_crit(0) > 0 (slip) and F(γ̄_eq^pr) = −τ̄_crit ≤ 0: the root is
         // bracketed.
@@ -385,8 +387,10 @@ fn decay_halley(
         let (_, phi, dphi) = eval(low);
         return Ok((low, phi, dphi, 0));
     }
+    // Into [0, γ̄_eq^pr] (g > 0 here) with comparisons: `clamp` tests its bounds.
     let mut x = if guess.is_finite() {
-        guess.clamp(0.0, g)
+        let x = if guess > 0.0 { guess } else { 0.0 };
+        if x < g { x } else { g }
     } else {
         0.5 * g
     };
