@@ -105,7 +105,12 @@ impl FricArgs {
                 coulomb,
                 viscous: [0.0; N],
             };
-            let Some(up) = law.try_update_lean_decay(&inc, theta, &state) else {
+            // (Always `Some` for the laws of `extended_decay_lean`.) An error is named by the
+            // checked path, which meets it again.
+            let Some(decay) = law.lean_decay::<N>() else {
+                return false;
+            };
+            let Ok(up) = law.isotropic_decay(&inc, theta, &state, decay) else {
                 return false;
             };
             // DDTDDT(a,1) and DDTDDT(a,2): each surface temperature carries half of ∂τ/∂θ̄.

@@ -11,7 +11,7 @@ impl ExtendedCoulomb {
     /// (r, d_c) when [`Self::update`] can take [`Self::isotropic_decay`]: the decay law with
     /// isotropic friction (or NFDIR = 1), elastic stick, no damping, no steady transport.
     #[inline(always)]
-    pub(super) fn lean_decay<const N: usize>(&self) -> Option<(f64, f64)> {
+    pub(crate) fn lean_decay<const N: usize>(&self) -> Option<(f64, f64)> {
         match self.coefficient.rate() {
             RateLaw::ExponentialDecay {
                 kinetic_ratio,
@@ -28,20 +28,6 @@ impl ExtendedCoulomb {
         }
     }
 
-    /// [`Self::update`] when it would take [`Self::isotropic_decay`] and that succeeds; `None`
-    /// otherwise (another path, or an error, which `update` names when asked). For the rate
-    /// law's fast path in `fric_`, which falls back on the checked path on `None`.
-    #[inline(always)]
-    pub(crate) fn try_update_lean_decay<const N: usize>(
-        &self,
-        inc: &Increment<N>,
-        theta: f64,
-        state: &ExtendedState<N>,
-    ) -> Option<ExtendedUpdate<N>> {
-        let decay = self.lean_decay::<N>()?;
-        self.isotropic_decay(inc, theta, state, decay).ok()
-    }
-
     /// [`Self::update`] for the decay law, isotropic, in elastic stick, without damping or
     /// steady transport ([`Self::lean_decay`]): the same arithmetic as the general path
     /// (`check_inputs`, `elastic_stick` with a = 1, μ̄ = μ₁, no unscaling), without what this
@@ -49,7 +35,7 @@ impl ExtendedCoulomb {
     /// (the rate-free stiffness k̄_s and the solve's A share π(p)·Θ(θ̄)), and the θ̄ derivatives
     /// when μ does not depend on temperature (∂τ/∂θ̄ = 0 then).
     #[inline]
-    pub(super) fn isotropic_decay<const N: usize>(
+    pub(crate) fn isotropic_decay<const N: usize>(
         &self,
         inc: &Increment<N>,
         theta: f64,
