@@ -330,6 +330,11 @@ fn extended_props_padded(props: &[f64]) -> Option<[f64; COULOMB_EXTENDED_NPROPS 
 pub(crate) fn extended_decay_lean(
     props: &[f64; COULOMB_EXTENDED_NPROPS],
 ) -> Option<ExtendedCoulomb> {
+    // PROPS(8) first: the other extended layouts (constant μ with HHT, damping, anisotropy,
+    // the μ table) leave here with one test.
+    if props[7] != 1.0 {
+        return None;
+    }
     let [
         code,
         mu,
