@@ -366,34 +366,74 @@ fn decay_halley(
     f_tol: f64,
 ) -> Result<(f64, f64, f64, u32), RootFailure> {
     let mut residual = DecayResidual::new(r, d, a, tau_max, stiffness, g, per_dt);
-    let mut eval = |x: f64| residual.eval(x);
     // Bracket [low, high] = [γ̄_eq^pr, 0] with F(low) ≤ 0 ≤ F(high).
-    let (mut low, mut high) = (g, 0.0);
+    let (low, high) = (g, 0.0);
     if low == high {
-        let (_, phi, dphi) = eval(low);
+        let (_, phi, dphi) = residual.eval::<false>(low);
         return Ok((low, phi, dphi, 0));
     }
     // Into [0, γ̄_eq^pr] (g > 0 here) with comparisons: `clamp` tests its bounds.
-    let mut x = if guess.is_finite() {
+    let x = if guess.is_finite() {
         let x = if guess > 0.0 { guess } else { 0.0 };
         if x < g { x } else { g }
     } else {
         0.5 * g
     };
-    let mut step_before = g;
-    let mut step = step_before;
-    let ((mut fx, mut dfx, mut ddfx), mut phi, mut dphi) = eval(x);
-    if fx.abs() <= f_tol {
+    let mut it = HalleyState {
+        x,
+        low,
+        high,
+        step: g,
+        step_before: g,
+        f: (0.0, 0.0, 0.0),
+    };
+    let (f, mut phi, mut dphi) = residual.eval::<false>(x);
+    it.f = f;
+    if f.0.abs() <= f_tol {
         return Ok((x, phi, dphi, 0));
     }
-    for iteration in 1..=MAX_LOCAL_ITERATIONS {
+    // The first step is peeled off: it is too long for the continued exponential (`exp` at
+    // its end), the later ones are not, so the residual's radius test is not made there.
+    it.step()?;
+    (it.f, phi, dphi) = residual.eval::<false>(it.x);
+    // Converged by the step or by the residual (the residual test of the next iteration of
+    // `halley_on_known_bracket`, made here: one exit instead of two).
+    if (it.step.abs() <= x_tol) | (it.f.0.abs() <= f_tol) {
+        return Ok((it.x, phi, dphi, 1));
+    }
+    for iteration in 2..=MAX_LOCAL_ITERATIONS {
+        it.step()?;
+        (it.f, phi, dphi) = residual.eval::<true>(it.x);
+        if (it.step.abs() <= x_tol) | (it.f.0.abs() <= f_tol) {
+            return Ok((it.x, phi, dphi, iteration));
+        }
+    }
+    Err(RootFailure::NotConverged)
+}
+
+/// The iterate of [`decay_halley`]: x, the bracket, the last two steps, (F, F', F'') at x.
+struct HalleyState {
+    x: f64,
+    low: f64,
+    high: f64,
+    step: f64,
+    step_before: f64,
+    f: (f64, f64, f64),
+}
+
+impl HalleyState {
+    /// One safeguarded Halley step from x (the bracket updated with F(x) first).
+    #[inline(always)]
+    fn step(&mut self) -> Result<(), RootFailure> {
+        let (fx, dfx, ddfx) = self.f;
         if !(fx.is_finite() && dfx.is_finite()) {
             return Err(RootFailure::NotConverged);
         }
         // Selects on the bits, not branches: the side is as likely one as the other.
         let below = fx < 0.0;
-        low = select(below, x, low);
-        high = select(below, high, x);
+        self.low = select(below, self.x, self.low);
+        self.high = select(below, self.high, self.x);
+        let (low, high) = (self.low, self.high);
         // Halley's step δ = 2ff'/(2f'² − ff''), Newton's f/f' where the curvature term would
         // flip it; accepted when inside the bracket and at least halving the step before last.
         let denominator = 2.0 * dfx * dfx - fx * ddfx;
@@ -402,26 +442,19 @@ fn decay_halley(
         } else {
             fx / dfx
         };
-        let target = x - candidate;
+        let target = self.x - candidate;
         let inside = target >= low.min(high) && target <= low.max(high);
-        let fast_enough = 2.0 * candidate.abs() <= step_before.abs();
+        let fast_enough = 2.0 * candidate.abs() <= self.step_before.abs();
+        self.step_before = self.step;
         if inside && fast_enough {
-            step_before = step;
-            step = candidate;
-            x = target;
+            self.step = candidate;
+            self.x = target;
         } else {
-            step_before = step;
-            step = 0.5 * (high - low);
-            x = low + step;
+            self.step = 0.5 * (high - low);
+            self.x = low + self.step;
         }
-        ((fx, dfx, ddfx), phi, dphi) = eval(x);
-        // Converged by the step or by the residual (the residual test of the next iteration
-        // of `halley_on_known_bracket`, made here: one exit instead of two).
-        if (step.abs() <= x_tol) | (fx.abs() <= f_tol) {
-            return Ok((x, phi, dphi, iteration));
-        }
+        Ok(())
     }
-    Err(RootFailure::NotConverged)
 }
 
 /// `if c { a } else { b }` as bit operations, so that the compiler makes no branch of it.
@@ -479,9 +512,10 @@ impl DecayResidual {
         }
     }
 
-    /// (F, F', F'') and φ, φ' at x.
+    /// (F, F', F'') and φ, φ' at x. With `CONTINUE`, e within the radius of the last `exp`
+    /// is continued from it.
     #[inline(always)]
-    fn eval(&mut self, x: f64) -> ((f64, f64, f64), f64, f64) {
+    fn eval<const CONTINUE: bool>(&mut self, x: f64) -> ((f64, f64, f64), f64, f64) {
         let Self {
             r,
             d,
@@ -499,7 +533,7 @@ impl DecayResidual {
             // rounding of e), grouped for a short chain of dependent operations; NaN (so
             // `exp`) before the first call.
             let u = c * (self.anchor_x - x);
-            let e = if u.abs() <= 1.0 / 256.0 {
+            let e = if CONTINUE && u.abs() <= 1.0 / 256.0 {
                 let u2 = u * u;
                 let p = (u + 0.5 * u2)
                     + (u2 * u) * ((1.0 / 6.0 + u * (1.0 / 24.0)) + u2 * (1.0 / 120.0));
