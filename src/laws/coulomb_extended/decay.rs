@@ -591,13 +591,13 @@ mod tests {
         ) {
             let mut res = DecayResidual::new(0.5, c, 1.0, f64::INFINITY, 1.0, 1.0, 1.0);
             let x0 = anchor / c;
-            let ((..), phi0, _) = res.eval(x0);
+            let ((..), phi0, _) = res.eval::<false>(x0);
             let e0 = (-c * x0).exp();
             prop_assert_eq!(phi0, e0 + 0.5 * (1.0 - e0));
             // A point within the Taylor radius of x0 (u = c·(x0 − x)).
             let x = x0 - fraction / 256.0 / c;
             prop_assume!(x > 0.0);
-            let ((..), phi, dphi) = res.eval(x);
+            let ((..), phi, dphi) = res.eval::<true>(x);
             let exact = (-c * x).exp();
             // φ = e + r(1 − e) and φ' = −d(1 − r)e with r = 1/2, d = c (per_dt = 1).
             let e = -2.0 * dphi / c;
