@@ -813,7 +813,7 @@ impl ExtendedCoulomb {
                     mbar,
                     p,
                     g,
-                    stiffness,
+                    (stiffness, 1.0 / stiffness),
                     1.0 / rate_dt,
                     guess,
                     f_tol,

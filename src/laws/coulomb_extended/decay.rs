@@ -170,7 +170,6 @@ impl ExtendedCoulomb {
                 }
             } else {
                 // Slip: k_s (γ_eq^pr − s) = τ_crit(s/Δt, p, θ̄).
-                let n = unit(&predictor, g);
                 let (slip_eq, crit, iterations) = if self.frozen {
                     // μ frozen at the start rate: s = γ_eq^pr − τ_crit/k_s, explicit.
                     (g - stick_crit.value / stiffness, stick_crit, 0)
@@ -183,10 +182,25 @@ impl ExtendedCoulomb {
                         g - gamma_crit
                     };
                     let f_tol = 8.0 * f64::EPSILON * (stiffness * g + k.value);
-                    // p ≥ 0 here (k_s > 0).
-                    self.solve_decay(factor, (r, d), mbar, p, g, stiffness, per_dt, guess, f_tol)
-                        .map_err(|e| local_solve_failed(e, g, rate_dt))?
+                    // p ≥ 0 here (k_s > 0). 1/k̄_s as γ_crit/τ̄_crit(0): one division from τ̄_crit(0)
+                    // to the first guess, not two.
+                    let compliance = gamma_crit / k.value;
+                    self.solve_decay(
+                        factor,
+                        (r, d),
+                        mbar,
+                        p,
+                        g,
+                        (stiffness, compliance),
+                        per_dt,
+                        guess,
+                        f_tol,
+                    )
+                    .map_err(|e| local_solve_failed(e, g, rate_dt))?
                 };
+                // (After the solve in the code, so that its division does not queue in front of
+                // those on the way to the first exp.)
+                let n = unit(&predictor, g);
                 let t = crit.value;
                 // ∂τ_crit/∂s = (∂τ_crit/∂γ̇)/Δt (0 when frozen).
                 let t_s = if self.frozen {
@@ -295,7 +309,7 @@ impl ExtendedCoulomb {
         mbar: f64,
         p: f64,
         g: f64,
-        stiffness: f64,
+        (stiffness, compliance): (f64, f64),
         per_dt: f64,
         guess: f64,
         f_tol: f64,
@@ -309,7 +323,6 @@ impl ExtendedCoulomb {
         let guess = {
             let t_small = (a * r.min(1.0)).min(tau_max);
             let t_large = (a * r.max(1.0)).min(tau_max);
-            let compliance = 1.0 / stiffness;
             let (low, high) = (g - t_large * compliance, g - t_small * compliance);
             // Comparisons, not `f64::max`/`min` (whose NaN rules cost a few operations on the
             // way to the first exp; a NaN bound leaves the guess alone all the same), not
