@@ -33,8 +33,10 @@ impl ExtendedCoulomb {
     /// (`check_inputs`, `elastic_stick` with a = 1, μ̄ = μ₁, no unscaling), without what this
     /// case does not need: the scaled copies, the viscous stress, one evaluation of the factor
     /// (the rate-free stiffness k̄_s and the solve's A share π(p)·Θ(θ̄)), and the θ̄ derivatives
-    /// when μ does not depend on temperature (∂τ/∂θ̄ = 0 then).
-    #[inline]
+    /// when μ does not depend on temperature (∂τ/∂θ̄ = 0 then). Inlined into its callers
+    /// (`fric_`'s rate fast path takes it whole), with the solve's loop out of line
+    /// ([`decay_halley`]).
+    #[inline(always)]
     pub(crate) fn isotropic_decay<const N: usize>(
         &self,
         inc: &Increment<N>,
@@ -365,7 +367,11 @@ impl ExtendedCoulomb {
 /// `exp_m1` branch of [`decay_phi`] (needed for r > 1, where r(1 − e) must not lose 1 − e to
 /// cancellation) is not taken.
 #[allow(clippy::too_many_arguments)]
-#[inline(always)]
+// Out of line, with its own registers: inlined into the lean update (itself inlined into
+// `fric_`'s fast path), the loop shared them with everything around it and spilled more;
+// `bench_rate` cold 2.85-2.95 -> 2.70-2.77x, warm 2.75-2.86 -> 2.64-2.69x constant μ for
+// +42 instructions (docs/performance.md, fourth pass).
+#[inline(never)]
 fn decay_halley(
     r: f64,
     d: f64,
