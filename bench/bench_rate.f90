@@ -5,7 +5,8 @@
 ! PROPS on the same points:
 !   constant  PROPS = 1, 0.6, 0, 0, 1e-3                         (the plain Coulomb path)
 !   decay     + PROPS(8..10) = 1, 0.3, 4                         (end-of-increment rate: local
-!                                                                  Newton solve per call)
+!                                                                  Halley solve per call, through
+!                                                                  fric_'s rate fast path)
 !   frozen    + PROPS(20) = 1                                    (mu at the start rate, explicit)
 ! and the decay law again with a warm start: STATEV(2) (the previous increment's slip rate,
 ! the local solve's first guess) within +-20% of this increment's rate, as in a smooth analysis;

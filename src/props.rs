@@ -319,6 +319,89 @@ fn extended_props_padded(props: &[f64]) -> Option<[f64; COULOMB_EXTENDED_NPROPS 
     Some(e)
 }
 
+/// The decay law's lean layout (`NPROPS = 20`: isotropic, elastic stick, exponential decay,
+/// `PROPS(14..19)` all ±0, so no HHT, damping or steady transport; p_ref, b_θ, θ_ref and
+/// frozen μ as they come) when valid, else `None`, whatever the reason (another layout, or a
+/// bad one: the checked path sorts that out). The law is the one [`coulomb_extended_fast`]
+/// builds from the same entries (a test checks it), with fewer tests: the entries this layout
+/// fixes are compared with their one accepted value. For the rate law's fast path in `fric_`.
+#[inline(always)]
+#[must_use]
+pub(crate) fn extended_decay_lean(
+    props: &[f64; COULOMB_EXTENDED_NPROPS],
+) -> Option<ExtendedCoulomb> {
+    // PROPS(8) first: the other extended layouts (constant μ with HHT, damping, anisotropy,
+    // the μ table) leave here with one test.
+    if props[7] != 1.0 {
+        return None;
+    }
+    let [
+        code,
+        mu,
+        mu2,
+        tau_max,
+        gamma_crit,
+        tolerance,
+        stick,
+        rate_law,
+        mu_k,
+        d_c,
+        p_ref,
+        b_theta,
+        theta_ref,
+        t14,
+        t15,
+        t16,
+        t17,
+        t18,
+        t19,
+        frozen,
+    ] = *props;
+    // 0 ≤ v < ∞ (μ, τ_max, γ_crit, tolerance, μ_k, p_ref) and |v| < ∞ (b_θ, θ_ref) in one test
+    // of the top bit, as in `coulomb_from_entries`; 0 < v < ∞ (μ_s, d_c) as one unsigned
+    // comparison each; PROPS(14..19) all ±0 as one test of the bits without their signs.
+    let out_of_range = |v: f64| {
+        let b = (v + 0.0).to_bits();
+        b | b.wrapping_add(1 << 52)
+    };
+    let flags = out_of_range(mu)
+        | out_of_range(tau_max)
+        | out_of_range(gamma_crit)
+        | out_of_range(tolerance)
+        | out_of_range(mu_k)
+        | out_of_range(p_ref)
+        | out_of_range(b_theta.abs())
+        | out_of_range(theta_ref.abs());
+    let positive = |v: f64| v.to_bits().wrapping_sub(1) < f64::INFINITY.to_bits().wrapping_sub(1);
+    let tail = (t14.to_bits() | t15.to_bits() | t16.to_bits() | t17.to_bits() | t18.to_bits())
+        | t19.to_bits();
+    let valid = code == f64::from(LAW_COULOMB)
+        && rate_law == 1.0
+        && stick == 0.0
+        && ((flags >> 63) | (tail << 1)) == 0
+        && positive(mu)
+        && positive(d_c)
+        && (mu2 == 0.0 || mu2 == mu)
+        && (b_theta != 0.0 || theta_ref == 0.0)
+        && (frozen == 0.0 || frozen == 1.0);
+    if !valid {
+        return None;
+    }
+    // μ_k/μ_s must stay finite (a subnormal μ_s overflows it; the checked path refuses).
+    let ratio = mu_k / mu;
+    if ratio == f64::INFINITY {
+        return None;
+    }
+    Some(ExtendedCoulomb::from_validated(
+        Coulomb::from_validated(mu, tau_max, gamma_crit, tolerance, StickMode::Elastic),
+        mu,
+        CoefficientLaw::from_validated(Some((ratio, d_c)), p_ref, b_theta, theta_ref),
+        frozen == 1.0,
+        None,
+        None,
+    ))
+}
+
 /// The slow path of [`friction_law`], which says what is wrong.
 #[cold]
 #[inline(never)]
@@ -724,6 +807,114 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    /// Whether `props` (20 entries) is the decay law's lean layout, read off the entries: law
+    /// 1, isotropic, elastic stick, exponential decay, PROPS(14..19) all ±0.
+    fn is_lean_decay_layout(props: &[f64; COULOMB_EXTENDED_NPROPS]) -> bool {
+        props[0] == 1.0
+            && (props[2] == 0.0 || props[2] == props[1])
+            && props[6] == 0.0
+            && props[7] == 1.0
+            && props[13..19].iter().all(|v| *v == 0.0)
+    }
+
+    /// The lean parser against the checked one on a lean layout: when the checked parser
+    /// accepts and the layout is lean, the lean parser gives the same law; otherwise it refuses.
+    fn check_lean_against_checked(props: &[f64; COULOMB_EXTENDED_NPROPS]) -> Result<(), String> {
+        let lean = extended_decay_lean(props);
+        match coulomb_extended(props) {
+            Ok(FrictionLaw::CoulombExtended(law)) if is_lean_decay_layout(props) => {
+                if lean == Some(law) {
+                    Ok(())
+                } else {
+                    Err(format!("{props:?}: lean {lean:?}, checked {law:?}"))
+                }
+            }
+            Ok(law) => match lean {
+                None => Ok(()),
+                Some(l) => Err(format!("{props:?} is not lean ({law:?}) but gave {l:?}")),
+            },
+            Err(e) => match lean {
+                None => Ok(()),
+                Some(l) => Err(format!("{props:?} is refused ({e}) but gave {l:?}")),
+            },
+        }
+    }
+
+    /// The rate fast path's parser ([`extended_decay_lean`]): the range edges in every
+    /// position of lean decay layouts (with τ_max, p_ref, Θ(θ̄), frozen μ, PROPS(3) = μ or not)
+    /// against the checked parser.
+    #[test]
+    fn lean_decay_parser_range_edges_agree_with_checked_path() {
+        let edges = [
+            0.0,
+            -0.0,
+            f64::MIN_POSITIVE,
+            5e-324,
+            f64::MAX,
+            0.5,
+            1.0,
+            2.0,
+            3.0,
+            -5e-324,
+            -1.0,
+            f64::MIN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            -f64::NAN,
+        ];
+        let mut decay = [0.0; COULOMB_EXTENDED_NPROPS];
+        decay[..10].copy_from_slice(&[1.0, 0.6, 0.0, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.3, 4.0]);
+        let mut full = decay;
+        full[2] = 0.6;
+        full[3] = 50.0;
+        full[5] = 0.01;
+        full[10] = 80.0;
+        full[11] = 0.01;
+        full[12] = 20.0;
+        full[19] = 1.0;
+        let mut checked_any = 0;
+        for layout in [decay, full] {
+            assert!(extended_decay_lean(&layout).is_some());
+            for position in 0..COULOMB_EXTENDED_NPROPS {
+                for v in edges {
+                    let mut props = layout;
+                    props[position] = v;
+                    if let Err(e) = check_lean_against_checked(&props) {
+                        panic!("PROPS({}) = {v:e}: {e}", position + 1);
+                    }
+                    checked_any += usize::from(extended_decay_lean(&props).is_some());
+                }
+            }
+        }
+        // Both answers occur (the edges are not all refused).
+        assert!(checked_any > 100, "{checked_any}");
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 5000, failure_persistence: None, ..ProptestConfig::default() })]
+
+        /// The rate fast path's parser on random 20-entry layouts near the lean one (PROPS(1),
+        /// PROPS(7), PROPS(8) and PROPS(14..19) mostly at their lean values).
+        #[test]
+        fn lean_decay_parser_agrees_with_checked_path(
+            mut props in prop::array::uniform20(extended_entry()),
+            keep in prop::array::uniform3(prop::bool::weighted(0.8)),
+        ) {
+            if keep[0] {
+                props[0] = 1.0;
+                props[6] = 0.0;
+            }
+            if keep[1] {
+                props[7] = 1.0;
+            }
+            if keep[2] {
+                props[13..19].fill(0.0);
+            }
+            prop_assert!(check_lean_against_checked(&props).is_ok(), "{:?}", check_lean_against_checked(&props));
         }
     }
 

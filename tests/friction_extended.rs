@@ -201,6 +201,13 @@ const NSTATV: usize = 5;
 /// Calls `fric_` for the sample with perturbations of DGAM, the end pressure (start held fixed)
 /// and the two surface temperatures.
 fn call(s: &Sample, dgam_shift: [f64; 2], dp_shift: f64, temp_shift: [f64; 2]) -> FricCall {
+    let mut c = prepare(s, dgam_shift, dp_shift, temp_shift);
+    c.call();
+    c
+}
+
+/// The arguments of [`call`], not yet passed to `fric_`.
+fn prepare(s: &Sample, dgam_shift: [f64; 2], dp_shift: f64, temp_shift: [f64; 2]) -> FricCall {
     let n = s.nfdir;
     let mut c = FricCall::new(n as i32, &s.law.props());
     c.statev = vec![0.0; NSTATV + 2];
@@ -221,7 +228,6 @@ fn call(s: &Sample, dgam_shift: [f64; 2], dp_shift: f64, temp_shift: [f64; 2]) -
     c.dpress = s.dp + dp_shift;
     c.dtime = s.dtime;
     c.temp = [s.theta + temp_shift[0], s.theta + temp_shift[1]];
-    c.call();
     c
 }
 
@@ -563,6 +569,50 @@ proptest! {
         prop_assert!(close(x.sed, y.sed, stress * 1e-3));
         let rate_scale = 1e-2 / dtime;
         prop_assert!(close(a.state.coulomb.slip_rate, b.state.coulomb.slip_rate, rate_scale));
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 1000, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// `fric_`'s fast path for the decay law's lean layout (NPROPS = 20, isotropic, elastic
+    /// stick, no HHT, damping or steady transport), taken with `LM = 0` on entry, against the
+    /// checked path, which the same call takes with `LM = 1` (the fast path leaves that to it;
+    /// elastic stick does not depend on it): every output equal, `PNEWDT` left alone, the
+    /// guards past NFDIR and NSTATV intact. With and without p and θ̄ dependence, τ_max, frozen
+    /// μ, NFDIR 1 and 2, stick and slip.
+    #[test]
+    fn fric_decay_fast_path_agrees_with_the_checked_path(
+        s in sample(),
+        mu2_given in prop::bool::ANY,
+        decay in (0.2..1.5f64, 0.1..20.0f64),
+    ) {
+        let mut s = s;
+        s.law.mu2 = if mu2_given { s.law.mu1 } else { 0.0 };
+        s.law.exact = false;
+        s.law.hht_alpha = None;
+        s.law.c0 = 0.0;
+        if s.law.decay.is_none() {
+            s.law.decay = Some((decay.0 * s.law.mu1, decay.1));
+        }
+        let mut fast = prepare(&s, [0.0; 2], 0.0, [0.0; 2]);
+        fast.taulm = [0.5, -0.25, 0.0];
+        let mut checked = fast.clone();
+        checked.lm = 1;
+        fast.call();
+        checked.call();
+        prop_assert_eq!(fast.lm, 0);
+        prop_assert_eq!(checked.lm, 0);
+        prop_assert_eq!(fast.pnewdt, 1e36);
+        prop_assert_eq!(checked.pnewdt, 1e36);
+        prop_assert_eq!(fast.tau, checked.tau);
+        prop_assert_eq!(fast.ddtddg, checked.ddtddg);
+        prop_assert_eq!(fast.ddtddp, checked.ddtddp);
+        prop_assert_eq!(fast.dslip, checked.dslip);
+        prop_assert_eq!((fast.sed, fast.sfd), (checked.sed, checked.sfd));
+        prop_assert_eq!(fast.ddtddt, checked.ddtddt);
+        prop_assert_eq!(&fast.statev, &checked.statev);
+        prop_assert!(fast.guards_intact());
     }
 }
 

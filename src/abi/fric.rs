@@ -16,6 +16,7 @@ use crate::report::Site;
 use crate::{CUTBACK_RATIO, LawError};
 
 mod adhesive;
+mod rate;
 
 /// Abaqus/Standard `FRIC`: frictional stress, tangents, energies and state of one closed contact
 /// point, callable from Fortran as `CALL FRIC(...)` with no interface block.
@@ -448,7 +449,14 @@ unsafe extern "C" fn fric_general(
     let _ = boundary(
         // SAFETY (all three closures): the pointers are the host's, valid per the contract above.
         || unsafe { site(ciname, ciname_len, noel, node, npt) },
-        || unsafe { args.run(ciname, ciname_len) },
+        // The rate law's lean layout first (`rate.rs`), then the checked path.
+        || unsafe {
+            if args.decay_fast() {
+                Ok(())
+            } else {
+                args.run(ciname, ciname_len)
+            }
+        },
         || unsafe { args.fail() },
     );
 }

@@ -807,7 +807,18 @@ impl ExtendedCoulomb {
                 None
             };
             if let Some((factor, law)) = split {
-                self.solve_decay(factor, law, mbar, p, g, stiffness, rate_dt, guess, f_tol)?
+                self.solve_decay(
+                    factor,
+                    law,
+                    mbar,
+                    p,
+                    g,
+                    (stiffness, 1.0 / stiffness),
+                    1.0 / rate_dt,
+                    guess,
+                    f_tol,
+                )
+                .map_err(|e| local_solve_failed(e, g, rate_dt))?
             } else {
                 // The last evaluation is kept: the solve usually stops at an evaluated point.
                 let mut last = (f64::NAN, Critical::default());

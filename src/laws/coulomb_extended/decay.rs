@@ -11,7 +11,7 @@ impl ExtendedCoulomb {
     /// (r, d_c) when [`Self::update`] can take [`Self::isotropic_decay`]: the decay law with
     /// isotropic friction (or NFDIR = 1), elastic stick, no damping, no steady transport.
     #[inline(always)]
-    pub(super) fn lean_decay<const N: usize>(&self) -> Option<(f64, f64)> {
+    pub(crate) fn lean_decay<const N: usize>(&self) -> Option<(f64, f64)> {
         match self.coefficient.rate() {
             RateLaw::ExponentialDecay {
                 kinetic_ratio,
@@ -33,9 +33,11 @@ impl ExtendedCoulomb {
     /// (`check_inputs`, `elastic_stick` with a = 1, μ̄ = μ₁, no unscaling), without what this
     /// case does not need: the scaled copies, the viscous stress, one evaluation of the factor
     /// (the rate-free stiffness k̄_s and the solve's A share π(p)·Θ(θ̄)), and the θ̄ derivatives
-    /// when μ does not depend on temperature (∂τ/∂θ̄ = 0 then).
-    #[inline]
-    pub(super) fn isotropic_decay<const N: usize>(
+    /// when μ does not depend on temperature (∂τ/∂θ̄ = 0 then). Inlined into its callers
+    /// (`fric_`'s rate fast path takes it whole), with the solve's loop out of line
+    /// ([`decay_halley`]).
+    #[inline(always)]
+    pub(crate) fn isotropic_decay<const N: usize>(
         &self,
         inc: &Increment<N>,
         theta: f64,
@@ -65,6 +67,8 @@ impl ExtendedCoulomb {
         if !self.frozen && (rate_dt.is_nan() || rate_dt <= 0.0) {
             return Err(no_rate_increment(inc.dtime));
         }
+        // (∞ when frozen with Δt = 0: then unused.)
+        let per_dt = 1.0 / rate_dt;
         let gamma_crit = self.base.critical_slip_for(inc.characteristic_length)?;
         // (The decay law has no table: only Θ(θ̄) reads the temperature.)
         let with_theta = self.coefficient.has_temperature_factor();
@@ -168,7 +172,6 @@ impl ExtendedCoulomb {
                 }
             } else {
                 // Slip: k_s (γ_eq^pr − s) = τ_crit(s/Δt, p, θ̄).
-                let n = unit(&predictor, g);
                 let (slip_eq, crit, iterations) = if self.frozen {
                     // μ frozen at the start rate: s = γ_eq^pr − τ_crit/k_s, explicit.
                     (g - stick_crit.value / stiffness, stick_crit, 0)
@@ -181,23 +184,41 @@ impl ExtendedCoulomb {
                         g - gamma_crit
                     };
                     let f_tol = 8.0 * f64::EPSILON * (stiffness * g + k.value);
-                    // p ≥ 0 here (k_s > 0).
-                    self.solve_decay(factor, (r, d), mbar, p, g, stiffness, rate_dt, guess, f_tol)?
+                    // p ≥ 0 here (k_s > 0). 1/k̄_s as γ_crit/τ̄_crit(0): one division from τ̄_crit(0)
+                    // to the first guess, not two.
+                    let compliance = gamma_crit / k.value;
+                    self.solve_decay(
+                        factor,
+                        (r, d),
+                        mbar,
+                        p,
+                        g,
+                        (stiffness, compliance),
+                        per_dt,
+                        guess,
+                        f_tol,
+                    )
+                    .map_err(|e| local_solve_failed(e, g, rate_dt))?
                 };
+                // (After the solve in the code, so that its division does not queue in front of
+                // those on the way to the first exp.)
+                let n = unit(&predictor, g);
                 let t = crit.value;
                 // ∂τ_crit/∂s = (∂τ_crit/∂γ̇)/Δt (0 when frozen).
                 let t_s = if self.frozen {
                     0.0
                 } else {
-                    crit.d_rate / rate_dt
+                    crit.d_rate * per_dt
                 };
                 let dd = stiffness + t_s;
                 if dd == 0.0 || !dd.is_finite() {
                     return Err(rate_softening_cancels(t_s, stiffness));
                 }
                 // Implicit derivatives of s from k_s (G − s) = τ_crit(s/Δt, p, θ̄).
-                let ds_dg = stiffness / dd;
-                let ds_dp = (stiffness_p * (g - slip_eq) - crit.d_pressure) / dd;
+                // One division for the three implicit derivatives.
+                let per_dd = 1.0 / dd;
+                let ds_dg = stiffness * per_dd;
+                let ds_dp = (stiffness_p * (g - slip_eq) - crit.d_pressure) * per_dd;
                 let transverse = t / g;
                 // Eq. 5.2.3-3: (δ − nn) τ_crit/γ_eq^pr + nn (∂τ_crit/∂s) ∂s/∂G.
                 let mut ddtddg = [[0.0; N]; N];
@@ -212,7 +233,7 @@ impl ExtendedCoulomb {
                 let mut ddtdtheta = [0.0; N];
                 if with_theta {
                     // θ̄: through the start elastic slip v = ∂γ^pr/∂θ̄ and through τ_crit(·, θ̄).
-                    let ds_dtheta = (stiffness_theta * (g - slip_eq) - crit.d_temperature) / dd;
+                    let ds_dtheta = (stiffness_theta * (g - slip_eq) - crit.d_temperature) * per_dd;
                     let v = d_elastic_dtheta;
                     let nv = dot(&n, &v);
                     let dt_dtheta = t_s * (ds_dg * nv + ds_dtheta) + crit.d_temperature;
@@ -290,13 +311,11 @@ impl ExtendedCoulomb {
         mbar: f64,
         p: f64,
         g: f64,
-        stiffness: f64,
-        rate_dt: f64,
+        (stiffness, compliance): (f64, f64),
+        per_dt: f64,
         guess: f64,
         f_tol: f64,
-    ) -> Result<(f64, Critical, u32), LawError> {
-        // One division per solve, not three per iteration.
-        let per_dt = 1.0 / rate_dt;
+    ) -> Result<(f64, Critical, u32), RootFailure> {
         let x_tol = 4.0 * f64::EPSILON * g;
         let tau_max = self.base.shear_limit().unwrap_or(f64::INFINITY);
         let a = mbar * pt * p;
@@ -306,17 +325,17 @@ impl ExtendedCoulomb {
         let guess = {
             let t_small = (a * r.min(1.0)).min(tau_max);
             let t_large = (a * r.max(1.0)).min(tau_max);
-            let compliance = 1.0 / stiffness;
-            // max/min, not clamp: no panic on a NaN bound; the solver clips into [0, γ̄_eq^pr].
-            guess
-                .max(g - t_large * compliance)
-                .min(g - t_small * compliance)
+            let (low, high) = (g - t_large * compliance, g - t_small * compliance);
+            // Comparisons, not `f64::max`/`min` (whose NaN rules cost a few operations on the
+            // way to the first exp; a NaN bound leaves the guess alone all the same), not
+            // `clamp` (no panic on a NaN bound); the solver clips into [0, γ̄_eq^pr].
+            let guess = if guess < low { low } else { guess };
+            if guess > high { high } else { guess }
         };
         // F(0) = k̄_s γ̄_eq^pr − τ̄_crit(0) > 0 (slip) and F(γ̄_eq^pr) = −τ̄_crit ≤ 0: the root is
         // bracketed.
         let (x, phi, dphi, iterations) =
-            decay_halley(r, d, a, tau_max, stiffness, g, per_dt, guess, x_tol, f_tol)
-                .map_err(|e| local_solve_failed(e, g, rate_dt))?;
+            decay_halley(r, d, a, tau_max, stiffness, g, per_dt, guess, x_tol, f_tol)?;
         let root_x = x;
         let c = if a * phi >= tau_max {
             Critical {
@@ -339,11 +358,20 @@ impl ExtendedCoulomb {
 
 /// The decay law's local solve F(s) = k̄_s (γ̄_eq^pr − s) − min(A·φ(s/Δt), τ_max) = 0 on the
 /// bracket F(γ̄_eq^pr) ≤ 0 ≤ F(0): the safeguarded Halley iteration of
-/// [`halley_on_known_bracket`] step for step (the same tests in the same order), written out
-/// for this residual, so that the few values it carries stay in registers. Returns (s, φ, φ'
-/// at s, steps).
+/// [`halley_on_known_bracket`] step for step (the same tests with the same tolerances), written
+/// out for this residual, so that the few values it carries stay in registers. Returns (s, φ,
+/// φ' at s, steps).
+///
+/// For r = μ_k/μ_s ≤ 1, φ = e + r(1 − e) with e = exp(−d_c s/Δt) from `exp` alone: both
+/// terms are ≥ 0 and 1 − e is exact for e ≥ ½ (Sterbenz), so φ is as accurate as e, and the
+/// `exp_m1` branch of [`decay_phi`] (needed for r > 1, where r(1 − e) must not lose 1 − e to
+/// cancellation) is not taken.
 #[allow(clippy::too_many_arguments)]
-#[inline(always)]
+// Out of line, with its own registers: inlined into the lean update (itself inlined into
+// `fric_`'s fast path), the loop shared them with everything around it and spilled more;
+// `bench_rate` cold 2.85-2.95 -> 2.70-2.77x, warm 2.75-2.86 -> 2.64-2.69x constant μ for
+// +42 instructions (docs/performance.md, fourth pass).
+#[inline(never)]
 fn decay_halley(
     r: f64,
     d: f64,
@@ -356,47 +384,75 @@ fn decay_halley(
     x_tol: f64,
     f_tol: f64,
 ) -> Result<(f64, f64, f64, u32), RootFailure> {
-    // F, F', F'' and φ, φ' at x.
-    let eval = |x: f64| {
-        let (phi, dphi, ddphi) = decay_phi(r, d, x * per_dt);
-        let tc = a * phi;
-        let f = if tc >= tau_max {
-            (stiffness * (g - x) - tau_max, -stiffness, 0.0)
-        } else {
-            (
-                stiffness * (g - x) - tc,
-                -stiffness - a * dphi * per_dt,
-                -a * ddphi * per_dt * per_dt,
-            )
-        };
-        (f, phi, dphi)
-    };
+    let mut residual = DecayResidual::new(r, d, a, tau_max, stiffness, g, per_dt);
     // Bracket [low, high] = [γ̄_eq^pr, 0] with F(low) ≤ 0 ≤ F(high).
-    let (mut low, mut high) = (g, 0.0);
+    let (low, high) = (g, 0.0);
     if low == high {
-        let (_, phi, dphi) = eval(low);
+        let (_, phi, dphi) = residual.eval::<false>(low);
         return Ok((low, phi, dphi, 0));
     }
-    let mut x = if guess.is_finite() {
-        guess.clamp(0.0, g)
+    // Into [0, γ̄_eq^pr] (g > 0 here) with comparisons: `clamp` tests its bounds.
+    let x = if guess.is_finite() {
+        let x = if guess > 0.0 { guess } else { 0.0 };
+        if x < g { x } else { g }
     } else {
         0.5 * g
     };
-    let mut step_before = g;
-    let mut step = step_before;
-    let ((mut fx, mut dfx, mut ddfx), mut phi, mut dphi) = eval(x);
-    for iteration in 1..=MAX_LOCAL_ITERATIONS {
+    let mut it = HalleyState {
+        x,
+        low,
+        high,
+        step: g,
+        step_before: g,
+        f: (0.0, 0.0, 0.0),
+    };
+    let (f, mut phi, mut dphi) = residual.eval::<false>(x);
+    it.f = f;
+    if f.0.abs() <= f_tol {
+        return Ok((x, phi, dphi, 0));
+    }
+    // The first step is peeled off: it is too long for the continued exponential (`exp` at
+    // its end), the later ones are not, so the residual's radius test is not made there.
+    it.step()?;
+    (it.f, phi, dphi) = residual.eval::<false>(it.x);
+    // Converged by the step or by the residual (the residual test of the next iteration of
+    // `halley_on_known_bracket`, made here: one exit instead of two).
+    if (it.step.abs() <= x_tol) | (it.f.0.abs() <= f_tol) {
+        return Ok((it.x, phi, dphi, 1));
+    }
+    for iteration in 2..=MAX_LOCAL_ITERATIONS {
+        it.step()?;
+        (it.f, phi, dphi) = residual.eval::<true>(it.x);
+        if (it.step.abs() <= x_tol) | (it.f.0.abs() <= f_tol) {
+            return Ok((it.x, phi, dphi, iteration));
+        }
+    }
+    Err(RootFailure::NotConverged)
+}
+
+/// The iterate of [`decay_halley`]: x, the bracket, the last two steps, (F, F', F'') at x.
+struct HalleyState {
+    x: f64,
+    low: f64,
+    high: f64,
+    step: f64,
+    step_before: f64,
+    f: (f64, f64, f64),
+}
+
+impl HalleyState {
+    /// One safeguarded Halley step from x (the bracket updated with F(x) first).
+    #[inline(always)]
+    fn step(&mut self) -> Result<(), RootFailure> {
+        let (fx, dfx, ddfx) = self.f;
         if !(fx.is_finite() && dfx.is_finite()) {
             return Err(RootFailure::NotConverged);
         }
-        if fx.abs() <= f_tol {
-            return Ok((x, phi, dphi, iteration - 1));
-        }
-        if fx < 0.0 {
-            low = x;
-        } else {
-            high = x;
-        }
+        // Selects on the bits, not branches: the side is as likely one as the other.
+        let below = fx < 0.0;
+        self.low = select(below, self.x, self.low);
+        self.high = select(below, self.high, self.x);
+        let (low, high) = (self.low, self.high);
         // Halley's step δ = 2ff'/(2f'² − ff''), Newton's f/f' where the curvature term would
         // flip it; accepted when inside the bracket and at least halving the step before last.
         let denominator = 2.0 * dfx * dfx - fx * ddfx;
@@ -405,22 +461,203 @@ fn decay_halley(
         } else {
             fx / dfx
         };
-        let target = x - candidate;
+        let target = self.x - candidate;
         let inside = target >= low.min(high) && target <= low.max(high);
-        let fast_enough = 2.0 * candidate.abs() <= step_before.abs();
+        let fast_enough = 2.0 * candidate.abs() <= self.step_before.abs();
+        self.step_before = self.step;
         if inside && fast_enough {
-            step_before = step;
-            step = candidate;
-            x = target;
+            self.step = candidate;
+            self.x = target;
         } else {
-            step_before = step;
-            step = 0.5 * (high - low);
-            x = low + step;
+            self.step = 0.5 * (high - low);
+            self.x = low + self.step;
         }
-        ((fx, dfx, ddfx), phi, dphi) = eval(x);
-        if step.abs() <= x_tol {
-            return Ok((x, phi, dphi, iteration));
+        Ok(())
+    }
+}
+
+/// `if c { a } else { b }` as bit operations, so that the compiler makes no branch of it.
+#[inline(always)]
+fn select(c: bool, a: f64, b: f64) -> f64 {
+    let mask = u64::from(c).wrapping_neg();
+    f64::from_bits((a.to_bits() & mask) | (b.to_bits() & !mask))
+}
+
+/// F(s) of [`decay_halley`] with what it needs, and the last point where `exp` was called.
+struct DecayResidual {
+    r: f64,
+    d: f64,
+    a: f64,
+    tau_max: f64,
+    stiffness: f64,
+    g: f64,
+    per_dt: f64,
+    /// r ≤ 1: φ from e alone (see [`decay_halley`]).
+    lean: bool,
+    /// c = d_c/Δt (e = exp(−c s)), A·r, B = A(1 − r), B·c and B·c², for the lean case:
+    /// τ̄_crit = A·r + B·e, F' = −k̄_s + B·c·e, F'' = −B·c²·e.
+    c: f64,
+    ar: f64,
+    b: f64,
+    bc: f64,
+    bcc: f64,
+    /// The last x where `exp` was called (NaN before the first) and its e.
+    anchor_x: f64,
+    anchor_e: f64,
+}
+
+impl DecayResidual {
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn new(r: f64, d: f64, a: f64, tau_max: f64, stiffness: f64, g: f64, per_dt: f64) -> Self {
+        let c = d * per_dt;
+        let b = a * (1.0 - r);
+        DecayResidual {
+            r,
+            d,
+            a,
+            tau_max,
+            stiffness,
+            g,
+            per_dt,
+            lean: r <= 1.0,
+            c,
+            ar: a * r,
+            b,
+            bc: b * c,
+            bcc: b * c * c,
+            anchor_x: f64::NAN,
+            anchor_e: f64::NAN,
         }
     }
-    Err(RootFailure::NotConverged)
+
+    /// (F, F', F'') and φ, φ' at x. With `CONTINUE`, e within the radius of the last `exp`
+    /// is continued from it.
+    #[inline(always)]
+    fn eval<const CONTINUE: bool>(&mut self, x: f64) -> ((f64, f64, f64), f64, f64) {
+        let Self {
+            r,
+            d,
+            a,
+            tau_max,
+            stiffness,
+            g,
+            per_dt,
+            c,
+            ..
+        } = *self;
+        if self.lean {
+            // e(x) = e(x_a)·exp(u), u = c (x_a − x): within |u| ≤ 2⁻⁸ of the last exact e,
+            // exp(u) from its Taylor series to u⁵ (the rest, u⁶/720 < 5·10⁻¹⁸, is below the
+            // rounding of e), grouped for a short chain of dependent operations; NaN (so
+            // `exp`) before the first call.
+            let u = c * (self.anchor_x - x);
+            let e = if CONTINUE && u.abs() <= 1.0 / 256.0 {
+                let u2 = u * u;
+                let p = (u + 0.5 * u2)
+                    + (u2 * u) * ((1.0 / 6.0 + u * (1.0 / 24.0)) + u2 * (1.0 / 120.0));
+                self.anchor_e + self.anchor_e * p
+            } else {
+                let e = if x > 0.0 { (-c * x).exp() } else { 1.0 };
+                (self.anchor_x, self.anchor_e) = (x, e);
+                e
+            };
+            let tc = self.ar + self.b * e;
+            let f = if tc >= tau_max {
+                (stiffness * (g - x) - tau_max, -stiffness, 0.0)
+            } else {
+                (
+                    stiffness * (g - x) - tc,
+                    -stiffness + self.bc * e,
+                    -self.bcc * e,
+                )
+            };
+            // φ = e + r(1 − e), φ' = −d_c (1 − r) e (in the rate), as `decay_phi`.
+            (f, e + r * (1.0 - e), -d * ((1.0 - r) * e))
+        } else {
+            let (phi, dphi, ddphi) = decay_phi(r, d, x * per_dt);
+            let tc = a * phi;
+            let f = if tc >= tau_max {
+                (stiffness * (g - x) - tau_max, -stiffness, 0.0)
+            } else {
+                (
+                    stiffness * (g - x) - tc,
+                    -stiffness - a * dphi * per_dt,
+                    -a * ddphi * per_dt * per_dt,
+                )
+            };
+            (f, phi, dphi)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 4000, failure_persistence: None, ..ProptestConfig::default() })]
+
+        /// The residual's e = exp(−c·s) continued from the last exact evaluation (Taylor series
+        /// within |u| ≤ 2⁻⁸) against `exp` at the point itself: a few ulps, at any distance
+        /// inside the radius, either side, and the first call (no anchor) is `exp` itself.
+        #[test]
+        fn continued_exponential_matches_exp(
+            c in prop_oneof![1e-3..1.0f64, 1.0..1e4f64],
+            anchor in 0.0..2.0f64,
+            fraction in -1.0..1.0f64,
+        ) {
+            let mut res = DecayResidual::new(0.5, c, 1.0, f64::INFINITY, 1.0, 1.0, 1.0);
+            let x0 = anchor / c;
+            let ((..), phi0, _) = res.eval::<false>(x0);
+            let e0 = (-c * x0).exp();
+            prop_assert_eq!(phi0, e0 + 0.5 * (1.0 - e0));
+            // A point within the Taylor radius of x0 (u = c·(x0 − x)).
+            let x = x0 - fraction / 256.0 / c;
+            prop_assume!(x > 0.0);
+            let ((..), phi, dphi) = res.eval::<true>(x);
+            let exact = (-c * x).exp();
+            // φ = e + r(1 − e) and φ' = −d(1 − r)e with r = 1/2, d = c (per_dt = 1).
+            let e = -2.0 * dphi / c;
+            prop_assert!((e - exact).abs() <= 4.0 * f64::EPSILON * exact, "{e:e} vs {exact:e}");
+            prop_assert!((phi - (exact + 0.5 * (1.0 - exact))).abs() <= 4.0 * f64::EPSILON);
+        }
+
+        /// The solve's root against an independent evaluation of the residual with `exp` at the
+        /// root: F within a few times the stopping tolerance, φ and φ' those of the root, for
+        /// μ_k below and above μ_s (the continued and the `exp_m1` evaluations), with and
+        /// without τ_max, from any first guess.
+        #[test]
+        fn decay_root_has_round_off_residual(
+            r in prop_oneof![0.0..1.0f64, 1.0..4.0f64],
+            d in 0.1..50.0f64,
+            a in 1.0..100.0f64,
+            cap in prop_oneof![Just(f64::INFINITY), 0.5..150.0f64],
+            gamma_crit in 1e-4..1e-2f64,
+            over in 1.05..10.0f64,
+            dt in 1e-3..1.0f64,
+            guess_fraction in -0.5..1.5f64,
+        ) {
+            let stiffness = a / gamma_crit;
+            // Slipping: k·g above τ_crit at rest (φ = 1), capped by τ_max.
+            let g = over * a.min(cap) / stiffness;
+            let per_dt = 1.0 / dt;
+            let f_tol = 8.0 * f64::EPSILON * (stiffness * g + a);
+            let x_tol = 4.0 * f64::EPSILON * g;
+            let Ok((x, phi, dphi, _)) =
+                decay_halley(r, d, a, cap, stiffness, g, per_dt, guess_fraction * g, x_tol, f_tol)
+            else {
+                return Err(TestCaseError::fail("no convergence"));
+            };
+            let e = (-d * (x * per_dt)).exp();
+            let phi_exact = e + r * (1.0 - e);
+            let f = stiffness * (g - x) - (a * phi_exact).min(cap);
+            // Stopped by the step (the residual then is the slope times that step) or by F.
+            let slope = stiffness + a * d * (1.0 - r).abs() * per_dt;
+            prop_assert!(f.abs() <= 4.0 * f_tol + 4.0 * slope * x_tol, "F = {f:e}, tol {f_tol:e}");
+            prop_assert!((phi - phi_exact).abs() <= 8.0 * f64::EPSILON * phi_exact.max(1.0));
+            prop_assert!((dphi + d * (1.0 - r) * e).abs() <= 8.0 * f64::EPSILON * d * (1.0 - r).abs().max(1.0));
+        }
+    }
 }
