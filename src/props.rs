@@ -111,24 +111,24 @@ fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
     coulomb_from_entries(e)
 }
 
+/// Top bit clear exactly when 0 ≤ v < ∞: adding +0 turns −0 into +0; after that a value is
+/// in range exactly when its sign bit is clear and its exponent is not all ones, i.e. when
+/// neither its bits nor its bits + 2⁵² have the top bit set. OR-ing the flags of several values
+/// tests them all with one test of the top bit (plain integer operations, no branch per value).
+#[inline(always)]
+pub(crate) fn range_flag(v: f64) -> u64 {
+    let b = (v + 0.0).to_bits();
+    b | b.wrapping_add(1 << 52)
+}
+
 /// The plain Coulomb law of the seven `PROPS` entries (absent ones already zero), or `None`.
 #[inline(always)]
 fn coulomb_from_entries(e: [f64; COULOMB_NPROPS]) -> Option<Coulomb> {
     let [code, mu, mu2, tau_max, gamma_crit, tolerance, stick] = e;
     // μ finite and ≥ 0; τ_max, γ_crit and the tolerance "0 (off / default) or finite and > 0":
-    // all four are 0 ≤ v < ∞. Adding +0 turns −0 into +0; after that a value is in range
-    // exactly when its sign bit is clear and its exponent is not all ones, i.e. when neither
-    // its bits nor its bits + 2⁵² have the top bit set. OR-ing those over the four values
-    // gives all four range tests in one test of the top bit (plain integer operations, no
-    // branch per value).
-    let out_of_range = |v: f64| {
-        let b = (v + 0.0).to_bits();
-        b | b.wrapping_add(1 << 52)
-    };
-    let flags = out_of_range(mu)
-        | out_of_range(tau_max)
-        | out_of_range(gamma_crit)
-        | out_of_range(tolerance);
+    // all four are 0 ≤ v < ∞, one test of the top bit of their `range_flag`s.
+    let flags =
+        range_flag(mu) | range_flag(tau_max) | range_flag(gamma_crit) | range_flag(tolerance);
     let valid = code == f64::from(LAW_COULOMB) && flags >> 63 == 0 && (mu2 == 0.0 || mu2 == mu);
     if !valid {
         return None;
@@ -181,17 +181,13 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
     // The ranges every layout checks, in one test of the top bit as in `coulomb_fast`:
     // 0 ≤ v < ∞ for μ, τ_max, γ_crit, the slip tolerance and p_ref ("0 or > 0"), |v| < ∞ for
     // b_θ and θ_ref (finite).
-    let out_of_range = |v: f64| {
-        let b = (v + 0.0).to_bits();
-        b | b.wrapping_add(1 << 52)
-    };
-    let flags = out_of_range(e[2])
-        | out_of_range(e[4])
-        | out_of_range(e[5])
-        | out_of_range(e[6])
-        | out_of_range(e[11])
-        | out_of_range(e[12].abs())
-        | out_of_range(e[13].abs());
+    let flags = range_flag(e[2])
+        | range_flag(e[4])
+        | range_flag(e[5])
+        | range_flag(e[6])
+        | range_flag(e[11])
+        | range_flag(e[12].abs())
+        | range_flag(e[13].abs());
     if flags >> 63 != 0 {
         return None;
     }
@@ -360,18 +356,14 @@ pub(crate) fn extended_decay_lean(
     // 0 ≤ v < ∞ (μ, τ_max, γ_crit, tolerance, μ_k, p_ref) and |v| < ∞ (b_θ, θ_ref) in one test
     // of the top bit, as in `coulomb_from_entries`; 0 < v < ∞ (μ_s, d_c) as one unsigned
     // comparison each; PROPS(14..19) all ±0 as one test of the bits without their signs.
-    let out_of_range = |v: f64| {
-        let b = (v + 0.0).to_bits();
-        b | b.wrapping_add(1 << 52)
-    };
-    let flags = out_of_range(mu)
-        | out_of_range(tau_max)
-        | out_of_range(gamma_crit)
-        | out_of_range(tolerance)
-        | out_of_range(mu_k)
-        | out_of_range(p_ref)
-        | out_of_range(b_theta.abs())
-        | out_of_range(theta_ref.abs());
+    let flags = range_flag(mu)
+        | range_flag(tau_max)
+        | range_flag(gamma_crit)
+        | range_flag(tolerance)
+        | range_flag(mu_k)
+        | range_flag(p_ref)
+        | range_flag(b_theta.abs())
+        | range_flag(theta_ref.abs());
     let positive = |v: f64| v.to_bits().wrapping_sub(1) < f64::INFINITY.to_bits().wrapping_sub(1);
     let tail = (t14.to_bits() | t15.to_bits() | t16.to_bits() | t17.to_bits() | t18.to_bits())
         | t19.to_bits();
@@ -765,25 +757,30 @@ mod tests {
     /// The edges of the extended fast path's one-test ranges (PROPS(2, 4, 5, 6, 11): 0 ≤ v < ∞;
     /// PROPS(12, 13): finite) and of its "PROPS(14..19) all ±0" test, value by value in every
     /// position, on a decay-law layout and on a damping layout, against the checked path.
+    /// Values at the edges of every range test of the `PROPS` parsers (signed zeros, the
+    /// smallest normal and subnormal, f64::MAX, the code values, infinities, both NaNs).
+    const RANGE_EDGES: [f64; 16] = [
+        0.0,
+        -0.0,
+        f64::MIN_POSITIVE,
+        5e-324,
+        f64::MAX,
+        0.5,
+        1.0,
+        2.0,
+        3.0,
+        -5e-324,
+        -1.0,
+        f64::MIN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+        -f64::NAN,
+    ];
+
     #[test]
     fn extended_fast_path_range_edges_agree_with_checked_path() {
-        let edges = [
-            0.0,
-            -0.0,
-            f64::MIN_POSITIVE,
-            5e-324,
-            f64::MAX,
-            0.5,
-            1.0,
-            3.0,
-            -5e-324,
-            -1.0,
-            f64::MIN,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NAN,
-            -f64::NAN,
-        ];
+        let edges = RANGE_EDGES;
         let mut decay = [0.0; COULOMB_EXTENDED_NPROPS];
         decay[..10].copy_from_slice(&[1.0, 0.6, 0.0, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.3, 4.0]);
         let mut damped = decay;
@@ -848,24 +845,7 @@ mod tests {
     /// against the checked parser.
     #[test]
     fn lean_decay_parser_range_edges_agree_with_checked_path() {
-        let edges = [
-            0.0,
-            -0.0,
-            f64::MIN_POSITIVE,
-            5e-324,
-            f64::MAX,
-            0.5,
-            1.0,
-            2.0,
-            3.0,
-            -5e-324,
-            -1.0,
-            f64::MIN,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NAN,
-            -f64::NAN,
-        ];
+        let edges = RANGE_EDGES;
         let mut decay = [0.0; COULOMB_EXTENDED_NPROPS];
         decay[..10].copy_from_slice(&[1.0, 0.6, 0.0, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.3, 4.0]);
         let mut full = decay;

@@ -8,6 +8,7 @@ use crate::laws::adhesive_interface::AdhesiveInterface;
 use crate::laws::coulomb::{Coulomb, StickMode};
 
 use super::FrictionLaw;
+use super::range_flag;
 
 /// `PROPS(1)` code of the adhesive friction law.
 pub const LAW_ADHESIVE: i32 = 2;
@@ -109,18 +110,13 @@ pub(crate) fn adhesive_coulomb_special_case(props: &[f64]) -> Option<Coulomb> {
         eta,
         f,
     ] = e;
-    // 0 ≤ v < ∞ for μ_d, N_a, γ_crit, the tolerance and K_n, in one test of the top bit (as
-    // the Coulomb fast path in props.rs: +0 turns −0 into +0, then a value is in range
-    // exactly when neither its bits nor its bits + 2⁵² have the top bit set).
-    let out_of_range = |v: f64| {
-        let b = (v + 0.0).to_bits();
-        b | b.wrapping_add(1 << 52)
-    };
-    let flags = out_of_range(mu_d)
-        | out_of_range(na)
-        | out_of_range(gamma_crit)
-        | out_of_range(tolerance)
-        | out_of_range(kn);
+    // 0 ≤ v < ∞ for μ_d, N_a, γ_crit, the tolerance and K_n, in one test of the top bit
+    // (`range_flag`).
+    let flags = range_flag(mu_d)
+        | range_flag(na)
+        | range_flag(gamma_crit)
+        | range_flag(tolerance)
+        | range_flag(kn);
     // The special case: S_a = k_μ = v_½ = 0 and μ_s = μ_d (no static coefficient: PROPS(3)
     // finite and ≤ 0, or equal to μ_d).
     let special = code == f64::from(LAW_ADHESIVE)
@@ -142,16 +138,12 @@ pub(crate) fn adhesive_coulomb_special_case(props: &[f64]) -> Option<Coulomb> {
 fn special_case_of_friction_entries(e: [f64; 8], tolerance: f64) -> Option<Coulomb> {
     let [code, mu_d, mu_s, sa, na, kmu, vhalf, gamma_crit] = e;
     // 0 ≤ v < ∞ for μ_d, N_a and γ_crit in one test of the top bit, as in the general case.
-    let out_of_range = |v: f64| {
-        let b = (v + 0.0).to_bits();
-        b | b.wrapping_add(1 << 52)
-    };
     // No static coefficient: μ_s = μ_d, or −∞ < μ_s ≤ 0, which is −μ_s in range (same test).
-    let static_flag = if mu_s == mu_d { 0 } else { out_of_range(-mu_s) };
-    let flags = out_of_range(mu_d)
-        | out_of_range(na)
-        | out_of_range(gamma_crit)
-        | out_of_range(tolerance)
+    let static_flag = if mu_s == mu_d { 0 } else { range_flag(-mu_s) };
+    let flags = range_flag(mu_d)
+        | range_flag(na)
+        | range_flag(gamma_crit)
+        | range_flag(tolerance)
         | static_flag;
     // S_a = k_μ = v_½ = 0 (either sign of zero): no bit but the sign bits set.
     let zeros = (sa.to_bits() | kmu.to_bits() | vhalf.to_bits()) << 1 == 0;
