@@ -715,21 +715,7 @@ mod tests {
     /// and the tolerance), value by value in every position, against the checked path.
     #[test]
     fn fast_path_range_edges_agree_with_checked_path() {
-        let edges = [
-            0.0,
-            -0.0,
-            f64::MIN_POSITIVE,
-            5e-324,
-            f64::MAX,
-            1.0,
-            -5e-324,
-            -1.0,
-            f64::MIN,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NAN,
-            -f64::NAN,
-        ];
+        let edges = RANGE_EDGES;
         for position in [1, 3, 4, 5] {
             for v in edges {
                 let mut props = vec![1.0, 0.3, 0.0, 0.0, 1e-3, 0.0, 0.0];
