@@ -3,72 +3,15 @@
 //! padded leading dimensions), through both the Rust API and the C entry `ifl_fric_batch`;
 //! `fric_`'s failure outputs for a bad point; nothing but PNEWDT written on a whole-batch fault.
 
+mod common;
+
+use common::{Points, Rng, UNSET, first_difference, per_point, via_c};
 use interfacial::abi::host::FricCall;
 use interfacial::abi::{FricBatch, IflStatus, fric_batch, ifl_fric_batch};
 
-/// A small deterministic generator (xorshift64*), so failures reproduce.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.next()
-    }
-    fn pick(&mut self, n: usize) -> usize {
-        ((self.next() * n as f64) as usize).min(n - 1)
-    }
-}
-
-/// Inputs and outputs of `npoints` points in the batch layout; outputs start as a sentinel so
-/// that "not written" is compared too.
-#[derive(Clone, Debug)]
-struct Points {
-    n: usize,
-    ld: usize,
-    nfdir: usize,
-    nstatv: usize,
-    lm: Vec<i32>,
-    tau: Vec<f64>,
-    ddtddg: Vec<f64>,
-    ddtddp: Vec<f64>,
-    dslip: Vec<f64>,
-    sed: Vec<f64>,
-    sfd: Vec<f64>,
-    statev: Vec<f64>,
-    dgam: Vec<f64>,
-    taulm: Vec<f64>,
-    press: Vec<f64>,
-    dpress: Vec<f64>,
-    chrlngth: Vec<f64>,
-}
-
-const UNSET: f64 = 12345.678;
-
 fn random_points(rng: &mut Rng, n: usize, ld: usize, nfdir: usize, gamma_crit: f64) -> Points {
-    let nstatv = 4;
-    let mut p = Points {
-        n,
-        ld,
-        nfdir,
-        nstatv,
-        lm: vec![0; ld],
-        tau: vec![UNSET; ld * nfdir],
-        ddtddg: vec![UNSET; ld * nfdir * nfdir],
-        ddtddp: vec![UNSET; ld * nfdir],
-        dslip: vec![UNSET; ld * nfdir],
-        sed: vec![UNSET; ld],
-        sfd: vec![UNSET; ld],
-        statev: vec![UNSET; ld * nstatv],
-        dgam: vec![0.0; ld * nfdir],
-        taulm: vec![0.0; ld * nfdir],
-        press: vec![0.0; ld],
-        dpress: vec![0.0; ld],
-        chrlngth: vec![0.0; ld],
-    };
+    // Inputs of the padding (between n and ld) stay UNSET: the batch must not read them.
+    let mut p = Points::new(n, ld, nfdir, 4);
     for i in 0..n {
         p.lm[i] = [0, 0, 0, 1, 2][rng.pick(5)];
         let pr = rng.range(-5.0, 150.0);
@@ -88,55 +31,6 @@ fn random_points(rng: &mut Rng, n: usize, ld: usize, nfdir: usize, gamma_crit: f
         p.statev[i + 3 * ld] = -1.0;
     }
     p
-}
-
-/// Runs every point through `fric_` (FricCall) and returns the expected outputs and PNEWDT.
-fn per_point(props: &[f64], dtime: f64, input: &Points) -> (Points, f64) {
-    let mut out = input.clone();
-    let (ld, nf) = (input.ld, input.nfdir);
-    let mut pnewdt_min = 1e36f64;
-    for i in 0..input.n {
-        let mut c = FricCall::new(nf as i32, props);
-        c.nstatv = input.nstatv as i32;
-        c.statev = (0..input.nstatv)
-            .map(|r| input.statev[i + r * ld])
-            .collect();
-        c.lm = input.lm[i];
-        c.press = input.press[i];
-        c.dpress = input.dpress[i];
-        c.dtime = dtime;
-        c.chrlngth = input.chrlngth[i];
-        for a in 0..nf {
-            c.tau[a] = input.tau[i + a * ld];
-            c.dgam[a] = input.dgam[i + a * ld];
-            c.taulm[a] = input.taulm[i + a * ld];
-            c.ddtddp[a] = UNSET;
-            c.dslip[a] = UNSET;
-            for b in 0..nf {
-                c.ddtddg[a + b * nf] = UNSET;
-            }
-        }
-        c.sed = UNSET;
-        c.sfd = UNSET;
-        c.pnewdt = 1e36;
-        c.call();
-        pnewdt_min = pnewdt_min.min(c.pnewdt);
-        out.lm[i] = c.lm;
-        out.sed[i] = c.sed;
-        out.sfd[i] = c.sfd;
-        for a in 0..nf {
-            out.tau[i + a * ld] = c.tau[a];
-            out.ddtddp[i + a * ld] = c.ddtddp[a];
-            out.dslip[i + a * ld] = c.dslip[a];
-            for b in 0..nf {
-                out.ddtddg[i + (a + b * nf) * ld] = c.ddtddg[a + b * nf];
-            }
-        }
-        for r in 0..input.nstatv {
-            out.statev[i + r * ld] = c.statev[r];
-        }
-    }
-    (out, pnewdt_min)
 }
 
 fn via_rust(props: &[f64], dtime: f64, input: &Points) -> (Points, f64, bool) {
@@ -167,55 +61,8 @@ fn via_rust(props: &[f64], dtime: f64, input: &Points) -> (Points, f64, bool) {
     (p, pnewdt, ok)
 }
 
-fn via_c(props: &[f64], dtime: f64, input: &Points) -> (Points, f64, IflStatus) {
-    let mut p = input.clone();
-    let mut pnewdt = 1e36;
-    // SAFETY: every array is sized ld × components, as the contract requires.
-    let st = unsafe {
-        ifl_fric_batch(
-            p.n,
-            p.ld,
-            p.nfdir as i32,
-            props.as_ptr(),
-            props.len() as i32,
-            p.nstatv as i32,
-            dtime,
-            p.lm.as_mut_ptr(),
-            p.tau.as_mut_ptr(),
-            p.ddtddg.as_mut_ptr(),
-            p.ddtddp.as_mut_ptr(),
-            p.dslip.as_mut_ptr(),
-            p.sed.as_mut_ptr(),
-            p.sfd.as_mut_ptr(),
-            p.statev.as_mut_ptr(),
-            input.dgam.as_ptr(),
-            input.taulm.as_ptr(),
-            input.press.as_ptr(),
-            input.dpress.as_ptr(),
-            input.chrlngth.as_ptr(),
-            &mut pnewdt,
-        )
-    };
-    (p, pnewdt, st)
-}
-
-fn bits(v: &[f64]) -> Vec<u64> {
-    v.iter().map(|x| x.to_bits()).collect()
-}
-
 fn assert_identical(what: &str, a: &Points, b: &Points) {
-    assert_eq!(a.lm, b.lm, "{what}: LM");
-    for (name, x, y) in [
-        ("TAU", &a.tau, &b.tau),
-        ("DDTDDG", &a.ddtddg, &b.ddtddg),
-        ("DDTDDP", &a.ddtddp, &b.ddtddp),
-        ("DSLIP", &a.dslip, &b.dslip),
-        ("SED", &a.sed, &b.sed),
-        ("SFD", &a.sfd, &b.sfd),
-        ("STATEV", &a.statev, &b.statev),
-    ] {
-        assert_eq!(bits(x), bits(y), "{what}: {name}");
-    }
+    assert_eq!(first_difference(a, b), None, "{what}");
 }
 
 /// PROPS variants: elastic stick (absolute γ_crit, from CHRLNGTH, with τ_max) and exact stick.
@@ -238,7 +85,7 @@ fn batch_is_bit_identical_to_fric_per_point() {
             for (n, pad) in [(1usize, 0usize), (257, 0), (300, 13)] {
                 let input = random_points(&mut rng, n, n + pad, nfdir, gc);
                 let dtime = rng.range(1e-3, 2.0);
-                let (expected, pnewdt) = per_point(&props, dtime, &input);
+                let (expected, pnewdt, _) = per_point(&props, dtime, &input);
                 assert_eq!(pnewdt, 1e36, "valid inputs must not cut back");
                 let (r, pr, ok) = via_rust(&props, dtime, &input);
                 assert!(ok);
@@ -257,7 +104,7 @@ fn batch_is_bit_identical_to_fric_per_point() {
     assert_eq!(cases, 30);
     // The random inputs cover every branch: count them in one case.
     let input = random_points(&mut rng, 2000, 2000, 2, 1e-3);
-    let (out, _) = per_point(&props_variants()[0].0, 0.1, &input);
+    let (out, _, _) = per_point(&props_variants()[0].0, 0.1, &input);
     let (mut stick, mut slip, mut frictionless) = (0, 0, 0);
     for i in 0..2000 {
         match (input.lm[i], out.statev[i + 2 * 2000]) {
@@ -280,7 +127,7 @@ fn a_bad_point_gets_fric_failure_outputs_and_the_rest_are_computed() {
         input.dgam[7] = f64::NAN;
         input.lm[20] = 0;
         input.press[20] = f64::INFINITY;
-        let (expected, pnewdt) = per_point(&props, 0.5, &input);
+        let (expected, pnewdt, _) = per_point(&props, 0.5, &input);
         assert_eq!(pnewdt, 0.25);
         let (c, pc, st) = via_c(&props, 0.5, &input);
         assert_eq!(st, IflStatus::BadInput);

@@ -9,29 +9,14 @@
 //!   and agrees bit for bit; on inputs spread over the whole f64 range it either declines the
 //!   chunk or agrees, and it always declines when the scalar law refuses a lane.
 
+mod common;
+
+use common::{Points, Rng, UNSET, first_difference, per_point, via_c};
 use interfacial::abi::IflStatus;
 use interfacial::abi::host::FricCall;
-use interfacial::abi::ifl_fric_batch;
 use interfacial::laws::coulomb::{Contact, Coulomb, CoulombState, FrictionStatus, Increment};
 use interfacial::laws::coulomb_batch::{ChunkInput, ElasticStickKernel};
 use proptest::prelude::*;
-
-/// xorshift64*: the points of a case from its seed.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.next()
-    }
-    fn pick(&mut self, n: usize) -> usize {
-        ((self.next() * n as f64) as usize).min(n - 1)
-    }
-}
 
 /// Law-1 PROPS with elastic stick: μ = 0.3; γ_crit absolute (10⁻³) or 1 % of CHRLNGTH; with or
 /// without τ_max = 20.
@@ -45,51 +30,12 @@ fn props(variant: usize) -> Vec<f64> {
     vec![1.0, 0.3, 0.0, tau_max, gc, tol, 0.0]
 }
 
-const UNSET: f64 = 12345.678;
 const NSTATV: usize = 4;
 
-/// One batch in the structure-of-arrays layout.
-#[derive(Clone, Debug)]
-struct Batch {
-    n: usize,
-    ld: usize,
-    nfdir: usize,
-    lm: Vec<i32>,
-    tau: Vec<f64>,
-    ddtddg: Vec<f64>,
-    ddtddp: Vec<f64>,
-    dslip: Vec<f64>,
-    sed: Vec<f64>,
-    sfd: Vec<f64>,
-    statev: Vec<f64>,
-    dgam: Vec<f64>,
-    taulm: Vec<f64>,
-    press: Vec<f64>,
-    dpress: Vec<f64>,
-    chrlngth: Vec<f64>,
-}
-
 /// Points of every kind, drawn independently, so that chunks mix them.
-fn mixed_points(seed: u64, n: usize, ld: usize, nfdir: usize) -> Batch {
+fn mixed_points(seed: u64, n: usize, ld: usize, nfdir: usize) -> Points {
     let mut rng = Rng(seed | 1);
-    let mut b = Batch {
-        n,
-        ld,
-        nfdir,
-        lm: vec![0; ld],
-        tau: vec![UNSET; ld * nfdir],
-        ddtddg: vec![UNSET; ld * nfdir * nfdir],
-        ddtddp: vec![UNSET; ld * nfdir],
-        dslip: vec![UNSET; ld * nfdir],
-        sed: vec![UNSET; ld],
-        sfd: vec![UNSET; ld],
-        statev: vec![UNSET; ld * NSTATV],
-        dgam: vec![UNSET; ld * nfdir],
-        taulm: vec![0.0; ld * nfdir],
-        press: vec![UNSET; ld],
-        dpress: vec![UNSET; ld],
-        chrlngth: vec![UNSET; ld],
-    };
+    let mut b = Points::new(n, ld, nfdir, NSTATV);
     for i in 0..n {
         // 0 stick, 1 slip, 2 slip at high pressure (capped when τ_max is set), 3 negative
         // pressure, 4 zero pressure, 5 no motion.
@@ -122,112 +68,14 @@ fn mixed_points(seed: u64, n: usize, ld: usize, nfdir: usize) -> Batch {
     b
 }
 
-/// Every point through `fric_`; returns the outputs, the smallest PNEWDT and, per point, the
-/// message `fric_` reported (empty when it succeeded).
-fn per_point(props: &[f64], dtime: f64, input: &Batch) -> (Batch, f64, Vec<String>) {
-    let mut out = input.clone();
-    let (ld, nf) = (input.ld, input.nfdir);
-    let mut pnewdt = 1e36f64;
-    let mut messages = Vec::new();
-    for i in 0..input.n {
-        let mut c = FricCall::new(nf as i32, props);
-        c.nstatv = NSTATV as i32;
-        c.statev = (0..NSTATV).map(|r| input.statev[i + r * ld]).collect();
-        c.lm = input.lm[i];
-        c.press = input.press[i];
-        c.dpress = input.dpress[i];
-        c.dtime = dtime;
-        c.chrlngth = input.chrlngth[i];
-        for a in 0..nf {
-            c.tau[a] = input.tau[i + a * ld];
-            c.dgam[a] = input.dgam[i + a * ld];
-            c.taulm[a] = input.taulm[i + a * ld];
-            c.ddtddp[a] = UNSET;
-            c.dslip[a] = UNSET;
-            for b in 0..nf {
-                c.ddtddg[a + b * nf] = UNSET;
-            }
-        }
-        c.sed = UNSET;
-        c.sfd = UNSET;
-        c.pnewdt = 1e36;
-        interfacial::abi::ifl_clear_error();
-        c.call();
-        messages.push(FricCall::last_error());
-        pnewdt = pnewdt.min(c.pnewdt);
-        out.lm[i] = c.lm;
-        out.sed[i] = c.sed;
-        out.sfd[i] = c.sfd;
-        for a in 0..nf {
-            out.tau[i + a * ld] = c.tau[a];
-            out.ddtddp[i + a * ld] = c.ddtddp[a];
-            out.dslip[i + a * ld] = c.dslip[a];
-            for b in 0..nf {
-                out.ddtddg[i + (a + b * nf) * ld] = c.ddtddg[a + b * nf];
-            }
-        }
-        for r in 0..NSTATV {
-            out.statev[i + r * ld] = c.statev[r];
-        }
-    }
-    (out, pnewdt, messages)
-}
-
-fn via_c(props: &[f64], dtime: f64, input: &Batch) -> (Batch, f64, IflStatus) {
-    let mut p = input.clone();
-    let mut pnewdt = 1e36;
-    // SAFETY: every array holds ld × its component count, as the contract requires.
-    let st = unsafe {
-        ifl_fric_batch(
-            p.n,
-            p.ld,
-            p.nfdir as i32,
-            props.as_ptr(),
-            props.len() as i32,
-            NSTATV as i32,
-            dtime,
-            p.lm.as_mut_ptr(),
-            p.tau.as_mut_ptr(),
-            p.ddtddg.as_mut_ptr(),
-            p.ddtddp.as_mut_ptr(),
-            p.dslip.as_mut_ptr(),
-            p.sed.as_mut_ptr(),
-            p.sfd.as_mut_ptr(),
-            p.statev.as_mut_ptr(),
-            input.dgam.as_ptr(),
-            input.taulm.as_ptr(),
-            input.press.as_ptr(),
-            input.dpress.as_ptr(),
-            input.chrlngth.as_ptr(),
-            &mut pnewdt,
-        )
-    };
-    (p, pnewdt, st)
-}
-
-fn bits(v: &[f64]) -> Vec<u64> {
-    v.iter().map(|x| x.to_bits()).collect()
-}
-
-fn identical(a: &Batch, b: &Batch) -> Result<(), TestCaseError> {
-    prop_assert_eq!(&a.lm, &b.lm, "LM");
-    for (name, x, y) in [
-        ("TAU", &a.tau, &b.tau),
-        ("DDTDDG", &a.ddtddg, &b.ddtddg),
-        ("DDTDDP", &a.ddtddp, &b.ddtddp),
-        ("DSLIP", &a.dslip, &b.dslip),
-        ("SED", &a.sed, &b.sed),
-        ("SFD", &a.sfd, &b.sfd),
-        ("STATEV", &a.statev, &b.statev),
-    ] {
-        prop_assert_eq!(bits(x), bits(y), "{}", name);
-    }
+fn identical(a: &Points, b: &Points) -> Result<(), TestCaseError> {
+    prop_assert_eq!(first_difference(a, b), None);
     Ok(())
 }
 
 /// Spoils one input of point `i`: NaN or ∞ in PRESS, DPRESS, DGAM, TAU, STATEV(1), or a zero
 /// CHRLNGTH (refused only when γ_crit is a tolerance).
-fn spoil(b: &mut Batch, i: usize, what: usize, a: usize) {
+fn spoil(b: &mut Points, i: usize, what: usize, a: usize) {
     let ld = b.ld;
     let a = a % b.nfdir;
     match what {
