@@ -124,7 +124,7 @@ impl FricCase {
         let mut b = Bytes::new(data);
         let nfdir = b.pick(&[1, 2, 1, 2, 1, 2, 1, 2, 1, 2, 1, 2, 0, 3, -1]);
         let nstatv = b.pick(&[3, 3, 3, 3, 4, 5, 8, 2, 0, -1]);
-        let nprops = b.pick(&[2, 5, 7, 7, 7, 7, 7, 7, 6, 4, 3, 8, 9, 1, 0, -1]);
+        let nprops = b.pick(&[2, 5, 7, 7, 7, 7, 7, 7, 6, 4, 3, 8, 9, 1, 0, -1, 20, 20]);
         let lm = b.pick(&[0, 0, 0, 0, 1, 1, 2, -1, 3]);
         let mcrd = b.pick(&[3, 2, 1, 0]);
         let npred = b.pick(&[1, 0, 2]);
@@ -138,6 +138,10 @@ impl FricCase {
                 // PROPS(3) μ₂: mostly 0 or μ.
                 (2, 0 | 1) => 0.0,
                 (2, 2) => props[1],
+                // The 20-entry layout: mostly the exponential-decay μ law (PROPS(8) = 1, d_c =
+                // PROPS(10) > 0), whose lean layout has a fast path of its own in `fric_`.
+                (7, 0..=2) if nprops == 20 => 1.0,
+                (9, 0..=2) if nprops == 20 => 0.5 * f64::from(sel % 4 + 1),
                 // PROPS(4..6), PROPS(8..): mostly 0 ("off" / "default").
                 (3..=5 | 7.., 0 | 1) => 0.0,
                 // PROPS(7): stick mode 0, 1, 2.
@@ -328,12 +332,17 @@ impl FricCase {
         if out.lm == 0 {
             written.extend(&out.tau);
         }
-        written.extend(&out.statev[..3]);
+        // The law's state: STATEV(1..3), and with tangential damping (law 1, PROPS(17) ≠ 0)
+        // the viscous stress in STATEV(4..3+NFDIR) (docs/props.md).
+        let damping =
+            self.props.first() == Some(&1.0) && self.props.get(16).is_some_and(|c| *c != 0.0);
+        let used = 3 + if damping { len(self.nfdir) } else { 0 };
+        written.extend(&out.statev[..used]);
         if let Some(x) = written.iter().find(|x| !x.is_finite()) {
             return Err(format!("success with a non-finite output {x}: {out:?}"));
         }
-        if bits(&out.statev[3..]) != bits(&self.statev[3..]) {
-            return Err("STATEV past the law's 3 entries was written".into());
+        if bits(&out.statev[used..]) != bits(&self.statev[used..]) {
+            return Err(format!("STATEV past the law's {used} entries was written"));
         }
         if out.statev[1] < 0.0 || ![0.0, 1.0, 2.0].contains(&out.statev[2]) {
             return Err(format!("bad state {:?}", &out.statev[..3]));
