@@ -124,7 +124,13 @@ impl FricCase {
         let mut b = Bytes::new(data);
         let nfdir = b.pick(&[1, 2, 1, 2, 1, 2, 1, 2, 1, 2, 1, 2, 0, 3, -1]);
         let nstatv = b.pick(&[3, 3, 3, 3, 4, 5, 8, 2, 0, -1]);
-        let nprops = b.pick(&[2, 5, 7, 7, 7, 7, 7, 7, 6, 4, 3, 8, 9, 1, 0, -1, 20, 20]);
+        // The first list twice (so that recorded inputs decode as before, `pick` taking the
+        // byte modulo the length), with two of the second half's 7s made 20 (the extended
+        // layout).
+        let nprops = b.pick(&[
+            2, 5, 7, 7, 7, 7, 7, 7, 6, 4, 3, 8, 9, 1, 0, -1, //
+            2, 5, 7, 20, 7, 20, 7, 7, 6, 4, 3, 8, 9, 1, 0, -1,
+        ]);
         let lm = b.pick(&[0, 0, 0, 0, 1, 1, 2, -1, 3]);
         let mcrd = b.pick(&[3, 2, 1, 0]);
         let npred = b.pick(&[1, 0, 2]);
