@@ -27,6 +27,23 @@ const CRASH_C2: [u8; 25] = [
     249, 249, 249, 33,
 ];
 
+/// Crash C3 (random-seed run, 2026-11-23 evening): μ_s = 1.0e272 with μ_k/μ_s = 3·10⁻²⁷⁵, a
+/// slip rate that takes e = exp(−d_c·γ̇) to 0 and a temperature law with Θ = exp(−427): μ
+/// came out 0 instead of μ_k·Θ ≈ 5.4·10⁻¹⁸⁹, because f = φ·π·Θ underflowed before μ_s
+/// multiplied it. Fixed by multiplying μ in first (`CoefficientLaw::scaled`).
+const CRASH_C3: [u8; 202] = [
+    1, 32, 0, 32, 0, 9, 0, 36, 134, 2, 0, 122, 134, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59,
+    59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 59, 13, 59,
+    59, 59, 59, 42, 40, 0, 61, 0, 0, 5, 0, 0, 16, 254, 196, 138, 138, 138, 138, 138, 138, 138, 138,
+    138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138,
+    130, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 146, 138, 138, 138,
+    138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 142, 138, 138, 138, 138, 138, 138, 138, 138,
+    138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 138, 118, 159, 61, 128,
+    254, 7, 11, 42, 42, 42, 255, 0, 64, 115, 138, 138, 138, 7, 245, 208, 42, 42, 59, 59, 59, 59,
+    59, 59, 245, 208, 42, 61, 128, 254, 0, 0, 0, 0, 87, 7, 11, 42, 140, 42, 140, 140, 140, 140,
+    140, 140, 140, 140, 140, 140, 140, 140, 140, 255,
+];
+
 fn replay(data: &[u8]) -> CoefCall {
     let call = CoefCall::decode(data);
     if let Err(e) = call.check() {
@@ -115,5 +132,37 @@ fn decay_law_with_a_kinetic_coefficient_far_above_the_static_one() {
     // Isotropic: μ₂ = μ₁ bit for bit.
     for k in 0..n {
         assert_eq!(out.mu(n, k, 0).to_bits(), out.mu(n, k, 1).to_bits());
+    }
+}
+
+#[test]
+fn crash_c3_replays_clean() {
+    let CoefCall::Coef(case) = replay(&CRASH_C3) else {
+        panic!("the decoder changed: not a fric_coef_ call");
+    };
+    assert!(
+        case.props[1] > 1e270 && case.props[7] == 1.0 && case.props[11] > 0.0,
+        "the decoder changed: {case:?}"
+    );
+}
+
+#[test]
+fn kinetic_coefficient_far_below_a_huge_static_one_with_a_small_temperature_factor() {
+    // μ = (μ_s·e + μ_k·(1 − e))·Θ (docs/props.md), μ_s = 1e272, μ_k = 3e-3, d_c = 1, γ̇ = 1e3:
+    // e = exp(−1000) = 0 in f64, so μ = μ_k·Θ; Θ = exp(−b_θ(θ̄ − θ_ref)) = exp(−427).
+    let props = [
+        1.0, 1e272, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 3e-3, 1.0, 0.0, 1.0, 0.0,
+    ];
+    let case = FricCoefCase::block(&props, &[1e3], &[1.0], &[427.0]);
+    let out = case.check().unwrap_or_else(|e| panic!("{e}"));
+    assert!(out.message.is_empty(), "{}", out.message);
+    let expected = 3e-3 * (-427.0f64).exp();
+    assert!(expected > 1e-190 && expected.is_normal());
+    for d in 0..2 {
+        let mu = out.mu(1, 0, d);
+        assert!(
+            (mu - expected).abs() <= 1e-14 * expected,
+            "direction {d}: μ = {mu:e}, expected {expected:e}"
+        );
     }
 }

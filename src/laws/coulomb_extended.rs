@@ -358,13 +358,21 @@ impl ExtendedCoulomb {
     /// FRIC_COEF): (μ₁, μ₂, ∂/∂γ̇ of each, ∂/∂p of each, ∂/∂θ̄ of each).
     #[must_use]
     pub fn coefficients(&self, rate: f64, pressure: f64, temperature: f64) -> [[f64; 2]; 4] {
-        let f = self.coefficient.factor(rate, pressure, temperature);
-        let (m1, m2) = (self.base.mu(), self.mu2);
+        // μ_i·f with μ_i multiplied in first (`CoefficientLaw::scaled`).
+        let f1 = self
+            .coefficient
+            .scaled(self.base.mu(), rate, pressure, temperature);
+        let f2 = if self.mu2 == self.base.mu() {
+            f1
+        } else {
+            self.coefficient
+                .scaled(self.mu2, rate, pressure, temperature)
+        };
         [
-            [m1 * f.value, m2 * f.value],
-            [m1 * f.d_rate, m2 * f.d_rate],
-            [m1 * f.d_pressure, m2 * f.d_pressure],
-            [m1 * f.d_temperature, m2 * f.d_temperature],
+            [f1.value, f2.value],
+            [f1.d_rate, f2.d_rate],
+            [f1.d_pressure, f2.d_pressure],
+            [f1.d_temperature, f2.d_temperature],
         ]
     }
 

@@ -60,6 +60,10 @@ pub struct Factor {
     pub d_temperature: f64,
 }
 
+/// (φ, φ', φ''), (π, π'), (Θ, Θ'): the three factors of the closed-form laws with their
+/// derivatives.
+type FactorParts = ((f64, f64, f64), (f64, f64), (f64, f64));
+
 /// The validated factor laws (everything except the reference coefficients).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CoefficientLaw {
@@ -281,8 +285,51 @@ impl CoefficientLaw {
         if let RateLaw::Table { table, inv_mu_ref } = self.rate {
             return table_factor(table, inv_mu_ref, rate, pressure, temperature);
         }
+        let ((phi, dphi, ddphi), (pi, dpi), (theta, dtheta)) =
+            self.closed_form_parts(rate, pressure, temperature);
+        Factor {
+            value: phi * pi * theta,
+            d_rate: dphi * pi * theta,
+            d_rate2: ddphi * pi * theta,
+            d_pressure: phi * dpi * theta,
+            d_temperature: phi * pi * dtheta,
+        }
+    }
+
+    /// μ·f(γ̇, p, θ̄) and its partials for a reference coefficient μ, multiplied as
+    /// ((μ·φ)·π)·Θ: μ·φ is the coefficient at the rate, a value of the law's own range, so
+    /// that no intermediate product under- or overflows where μ·f itself does not (the order
+    /// of [`Self::factor`], μ·(φ·π·Θ), lost μ_k·Θ = 5·10⁻¹⁸⁹ to an underflow of φ·Θ with
+    /// μ_s = 10²⁷², μ_k/μ_s = 3·10⁻²⁷⁵: fuzz target `fric_coef`, docs/fuzzing.md).
+    #[must_use]
+    pub fn scaled(&self, mu: f64, rate: f64, pressure: f64, temperature: f64) -> Factor {
+        if let RateLaw::Table { table, inv_mu_ref } = self.rate {
+            let f = table_factor(table, inv_mu_ref, rate, pressure, temperature);
+            return Factor {
+                value: mu * f.value,
+                d_rate: mu * f.d_rate,
+                d_rate2: mu * f.d_rate2,
+                d_pressure: mu * f.d_pressure,
+                d_temperature: mu * f.d_temperature,
+            };
+        }
+        let ((phi, dphi, ddphi), (pi, dpi), (theta, dtheta)) =
+            self.closed_form_parts(rate, pressure, temperature);
+        let (m, dm, ddm) = (mu * phi, mu * dphi, mu * ddphi);
+        Factor {
+            value: m * pi * theta,
+            d_rate: dm * pi * theta,
+            d_rate2: ddm * pi * theta,
+            d_pressure: m * dpi * theta,
+            d_temperature: m * pi * dtheta,
+        }
+    }
+
+    /// (φ, φ', φ''), (π, π'), (Θ, Θ') of the closed-form laws (not the table).
+    #[inline(always)]
+    fn closed_form_parts(&self, rate: f64, pressure: f64, temperature: f64) -> FactorParts {
         // φ(γ̇) = r + (1 − r)·exp(−d_c γ̇), φ' = −d_c (1 − r) exp(−d_c γ̇).
-        let (phi, dphi, ddphi) = match self.rate {
+        let phi = match self.rate {
             RateLaw::Constant | RateLaw::Table { .. } => (1.0, 0.0, 0.0),
             RateLaw::ExponentialDecay {
                 kinetic_ratio: r,
@@ -314,13 +361,7 @@ impl CoefficientLaw {
         } else {
             (1.0, 0.0)
         };
-        Factor {
-            value: phi * pi * theta,
-            d_rate: dphi * pi * theta,
-            d_rate2: ddphi * pi * theta,
-            d_pressure: phi * dpi * theta,
-            d_temperature: phi * pi * dtheta,
-        }
+        (phi, (pi, dpi), (theta, dtheta))
     }
 }
 
