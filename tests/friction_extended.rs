@@ -1445,3 +1445,33 @@ fn forced_sliding_split() {
         }
     }
 }
+
+/// Finding C3 (docs/fuzzing.md) through `fric_`: μ̄·f is formed with μ̄ multiplied in first.
+/// μ₁ = 10¹⁵⁰, μ₂ = μ₁/2 (the anisotropic, general path), the decay law frozen at the start
+/// rate `STATEV(2)` = 10³ (e = exp(−1000) = 0 in f64, so f = μ_k/μ_s·Θ with μ_k = 10⁻³) and
+/// Θ = exp(−427): slipping along direction 1, τ₁ = μ₁·f·p = μ_k·Θ·p ≈ 3.6·10⁻¹⁸⁹·p, a normal
+/// number, while f = 10⁻¹⁵³·Θ alone underflows to 0.
+#[test]
+fn friction_stress_of_a_huge_coefficient_times_a_tiny_factor_is_kept() {
+    let mut props = vec![0.0; 20];
+    props[..13].copy_from_slice(&[
+        1.0, 1e150, 0.5e150, 0.0, 1e-3, 0.0, 0.0, 1.0, 1e-3, 1.0, 0.0, 1.0, 0.0,
+    ]);
+    props[19] = 1.0;
+    let mut c = FricCall::new(2, &props);
+    c.press = 1.0;
+    c.dpress = 0.0;
+    c.statev = vec![0.0, 1e3, 1.0];
+    c.temp = [427.0, 427.0];
+    c.dgam = [1.0, 0.0, 0.0];
+    c.call();
+    assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+    let expected = 1e-3 * (-427.0f64).exp();
+    assert!(expected.is_normal() && (1e-153 * (-427.0f64).exp()) == 0.0);
+    assert!(
+        (c.tau[0] - expected).abs() <= 1e-12 * expected,
+        "τ₁ = {:e}, expected {expected:e}",
+        c.tau[0]
+    );
+    assert_eq!(c.tau[1], 0.0);
+}

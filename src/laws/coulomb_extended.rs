@@ -395,14 +395,16 @@ impl ExtendedCoulomb {
         if p < 0.0 {
             return Critical::default();
         }
+        // μ̄·f with μ̄ multiplied in first, so that f cannot underflow where μ̄·f is a normal
+        // number (finding C3, docs/fuzzing.md).
         let Factor {
             value,
             d_rate,
             d_rate2,
             d_pressure,
             d_temperature,
-        } = self.coefficient.factor(rate, p, theta);
-        let mu = mbar * value;
+        } = self.coefficient.scaled(mbar, rate, p, theta);
+        let mu = value;
         let tau_max = self.base.shear_limit().unwrap_or(f64::INFINITY);
         if mu * p >= tau_max {
             Critical {
@@ -412,10 +414,10 @@ impl ExtendedCoulomb {
         } else {
             Critical {
                 value: mu * p,
-                d_rate: mbar * d_rate * p,
-                d_rate2: mbar * d_rate2 * p,
-                d_pressure: mu + mbar * d_pressure * p,
-                d_temperature: mbar * d_temperature * p,
+                d_rate: d_rate * p,
+                d_rate2: d_rate2 * p,
+                d_pressure: mu + d_pressure * p,
+                d_temperature: d_temperature * p,
             }
         }
     }
