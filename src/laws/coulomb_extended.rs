@@ -897,14 +897,7 @@ impl ExtendedCoulomb {
         let ds_dtheta = (stiffness_theta * (g - slip_eq) - crit.d_temperature) / d;
         let transverse = t / g;
         // Eq. 5.2.3-3 in this formulation: (δ − nn) τ̄_crit/γ̄_eq^pr + nn (∂τ̄_crit/∂s) ∂s/∂G.
-        let mut ddtddg = [[0.0; N]; N];
-        for i in 0..N {
-            for j in 0..N {
-                let delta = if i == j { 1.0 } else { 0.0 };
-                let proj = if N == 1 { 0.0 } else { delta - n[i] * n[j] };
-                ddtddg[i][j] = transverse * proj + n[i] * n[j] * t_s * ds_dg;
-            }
-        }
+        let ddtddg = rate_slip_tangent(&n, transverse, t_s, ds_dg);
         let dtau_dp = t_s * ds_dp + crit.d_pressure;
         // θ̄: through the start elastic slip v = ∂γ̄^pr/∂θ̄ and through τ̄_crit(·, θ̄).
         let v = d_elastic_dtheta;
@@ -1088,6 +1081,27 @@ fn rotate<const N: usize>(drot: &[[f64; 2]; 2], v: &[f64; N]) -> [f64; N] {
         out[i] = drot[i][0] * v[0] + drot[i][1] * v[1];
     }
     out
+}
+
+/// The slip tangent of a rate-dependent μ (Eq. 5.2.3-3): (δ_ij − n_i n_j)·τ_crit/γ_eq^pr +
+/// n_i n_j·(∂τ_crit/∂s)·(∂s/∂G), the first term 0 in 2-D; shared by the general path and the
+/// decay law's lean path.
+#[inline(always)]
+pub(super) fn rate_slip_tangent<const N: usize>(
+    n: &[f64; N],
+    transverse: f64,
+    t_s: f64,
+    ds_dg: f64,
+) -> [[f64; N]; N] {
+    let mut ddtddg = [[0.0; N]; N];
+    for i in 0..N {
+        for j in 0..N {
+            let delta = if i == j { 1.0 } else { 0.0 };
+            let proj = if N == 1 { 0.0 } else { delta - n[i] * n[j] };
+            ddtddg[i][j] = transverse * proj + n[i] * n[j] * t_s * ds_dg;
+        }
+    }
+    ddtddg
 }
 
 #[cfg(test)]

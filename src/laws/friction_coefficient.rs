@@ -282,25 +282,16 @@ impl CoefficientLaw {
     #[inline]
     #[must_use]
     pub fn factor(&self, rate: f64, pressure: f64, temperature: f64) -> Factor {
-        if let RateLaw::Table { table, inv_mu_ref } = self.rate {
-            return table_factor(table, inv_mu_ref, rate, pressure, temperature);
-        }
-        let ((phi, dphi, ddphi), (pi, dpi), (theta, dtheta)) =
-            self.closed_form_parts(rate, pressure, temperature);
-        Factor {
-            value: phi * pi * theta,
-            d_rate: dphi * pi * theta,
-            d_rate2: ddphi * pi * theta,
-            d_pressure: phi * dpi * theta,
-            d_temperature: phi * pi * dtheta,
-        }
+        // 1·x = x exactly: the same numbers as φ·π·Θ.
+        self.scaled(1.0, rate, pressure, temperature)
     }
 
     /// μ·f(γ̇, p, θ̄) and its partials for a reference coefficient μ, multiplied as
     /// ((μ·φ)·π)·Θ: μ·φ is the coefficient at the rate, a value of the law's own range, so
     /// that no intermediate product under- or overflows where μ·f itself does not (the order
-    /// of [`Self::factor`], μ·(φ·π·Θ), lost μ_k·Θ = 5·10⁻¹⁸⁹ to an underflow of φ·Θ with
+    /// μ·(φ·π·Θ) lost μ_k·Θ = 5·10⁻¹⁸⁹ to an underflow of φ·Θ with
     /// μ_s = 10²⁷², μ_k/μ_s = 3·10⁻²⁷⁵: fuzz target `fric_coef`, docs/fuzzing.md).
+    #[inline]
     #[must_use]
     pub fn scaled(&self, mu: f64, rate: f64, pressure: f64, temperature: f64) -> Factor {
         if let RateLaw::Table { table, inv_mu_ref } = self.rate {

@@ -103,11 +103,7 @@ pub(crate) fn unit<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
     if N > 1 && !is_positive_normal(len) {
         return unit_of_extreme(*v, len);
     }
-    let mut out = *v;
-    for x in &mut out {
-        *x /= len;
-    }
-    out
+    divided(v, len)
 }
 
 /// [`unit`] for a caller that refuses its results when `len` is infinite (the elastic-stick
@@ -118,6 +114,12 @@ pub(crate) fn unit_unless_infinite<const N: usize>(v: &[f64; N], len: f64) -> [f
     if N > 1 && len < f64::MIN_POSITIVE {
         return unit_of_extreme(*v, len);
     }
+    divided(v, len)
+}
+
+/// `v/len` entry by entry.
+#[inline(always)]
+fn divided<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
     let mut out = *v;
     for x in &mut out {
         *x /= len;
@@ -136,12 +138,7 @@ fn unit_of_extreme<const N: usize>(v: [f64; N], len: f64) -> [f64; N] {
     const UP: f64 = f64::from_bits((1023 + 600) << 52);
     const DOWN: f64 = f64::from_bits((1023 - 600) << 52);
     let w = scale(&v, if len < 1.0 { UP } else { DOWN });
-    let len = norm(&w);
-    let mut out = w;
-    for x in &mut out {
-        *x /= len;
-    }
-    out
+    divided(&w, norm(&w))
 }
 
 #[inline(always)]

@@ -221,14 +221,7 @@ impl ExtendedCoulomb {
                 let ds_dp = (stiffness_p * (g - slip_eq) - crit.d_pressure) * per_dd;
                 let transverse = t / g;
                 // Eq. 5.2.3-3: (δ − nn) τ_crit/γ_eq^pr + nn (∂τ_crit/∂s) ∂s/∂G.
-                let mut ddtddg = [[0.0; N]; N];
-                for i in 0..N {
-                    for j in 0..N {
-                        let delta = if i == j { 1.0 } else { 0.0 };
-                        let proj = if N == 1 { 0.0 } else { delta - n[i] * n[j] };
-                        ddtddg[i][j] = transverse * proj + n[i] * n[j] * t_s * ds_dg;
-                    }
-                }
+                let ddtddg = super::rate_slip_tangent(&n, transverse, t_s, ds_dg);
                 let dtau_dp = t_s * ds_dp + crit.d_pressure;
                 let mut ddtdtheta = [0.0; N];
                 if with_theta {
