@@ -13,8 +13,8 @@
 //! increment held fixed.
 
 use super::small_vec::{
-    add, all_finite, diagonal, dot, length_beyond, norm, scale, transverse_projection, unit,
-    unit_unless_infinite,
+    add, all_finite, diagonal, divided, dot, is_positive_normal, length_beyond, norm, scale, sum,
+    transverse_projection, unit, unit_unless_infinite,
 };
 use crate::{LawError, Outcome};
 
@@ -441,43 +441,55 @@ impl Coulomb {
         self.integrate(inc, state, false)
     }
 
-    /// The increment, with the stick stress of elastic stick formed for a subnormal k_s when
-    /// `small_stiffness` (else such an increment gives `None`).
+    /// The increment. Elastic stick has two tiers (`careful`): the one-pass tier answers when
+    /// a few cheap bounds show that it may (else `None`), the careful tier decides exactly
+    /// which increments have finite answers and forms the stick stress for a subnormal k_s;
+    /// where both answer, they give the same bits ([`Self::elastic_stick_bounded`]).
     #[inline(always)]
     fn integrate<const N: usize>(
         &self,
         inc: &Increment<N>,
         state: &CoulombState,
-        small_stiffness: bool,
+        careful: bool,
     ) -> Option<Update<N>> {
         #[cfg(test)]
         crate::testing::maybe_panic();
         // x·0 is ±0 for finite x and NaN otherwise: one sum tests every value at once. The
         // state (STATEV) is tested with the inputs.
-        let mut probe = state.probe() + (inc.pressure * 0.0 + inc.dpressure * 0.0);
-        let (contact, slip) = match self.stick {
-            StickMode::Rough => (Contact::ExactStick, 0.0),
+        let exact_inputs = || state.probe() + (inc.pressure * 0.0 + inc.dpressure * 0.0);
+        let (contact, slip, probe) = match self.stick {
+            StickMode::Rough => (Contact::ExactStick, 0.0, exact_inputs()),
             StickMode::Elastic => {
                 let gamma_crit = self.critical_slip_if_defined(inc.characteristic_length)?;
-                let (t, slip, results) = self.elastic_stick(inc, gamma_crit, small_stiffness);
-                // Δγ is not tested on its own here: it enters γ^pr, and a non-finite γ^pr takes
-                // the slip branch with a non-finite Δγ_eq^sl, which the results' test refuses.
-                let mut inputs = inc.dtime * 0.0;
-                for x in &inc.tau {
-                    inputs += x * 0.0;
-                }
-                probe += inputs + results;
-                (Contact::Motion(t), slip)
+                let trial = self.elastic_trial(inc, gamma_crit);
+                let (t, slip, probe) = if careful {
+                    let (t, slip, results) = self.elastic_stick_checked(&trial);
+                    // Δγ is not tested on its own: it enters γ^pr, and a non-finite γ^pr takes
+                    // the slip branch with a non-finite Δγ_eq^sl, which the results' test
+                    // refuses.
+                    let mut inputs = inc.dtime * 0.0;
+                    for x in &inc.tau {
+                        inputs += x * 0.0;
+                    }
+                    (t, slip, exact_inputs() + (inputs + results))
+                } else {
+                    // A sum is finite only if every term is (±∞ and NaN propagate; ∞ − ∞ is
+                    // NaN); it can also overflow for finite terms, which then go to the
+                    // careful tier. Δγ enters γ^pr, which the bound tests.
+                    let inputs = ((inc.pressure + inc.dpressure)
+                        + (state.accumulated_slip + state.slip_rate))
+                        + (sum(&inc.tau) + inc.dtime);
+                    let (t, slip, bound) = self.elastic_stick_bounded(&trial);
+                    (t, slip, (inputs + bound) * 0.0)
+                };
+                (Contact::Motion(t), slip, probe)
             }
             StickMode::Exact => {
-                probe += input_probe(inc, StickMode::Exact);
+                let inputs = exact_inputs() + input_probe(inc, StickMode::Exact);
                 let gamma_crit = self.critical_slip_if_defined(inc.characteristic_length)?;
                 match self.exact_stick(inc, gamma_crit) {
-                    Some((t, slip)) => {
-                        probe += traction_probe(&t);
-                        (Contact::Motion(t), slip)
-                    }
-                    None => (Contact::ExactStick, 0.0),
+                    Some((t, slip)) => (Contact::Motion(t), slip, inputs + traction_probe(&t)),
+                    None => (Contact::ExactStick, 0.0, inputs),
                 }
             }
         };
@@ -535,10 +547,47 @@ impl Coulomb {
         overflowed()
     }
 
+    /// The elastic predictor of elastic stick and the end-of-increment critical stress.
+    #[inline(always)]
+    fn elastic_trial<const N: usize>(&self, inc: &Increment<N>, gamma_crit: f64) -> Trial<N> {
+        // Elastic slip at the start, from the start-of-increment stiffness: γ̄^el = τ̄/k_s(p − Δp).
+        let (tau_crit_start, _) = self.critical_stress_of_finite(inc.pressure - inc.dpressure);
+        let elastic_start = if tau_crit_start > 0.0 {
+            scale(&inc.tau, gamma_crit / tau_crit_start)
+        } else {
+            [0.0; N]
+        };
+        let (tau_crit, dtau_crit_dp) = self.critical_stress_of_finite(inc.pressure);
+        Trial {
+            // Elastic predictor γ^pr = γ̄^el + Δγ.
+            predictor: add(&elastic_start, &inc.dgam),
+            gamma_crit,
+            tau_crit,
+            dtau_crit_dp,
+        }
+    }
+
+    /// [`Self::critical_stress`] for a finite p, as two selects (`minsd` and a mask) instead of
+    /// a branch: the same values; for a NaN p it gives τ_max where `critical_stress` gives NaN
+    /// (the callers refuse a NaN pressure through their input tests).
+    #[inline(always)]
+    fn critical_stress_of_finite(&self, p: f64) -> (f64, f64) {
+        let mu_p = self.mu * p;
+        let below_limit = mu_p < self.tau_max;
+        if p < 0.0 {
+            (0.0, 0.0)
+        } else {
+            (
+                if below_limit { mu_p } else { self.tau_max },
+                if below_limit { self.mu } else { 0.0 },
+            )
+        }
+    }
+
     /// Elastic stick with the backward-Euler return map (Eq. 5.2.3-2) and its consistent
-    /// linearization (Eq. 5.2.3-1 in stick, Eq. 5.2.3-3 in slip); also the slip increment
-    /// Δγ_eq^sl (0 in stick) and a probe that is ±0 exactly when every result is finite (for
-    /// finite inputs).
+    /// linearization (Eq. 5.2.3-1 in stick, Eq. 5.2.3-3 in slip), the careful tier: also the
+    /// slip increment Δγ_eq^sl (0 in stick) and a probe that is ±0 exactly when every result
+    /// is finite (for finite inputs).
     ///
     /// The probe tests a few scalars instead of the results (6 of them for NFDIR = 1, 12 for
     /// NFDIR = 2): in stick |γ^pr_i| ≤ γ_eq^pr ≤ γ_crit and in slip |n_i| ≤ 1, each up to a few
@@ -547,94 +596,118 @@ impl Coulomb {
     /// (δ − nn) τ_crit/γ_eq^pr ≤ k_s since γ_eq^pr > γ_crit in slip — or it is SED or SFD.
     /// Those scalars times [`HEADROOM`] finite, γ_crit, k_s and ∂τ_crit/∂p/γ_crit finite (a
     /// product with an infinite factor and a zero one is NaN), SED and SFD finite: every result
-    /// is finite. They are ready before the slip branch's division, so the test adds little to
-    /// the call (docs/performance.md). Stick is decided on the squares where it can be
-    /// (`small_vec::length_beyond`): |γ^pr| ≤ γ_crit·(1 + 2ε), within the same roundings.
+    /// is finite. Stick is decided on the squares where it can be (`small_vec::length_beyond`):
+    /// |γ^pr| ≤ γ_crit·(1 + 2ε), within the same roundings.
     ///
     /// Where k_s = τ_crit/γ_crit is subnormal, k_s·γ^pr keeps too few digits (τ_max near
-    /// f64::MIN_POSITIVE: fuzz target `fric`): without `small_stiffness` the probe then fails,
-    /// with it the stick stress is τ_crit·(γ^pr/γ_crit) (γ^pr/γ_crit ≤ 1: within τ_crit to
-    /// round-off). Only the rare path pays for that division.
+    /// f64::MIN_POSITIVE: fuzz target `fric`): the stick stress is then τ_crit·(γ^pr/γ_crit)
+    /// (γ^pr/γ_crit ≤ 1: within τ_crit to round-off). Only this tier pays for that division.
     #[inline(always)]
-    fn elastic_stick<const N: usize>(
-        &self,
-        inc: &Increment<N>,
-        gamma_crit: f64,
-        small_stiffness: bool,
-    ) -> (Traction<N>, f64, f64) {
-        // Elastic slip at the start, from the start-of-increment stiffness: γ̄^el = τ̄/k_s(p − Δp).
-        let (tau_crit_start, _) = self.critical_stress(inc.pressure - inc.dpressure);
-        let elastic_start = if tau_crit_start > 0.0 {
-            scale(&inc.tau, gamma_crit / tau_crit_start)
-        } else {
-            [0.0; N]
-        };
-        // Elastic predictor γ^pr = γ̄^el + Δγ.
-        let predictor = add(&elastic_start, &inc.dgam);
-        let (tau_crit, dtau_crit_dp) = self.critical_stress(inc.pressure);
+    fn elastic_stick_checked<const N: usize>(&self, trial: &Trial<N>) -> (Traction<N>, f64, f64) {
+        let Trial {
+            predictor,
+            gamma_crit,
+            tau_crit,
+            dtau_crit_dp,
+        } = *trial;
         let stiffness = tau_crit / gamma_crit;
         // x·0 is ±0 for finite x and NaN otherwise.
-        let subnormal = stiffness > 0.0 && stiffness < f64::MIN_POSITIVE;
         let bounds = (gamma_crit * 0.0 + (tau_crit * HEADROOM) * 0.0)
-            + ((stiffness * HEADROOM) * 0.0 + (dtau_crit_dp * HEADROOM) * 0.0)
-            + if subnormal && !small_stiffness {
-                f64::NAN
-            } else {
-                0.0
-            };
-
+            + ((stiffness * HEADROOM) * 0.0 + (dtau_crit_dp * HEADROOM) * 0.0);
         match length_beyond(&predictor, gamma_crit) {
             None => {
-                // Stick: τ = k_s γ^pr; dτ = k_s dγ + (τ/τ_crit)(∂τ_crit/∂p) dp (Eq. 5.2.3-1),
-                // written as γ^pr (∂τ_crit/∂p)/γ_crit so it stays right at p = 0.
-                let pressure_factor = dtau_crit_dp / gamma_crit;
-                let tau = if small_stiffness && subnormal {
+                let tau = if stiffness > 0.0 && stiffness < f64::MIN_POSITIVE {
                     std::array::from_fn(|i| predictor[i] / gamma_crit * tau_crit)
                 } else {
                     scale(&predictor, stiffness)
                 };
-                let t = Traction {
-                    tau,
-                    ddtddg: diagonal(stiffness),
-                    ddtddp: scale(&predictor, pressure_factor),
-                    dslip: [0.0; N],
-                    // k_s|γ^pr|²/2 as τ·γ^pr/2: no square root in stick.
-                    sed: 0.5 * dot(&tau, &predictor),
-                    sfd: 0.0,
-                };
-                let probe = bounds + (pressure_factor * 0.0 + t.sed * 0.0);
-                (t, 0.0, probe)
+                let t = trial.stick(stiffness, tau);
+                let probe = bounds + (t.ddtddp_factor * 0.0 + t.traction.sed * 0.0);
+                (t.traction, 0.0, probe)
             }
             Some(predictor_eq) => {
-                // Slip: Δγ_eq^sl = γ_eq^pr − γ_crit, τ = n τ_crit (Eq. 5.2.3-2).
-                // In 2-D n = ±1, the sign of γ^pr: γ^pr/|γ^pr| for every γ^pr this branch can
-                // answer (finite, beyond γ_crit > 0), without the division.
                 let n = if N == 1 {
                     [1.0f64.copysign(predictor[0]); N]
                 } else {
                     unit_unless_infinite(&predictor, predictor_eq)
                 };
-                let slip_eq = predictor_eq - gamma_crit;
-                let transverse = tau_crit / predictor_eq;
-                let t = Traction {
-                    tau: scale(&n, tau_crit),
-                    // Eq. 5.2.3-3: (δ_ij − n_i n_j) τ_crit/γ_eq^pr dγ_j + n_i ∂τ_crit/∂p dp; in
-                    // 2-D exactly 0 (n² = 1).
-                    ddtddg: if N == 1 {
-                        [[0.0; N]; N]
-                    } else {
-                        transverse_projection(&n, transverse)
-                    },
-                    ddtddp: scale(&n, dtau_crit_dp),
-                    dslip: scale(&n, slip_eq),
-                    // |τ|²/(2k_s) with |τ| = τ_crit.
-                    sed: 0.5 * tau_crit * gamma_crit,
-                    sfd: tau_crit * slip_eq,
-                };
+                let (t, slip_eq) = trial.slip(n, predictor_eq);
                 // Δγ_eq^sl finite also means γ_eq^pr finite (not NaN): the slip branch is then the
                 // γ_eq^pr > γ_crit of the test above.
                 let probe = bounds + ((slip_eq * HEADROOM) * 0.0 + (t.sed * 0.0 + t.sfd * 0.0));
                 (t, slip_eq, probe)
+            }
+        }
+    }
+
+    /// [`Self::elastic_stick_checked`] in one pass, the tier `fric_` tries first: the same
+    /// decisions and formulas, hence the same bits, wherever it answers. It answers when the
+    /// returned bound is finite; the bound is a few operations on values that are ready before
+    /// the square root of the slip branch, so the call does not wait on it.
+    ///
+    /// It requires (else the bound is NaN or ∞, and the careful tier decides):
+    /// 1. γ_crit² a normal number, i.e. 2⁻⁵¹¹ ≤ γ_crit < 2⁵¹²: the squares decide stick, and
+    ///    in slip |γ^pr| > γ_crit ≥ 2⁻⁵¹¹, so γ^pr/|γ^pr| needs no scaling (as in the careful
+    ///    tier, which then takes the same plain quotient);
+    /// 2. B = ((τ_crit + ∂τ_crit/∂p)·2⁵¹²)·(X + γ_crit) finite, with X = |γ^pr| for N = 1 and
+    ///    X = γ^pr·γ^pr + 1 ≥ |γ^pr| for N = 2. All terms are ≥ 0, so B finite means each is:
+    ///    τ_crit and ∂τ_crit/∂p below 2⁵¹², hence k_s = τ_crit/γ_crit and (∂τ_crit/∂p)/γ_crit
+    ///    below 2¹⁰²³; γ^pr·γ^pr finite, so |γ^pr| < 2⁵¹² and the norm is the plain square root
+    ///    (as in the careful tier); τ_crit·γ_crit and τ_crit·|γ^pr| at most B·2⁻⁵¹². Every
+    ///    result is one of these or bounded by one of them times 1 + (a few ε), as in the
+    ///    careful tier's argument (SED by τ_crit γ_crit, SFD by τ_crit|γ^pr|, Δγ^sl by |γ^pr|):
+    ///    all finite, far from overflow;
+    /// 3. in stick, k_s zero or normal (a subnormal k_s is the careful tier's case).
+    #[inline(always)]
+    fn elastic_stick_bounded<const N: usize>(&self, trial: &Trial<N>) -> (Traction<N>, f64, f64) {
+        let Trial {
+            predictor,
+            gamma_crit,
+            tau_crit,
+            dtau_crit_dp,
+        } = *trial;
+        let squares = dot(&predictor, &predictor);
+        let gamma_crit_sq = gamma_crit * gamma_crit;
+        let extent = if N == 1 {
+            predictor[0].abs()
+        } else {
+            squares + 1.0
+        };
+        let bound = ((tau_crit + dtau_crit_dp) * TWO_POW_512) * (extent + gamma_crit)
+            + if is_positive_normal(gamma_crit_sq) {
+                0.0
+            } else {
+                f64::NAN
+            };
+        // |γ^pr| when beyond γ_crit: for N = 2 on the squares first, as `length_beyond` with
+        // γ_crit² normal (requirement 1), and the plain square root (requirement 2).
+        let beyond = if N == 1 {
+            Some(predictor[0].abs())
+        } else if squares <= gamma_crit_sq {
+            None
+        } else {
+            Some(squares.sqrt())
+        };
+        match beyond.filter(|&length| length > gamma_crit) {
+            None => {
+                let stiffness = tau_crit / gamma_crit;
+                let t = trial.stick(stiffness, scale(&predictor, stiffness));
+                let subnormal = stiffness > 0.0 && stiffness < f64::MIN_POSITIVE;
+                (
+                    t.traction,
+                    0.0,
+                    bound + if subnormal { f64::NAN } else { 0.0 },
+                )
+            }
+            Some(predictor_eq) => {
+                // In 2-D n = ±1, the sign of γ^pr: γ^pr/|γ^pr| without the division.
+                let n = if N == 1 {
+                    [1.0f64.copysign(predictor[0]); N]
+                } else {
+                    divided(&predictor, predictor_eq)
+                };
+                let (t, slip_eq) = trial.slip(n, predictor_eq);
+                (t, slip_eq, bound)
             }
         }
     }
@@ -696,6 +769,71 @@ impl Coulomb {
 /// 1 + 2⁻²⁰: a bound x with x·HEADROOM finite leaves room for the few roundings (each a
 /// relative 2⁻⁵³) between x and the results it bounds ([`Coulomb::elastic_stick`]).
 pub(crate) const HEADROOM: f64 = 1.0 + 1.0 / 1_048_576.0;
+
+/// 2⁵¹²: the headroom of [`Coulomb::elastic_stick_bounded`]'s bound.
+const TWO_POW_512: f64 = f64::from_bits((1023 + 512) << 52);
+
+/// The elastic predictor of one increment and what the return map needs with it.
+#[derive(Clone, Copy)]
+struct Trial<const N: usize> {
+    /// γ^pr = γ̄^el + Δγ.
+    predictor: [f64; N],
+    gamma_crit: f64,
+    /// τ_crit and ∂τ_crit/∂p at the end of the increment.
+    tau_crit: f64,
+    dtau_crit_dp: f64,
+}
+
+/// A stick answer with the factor of its pressure tangent (for the careful tier's test).
+struct StickAnswer<const N: usize> {
+    traction: Traction<N>,
+    ddtddp_factor: f64,
+}
+
+impl<const N: usize> Trial<N> {
+    /// Stick with stress `tau` (= k_s γ^pr): dτ = k_s dγ + (τ/τ_crit)(∂τ_crit/∂p) dp
+    /// (Eq. 5.2.3-1), written as γ^pr (∂τ_crit/∂p)/γ_crit so it stays right at p = 0.
+    #[inline(always)]
+    fn stick(&self, stiffness: f64, tau: [f64; N]) -> StickAnswer<N> {
+        let pressure_factor = self.dtau_crit_dp / self.gamma_crit;
+        StickAnswer {
+            traction: Traction {
+                tau,
+                ddtddg: diagonal(stiffness),
+                ddtddp: scale(&self.predictor, pressure_factor),
+                dslip: [0.0; N],
+                // k_s|γ^pr|²/2 as τ·γ^pr/2: no square root in stick.
+                sed: 0.5 * dot(&tau, &self.predictor),
+                sfd: 0.0,
+            },
+            ddtddp_factor: pressure_factor,
+        }
+    }
+
+    /// Slip along `n` = γ^pr/γ_eq^pr: Δγ_eq^sl = γ_eq^pr − γ_crit, τ = n τ_crit
+    /// (Eq. 5.2.3-2), and the slip increment Δγ_eq^sl.
+    #[inline(always)]
+    fn slip(&self, n: [f64; N], predictor_eq: f64) -> (Traction<N>, f64) {
+        let slip_eq = predictor_eq - self.gamma_crit;
+        let transverse = self.tau_crit / predictor_eq;
+        let t = Traction {
+            tau: scale(&n, self.tau_crit),
+            // Eq. 5.2.3-3: (δ_ij − n_i n_j) τ_crit/γ_eq^pr dγ_j + n_i ∂τ_crit/∂p dp; in 2-D
+            // exactly 0 (n² = 1).
+            ddtddg: if N == 1 {
+                [[0.0; N]; N]
+            } else {
+                transverse_projection(&n, transverse)
+            },
+            ddtddp: scale(&n, self.dtau_crit_dp),
+            dslip: scale(&n, slip_eq),
+            // |τ|²/(2k_s) with |τ| = τ_crit.
+            sed: 0.5 * self.tau_crit * self.gamma_crit,
+            sfd: self.tau_crit * slip_eq,
+        };
+        (t, slip_eq)
+    }
+}
 
 /// `x` capped at f64::MAX (`x` is never NaN here: a sum or quotient of finite values ≥ 0 with
 /// a positive divisor). One compare-and-select, cheaper than `f64::min`'s NaN handling.
@@ -1076,5 +1214,196 @@ mod tests {
         }
         // Both branches were reached often enough for the test to mean something.
         assert!(answered[0] > 1000 && answered[1] > 1000, "{answered:?}");
+    }
+
+    /// Every bit of an update, for comparisons that tell −0 from +0.
+    fn update_bits<const N: usize>(up: &Update<N>) -> Vec<u64> {
+        let mut v = vec![
+            up.state.accumulated_slip.to_bits(),
+            up.state.slip_rate.to_bits(),
+            up.state.status as u64,
+        ];
+        if let Contact::Motion(t) = &up.contact {
+            let all = t
+                .tau
+                .iter()
+                .chain(&t.ddtddp)
+                .chain(&t.dslip)
+                .chain(t.ddtddg.iter().flatten())
+                .chain([&t.sed, &t.sfd]);
+            v.extend(all.map(|x| x.to_bits()));
+        }
+        v
+    }
+
+    /// Runs both tiers of elastic stick on one increment: the one-pass tier may decline what the
+    /// careful tier answers, never the reverse, and where both answer the bits are the same.
+    /// Returns (one-pass answered, careful answered).
+    fn tiers_agree<const N: usize>(
+        law: &Coulomb,
+        inc: &Increment<N>,
+        start: &CoulombState,
+    ) -> (bool, bool) {
+        let fast = law.integrate(inc, start, false);
+        let careful = law.integrate(inc, start, true);
+        if let Some(f) = &fast {
+            let Some(c) = &careful else {
+                panic!(
+                    "one-pass tier answered what the careful tier refuses: {law:?} {inc:?} {start:?}"
+                );
+            };
+            assert_eq!(update_bits(f), update_bits(c), "{law:?} {inc:?} {start:?}");
+        }
+        (fast.is_some(), careful.is_some())
+    }
+
+    fn law_of(mu: f64, gamma_crit: f64, tau_max: f64) -> Option<Coulomb> {
+        let law = Coulomb::new(mu)
+            .ok()?
+            .with_critical_slip_absolute(gamma_crit)
+            .ok()?;
+        if tau_max > 0.0 {
+            law.with_shear_limit(tau_max).ok()
+        } else {
+            Some(law)
+        }
+    }
+
+    /// The one-pass tier over the whole f64 range (magnitudes, signs, zeros, non-finite state)
+    /// against the careful tier.
+    #[test]
+    fn one_pass_tier_gives_the_careful_tiers_bits_or_declines() {
+        fn run<const N: usize>(seed: u64) -> [usize; 3] {
+            let mut state = seed;
+            // [both answered, only the careful tier, neither]
+            let mut seen = [0usize; 3];
+            for case in 0..100_000 {
+                let mut draw = || wide(&mut state);
+                let tau_max = if case % 3 == 0 { draw().abs() } else { 0.0 };
+                let Some(law) = law_of(draw().abs(), draw().abs(), tau_max) else {
+                    continue;
+                };
+                let mut inc = Increment::<N> {
+                    tau: std::array::from_fn(|_| draw()),
+                    dgam: std::array::from_fn(|_| draw()),
+                    pressure: draw(),
+                    dpressure: draw(),
+                    dtime: draw().abs(),
+                    ..Increment::default()
+                };
+                // One input in eleven made ±∞ or NaN.
+                if case % 11 == 0 {
+                    let bad = [f64::INFINITY, f64::NEG_INFINITY, f64::NAN][case % 3];
+                    match (case / 11) % 5 {
+                        0 => inc.tau[N - 1] = bad,
+                        1 => inc.dgam[0] = bad,
+                        2 => inc.pressure = bad,
+                        3 => inc.dpressure = bad,
+                        _ => inc.dtime = bad,
+                    }
+                }
+                let start = CoulombState {
+                    accumulated_slip: if case % 50 == 0 {
+                        f64::INFINITY
+                    } else {
+                        draw().abs()
+                    },
+                    slip_rate: if case % 70 == 0 {
+                        f64::NAN
+                    } else {
+                        draw().abs()
+                    },
+                    status: FrictionStatus::Stick,
+                };
+                match tiers_agree(&law, &inc, &start) {
+                    (true, _) => seen[0] += 1,
+                    (false, true) => seen[1] += 1,
+                    (false, false) => seen[2] += 1,
+                }
+            }
+            seen
+        }
+        for seen in [
+            run::<1>(0x2545_f491_4f6c_dd1d),
+            run::<2>(0x9e37_79b9_7f4a_7c15),
+        ] {
+            // Each kind of outcome occurred often enough for the comparison to mean something.
+            assert!(seen.iter().all(|&n| n > 1000), "{seen:?}");
+        }
+    }
+
+    /// Where the one-pass tier declines on purpose (the bound's edges), the careful tier still
+    /// answers; and increments of ordinary magnitude never leave the one-pass tier.
+    #[test]
+    fn one_pass_tier_declines_only_at_the_edges_of_the_range() {
+        let start = CoulombState::default();
+        let edge = |law: Coulomb, tau: f64, dgam: f64, pressure: f64| {
+            let inc = Increment::<2> {
+                tau: [tau, 0.0],
+                dgam: [dgam, 0.5 * dgam],
+                pressure,
+                dtime: 1.0,
+                ..Increment::default()
+            };
+            tiers_agree(&law, &inc, &start)
+        };
+        let law = |mu, gamma_crit| law_of(mu, gamma_crit, 0.0).unwrap();
+        let two = |e: i32| 2f64.powi(e);
+        // γ_crit² normal (γ_crit = 2⁻⁵¹¹) is the one-pass tier's; just below it, not.
+        assert_eq!(edge(law(0.3, two(-511)), 0.0, two(-509), 1.0), (true, true));
+        assert_eq!(
+            edge(law(0.3, two(-512)), 0.0, two(-510), 1.0),
+            (false, true)
+        );
+        // At the top, sticking (the bound also holds |γ^pr|² + 1 and γ_crit).
+        assert_eq!(edge(law(0.3, two(510)), 0.0, two(200), 1.0), (true, true));
+        assert_eq!(edge(law(0.3, two(512)), 0.0, two(200), 1.0), (false, true));
+        // τ_crit at 2⁵¹² and a slip whose square overflows: finite answers, careful tier.
+        assert_eq!(edge(law(1.0, 1e-3), 0.0, 1e-2, two(513)), (false, true));
+        assert_eq!(edge(law(0.3, 1e-3), 0.0, 1e160, 1e6), (false, true));
+        // A subnormal stick stiffness: the careful tier forms τ_crit·(γ^pr/γ_crit).
+        let soft = law_of(0.3, 1.0, 1e-308).unwrap();
+        assert_eq!(edge(soft, 0.0, 0.25, 1.0), (false, true));
+
+        // Ordinary increments (SI units, γ_crit from μm to cm, stick and slip, loading and
+        // unloading): always the one-pass tier.
+        let mut state = 0x5851_f42d_4c95_7f2d_u64;
+        let mut uniform = move |lo: f64, hi: f64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            lo + (hi - lo) * ((state >> 11) as f64 / (1u64 << 53) as f64)
+        };
+        for case in 0..20_000 {
+            let gamma_crit = 10f64.powf(uniform(-6.0, -2.0));
+            let tau_max = if case % 2 == 0 {
+                uniform(1e3, 1e8)
+            } else {
+                0.0
+            };
+            let law = law_of(uniform(0.0, 1.2), gamma_crit, tau_max).unwrap();
+            let pressure = uniform(-1e6, 1e9);
+            let inc = Increment::<2> {
+                tau: [uniform(-1e8, 1e8), uniform(-1e8, 1e8)],
+                dgam: [
+                    uniform(-3.0, 3.0) * gamma_crit,
+                    uniform(-3.0, 3.0) * gamma_crit,
+                ],
+                pressure,
+                dpressure: uniform(-1.0, 1.0) * pressure.abs(),
+                dtime: uniform(1e-6, 1.0),
+                ..Increment::default()
+            };
+            let start = CoulombState {
+                accumulated_slip: uniform(0.0, 1.0),
+                slip_rate: uniform(0.0, 10.0),
+                status: FrictionStatus::Slip,
+            };
+            assert_eq!(
+                tiers_agree(&law, &inc, &start),
+                (true, true),
+                "{law:?} {inc:?}"
+            );
+        }
     }
 }

@@ -43,7 +43,7 @@ pub(crate) fn length_beyond<const N: usize>(v: &[f64; N], bound: f64) -> Option<
 /// `f64::MIN_POSITIVE ≤ x < ∞`, in one integer comparison of the bits (negative values, NaN,
 /// zero and subnormals all fall outside): the range test of the per-call path.
 #[inline(always)]
-fn is_positive_normal(x: f64) -> bool {
+pub(crate) fn is_positive_normal(x: f64) -> bool {
     x.to_bits().wrapping_sub(f64::MIN_POSITIVE.to_bits())
         < f64::INFINITY.to_bits() - f64::MIN_POSITIVE.to_bits()
 }
@@ -117,9 +117,16 @@ pub(crate) fn unit_unless_infinite<const N: usize>(v: &[f64; N], len: f64) -> [f
     divided(v, len)
 }
 
+/// Σ v_i, from the first entry (so that N = 1 is exactly v₁).
+#[inline(always)]
+#[must_use]
+pub(crate) fn sum<const N: usize>(v: &[f64; N]) -> f64 {
+    v[1..].iter().fold(v[0], |s, x| s + x)
+}
+
 /// `v/len` entry by entry.
 #[inline(always)]
-fn divided<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
+pub(crate) fn divided<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
     let mut out = *v;
     for x in &mut out {
         *x /= len;
