@@ -408,10 +408,11 @@ impl Coulomb {
         }
     }
 
-    /// The increments [`Self::try_update`] leaves aside: elastic stick with a stiffness
-    /// k_s = τ_crit/γ_crit below f64's normal range, where k_s·γ^pr keeps too few digits (the
-    /// stick stress is then formed as τ_crit·(γ^pr/γ_crit)), and every failure, which
-    /// [`Self::diagnose`] names.
+    /// The increments [`Self::try_update`] leaves aside, by the careful tier of elastic stick:
+    /// those beyond the one-pass tier's bound (magnitudes near the ends of the f64 range), a
+    /// stiffness k_s = τ_crit/γ_crit below f64's normal range, where k_s·γ^pr keeps too few
+    /// digits (the stick stress is then formed as τ_crit·(γ^pr/γ_crit)), and every failure,
+    /// which [`Self::diagnose`] names.
     #[cold]
     #[inline(never)]
     #[allow(clippy::needless_pass_by_value)]
@@ -430,8 +431,8 @@ impl Coulomb {
     /// γ_crit cannot be formed from `CHRLNGTH`, or a result overflowed. The inputs and results
     /// are tested together, with one branch, after the arithmetic (which cannot fail on
     /// non-finite values, only carry them); [`Self::update`] then says which it was.
-    /// Also `None` for elastic stick with a subnormal k_s (the stick stress is then formed
-    /// differently, by [`Self::update`]).
+    /// Also `None` for elastic-stick increments outside the one-pass tier's bound, among them
+    /// a subnormal k_s ([`Self::elastic_stick_bounded`]; [`Self::update`] answers them).
     #[inline(always)]
     pub(crate) fn try_update<const N: usize>(
         &self,
@@ -616,7 +617,7 @@ impl Coulomb {
             + ((stiffness * HEADROOM) * 0.0 + (dtau_crit_dp * HEADROOM) * 0.0);
         match length_beyond(&predictor, gamma_crit) {
             None => {
-                let tau = if stiffness > 0.0 && stiffness < f64::MIN_POSITIVE {
+                let tau = if is_subnormal(stiffness) {
                     std::array::from_fn(|i| predictor[i] / gamma_crit * tau_crit)
                 } else {
                     scale(&predictor, stiffness)
@@ -626,12 +627,7 @@ impl Coulomb {
                 (t.traction, 0.0, probe)
             }
             Some(predictor_eq) => {
-                let n = if N == 1 {
-                    [1.0f64.copysign(predictor[0]); N]
-                } else {
-                    unit_unless_infinite(&predictor, predictor_eq)
-                };
-                let (t, slip_eq) = trial.slip(n, predictor_eq);
+                let (t, slip_eq) = trial.slip(predictor_eq, true);
                 // Δγ_eq^sl finite also means γ_eq^pr finite (not NaN): the slip branch is then the
                 // γ_eq^pr > γ_crit of the test above.
                 let probe = bounds + ((slip_eq * HEADROOM) * 0.0 + (t.sed * 0.0 + t.sfd * 0.0));
@@ -660,12 +656,7 @@ impl Coulomb {
     /// 3. in stick, k_s zero or normal (a subnormal k_s is the careful tier's case).
     #[inline(always)]
     fn elastic_stick_bounded<const N: usize>(&self, trial: &Trial<N>) -> (Traction<N>, f64, f64) {
-        let Trial {
-            predictor,
-            gamma_crit,
-            tau_crit,
-            dtau_crit_dp,
-        } = *trial;
+        let (predictor, gamma_crit, tau_crit) = (trial.predictor, trial.gamma_crit, trial.tau_crit);
         let squares = dot(&predictor, &predictor);
         let gamma_crit_sq = gamma_crit * gamma_crit;
         let extent = if N == 1 {
@@ -673,7 +664,7 @@ impl Coulomb {
         } else {
             squares + 1.0
         };
-        let bound = ((tau_crit + dtau_crit_dp) * TWO_POW_512) * (extent + gamma_crit)
+        let bound = ((tau_crit + trial.dtau_crit_dp) * TWO_POW_512) * (extent + gamma_crit)
             + if is_positive_normal(gamma_crit_sq) {
                 0.0
             } else {
@@ -692,21 +683,16 @@ impl Coulomb {
             None => {
                 let stiffness = tau_crit / gamma_crit;
                 let t = trial.stick(stiffness, scale(&predictor, stiffness));
-                let subnormal = stiffness > 0.0 && stiffness < f64::MIN_POSITIVE;
-                (
-                    t.traction,
-                    0.0,
-                    bound + if subnormal { f64::NAN } else { 0.0 },
-                )
+                let declined = if is_subnormal(stiffness) {
+                    f64::NAN
+                } else {
+                    0.0
+                };
+                (t.traction, 0.0, bound + declined)
             }
             Some(predictor_eq) => {
-                // In 2-D n = ±1, the sign of γ^pr: γ^pr/|γ^pr| without the division.
-                let n = if N == 1 {
-                    [1.0f64.copysign(predictor[0]); N]
-                } else {
-                    divided(&predictor, predictor_eq)
-                };
-                let (t, slip_eq) = trial.slip(n, predictor_eq);
+                // γ_eq^pr > γ_crit ≥ 2⁻⁵¹¹: the plain quotient for the direction.
+                let (t, slip_eq) = trial.slip(predictor_eq, false);
                 (t, slip_eq, bound)
             }
         }
@@ -767,7 +753,7 @@ impl Coulomb {
 }
 
 /// 1 + 2⁻²⁰: a bound x with x·HEADROOM finite leaves room for the few roundings (each a
-/// relative 2⁻⁵³) between x and the results it bounds ([`Coulomb::elastic_stick`]).
+/// relative 2⁻⁵³) between x and the results it bounds ([`Coulomb::elastic_stick_checked`]).
 pub(crate) const HEADROOM: f64 = 1.0 + 1.0 / 1_048_576.0;
 
 /// 2⁵¹²: the headroom of [`Coulomb::elastic_stick_bounded`]'s bound.
@@ -810,10 +796,21 @@ impl<const N: usize> Trial<N> {
         }
     }
 
-    /// Slip along `n` = γ^pr/γ_eq^pr: Δγ_eq^sl = γ_eq^pr − γ_crit, τ = n τ_crit
-    /// (Eq. 5.2.3-2), and the slip increment Δγ_eq^sl.
+    /// Slip along n = γ^pr/γ_eq^pr: Δγ_eq^sl = γ_eq^pr − γ_crit, τ = n τ_crit
+    /// (Eq. 5.2.3-2), and the slip increment Δγ_eq^sl. n is scaled for a subnormal γ_eq^pr
+    /// when `scaled_direction` (the careful tier; its caller refuses an infinite one), else
+    /// the plain quotient (the same bits for γ_eq^pr ≥ f64::MIN_POSITIVE).
     #[inline(always)]
-    fn slip(&self, n: [f64; N], predictor_eq: f64) -> (Traction<N>, f64) {
+    fn slip(&self, predictor_eq: f64, scaled_direction: bool) -> (Traction<N>, f64) {
+        // In 2-D n = ±1, the sign of γ^pr: γ^pr/|γ^pr| for every γ^pr this branch can answer
+        // (finite, beyond γ_crit > 0), without the division.
+        let n = if N == 1 {
+            [1.0f64.copysign(self.predictor[0]); N]
+        } else if scaled_direction {
+            unit_unless_infinite(&self.predictor, predictor_eq)
+        } else {
+            divided(&self.predictor, predictor_eq)
+        };
         let slip_eq = predictor_eq - self.gamma_crit;
         let transverse = self.tau_crit / predictor_eq;
         let t = Traction {
@@ -833,6 +830,12 @@ impl<const N: usize> Trial<N> {
         };
         (t, slip_eq)
     }
+}
+
+/// 0 < x < f64::MIN_POSITIVE (for x ≥ 0: k_s).
+#[inline(always)]
+fn is_subnormal(x: f64) -> bool {
+    x > 0.0 && x < f64::MIN_POSITIVE
 }
 
 /// `x` capped at f64::MAX (`x` is never NaN here: a sum or quotient of finite values ≥ 0 with

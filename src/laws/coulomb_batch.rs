@@ -267,9 +267,10 @@ impl ElasticStickKernel {
         );
         out.sfd = select(stick, [0.0; W], map2(tau_crit, slip_eq, |t, s| t * s));
 
-        // The scalar path's test of its results (`Coulomb::elastic_stick`): the few scalars that
-        // bound every result, the same values lane by lane, so the kernel answers exactly when
-        // the scalar law does.
+        // The scalar law's careful test of its results (`Coulomb::elastic_stick_checked`): the
+        // few scalars that bound every result, the same values lane by lane, so the kernel
+        // answers exactly when the scalar law does (its one-pass tier answers a subset, with
+        // the same bits).
         // A subnormal k_s declines the chunk: the scalar law then forms the stick stress
         // differently (`Coulomb::update`).
         let common: [f64; W] = std::array::from_fn(|l| {
