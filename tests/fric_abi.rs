@@ -310,6 +310,28 @@ fn taulm_is_checked_only_when_used() {
 }
 
 #[test]
+fn a_null_taulm_is_refused_only_when_entering_stuck() {
+    // Elastic stick (which never reads TAULM) and exact stick alike: LM = 1 on entry with a
+    // NULL TAULM is a broken host, refused; with LM = 0 TAULM is not looked at.
+    for stick in [0.0, 1.0] {
+        for nfdir in [1, 2] {
+            let mut c = good(nfdir);
+            c.props.resize(7, 0.0);
+            c.props[6] = stick;
+            c.nprops = 7;
+            c.null_taulm = true;
+            c.lm = 1;
+            check_refused(c.clone(), &format!("PROPS(7) = {stick}, LM = 1"), "TAULM");
+            c.lm = 0;
+            c.pnewdt = 1e36;
+            c.call();
+            assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+            assert_eq!(c.lm, 0);
+        }
+    }
+}
+
+#[test]
 fn short_names_are_read_only_up_to_their_hidden_length() {
     // An old CHARACTER*8 caller: the hidden length is 8; the bytes after it are not ours.
     let mut c = good(2);

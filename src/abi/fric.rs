@@ -8,7 +8,7 @@ use super::{
     write_zeros,
 };
 use crate::config::friction_table_for;
-use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
+use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment, StickMode};
 use crate::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
 use crate::props::coulomb_extended_with_table;
 use crate::props::{FrictionLaw, extended_coulomb, friction_law, plain_coulomb_or_special_case};
@@ -164,7 +164,7 @@ unsafe fn plain_fast(
         }
         let entry = match *lm {
             0 => EntryFlag::Motion,
-            1 => EntryFlag::ExactStick,
+            1 if !taulm.is_null() => EntryFlag::ExactStick,
             // Frictionless: nothing to do, whatever the rest says.
             2 => return true,
             _ => return false,
@@ -203,9 +203,13 @@ unsafe fn plain_fast(
             chrlngth,
             statev,
         };
-        match get(nfdir) {
-            Some(1) => point_fast::<1>(&law, entry, &input, &out),
-            Some(2) => point_fast::<2>(&law, entry, &input, &out),
+        // Elastic stick (Abaqus's default, and the common case) does not look at the entry
+        // flag or TAULM: its own copy of the point, with neither.
+        match (get(nfdir), law.stick() == StickMode::Elastic) {
+            (Some(1), true) => point_fast::<1, true>(&law, entry, &input, &out),
+            (Some(2), true) => point_fast::<2, true>(&law, entry, &input, &out),
+            (Some(1), false) => point_fast::<1, false>(&law, entry, &input, &out),
+            (Some(2), false) => point_fast::<2, false>(&law, entry, &input, &out),
             _ => false,
         }
     }
@@ -302,7 +306,7 @@ struct Inputs {
 /// # Safety
 /// As `fric_`, with `NSTATV ≥ 3` checked.
 #[inline(always)]
-unsafe fn point_fast<const N: usize>(
+unsafe fn point_fast<const N: usize, const ELASTIC: bool>(
     law: &Coulomb,
     entry: EntryFlag,
     input: &Inputs,
@@ -325,13 +329,15 @@ unsafe fn point_fast<const N: usize>(
         let Some(dgam) = get(input.dgam.cast::<[f64; N]>()) else {
             return false;
         };
-        let taulm = if exact {
+        // Elastic stick does not read TAULM (a NULL one with LM = 1 is refused by
+        // `plain_fast`, as the checked path refuses it).
+        let taulm = if ELASTIC || !exact {
+            [0.0; N]
+        } else {
             let Some(taulm) = get(input.taulm.cast::<[f64; N]>()) else {
                 return false;
             };
             taulm
-        } else {
-            [0.0; N]
         };
         let Some(dtime) = get(input.dtime) else {
             return false;
@@ -347,7 +353,8 @@ unsafe fn point_fast<const N: usize>(
             dpressure,
             dtime,
             characteristic_length,
-            entry,
+            // Elastic stick does not read the entry flag.
+            entry: if ELASTIC { EntryFlag::Motion } else { entry },
         };
         let Some([s, rate, status]) = get(input.statev.cast::<[f64; 3]>()) else {
             return false;

@@ -38,6 +38,8 @@ pub struct FricCall {
     pub dgam: [f64; 3],
     /// `TAULM(NFDIR)`.
     pub taulm: [f64; 3],
+    /// Pass a NULL `TAULM` instead of [`Self::taulm`] (a broken host; bad-input tests).
+    pub null_taulm: bool,
     /// `PRESS`.
     pub press: f64,
     /// `DPRESS`.
@@ -112,6 +114,7 @@ impl FricCall {
             statev,
             dgam: [0.0; 3],
             taulm: [0.0; 3],
+            null_taulm: false,
             press: 0.0,
             dpress: 0.0,
             ddpddh: 1e6,
@@ -204,7 +207,11 @@ impl FricCall {
                 &mut self.pnewdt,
                 self.statev.as_mut_ptr(),
                 self.dgam.as_ptr(),
-                self.taulm.as_ptr(),
+                if self.null_taulm {
+                    std::ptr::null()
+                } else {
+                    self.taulm.as_ptr()
+                },
                 &self.press,
                 &self.dpress,
                 &self.ddpddh,
