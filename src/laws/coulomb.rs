@@ -462,7 +462,7 @@ impl Coulomb {
             StickMode::Rough => (Contact::ExactStick, 0.0, exact_inputs()),
             StickMode::Elastic => {
                 let gamma_crit = self.critical_slip_if_defined(inc.characteristic_length)?;
-                let trial = self.elastic_trial(inc, gamma_crit);
+                let trial = self.elastic_trial(inc, gamma_crit, careful);
                 let (t, slip, probe) = if careful {
                     let (t, slip, results) = self.elastic_stick_checked(&trial);
                     // Δγ is not tested on its own: it enters γ^pr, and a non-finite γ^pr takes
@@ -549,12 +549,27 @@ impl Coulomb {
     }
 
     /// The elastic predictor of elastic stick and the end-of-increment critical stress.
+    ///
+    /// γ̄^el = τ̄·(γ_crit/τ_crit(p − Δp)); where that factor overflows (a start stress below
+    /// γ_crit/f64::MAX, e.g. first contact at a vanishing pressure) the careful tier forms
+    /// (τ̄/τ_crit)·γ_crit instead, finite for a host stress within the start cone (the one-pass
+    /// tier's bound declines such increments: 0·∞ or ∞ in γ^pr).
     #[inline(always)]
-    fn elastic_trial<const N: usize>(&self, inc: &Increment<N>, gamma_crit: f64) -> Trial<N> {
+    fn elastic_trial<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        gamma_crit: f64,
+        careful: bool,
+    ) -> Trial<N> {
         // Elastic slip at the start, from the start-of-increment stiffness: γ̄^el = τ̄/k_s(p − Δp).
         let (tau_crit_start, _) = self.critical_stress_of_finite(inc.pressure - inc.dpressure);
+        let factor = gamma_crit / tau_crit_start;
         let elastic_start = if tau_crit_start > 0.0 {
-            scale(&inc.tau, gamma_crit / tau_crit_start)
+            if careful && factor == f64::INFINITY {
+                std::array::from_fn(|i| inc.tau[i] / tau_crit_start * gamma_crit)
+            } else {
+                scale(&inc.tau, factor)
+            }
         } else {
             [0.0; N]
         };
@@ -1406,6 +1421,48 @@ mod tests {
                 tiers_agree(&law, &inc, &start),
                 (true, true),
                 "{law:?} {inc:?}"
+            );
+        }
+    }
+
+    /// A start stress so small that γ_crit/τ_crit(p − Δp) overflows (here a pressure of
+    /// 10⁻³¹² with γ_crit = 10⁻³): the elastic start slip is still τ̄/k_s(p − Δp), formed as
+    /// (τ̄/τ_crit)·γ_crit. Before, 0·∞ made the first-contact predictor NaN and the increment was
+    /// refused as an overflow.
+    #[test]
+    fn a_vanishing_start_stress_keeps_its_elastic_slip() {
+        let law = Coulomb::new(0.3)
+            .unwrap()
+            .with_critical_slip_absolute(1e-3)
+            .unwrap();
+        let p = 1e-312;
+        let tau_crit = 0.3 * p;
+        assert!(
+            1e-3 / tau_crit == f64::INFINITY,
+            "the case needs an overflowing factor"
+        );
+        for tau_start in [0.0, 0.5 * tau_crit, -tau_crit] {
+            let inc = Increment::<1> {
+                tau: [tau_start],
+                dgam: [2e-4],
+                pressure: p,
+                dtime: 1.0,
+                ..Increment::default()
+            };
+            let up = law
+                .update(&inc, &CoulombState::default())
+                .unwrap_or_else(|e| panic!("τ̄ = {tau_start}: {e}"));
+            let Contact::Motion(t) = up.contact else {
+                panic!("elastic stick answered LM = 1");
+            };
+            // γ^pr = γ_crit τ̄/τ_crit + Δγ, within γ_crit here: τ = τ_crit γ^pr/γ_crit (a
+            // subnormal stress: a few digits fewer than usual).
+            let predictor = 1e-3 * tau_start / tau_crit + 2e-4;
+            let expected = tau_crit * predictor / 1e-3;
+            assert!(
+                (t.tau[0] - expected).abs() <= 1e-6 * tau_crit,
+                "τ̄ = {tau_start}: τ = {} against {expected}",
+                t.tau[0]
             );
         }
     }
