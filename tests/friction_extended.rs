@@ -1475,3 +1475,86 @@ fn friction_stress_of_a_huge_coefficient_times_a_tiny_factor_is_kept() {
     );
     assert_eq!(c.tau[1], 0.0);
 }
+
+/// A start pressure so small that τ̄_crit(p₀)² underflows (and, at 10⁻³¹², that γ_crit/τ̄_crit
+/// overflows): the extended law still answers, with the first-contact stress of the closed
+/// form and a temperature tangent that matches central differences of `TAU` in `TEMP`. Before,
+/// the θ̄-derivative of the elastic start slip was 0/0 and every such increment was refused as
+/// an overflow — the general path (temperature law, pressure law) and the decay law's lean path
+/// alike.
+#[test]
+fn a_vanishing_start_pressure_is_answered() {
+    const B_THETA: f64 = 0.01;
+    const THETA_REF: f64 = 20.0;
+    const P_REF: f64 = 1e6;
+    let (mu, gc) = (0.3, 1e-3);
+    let mut props = vec![0.0; 20];
+    props[..5].copy_from_slice(&[1.0, mu, 0.0, 0.0, gc]);
+    // (name, PROPS(8..13) changes by 0-based index, μ at θ̄ = 25 and p → 0)
+    type Law = (&'static str, &'static [(usize, f64)], f64);
+    let laws: [Law; 3] = [
+        (
+            "temperature",
+            &[(11, B_THETA), (12, THETA_REF)],
+            mu * (-B_THETA * (25.0 - THETA_REF)).exp(),
+        ),
+        ("pressure", &[(10, P_REF)], mu),
+        // Decay law at rest (first contact, γ̇ = 0 in stick): μ = μ_s.
+        ("decay", &[(7, 1.0), (8, 0.1), (9, 4.0)], mu),
+    ];
+    for (name, entries, mu_eff) in laws {
+        for p in [1e-200, 1e-312] {
+            let mut law = props.clone();
+            for &(i, v) in entries {
+                law[i] = v;
+            }
+            let run = |temp: f64| {
+                let mut c = FricCall::new(1, &law);
+                c.press = p;
+                c.dpress = 0.0;
+                c.tau[0] = 0.0;
+                c.dgam[0] = 2e-4;
+                c.temp = [temp, temp];
+                c.call();
+                c
+            };
+            let c = run(25.0);
+            assert_eq!(
+                c.pnewdt,
+                1e36,
+                "{name}, p = {p}: {}",
+                FricCall::last_error()
+            );
+            // Stick from τ̄ = 0: τ = k_s Δγ = (μ p/γ_crit) Δγ (a subnormal stress at 10⁻³¹²:
+            // fewer digits).
+            let expected = mu_eff * p / gc * 2e-4;
+            assert!(
+                (c.tau[0] - expected).abs() <= 1e-9 * expected + 1e-320,
+                "{name}, p = {p}: τ = {} against {expected}",
+                c.tau[0]
+            );
+            if name == "temperature" && p == 1e-200 {
+                // ∂τ/∂TEMP(1), one column of DDTDDT, against a central difference.
+                let h = 1e-3;
+                let (up, down) = (run(25.0 + h), run(25.0 - h));
+                let moved = |t1: f64| {
+                    let mut c = FricCall::new(1, &law);
+                    c.press = p;
+                    c.dgam[0] = 2e-4;
+                    c.temp = [t1, 25.0];
+                    c.call();
+                    c.tau[0]
+                };
+                let fd = (moved(25.0 + h) - moved(25.0 - h)) / (2.0 * h);
+                assert!(
+                    (c.ddtddt[0] - fd).abs() <= 1e-6 * fd.abs(),
+                    "DDTDDT(1,1) = {} against {fd}",
+                    c.ddtddt[0]
+                );
+                // Both temperatures moved: the two columns add up.
+                let both = (up.tau[0] - down.tau[0]) / (2.0 * h);
+                assert!((c.ddtddt[0] + c.ddtddt[1] - both).abs() <= 1e-6 * both.abs());
+            }
+        }
+    }
+}

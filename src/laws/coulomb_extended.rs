@@ -184,6 +184,36 @@ struct Critical {
     d_temperature: f64,
 }
 
+/// The elastic slip at the start of the increment, γ̄^el = τ̄/k̄_s(p₀) = τ̄·γ_crit/τ̄_crit(p₀), and
+/// (with `with_theta`) its θ̄-derivative −γ̄^el·(∂τ̄_crit/∂θ̄)/τ̄_crit(p₀); zero when τ̄_crit(p₀) = 0.
+/// The derivative is formed without τ̄_crit², which underflows for τ̄_crit below 1.5·10⁻¹⁵⁴ (it
+/// gave 0/0 = NaN there, and the increment was refused as an overflow); where γ_crit/τ̄_crit
+/// overflows, γ̄^el is (τ̄/τ̄_crit)·γ_crit, finite for a stress within the start cone.
+#[inline(always)]
+fn elastic_start<const N: usize>(
+    tau: &[f64; N],
+    gamma_crit: f64,
+    start: &Critical,
+    with_theta: bool,
+) -> ([f64; N], [f64; N]) {
+    if start.value > 0.0 {
+        let factor = gamma_crit / start.value;
+        let elastic: [f64; N] = if factor == f64::INFINITY {
+            std::array::from_fn(|i| tau[i] / start.value * gamma_crit)
+        } else {
+            scale(tau, factor)
+        };
+        let d_theta = if with_theta {
+            scale(&elastic, -(start.d_temperature / start.value))
+        } else {
+            [0.0; N]
+        };
+        (elastic, d_theta)
+    } else {
+        ([0.0; N], [0.0; N])
+    }
+}
+
 /// The isotropic problem in scaled variables, as seen by one increment.
 struct Scaled<const N: usize> {
     /// Friction stress at the start (scaled).
@@ -729,17 +759,7 @@ impl ExtendedCoulomb {
         let k = self.critical(mbar, 0.0, p, theta);
         let k0 = self.critical(mbar, 0.0, p0, theta);
         // γ̄^el = τ̄/k̄_s(p₀); its θ̄-derivative (the start uses the same θ̄: FRIC has no ΔTEMP).
-        let (elastic_start, d_elastic_dtheta) = if k0.value > 0.0 {
-            (
-                scale(&s.tau, gamma_crit / k0.value),
-                scale(
-                    &s.tau,
-                    -gamma_crit * k0.d_temperature / (k0.value * k0.value),
-                ),
-            )
-        } else {
-            ([0.0; N], [0.0; N])
-        };
+        let (elastic_start, d_elastic_dtheta) = elastic_start(&s.tau, gamma_crit, &k0, true);
         let mut predictor = elastic_start;
         for i in 0..N {
             predictor[i] += s.dgam[i];

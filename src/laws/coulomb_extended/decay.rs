@@ -103,21 +103,8 @@ impl ExtendedCoulomb {
         let k = rate_free(p, factor);
         let k0 = rate_free(p0, self.coefficient.rate_free(p0, theta));
         // γ^el = τ/k_s(p₀) and its θ̄-derivative (as in `elastic_stick`).
-        let (elastic_start, d_elastic_dtheta) = if k0.value > 0.0 {
-            (
-                scale(&inc.tau, gamma_crit / k0.value),
-                if with_theta {
-                    scale(
-                        &inc.tau,
-                        -gamma_crit * k0.d_temperature / (k0.value * k0.value),
-                    )
-                } else {
-                    [0.0; N]
-                },
-            )
-        } else {
-            ([0.0; N], [0.0; N])
-        };
+        let (elastic_start, d_elastic_dtheta) =
+            elastic_start(&inc.tau, gamma_crit, &k0, with_theta);
         let mut predictor = elastic_start;
         for i in 0..N {
             predictor[i] += inc.dgam[i];
