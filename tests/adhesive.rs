@@ -718,3 +718,40 @@ proptest! {
         }
     }
 }
+
+/// A start pressure so small that γ_crit/τ_s(p₀) overflows (S_a = 0, p₀ = 10⁻³¹²): the elastic
+/// start slip is (τ̄/τ_s)·γ_crit and the increment is answered with the stick stress of the closed
+/// form; before, 0·∞ made the predictor NaN and it was refused as an overflow.
+#[test]
+fn a_vanishing_start_strength_is_answered() {
+    let (mu_d, mu_s, gc, p) = (0.3, 0.5, 1e-3, 1e-312);
+    assert!(
+        gc / (mu_s * p) == f64::INFINITY,
+        "the case needs an overflowing factor"
+    );
+    // μ_s > μ_d and k_μ > 0: the adhesive law itself, not its Coulomb special case.
+    let props = [2.0, mu_d, mu_s, 0.0, 0.0, 0.1, 0.0, gc];
+    for tau_start in [0.0, 0.5 * mu_s * p] {
+        let mut c = FricCall::new(1, &props);
+        c.press = p;
+        c.dpress = 0.0;
+        c.dtime = 1.0;
+        c.tau[0] = tau_start;
+        c.dgam[0] = 2e-4;
+        c.call();
+        assert_eq!(
+            c.pnewdt,
+            1e36,
+            "τ̄ = {tau_start}: {}",
+            FricCall::last_error()
+        );
+        // Stick: τ = k_s γ^pr, k_s = μ_s p/γ_crit, γ^pr = γ_crit τ̄/τ_s + Δγ (a subnormal
+        // stress: a few digits fewer than usual).
+        let expected = mu_s * p / gc * (gc * tau_start / (mu_s * p) + 2e-4);
+        assert!(
+            (c.tau[0] - expected).abs() <= 1e-6 * expected,
+            "τ̄ = {tau_start}: τ = {} against {expected}",
+            c.tau[0]
+        );
+    }
+}
