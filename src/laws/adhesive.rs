@@ -313,7 +313,11 @@ impl Adhesive {
         }
         let (tau_s_start, _) = self.static_strength(p_start);
         // Elastic slip at the start, γ̄^el = τ̄/k_s(p − Δp).
-        let elastic_start = elastic_start_slip(tau_start, gamma_crit, tau_s_start);
+        let elastic_start = if tau_s_start > 0.0 {
+            scale(tau_start, gamma_crit / tau_s_start)
+        } else {
+            [0.0; N]
+        };
         let predictor = add(&elastic_start, dgam);
         let (tau_s, dtau_s_dp) = self.static_strength(p);
         if tau_s == 0.0 {
@@ -595,28 +599,6 @@ pub(crate) fn check_finite<const N: usize>(t: &Traction<N>) -> Result<(), LawErr
         Err(LawError::Numerical(
             "the adhesive stress update overflowed (inputs too large for f64)".into(),
         ))
-    }
-}
-
-/// The elastic slip at the start of an increment, γ̄^el = τ̄·γ_crit/τ_s (0 when τ_s ≤ 0): as
-/// τ̄·(γ_crit/τ_s), or, where that factor overflows (τ_s below γ_crit/f64::MAX: S_a = 0 at a
-/// vanishing start pressure), as (τ̄/τ_s)·γ_crit, finite for a stress within the start strength
-/// (0·∞ gave NaN there, and the increment was refused as an overflow).
-#[inline(always)]
-pub(crate) fn elastic_start_slip<const N: usize>(
-    tau: &[f64; N],
-    gamma_crit: f64,
-    strength: f64,
-) -> [f64; N] {
-    if strength > 0.0 {
-        let factor = gamma_crit / strength;
-        if factor == f64::INFINITY {
-            std::array::from_fn(|i| tau[i] / strength * gamma_crit)
-        } else {
-            scale(tau, factor)
-        }
-    } else {
-        [0.0; N]
     }
 }
 

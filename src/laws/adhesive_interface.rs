@@ -21,7 +21,7 @@
 //!
 //! State (`STATEV(1..3)`): accumulated slip, slip rate, and the status below.
 
-use super::adhesive::{Adhesive, SlideBranch, elastic_start_slip};
+use super::adhesive::{Adhesive, SlideBranch};
 use super::coulomb::Traction;
 use super::small_vec::{add, all_finite, norm, scale};
 use crate::LawError;
@@ -257,7 +257,11 @@ impl AdhesiveInterface {
             self.normal_stiffness,
         );
         let (tau_s_start, _) = self.law.static_strength(inc.normal_stress_start);
-        let elastic_start = elastic_start_slip(&inc.shear_start, gamma_crit, tau_s_start);
+        let elastic_start = if tau_s_start > 0.0 {
+            scale(&inc.shear_start, gamma_crit / tau_s_start)
+        } else {
+            [0.0; N]
+        };
         let predictor = add(&elastic_start, &inc.dgam);
         // k_s = τ_s(0)/γ_crit = S_a/γ_crit.
         let k_s = s_a / gamma_crit;
@@ -347,8 +351,8 @@ fn released_energy(
 ) -> f64 {
     // Start shear energy ½|τ̄|·|γ̄^el|, with γ̄^el = τ̄·γ_crit/τ_s(p̄) (the elastic slip the
     // tangential law recovers from τ̄).
-    let shear = if tau_start > 0.0 {
-        0.5 * tau_start * elastic_start_slip(&[tau_start], gamma_crit, tau_s_start)[0]
+    let shear = if tau_start > 0.0 && tau_s_start > 0.0 {
+        0.5 * tau_start * (tau_start * (gamma_crit / tau_s_start))
     } else {
         0.0
     };
