@@ -574,3 +574,19 @@ fn fric_stick_with_a_subnormal_stiffness_stays_on_the_cone() {
     succeeded(&case, &out);
     assert!(out.tau[0].abs() <= f64::MIN_POSITIVE, "{}", out.tau[0]);
 }
+
+/// Found by fuzz target `fric` (random seed, session 6) on a change that was then reverted: the
+/// adhesive law's elastic start slip formed as (τ̄/τ_s)·γ_crit where γ_crit/τ_s(p₀) overflows
+/// (S_a = f64::MIN_POSITIVE, μ = 0, γ_crit ≈ 2·10⁸ from `CHRLNGTH`) answered with a subnormal
+/// k_s = S_a/γ_crit of eight digits, and |τ| = k_s·γ_crit came out 8·10⁻⁹ above the strength.
+/// The adhesive law keeps refusing such increments (as a numerical failure) until its stick
+/// stress is formed as the Coulomb law's careful tier forms it for a subnormal k_s.
+#[test]
+fn fric_adhesive_vanishing_start_strength_stays_within_the_property() {
+    let case = FricCase::decode(include_bytes!(
+        "../fuzz/regressions/fric-adhesive-vanishing-start-strength"
+    ));
+    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
+    let out = checked(&case);
+    assert_eq!(out.pnewdt, 0.25, "{out:?}");
+}
