@@ -11,8 +11,12 @@ use crate::laws::friction_coefficient::CoefficientLaw;
 use crate::laws::friction_table::FrictionTable;
 
 mod adhesive;
+pub mod schema;
 pub(crate) use adhesive::adhesive_props;
-pub use adhesive::{ADHESIVE_NPROPS, AdhesiveProps, HeatExchange, LAW_ADHESIVE};
+pub use adhesive::{
+    ADHESIVE, ADHESIVE_NPROPS, AdhesiveBuilder, AdhesiveProps, COULOMB_SPECIAL_CASE, HeatExchange,
+    LAW_ADHESIVE,
+};
 
 /// `PROPS(1)` code of the Coulomb family.
 pub const LAW_COULOMB: i32 = 1;

@@ -1,20 +1,228 @@
 //! `PROPS` layout of the adhesive friction law (`PROPS(1) = 2`, seed 004), shared by `fric_`
-//! (tangential part) and `uinter_` (the whole interface). The table in `docs/props.md`
-//! documents the same layout for users.
+//! (tangential part) and `uinter_` (the whole interface), described once in [`ADHESIVE`]:
+//! the fast paths, the checked parser, the defaults, [`AdhesiveBuilder`] and the docs/props.md
+//! table all come from that table (src/props/schema.rs).
 
 use crate::LawError;
-use crate::laws::adhesive::{Adhesive, AdhesiveParameters};
+use crate::laws::adhesive::Adhesive;
 use crate::laws::adhesive_interface::AdhesiveInterface;
-use crate::laws::coulomb::{Coulomb, StickMode};
+use crate::laws::coulomb::{Coulomb, DEFAULT_SLIP_TOLERANCE, StickMode};
 
 use super::FrictionLaw;
-use super::range_flag;
+use super::schema::{Class, Default, Entry, Fix, Fixed, Layout, PropsBuilder, PropsError, Rule};
 
 /// `PROPS(1)` code of the adhesive friction law.
 pub const LAW_ADHESIVE: i32 = 2;
 
 /// Number of `PROPS` entries the adhesive law reads (`PROPS(1..13)`).
-pub const ADHESIVE_NPROPS: usize = 13;
+pub const ADHESIVE_NPROPS: usize = ADHESIVE.entries.len();
+
+/// The adhesive layout (seed 004's parameter names where it has them).
+pub const ADHESIVE: Layout = Layout {
+    law: "adhesive law",
+    code: LAW_ADHESIVE,
+    entries: &[
+        entry(
+            1,
+            "code",
+            "",
+            "law code",
+            "",
+            Class::Code(LAW_ADHESIVE),
+            Default::Required,
+        ),
+        Entry {
+            seed_name: true,
+            ..entry(
+                2,
+                "coeff",
+                "μ_d",
+                "dynamic friction coefficient",
+                "",
+                Class::NonNegative,
+                Default::Required,
+            )
+        },
+        Entry {
+            seed_name: true,
+            note: "the seed's −1; any value ≤ 0 means none",
+            ..entry(
+                3,
+                "coeffStatic",
+                "μ_s",
+                "static friction coefficient",
+                "",
+                Class::FiniteOrNone,
+                Default::Entry(2),
+            )
+        },
+        Entry {
+            seed_name: true,
+            ..entry(
+                4,
+                "Sa",
+                "S_a",
+                "shear adhesive strength",
+                "stress",
+                Class::NonNegative,
+                Default::Value(0.0),
+            )
+        },
+        Entry {
+            seed_name: true,
+            ..entry(
+                5,
+                "Na",
+                "N_a",
+                "normal adhesive strength",
+                "stress",
+                Class::NonNegative,
+                Default::Value(0.0),
+            )
+        },
+        Entry {
+            seed_name: true,
+            ..entry(
+                6,
+                "kmu",
+                "k_μ",
+                "slope of μ against the slip rate",
+                "1/velocity",
+                Class::NonNegative,
+                Default::Value(0.0),
+            )
+        },
+        Entry {
+            seed_name: true,
+            note: "0: instantaneous drop",
+            ..entry(
+                7,
+                "vhalf",
+                "v_½",
+                "slip rate at which μ_s → μ_d is half done",
+                "velocity",
+                Class::NonNegative,
+                Default::Value(0.0),
+            )
+        },
+        Entry {
+            note: "absolute",
+            ..entry(
+                8,
+                "gamma_crit",
+                "γ_crit",
+                "allowable elastic slip",
+                "length",
+                Class::OffOrPositive,
+                Default::Described("`PROPS(9)` × `CHRLNGTH`"),
+            )
+        },
+        Entry {
+            note: "γ_crit = tolerance × `CHRLNGTH`",
+            ..entry(
+                9,
+                "slip_tolerance",
+                "",
+                "slip tolerance",
+                "",
+                Class::OffOrPositive,
+                Default::Value(DEFAULT_SLIP_TOLERANCE),
+            )
+        },
+        Entry {
+            note: "`uinter_` only; `fric_` ignores it",
+            ..entry(
+                10,
+                "normal_stiffness",
+                "K_n",
+                "penalty normal stiffness",
+                "stress/length",
+                Class::OffOrPositive,
+                Default::Described("none: `uinter_` refuses 0"),
+            )
+        },
+        Entry {
+            note: "`uinter_` only",
+            ..entry(
+                11,
+                "conductance",
+                "",
+                "heat conduction across the interface",
+                "",
+                Class::Switch {
+                    off: "none",
+                    on: "the GAPCON law of this interaction from `INTERFACIAL_CONFIG`",
+                },
+                Default::Value(0.0),
+            )
+        },
+        Entry {
+            note: "`uinter_` only",
+            ..entry(
+                12,
+                "heat_fraction",
+                "η",
+                "fraction of the frictional dissipation converted into heat",
+                "",
+                Class::UnitInterval,
+                Default::Value(0.0),
+            )
+        },
+        Entry {
+            note: "`uinter_` only",
+            ..entry(
+                13,
+                "slave_fraction",
+                "f",
+                "part of that heat flowing into the slave surface, 1 − f into the master",
+                "",
+                Class::OffOrFraction,
+                Default::Value(0.5),
+            )
+        },
+    ],
+    rules: &[Rule::AtLeastWhenGiven {
+        entry: 3,
+        floor: 2,
+        why: "the static coefficient μ_s must be ≥ the dynamic one (or ≤ 0 for none)",
+    }],
+};
+
+/// The Coulomb special case (seed 004: "the simple Coulomb friction contact law is a special
+/// case of this law"): S_a = k_μ = v_½ = 0 and no static coefficient (μ_s none or = μ_d). N_a
+/// plays no part in the tangential law in contact. `fric_` runs it as the Coulomb law itself.
+pub const COULOMB_SPECIAL_CASE: Fixed = Fixed {
+    name: "Coulomb special case",
+    fixed: &[
+        (3, Fix::NoneOrEqual(2)),
+        (4, Fix::Zero),
+        (6, Fix::Zero),
+        (7, Fix::Zero),
+    ],
+};
+
+/// An entry with no seed name and no note (the table above fills those in where needed).
+const fn entry(
+    index: usize,
+    key: &'static str,
+    symbol: &'static str,
+    meaning: &'static str,
+    unit: &'static str,
+    class: Class,
+    default: Default,
+) -> Entry {
+    Entry {
+        index,
+        key,
+        seed_name: false,
+        symbol,
+        meaning,
+        unit,
+        class,
+        default,
+        note: "",
+    }
+}
 
 /// How the interface exchanges heat (`uinter_` only).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -60,137 +268,93 @@ impl AdhesiveProps {
                     .into(),
             ));
         }
-        AdhesiveInterface::new(self.law, self.normal_stiffness).map_err(|e| in_props(10, e))
+        AdhesiveInterface::new(self.law, self.normal_stiffness)
+            .map_err(|e| PropsError::law(&ADHESIVE, 10, e).into())
+    }
+
+    /// The parameters of valid entries `e` (`e[i - 1] = PROPS(i)`), defaults applied as
+    /// [`ADHESIVE`] says.
+    #[inline(always)]
+    fn from_entries(e: &[f64; ADHESIVE_NPROPS]) -> Self {
+        let get = |i| ADHESIVE.resolved(e, i);
+        AdhesiveProps {
+            law: Adhesive::from_validated(
+                get(2),
+                get(3),
+                get(4),
+                get(5),
+                get(6),
+                get(7),
+                get(8),
+                get(9),
+            ),
+            normal_stiffness: get(10),
+            heat: HeatExchange {
+                conductance: get(11) == 1.0,
+                heat_fraction: get(12),
+                slave_fraction: get(13),
+            },
+        }
     }
 }
 
 /// The common case of the adhesive layout: valid `PROPS`, or `None` (then the checked path
-/// [`adhesive`] says what is wrong). Branch-light, like the Coulomb fast path; a property test
-/// checks that both agree.
+/// [`adhesive`] says what is wrong). Branch-light ([`Layout::admits`]); a property test checks
+/// that it agrees with the checked path.
 #[inline(always)]
 pub(crate) fn adhesive_fast(props: &[f64]) -> Option<FrictionLaw> {
     adhesive_props_fast(props).map(AdhesiveProps::into_friction_law)
 }
 
-/// The Coulomb law of a valid adhesive `PROPS` in its Coulomb special case, else `None` (any
-/// other adhesive `PROPS`, or not the adhesive law at all). Inlined into the out-of-line
+/// The Coulomb law of a valid adhesive `PROPS` in its [`COULOMB_SPECIAL_CASE`], else `None`
+/// (any other adhesive `PROPS`, or not the adhesive law at all). Inlined into the out-of-line
 /// `other_plain_layouts` (props.rs), which `fric_`'s plain path calls only when `PROPS` is not
-/// the plain Coulomb layout.
-///
-/// Decides with plain comparisons, like [`adhesive_props_fast`] (a property test checks that
-/// it agrees with that function followed by [`Adhesive::coulomb_special_case`]).
+/// the plain Coulomb layout. A property test checks that it agrees with the full parse
+/// followed by [`Adhesive::coulomb_special_case`].
 #[inline]
 pub(crate) fn adhesive_coulomb_special_case(props: &[f64]) -> Option<Coulomb> {
     // The layouts a friction-only host passes (up to γ_crit, or up to the slip tolerance):
-    // read as one array, no padding.
+    // read as one array, no padding; the absent entries are each one's valid default, so only
+    // the given ones are tested.
     if let Ok(first_eight) = <&[f64; 8]>::try_from(props) {
-        return special_case_of_friction_entries(*first_eight, 0.0);
+        return special_case(first_eight);
     }
-    if let Ok(&[e0, e1, e2, e3, e4, e5, e6, e7, tolerance]) = <&[f64; 9]>::try_from(props) {
-        return special_case_of_friction_entries([e0, e1, e2, e3, e4, e5, e6, e7], tolerance);
+    if let Ok(first_nine) = <&[f64; 9]>::try_from(props) {
+        return special_case(first_nine);
     }
-    if props.len() < 2 || props.len() > ADHESIVE_NPROPS {
+    if props.len() < ADHESIVE.required_len() || props.len() > ADHESIVE_NPROPS {
         return None;
     }
-    // Absent entries read as 0 (an absent PROPS(3) means "no μ_s", as 0 does); entry by entry
-    // rather than a copy of the given ones (a call to memcpy for ≤ 13 values).
+    // Absent entries read as 0; entry by entry rather than a copy of the given ones (a call
+    // to memcpy for ≤ 13 values).
     let e: [f64; ADHESIVE_NPROPS] = std::array::from_fn(|i| props.get(i).copied().unwrap_or(0.0));
-    let [
-        code,
-        mu_d,
-        mu_s,
-        sa,
-        na,
-        kmu,
-        vhalf,
-        gamma_crit,
-        tolerance,
-        kn,
-        conductance,
-        eta,
-        f,
-    ] = e;
-    // 0 ≤ v < ∞ for μ_d, N_a, γ_crit, the tolerance and K_n, in one test of the top bit
-    // (`range_flag`).
-    let flags = range_flag(mu_d)
-        | range_flag(na)
-        | range_flag(gamma_crit)
-        | range_flag(tolerance)
-        | range_flag(kn);
-    // The special case: S_a = k_μ = v_½ = 0 and μ_s = μ_d (no static coefficient: PROPS(3)
-    // finite and ≤ 0, or equal to μ_d).
-    let special = code == f64::from(LAW_ADHESIVE)
-        && flags >> 63 == 0
-        && sa == 0.0
-        && kmu == 0.0
-        && vhalf == 0.0
-        && ((mu_s <= 0.0 && mu_s > f64::NEG_INFINITY) || mu_s == mu_d)
-        && (conductance == 0.0 || conductance == 1.0)
-        && (0.0..=1.0).contains(&eta)
-        && (0.0..=1.0).contains(&f);
-    special.then(|| Coulomb::from_validated(mu_d, 0.0, gamma_crit, tolerance, StickMode::Elastic))
+    special_case(&e)
 }
 
-/// [`adhesive_coulomb_special_case`] for `NPROPS` = 8 or 9: the absent entries (the slip
-/// tolerance when `NPROPS = 8`, K_n, the conductance flag, η, f) read as 0, which is each one's
-/// valid default, so only the given ones are tested.
+/// [`adhesive_coulomb_special_case`] of the first `N` entries.
 #[inline(always)]
-fn special_case_of_friction_entries(e: [f64; 8], tolerance: f64) -> Option<Coulomb> {
-    let [code, mu_d, mu_s, sa, na, kmu, vhalf, gamma_crit] = e;
-    // 0 ≤ v < ∞ for μ_d, N_a and γ_crit in one test of the top bit, as in the general case.
-    // No static coefficient: μ_s = μ_d, or −∞ < μ_s ≤ 0, which is −μ_s in range (same test).
-    let static_flag = if mu_s == mu_d { 0 } else { range_flag(-mu_s) };
-    let flags = range_flag(mu_d)
-        | range_flag(na)
-        | range_flag(gamma_crit)
-        | range_flag(tolerance)
-        | static_flag;
-    // S_a = k_μ = v_½ = 0 (either sign of zero): no bit but the sign bits set.
-    let zeros = (sa.to_bits() | kmu.to_bits() | vhalf.to_bits()) << 1 == 0;
-    let special = code == f64::from(LAW_ADHESIVE) && flags >> 63 == 0 && zeros;
-    special.then(|| Coulomb::from_validated(mu_d, 0.0, gamma_crit, tolerance, StickMode::Elastic))
+fn special_case<const N: usize>(e: &[f64; N]) -> Option<Coulomb> {
+    ADHESIVE.admits(e, Some(&COULOMB_SPECIAL_CASE)).then(|| {
+        let get = |i| ADHESIVE.resolved(e, i);
+        Coulomb::from_validated(get(2), 0.0, get(8), get(9), StickMode::Elastic)
+    })
 }
 
 /// [`adhesive_fast`] before the special case is recognised.
 #[inline(always)]
 fn adhesive_props_fast(props: &[f64]) -> Option<AdhesiveProps> {
-    if props.len() < 2 || props.len() > ADHESIVE_NPROPS || props[0] != f64::from(LAW_ADHESIVE) {
+    if props.len() < ADHESIVE.required_len()
+        || props.len() > ADHESIVE_NPROPS
+        || props[0] != f64::from(LAW_ADHESIVE)
+    {
         return None;
     }
     // Zero-padded copy: absent trailing entries read as 0 without a branch per entry.
     let mut e = [0.0; ADHESIVE_NPROPS];
     e[..props.len()].copy_from_slice(props);
-    let mu_s_entry = if props.len() >= 3 { e[2] } else { -1.0 };
-    // μ_d, S_a, N_a, k_μ, v_½ finite and ≥ 0; γ_crit, tolerance, K_n 0 or finite > 0 (the same
-    // test); PROPS(11) 0 or 1; η and f in [0, 1] (f = 0 meaning ½).
-    // x·0 is ±0 for finite x and NaN otherwise; with all finite, the minimum decides the sign.
-    let (mut probe, mut low) = (0.0, 0.0f64);
-    for v in [e[1], e[3], e[4], e[5], e[6], e[7], e[8], e[9]] {
-        probe += v * 0.0;
-        low = low.min(v);
-    }
-    let mut valid = probe == 0.0 && low >= 0.0;
-    valid &= mu_s_entry.is_finite() && (mu_s_entry <= 0.0 || mu_s_entry >= e[1]);
-    valid &= e[10] == 0.0 || e[10] == 1.0;
-    valid &= (0.0..=1.0).contains(&e[11]) && (0.0..=1.0).contains(&e[12]);
-    valid.then(|| AdhesiveProps {
-        law: Adhesive::from_validated(
-            e[1],
-            if mu_s_entry > 0.0 { mu_s_entry } else { e[1] },
-            e[3],
-            e[4],
-            e[5],
-            e[6],
-            e[7],
-            e[8],
-        ),
-        normal_stiffness: e[9],
-        heat: HeatExchange {
-            conductance: e[10] == 1.0,
-            heat_fraction: e[11],
-            slave_fraction: if e[12] == 0.0 { 0.5 } else { e[12] },
-        },
-    })
+    ADHESIVE
+        .admits(&e, None)
+        .then(|| AdhesiveProps::from_entries(&e))
 }
 
 /// The adhesive `PROPS` as `uinter_` needs them (also in the Coulomb special case): the fast
@@ -202,120 +366,197 @@ pub(crate) fn adhesive_props(props: &[f64]) -> Result<AdhesiveProps, LawError> {
     }
 }
 
-/// Adhesive layout: `PROPS(2)` coeff μ_d, `PROPS(3)` coeffStatic μ_s (≤ 0 → none),
-/// `PROPS(4)` Sa, `PROPS(5)` Na, `PROPS(6)` kmu, `PROPS(7)` vhalf, `PROPS(8)` γ_crit
-/// (0 → tolerance × CHRLNGTH), `PROPS(9)` slip tolerance (0 → 0.005), `PROPS(10)` K_n,
-/// `PROPS(11)` conductance from the configuration file (0 no, 1 yes), `PROPS(12)` η,
-/// `PROPS(13)` f.
+/// The checked parser of the adhesive layout ([`ADHESIVE`]): the parameters, or the first
+/// entry that is wrong, named.
 pub(crate) fn adhesive(props: &[f64]) -> Result<AdhesiveProps, LawError> {
-    if props.len() < 2 {
-        return Err(LawError::Parameter(format!(
-            "NPROPS = {} but the adhesive law needs at least 2 (PROPS(1) = 2, PROPS(2) = coeff)",
-            props.len()
-        )));
-    }
-    if let Some((i, v)) = props
-        .iter()
-        .enumerate()
-        .skip(ADHESIVE_NPROPS)
-        .find(|(_, v)| **v != 0.0)
-    {
-        return Err(LawError::Parameter(format!(
-            "PROPS({}) = {v} is not used by the adhesive law (PROPS(1..{ADHESIVE_NPROPS})); \
-             refusing to ignore it",
-            i + 1
-        )));
-    }
-    let get = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
-    let coeff_static = if props.len() >= 3 { get(3) } else { -1.0 };
-    let parameters = AdhesiveParameters {
-        coeff: get(2),
-        coeff_static,
-        sa: get(4),
-        na: get(5),
-        kmu: get(6),
-        vhalf: get(7),
-    };
-    let mut law = Adhesive::new(&parameters).map_err(|e| {
-        // Name the entry: the core names the seed's parameter.
-        let entry = match &e {
-            LawError::Parameter(m) if m.starts_with("coeffStatic") => 3,
-            LawError::Parameter(m) if m.starts_with("coeff") => 2,
-            LawError::Parameter(m) if m.starts_with("Sa") => 4,
-            LawError::Parameter(m) if m.starts_with("Na") => 5,
-            LawError::Parameter(m) if m.starts_with("kmu") => 6,
-            _ => 7,
-        };
-        in_props(entry, e)
-    })?;
-    let tolerance = get(9);
-    if tolerance != 0.0 {
-        law = law
-            .with_slip_tolerance(tolerance)
-            .map_err(|e| in_props(9, e))?;
-    }
-    let gamma_crit = get(8);
-    if gamma_crit != 0.0 {
-        law = law
-            .with_critical_slip_absolute(gamma_crit)
-            .map_err(|e| in_props(8, e))?;
-    }
-    let normal_stiffness = get(10);
-    if !(normal_stiffness == 0.0 || (normal_stiffness > 0.0 && normal_stiffness.is_finite())) {
-        return Err(LawError::Parameter(format!(
-            "PROPS(10) = {normal_stiffness}: the penalty normal stiffness K_n must be finite and \
-             > 0 (0 when only FRIC is used)"
-        )));
-    }
-    let conductance = match get(11) {
-        0.0 => false,
-        1.0 => true,
-        other => {
-            return Err(LawError::Parameter(format!(
-                "PROPS(11) = {other} must be 0 (no heat conduction) or 1 (conductance from the \
-                 INTERFACIAL_CONFIG file)"
-            )));
-        }
-    };
-    let heat_fraction = get(12);
-    if !(0.0..=1.0).contains(&heat_fraction) {
-        return Err(LawError::Parameter(format!(
-            "PROPS(12) = {heat_fraction}: the fraction η of frictional dissipation converted \
-             into heat must be in [0, 1]"
-        )));
-    }
-    let slave_fraction = match get(13) {
-        0.0 => 0.5,
-        f if f > 0.0 && f <= 1.0 => f,
-        other => {
-            return Err(LawError::Parameter(format!(
-                "PROPS(13) = {other}: the part f of the frictional heat that goes to the slave \
-                 surface must be in (0, 1] (0 → ½)"
-            )));
-        }
-    };
-    Ok(AdhesiveProps {
-        law,
-        normal_stiffness,
-        heat: HeatExchange {
-            conductance,
-            heat_fraction,
-            slave_fraction,
-        },
-    })
+    let e = ADHESIVE.check::<ADHESIVE_NPROPS>(props)?;
+    Ok(AdhesiveProps::from_entries(&e))
 }
 
-fn in_props(index: usize, e: LawError) -> LawError {
-    match e {
-        LawError::Parameter(m) => LawError::Parameter(format!("PROPS({index}): {m}")),
-        other => other,
+/// A law-2 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
+/// starts at its "0 / absent" value.
+#[derive(Clone, Debug, PartialEq)]
+pub struct AdhesiveBuilder(PropsBuilder);
+
+impl std::default::Default for AdhesiveBuilder {
+    fn default() -> Self {
+        AdhesiveBuilder(PropsBuilder::new(&ADHESIVE))
+    }
+}
+
+/// One setter per entry, each by the entry's key in [`ADHESIVE`] (an unknown key does not
+/// compile).
+macro_rules! setters {
+    ($($method:ident => $key:literal),* $(,)?) => {
+        $(
+            #[doc = concat!("Sets `", $key, "` (docs/props.md, law 2).")]
+            #[must_use]
+            pub fn $method(self, v: f64) -> Self {
+                const INDEX: usize = ADHESIVE.index_of($key);
+                AdhesiveBuilder(self.0.set(INDEX, v))
+            }
+        )*
+    };
+}
+
+impl AdhesiveBuilder {
+    /// Every entry at its "0 / absent" value, `PROPS(1) = 2`.
+    #[must_use]
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    setters! {
+        coeff => "coeff",
+        coeff_static => "coeffStatic",
+        sa => "Sa",
+        na => "Na",
+        kmu => "kmu",
+        vhalf => "vhalf",
+        gamma_crit => "gamma_crit",
+        slip_tolerance => "slip_tolerance",
+        normal_stiffness => "normal_stiffness",
+        heat_fraction => "heat_fraction",
+        slave_fraction => "slave_fraction",
+    }
+
+    /// Sets the conductance switch (`PROPS(11)`).
+    #[must_use]
+    pub fn conductance(self, on: bool) -> Self {
+        const INDEX: usize = ADHESIVE.index_of("conductance");
+        AdhesiveBuilder(self.0.set(INDEX, if on { 1.0 } else { 0.0 }))
+    }
+
+    /// All 13 entries.
+    #[must_use]
+    pub fn build(&self) -> Vec<f64> {
+        self.0.build()
+    }
+
+    /// The first `nprops` entries (a host that leaves out trailing ones).
+    #[must_use]
+    pub fn build_first(&self, nprops: usize) -> Vec<f64> {
+        self.0.build_first(nprops)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::laws::adhesive::AdhesiveParameters;
     use proptest::prelude::*;
+
+    /// The checked reader before the schema (kept as the oracle): the law's own constructors
+    /// (`Adhesive::new`, `with_*`) validate, and messages are matched back to entries.
+    /// Adhesive layout: `PROPS(2)` coeff μ_d, `PROPS(3)` coeffStatic μ_s (≤ 0 → none),
+    /// `PROPS(4)` Sa, `PROPS(5)` Na, `PROPS(6)` kmu, `PROPS(7)` vhalf, `PROPS(8)` γ_crit
+    /// (0 → tolerance × CHRLNGTH), `PROPS(9)` slip tolerance (0 → 0.005), `PROPS(10)` K_n,
+    /// `PROPS(11)` conductance from the configuration file (0 no, 1 yes), `PROPS(12)` η,
+    /// `PROPS(13)` f.
+    fn constructors_reference(props: &[f64]) -> Result<AdhesiveProps, LawError> {
+        if props.len() < 2 {
+            return Err(LawError::Parameter(format!(
+                "NPROPS = {} but the adhesive law needs at least 2 (PROPS(1) = 2, PROPS(2) = coeff)",
+                props.len()
+            )));
+        }
+        if let Some((i, v)) = props
+            .iter()
+            .enumerate()
+            .skip(ADHESIVE_NPROPS)
+            .find(|(_, v)| **v != 0.0)
+        {
+            return Err(LawError::Parameter(format!(
+                "PROPS({}) = {v} is not used by the adhesive law (PROPS(1..{ADHESIVE_NPROPS})); \
+                 refusing to ignore it",
+                i + 1
+            )));
+        }
+        let get = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
+        let coeff_static = if props.len() >= 3 { get(3) } else { -1.0 };
+        let parameters = AdhesiveParameters {
+            coeff: get(2),
+            coeff_static,
+            sa: get(4),
+            na: get(5),
+            kmu: get(6),
+            vhalf: get(7),
+        };
+        let mut law = Adhesive::new(&parameters).map_err(|e| {
+            // Name the entry: the core names the seed's parameter.
+            let entry = match &e {
+                LawError::Parameter(m) if m.starts_with("coeffStatic") => 3,
+                LawError::Parameter(m) if m.starts_with("coeff") => 2,
+                LawError::Parameter(m) if m.starts_with("Sa") => 4,
+                LawError::Parameter(m) if m.starts_with("Na") => 5,
+                LawError::Parameter(m) if m.starts_with("kmu") => 6,
+                _ => 7,
+            };
+            in_props(entry, e)
+        })?;
+        let tolerance = get(9);
+        if tolerance != 0.0 {
+            law = law
+                .with_slip_tolerance(tolerance)
+                .map_err(|e| in_props(9, e))?;
+        }
+        let gamma_crit = get(8);
+        if gamma_crit != 0.0 {
+            law = law
+                .with_critical_slip_absolute(gamma_crit)
+                .map_err(|e| in_props(8, e))?;
+        }
+        let normal_stiffness = get(10);
+        if !(normal_stiffness == 0.0 || (normal_stiffness > 0.0 && normal_stiffness.is_finite())) {
+            return Err(LawError::Parameter(format!(
+                "PROPS(10) = {normal_stiffness}: the penalty normal stiffness K_n must be finite and \
+                 > 0 (0 when only FRIC is used)"
+            )));
+        }
+        let conductance = match get(11) {
+            0.0 => false,
+            1.0 => true,
+            other => {
+                return Err(LawError::Parameter(format!(
+                    "PROPS(11) = {other} must be 0 (no heat conduction) or 1 (conductance from the \
+                     INTERFACIAL_CONFIG file)"
+                )));
+            }
+        };
+        let heat_fraction = get(12);
+        if !(0.0..=1.0).contains(&heat_fraction) {
+            return Err(LawError::Parameter(format!(
+                "PROPS(12) = {heat_fraction}: the fraction η of frictional dissipation converted \
+                 into heat must be in [0, 1]"
+            )));
+        }
+        let slave_fraction = match get(13) {
+            0.0 => 0.5,
+            f if f > 0.0 && f <= 1.0 => f,
+            other => {
+                return Err(LawError::Parameter(format!(
+                    "PROPS(13) = {other}: the part f of the frictional heat that goes to the slave \
+                     surface must be in (0, 1] (0 → ½)"
+                )));
+            }
+        };
+        Ok(AdhesiveProps {
+            law,
+            normal_stiffness,
+            heat: HeatExchange {
+                conductance,
+                heat_fraction,
+                slave_fraction,
+            },
+        })
+    }
+
+    fn in_props(index: usize, e: LawError) -> LawError {
+        match e {
+            LawError::Parameter(m) => LawError::Parameter(format!("PROPS({index}): {m}")),
+            other => other,
+        }
+    }
 
     fn entry() -> impl Strategy<Value = f64> {
         prop_oneof![
@@ -381,6 +622,109 @@ mod tests {
             let full = adhesive_props_fast(&props).and_then(|a| a.law.coulomb_special_case());
             prop_assert_eq!(adhesive_coulomb_special_case(&props), full, "{:?}", props);
         }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 3000, failure_persistence: None, ..ProptestConfig::default() })]
+        /// The schema's checked parser accepts exactly what the law's own constructors accept
+        /// (the reader before the schema), with the same law; refusals name the same entry
+        /// except when both γ_crit and the tolerance are bad (the constructors looked at the
+        /// tolerance first, the schema goes in entry order).
+        #[test]
+        fn schema_agrees_with_the_law_constructors(
+            mut props in prop::collection::vec(entry(), 0..15),
+        ) {
+            if !props.is_empty() {
+                props[0] = 2.0;
+            }
+            match (adhesive(&props), constructors_reference(&props)) {
+                (Ok(a), Ok(b)) => prop_assert_eq!(a, b),
+                (Err(_), Err(b)) => {
+                    let typed = ADHESIVE.check::<ADHESIVE_NPROPS>(&props).unwrap_err();
+                    if let Some(i) = typed.index() {
+                        let named = b.to_string().contains(&format!("PROPS({i})"));
+                        prop_assert!(named || i == 8, "{props:?}: {typed} / {b}");
+                    }
+                }
+                (a, b) => prop_assert!(false, "{props:?}: {a:?} / {b:?}"),
+            }
+        }
+    }
+
+    /// The table is well formed: entries numbered in order, a required entry never after an
+    /// optional one, every "0 / absent" value valid (the fast paths read absent entries as
+    /// 0 and test only the given ones), the pins of the special case inside each entry's class.
+    #[test]
+    fn the_schema_is_consistent() {
+        let mut optional_seen = false;
+        for (i, e) in ADHESIVE.entries.iter().enumerate() {
+            assert_eq!(e.index, i + 1, "{e:?}");
+            let required = matches!(e.default, Default::Required);
+            assert!(!(required && optional_seen), "{e:?}");
+            optional_seen |= !required;
+            if !required {
+                assert!(e.class.admits(0.0) && e.class.admits(-0.0), "{e:?}");
+            }
+        }
+        assert_eq!(ADHESIVE.required_len(), 2);
+        for (index, fix) in COULOMB_SPECIAL_CASE.fixed {
+            let class = ADHESIVE.entry(*index).class;
+            match fix {
+                Fix::Zero => assert!(class.admits(0.0)),
+                Fix::NoneOrEqual(_) => assert!(class.admits(-1.0) && class.is_off(-1.0)),
+            }
+        }
+        // Absent entries past NPROPS = 2 are valid: the smallest valid layout.
+        assert!(ADHESIVE.admits(&[2.0, 0.3], None));
+    }
+
+    /// Each named setter writes its own entry: the parsed law reports the value set.
+    #[test]
+    fn builder_setters_reach_their_entries() {
+        let props = AdhesiveBuilder::new()
+            .coeff(0.3)
+            .coeff_static(0.5)
+            .sa(1.0)
+            .na(2.0)
+            .kmu(0.1)
+            .vhalf(0.2)
+            .gamma_crit(1e-3)
+            .slip_tolerance(0.02)
+            .normal_stiffness(1e5)
+            .conductance(true)
+            .heat_fraction(0.9)
+            .slave_fraction(0.25)
+            .build();
+        let a = adhesive(&props).unwrap();
+        assert_eq!(props.len(), ADHESIVE_NPROPS);
+        assert_eq!((a.law.mu_dynamic(), a.law.mu_static()), (0.3, 0.5));
+        assert_eq!(
+            (a.law.shear_adhesion(), a.law.normal_adhesion()),
+            (1.0, 2.0)
+        );
+        assert_eq!((a.law.k_mu(), a.law.v_half()), (0.1, 0.2));
+        assert_eq!(
+            a.law.critical_slip(),
+            crate::laws::coulomb::CriticalSlip::Absolute(1e-3)
+        );
+        let without_gamma = AdhesiveBuilder::new().coeff(0.3).slip_tolerance(0.02);
+        assert_eq!(
+            adhesive(&without_gamma.build())
+                .unwrap()
+                .law
+                .critical_slip(),
+            crate::laws::coulomb::CriticalSlip::Tolerance(0.02)
+        );
+        assert_eq!(without_gamma.build_first(9).len(), 9);
+        assert_eq!(a.normal_stiffness, 1e5);
+        assert_eq!(
+            a.heat,
+            HeatExchange {
+                conductance: true,
+                heat_fraction: 0.9,
+                slave_fraction: 0.25
+            }
+        );
     }
 
     #[test]
@@ -453,6 +797,15 @@ mod tests {
         ] {
             let e = adhesive(props).unwrap_err().to_string();
             assert!(e.contains(needle), "{props:?}: {e}");
+            // The typed cause carries the index the message names.
+            let typed = ADHESIVE.check::<ADHESIVE_NPROPS>(props).unwrap_err();
+            match typed.index() {
+                Some(i) => assert!(needle.starts_with(&format!("PROPS({i})")), "{typed:?}"),
+                None => assert_eq!(
+                    typed.cause(),
+                    &super::super::schema::Cause::TooFew { given: 1 }
+                ),
+            }
         }
     }
 }

@@ -1,0 +1,645 @@
+//! One declarative description per `PROPS` layout, and what is derived from it.
+//!
+//! A [`Layout`] lists each entry once (index, seed name, symbol, meaning, unit, [`Class`] of
+//! valid values, [`Default`]), the [`Rule`]s that tie entries together and the named
+//! [`Fixed`] layouts that a fast path recognises (the adhesive law's Coulomb special case).
+//! From that one table come:
+//!
+//! - the branch-light validator of the per-call fast paths ([`Layout::admits`]): a loop over a
+//!   constant table that the compiler unrolls and folds into the straight-line code that used to
+//!   be written by hand (`fric_`'s instruction counts are the check, docs/performance.md);
+//! - the checked parser ([`Layout::check`]), whose [`PropsError`] names the entry, its value
+//!   and the requirement, with a typed [`Cause`] carrying the `PROPS` index;
+//! - the defaults the laws are built with ([`Layout::resolved`]);
+//! - a builder with named setters for tests, scenes and fuzz decoders ([`PropsBuilder`]);
+//! - the docs/props.md table ([`Layout::markdown_table`], kept fresh by `tests/props_docs.rs`).
+//!
+//! Entries are numbered as in the host's Fortran, `PROPS(1)` being the law code; the arrays
+//! here hold `e[i - 1] = PROPS(i)`, absent trailing entries read as 0.
+
+use std::fmt;
+
+use crate::LawError;
+
+/// Which values one `PROPS` entry accepts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Class {
+    /// The law code, exactly this value (`PROPS(1)`).
+    Code(i32),
+    /// Finite and ≥ 0.
+    NonNegative,
+    /// 0 (take the default) or finite and > 0: as a range 0 ≤ v < ∞, the same test as
+    /// [`Class::NonNegative`].
+    OffOrPositive,
+    /// Finite; any value ≤ 0 means "none" (take the default).
+    FiniteOrNone,
+    /// Exactly 0 or 1, with what each means.
+    Switch {
+        /// What 0 means.
+        off: &'static str,
+        /// What 1 means.
+        on: &'static str,
+    },
+    /// In [0, 1].
+    UnitInterval,
+    /// 0 (take the default) or in (0, 1]: as a range [0, 1].
+    OffOrFraction,
+}
+
+impl Class {
+    /// True when `v` is a valid value of this class (plain comparisons; the checked path).
+    #[must_use]
+    pub fn admits(self, v: f64) -> bool {
+        match self {
+            Class::Code(c) => v == f64::from(c),
+            Class::NonNegative | Class::OffOrPositive => v.is_finite() && v >= 0.0,
+            Class::FiniteOrNone => v.is_finite(),
+            Class::Switch { .. } => v == 0.0 || v == 1.0,
+            Class::UnitInterval | Class::OffOrFraction => (0.0..=1.0).contains(&v),
+        }
+    }
+
+    /// True when `v` stands for "take the default" rather than for itself.
+    #[must_use]
+    pub fn is_off(self, v: f64) -> bool {
+        match self {
+            Class::FiniteOrNone => v <= 0.0,
+            Class::OffOrPositive | Class::OffOrFraction => v == 0.0,
+            _ => false,
+        }
+    }
+
+    /// What a message says the value must be ("must be …").
+    fn requirement(self) -> String {
+        match self {
+            Class::Code(c) => format!("exactly {c}"),
+            Class::NonNegative => "finite and ≥ 0".into(),
+            Class::OffOrPositive => "finite and > 0".into(),
+            Class::FiniteOrNone => "finite (≤ 0 for none)".into(),
+            Class::Switch { off, on } => format!("0 ({off}) or 1 ({on})"),
+            Class::UnitInterval => "in [0, 1]".into(),
+            Class::OffOrFraction => "in (0, 1]".into(),
+        }
+    }
+
+    /// The docs table's "valid" column.
+    fn valid_text(self) -> String {
+        match self {
+            Class::Code(c) => format!("exactly {c}"),
+            Class::NonNegative => "finite, ≥ 0".into(),
+            Class::OffOrPositive => "finite, > 0".into(),
+            Class::FiniteOrNone => "finite".into(),
+            Class::Switch { .. } => "0 or 1".into(),
+            Class::UnitInterval => "[0, 1]".into(),
+            Class::OffOrFraction => "(0, 1]".into(),
+        }
+    }
+}
+
+/// What an entry means when it is 0 or absent (or ≤ 0 for [`Class::FiniteOrNone`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Default {
+    /// The entry must be given (`NPROPS` covers it).
+    Required,
+    /// This value.
+    Value(f64),
+    /// The value of another entry (`PROPS(index)`).
+    Entry(usize),
+    /// Worked out by the law from other inputs, as described.
+    Described(&'static str),
+}
+
+/// One `PROPS` entry.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Entry {
+    /// `PROPS(index)`, from 1.
+    pub index: usize,
+    /// The name used by the builder's setters and by messages; the seed's parameter name
+    /// where the seed has one.
+    pub key: &'static str,
+    /// True when `key` is the seed's own name (shown in the docs table).
+    pub seed_name: bool,
+    /// The symbol in the field's notation ("μ_d"), or "" for none.
+    pub symbol: &'static str,
+    /// What it is, in a few words.
+    pub meaning: &'static str,
+    /// Unit (dimension), "" for a pure number.
+    pub unit: &'static str,
+    /// The values it accepts.
+    pub class: Class,
+    /// What 0 or absent means.
+    pub default: Default,
+    /// One more line for the docs table (which host routine reads it, what the default means),
+    /// or "".
+    pub note: &'static str,
+}
+
+impl Entry {
+    /// How messages name the entry: `key (meaning)` for a seed name, `meaning symbol`
+    /// otherwise.
+    fn name(&self) -> String {
+        if self.seed_name {
+            format!("{} ({})", self.key, self.meaning)
+        } else if self.symbol.is_empty() {
+            self.meaning.to_string()
+        } else {
+            format!("{} {}", self.meaning, self.symbol)
+        }
+    }
+}
+
+/// A rule between entries.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Rule {
+    /// `PROPS(entry)`, when > 0 (given), must be ≥ `PROPS(floor)`.
+    AtLeastWhenGiven {
+        /// The entry the rule is about.
+        entry: usize,
+        /// The entry it may not be below.
+        floor: usize,
+        /// Why, for the message.
+        why: &'static str,
+    },
+}
+
+/// What a named fixed layout requires of one entry.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fix {
+    /// ±0.
+    Zero,
+    /// "None" (≤ 0, finite) or equal to `PROPS(index)`.
+    NoneOrEqual(usize),
+}
+
+/// A named fixed layout: entries pinned to one meaning, the others as the layout allows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fixed {
+    /// Its name in the docs.
+    pub name: &'static str,
+    /// The pinned entries.
+    pub fixed: &'static [(usize, Fix)],
+}
+
+/// A `PROPS` layout: one law's entries, rules and fixed layouts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Layout {
+    /// The law's name in messages ("adhesive law").
+    pub law: &'static str,
+    /// `PROPS(1)`.
+    pub code: i32,
+    /// Entries `PROPS(1..=entries.len())`, in order.
+    pub entries: &'static [Entry],
+    /// The rules between entries.
+    pub rules: &'static [Rule],
+}
+
+/// What is wrong with a `PROPS` array, with the index of the entry where there is one.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Cause {
+    /// Fewer entries than the required ones.
+    TooFew {
+        /// `NPROPS`.
+        given: usize,
+    },
+    /// A non-zero entry past the layout.
+    Unused {
+        /// `PROPS(index)`.
+        index: usize,
+        /// Its value.
+        value: f64,
+    },
+    /// An entry outside its [`Class`].
+    OutOfClass {
+        /// `PROPS(index)`.
+        index: usize,
+        /// Its value.
+        value: f64,
+    },
+    /// A [`Rule`] broken.
+    Broken {
+        /// The entry the rule is about.
+        index: usize,
+        /// The rule.
+        rule: Rule,
+        /// Its value.
+        value: f64,
+        /// The value of the other entry.
+        other: f64,
+    },
+    /// A law refused a value that the layout admits (its message, said of `PROPS(index)`).
+    Law {
+        /// `PROPS(index)`.
+        index: usize,
+        /// The law's refusal.
+        error: LawError,
+    },
+}
+
+/// A refused `PROPS` array: the layout and the cause. Becomes a [`LawError::Parameter`] with
+/// the same text at the routines' boundary.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PropsError {
+    layout: &'static Layout,
+    cause: Cause,
+}
+
+impl PropsError {
+    /// A law's refusal of `PROPS(index)`.
+    #[must_use]
+    pub fn law(layout: &'static Layout, index: usize, error: LawError) -> Self {
+        PropsError {
+            layout,
+            cause: Cause::Law { index, error },
+        }
+    }
+
+    /// The cause.
+    #[must_use]
+    pub fn cause(&self) -> &Cause {
+        &self.cause
+    }
+
+    /// The `PROPS` index of the offending entry, when there is one (not for too few entries).
+    #[must_use]
+    pub fn index(&self) -> Option<usize> {
+        match self.cause {
+            Cause::TooFew { .. } => None,
+            Cause::Unused { index, .. }
+            | Cause::OutOfClass { index, .. }
+            | Cause::Broken { index, .. }
+            | Cause::Law { index, .. } => Some(index),
+        }
+    }
+}
+
+impl fmt::Display for PropsError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let layout = self.layout;
+        match &self.cause {
+            Cause::TooFew { given } => {
+                let required: Vec<String> = layout
+                    .required()
+                    .map(|e| match e.class {
+                        Class::Code(c) => format!("PROPS({}) = {c}", e.index),
+                        _ => format!("PROPS({}) = {}", e.index, e.key),
+                    })
+                    .collect();
+                write!(
+                    f,
+                    "NPROPS = {given} but the {} needs at least {} ({})",
+                    layout.law,
+                    required.len(),
+                    required.join(", ")
+                )
+            }
+            Cause::Unused { index, value } => write!(
+                f,
+                "PROPS({index}) = {value} is not used by the {} (PROPS(1..{})); refusing to \
+                 ignore it",
+                layout.law,
+                layout.entries.len()
+            ),
+            Cause::OutOfClass { index, value } => {
+                let e = layout.entry(*index);
+                write!(f, "PROPS({index}): {} = {value} must be ", e.name())?;
+                write!(f, "{}", e.class.requirement())?;
+                match (e.class, e.default) {
+                    (Class::OffOrFraction | Class::OffOrPositive, Default::Value(d)) => {
+                        write!(f, " (0 → {d})")
+                    }
+                    _ => Ok(()),
+                }
+            }
+            Cause::Broken {
+                index,
+                rule: Rule::AtLeastWhenGiven { floor, why, .. },
+                value,
+                other,
+            } => write!(
+                f,
+                "PROPS({index}): {} = {value} is below {} = {other}: {why}",
+                layout.entry(*index).key,
+                layout.entry(*floor).key
+            ),
+            Cause::Law {
+                index,
+                error: LawError::Parameter(m),
+            } => write!(f, "PROPS({index}): {m}"),
+            Cause::Law { error, .. } => write!(f, "{error}"),
+        }
+    }
+}
+
+impl From<PropsError> for LawError {
+    fn from(e: PropsError) -> Self {
+        match e.cause {
+            // Not a parameter's fault (a configuration or numerical error): passed on as is.
+            Cause::Law {
+                error: error @ (LawError::Config(_) | LawError::Input(_) | LawError::Numerical(_)),
+                ..
+            } => error,
+            _ => LawError::Parameter(e.to_string()),
+        }
+    }
+}
+
+/// Top bit clear exactly when 0 ≤ v < ∞ (see `props::range_flag`).
+#[inline(always)]
+fn range_flag(v: f64) -> u64 {
+    super::range_flag(v)
+}
+
+impl Layout {
+    /// `PROPS(index)`'s description. Panics on an index outside the layout (a programming
+    /// error in a schema, caught by the schema's tests).
+    #[must_use]
+    pub const fn entry(&self, index: usize) -> &Entry {
+        &self.entries[index - 1]
+    }
+
+    /// The index of the entry called `key`; a compile-time error when used in a `const` with
+    /// a key the layout does not have.
+    #[must_use]
+    pub const fn index_of(&self, key: &str) -> usize {
+        let mut i = 0;
+        while i < self.entries.len() {
+            if const_str_eq(self.entries[i].key, key) {
+                return self.entries[i].index;
+            }
+            i += 1;
+        }
+        panic!("no PROPS entry of that name in the layout");
+    }
+
+    /// The entries that must be given: the law code and those without a default.
+    pub fn required(&self) -> impl Iterator<Item = &Entry> {
+        self.entries[..self.required_len()].iter()
+    }
+
+    /// The smallest `NPROPS`: the index of the last entry without a default (the law code
+    /// at least). A schema test checks that no entry after it is required.
+    #[must_use]
+    pub const fn required_len(&self) -> usize {
+        let mut n = 1;
+        let mut i = 0;
+        while i < self.entries.len() {
+            if matches!(self.entries[i].default, Default::Required) {
+                n = self.entries[i].index;
+            }
+            i += 1;
+        }
+        n
+    }
+
+    /// Fast, branch-light validity of the first `N` entries `e` (`e[i - 1] = PROPS(i)`; the
+    /// entries past `N` are absent, i.e. 0, which every layout admits: a schema test checks
+    /// it), with the entries of `fixed` pinned. Straight-line after inlining: the loop runs
+    /// over a constant table, so the compiler unrolls it and keeps, per entry, only its
+    /// class's test. Ranges 0 ≤ v < ∞ are OR-ed into one test of the top bit
+    /// ([`range_flag`]), ±0 pins into one test of the bits without their signs.
+    ///
+    /// Does not look at `NPROPS` (the caller's array length is `N`) nor at `PROPS(1)`
+    /// beyond its class.
+    #[inline(always)]
+    pub(crate) fn admits<const N: usize>(&self, e: &[f64; N], fixed: Option<&Fixed>) -> bool {
+        let mut flags = 0u64;
+        let mut zeros = 0u64;
+        let mut ok = true;
+        let mut i = 0;
+        while i < N && i < self.entries.len() {
+            let entry = &self.entries[i];
+            let v = e[i];
+            match fixed.and_then(|f| f.pin(entry.index)) {
+                Some(Fix::Zero) => zeros |= v.to_bits(),
+                // "None" is −∞ < v ≤ 0, i.e. 0 ≤ −v < ∞: the same top-bit test.
+                Some(Fix::NoneOrEqual(j)) => {
+                    flags |= if v == e[j - 1] { 0 } else { range_flag(-v) };
+                }
+                None => match entry.class {
+                    Class::Code(c) => ok &= v == f64::from(c),
+                    Class::NonNegative | Class::OffOrPositive => flags |= range_flag(v),
+                    Class::FiniteOrNone => ok &= v.is_finite(),
+                    Class::Switch { .. } => ok &= v == 0.0 || v == 1.0,
+                    Class::UnitInterval | Class::OffOrFraction => {
+                        ok &= (0.0..=1.0).contains(&v);
+                    }
+                },
+            }
+            i += 1;
+        }
+        let mut r = 0;
+        while r < self.rules.len() {
+            match self.rules[r] {
+                Rule::AtLeastWhenGiven { entry, floor, .. } => {
+                    let pinned = fixed.is_some_and(|f| f.pin(entry).is_some());
+                    if entry <= N && floor <= N && !pinned {
+                        let (v, w) = (e[entry - 1], e[floor - 1]);
+                        ok &= v <= 0.0 || v >= w;
+                    }
+                }
+            }
+            r += 1;
+        }
+        ok && flags >> 63 == 0 && zeros << 1 == 0
+    }
+
+    /// The checked parser: the entries padded with zeros to the layout's length, or the first
+    /// thing wrong, in entry order (each entry's class, then the rules about it).
+    pub fn check<const N: usize>(&'static self, props: &[f64]) -> Result<[f64; N], PropsError> {
+        debug_assert_eq!(N, self.entries.len());
+        let refuse = |cause| {
+            Err(PropsError {
+                layout: self,
+                cause,
+            })
+        };
+        if props.len() < self.required_len() {
+            return refuse(Cause::TooFew { given: props.len() });
+        }
+        if let Some((i, &value)) = props.iter().enumerate().skip(N).find(|(_, v)| **v != 0.0) {
+            return refuse(Cause::Unused {
+                index: i + 1,
+                value,
+            });
+        }
+        let e: [f64; N] = std::array::from_fn(|i| props.get(i).copied().unwrap_or(0.0));
+        for (entry, &value) in self.entries.iter().zip(&e) {
+            if !entry.class.admits(value) {
+                return refuse(Cause::OutOfClass {
+                    index: entry.index,
+                    value,
+                });
+            }
+            for &rule in self.rules {
+                let Rule::AtLeastWhenGiven {
+                    entry: at, floor, ..
+                } = rule;
+                let (v, w) = (e[at - 1], e[floor - 1]);
+                if at == entry.index && !(v <= 0.0 || v >= w) {
+                    return refuse(Cause::Broken {
+                        index: at,
+                        rule,
+                        value: v,
+                        other: w,
+                    });
+                }
+            }
+        }
+        Ok(e)
+    }
+
+    /// `PROPS(index)` of valid entries `e` with its default applied: the value the law is
+    /// built with.
+    #[inline(always)]
+    #[must_use]
+    pub fn resolved<const N: usize>(&self, e: &[f64; N], index: usize) -> f64 {
+        let entry = self.entry(index);
+        // Past N: absent, i.e. 0.
+        let v = if index <= N { e[index - 1] } else { 0.0 };
+        match entry.default {
+            Default::Value(d) if entry.class.is_off(v) => d,
+            Default::Entry(j) if entry.class.is_off(v) => {
+                if j <= N {
+                    e[j - 1]
+                } else {
+                    0.0
+                }
+            }
+            _ => v,
+        }
+    }
+
+    /// The docs/props.md table of this layout (GitHub markdown).
+    #[must_use]
+    pub fn markdown_table(&self) -> String {
+        let mut out = String::from(
+            "| entry | seed name | symbol | meaning | units | default (0 or absent) | valid |\n\
+             |---|---|---|---|---|---|---|\n",
+        );
+        let dash = |s: &str| {
+            if s.is_empty() {
+                "—".to_string()
+            } else {
+                s.to_string()
+            }
+        };
+        for e in self.entries {
+            let default = match e.default {
+                Default::Required if matches!(e.class, Class::Code(_)) => "—".to_string(),
+                Default::Required => "— (required)".to_string(),
+                Default::Value(d) => format!("{d}"),
+                Default::Entry(j) => {
+                    format!("none: {} = {}", e.symbol, self.entry(j).symbol)
+                }
+                Default::Described(text) => text.to_string(),
+            };
+            let mut valid = e.class.valid_text();
+            for rule in self.rules {
+                let Rule::AtLeastWhenGiven { entry, floor, .. } = *rule;
+                if entry == e.index {
+                    valid += &format!("; when > 0, ≥ `{}`", self.entry(floor).key);
+                }
+            }
+            let mut meaning = e.meaning.to_string();
+            if let Class::Switch { off, on } = e.class {
+                meaning += &format!(": 0 {off}, 1 {on}");
+            }
+            if !e.note.is_empty() {
+                meaning += &format!(" ({})", e.note);
+            }
+            out += &format!(
+                "| `PROPS({})` | {} | {} | {} | {} | {} | {} |\n",
+                e.index,
+                if e.seed_name {
+                    format!("`{}`", e.key)
+                } else {
+                    "—".into()
+                },
+                dash(e.symbol),
+                meaning,
+                dash(e.unit),
+                default,
+                valid
+            );
+        }
+        out
+    }
+}
+
+impl Fixed {
+    /// What this fixed layout pins `PROPS(index)` to, if anything.
+    #[inline(always)]
+    #[must_use]
+    pub const fn pin(&self, index: usize) -> Option<Fix> {
+        let mut k = 0;
+        while k < self.fixed.len() {
+            if self.fixed[k].0 == index {
+                return Some(self.fixed[k].1);
+            }
+            k += 1;
+        }
+        None
+    }
+}
+
+const fn const_str_eq(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
+/// A `PROPS` array built entry by entry, by name: for tests, scenes, fuzz decoders and
+/// harness generators, so that none of them builds `PROPS` by position. Laws wrap it in
+/// builders with one named setter per entry (`AdhesiveBuilder`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PropsBuilder {
+    layout: &'static Layout,
+    entries: Vec<f64>,
+}
+
+impl PropsBuilder {
+    /// Every entry at its "0 / absent" value, `PROPS(1)` the law code.
+    #[must_use]
+    pub fn new(layout: &'static Layout) -> Self {
+        let mut entries = vec![0.0; layout.entries.len()];
+        entries[0] = f64::from(layout.code);
+        PropsBuilder { layout, entries }
+    }
+
+    /// Sets `PROPS(index)`.
+    #[must_use]
+    pub fn set(mut self, index: usize, v: f64) -> Self {
+        self.entries[index - 1] = v;
+        self
+    }
+
+    /// The whole layout, `NPROPS` = its length.
+    #[must_use]
+    pub fn build(&self) -> Vec<f64> {
+        self.entries.clone()
+    }
+
+    /// The first `nprops` entries (a host that leaves out trailing ones; `nprops` larger than
+    /// the layout pads with zeros).
+    #[must_use]
+    pub fn build_first(&self, nprops: usize) -> Vec<f64> {
+        let mut v = self.entries.clone();
+        v.resize(nprops, 0.0);
+        v
+    }
+
+    /// The layout.
+    #[must_use]
+    pub fn layout(&self) -> &'static Layout {
+        self.layout
+    }
+}
