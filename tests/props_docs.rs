@@ -1,0 +1,87 @@
+//! The `PROPS` tables of docs/props.md are rendered from the layouts' schema
+//! (`interfacial::props::schema`): the committed text between the markers must be exactly what
+//! the schema renders. `INTERFACIAL_BLESS=1 cargo test --test props_docs` rewrites it.
+
+use std::path::Path;
+
+use interfacial::props::ADHESIVE;
+use interfacial::props::schema::Layout;
+
+/// The marker pair around the table of `law` in docs/props.md.
+fn markers(law: &str) -> (String, String) {
+    (
+        format!("<!-- BEGIN PROPS TABLE {law}: generated from src/props by `INTERFACIAL_BLESS=1 cargo test --test props_docs`, do not edit -->\n"),
+        format!("<!-- END PROPS TABLE {law} -->\n"),
+    )
+}
+
+/// `text` with the region between the markers of `law` replaced by `table`, or an error when
+/// the markers are missing.
+fn with_table(text: &str, law: &str, table: &str) -> Result<String, String> {
+    let (begin, end) = markers(law);
+    let start = text
+        .find(&begin)
+        .ok_or_else(|| format!("docs/props.md has no line {begin:?}"))?
+        + begin.len();
+    let stop = start
+        + text[start..]
+            .find(&end)
+            .ok_or_else(|| format!("docs/props.md has no line {end:?} after the begin marker"))?;
+    Ok(format!("{}{table}{}", &text[..start], &text[stop..]))
+}
+
+fn check(layouts: &[(&str, &Layout)]) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/props.md");
+    let on_disk = std::fs::read_to_string(&path).expect("read docs/props.md");
+    let mut rendered = on_disk.clone();
+    for (law, layout) in layouts {
+        rendered = with_table(&rendered, law, &layout.markdown_table()).unwrap();
+    }
+    if std::env::var_os("INTERFACIAL_BLESS").is_some() {
+        std::fs::write(&path, &rendered).expect("write docs/props.md");
+        return;
+    }
+    assert!(
+        on_disk == rendered,
+        "a PROPS table in docs/props.md differs from the schema; regenerate with:\n    \
+         INTERFACIAL_BLESS=1 cargo test --test props_docs"
+    );
+}
+
+#[test]
+fn props_tables_are_up_to_date() {
+    check(&[("law 2", &ADHESIVE)]);
+}
+
+/// The check itself can fail: a table that differs from the schema by one character is caught,
+/// and missing markers are an error.
+#[test]
+fn a_stale_table_is_caught() {
+    let (begin, end) = markers("law 2");
+    let table = ADHESIVE.markdown_table();
+    let fresh = format!("intro\n{begin}{table}{end}outro\n");
+    assert_eq!(with_table(&fresh, "law 2", &table).unwrap(), fresh);
+    let stale = fresh.replacen("finite, ≥ 0", "finite, > 0", 1);
+    assert_ne!(with_table(&stale, "law 2", &table).unwrap(), stale);
+    assert!(with_table("no markers\n", "law 2", &table).is_err());
+}
+
+/// Spot checks of the rendering against the layout's meaning (not against its own output):
+/// the law code's row, μ_s's default and rule, f's default ½ and range.
+#[test]
+fn the_table_says_what_the_schema_means() {
+    let table = ADHESIVE.markdown_table();
+    let row = |i: usize| {
+        table
+            .lines()
+            .find(|l| l.starts_with(&format!("| `PROPS({i})` |")))
+            .unwrap_or_else(|| panic!("no row for PROPS({i})"))
+            .to_string()
+    };
+    assert_eq!(table.lines().count(), 2 + 13);
+    assert!(row(1).ends_with("| exactly 2 |"), "{}", row(1));
+    assert!(row(3).contains("none: μ_s = μ_d"), "{}", row(3));
+    assert!(row(3).ends_with("| finite; when > 0, ≥ `coeff` |"), "{}", row(3));
+    assert!(row(9).contains("| 0.005 |"), "{}", row(9));
+    assert!(row(13).contains("| 0.5 | (0, 1] |"), "{}", row(13));
+}
