@@ -10,7 +10,9 @@ use interfacial::props::schema::Layout;
 /// The marker pair around the table of `law` in docs/props.md.
 fn markers(law: &str) -> (String, String) {
     (
-        format!("<!-- BEGIN PROPS TABLE {law}: generated from src/props by `INTERFACIAL_BLESS=1 cargo test --test props_docs`, do not edit -->\n"),
+        format!(
+            "<!-- BEGIN PROPS TABLE {law}: generated from src/props by `INTERFACIAL_BLESS=1 cargo test --test props_docs`, do not edit -->\n"
+        ),
         format!("<!-- END PROPS TABLE {law} -->\n"),
     )
 }
@@ -81,7 +83,11 @@ fn the_table_says_what_the_schema_means() {
     assert_eq!(table.lines().count(), 2 + 13);
     assert!(row(1).ends_with("| exactly 2 |"), "{}", row(1));
     assert!(row(3).contains("none: μ_s = μ_d"), "{}", row(3));
-    assert!(row(3).ends_with("| finite; when > 0, ≥ `coeff` |"), "{}", row(3));
+    assert!(
+        row(3).ends_with("| finite; when > 0, ≥ `coeff` |"),
+        "{}",
+        row(3)
+    );
     assert!(row(9).contains("| 0.005 |"), "{}", row(9));
     assert!(row(13).contains("| 0.5 | (0, 1] |"), "{}", row(13));
 }

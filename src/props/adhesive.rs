@@ -367,7 +367,10 @@ pub(crate) fn adhesive_props(props: &[f64]) -> Result<AdhesiveProps, LawError> {
 }
 
 /// The checked parser of the adhesive layout ([`ADHESIVE`]): the parameters, or the first
-/// entry that is wrong, named.
+/// entry that is wrong, named. Cold and out of line: inlined into `uinter_` it made that
+/// function large enough that the compiler stopped inlining the interface law into it.
+#[cold]
+#[inline(never)]
 pub(crate) fn adhesive(props: &[f64]) -> Result<AdhesiveProps, LawError> {
     let e = ADHESIVE.check::<ADHESIVE_NPROPS>(props)?;
     Ok(AdhesiveProps::from_entries(&e))
