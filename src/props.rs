@@ -46,6 +46,9 @@ pub enum FrictionLaw {
 /// checks that both paths agree.
 #[inline(always)]
 pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
+    if careful_path_only() {
+        return friction_law_checked(props);
+    }
     match coulomb_fast(props) {
         Some(law) => Ok(FrictionLaw::Coulomb(law)),
         None => match coulomb_extended_fast(props) {
@@ -67,6 +70,9 @@ pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
 #[inline(always)]
 #[must_use]
 pub fn plain_coulomb_or_special_case(props: &[f64]) -> Option<Coulomb> {
+    if careful_path_only() {
+        return None;
+    }
     match <&[f64; COULOMB_NPROPS]>::try_from(props) {
         Ok(all) => coulomb_from_entries(*all),
         // Law 1 with more than 7 entries is the extended layout: no call to find that out
@@ -96,6 +102,9 @@ fn other_plain_layouts(props: &[f64]) -> Option<Coulomb> {
 #[inline(always)]
 #[must_use]
 pub fn extended_coulomb(props: &[f64]) -> Option<ExtendedCoulomb> {
+    if careful_path_only() {
+        return None;
+    }
     match coulomb_extended_fast(props) {
         Some(FrictionLaw::CoulombExtended(law)) => Some(law),
         _ => None,
@@ -113,6 +122,35 @@ fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
         Err(_) => coulomb_props_padded(props)?,
     };
     coulomb_from_entries(e)
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Unit tests: the fast `PROPS` readers decline, see [`force_careful_path`].
+    static CAREFUL_PATH_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Unit tests only: while `on`, every fast `PROPS` reader of this thread declines
+/// ([`plain_coulomb_or_special_case`], [`extended_coulomb`], [`extended_decay_lean`], the fast
+/// layouts of [`friction_law`], the adhesive fast path), so every call of the entry points
+/// takes the careful (checked) path: how a test compares the two paths on the same arguments,
+/// as `abi::batch`'s baseline switch does for the batch kernel. Outside `cargo test` of this
+/// crate the switch does not exist and the readers test a constant `false`.
+#[cfg(test)]
+pub(crate) fn force_careful_path(on: bool) {
+    CAREFUL_PATH_ONLY.with(|c| c.set(on));
+}
+
+#[inline(always)]
+fn careful_path_only() -> bool {
+    #[cfg(test)]
+    {
+        CAREFUL_PATH_ONLY.with(std::cell::Cell::get)
+    }
+    #[cfg(not(test))]
+    {
+        false
+    }
 }
 
 /// Top bit clear exactly when 0 ≤ v < ∞: adding +0 turns −0 into +0; after that a value is
@@ -332,7 +370,7 @@ pub(crate) fn extended_decay_lean(
 ) -> Option<ExtendedCoulomb> {
     // PROPS(8) first: the other extended layouts (constant μ with HHT, damping, anisotropy,
     // the μ table) leave here with one test.
-    if props[7] != 1.0 {
+    if props[7] != 1.0 || careful_path_only() {
         return None;
     }
     let [
@@ -678,6 +716,114 @@ mod tests {
     use super::*;
     use crate::laws::coulomb::CriticalSlip;
     use proptest::prelude::*;
+
+    /// Turns [`force_careful_path`] on for the guard's life (off again on a failed assertion).
+    struct CarefulPath;
+
+    impl CarefulPath {
+        fn on() -> Self {
+            force_careful_path(true);
+            CarefulPath
+        }
+    }
+
+    impl Drop for CarefulPath {
+        fn drop(&mut self) {
+            force_careful_path(false);
+        }
+    }
+
+    /// The switch does what it says: the fast readers decline the plain, extended, decay-lean
+    /// and adhesive layouts they accept without it, and the checked path still builds the
+    /// same law.
+    #[test]
+    fn the_careful_path_switch_makes_the_fast_readers_decline() {
+        let plain = [1.0, 0.3, 0.0, 0.0, 1e-3, 0.0, 0.0];
+        let mut decay = [0.0; COULOMB_EXTENDED_NPROPS];
+        decay[..10].copy_from_slice(&[1.0, 0.5, 0.0, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.2, 3.0]);
+        let adhesive_props_array = AdhesiveBuilder::new().coeff(0.3).sa(1.0).build();
+        let fast_plain = plain_coulomb_or_special_case(&plain);
+        assert!(fast_plain.is_some());
+        assert!(extended_coulomb(&decay).is_some() && extended_decay_lean(&decay).is_some());
+        let fast_law = friction_law(&decay).unwrap();
+        let fast_adhesive = adhesive_props(&adhesive_props_array).unwrap();
+        let _careful = CarefulPath::on();
+        assert_eq!(plain_coulomb_or_special_case(&plain), None);
+        assert!(extended_coulomb(&decay).is_none() && extended_decay_lean(&decay).is_none());
+        assert_eq!(friction_law(&decay).unwrap(), fast_law);
+        assert_eq!(
+            friction_law(&plain).unwrap(),
+            FrictionLaw::Coulomb(fast_plain.unwrap())
+        );
+        assert_eq!(
+            adhesive_props(&adhesive_props_array).unwrap(),
+            fast_adhesive
+        );
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 500, failure_persistence: None, ..ProptestConfig::default() })]
+        /// `fric_`'s fast path for the decay law's lean layout against the careful path on the
+        /// very same arguments (LM = 0 both times; the switch, not an argument, sends the
+        /// second call to the careful path): every output bit for bit, NFDIR 1 and 2, stick and
+        /// slip, with and without τ_max and frozen μ.
+        #[test]
+        fn fric_decay_fast_path_agrees_with_the_careful_path(
+            nfdir in 1..=2i32,
+            mu_s in 0.05..1.0f64,
+            ratio in 0.1..1.0f64,
+            d_c in 0.1..20.0f64,
+            gamma_crit in 1e-4..1e-2f64,
+            tau_max in prop_oneof![Just(0.0), 1.0..100.0f64],
+            frozen in prop::bool::ANY,
+            press in 0.0..100.0f64,
+            dpress in -1.0..1.0f64,
+            dgam in prop::array::uniform2(-2e-2..2e-2f64),
+            tau in prop::array::uniform2(-20.0..20.0f64),
+            slip in 0.0..1.0f64,
+            rate in 0.0..5.0f64,
+            dtime in 1e-3..1.0f64,
+        ) {
+            let mut props = [0.0; COULOMB_EXTENDED_NPROPS];
+            props[..10].copy_from_slice(&[
+                1.0, mu_s, 0.0, tau_max, gamma_crit, 0.0, 0.0, 1.0, ratio * mu_s, d_c,
+            ]);
+            props[19] = if frozen { 1.0 } else { 0.0 };
+            prop_assert!(extended_decay_lean(&props).is_some());
+            let mut fast = crate::abi::host::FricCall::new(nfdir, &props);
+            fast.press = press;
+            fast.dpress = dpress;
+            fast.dtime = dtime;
+            for k in 0..2 {
+                fast.dgam[k] = dgam[k];
+                fast.tau[k] = tau[k];
+            }
+            fast.statev[0] = slip;
+            fast.statev[1] = rate;
+            fast.set_guards();
+            let mut careful = fast.clone();
+            fast.call();
+            {
+                let _careful = CarefulPath::on();
+                careful.call();
+            }
+            prop_assert_eq!(fast.pnewdt, 1e36, "{}", crate::abi::host::FricCall::last_error());
+            prop_assert_eq!(careful.pnewdt, 1e36);
+            prop_assert_eq!(fast.lm, careful.lm);
+            prop_assert_eq!(fast.tau.map(f64::to_bits), careful.tau.map(f64::to_bits));
+            prop_assert_eq!(fast.ddtddg.map(f64::to_bits), careful.ddtddg.map(f64::to_bits));
+            prop_assert_eq!(fast.ddtddp.map(f64::to_bits), careful.ddtddp.map(f64::to_bits));
+            prop_assert_eq!(fast.dslip.map(f64::to_bits), careful.dslip.map(f64::to_bits));
+            prop_assert_eq!(
+                (fast.sed.to_bits(), fast.sfd.to_bits()),
+                (careful.sed.to_bits(), careful.sfd.to_bits())
+            );
+            prop_assert_eq!(fast.ddtddt.map(f64::to_bits), careful.ddtddt.map(f64::to_bits));
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            prop_assert_eq!(bits(&fast.statev), bits(&careful.statev));
+            prop_assert!(fast.guards_intact() && careful.guards_intact());
+        }
+    }
 
     fn entry() -> impl Strategy<Value = f64> {
         prop_oneof![

@@ -360,6 +360,9 @@ fn adhesive_props_fast(props: &[f64]) -> Option<AdhesiveProps> {
 /// The adhesive `PROPS` as `uinter_` needs them (also in the Coulomb special case): the fast
 /// path, else the checked one, which names what is wrong.
 pub(crate) fn adhesive_props(props: &[f64]) -> Result<AdhesiveProps, LawError> {
+    if super::careful_path_only() {
+        return adhesive(props);
+    }
     match adhesive_props_fast(props) {
         Some(a) => Ok(a),
         None => adhesive(props),
