@@ -794,10 +794,8 @@ mod tests {
             fast.press = press;
             fast.dpress = dpress;
             fast.dtime = dtime;
-            for k in 0..2 {
-                fast.dgam[k] = dgam[k];
-                fast.tau[k] = tau[k];
-            }
+            fast.dgam[..2].copy_from_slice(&dgam);
+            fast.tau[..2].copy_from_slice(&tau);
             fast.statev[0] = slip;
             fast.statev[1] = rate;
             fast.set_guards();
