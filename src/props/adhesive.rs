@@ -9,7 +9,8 @@ use crate::laws::adhesive_interface::AdhesiveInterface;
 use crate::laws::coulomb::{Coulomb, DEFAULT_SLIP_TOLERANCE, StickMode};
 
 use super::FrictionLaw;
-use super::schema::{Class, Default, Entry, Fix, Fixed, Layout, PropsBuilder, PropsError, Rule};
+use super::schema::Default::{self, Described, Required};
+use super::schema::{Class, Entry, Fix, Fixed, Layout, PropsBuilder, PropsError, Rule};
 
 /// `PROPS(1)` code of the adhesive friction law.
 pub const LAW_ADHESIVE: i32 = 2;
@@ -18,168 +19,41 @@ pub const LAW_ADHESIVE: i32 = 2;
 pub const ADHESIVE_NPROPS: usize = ADHESIVE.entries.len();
 
 /// The adhesive layout (seed 004's parameter names where it has them).
+#[rustfmt::skip]
 pub const ADHESIVE: Layout = Layout {
     law: "adhesive law",
     code: LAW_ADHESIVE,
     entries: &[
-        entry(
-            1,
-            "code",
-            "",
-            "law code",
-            "",
-            Class::Code(LAW_ADHESIVE),
-            Default::Required,
-        ),
-        Entry {
-            seed_name: true,
-            ..entry(
-                2,
-                "coeff",
-                "μ_d",
-                "dynamic friction coefficient",
-                "",
-                Class::NonNegative,
-                Default::Required,
-            )
-        },
-        Entry {
-            seed_name: true,
-            note: "the seed's −1; any value ≤ 0 means none",
-            ..entry(
-                3,
-                "coeffStatic",
-                "μ_s",
-                "static friction coefficient",
-                "",
-                Class::FiniteOrNone,
-                Default::Entry(2),
-            )
-        },
-        Entry {
-            seed_name: true,
-            ..entry(
-                4,
-                "Sa",
-                "S_a",
-                "shear adhesive strength",
-                "stress",
-                Class::NonNegative,
-                Default::Value(0.0),
-            )
-        },
-        Entry {
-            seed_name: true,
-            ..entry(
-                5,
-                "Na",
-                "N_a",
-                "normal adhesive strength",
-                "stress",
-                Class::NonNegative,
-                Default::Value(0.0),
-            )
-        },
-        Entry {
-            seed_name: true,
-            ..entry(
-                6,
-                "kmu",
-                "k_μ",
-                "slope of μ against the slip rate",
-                "1/velocity",
-                Class::NonNegative,
-                Default::Value(0.0),
-            )
-        },
-        Entry {
-            seed_name: true,
-            note: "0: instantaneous drop",
-            ..entry(
-                7,
-                "vhalf",
-                "v_½",
-                "slip rate at which μ_s → μ_d is half done",
-                "velocity",
-                Class::NonNegative,
-                Default::Value(0.0),
-            )
-        },
-        Entry {
-            note: "absolute",
-            ..entry(
-                8,
-                "gamma_crit",
-                "γ_crit",
-                "allowable elastic slip",
-                "length",
-                Class::OffOrPositive,
-                Default::Described("`PROPS(9)` × `CHRLNGTH`"),
-            )
-        },
-        Entry {
-            note: "γ_crit = tolerance × `CHRLNGTH`",
-            ..entry(
-                9,
-                "slip_tolerance",
-                "",
-                "slip tolerance",
-                "",
-                Class::OffOrPositive,
-                Default::Value(DEFAULT_SLIP_TOLERANCE),
-            )
-        },
-        Entry {
-            note: "`uinter_` only; `fric_` ignores it",
-            ..entry(
-                10,
-                "normal_stiffness",
-                "K_n",
-                "penalty normal stiffness",
-                "stress/length",
-                Class::OffOrPositive,
-                Default::Described("none: `uinter_` refuses 0"),
-            )
-        },
-        Entry {
-            note: "`uinter_` only",
-            ..entry(
-                11,
-                "conductance",
-                "",
-                "heat conduction across the interface",
-                "",
-                Class::Switch {
-                    off: "none",
-                    on: "the GAPCON law of this interaction from `INTERFACIAL_CONFIG`",
-                },
-                Default::Value(0.0),
-            )
-        },
-        Entry {
-            note: "`uinter_` only",
-            ..entry(
-                12,
-                "heat_fraction",
-                "η",
-                "fraction of the frictional dissipation converted into heat",
-                "",
-                Class::UnitInterval,
-                Default::Value(0.0),
-            )
-        },
-        Entry {
-            note: "`uinter_` only",
-            ..entry(
-                13,
-                "slave_fraction",
-                "f",
-                "part of that heat flowing into the slave surface, 1 − f into the master",
-                "",
-                Class::OffOrFraction,
-                Default::Value(0.5),
-            )
-        },
+        Entry::new(1, "code", "law code", Class::Code(LAW_ADHESIVE)).when_absent(Required),
+        Entry::new(2, "coeff", "dynamic friction coefficient", Class::NonNegative)
+            .seed_name().symbol("μ_d").when_absent(Required),
+        Entry::new(3, "coeffStatic", "static friction coefficient", Class::FiniteOrNone)
+            .seed_name().symbol("μ_s").when_absent(Default::Entry(2))
+            .note("the seed's −1; any value ≤ 0 means none"),
+        Entry::new(4, "Sa", "shear adhesive strength", Class::NonNegative)
+            .seed_name().symbol("S_a").unit("stress"),
+        Entry::new(5, "Na", "normal adhesive strength", Class::NonNegative)
+            .seed_name().symbol("N_a").unit("stress"),
+        Entry::new(6, "kmu", "slope of μ against the slip rate", Class::NonNegative)
+            .seed_name().symbol("k_μ").unit("1/velocity"),
+        Entry::new(7, "vhalf", "slip rate at which μ_s → μ_d is half done", Class::NonNegative)
+            .seed_name().symbol("v_½").unit("velocity").note("0: instantaneous drop"),
+        Entry::new(8, "gamma_crit", "allowable elastic slip", Class::OffOrPositive)
+            .symbol("γ_crit").unit("length")
+            .when_absent(Described("`PROPS(9)` × `CHRLNGTH`")).note("absolute"),
+        Entry::new(9, "slip_tolerance", "slip tolerance", Class::OffOrPositive)
+            .when_absent(Default::Value(DEFAULT_SLIP_TOLERANCE))
+            .note("γ_crit = tolerance × `CHRLNGTH`"),
+        Entry::new(10, "normal_stiffness", "penalty normal stiffness", Class::OffOrPositive)
+            .symbol("K_n").unit("stress/length")
+            .when_absent(Described("none: `uinter_` refuses 0"))
+            .note("`uinter_` only; `fric_` ignores it"),
+        Entry::new(11, "conductance", "heat conduction across the interface", CONDUCTANCE)
+            .note("`uinter_` only"),
+        Entry::new(12, "heat_fraction", HEAT_FRACTION, Class::UnitInterval)
+            .symbol("η").note("`uinter_` only"),
+        Entry::new(13, "slave_fraction", SLAVE_FRACTION, Class::OffOrFraction)
+            .symbol("f").when_absent(Default::Value(0.5)).note("`uinter_` only"),
     ],
     rules: &[Rule::AtLeastWhenGiven {
         entry: 3,
@@ -201,28 +75,18 @@ pub const COULOMB_SPECIAL_CASE: Fixed = Fixed {
     ],
 };
 
-/// An entry with no seed name and no note (the table above fills those in where needed).
-const fn entry(
-    index: usize,
-    key: &'static str,
-    symbol: &'static str,
-    meaning: &'static str,
-    unit: &'static str,
-    class: Class,
-    default: Default,
-) -> Entry {
-    Entry {
-        index,
-        key,
-        seed_name: false,
-        symbol,
-        meaning,
-        unit,
-        class,
-        default,
-        note: "",
-    }
-}
+/// `PROPS(11)`: 0 or 1.
+const CONDUCTANCE: Class = Class::Switch {
+    off: "none",
+    on: "the GAPCON law of this interaction from `INTERFACIAL_CONFIG`",
+};
+
+/// `PROPS(12)`'s meaning.
+const HEAT_FRACTION: &str = "fraction of the frictional dissipation converted into heat";
+
+/// `PROPS(13)`'s meaning.
+const SLAVE_FRACTION: &str =
+    "part of that heat flowing into the slave surface, 1 − f into the master";
 
 /// How the interface exchanges heat (`uinter_` only).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -606,26 +470,6 @@ mod tests {
         )
     }
 
-    proptest! {
-        #![proptest_config(ProptestConfig { cases: 3000, failure_persistence: None, ..ProptestConfig::default() })]
-        /// The fast path accepts exactly what the checked path accepts, with the same result.
-        #[test]
-        fn fast_and_checked_paths_agree(
-            mut props in prop_oneof![prop::collection::vec(entry(), 0..15), nearly_valid()],
-        ) {
-            if !props.is_empty() {
-                props[0] = 2.0;
-            }
-            match (adhesive_props_fast(&props), adhesive(&props)) {
-                (Some(f), Ok(c)) => prop_assert_eq!(f, c),
-                (None, Err(_)) => {}
-                // Longer PROPS with trailing zeros are valid but left to the checked path.
-                (None, Ok(_)) => prop_assert!(props.len() > ADHESIVE_NPROPS),
-                (Some(_), Err(e)) => prop_assert!(false, "fast path accepted {props:?}: {e}"),
-            }
-        }
-    }
-
     fn special_case_entry() -> impl Strategy<Value = f64> {
         prop_oneof![
             6 => Just(0.0),
@@ -665,16 +509,24 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig { cases: 3000, failure_persistence: None, ..ProptestConfig::default() })]
-        /// The schema's checked parser accepts exactly what the law's own constructors accept
-        /// (the reader before the schema), with the same law; refusals name the same entry
-        /// except when both γ_crit and the tolerance are bad (the constructors looked at the
-        /// tolerance first, the schema goes in entry order).
+        /// The fast path accepts exactly what the checked path accepts, with the same result;
+        /// and the schema's checked parser accepts exactly what the law's own constructors
+        /// accept (the reader before the schema), with the same law; refusals name the same
+        /// entry except when both γ_crit and the tolerance are bad (the constructors looked at
+        /// the tolerance first, the schema goes in entry order).
         #[test]
-        fn schema_agrees_with_the_law_constructors(
+        fn fast_checked_and_constructors_agree(
             mut props in prop_oneof![prop::collection::vec(entry(), 0..15), nearly_valid()],
         ) {
             if !props.is_empty() {
                 props[0] = 2.0;
+            }
+            match (adhesive_props_fast(&props), adhesive(&props)) {
+                (Some(f), Ok(c)) => prop_assert_eq!(f, c),
+                (None, Err(_)) => {}
+                // Longer PROPS with trailing zeros are valid but left to the checked path.
+                (None, Ok(_)) => prop_assert!(props.len() > ADHESIVE_NPROPS),
+                (Some(_), Err(e)) => prop_assert!(false, "fast path accepted {props:?}: {e}"),
             }
             match (adhesive(&props), constructors_reference(&props)) {
                 (Ok(a), Ok(b)) => prop_assert_eq!(a, b),

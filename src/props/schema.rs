@@ -135,6 +135,59 @@ pub struct Entry {
 }
 
 impl Entry {
+    /// `PROPS(index)`, called `key`, meaning `meaning`, valid values `class`; no symbol, no
+    /// unit, 0 when absent. The other fields by the setters below, so that a layout's table
+    /// reads one entry per line or chain.
+    #[must_use]
+    pub const fn new(index: usize, key: &'static str, meaning: &'static str, class: Class) -> Self {
+        Entry {
+            index,
+            key,
+            seed_name: false,
+            symbol: "",
+            meaning,
+            unit: "",
+            class,
+            default: Default::Value(0.0),
+            note: "",
+        }
+    }
+
+    /// `key` is the seed's own name.
+    #[must_use]
+    pub const fn seed_name(mut self) -> Self {
+        self.seed_name = true;
+        self
+    }
+
+    /// The symbol.
+    #[must_use]
+    pub const fn symbol(mut self, symbol: &'static str) -> Self {
+        self.symbol = symbol;
+        self
+    }
+
+    /// The unit.
+    #[must_use]
+    pub const fn unit(mut self, unit: &'static str) -> Self {
+        self.unit = unit;
+        self
+    }
+
+    /// What 0 or absent means (instead of the value 0).
+    #[must_use]
+    pub const fn when_absent(mut self, default: Default) -> Self {
+        self.default = default;
+        self
+    }
+
+    /// The docs table's extra words.
+    #[must_use]
+    pub const fn note(mut self, note: &'static str) -> Self {
+        self.note = note;
+        self
+    }
+
     /// How messages name the entry: `key (meaning)` for a seed name, `meaning symbol`
     /// otherwise.
     fn name(&self) -> String {
