@@ -163,7 +163,7 @@ impl AdhesiveProps {
 }
 
 /// The common case of the adhesive layout: valid `PROPS`, or `None` (then the checked path
-/// [`adhesive`] says what is wrong). Branch-light ([`Layout::admits`]); a property test checks
+/// [`adhesive`] says what is wrong). Branch-light (`Layout::admits`); a property test checks
 /// that it agrees with the checked path.
 #[inline(always)]
 pub(crate) fn adhesive_fast(props: &[f64]) -> Option<FrictionLaw> {

@@ -5,9 +5,10 @@
 //! [`Fixed`] layouts that a fast path recognises (the adhesive law's Coulomb special case).
 //! From that one table come:
 //!
-//! - the branch-light validator of the per-call fast paths ([`Layout::admits`]): a loop over a
-//!   constant table that the compiler unrolls and folds into the straight-line code that used to
-//!   be written by hand (`fric_`'s instruction counts are the check, docs/performance.md);
+//! - the branch-light validator of the per-call fast paths (`Layout::admits`): one copy of its
+//!   body per entry (`unrolled!`), each folding to that entry's class test, so it compiles to
+//!   the straight-line code that used to be written by hand (`fric_`'s and `bench_adhesive`'s
+//!   instruction counts are the check, docs/architecture.md);
 //! - the checked parser ([`Layout::check`]), whose [`PropsError`] names the entry, its value
 //!   and the requirement, with a typed [`Cause`] carrying the `PROPS` index;
 //! - the defaults the laws are built with ([`Layout::resolved`]);
@@ -683,6 +684,10 @@ impl PropsBuilder {
     }
 
     /// Sets `PROPS(index)`.
+    ///
+    /// # Panics
+    /// When `index` is not in `1..=` the layout's length (the laws' named setters pass
+    /// constant, checked indices).
     #[must_use]
     pub fn set(mut self, index: usize, v: f64) -> Self {
         self.entries[index - 1] = v;
