@@ -408,7 +408,7 @@ enum IflStatus ifl_gap_conductance(const char *interaction,
 /**
  * [`ifl_gap_conductance`] with the name given as `interaction_len` bytes at `interaction`, as
  * Fortran passes a `CHARACTER` (blank-padded, no NUL): nothing past `interaction_len` is read,
- * trailing blanks are ignored. For Fortran, the `interfacial` module's
+ * trailing blanks and NULs are ignored. For Fortran, the `interfacial` module's
  * `ifl_gap_conductance(name, ...)` calls it with `len(name)`.
  *
  * # Safety

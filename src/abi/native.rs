@@ -133,7 +133,7 @@ pub unsafe extern "C" fn ifl_gap_conductance(
 
 /// [`ifl_gap_conductance`] with the name given as `interaction_len` bytes at `interaction`, as
 /// Fortran passes a `CHARACTER` (blank-padded, no NUL): nothing past `interaction_len` is read,
-/// trailing blanks are ignored. For Fortran, the `interfacial` module's
+/// trailing blanks and NULs are ignored. For Fortran, the `interfacial` module's
 /// `ifl_gap_conductance(name, ...)` calls it with `len(name)`.
 ///
 /// # Safety
@@ -155,7 +155,10 @@ pub unsafe extern "C" fn ifl_gap_conductance_n(
         None
     } else {
         // SAFETY: `interaction_len` readable bytes per the contract.
-        Some(unsafe { std::slice::from_raw_parts(interaction.cast::<u8>(), interaction_len) })
+        let bytes =
+            unsafe { std::slice::from_raw_parts(interaction.cast::<u8>(), interaction_len) };
+        let end = bytes.iter().rposition(|b| *b != 0).map_or(0, |i| i + 1);
+        Some(&bytes[..end])
     };
     gap_conductance("ifl_gap_conductance_n", name, d, p, theta_a, theta_b, out)
 }
