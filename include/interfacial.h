@@ -36,7 +36,7 @@ typedef enum IflStatus {
   /**
    * A bug in the library (a caught panic).
    */
-  IFL_STATUS_INTERNAL_ERROR = 4,
+  IFL_STATUS_INTERNAL_ERROR = 4
 } IflStatus;
 
 /**
@@ -88,7 +88,7 @@ typedef float IflReal;
 
 #ifdef __cplusplus
 extern "C" {
-#endif // __cplusplus
+#endif /* __cplusplus */
 
 /**
  * Many independent `fric_` points in one call (structure of arrays, leading dimension `ld`).
@@ -581,7 +581,7 @@ void vfric_(IflReal *f_tangential,
             size_t surf_mst_len);
 
 #ifdef __cplusplus
-}  // extern "C"
-#endif  // __cplusplus
+}  /* extern "C" */
+#endif /* __cplusplus */
 
 #endif  /* INTERFACIAL_H */
