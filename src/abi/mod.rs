@@ -2,7 +2,7 @@
 //! lengths are checked once here, through the few helpers below; the laws only ever see values,
 //! slices and fixed-size arrays.
 //!
-//! Every exported body runs inside [`boundary`], which catches unwinding, turns an error or a
+//! Every exported body runs inside `boundary`, which catches unwinding, turns an error or a
 //! panic into the routine's documented failure output, and reports it.
 
 use std::ffi::c_char;
