@@ -7,6 +7,7 @@
 #   - a Fortran 2008 host via `use interfacial`;
 #   - a Fortran 77 host via a Makefile and pkg-config, shared and static, and the same host
 #     keeping its own FRIC next to the library's GAPCON (static and shared);
+#   - docs/install.md's CalculiX steps on a stand-in for a stock CalculiX build;
 # and, from the source tree, a C host via add_subdirectory. Each host asserts closed forms and
 # error texts and prints "N passed, M failed".
 set -euo pipefail
@@ -84,6 +85,9 @@ expect_not_needed "$work/f77/host_static" libinterfacial
 step "keeping its own FRIC with the library's GAPCON, static and shared"
 run "$work/f77/host_own_static" own-fric
 run "$work/f77/host_own_shared" own-fric
+
+step "CalculiX: docs/install.md's steps on a stand-in for a stock build (ccx_2.22.a)"
+run examples/consumers/calculix_recipe/recipe.sh "$prefix" "$work/ccx"
 
 step "C host, add_subdirectory of the source tree"
 cmake -S examples/consumers/c_add_subdirectory -B "$work/sub" -DINTERFACIAL_SOURCE_DIR="$root" \
