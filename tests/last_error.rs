@@ -8,8 +8,9 @@ use std::sync::Once;
 
 use interfacial::abi::host::{FricCall, GapconCall};
 use interfacial::abi::uinter_host::UinterCall;
+use interfacial::abi::vfric::{IflReal, vfric_};
 use interfacial::abi::{
-    IflConductance, IflStatus, fric_coef_, ifl_clear_error, ifl_forced_sliding,
+    IflConductance, IflStatus, fric_coef_, ifl_clear_error, ifl_forced_sliding, ifl_fric_batch,
     ifl_gap_conductance, ifl_gap_conductance_n, ifl_last_error, ifl_last_error_copy,
 };
 
@@ -146,16 +147,122 @@ fn native_conductance_ok() {
     assert_eq!((st, out.k), (IflStatus::Ok, 2.0));
 }
 
+fn fric_batch_ok() {
+    // One point, NFDIR = 1, the stick increment of fric_ok: tau = k_s dgam = 3e4 * 1e-4 = 3.
+    let props = [1.0, 0.3, 0.0, 0.0, 1e-3];
+    let mut lm = [0 as c_int];
+    let (mut tau, mut ddtddg, mut ddtddp) = ([0.0f64], [0.0f64], [0.0f64]);
+    let (mut dslip, mut sed, mut sfd, mut statev) = ([0.0f64], [0.0f64], [0.0f64], [0.0f64; 3]);
+    let (dgam, taulm, press, dpress, chrlngth) = ([1e-4f64], [0.0f64], [100.0f64], [0.0], [1.0]);
+    let mut pnewdt = 1e36;
+    // SAFETY: every array holds one point's components, props holds nprops reals.
+    let st = unsafe {
+        ifl_fric_batch(
+            1,
+            1,
+            1,
+            props.as_ptr(),
+            props.len() as c_int,
+            3,
+            1.0,
+            lm.as_mut_ptr(),
+            tau.as_mut_ptr(),
+            ddtddg.as_mut_ptr(),
+            ddtddp.as_mut_ptr(),
+            dslip.as_mut_ptr(),
+            sed.as_mut_ptr(),
+            sfd.as_mut_ptr(),
+            statev.as_mut_ptr(),
+            dgam.as_ptr(),
+            taulm.as_ptr(),
+            press.as_ptr(),
+            dpress.as_ptr(),
+            chrlngth.as_ptr(),
+            &mut pnewdt,
+        )
+    };
+    assert_eq!((st, pnewdt), (IflStatus::Ok, 1e36));
+    assert!((tau[0] - 3.0).abs() < 1e-12, "{tau:?}");
+}
+
+fn vfric_ok() {
+    // One sliding contact point: fTangential = -min(mu F_N, F_stick) = -min(0.3 * 10, 5) = -3.
+    let props: [IflReal; 2] = [1.0, 0.3];
+    let (f_normal, f_stick, area): ([IflReal; 1], [IflReal; 1], [IflReal; 1]) =
+        ([10.0], [5.0], [1.0]);
+    let mut ftan: [IflReal; 1] = [0.0];
+    let mut statev: [IflReal; 2] = [0.0; 2];
+    let jcon = [1 as c_int];
+    let idummy = [1 as c_int; 8];
+    let dummy: [IflReal; 32] = [0.0; 32];
+    let (one, zero, two, nprops) = (1 as c_int, 0 as c_int, 2 as c_int, 2 as c_int);
+    let r0: IflReal = 0.0;
+    let name = [b' '; 80];
+    // SAFETY: every array is at least as long as the VFRIC dimensions given (one point).
+    unsafe {
+        vfric_(
+            ftan.as_mut_ptr(),
+            statev.as_mut_ptr(),
+            &one,
+            &one,
+            &one,
+            &one,
+            &one,
+            &one,
+            &one,
+            &two,
+            &one,
+            &nprops,
+            &zero,
+            &zero,
+            &one,
+            idummy.as_ptr(),
+            idummy.as_ptr(),
+            jcon.as_ptr(),
+            idummy.as_ptr(),
+            &r0,
+            &r0,
+            &r0,
+            name.as_ptr().cast(),
+            name.as_ptr().cast(),
+            name.as_ptr().cast(),
+            &one,
+            dummy.as_ptr(),
+            f_stick.as_ptr(),
+            dummy.as_ptr(),
+            f_normal.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            props.as_ptr(),
+            area.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            80,
+            80,
+            80,
+        );
+    }
+    assert!((ftan[0] + 3.0).abs() < 1e-6, "vfric_ succeeded: {ftan:?}");
+}
+
 #[test]
 fn a_successful_call_of_any_entry_point_keeps_the_last_error() {
     setup();
-    let entry_points: [(&str, fn()); 6] = [
+    let entry_points: [(&str, fn()); 8] = [
         ("fric_", fric_ok),
         ("gapcon_", gapcon_ok),
         ("uinter_", uinter_ok),
         ("fric_coef_", fric_coef_ok),
         ("ifl_forced_sliding", forced_sliding_ok),
         ("ifl_gap_conductance(_n)", native_conductance_ok),
+        ("ifl_fric_batch", fric_batch_ok),
+        ("vfric_", vfric_ok),
     ];
     for (name, ok) in entry_points {
         let m = fail();
