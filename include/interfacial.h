@@ -367,8 +367,10 @@ const char *ifl_version(void);
 
 /**
  * The last error message reported on the calling thread, NUL-terminated; `""` when there has
- * been none since the last `ifl_clear_error`. The pointer stays valid until the next call into
- * the library on the same thread; copy the text if you need it longer. Never free it.
+ * been none since the last `ifl_clear_error`. A successful call does not clear it (like
+ * `errno`): only the next failure on this thread replaces it, only `ifl_clear_error` empties
+ * it. The pointer stays valid until the next call into the library on the same thread; copy
+ * the text if you need it longer. Never free it.
  */
 const char *ifl_last_error(void);
 
@@ -384,7 +386,8 @@ const char *ifl_last_error(void);
 size_t ifl_last_error_copy(char *buf, size_t len);
 
 /**
- * Forgets the calling thread's last error message.
+ * Forgets the calling thread's last error message (successful calls keep it, so clear before
+ * a call whose own failure you want to read).
  */
 void ifl_clear_error(void);
 

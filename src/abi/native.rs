@@ -21,8 +21,10 @@ pub extern "C" fn ifl_version() -> *const c_char {
 }
 
 /// The last error message reported on the calling thread, NUL-terminated; `""` when there has
-/// been none since the last `ifl_clear_error`. The pointer stays valid until the next call into
-/// the library on the same thread; copy the text if you need it longer. Never free it.
+/// been none since the last `ifl_clear_error`. A successful call does not clear it (like
+/// `errno`): only the next failure on this thread replaces it, only `ifl_clear_error` empties
+/// it. The pointer stays valid until the next call into the library on the same thread; copy
+/// the text if you need it longer. Never free it.
 #[unsafe(no_mangle)]
 pub extern "C" fn ifl_last_error() -> *const c_char {
     // The thread-local buffer outlives this call; it is only replaced by a later report or clear
@@ -53,7 +55,8 @@ pub unsafe extern "C" fn ifl_last_error_copy(buf: *mut c_char, len: usize) -> us
     })
 }
 
-/// Forgets the calling thread's last error message.
+/// Forgets the calling thread's last error message (successful calls keep it, so clear before
+/// a call whose own failure you want to read).
 #[unsafe(no_mangle)]
 pub extern "C" fn ifl_clear_error() {
     clear_last_error();
