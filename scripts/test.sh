@@ -7,10 +7,12 @@ echo "== cargo fmt / clippy"
 cargo fmt --all -- --check
 cargo clippy --locked --all-targets -- -D warnings
 cargo clippy --locked --all-targets --features calculix -- -D warnings
+echo "== cargo doc (no warnings)"
+RUSTDOCFLAGS=-Dwarnings cargo doc --locked --no-deps
 echo "== Rust tests"
 cargo test --locked
 echo "== Rust tests of the CalculiX variant (gapcon_ with AREA)"
-cargo test --locked --features calculix --test gapcon_abi --test header
+cargo test --locked --features calculix --test gapcon_abi --test header --test last_error
 echo "== Rust tests of the single-precision Explicit build (vfric_ with REAL*4, docs/vfric.md)"
 cargo clippy --locked --all-targets --features explicit-single -- -D warnings
 cargo test --locked --features explicit-single --test vfric
@@ -19,7 +21,7 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j2
 ctest --test-dir build --output-on-failure -j2
 # Optional stages, each owned by its own script: run when present.
-for stage in scripts/test-sanitizers.sh scripts/fuzz-ci.sh; do
+for stage in scripts/test-consumers.sh scripts/test-sanitizers.sh scripts/fuzz-ci.sh; do
   if [ -x "$stage" ]; then
     echo "== $stage"
     "$stage"

@@ -2,6 +2,10 @@
 //! file named by `INTERFACIAL_LOG`), the last message of each thread kept for `ifl_last_error`,
 //! and `INTERFACIAL_STRICT=1` to abort on the first error.
 //!
+//! The last error is sticky, like `errno`: [`report`] replaces it, [`clear_last_error`]
+//! (`ifl_clear_error`) empties it, and nothing else touches it — a successful call leaves it as
+//! it was (docs/install.md, "Errors"; `tests/last_error.rs` holds every entry point to that).
+//!
 //! The only global mutable state of the library lives here: the set of causes already printed
 //! (a mutex, touched only on the error path, at most [`MAX_CAUSES`] entries) and the
 //! environment read once.

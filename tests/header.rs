@@ -15,6 +15,7 @@ fn header_is_up_to_date() {
         .generate()
         .expect("cbindgen failed")
         .write(&mut generated);
+    let generated = c89_clean(&generated);
     let path = root.join("include/interfacial.h");
     if std::env::var_os("INTERFACIAL_BLESS").is_some() {
         std::fs::write(&path, &generated).expect("write header");
@@ -25,6 +26,18 @@ fn header_is_up_to_date() {
         on_disk == generated,
         "include/interfacial.h is stale; regenerate it with:\n    INTERFACIAL_BLESS=1 cargo test --test header"
     );
+}
+
+/// cbindgen's C output is C99/C++11: `//` comments after `#endif` and on the closing brace of
+/// `extern "C"`, and a comma after an enum's last variant. The header is also meant for C89 and
+/// C++98 (`-pedantic`, c_tests/CMakeLists.txt compiles it in both), so those are rewritten.
+fn c89_clean(generated: &[u8]) -> Vec<u8> {
+    String::from_utf8_lossy(generated)
+        .replace("#endif // __cplusplus", "#endif /* __cplusplus */")
+        .replace("#endif  // __cplusplus", "#endif /* __cplusplus */")
+        .replace("}  // extern \"C\"", "}  /* extern \"C\" */")
+        .replace(",\n} ", "\n} ")
+        .into_bytes()
 }
 
 /// The Rust side of the prototype check: each export coerces to the function-pointer type

@@ -27,6 +27,10 @@ pub const GAPCON_SAFE_CONDUCTANCE: f64 = 0.0;
 /// `AK(1) = 0` and one message per distinct cause (stderr or `$INTERFACIAL_LOG`;
 /// `ifl_last_error` on the calling thread).
 ///
+/// Called with CalculiX's argument list (`AREA` after `KINC`, so an address arrives as the
+/// hidden length of `CINAME`: any value above 65535), it refuses: `AK(1) = 0`, nothing else
+/// written, and a message that names the CalculiX variant, `libinterfacial_calculix`.
+///
 /// # Safety
 /// Pointers valid for the GAPCON signature: `AK(5)`, `D(2)`, `TEMP(2)`, `CINAME` of the hidden
 /// length `ciname_len`. The unread arguments may be anything.
@@ -56,9 +60,55 @@ pub unsafe extern "C" fn gapcon_(
     let _ = (
         flowm, predef, time, slname, msname, coords, npred, kstep, kinc,
     );
-    let _ = (slname_len, msname_len);
+    let _ = msname_len;
+    if ciname_len > super::MAX_NAME_LEN {
+        // CalculiX's argument list: AREA's address sits where CINAME's length should be, and
+        // CINAME's real length one slot later (docs/gapcon.md, "Which library").
+        // SAFETY: the host's pointers; CINAME is read with a plausible length only.
+        unsafe { wrong_variant(ak, ciname, slname_len, ciname_len, noel, node) };
+        return;
+    }
     // SAFETY: the host's pointers, valid per the contract above.
     unsafe { gap_conductance(ak, d, temp, ciname, ciname_len, noel, node) }
+}
+
+/// The refusal of the Abaqus `gapcon_` called with CalculiX's argument list: `AK(1) = 0`, nothing
+/// else written, and a message naming the library to link instead.
+///
+/// # Safety
+/// `AK(1)` writable or NULL; `ciname` NULL or readable for `real_ciname_len` bytes when that is
+/// a plausible length.
+#[cfg(not(feature = "calculix"))]
+#[cold]
+#[inline(never)]
+unsafe fn wrong_variant(
+    ak: *mut f64,
+    ciname: *const c_char,
+    real_ciname_len: usize,
+    hidden_len: usize,
+    noel: *const c_int,
+    node: *const c_int,
+) {
+    let name_len = if real_ciname_len <= super::MAX_NAME_LEN {
+        real_ciname_len
+    } else {
+        0
+    };
+    let _ = boundary(
+        // SAFETY: CINAME read with its real length (the slot after), or not at all.
+        || unsafe { site(ciname, name_len, noel, node) },
+        || {
+            Err(LawError::Parameter(format!(
+                "called with CalculiX's gapcon argument list (the hidden length of CINAME is \
+                 {hidden_len}, an address: AREA after KINC), but this is the Abaqus build of \
+                 libinterfacial; link the CalculiX variant instead: libinterfacial_calculix.a \
+                 or libinterfacial_calculix.so (CMake Interfacial::interfacial_calculix, \
+                 pkg-config interfacial_calculix; docs/install.md)"
+            )))
+        },
+        // SAFETY: AK(1) writable (or NULL, then skipped).
+        || unsafe { write(ak, GAPCON_SAFE_CONDUCTANCE) },
+    );
 }
 
 /// CalculiX's `gapcon`: the Abaqus argument list plus `AREA` after `KINC` (built with

@@ -2,7 +2,7 @@
 //! lengths are checked once here, through the few helpers below; the laws only ever see values,
 //! slices and fixed-size arrays.
 //!
-//! Every exported body runs inside [`boundary`], which catches unwinding, turns an error or a
+//! Every exported body runs inside `boundary`, which catches unwinding, turns an error or a
 //! panic into the routine's documented failure output, and reports it.
 
 use std::ffi::c_char;
@@ -28,8 +28,8 @@ pub use fric::fric_;
 pub use fric_coef::fric_coef_;
 pub use gapcon::gapcon_;
 pub use native::{
-    IflConductance, IflStatus, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
-    ifl_last_error_copy, ifl_version,
+    IflConductance, IflStatus, ifl_clear_error, ifl_gap_conductance, ifl_gap_conductance_n,
+    ifl_last_error, ifl_last_error_copy, ifl_version,
 };
 pub use uinter::uinter_;
 pub use vfric::vfric_;
@@ -207,6 +207,12 @@ pub(crate) unsafe fn write<T>(p: *mut T, v: T) {
     }
 }
 
+/// The largest hidden length taken as a name length. Abaqus names have at most 80 characters,
+/// and on Linux no object lives below `vm.mmap_min_addr` (65536 by default), so a larger
+/// "length" is an address that landed in the hidden-length slot: a caller with a different
+/// argument list (CalculiX's `gapcon` with `AREA` calling the Abaqus build).
+pub(crate) const MAX_NAME_LEN: usize = 65535;
+
 /// A Fortran `CHARACTER` argument: `len` bytes, blank-padded, not NUL-terminated. Trailing
 /// blanks (and NULs, which some C callers leave) are trimmed; nothing past `len` is read.
 ///
@@ -215,6 +221,10 @@ pub(crate) unsafe fn write<T>(p: *mut T, v: T) {
 pub(crate) unsafe fn fortran_string(p: *const c_char, len: usize) -> String {
     if p.is_null() || len == 0 {
         return String::new();
+    }
+    if len > MAX_NAME_LEN {
+        // Not a length but a shifted argument (an address): reading would crash.
+        return format!("? (hidden length {len})");
     }
     // SAFETY: `len` readable bytes by contract (the hidden length is trusted, never exceeded).
     let bytes = unsafe { std::slice::from_raw_parts(p.cast::<u8>(), len) };

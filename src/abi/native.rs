@@ -4,20 +4,27 @@ use std::ffi::{CStr, c_char};
 
 use crate::report::{clear_last_error, with_last_error};
 
-/// The library version as a NUL-terminated string, e.g. `"0.1.0"`. Static storage: never free it.
+/// The library version as a NUL-terminated string: `"0.1.0"` for the default build,
+/// `"0.1.0+calculix"` for the CalculiX variant (`gapcon_` with `AREA`), so a host can tell
+/// which one it loaded. Static storage: never free it.
 #[unsafe(no_mangle)]
 pub extern "C" fn ifl_version() -> *const c_char {
-    const VERSION: &CStr =
-        match CStr::from_bytes_with_nul(concat!(env!("CARGO_PKG_VERSION"), "\0").as_bytes()) {
-            Ok(v) => v,
-            Err(_) => c"unknown",
-        };
+    #[cfg(not(feature = "calculix"))]
+    const TEXT: &str = concat!(env!("CARGO_PKG_VERSION"), "\0");
+    #[cfg(feature = "calculix")]
+    const TEXT: &str = concat!(env!("CARGO_PKG_VERSION"), "+calculix\0");
+    const VERSION: &CStr = match CStr::from_bytes_with_nul(TEXT.as_bytes()) {
+        Ok(v) => v,
+        Err(_) => c"unknown",
+    };
     VERSION.as_ptr()
 }
 
 /// The last error message reported on the calling thread, NUL-terminated; `""` when there has
-/// been none since the last `ifl_clear_error`. The pointer stays valid until the next call into
-/// the library on the same thread; copy the text if you need it longer. Never free it.
+/// been none since the last `ifl_clear_error`. A successful call does not clear it (like
+/// `errno`): only the next failure on this thread replaces it, only `ifl_clear_error` empties
+/// it. The pointer stays valid until the next call into the library on the same thread; copy
+/// the text if you need it longer. Never free it.
 #[unsafe(no_mangle)]
 pub extern "C" fn ifl_last_error() -> *const c_char {
     // The thread-local buffer outlives this call; it is only replaced by a later report or clear
@@ -48,7 +55,8 @@ pub unsafe extern "C" fn ifl_last_error_copy(buf: *mut c_char, len: usize) -> us
     })
 }
 
-/// Forgets the calling thread's last error message.
+/// Forgets the calling thread's last error message (successful calls keep it, so clear before
+/// a call whose own failure you want to read).
 #[unsafe(no_mangle)]
 pub extern "C" fn ifl_clear_error() {
     clear_last_error();
@@ -104,6 +112,7 @@ pub struct IflConductance {
 /// the `INTERFACIAL_CONFIG` file, evaluated at clearance `d`, contact pressure `p` and surface
 /// temperatures `theta_a`, `theta_b`. On success writes `*out` and returns `IFL_STATUS_OK`; on
 /// failure writes `*out` as all zeros (when `out` is not NULL), reports, and returns the cause.
+/// [`ifl_gap_conductance_n`] takes the name with its length instead (no NUL needed).
 ///
 /// # Safety
 /// `interaction` is NULL or a NUL-terminated string; `out` is NULL or writable.
@@ -116,27 +125,80 @@ pub unsafe extern "C" fn ifl_gap_conductance(
     theta_b: f64,
     out: *mut IflConductance,
 ) -> IflStatus {
-    // SAFETY: NUL-terminated per the contract; NULL handled.
-    let name: &[u8] = if interaction.is_null() {
-        &[]
+    let name: Option<&[u8]> = if interaction.is_null() {
+        None
     } else {
-        unsafe { CStr::from_ptr(interaction) }.to_bytes()
+        // SAFETY: NUL-terminated per the contract.
+        Some(unsafe { CStr::from_ptr(interaction) }.to_bytes())
+    };
+    gap_conductance("ifl_gap_conductance", name, d, p, theta_a, theta_b, out)
+}
+
+/// [`ifl_gap_conductance`] with the name given as `interaction_len` bytes at `interaction`, as
+/// Fortran passes a `CHARACTER` (blank-padded, no NUL): nothing past `interaction_len` is read,
+/// trailing blanks and NULs are ignored. For Fortran, the `interfacial` module's
+/// `ifl_gap_conductance(name, ...)` calls it with `len(name)`.
+///
+/// # Safety
+/// `interaction` is NULL or points to `interaction_len` readable bytes (any pointer when
+/// `interaction_len` is 0); `out` is NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn ifl_gap_conductance_n(
+    interaction: *const c_char,
+    interaction_len: usize,
+    d: f64,
+    p: f64,
+    theta_a: f64,
+    theta_b: f64,
+    out: *mut IflConductance,
+) -> IflStatus {
+    let name: Option<&[u8]> = if interaction_len == 0 {
+        Some(&[])
+    } else if interaction.is_null() {
+        None
+    } else {
+        // SAFETY: `interaction_len` readable bytes per the contract.
+        let bytes =
+            unsafe { std::slice::from_raw_parts(interaction.cast::<u8>(), interaction_len) };
+        let end = bytes.iter().rposition(|b| *b != 0).map_or(0, |i| i + 1);
+        Some(&bytes[..end])
+    };
+    gap_conductance("ifl_gap_conductance_n", name, d, p, theta_a, theta_b, out)
+}
+
+/// The body of both native conductance calls; `name` is `None` for a NULL pointer.
+fn gap_conductance(
+    routine: &'static str,
+    name: Option<&[u8]>,
+    d: f64,
+    p: f64,
+    theta_a: f64,
+    theta_b: f64,
+    out: *mut IflConductance,
+) -> IflStatus {
+    let shown = |name: Option<&[u8]>| {
+        let bytes = name.unwrap_or_default();
+        let end = bytes
+            .iter()
+            .rposition(|b| *b != b' ' && *b != 0)
+            .map_or(0, |i| i + 1);
+        String::from_utf8_lossy(&bytes[..end]).into_owned()
     };
     super::boundary(
         || crate::report::Site {
-            routine: "ifl_gap_conductance",
-            interaction: String::from_utf8_lossy(name).trim_end().to_owned(),
+            routine,
+            interaction: shown(name),
             place: "native call".into(),
         },
         || {
-            if interaction.is_null() || out.is_null() {
+            let Some(name) = name.filter(|_| !out.is_null()) else {
                 return Err(crate::LawError::Input(
                     "interaction or out is a NULL pointer".into(),
                 ));
-            }
+            };
             let law = crate::config::gap_law_for(name)?;
             let r = law.evaluate(d, p, theta_a, theta_b)?;
-            // SAFETY: checked non-NULL above; writable per the contract.
+            // SAFETY: checked non-NULL above; writable per the callers' contracts.
             unsafe {
                 out.write(IflConductance {
                     k: r.k,
@@ -151,7 +213,7 @@ pub unsafe extern "C" fn ifl_gap_conductance(
         },
         || {
             if !out.is_null() {
-                // SAFETY: writable per the contract.
+                // SAFETY: writable per the callers' contracts.
                 unsafe { out.write(IflConductance::default()) };
             }
         },

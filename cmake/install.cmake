@@ -1,0 +1,80 @@
+# cmake --install: the GNUInstallDirs layout (docs/install.md lists every file).
+#   include/interfacial.h, include/interfacial.mod
+#   lib/libinterfacial.a, lib/libinterfacial.so.<version> + .so.<ABI> + .so links
+#   lib/libinterfacial_calculix.{a,so...}, lib/libinterfacial_fortran.a
+#   lib/cmake/Interfacial/InterfacialConfig.cmake, InterfacialConfigVersion.cmake
+#   lib/pkgconfig/interfacial.pc, interfacial-fortran.pc, interfacial_calculix.pc
+#   share/interfacial/fortran/interfacial.f90
+set(_ifl_lib "${INTERFACIAL_LIB_DIR}")
+set(_ifl_v "${PROJECT_VERSION}")
+set(_ifl_so "${INTERFACIAL_SOVERSION}")
+
+install(FILES "${PROJECT_SOURCE_DIR}/include/interfacial.h"
+  DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+install(FILES "${_ifl_lib}/libinterfacial.a" "${_ifl_lib}/libinterfacial_calculix.a"
+  DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+install(FILES "${_ifl_lib}/libinterfacial.so.${_ifl_v}" "${_ifl_lib}/libinterfacial_calculix.so.${_ifl_v}"
+  DESTINATION "${CMAKE_INSTALL_LIBDIR}"
+  PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ
+              WORLD_EXECUTE)
+# The links (file(INSTALL) keeps a symbolic link a link).
+install(FILES "${_ifl_lib}/libinterfacial.so.${_ifl_so}" "${_ifl_lib}/libinterfacial.so"
+              "${_ifl_lib}/libinterfacial_calculix.so.${_ifl_so}"
+              "${_ifl_lib}/libinterfacial_calculix.so"
+  DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+
+set(INTERFACIAL_INSTALLS_FORTRAN OFF)
+if(INTERFACIAL_FORTRAN_MODULE)
+  set(INTERFACIAL_INSTALLS_FORTRAN ON)
+  install(TARGETS interfacial_fortran ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+  # The .mod of the compiler that built it, next to the C header (as netCDF-Fortran does), and
+  # the source for any other compiler.
+  install(FILES "${PROJECT_BINARY_DIR}/fortran/interfacial.mod"
+    DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+  install(FILES "${PROJECT_SOURCE_DIR}/fortran/interfacial.f90"
+    DESTINATION "${CMAKE_INSTALL_DATADIR}/interfacial/fortran")
+endif()
+
+# CMake package.
+set(INTERFACIAL_CMAKE_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/Interfacial")
+configure_package_config_file("${PROJECT_SOURCE_DIR}/cmake/InterfacialConfig.cmake.in"
+  "${PROJECT_BINARY_DIR}/InterfacialConfig.cmake"
+  INSTALL_DESTINATION "${INTERFACIAL_CMAKE_DIR}"
+  PATH_VARS CMAKE_INSTALL_INCLUDEDIR CMAKE_INSTALL_LIBDIR)
+# 0.y.z: only the same 0.y is compatible (semver; CHANGELOG.md "C ABI").
+write_basic_package_version_file("${PROJECT_BINARY_DIR}/InterfacialConfigVersion.cmake"
+  VERSION "${PROJECT_VERSION}" COMPATIBILITY SameMinorVersion)
+install(FILES "${PROJECT_BINARY_DIR}/InterfacialConfig.cmake"
+              "${PROJECT_BINARY_DIR}/InterfacialConfigVersion.cmake"
+  DESTINATION "${INTERFACIAL_CMAKE_DIR}")
+
+# pkg-config, relocatable: prefix is found from the .pc file's own place.
+if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}")
+  set(INTERFACIAL_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
+else()
+  file(RELATIVE_PATH _ifl_up "/p/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/p")
+  string(REGEX REPLACE "/$" "" _ifl_up "${_ifl_up}")
+  set(INTERFACIAL_PC_PREFIX "\${pcfiledir}/${_ifl_up}")
+endif()
+list(TRANSFORM INTERFACIAL_NATIVE_LIBS PREPEND "-l" OUTPUT_VARIABLE _ifl_private)
+string(JOIN " " INTERFACIAL_PC_LIBS_PRIVATE ${_ifl_private})
+foreach(pc interfacial interfacial_calculix)
+  set(INTERFACIAL_PC_NAME "${pc}")
+  if(pc STREQUAL "interfacial_calculix")
+    set(INTERFACIAL_PC_CFLAGS "-DINTERFACIAL_CALCULIX")
+    set(INTERFACIAL_PC_WHAT "CalculiX variant: gapcon with AREA after KINC")
+  else()
+    set(INTERFACIAL_PC_CFLAGS "")
+    set(INTERFACIAL_PC_WHAT "Abaqus argument lists")
+  endif()
+  configure_file("${PROJECT_SOURCE_DIR}/cmake/interfacial.pc.in"
+    "${PROJECT_BINARY_DIR}/pkgconfig/${pc}.pc" @ONLY)
+  install(FILES "${PROJECT_BINARY_DIR}/pkgconfig/${pc}.pc"
+    DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
+endforeach()
+if(INTERFACIAL_INSTALLS_FORTRAN)
+  configure_file("${PROJECT_SOURCE_DIR}/cmake/interfacial-fortran.pc.in"
+    "${PROJECT_BINARY_DIR}/pkgconfig/interfacial-fortran.pc" @ONLY)
+  install(FILES "${PROJECT_BINARY_DIR}/pkgconfig/interfacial-fortran.pc"
+    DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
+endif()

@@ -1,0 +1,8 @@
+C     CalculiX's own gapcon.f stand-in: AK(1) = -99, so the test sees whose GAPCON ran.
+      SUBROUTINE GAPCON(AK,D,FLOWM,TEMP,PREDEF,TIME,CINAME,SLNAME,
+     1 MSNAME,COORDS,NOEL,NODE,NPRED,KSTEP,KINC,AREA)
+      IMPLICIT REAL*8 (A-H,O-Z)
+      CHARACTER*80 CINAME,SLNAME,MSNAME
+      DIMENSION AK(5)
+      AK(1) = -99.0D0
+      END

@@ -1,0 +1,12 @@
+C     The host's own FRIC, kept next to the library's GAPCON (docs/install.md, "Keeping your own
+C     FRIC"): it writes the marker TAU(1) = -7 that host.f's 'own-fric' mode expects.
+      SUBROUTINE FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,
+     1 DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,
+     2 KSTEP,KINC,TIME,DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,
+     3 NPATCH,COORDS,RCOORD,DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,
+     4 NSTATV,CHRLNGTH,PROPS,NPROPS)
+      IMPLICIT REAL*8 (A-H,O-Z)
+      CHARACTER*80 CINAME,SLNAME,MSNAME
+      DIMENSION TAU(NFDIR)
+      TAU(1) = -7.0D0
+      END

@@ -1,0 +1,308 @@
+//! The calling thread's last error (docs/install.md, "Errors"): a successful call into any entry
+//! point leaves it as it was (like C's `errno`), only a new failure replaces it, and only
+//! `ifl_clear_error` empties it. Checked for every entry point: a failure is recorded, then a
+//! successful call of each entry point in turn must leave that text untouched.
+
+use std::ffi::{CStr, c_char, c_int};
+use std::sync::Once;
+
+use interfacial::abi::host::{FricCall, GapconCall};
+use interfacial::abi::uinter_host::UinterCall;
+use interfacial::abi::vfric::{IflReal, vfric_};
+use interfacial::abi::{
+    IflConductance, IflStatus, fric_coef_, ifl_clear_error, ifl_forced_sliding, ifl_fric_batch,
+    ifl_gap_conductance, ifl_gap_conductance_n, ifl_last_error, ifl_last_error_copy,
+};
+
+fn setup() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        let path = std::env::temp_dir().join(format!(
+            "interfacial-last-error-{}.toml",
+            std::process::id()
+        ));
+        std::fs::write(
+            &path,
+            "[interactions.SI1.conductance]\nlaw = \"constant\"\nk = 2.0\n",
+        )
+        .unwrap();
+        // SAFETY: set once, before any call into the library in this binary.
+        unsafe { std::env::set_var("INTERFACIAL_CONFIG", &path) };
+    });
+}
+
+fn last() -> String {
+    // SAFETY: ifl_last_error returns a NUL-terminated thread-local buffer, read at once.
+    unsafe { CStr::from_ptr(ifl_last_error()) }
+        .to_string_lossy()
+        .into_owned()
+}
+
+/// A GAPCON failure on this thread: an interaction the file does not configure.
+fn fail() -> String {
+    let mut g = GapconCall::new("NOT-CONFIGURED", 0.0, 1.0, 300.0, 290.0);
+    assert_eq!(g.call(), 0.0);
+    let m = last();
+    assert!(m.contains("GAPCON") && m.contains("NOT-CONFIGURED"), "{m}");
+    m
+}
+
+fn fric_ok() {
+    let mut c = FricCall::new(2, &[1.0, 0.3, 0.0, 0.0, 1e-3]);
+    c.press = 100.0;
+    c.dgam[0] = 1e-4;
+    c.call();
+    assert_eq!(c.pnewdt, 1e36, "fric_ succeeded");
+}
+
+fn gapcon_ok() {
+    let mut g = GapconCall::new("SI1", 0.0, 1.0, 300.0, 290.0);
+    assert_eq!(g.call(), 2.0);
+}
+
+fn uinter_ok() {
+    // The adhesive law with S_a = N_a = 0 (Coulomb), K_n = 1e5, closed by h = 1e-4.
+    let mut c = UinterCall::new(3, &[2.0, 0.3, 0.5, 0.0, 0.0, 0.0, 0.0, 1e-3, 0.0, 1e5]);
+    c.rdisp[0] = 1e-4;
+    c.call();
+    assert_eq!(c.pnewdt, 1e36, "uinter_ succeeded");
+    assert!(
+        (c.stress[0] - 10.0).abs() < 1e-9,
+        "p = K_n h = {}",
+        c.stress[0]
+    );
+}
+
+fn fric_coef_ok() {
+    let (mut coef, mut deriv) = ([0.0f64; 2], [0.0f64; 40]);
+    let props = [1.0, 0.3, 0.0, 0.0, 1e-3];
+    let (nb, np, nt, nf) = (1 as c_int, props.len() as c_int, 1 as c_int, 0 as c_int);
+    let idata = [1 as c_int; 6];
+    let rdata = [0.0f64; 8];
+    let slip = [0.0f64; 6];
+    let (p, t, field) = ([100.0f64], [20.0f64], [0.0f64]);
+    let name = [b' '; 80];
+    // SAFETY: arrays sized for nBlock = 1 per the FRIC_COEF contract, names of length 80.
+    unsafe {
+        fric_coef_(
+            coef.as_mut_ptr(),
+            deriv.as_mut_ptr(),
+            &nb,
+            &np,
+            &nt,
+            &nf,
+            idata.as_ptr(),
+            rdata.as_ptr(),
+            name.as_ptr().cast(),
+            name.as_ptr().cast(),
+            name.as_ptr().cast(),
+            props.as_ptr(),
+            slip.as_ptr(),
+            p.as_ptr(),
+            t.as_ptr(),
+            field.as_ptr(),
+            80,
+            80,
+            80,
+        );
+    }
+    assert_eq!(coef, [0.3, 0.3], "fric_coef_ succeeded");
+}
+
+fn forced_sliding_ok() {
+    let props = [1.0, 0.3, 0.0, 0.0, 1e-3];
+    let v = [1.0f64, 0.0];
+    let (mut tau, mut damping, mut stiffness) = ([0.0f64; 2], [0.0f64; 4], [0.0f64; 2]);
+    // SAFETY: props holds nprops reals, the outputs nfdir and nfdir² reals.
+    let st = unsafe {
+        ifl_forced_sliding(
+            props.as_ptr(),
+            props.len() as c_int,
+            2,
+            v.as_ptr(),
+            100.0,
+            20.0,
+            tau.as_mut_ptr(),
+            damping.as_mut_ptr(),
+            stiffness.as_mut_ptr(),
+        )
+    };
+    assert_eq!(st, IflStatus::Ok);
+    // Sliding along 1 at p = 100: |τ| = μp = 30.
+    assert!((tau[0].abs() - 30.0).abs() < 1e-9, "{tau:?}");
+}
+
+fn native_conductance_ok() {
+    let mut out = IflConductance::default();
+    // SAFETY: NUL-terminated name, writable out.
+    let st = unsafe { ifl_gap_conductance(c"SI1".as_ptr(), 0.0, 1.0, 300.0, 290.0, &mut out) };
+    assert_eq!((st, out.k), (IflStatus::Ok, 2.0));
+    // The length-carrying form: a blank-padded Fortran name, no NUL, bytes past the length
+    // that would name another interaction.
+    let name = b"si1     NOT-CONFIGURED";
+    let mut out = IflConductance::default();
+    // SAFETY: 8 readable bytes, writable out.
+    let st =
+        unsafe { ifl_gap_conductance_n(name.as_ptr().cast(), 8, 0.0, 1.0, 300.0, 290.0, &mut out) };
+    assert_eq!((st, out.k), (IflStatus::Ok, 2.0));
+}
+
+fn fric_batch_ok() {
+    // One point, NFDIR = 1, the stick increment of fric_ok: tau = k_s dgam = 3e4 * 1e-4 = 3.
+    let props = [1.0, 0.3, 0.0, 0.0, 1e-3];
+    let mut lm = [0 as c_int];
+    let (mut tau, mut ddtddg, mut ddtddp) = ([0.0f64], [0.0f64], [0.0f64]);
+    let (mut dslip, mut sed, mut sfd, mut statev) = ([0.0f64], [0.0f64], [0.0f64], [0.0f64; 3]);
+    let (dgam, taulm, press, dpress, chrlngth) = ([1e-4f64], [0.0f64], [100.0f64], [0.0], [1.0]);
+    let mut pnewdt = 1e36;
+    // SAFETY: every array holds one point's components, props holds nprops reals.
+    let st = unsafe {
+        ifl_fric_batch(
+            1,
+            1,
+            1,
+            props.as_ptr(),
+            props.len() as c_int,
+            3,
+            1.0,
+            lm.as_mut_ptr(),
+            tau.as_mut_ptr(),
+            ddtddg.as_mut_ptr(),
+            ddtddp.as_mut_ptr(),
+            dslip.as_mut_ptr(),
+            sed.as_mut_ptr(),
+            sfd.as_mut_ptr(),
+            statev.as_mut_ptr(),
+            dgam.as_ptr(),
+            taulm.as_ptr(),
+            press.as_ptr(),
+            dpress.as_ptr(),
+            chrlngth.as_ptr(),
+            &mut pnewdt,
+        )
+    };
+    assert_eq!((st, pnewdt), (IflStatus::Ok, 1e36));
+    assert!((tau[0] - 3.0).abs() < 1e-12, "{tau:?}");
+}
+
+fn vfric_ok() {
+    // One sliding contact point: fTangential = -min(mu F_N, F_stick) = -min(0.3 * 10, 5) = -3.
+    let props: [IflReal; 2] = [1.0, 0.3];
+    let (f_normal, f_stick, area): ([IflReal; 1], [IflReal; 1], [IflReal; 1]) =
+        ([10.0], [5.0], [1.0]);
+    let mut ftan: [IflReal; 1] = [0.0];
+    let mut statev: [IflReal; 2] = [0.0; 2];
+    let jcon = [1 as c_int];
+    let idummy = [1 as c_int; 8];
+    let dummy: [IflReal; 32] = [0.0; 32];
+    let (one, zero, two, nprops) = (1 as c_int, 0 as c_int, 2 as c_int, 2 as c_int);
+    let r0: IflReal = 0.0;
+    let name = [b' '; 80];
+    // SAFETY: every array is at least as long as the VFRIC dimensions given (one point).
+    unsafe {
+        vfric_(
+            ftan.as_mut_ptr(),
+            statev.as_mut_ptr(),
+            &one,
+            &one,
+            &one,
+            &one,
+            &one,
+            &one,
+            &one,
+            &two,
+            &one,
+            &nprops,
+            &zero,
+            &zero,
+            &one,
+            idummy.as_ptr(),
+            idummy.as_ptr(),
+            jcon.as_ptr(),
+            idummy.as_ptr(),
+            &r0,
+            &r0,
+            &r0,
+            name.as_ptr().cast(),
+            name.as_ptr().cast(),
+            name.as_ptr().cast(),
+            &one,
+            dummy.as_ptr(),
+            f_stick.as_ptr(),
+            dummy.as_ptr(),
+            f_normal.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            props.as_ptr(),
+            area.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            dummy.as_ptr(),
+            80,
+            80,
+            80,
+        );
+    }
+    assert!((ftan[0] + 3.0).abs() < 1e-6, "vfric_ succeeded: {ftan:?}");
+}
+
+#[test]
+fn a_successful_call_of_any_entry_point_keeps_the_last_error() {
+    setup();
+    let entry_points: [(&str, fn()); 8] = [
+        ("fric_", fric_ok),
+        ("gapcon_", gapcon_ok),
+        ("uinter_", uinter_ok),
+        ("fric_coef_", fric_coef_ok),
+        ("ifl_forced_sliding", forced_sliding_ok),
+        ("ifl_gap_conductance(_n)", native_conductance_ok),
+        ("ifl_fric_batch", fric_batch_ok),
+        ("vfric_", vfric_ok),
+    ];
+    for (name, ok) in entry_points {
+        let m = fail();
+        ok();
+        assert_eq!(last(), m, "{name}: a success changed the last error");
+    }
+}
+
+#[test]
+fn only_ifl_clear_error_empties_it_and_copy_agrees() {
+    setup();
+    let m = fail();
+    let mut buf = [1 as c_char; 8];
+    // SAFETY: 8 writable bytes.
+    let n = unsafe { ifl_last_error_copy(buf.as_mut_ptr(), buf.len()) };
+    assert_eq!(n, m.len(), "the full length, not the truncated one");
+    assert_eq!(buf[7], 0, "always NUL-terminated");
+    ifl_clear_error();
+    assert_eq!(last(), "");
+    // SAFETY: NULL asks for the length only.
+    assert_eq!(unsafe { ifl_last_error_copy(std::ptr::null_mut(), 0) }, 0);
+    // A failure after the clear is recorded again; a second failure replaces the first.
+    fail();
+    let mut out = IflConductance::default();
+    // SAFETY: writable out; the NULL name is the failure asked for.
+    let st = unsafe { ifl_gap_conductance_n(std::ptr::null(), 3, 0.0, 1.0, 1.0, 1.0, &mut out) };
+    assert_eq!(st, IflStatus::BadInput);
+    let m = last();
+    assert!(
+        m.contains("ifl_gap_conductance_n") && m.contains("NULL"),
+        "{m}"
+    );
+}
+
+#[test]
+fn each_thread_has_its_own_last_error() {
+    setup();
+    let m = fail();
+    std::thread::spawn(|| assert_eq!(last(), "", "a new thread starts empty"))
+        .join()
+        .unwrap();
+    assert_eq!(last(), m);
+}
