@@ -69,6 +69,35 @@ typedef struct IflConductance {
   double dq_dtheta_b;
 } IflConductance;
 
+/**
+ * The variant of the interface pore-pressure kernel, one integer flag per choice (each 0 or 1;
+ * any other value is refused with `IFL_STATUS_BAD_PARAMETER`). All zeros is the closed-contact,
+ * transient, small-sliding form in the (h, p̄, p̂, q̂) basis, the form most hosts need.
+ *
+ * Fortran: `type, bind(C) :: ifl_pore_pressure_variant; integer(c_int32_t) :: open, steady,
+ * finite_sliding, per_side; end type`, passed by value.
+ */
+typedef struct IflPorePressureVariant {
+  /**
+   * 0 = closed contact (Δh = 0, dh = 0), 1 = open contact (the gap's volume change Δh
+   * enters both sides' mass balance).
+   */
+  int32_t open;
+  /**
+   * 0 = transient (fluxes integrated over Δt, Δt > 0 required), 1 = steady state (rate form;
+   * `dt` is not read and the contact flag has no effect).
+   */
+  int32_t steady;
+  /**
+   * 0 = small sliding (geometric coefficients written as zeros), 1 = finite sliding.
+   */
+  int32_t finite_sliding;
+  /**
+   * 0 = unknowns (h, p̄, p̂, q̂), 1 = unknowns (h, p₁, p₂, q̂).
+   */
+  int32_t per_side;
+} IflPorePressureVariant;
+
 #if !defined(INTERFACIAL_EXPLICIT_SINGLE)
 /**
  * The Fortran `REAL` of the Abaqus/Explicit build `vfric_` is compiled for: `f64` for the
@@ -397,6 +426,48 @@ enum IflStatus ifl_gap_conductance(const char *interaction,
                                    double theta_a,
                                    double theta_b,
                                    struct IflConductance *out);
+
+/**
+ * The interface pore-pressure terms of one integration point (seed 000):
+ * δΠ = −[Δh δp̄ + p̄ δh + Δt (q̂ δp̂ + p̂ δq̂)] per unit area, p̄ = (p₁ + p₂)/2,
+ * p̂ = (p₁ − p₂)/2, and its linearization, in the variant `variant`.
+ *
+ * Inputs (end of increment): `p1`, `p2` pore pressures of side 1 and side 2; `q_hat` the flux
+ * variable (the fluid volume flux per unit area from side 1 to side 2 is `q_hat/2`); `h` the
+ * normal opening (positive apart; not used by any term, checked only); `dh` its increment
+ * (read with open contact in transient analysis); `dt` the time increment (transient: > 0;
+ * steady: not read). Unknowns x = (h, p̄, p̂, q̂), or (h, p₁, p₂, q̂) with `variant.per_side = 1`.
+ *
+ * Outputs (caller-owned, none may be NULL):
+ * - `residual[4]`: coefficient of δx_i in δΠ (sign included: add it to the internal virtual
+ *   work, the sign of −∫p δε_v);
+ * - `tangent[16]`: column-major 4×4 (Fortran `TANGENT(4,4)`), `tangent[i + 4*j]` =
+ *   ∂residual_i/∂x_j (for j = h with the start-of-increment opening fixed, dΔh = dh);
+ * - `geometric[4]`: coefficient of dδx_i, the change of the variation from the host's contact
+ *   geometry; all zeros in small sliding.
+ *
+ * `interaction` (NUL-terminated, may be NULL) only names the caller in error messages.
+ * Returns `IFL_STATUS_OK`; on a NaN or infinite input or `dt <= 0` in a transient analysis
+ * `IFL_STATUS_BAD_INPUT`, on a flag other than 0 or 1 `IFL_STATUS_BAD_PARAMETER`, on an
+ * overflow of finite inputs `IFL_STATUS_NUMERICAL_FAILURE`, on a NULL output
+ * `IFL_STATUS_BAD_INPUT`; on failure every non-NULL output is zeroed and the message (naming
+ * `ifl_pore_pressure`, the interaction and the cause) is in `ifl_last_error`.
+ *
+ * # Safety
+ * `interaction` is NULL or NUL-terminated; `residual` and `geometric` point to 4 writable
+ * doubles and `tangent` to 16, or are NULL.
+ */
+enum IflStatus ifl_pore_pressure(const char *interaction,
+                                 struct IflPorePressureVariant variant,
+                                 double p1,
+                                 double p2,
+                                 double q_hat,
+                                 double h,
+                                 double dh,
+                                 double dt,
+                                 double *residual,
+                                 double *tangent,
+                                 double *geometric);
 
 /**
  * Abaqus/Standard `UINTER`: the full constitutive behaviour of one interface point, callable
