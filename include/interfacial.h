@@ -74,7 +74,7 @@ typedef struct IflConductance {
  * any other value is refused with `IFL_STATUS_BAD_PARAMETER`). All zeros is the closed-contact,
  * transient, small-sliding form in the (h, p̄, p̂, q̂) basis, the form most hosts need.
  *
- * Fortran: `type, bind(C) :: ifl_pore_pressure_variant; integer(c_int32_t) :: open, steady,
+ * Fortran: `type, bind(C) :: ifl_pore_pressure_variant; integer(c_int) :: open, steady,
  * finite_sliding, per_side; end type`, passed by value.
  */
 typedef struct IflPorePressureVariant {
@@ -82,20 +82,20 @@ typedef struct IflPorePressureVariant {
    * 0 = closed contact (Δh = 0, dh = 0), 1 = open contact (the gap's volume change Δh
    * enters both sides' mass balance).
    */
-  int32_t open;
+  int open;
   /**
    * 0 = transient (fluxes integrated over Δt, Δt > 0 required), 1 = steady state (rate form;
    * `dt` is not read and the contact flag has no effect).
    */
-  int32_t steady;
+  int steady;
   /**
    * 0 = small sliding (geometric coefficients written as zeros), 1 = finite sliding.
    */
-  int32_t finite_sliding;
+  int finite_sliding;
   /**
    * 0 = unknowns (h, p̄, p̂, q̂), 1 = unknowns (h, p₁, p₂, q̂).
    */
-  int32_t per_side;
+  int per_side;
 } IflPorePressureVariant;
 
 #if !defined(INTERFACIAL_EXPLICIT_SINGLE)

@@ -2,7 +2,7 @@
 //! through the native API. No physics here: flags are decoded, pointers checked, and
 //! [`crate::laws::pore_pressure`] does the rest.
 
-use std::ffi::{CStr, c_char};
+use std::ffi::{CStr, c_char, c_int};
 
 use super::native::IflStatus;
 use super::{boundary, write_array, write_matrix};
@@ -16,24 +16,24 @@ use crate::report::Site;
 /// any other value is refused with `IFL_STATUS_BAD_PARAMETER`). All zeros is the closed-contact,
 /// transient, small-sliding form in the (h, p̄, p̂, q̂) basis, the form most hosts need.
 ///
-/// Fortran: `type, bind(C) :: ifl_pore_pressure_variant; integer(c_int32_t) :: open, steady,
+/// Fortran: `type, bind(C) :: ifl_pore_pressure_variant; integer(c_int) :: open, steady,
 /// finite_sliding, per_side; end type`, passed by value.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct IflPorePressureVariant {
     /// 0 = closed contact (Δh = 0, dh = 0), 1 = open contact (the gap's volume change Δh
     /// enters both sides' mass balance).
-    pub open: i32,
+    pub open: c_int,
     /// 0 = transient (fluxes integrated over Δt, Δt > 0 required), 1 = steady state (rate form;
     /// `dt` is not read and the contact flag has no effect).
-    pub steady: i32,
+    pub steady: c_int,
     /// 0 = small sliding (geometric coefficients written as zeros), 1 = finite sliding.
-    pub finite_sliding: i32,
+    pub finite_sliding: c_int,
     /// 0 = unknowns (h, p̄, p̂, q̂), 1 = unknowns (h, p₁, p₂, q̂).
-    pub per_side: i32,
+    pub per_side: c_int,
 }
 
-fn flag(name: &str, v: i32) -> Result<bool, LawError> {
+fn flag(name: &str, v: c_int) -> Result<bool, LawError> {
     match v {
         0 => Ok(false),
         1 => Ok(true),
