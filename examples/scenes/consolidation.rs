@@ -69,14 +69,12 @@ pub struct Study {
     pub refine_sweep_dt: f64,
     /// Runs per point (the median wall time is kept).
     pub repeats: usize,
-    /// Observed order in Δt between the two largest steps must lie in this range.
+    /// Observed order in Δt between the two smallest steps must lie in this range.
     pub dt_order: [f64; 2],
     /// Observed order in the element size between the two coarsest meshes must lie here.
     pub mesh_order: [f64; 2],
     /// c₁·Δt/Δz₁² of the stability sweep (one step on the file's mesh).
     pub stability_ratios: Vec<f64>,
-    /// The smallest oscillation-free ratio must lie in this range.
-    pub monotone_ratio: [f64; 2],
 }
 
 /// Parses and checks a P1 file.
@@ -88,10 +86,11 @@ pub fn parse(text: &str, origin: &str) -> Result<P1File, String> {
     }
     if let Some(s) = &f.study {
         if s.repeats == 0 || s.dt_sweep_refine == 0 || s.refines.contains(&0) {
-            return Err(format!("{origin}: study: repeats and refinements must be ≥ 1"));
+            return Err(format!(
+                "{origin}: study: repeats and refinements must be ≥ 1"
+            ));
         }
-        if s.dts.iter().chain(&s.quick_dts).any(|d| !(*d > 0.0)) || !(s.refine_sweep_dt > 0.0)
-        {
+        if s.dts.iter().chain(&s.quick_dts).any(|d| !(*d > 0.0)) || !(s.refine_sweep_dt > 0.0) {
             return Err(format!("{origin}: study: every Δt must be > 0"));
         }
     }
@@ -175,12 +174,26 @@ pub fn run(f: &P1File, quick: bool, out: &Path) -> Result<Outcome, String> {
         let resistance = l1.thickness / l1.permeability + l2.thickness / l2.permeability;
         let q = (s.p_top - s.p_base) / resistance;
         let scale = q.abs().max(f64::MIN_POSITIVE);
-        row(&mut rows, "steady seepage".into(), "flux q̂/2 across the interface", q, st.interface_flux(), 1e-12 * scale);
+        row(
+            &mut rows,
+            "steady seepage".into(),
+            "flux q̂/2 across the interface",
+            q,
+            st.interface_flux(),
+            1e-12 * scale,
+        );
         let worst = st
             .element_fluxes()
             .into_iter()
             .fold(q, |w, v| if (v - q).abs() > (w - q).abs() { v } else { w });
-        row(&mut rows, "steady seepage".into(), "worst element flux -k dp/dz", q, worst, 1e-12 * scale);
+        row(
+            &mut rows,
+            "steady seepage".into(),
+            "worst element flux -k dp/dz",
+            q,
+            worst,
+            1e-12 * scale,
+        );
         let p_interface = s.p_top - q * l1.thickness / l1.permeability;
         let dp = (s.p_top - s.p_base).abs().max(f64::MIN_POSITIVE);
         let (mut worst_p, mut worst_exact) = (p_interface, p_interface);
@@ -195,12 +208,40 @@ pub fn run(f: &P1File, quick: bool, out: &Path) -> Result<Outcome, String> {
                 worst_exact = exact;
             }
         }
-        row(&mut rows, "steady seepage".into(), "worst nodal pressure (linear per layer)", worst_exact, worst_p, 1e-12 * dp);
+        row(
+            &mut rows,
+            "steady seepage".into(),
+            "worst nodal pressure (linear per layer)",
+            worst_exact,
+            worst_p,
+            1e-12 * dp,
+        );
         if let Some((p1, p2, _)) = st.mesh.interface_state(&st.x) {
-            row(&mut rows, "steady seepage".into(), "p1 at the interface", p_interface, p1, 1e-12 * dp);
-            row(&mut rows, "steady seepage".into(), "p2 at the interface", p_interface, p2, 1e-12 * dp);
+            row(
+                &mut rows,
+                "steady seepage".into(),
+                "p1 at the interface",
+                p_interface,
+                p1,
+                1e-12 * dp,
+            );
+            row(
+                &mut rows,
+                "steady seepage".into(),
+                "p2 at the interface",
+                p_interface,
+                p2,
+                1e-12 * dp,
+            );
         }
-        row(&mut rows, "steady seepage".into(), "Newton: |R| after / before", 0.0, st.newton_reduction, 1e-12);
+        row(
+            &mut rows,
+            "steady seepage".into(),
+            "Newton: |R| after / before",
+            0.0,
+            st.newton_reduction,
+            1e-12,
+        );
     }
 
     // The series itself against Terzaghi's single layer: both layers alike (same k and M).
@@ -217,7 +258,11 @@ pub fn run(f: &P1File, quick: bool, out: &Path) -> Result<Outcome, String> {
         let cv = same.layers[0].cv();
         let t = 0.1 * d * d / cv;
         let series = Series::new(&same, t)?;
-        let zz = if same.top == crate::column::Drainage::Undrained { h - z } else { z };
+        let zz = if same.top == crate::column::Drainage::Undrained {
+            h - z
+        } else {
+            z
+        };
         row(
             &mut rows,
             "series, both layers alike".into(),
@@ -231,15 +276,29 @@ pub fn run(f: &P1File, quick: bool, out: &Path) -> Result<Outcome, String> {
     // Transient step load at the file's Δt and mesh, with and without the interface.
     let t_min = c.times.iter().copied().fold(c.end, f64::min);
     let series = Series::new(c, t_min)?;
-    let with = consolidate(c, Join::Interface, 1, c.dt)?;
-    let without = consolidate(c, Join::Shared, 1, c.dt)?;
+    let with = consolidate(c, Join::Interface, 1, c.dt, true)?;
+    let without = consolidate(c, Join::Shared, 1, c.dt, false)?;
     let (eu, e_degree) = errors(f, &series, &with.u, &with.degree);
     let case = format!(
         "step load, Δt {:e}, {}+{} elements",
         c.dt, c.layers[0].elements, c.layers[1].elements
     );
-    row(&mut rows, case.clone(), "max |u - u_series| / q0", 0.0, eu, f.tolerance);
-    row(&mut rows, case.clone(), "max |U - U_series|", 0.0, e_degree, f.tolerance);
+    row(
+        &mut rows,
+        case.clone(),
+        "max |u - u_series| / q0",
+        0.0,
+        eu,
+        f.tolerance,
+    );
+    row(
+        &mut rows,
+        case.clone(),
+        "max |U - U_series|",
+        0.0,
+        e_degree,
+        f.tolerance,
+    );
     let mut du = 0.0f64;
     for (a, b) in with.u.iter().zip(&without.u) {
         for (x, y) in a.iter().zip(b) {
@@ -252,10 +311,38 @@ pub fn run(f: &P1File, quick: bool, out: &Path) -> Result<Outcome, String> {
         .zip(&without.degree)
         .map(|(a, b)| (a - b).abs())
         .fold(0.0, f64::max);
-    row(&mut rows, case.clone(), "max |u - u_no_interface| / q0", 0.0, du, 1e-10);
-    row(&mut rows, case.clone(), "max |U - U_no_interface|", 0.0, d_degree, 1e-10);
-    row(&mut rows, case.clone(), "max |p1 - p2| / q0 at the interface", 0.0, with.jump / c.load, 1e-12);
-    row(&mut rows, case.clone(), "Newton: |R| after / before", 0.0, with.newton_reduction, 1e-10);
+    row(
+        &mut rows,
+        case.clone(),
+        "max |u - u_no_interface| / q0",
+        0.0,
+        du,
+        1e-10,
+    );
+    row(
+        &mut rows,
+        case.clone(),
+        "max |U - U_no_interface|",
+        0.0,
+        d_degree,
+        1e-10,
+    );
+    row(
+        &mut rows,
+        case.clone(),
+        "max |p1 - p2| / q0 at the interface",
+        0.0,
+        with.jump / c.load,
+        1e-12,
+    );
+    row(
+        &mut rows,
+        case.clone(),
+        "Newton: |R| after / before",
+        0.0,
+        with.newton_reduction,
+        1e-10,
+    );
 
     // u(z, t) and U(t).
     let mut u_csv = String::from("time,depth,u,u_series,u_no_interface\n");
@@ -303,6 +390,10 @@ pub fn run(f: &P1File, quick: bool, out: &Path) -> Result<Outcome, String> {
     })
 }
 
+/// p beyond [0, q₀] by more than this fraction of q₀ is a spatial oscillation (round-off stays
+/// below 1e-15).
+const OSCILLATION: f64 = 1e-12;
+
 /// Observed order log(e_a/e_b)/log(s_a/s_b).
 fn order(a: &Point, b: &Point) -> f64 {
     (a.error / b.error).ln() / (a.step / b.step).ln()
@@ -321,7 +412,7 @@ fn study(
     let id = &f.id;
     let mut failures = 0;
     let point = |method: String, step: f64, join: Join, refine: usize, dt: f64| {
-        let (wall, h) = timed(s.repeats, || consolidate(c, join, refine, dt));
+        let (wall, h) = timed(s.repeats, || consolidate(c, join, refine, dt, false));
         let h = h?;
         let (eu, e_degree) = errors(f, series, &h.u, &h.degree);
         Ok::<Point, String>(Point {
@@ -333,7 +424,7 @@ fn study(
             details: vec![eu, e_degree],
             calls: h.kernel_calls,
             wall,
-            verdict: if h.overshoot > 1e-12 || h.undershoot > 1e-12 {
+            verdict: if h.overshoot.iter().any(|o| *o > OSCILLATION) || h.undershoot > OSCILLATION {
                 "oscillating"
             } else {
                 "ok"
@@ -350,7 +441,11 @@ fn study(
             let label = format!(
                 "Δt sweep, {} elements, {}",
                 elements(s.dt_sweep_refine),
-                if join == Join::Interface { "interface kernel" } else { "no interface" }
+                if join == Join::Interface {
+                    "interface kernel"
+                } else {
+                    "no interface"
+                }
             );
             dt_points.push(point(label, dt, join, s.dt_sweep_refine, dt)?);
         }
@@ -361,19 +456,37 @@ fn study(
             let label = format!(
                 "element sweep, Δt {:e}, {}",
                 s.refine_sweep_dt,
-                if join == Join::Interface { "interface kernel" } else { "no interface" }
+                if join == Join::Interface {
+                    "interface kernel"
+                } else {
+                    "no interface"
+                }
             );
-            mesh_points.push(point(label, elements(r) as f64, join, r, s.refine_sweep_dt)?);
+            mesh_points.push(point(
+                label,
+                elements(r) as f64,
+                join,
+                r,
+                s.refine_sweep_dt,
+            )?);
         }
     }
     // Observed orders from the interface-kernel runs: the two largest Δt, the two coarsest meshes.
     let kernel_only = |p: &&Point| p.method.ends_with("interface kernel");
     let mut by_dt: Vec<&Point> = dt_points.iter().filter(kernel_only).collect();
-    by_dt.sort_by(|a, b| b.step.total_cmp(&a.step));
+    // The two smallest Δt: the largest ones step over the earliest output time.
+    by_dt.sort_by(|a, b| a.step.total_cmp(&b.step));
     if by_dt.len() >= 2 {
         let o = order(by_dt[0], by_dt[1]);
         let mid = 0.5 * (s.dt_order[0] + s.dt_order[1]);
-        row(rows, format!("Δt {:e} → {:e}", by_dt[0].step, by_dt[1].step), "observed order in Δt (backward Euler: 1)", mid, o, 0.5 * (s.dt_order[1] - s.dt_order[0]));
+        row(
+            rows,
+            format!("Δt {:e} → {:e}", by_dt[0].step, by_dt[1].step),
+            "observed order in Δt (backward Euler: 1)",
+            mid,
+            o,
+            0.5 * (s.dt_order[1] - s.dt_order[0]),
+        );
     }
     let mut by_mesh: Vec<&Point> = mesh_points.iter().filter(kernel_only).collect();
     by_mesh.sort_by(|a, b| a.step.total_cmp(&b.step));
@@ -381,7 +494,14 @@ fn study(
         // Error against the element size Δz ∝ 1/elements.
         let o = -order(by_mesh[0], by_mesh[1]);
         let mid = 0.5 * (s.mesh_order[0] + s.mesh_order[1]);
-        row(rows, format!("{} → {} elements", by_mesh[0].step, by_mesh[1].step), "observed order in Δz (linear elements: 2)", mid, o, 0.5 * (s.mesh_order[1] - s.mesh_order[0]));
+        row(
+            rows,
+            format!("{} → {} elements", by_mesh[0].step, by_mesh[1].step),
+            "observed order in Δz (linear elements: 2)",
+            mid,
+            o,
+            0.5 * (s.mesh_order[1] - s.mesh_order[0]),
+        );
     }
     // Interface and shared meshes agree point by point.
     let worst = dt_points
@@ -389,50 +509,113 @@ fn study(
         .chain(mesh_points.chunks(2))
         .map(|pair| (pair[0].details[0] - pair[1].details[0]).abs())
         .fold(0.0, f64::max);
-    row(rows, "every study point".into(), "|error with - without interface|", 0.0, worst, 1e-9);
+    row(
+        rows,
+        "every study point".into(),
+        "|error with - without interface|",
+        0.0,
+        worst,
+        1e-9,
+    );
 
-    // Stability of the time stepping: one step on the file's mesh at c₁Δt/Δz₁² = ratio.
-    let dz = c.layers[0].thickness / c.layers[0].elements as f64;
-    let c1 = c.layers[0].cv();
-    let mut stab = String::from("ratio,dt,overshoot,undershoot,monotone\n");
-    let mut first_monotone = f64::NAN;
+    // Where the time stepping stops giving a monotone pressure: one backward-Euler step after the
+    // step load on the file's mesh. On a uniform mesh of linear u–p elements (incompressible
+    // constituents) the equilibrium rows give M·ε_e + p̄_e = q₀ per element, and the mass balance
+    // of an interior node becomes, with u = q₀ − p and α = Δz²/(4·c·Δt),
+    //   (α − 1)(u_{i−1} + u_{i+1}) + 2(α + 1)·u_i = 0,
+    // whose solutions λ^i have λ + 1/λ = −2(α + 1)/(α − 1): λ < 0 (a node-to-node oscillation,
+    // p > q₀ next to the drained face) when α > 1, i.e. c·Δt/Δz² < 1/4. Backward Euler itself
+    // never diverges; it is the spatial oscillation that a too small step exposes, in each layer
+    // at its own ratio ρ_i = c_i·Δt/Δz_i².
+    let dz = [0, 1].map(|i| c.layers[i].thickness / c.layers[i].elements as f64);
+    let cv = [0, 1].map(|i| c.layers[i].cv());
+    let mut stab = String::from(
+        "ratio_layer_1,ratio_layer_2,dt,overshoot_layer_1,overshoot_layer_2,undershoot\n",
+    );
     let mut ratios = s.stability_ratios.clone();
     ratios.sort_by(f64::total_cmp);
-    let mut last_bad = f64::NAN;
+    let mut sweep = Vec::new();
     for &ratio in &ratios {
-        let dt = ratio * dz * dz / c1;
+        let dt = ratio * dz[0] * dz[0] / cv[0];
         let mut one = c.clone();
         one.end = dt;
         one.times = vec![dt];
         one.dt = dt;
-        let h = consolidate(&one, Join::Interface, 1, dt)?;
-        let monotone = h.overshoot <= 1e-12 && h.undershoot <= 1e-12;
-        let _ = writeln!(stab, "{ratio:e},{dt:e},{:e},{:e},{monotone}", h.overshoot, h.undershoot);
-        if monotone && first_monotone.is_nan() {
-            first_monotone = ratio;
-        }
-        if !monotone {
-            last_bad = ratio;
-            first_monotone = f64::NAN;
-        }
+        let h = consolidate(&one, Join::Interface, 1, dt, false)?;
+        let rho = [0, 1].map(|i| cv[i] * dt / (dz[i] * dz[i]));
+        let _ = writeln!(
+            stab,
+            "{:e},{:e},{dt:e},{:e},{:e},{:e}",
+            rho[0], rho[1], h.overshoot[0], h.overshoot[1], h.undershoot
+        );
+        sweep.push((rho, h.overshoot));
     }
-    println!(
-        "P1 stability: pressure monotone after the first step for c1·Δt/Δz1² ≥ {first_monotone:.3} (largest oscillating ratio {last_bad:.3})"
-    );
-    let mid = 0.5 * (s.monotone_ratio[0] + s.monotone_ratio[1]);
-    row(rows, "first step, file mesh".into(), "smallest monotone c1·Δt/Δz1²", mid, first_monotone, 0.5 * (s.monotone_ratio[1] - s.monotone_ratio[0]));
+    for layer in 0..2 {
+        // The last oscillating ratio and the first monotone one above it bracket the boundary.
+        let last_bad = sweep
+            .iter()
+            .filter(|(_, o)| o[layer] > OSCILLATION)
+            .map(|(r, _)| r[layer])
+            .fold(f64::NAN, f64::max);
+        let first_good = sweep
+            .iter()
+            .filter(|(r, o)| o[layer] <= OSCILLATION && !(r[layer] <= last_bad))
+            .map(|(r, _)| r[layer])
+            .fold(f64::NAN, f64::min);
+        println!(
+            "P1 stability, layer {}: first step oscillates at c·Δt/Δz² = {last_bad:.3}, monotone from {first_good:.3} (closed form 1/4)",
+            layer + 1
+        );
+        row(
+            rows,
+            format!(
+                "first step, layer {}, bracket {last_bad:.3}..{first_good:.3}",
+                layer + 1
+            ),
+            "monotone from c·Δt/Δz² = 1/4",
+            0.25,
+            first_good,
+            first_good - last_bad,
+        );
+    }
     let path = out.join(format!("{id}-stability.csv"));
     std::fs::write(&path, stab).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     outputs.push(path);
 
     // CSV and charts.
     let all: Vec<Point> = dt_points.iter().chain(&mesh_points).cloned().collect();
-    let mut csv = String::from("sweep,method,dt,elements,error,u_error,U_error,kernel_calls,wall_s_median,verdict\n");
+    let mut csv = String::from(
+        "sweep,method,dt,elements,error,u_error,U_error,kernel_calls,wall_s_median,verdict\n",
+    );
     for p in &dt_points {
-        let _ = writeln!(csv, "dt,\"{}\",{:e},{},{:e},{:e},{:e},{},{:e},{}", p.method, p.step, elements(s.dt_sweep_refine), p.error, p.details[0], p.details[1], p.calls, p.wall, p.verdict);
+        let _ = writeln!(
+            csv,
+            "dt,\"{}\",{:e},{},{:e},{:e},{:e},{},{:e},{}",
+            p.method,
+            p.step,
+            elements(s.dt_sweep_refine),
+            p.error,
+            p.details[0],
+            p.details[1],
+            p.calls,
+            p.wall,
+            p.verdict
+        );
     }
     for p in &mesh_points {
-        let _ = writeln!(csv, "elements,\"{}\",{:e},{},{:e},{:e},{:e},{},{:e},{}", p.method, s.refine_sweep_dt, p.step, p.error, p.details[0], p.details[1], p.calls, p.wall, p.verdict);
+        let _ = writeln!(
+            csv,
+            "elements,\"{}\",{:e},{},{:e},{:e},{:e},{},{:e},{}",
+            p.method,
+            s.refine_sweep_dt,
+            p.step,
+            p.error,
+            p.details[0],
+            p.details[1],
+            p.calls,
+            p.wall,
+            p.verdict
+        );
     }
     let path = out.join(format!("{id}-work-precision.csv"));
     std::fs::write(&path, csv).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
@@ -440,8 +623,18 @@ fn study(
     let label = "max(|u − u_series|/q₀, |U − U_series|)";
     let charts: [(&str, &str, &[Point], &dyn Fn(&Point) -> f64); 3] = [
         ("error-vs-dt", "time increment Δt", &dt_points, &|p| p.step),
-        ("error-vs-elements", "elements in the column", &mesh_points, &|p| p.step),
-        ("error-vs-time", "wall time per run, median (s)", &all, &|p| p.wall),
+        (
+            "error-vs-elements",
+            "elements in the column",
+            &mesh_points,
+            &|p| p.step,
+        ),
+        (
+            "error-vs-time",
+            "wall time per run, median (s)",
+            &all,
+            &|p| p.wall,
+        ),
     ];
     for (name, x_label, points, cost) in charts {
         let svg = out.join(format!("{id}-{name}.svg"));
@@ -459,13 +652,37 @@ fn study(
         }
         outputs.push(svg);
     }
-    println!("\nP1 work-precision (median wall time of {} runs)\n", s.repeats);
-    println!("{:<52} {:>10} {:>9} {:>10} {:>10} {:>10}  verdict", "method", "Δt", "elements", "error", "calls", "run (ms)");
+    println!(
+        "\nP1 work-precision (median wall time of {} runs)\n",
+        s.repeats
+    );
+    println!(
+        "{:<52} {:>10} {:>9} {:>10} {:>10} {:>10}  verdict",
+        "method", "Δt", "elements", "error", "calls", "run (ms)"
+    );
     for p in &dt_points {
-        println!("{:<52} {:>10.3e} {:>9} {:>10.2e} {:>10} {:>10.3}  {}", p.method, p.step, elements(s.dt_sweep_refine), p.error, p.calls, p.wall * 1e3, p.verdict);
+        println!(
+            "{:<52} {:>10.3e} {:>9} {:>10.2e} {:>10} {:>10.3}  {}",
+            p.method,
+            p.step,
+            elements(s.dt_sweep_refine),
+            p.error,
+            p.calls,
+            p.wall * 1e3,
+            p.verdict
+        );
     }
     for p in &mesh_points {
-        println!("{:<52} {:>10.3e} {:>9} {:>10.2e} {:>10} {:>10.3}  {}", p.method, s.refine_sweep_dt, p.step, p.error, p.calls, p.wall * 1e3, p.verdict);
+        println!(
+            "{:<52} {:>10.3e} {:>9} {:>10.2e} {:>10} {:>10.3}  {}",
+            p.method,
+            s.refine_sweep_dt,
+            p.step,
+            p.error,
+            p.calls,
+            p.wall * 1e3,
+            p.verdict
+        );
     }
     Ok(failures)
 }
@@ -508,7 +725,11 @@ pub fn alone(p1: &Result<Outcome, String>) -> i32 {
 
 /// The built-in P1 run joined to the main job: its rows join the checks, its files the list;
 /// returns the failures outside the rows.
-pub fn join(p1: Option<Result<Outcome, String>>, rows: &mut Vec<Row>, outputs: &mut Vec<PathBuf>) -> usize {
+pub fn join(
+    p1: Option<Result<Outcome, String>>,
+    rows: &mut Vec<Row>,
+    outputs: &mut Vec<PathBuf>,
+) -> usize {
     match p1 {
         Some(Ok(o)) => {
             rows.extend(o.rows);
