@@ -27,7 +27,7 @@ program test_pore_pressure
     end function ifl_pore_pressure
   end interface
 
-  integer, parameter :: ne = 4, np = 2*(ne + 1), n = np + 1, qhat = np
+  integer, parameter :: ne = 4, np = 2*(ne + 1), n = np + 1, qhat = n
   real(dp), parameter :: l1 = 1.0_dp, l2 = 2.0_dp, k1 = 1.0e-3_dp, k2 = 1.0e-4_dp, p_base = 0.0_dp
   real(dp) :: x(n), r(n), k(n, n), p_top, q, p_i, worst, res(4), tng(4, 4), geo(4)
   integer :: step, layer, node, status
