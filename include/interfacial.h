@@ -36,7 +36,7 @@ typedef enum IflStatus {
   /**
    * A bug in the library (a caught panic).
    */
-  IFL_STATUS_INTERNAL_ERROR = 4
+  IFL_STATUS_INTERNAL_ERROR = 4,
 } IflStatus;
 
 /**
@@ -69,6 +69,35 @@ typedef struct IflConductance {
   double dq_dtheta_b;
 } IflConductance;
 
+/**
+ * The variant of the interface pore-pressure kernel, one integer flag per choice (each 0 or 1;
+ * any other value is refused with `IFL_STATUS_BAD_PARAMETER`). All zeros is the closed-contact,
+ * transient, small-sliding form in the (h, p̄, p̂, q̂) basis, the form most hosts need.
+ *
+ * Fortran: `type, bind(C) :: ifl_pore_pressure_variant; integer(c_int) :: open, steady,
+ * finite_sliding, per_side; end type`, passed by value.
+ */
+typedef struct IflPorePressureVariant {
+  /**
+   * 0 = closed contact (Δh = 0, dh = 0), 1 = open contact (the gap's volume change Δh
+   * enters both sides' mass balance).
+   */
+  int open;
+  /**
+   * 0 = transient (fluxes integrated over Δt, Δt > 0 required), 1 = steady state (rate form;
+   * `dt` is not read and the contact flag has no effect).
+   */
+  int steady;
+  /**
+   * 0 = small sliding (geometric coefficients written as zeros), 1 = finite sliding.
+   */
+  int finite_sliding;
+  /**
+   * 0 = unknowns (h, p̄, p̂, q̂), 1 = unknowns (h, p₁, p₂, q̂).
+   */
+  int per_side;
+} IflPorePressureVariant;
+
 #if !defined(INTERFACIAL_EXPLICIT_SINGLE)
 /**
  * The Fortran `REAL` of the Abaqus/Explicit build `vfric_` is compiled for: `f64` for the
@@ -88,7 +117,7 @@ typedef float IflReal;
 
 #ifdef __cplusplus
 extern "C" {
-#endif /* __cplusplus */
+#endif // __cplusplus
 
 /**
  * Many independent `fric_` points in one call (structure of arrays, leading dimension `ld`).
@@ -299,10 +328,6 @@ void fric_coef_(double *fcoef,
  * `AK(1) = 0` and one message per distinct cause (stderr or `$INTERFACIAL_LOG`;
  * `ifl_last_error` on the calling thread).
  *
- * Called with CalculiX's argument list (`AREA` after `KINC`, so an address arrives as the
- * hidden length of `CINAME`: any value above 65535), it refuses: `AK(1) = 0`, nothing else
- * written, and a message that names the CalculiX variant, `libinterfacial_calculix`.
- *
  * # Safety
  * Pointers valid for the GAPCON signature: `AK(5)`, `D(2)`, `TEMP(2)`, `CINAME` of the hidden
  * length `ciname_len`. The unread arguments may be anything.
@@ -359,18 +384,14 @@ void gapcon_(double *ak,
 #endif
 
 /**
- * The library version as a NUL-terminated string: `"0.1.0"` for the default build,
- * `"0.1.0+calculix"` for the CalculiX variant (`gapcon_` with `AREA`), so a host can tell
- * which one it loaded. Static storage: never free it.
+ * The library version as a NUL-terminated string, e.g. `"0.1.0"`. Static storage: never free it.
  */
 const char *ifl_version(void);
 
 /**
  * The last error message reported on the calling thread, NUL-terminated; `""` when there has
- * been none since the last `ifl_clear_error`. A successful call does not clear it (like
- * `errno`): only the next failure on this thread replaces it, only `ifl_clear_error` empties
- * it. The pointer stays valid until the next call into the library on the same thread; copy
- * the text if you need it longer. Never free it.
+ * been none since the last `ifl_clear_error`. The pointer stays valid until the next call into
+ * the library on the same thread; copy the text if you need it longer. Never free it.
  */
 const char *ifl_last_error(void);
 
@@ -386,8 +407,7 @@ const char *ifl_last_error(void);
 size_t ifl_last_error_copy(char *buf, size_t len);
 
 /**
- * Forgets the calling thread's last error message (successful calls keep it, so clear before
- * a call whose own failure you want to read).
+ * Forgets the calling thread's last error message.
  */
 void ifl_clear_error(void);
 
@@ -396,7 +416,6 @@ void ifl_clear_error(void);
  * the `INTERFACIAL_CONFIG` file, evaluated at clearance `d`, contact pressure `p` and surface
  * temperatures `theta_a`, `theta_b`. On success writes `*out` and returns `IFL_STATUS_OK`; on
  * failure writes `*out` as all zeros (when `out` is not NULL), reports, and returns the cause.
- * [`ifl_gap_conductance_n`] takes the name with its length instead (no NUL needed).
  *
  * # Safety
  * `interaction` is NULL or a NUL-terminated string; `out` is NULL or writable.
@@ -409,22 +428,46 @@ enum IflStatus ifl_gap_conductance(const char *interaction,
                                    struct IflConductance *out);
 
 /**
- * [`ifl_gap_conductance`] with the name given as `interaction_len` bytes at `interaction`, as
- * Fortran passes a `CHARACTER` (blank-padded, no NUL): nothing past `interaction_len` is read,
- * trailing blanks and NULs are ignored. For Fortran, the `interfacial` module's
- * `ifl_gap_conductance(name, ...)` calls it with `len(name)`.
+ * The interface pore-pressure terms of one integration point (seed 000):
+ * δΠ = −[Δh δp̄ + p̄ δh + Δt (q̂ δp̂ + p̂ δq̂)] per unit area, p̄ = (p₁ + p₂)/2,
+ * p̂ = (p₁ − p₂)/2, and its linearization, in the variant `variant`.
+ *
+ * Inputs (end of increment): `p1`, `p2` pore pressures of side 1 and side 2; `q_hat` the flux
+ * variable (the fluid volume flux per unit area from side 1 to side 2 is `q_hat/2`); `h` the
+ * normal opening (positive apart; not used by any term, checked only); `dh` its increment
+ * (read with open contact in transient analysis); `dt` the time increment (transient: > 0;
+ * steady: not read). Unknowns x = (h, p̄, p̂, q̂), or (h, p₁, p₂, q̂) with `variant.per_side = 1`.
+ *
+ * Outputs (caller-owned, none may be NULL):
+ * - `residual[4]`: coefficient of δx_i in δΠ (sign included: add it to the internal virtual
+ *   work, the sign of −∫p δε_v);
+ * - `tangent[16]`: column-major 4×4 (Fortran `TANGENT(4,4)`), `tangent[i + 4*j]` =
+ *   ∂residual_i/∂x_j (for j = h with the start-of-increment opening fixed, dΔh = dh);
+ * - `geometric[4]`: coefficient of dδx_i, the change of the variation from the host's contact
+ *   geometry; all zeros in small sliding.
+ *
+ * `interaction` (NUL-terminated, may be NULL) only names the caller in error messages.
+ * Returns `IFL_STATUS_OK`; on a NaN or infinite input or `dt <= 0` in a transient analysis
+ * `IFL_STATUS_BAD_INPUT`, on a flag other than 0 or 1 `IFL_STATUS_BAD_PARAMETER`, on an
+ * overflow of finite inputs `IFL_STATUS_NUMERICAL_FAILURE`, on a NULL output
+ * `IFL_STATUS_BAD_INPUT`; on failure every non-NULL output is zeroed and the message (naming
+ * `ifl_pore_pressure`, the interaction and the cause) is in `ifl_last_error`.
  *
  * # Safety
- * `interaction` is NULL or points to `interaction_len` readable bytes (any pointer when
- * `interaction_len` is 0); `out` is NULL or writable.
+ * `interaction` is NULL or NUL-terminated; `residual` and `geometric` point to 4 writable
+ * doubles and `tangent` to 16, or are NULL.
  */
-enum IflStatus ifl_gap_conductance_n(const char *interaction,
-                                     size_t interaction_len,
-                                     double d,
-                                     double p,
-                                     double theta_a,
-                                     double theta_b,
-                                     struct IflConductance *out);
+enum IflStatus ifl_pore_pressure(const char *interaction,
+                                 struct IflPorePressureVariant variant,
+                                 double p1,
+                                 double p2,
+                                 double q_hat,
+                                 double h,
+                                 double dh,
+                                 double dt,
+                                 double *residual,
+                                 double *tangent,
+                                 double *geometric);
 
 /**
  * Abaqus/Standard `UINTER`: the full constitutive behaviour of one interface point, callable
@@ -584,7 +627,7 @@ void vfric_(IflReal *f_tangential,
             size_t surf_mst_len);
 
 #ifdef __cplusplus
-}  /* extern "C" */
-#endif /* __cplusplus */
+}  // extern "C"
+#endif  // __cplusplus
 
 #endif  /* INTERFACIAL_H */

@@ -24,6 +24,8 @@
 mod charts;
 mod checks;
 mod circle;
+mod column;
+mod consolidation;
 mod oscillator;
 mod pull;
 mod rate_map;
@@ -233,6 +235,11 @@ fn main() {
         eprintln!("scenes: cannot create {}: {e}", opts.out.display());
         std::process::exit(2);
     }
+    // Scene P1 (consolidation column): a --point file with a [column] table runs alone.
+    let p1 = consolidation::hook(opts.point.as_deref(), opts.quick, &opts.out);
+    if let (Some(_), Some(p1)) = (&opts.point, &p1) {
+        std::process::exit(consolidation::alone(p1));
+    }
     let sources: Vec<(String, String)> = match &opts.point {
         Some(path) => match std::fs::read_to_string(path) {
             Ok(text) => vec![(path.display().to_string(), text)],
@@ -307,6 +314,7 @@ fn main() {
     let mut maps: Vec<(usize, Map)> = Vec::new();
     let mut rate_maps: Vec<rate_map::RateMap> = Vec::new();
     let mut outputs = Vec::new();
+    failures += consolidation::join(p1, &mut check_rows, &mut outputs);
     for scene in &scenes {
         let points = sweep(scene, opts.quick, |w| progress.tick(w));
         let id = &scene.file.id;

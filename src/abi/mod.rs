@@ -18,6 +18,7 @@ pub mod fric_coef;
 pub mod gapcon;
 pub mod host;
 pub mod native;
+pub mod pore_pressure;
 pub mod uinter;
 pub mod uinter_host;
 pub mod vfric;
@@ -31,6 +32,7 @@ pub use native::{
     IflConductance, IflStatus, ifl_clear_error, ifl_gap_conductance, ifl_gap_conductance_n,
     ifl_last_error, ifl_last_error_copy, ifl_version,
 };
+pub use pore_pressure::{IflPorePressureVariant, ifl_pore_pressure};
 pub use uinter::uinter_;
 pub use vfric::vfric_;
 

@@ -1,0 +1,748 @@
+//! Scene P1 in the main job: the two-layer column of `column.rs` joined by the interface
+//! pore-pressure kernel. Closed-form check rows (steady seepage to round-off, the transient
+//! column against the series solution and against the column meshed without an interface), a
+//! work-precision study over Δt and the element count (wall-time medians of repeated runs), and
+//! where the time stepping stops giving a monotone pressure (spatial oscillation of equal-order
+//! u–p elements for small c·Δt/Δz²).
+//!
+//! Writes `<out>/<id>-u.csv` (columns `time,depth,u,u_series,u_no_interface`: excess pore
+//! pressure at the file's depths and times), `<out>/<id>-U.csv` (`time,U,U_series,
+//! U_no_interface`: degree of consolidation by settlement), `<out>/<id>-work-precision.csv`,
+//! `<out>/<id>-stability.csv` and three SVG charts; the rows join the main job's checks.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use serde::Deserialize;
+
+use crate::checks::Row;
+use crate::column::{Column, Join, Series, consolidate, steady, terzaghi};
+use crate::scene::Point;
+
+/// The built-in P1 file.
+pub const BUILT_IN: (&str, &str) = ("data/p1.toml", include_str!("data/p1.toml"));
+
+/// A P1 scene file.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct P1File {
+    /// Short id (file names).
+    pub id: String,
+    /// Title for charts.
+    pub title: String,
+    /// The column.
+    pub column: Column,
+    /// Allowed max(|u − u_series|/q₀, |U − U_series|) at the file's Δt and mesh.
+    pub tolerance: f64,
+    /// Steady seepage with p held at top and base (optional).
+    pub steady: Option<SteadySpec>,
+    /// Work-precision and stability study (optional).
+    pub study: Option<Study>,
+}
+
+/// `[steady]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SteadySpec {
+    /// p at the top.
+    pub p_top: f64,
+    /// p at the base.
+    pub p_base: f64,
+}
+
+/// `[study]`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Study {
+    /// Δt of the time sweep.
+    pub dts: Vec<f64>,
+    /// Δt of the time sweep with `--quick`.
+    pub quick_dts: Vec<f64>,
+    /// Mesh refinement (multiple of the file's element counts) of the time sweep.
+    pub dt_sweep_refine: usize,
+    /// Mesh refinements of the element sweep.
+    pub refines: Vec<usize>,
+    /// Mesh refinements of the element sweep with `--quick`.
+    pub quick_refines: Vec<usize>,
+    /// Δt of the element sweep.
+    pub refine_sweep_dt: f64,
+    /// Runs per point (the median wall time is kept).
+    pub repeats: usize,
+    /// Observed order in Δt between the two smallest steps must lie in this range.
+    pub dt_order: [f64; 2],
+    /// Observed order in the element size between the two coarsest meshes must lie here.
+    pub mesh_order: [f64; 2],
+    /// c₁·Δt/Δz₁² of the stability sweep (one step on the file's mesh).
+    pub stability_ratios: Vec<f64>,
+}
+
+/// Parses and checks a P1 file.
+pub fn parse(text: &str, origin: &str) -> Result<P1File, String> {
+    let f: P1File = toml::from_str(text).map_err(|e| format!("{origin}: {e}"))?;
+    f.column.validate().map_err(|e| format!("{origin}: {e}"))?;
+    if !(f.tolerance.is_finite() && f.tolerance > 0.0) {
+        return Err(format!("{origin}: tolerance = {} must be > 0", f.tolerance));
+    }
+    if let Some(s) = &f.study {
+        if s.repeats == 0 || s.dt_sweep_refine == 0 || s.refines.contains(&0) {
+            return Err(format!(
+                "{origin}: study: repeats and refinements must be ≥ 1"
+            ));
+        }
+        if s.dts.iter().chain(&s.quick_dts).any(|d| !(*d > 0.0)) || !(s.refine_sweep_dt > 0.0) {
+            return Err(format!("{origin}: study: every Δt must be > 0"));
+        }
+    }
+    Ok(f)
+}
+
+/// Whether `text` is a P1 file (it has a `[column]` table).
+pub fn is_p1(text: &str) -> bool {
+    text.parse::<toml::Table>()
+        .is_ok_and(|t| t.contains_key("column"))
+}
+
+/// Errors of one run against the series: (max |u − u_s|/q₀, max |U − U_s|).
+fn errors(f: &P1File, series: &Series, u: &[Vec<f64>], degree: &[f64]) -> (f64, f64) {
+    let c = &f.column;
+    let mut eu = 0.0f64;
+    for (row, &z) in c.depths.iter().enumerate() {
+        for (col, &t) in c.times.iter().enumerate() {
+            eu = eu.max((u[row][col] - series.pressure(z, t)).abs() / c.load);
+        }
+    }
+    let e_degree = c
+        .times
+        .iter()
+        .zip(degree)
+        .map(|(&t, d)| (d - series.degree(t)).abs())
+        .fold(0.0, f64::max);
+    (eu, e_degree)
+}
+
+/// Median wall time of `repeats` runs and the last run's result.
+fn timed<T>(repeats: usize, mut run: impl FnMut() -> T) -> (f64, T) {
+    let mut times = Vec::with_capacity(repeats);
+    let mut last = None;
+    for _ in 0..repeats.max(1) {
+        let t = Instant::now();
+        last = Some(run());
+        times.push(t.elapsed().as_secs_f64());
+    }
+    times.sort_by(f64::total_cmp);
+    let median = times[times.len() / 2];
+    match last {
+        Some(v) => (median, v),
+        None => unreachable!("at least one run"),
+    }
+}
+
+/// What the P1 run produced.
+pub struct Outcome {
+    /// Check rows.
+    pub rows: Vec<Row>,
+    /// Files written.
+    pub outputs: Vec<PathBuf>,
+    /// Failures other than check rows (I/O, a refused kernel call).
+    pub failures: usize,
+}
+
+fn row(rows: &mut Vec<Row>, case: String, quantity: &'static str, exact: f64, got: f64, tol: f64) {
+    rows.push(Row {
+        scene: "P1",
+        case,
+        quantity,
+        exact,
+        computed: got,
+        tolerance: tol,
+    });
+}
+
+/// Runs a P1 file: checks, CSV, study (unless `quick` drops it to its quick lists).
+pub fn run(f: &P1File, quick: bool, out: &Path) -> Result<Outcome, String> {
+    let mut rows = Vec::new();
+    let mut outputs = Vec::new();
+    let mut failures = 0;
+    let c = &f.column;
+    let id = &f.id;
+
+    // Steady seepage: q = Δp/(H₁/k₁ + H₂/k₂), linear in each layer, continuous flux.
+    if let Some(s) = &f.steady {
+        let st = steady(c, s.p_top, s.p_base)?;
+        let [l1, l2] = &c.layers;
+        let resistance = l1.thickness / l1.permeability + l2.thickness / l2.permeability;
+        let q = (s.p_top - s.p_base) / resistance;
+        let scale = q.abs().max(f64::MIN_POSITIVE);
+        row(
+            &mut rows,
+            "steady seepage".into(),
+            "flux q̂/2 across the interface",
+            q,
+            st.interface_flux(),
+            1e-12 * scale,
+        );
+        let worst = st
+            .element_fluxes()
+            .into_iter()
+            .fold(q, |w, v| if (v - q).abs() > (w - q).abs() { v } else { w });
+        row(
+            &mut rows,
+            "steady seepage".into(),
+            "worst element flux -k dp/dz",
+            q,
+            worst,
+            1e-12 * scale,
+        );
+        let p_interface = s.p_top - q * l1.thickness / l1.permeability;
+        let dp = (s.p_top - s.p_base).abs().max(f64::MIN_POSITIVE);
+        let (mut worst_p, mut worst_exact) = (p_interface, p_interface);
+        for (z, p) in st.nodal_pressures() {
+            let exact = if z <= l1.thickness {
+                s.p_top - q * z / l1.permeability
+            } else {
+                p_interface - q * (z - l1.thickness) / l2.permeability
+            };
+            if (p - exact).abs() > (worst_p - worst_exact).abs() {
+                worst_p = p;
+                worst_exact = exact;
+            }
+        }
+        row(
+            &mut rows,
+            "steady seepage".into(),
+            "worst nodal pressure (linear per layer)",
+            worst_exact,
+            worst_p,
+            1e-12 * dp,
+        );
+        if let Some((p1, p2, _)) = st.mesh.interface_state(&st.x) {
+            row(
+                &mut rows,
+                "steady seepage".into(),
+                "p1 at the interface",
+                p_interface,
+                p1,
+                1e-12 * dp,
+            );
+            row(
+                &mut rows,
+                "steady seepage".into(),
+                "p2 at the interface",
+                p_interface,
+                p2,
+                1e-12 * dp,
+            );
+        }
+        row(
+            &mut rows,
+            "steady seepage".into(),
+            "Newton: |R| after / before",
+            0.0,
+            st.newton_reduction,
+            1e-12,
+        );
+    }
+
+    // The series itself against Terzaghi's single layer: both layers alike (same k and M).
+    {
+        let mut same = c.clone();
+        same.layers[1].permeability = same.layers[0].permeability;
+        same.layers[1].modulus = same.layers[0].modulus;
+        let h = same.height();
+        let (d, z) = if same.bottom == crate::column::Drainage::Drained {
+            (h / 2.0, h / 4.0)
+        } else {
+            (h, h / 2.0)
+        };
+        let cv = same.layers[0].cv();
+        let t = 0.1 * d * d / cv;
+        let series = Series::new(&same, t)?;
+        let zz = if same.top == crate::column::Drainage::Undrained {
+            h - z
+        } else {
+            z
+        };
+        row(
+            &mut rows,
+            "series, both layers alike".into(),
+            "u(z, T_v = 0.1) / q0 vs Terzaghi",
+            terzaghi(z / d, 0.1),
+            series.pressure(zz, t) / same.load,
+            1e-9,
+        );
+    }
+
+    // Transient step load at the file's Δt and mesh, with and without the interface.
+    let t_min = c.times.iter().copied().fold(c.end, f64::min);
+    let series = Series::new(c, t_min)?;
+    let with = consolidate(c, Join::Interface, 1, c.dt, true)?;
+    let without = consolidate(c, Join::Shared, 1, c.dt, false)?;
+    let (eu, e_degree) = errors(f, &series, &with.u, &with.degree);
+    let case = format!(
+        "step load, Δt {:e}, {}+{} elements",
+        c.dt, c.layers[0].elements, c.layers[1].elements
+    );
+    row(
+        &mut rows,
+        case.clone(),
+        "max |u - u_series| / q0",
+        0.0,
+        eu,
+        f.tolerance,
+    );
+    row(
+        &mut rows,
+        case.clone(),
+        "max |U - U_series|",
+        0.0,
+        e_degree,
+        f.tolerance,
+    );
+    let mut du = 0.0f64;
+    for (a, b) in with.u.iter().zip(&without.u) {
+        for (x, y) in a.iter().zip(b) {
+            du = du.max((x - y).abs() / c.load);
+        }
+    }
+    let d_degree = with
+        .degree
+        .iter()
+        .zip(&without.degree)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    row(
+        &mut rows,
+        case.clone(),
+        "max |u - u_no_interface| / q0",
+        0.0,
+        du,
+        1e-10,
+    );
+    row(
+        &mut rows,
+        case.clone(),
+        "max |U - U_no_interface|",
+        0.0,
+        d_degree,
+        1e-10,
+    );
+    row(
+        &mut rows,
+        case.clone(),
+        "max |p1 - p2| / q0 at the interface",
+        0.0,
+        with.jump / c.load,
+        1e-12,
+    );
+    row(
+        &mut rows,
+        case.clone(),
+        "Newton: |R| after / before",
+        0.0,
+        with.newton_reduction,
+        1e-10,
+    );
+
+    // u(z, t) and U(t).
+    let mut u_csv = String::from("time,depth,u,u_series,u_no_interface\n");
+    for (col, &t) in c.times.iter().enumerate() {
+        for (r, &z) in c.depths.iter().enumerate() {
+            let _ = writeln!(
+                u_csv,
+                "{t:e},{z:e},{:e},{:e},{:e}",
+                with.u[r][col],
+                series.pressure(z, t),
+                without.u[r][col]
+            );
+        }
+    }
+    let mut degree_csv = String::from("time,U,U_series,U_no_interface\n");
+    for (col, &t) in c.times.iter().enumerate() {
+        let _ = writeln!(
+            degree_csv,
+            "{t:e},{:e},{:e},{:e}",
+            with.degree[col],
+            series.degree(t),
+            without.degree[col]
+        );
+    }
+    for (name, text) in [("u", u_csv), ("U", degree_csv)] {
+        let path = out.join(format!("{id}-{name}.csv"));
+        std::fs::write(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        outputs.push(path);
+    }
+    println!(
+        "P1 {}: {} steps, {} kernel calls, series {} terms; max |u - u_series|/q0 {eu:.2e}, max |U - U_series| {e_degree:.2e}",
+        f.title,
+        with.steps,
+        with.kernel_calls,
+        series.terms()
+    );
+
+    if let Some(s) = &f.study {
+        failures += study(f, s, &series, quick, out, &mut rows, &mut outputs)?;
+    }
+    Ok(Outcome {
+        rows,
+        outputs,
+        failures,
+    })
+}
+
+/// p beyond [0, q₀] by more than this fraction of q₀ is a spatial oscillation (round-off stays
+/// below 1e-15).
+const OSCILLATION: f64 = 1e-12;
+
+/// Observed order log(e_a/e_b)/log(s_a/s_b).
+fn order(a: &Point, b: &Point) -> f64 {
+    (a.error / b.error).ln() / (a.step / b.step).ln()
+}
+
+fn study(
+    f: &P1File,
+    s: &Study,
+    series: &Series,
+    quick: bool,
+    out: &Path,
+    rows: &mut Vec<Row>,
+    outputs: &mut Vec<PathBuf>,
+) -> Result<usize, String> {
+    let c = &f.column;
+    let id = &f.id;
+    let mut failures = 0;
+    let point = |method: String, step: f64, join: Join, refine: usize, dt: f64| {
+        let (wall, h) = timed(s.repeats, || consolidate(c, join, refine, dt, false));
+        let h = h?;
+        let (eu, e_degree) = errors(f, series, &h.u, &h.degree);
+        Ok::<Point, String>(Point {
+            scene: id.clone(),
+            method,
+            step,
+            relative_step: step,
+            error: eu.max(e_degree),
+            details: vec![eu, e_degree, h.overshoot[0].max(h.overshoot[1]).max(0.0)],
+            calls: h.kernel_calls,
+            wall,
+            // A finite run is "ok" for the charts; a first-step oscillation (c·Δt/Δz² < 1/4 in a
+            // layer) is reported in the table and the CSV, and mapped by the stability sweep.
+            verdict: "ok",
+            claim: f64::INFINITY,
+        })
+    };
+    let dts = if quick { &s.quick_dts } else { &s.dts };
+    let refines = if quick { &s.quick_refines } else { &s.refines };
+    let elements = |r: usize| (c.layers[0].elements + c.layers[1].elements) * r;
+    let mut dt_points = Vec::new();
+    for &dt in dts {
+        for join in [Join::Interface, Join::Shared] {
+            let label = format!(
+                "Δt sweep, {} elements, {}",
+                elements(s.dt_sweep_refine),
+                if join == Join::Interface {
+                    "interface kernel"
+                } else {
+                    "no interface"
+                }
+            );
+            dt_points.push(point(label, dt, join, s.dt_sweep_refine, dt)?);
+        }
+    }
+    let mut mesh_points = Vec::new();
+    for &r in refines {
+        for join in [Join::Interface, Join::Shared] {
+            let label = format!(
+                "element sweep, Δt {:e}, {}",
+                s.refine_sweep_dt,
+                if join == Join::Interface {
+                    "interface kernel"
+                } else {
+                    "no interface"
+                }
+            );
+            mesh_points.push(point(
+                label,
+                elements(r) as f64,
+                join,
+                r,
+                s.refine_sweep_dt,
+            )?);
+        }
+    }
+    // Observed orders from the interface-kernel runs: the two largest Δt, the two coarsest meshes.
+    let kernel_only = |p: &&Point| p.method.ends_with("interface kernel");
+    let mut by_dt: Vec<&Point> = dt_points.iter().filter(kernel_only).collect();
+    // The two smallest Δt: the largest ones step over the earliest output time.
+    by_dt.sort_by(|a, b| a.step.total_cmp(&b.step));
+    if by_dt.len() >= 2 {
+        let o = order(by_dt[0], by_dt[1]);
+        let mid = 0.5 * (s.dt_order[0] + s.dt_order[1]);
+        row(
+            rows,
+            format!("Δt {:e} → {:e}", by_dt[0].step, by_dt[1].step),
+            "observed order in Δt (backward Euler: 1)",
+            mid,
+            o,
+            0.5 * (s.dt_order[1] - s.dt_order[0]),
+        );
+    }
+    let mut by_mesh: Vec<&Point> = mesh_points.iter().filter(kernel_only).collect();
+    by_mesh.sort_by(|a, b| a.step.total_cmp(&b.step));
+    if by_mesh.len() >= 2 {
+        // Error against the element size Δz ∝ 1/elements.
+        let o = -order(by_mesh[0], by_mesh[1]);
+        let mid = 0.5 * (s.mesh_order[0] + s.mesh_order[1]);
+        row(
+            rows,
+            format!("{} → {} elements", by_mesh[0].step, by_mesh[1].step),
+            "observed order in Δz (linear elements: 2)",
+            mid,
+            o,
+            0.5 * (s.mesh_order[1] - s.mesh_order[0]),
+        );
+    }
+    // Interface and shared meshes agree point by point.
+    let worst = dt_points
+        .chunks(2)
+        .chain(mesh_points.chunks(2))
+        .map(|pair| (pair[0].details[0] - pair[1].details[0]).abs())
+        .fold(0.0, f64::max);
+    row(
+        rows,
+        "every study point".into(),
+        "|error with - without interface|",
+        0.0,
+        worst,
+        1e-9,
+    );
+
+    // Where the time stepping stops giving a monotone pressure: one backward-Euler step after the
+    // step load on the file's mesh. On a uniform mesh of linear u–p elements (incompressible
+    // constituents) the equilibrium rows give M·ε_e + p̄_e = q₀ per element, and the mass balance
+    // of an interior node becomes, with u = q₀ − p and α = Δz²/(4·c·Δt),
+    //   (α − 1)(u_{i−1} + u_{i+1}) + 2(α + 1)·u_i = 0,
+    // whose solutions λ^i have λ + 1/λ = −2(α + 1)/(α − 1): λ < 0 (a node-to-node oscillation,
+    // p > q₀ next to the drained face) when α > 1, i.e. c·Δt/Δz² < 1/4. Backward Euler itself
+    // never diverges; it is the spatial oscillation that a too small step exposes, in each layer
+    // at its own ratio ρ_i = c_i·Δt/Δz_i².
+    let dz = [0, 1].map(|i| c.layers[i].thickness / c.layers[i].elements as f64);
+    let cv = [0, 1].map(|i| c.layers[i].cv());
+    let mut stab = String::from(
+        "ratio_layer_1,ratio_layer_2,dt,overshoot_layer_1,overshoot_layer_2,undershoot\n",
+    );
+    let mut ratios = s.stability_ratios.clone();
+    ratios.sort_by(f64::total_cmp);
+    let mut sweep = Vec::new();
+    let mut stability_points = Vec::new();
+    for &ratio in &ratios {
+        let dt = ratio * dz[0] * dz[0] / cv[0];
+        let mut one = c.clone();
+        one.end = dt;
+        one.times = vec![dt];
+        one.dt = dt;
+        let h = consolidate(&one, Join::Interface, 1, dt, false)?;
+        let rho = [0, 1].map(|i| cv[i] * dt / (dz[i] * dz[i]));
+        let _ = writeln!(
+            stab,
+            "{:e},{:e},{dt:e},{:e},{:e},{:e}",
+            rho[0], rho[1], h.overshoot[0], h.overshoot[1], h.undershoot
+        );
+        sweep.push((rho, h.overshoot));
+        for layer in 0..2 {
+            stability_points.push(Point {
+                scene: id.clone(),
+                method: format!("layer {}", layer + 1),
+                step: rho[layer],
+                relative_step: rho[layer],
+                error: h.overshoot[layer].max(0.0),
+                details: Vec::new(),
+                calls: h.kernel_calls,
+                wall: 0.0,
+                verdict: "ok",
+                claim: f64::INFINITY,
+            });
+        }
+    }
+    for layer in 0..2 {
+        // The last oscillating ratio and the first monotone one above it bracket the boundary.
+        let last_bad = sweep
+            .iter()
+            .filter(|(_, o)| o[layer] > OSCILLATION)
+            .map(|(r, _)| r[layer])
+            .fold(f64::NAN, f64::max);
+        let first_good = sweep
+            .iter()
+            .filter(|(r, o)| o[layer] <= OSCILLATION && !(r[layer] <= last_bad))
+            .map(|(r, _)| r[layer])
+            .fold(f64::NAN, f64::min);
+        println!(
+            "P1 stability, layer {}: first step oscillates at c·Δt/Δz² = {last_bad:.3}, monotone from {first_good:.3} (closed form 1/4)",
+            layer + 1
+        );
+        row(
+            rows,
+            format!(
+                "first step, layer {}, bracket {last_bad:.3}..{first_good:.3}",
+                layer + 1
+            ),
+            "monotone from c·Δt/Δz² = 1/4",
+            0.25,
+            first_good,
+            first_good - last_bad,
+        );
+    }
+    let path = out.join(format!("{id}-stability.csv"));
+    std::fs::write(&path, stab).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    outputs.push(path);
+
+    // CSV and charts.
+    let all: Vec<Point> = dt_points.iter().chain(&mesh_points).cloned().collect();
+    let mut csv = String::from(
+        "sweep,method,dt,elements,error,u_error,U_error,kernel_calls,wall_s_median,overshoot\n",
+    );
+    let mut table = String::new();
+    let _ = writeln!(
+        table,
+        "{:<52} {:>10} {:>9} {:>10} {:>10} {:>10}  first step",
+        "method", "Δt", "elements", "error", "calls", "run (ms)"
+    );
+    for (sweep, points) in [("dt", &dt_points), ("elements", &mesh_points)] {
+        for p in points {
+            let (dt, n) = if sweep == "dt" {
+                (p.step, elements(s.dt_sweep_refine))
+            } else {
+                (s.refine_sweep_dt, p.step as usize)
+            };
+            let _ = writeln!(
+                csv,
+                "{sweep},\"{}\",{dt:e},{n},{:e},{:e},{:e},{},{:e},{:e}",
+                p.method, p.error, p.details[0], p.details[1], p.calls, p.wall, p.details[2]
+            );
+            let first = if p.details[2] > OSCILLATION {
+                format!("oscillates (p/q0 - 1 = {:.1e})", p.details[2])
+            } else {
+                "monotone".into()
+            };
+            let _ = writeln!(
+                table,
+                "{:<52} {dt:>10.3e} {n:>9} {:>10.2e} {:>10} {:>10.3}  {first}",
+                p.method,
+                p.error,
+                p.calls,
+                p.wall * 1e3
+            );
+        }
+    }
+    let path = out.join(format!("{id}-work-precision.csv"));
+    std::fs::write(&path, csv).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    outputs.push(path);
+    let label = "max(|u − u_series|/q₀, |U − U_series|)";
+    let charts: [(&str, &str, &str, &[Point], &dyn Fn(&Point) -> f64); 4] = [
+        (
+            "error-vs-dt",
+            "time increment Δt",
+            label,
+            &dt_points,
+            &|p| p.step,
+        ),
+        (
+            "error-vs-elements",
+            "elements in the column",
+            label,
+            &mesh_points,
+            &|p| p.step,
+        ),
+        (
+            "error-vs-time",
+            "wall time per run, median (s)",
+            label,
+            &all,
+            &|p| p.wall,
+        ),
+        (
+            "stability",
+            "c·Δt/Δz² of the layer (one step after the load; monotone from 1/4)",
+            "max p/q₀ − 1 in the layer (0 drawn at 1e-16)",
+            &stability_points,
+            &|p| p.step,
+        ),
+    ];
+    for (name, x_label, y_label, points, cost) in charts {
+        let svg = out.join(format!("{id}-{name}.svg"));
+        if let Err(e) = crate::charts::work_precision(
+            &svg,
+            &format!("{}: {}", f.title, name.replace('-', " ")),
+            x_label,
+            y_label,
+            points,
+            plotters::prelude::SeriesLabelPosition::LowerRight,
+            cost,
+        ) {
+            eprintln!("scenes: {e}");
+            failures += 1;
+        }
+        outputs.push(svg);
+    }
+    println!(
+        "\nP1 work-precision (median wall time of {} runs)\n\n{table}",
+        s.repeats
+    );
+    Ok(failures)
+}
+
+/// The main job's hook: runs the built-in P1 file (no `--point`), or a `--point` file that is a
+/// P1 file. Returns None when `--point` names another kind of scene.
+pub fn hook(point: Option<&Path>, quick: bool, out: &Path) -> Option<Result<Outcome, String>> {
+    let (origin, text) = match point {
+        None => (BUILT_IN.0.to_string(), BUILT_IN.1.to_string()),
+        Some(p) => {
+            let text = std::fs::read_to_string(p).ok()?;
+            if !is_p1(&text) {
+                return None;
+            }
+            (p.display().to_string(), text)
+        }
+    };
+    Some(parse(&text, &origin).and_then(|f| run(&f, quick, out)))
+}
+
+/// A `--point` P1 file run alone: prints its rows; the process exit code.
+pub fn alone(p1: &Result<Outcome, String>) -> i32 {
+    match p1 {
+        Ok(o) => {
+            println!("\nP1 checks\n");
+            let failed = crate::checks::print(&o.rows) + o.failures;
+            println!("\nWritten:");
+            for p in &o.outputs {
+                println!("  {}", p.display());
+            }
+            println!("\n{failed} failure(s)");
+            i32::from(failed > 0)
+        }
+        Err(e) => {
+            eprintln!("scenes: {e}");
+            2
+        }
+    }
+}
+
+/// The built-in P1 run joined to the main job: its rows join the checks, its files the list;
+/// returns the failures outside the rows.
+pub fn join(
+    p1: Option<Result<Outcome, String>>,
+    rows: &mut Vec<Row>,
+    outputs: &mut Vec<PathBuf>,
+) -> usize {
+    match p1 {
+        Some(Ok(o)) => {
+            rows.extend(o.rows);
+            outputs.extend(o.outputs);
+            o.failures
+        }
+        Some(Err(e)) => {
+            eprintln!("scenes: P1: {e}");
+            1
+        }
+        None => 0,
+    }
+}

@@ -1,0 +1,174 @@
+//! `ifl_pore_pressure`: the interface pore-pressure kernel (seed 000, interface pore pressure)
+//! through the native API. No physics here: flags are decoded, pointers checked, and
+//! [`crate::laws::pore_pressure`] does the rest.
+
+use std::ffi::{CStr, c_char, c_int};
+
+use super::native::IflStatus;
+use super::{boundary, write_array, write_matrix};
+use crate::LawError;
+use crate::laws::pore_pressure::{
+    Basis, Contact, InterfacePoint, PorePressureTerms, Regime, Sliding, Variant, interface_terms,
+};
+use crate::report::Site;
+
+/// The variant of the interface pore-pressure kernel, one integer flag per choice (each 0 or 1;
+/// any other value is refused with `IFL_STATUS_BAD_PARAMETER`). All zeros is the closed-contact,
+/// transient, small-sliding form in the (h, p̄, p̂, q̂) basis, the form most hosts need.
+///
+/// Fortran: `type, bind(C) :: ifl_pore_pressure_variant; integer(c_int) :: open, steady,
+/// finite_sliding, per_side; end type`, passed by value.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct IflPorePressureVariant {
+    /// 0 = closed contact (Δh = 0, dh = 0), 1 = open contact (the gap's volume change Δh
+    /// enters both sides' mass balance).
+    pub open: c_int,
+    /// 0 = transient (fluxes integrated over Δt, Δt > 0 required), 1 = steady state (rate form;
+    /// `dt` is not read and the contact flag has no effect).
+    pub steady: c_int,
+    /// 0 = small sliding (geometric coefficients written as zeros), 1 = finite sliding.
+    pub finite_sliding: c_int,
+    /// 0 = unknowns (h, p̄, p̂, q̂), 1 = unknowns (h, p₁, p₂, q̂).
+    pub per_side: c_int,
+}
+
+fn flag(name: &str, v: c_int) -> Result<bool, LawError> {
+    match v {
+        0 => Ok(false),
+        1 => Ok(true),
+        other => Err(LawError::Parameter(format!(
+            "variant.{name} = {other}; expected 0 or 1"
+        ))),
+    }
+}
+
+fn decode(v: IflPorePressureVariant) -> Result<(Variant, Basis), LawError> {
+    let variant = Variant {
+        contact: if flag("open", v.open)? {
+            Contact::Open
+        } else {
+            Contact::Closed
+        },
+        regime: if flag("steady", v.steady)? {
+            Regime::Steady
+        } else {
+            Regime::Transient
+        },
+        sliding: if flag("finite_sliding", v.finite_sliding)? {
+            Sliding::Finite
+        } else {
+            Sliding::Small
+        },
+    };
+    let basis = if flag("per_side", v.per_side)? {
+        Basis::PerSide
+    } else {
+        Basis::MeanJump
+    };
+    Ok((variant, basis))
+}
+
+/// The interface pore-pressure terms of one integration point (seed 000):
+/// δΠ = −[Δh δp̄ + p̄ δh + Δt (q̂ δp̂ + p̂ δq̂)] per unit area, p̄ = (p₁ + p₂)/2,
+/// p̂ = (p₁ − p₂)/2, and its linearization, in the variant `variant`.
+///
+/// Inputs (end of increment): `p1`, `p2` pore pressures of side 1 and side 2; `q_hat` the flux
+/// variable (the fluid volume flux per unit area from side 1 to side 2 is `q_hat/2`); `h` the
+/// normal opening (positive apart; not used by any term, checked only); `dh` its increment
+/// (read with open contact in transient analysis); `dt` the time increment (transient: > 0;
+/// steady: not read). Unknowns x = (h, p̄, p̂, q̂), or (h, p₁, p₂, q̂) with `variant.per_side = 1`.
+///
+/// Outputs (caller-owned, none may be NULL):
+/// - `residual[4]`: coefficient of δx_i in δΠ (sign included: add it to the internal virtual
+///   work, the sign of −∫p δε_v);
+/// - `tangent[16]`: column-major 4×4 (Fortran `TANGENT(4,4)`), `tangent[i + 4*j]` =
+///   ∂residual_i/∂x_j (for j = h with the start-of-increment opening fixed, dΔh = dh);
+/// - `geometric[4]`: coefficient of dδx_i, the change of the variation from the host's contact
+///   geometry; all zeros in small sliding.
+///
+/// `interaction` (NUL-terminated, may be NULL) only names the caller in error messages.
+/// Returns `IFL_STATUS_OK`; on a NaN or infinite input or `dt <= 0` in a transient analysis
+/// `IFL_STATUS_BAD_INPUT`, on a flag other than 0 or 1 `IFL_STATUS_BAD_PARAMETER`, on an
+/// overflow of finite inputs `IFL_STATUS_NUMERICAL_FAILURE`, on a NULL output
+/// `IFL_STATUS_BAD_INPUT`; on failure every non-NULL output is zeroed and the message (naming
+/// `ifl_pore_pressure`, the interaction and the cause) is in `ifl_last_error`.
+///
+/// # Safety
+/// `interaction` is NULL or NUL-terminated; `residual` and `geometric` point to 4 writable
+/// doubles and `tangent` to 16, or are NULL.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn ifl_pore_pressure(
+    interaction: *const c_char,
+    variant: IflPorePressureVariant,
+    p1: f64,
+    p2: f64,
+    q_hat: f64,
+    h: f64,
+    dh: f64,
+    dt: f64,
+    residual: *mut f64,
+    tangent: *mut f64,
+    geometric: *mut f64,
+) -> IflStatus {
+    let run = || -> Result<(), LawError> {
+        if residual.is_null() || tangent.is_null() || geometric.is_null() {
+            return Err(LawError::Input(
+                "residual, tangent or geometric is a NULL pointer".into(),
+            ));
+        }
+        let (variant, basis) = decode(variant)?;
+        let point = InterfacePoint {
+            p1,
+            p2,
+            q_hat,
+            h,
+            dh,
+            dt,
+        };
+        let terms = interface_terms(&point, variant)?.in_basis(basis);
+        // SAFETY: non-NULL, 4, 16 and 4 writable doubles by contract.
+        unsafe { write_terms(residual, tangent, geometric, &terms) };
+        Ok(())
+    };
+    let on_fault = || {
+        // SAFETY: NULL is skipped; otherwise writable by contract.
+        unsafe { write_terms(residual, tangent, geometric, &PorePressureTerms::default()) };
+    };
+    boundary(
+        || Site {
+            routine: "ifl_pore_pressure",
+            interaction: if interaction.is_null() {
+                String::new()
+            } else {
+                // SAFETY: NUL-terminated by contract.
+                unsafe { CStr::from_ptr(interaction) }
+                    .to_string_lossy()
+                    .trim_end()
+                    .to_owned()
+            },
+            place: "native call".into(),
+        },
+        run,
+        on_fault,
+    )
+    .into()
+}
+
+/// # Safety
+/// Each pointer is NULL or points to 4, 16 and 4 writable doubles.
+#[inline]
+unsafe fn write_terms(
+    residual: *mut f64,
+    tangent: *mut f64,
+    geometric: *mut f64,
+    t: &PorePressureTerms,
+) {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        write_array(residual, &t.residual);
+        write_matrix(tangent, &t.tangent);
+        write_array(geometric, &t.geometric);
+    }
+}

@@ -1,0 +1,426 @@
+//! The interface pore-pressure kernel (seed 000): its linearization against central finite
+//! differences of its own residual in every variant and basis, each simplification (closed
+//! contact, steady state, small sliding) against the general form under its assumptions, the
+//! side-swap invariant, and bad input refused through `ifl_pore_pressure`.
+
+use std::ffi::CStr;
+
+use interfacial::abi::{IflPorePressureVariant, IflStatus, ifl_last_error, ifl_pore_pressure};
+use interfacial::laws::pore_pressure::{
+    Basis, Contact, H, InterfacePoint, P_JUMP, P_MEAN, PorePressureTerms, Q_HAT, Regime, Sliding,
+    Variant, interface_terms,
+};
+use proptest::prelude::*;
+
+fn all_variants() -> Vec<Variant> {
+    let mut v = Vec::new();
+    for contact in [Contact::Open, Contact::Closed] {
+        for regime in [Regime::Transient, Regime::Steady] {
+            for sliding in [Sliding::Small, Sliding::Finite] {
+                v.push(Variant {
+                    contact,
+                    regime,
+                    sliding,
+                });
+            }
+        }
+    }
+    v
+}
+
+const POINT: InterfacePoint = InterfacePoint {
+    p1: 130.0,
+    p2: 70.0,
+    q_hat: -2.5e-3,
+    h: 4e-4,
+    dh: 1.5e-4,
+    dt: 0.8,
+};
+
+fn terms(point: &InterfacePoint, variant: Variant, basis: Basis) -> PorePressureTerms {
+    interface_terms(point, variant).unwrap().in_basis(basis)
+}
+
+/// The point moved along unknown `j` of `basis` by `e` (h moves with Δh: the start-of-increment
+/// opening h − Δh is fixed).
+fn moved(point: &InterfacePoint, basis: Basis, j: usize, e: f64) -> InterfacePoint {
+    let mut p = *point;
+    match (basis, j) {
+        (_, H) => {
+            p.h += e;
+            p.dh += e;
+        }
+        (_, Q_HAT) => p.q_hat += e,
+        (Basis::PerSide, P_MEAN) => p.p1 += e,
+        (Basis::PerSide, _) => p.p2 += e,
+        // p̄ += e moves both sides; p̂ += e moves them apart.
+        (Basis::MeanJump, P_MEAN) => {
+            p.p1 += e;
+            p.p2 += e;
+        }
+        (Basis::MeanJump, _) => {
+            p.p1 += e;
+            p.p2 -= e;
+        }
+    }
+    p
+}
+
+#[test]
+fn tangent_matches_central_differences_in_every_variant_and_basis() {
+    for variant in all_variants() {
+        for basis in [Basis::MeanJump, Basis::PerSide] {
+            let t = terms(&POINT, variant, basis);
+            for j in 0..4 {
+                let e = 1e-3;
+                let plus = terms(&moved(&POINT, basis, j, e), variant, basis).residual;
+                let minus = terms(&moved(&POINT, basis, j, -e), variant, basis).residual;
+                for i in 0..4 {
+                    let fd = (plus[i] - minus[i]) / (2.0 * e);
+                    // The residual is linear in the unknowns: central differences are exact up to
+                    // the round-off of the residual (|r| ≤ 130) divided by 2e.
+                    assert!(
+                        (fd - t.tangent[i][j]).abs() <= 1e-9,
+                        "{variant:?} {basis:?}: d r[{i}]/d x[{j}] = {} but FD {fd}",
+                        t.tangent[i][j]
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_tangent_has_the_seed_entries() {
+    // Open, transient: dh δp̄ + dp̄ δh + Δt (dq̂ δp̂ + dp̂ δq̂), with the leading minus.
+    let t = terms(&POINT, Variant::GENERAL, Basis::MeanJump);
+    let mut expected = [[0.0; 4]; 4];
+    expected[P_MEAN][H] = -1.0;
+    expected[H][P_MEAN] = -1.0;
+    expected[P_JUMP][Q_HAT] = -POINT.dt;
+    expected[Q_HAT][P_JUMP] = -POINT.dt;
+    assert_eq!(t.tangent, expected);
+    // Residual by hand: p̄ = 100, p̂ = 30.
+    assert_eq!(
+        t.residual,
+        [-100.0, -POINT.dh, -POINT.dt * POINT.q_hat, -POINT.dt * 30.0]
+    );
+    // Per side by hand: δp̄ = (δp₁ + δp₂)/2, δp̂ = (δp₁ − δp₂)/2.
+    let s = terms(&POINT, Variant::GENERAL, Basis::PerSide);
+    let r_p1 = 0.5 * (-POINT.dh) + 0.5 * (-POINT.dt * POINT.q_hat);
+    let r_p2 = 0.5 * (-POINT.dh) - 0.5 * (-POINT.dt * POINT.q_hat);
+    assert_eq!(s.residual, [-100.0, r_p1, r_p2, -POINT.dt * 30.0]);
+    // ∂(−Δt p̂)/∂p₂ = +Δt/2; the per-side tangent stays symmetric.
+    assert_eq!(s.tangent[Q_HAT][2], 0.5 * POINT.dt);
+    for i in 0..4 {
+        for j in 0..4 {
+            assert_eq!(s.tangent[i][j], s.tangent[j][i]);
+        }
+    }
+}
+
+#[test]
+fn closed_contact_is_the_general_form_with_no_opening() {
+    for regime in [Regime::Transient, Regime::Steady] {
+        for sliding in [Sliding::Small, Sliding::Finite] {
+            let open = Variant {
+                contact: Contact::Open,
+                regime,
+                sliding,
+            };
+            let closed = Variant {
+                contact: Contact::Closed,
+                ..open
+            };
+            // Δh = 0 in the general form gives the closed residual and geometric terms...
+            let still = InterfacePoint { dh: 0.0, ..POINT };
+            let g = terms(&still, open, Basis::MeanJump);
+            let c = terms(&POINT, closed, Basis::MeanJump);
+            assert_eq!(c.residual, g.residual);
+            assert_eq!(c.geometric, g.geometric);
+            // ...and dh = 0 removes the column of h from its tangent.
+            for i in 0..4 {
+                for j in 0..4 {
+                    let expected = if j == H { 0.0 } else { g.tangent[i][j] };
+                    assert_eq!(
+                        c.tangent[i][j], expected,
+                        "{regime:?} {sliding:?} [{i}][{j}]"
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn steady_state_is_the_closed_transient_form_in_rate_form() {
+    // The steady form drops the transient terms (Δh δp̄) and writes the flow in rate form: the
+    // closed transient form with the factor Δt set to 1, whatever the contact flag.
+    for contact in [Contact::Open, Contact::Closed] {
+        for sliding in [Sliding::Small, Sliding::Finite] {
+            let steady = Variant {
+                contact,
+                regime: Regime::Steady,
+                sliding,
+            };
+            let closed_transient = Variant {
+                contact: Contact::Closed,
+                regime: Regime::Transient,
+                sliding,
+            };
+            let unit = InterfacePoint { dt: 1.0, ..POINT };
+            for basis in [Basis::MeanJump, Basis::PerSide] {
+                assert_eq!(
+                    terms(&POINT, steady, basis),
+                    terms(&unit, closed_transient, basis)
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn small_sliding_drops_only_the_geometric_terms() {
+    for v in all_variants()
+        .into_iter()
+        .filter(|v| v.sliding == Sliding::Finite)
+    {
+        let small = Variant {
+            sliding: Sliding::Small,
+            ..v
+        };
+        for basis in [Basis::MeanJump, Basis::PerSide] {
+            let f = terms(&POINT, v, basis);
+            let s = terms(&POINT, small, basis);
+            assert_eq!(s.residual, f.residual);
+            assert_eq!(s.tangent, f.tangent);
+            assert_eq!(s.geometric, [0.0; 4]);
+            // The integrand is bilinear: each geometric term has the residual's coefficient.
+            assert_eq!(f.geometric, f.residual);
+        }
+    }
+}
+
+fn swapped(p: &InterfacePoint) -> InterfacePoint {
+    InterfacePoint {
+        p1: p.p2,
+        p2: p.p1,
+        q_hat: -p.q_hat,
+        ..*p
+    }
+}
+
+proptest! {
+    #[test]
+    fn swapping_the_sides_flips_the_jump_and_the_flux_and_nothing_else(
+        p1 in -1e6f64..1e6, p2 in -1e6f64..1e6, q in -1e3f64..1e3, h in -1.0f64..1.0,
+        dh in -1.0f64..1.0, dt in 1e-6f64..1e3, which in 0usize..8,
+    ) {
+        let v = all_variants()[which];
+        let p = InterfacePoint { p1, p2, q_hat: q, h, dh, dt };
+        let a = terms(&p, v, Basis::MeanJump);
+        let b = terms(&swapped(&p), v, Basis::MeanJump);
+        let flip = [1.0, 1.0, -1.0, -1.0];
+        for i in 0..4 {
+            prop_assert_eq!(b.residual[i], flip[i] * a.residual[i]);
+            prop_assert_eq!(b.geometric[i], flip[i] * a.geometric[i]);
+        }
+        prop_assert_eq!(b.tangent, a.tangent);
+        // Per side the swap exchanges the two pressure entries and negates the q̂ entry.
+        let a = terms(&p, v, Basis::PerSide);
+        let b = terms(&swapped(&p), v, Basis::PerSide);
+        let perm = [0usize, 2, 1, 3];
+        let sign = [1.0, 1.0, 1.0, -1.0];
+        for i in 0..4 {
+            prop_assert_eq!(b.residual[i], sign[i] * a.residual[perm[i]]);
+            for j in 0..4 {
+                prop_assert_eq!(b.tangent[i][j], sign[i] * sign[j] * a.tangent[perm[i]][perm[j]]);
+            }
+        }
+    }
+
+    #[test]
+    fn finite_input_never_gives_nan_through_the_abi(
+        p1 in prop::num::f64::NORMAL | prop::num::f64::ZERO,
+        p2 in prop::num::f64::NORMAL | prop::num::f64::ZERO,
+        q in prop::num::f64::NORMAL | prop::num::f64::ZERO,
+        dt in prop::num::f64::POSITIVE,
+        flags in 0i32..16,
+    ) {
+        let v = IflPorePressureVariant {
+            open: flags & 1,
+            steady: (flags >> 1) & 1,
+            finite_sliding: (flags >> 2) & 1,
+            per_side: (flags >> 3) & 1,
+        };
+        let (status, r, t, g) = call(v, [p1, p2, q, 0.0, 0.0, dt]);
+        prop_assert!(matches!(status, IflStatus::Ok | IflStatus::NumericalFailure | IflStatus::BadInput));
+        prop_assert!(r.iter().chain(t.iter()).chain(g.iter()).all(|x| x.is_finite()));
+        if status != IflStatus::Ok {
+            prop_assert!(r.iter().chain(t.iter()).chain(g.iter()).all(|x| *x == 0.0));
+        }
+    }
+}
+
+type Outputs = (IflStatus, [f64; 4], [f64; 16], [f64; 4]);
+
+fn call(v: IflPorePressureVariant, x: [f64; 6]) -> Outputs {
+    let (mut r, mut t, mut g) = ([7.0; 4], [7.0; 16], [7.0; 4]);
+    // SAFETY: arrays of 4, 16 and 4 doubles; a NUL-terminated name.
+    let s = unsafe {
+        ifl_pore_pressure(
+            c"column".as_ptr(),
+            v,
+            x[0],
+            x[1],
+            x[2],
+            x[3],
+            x[4],
+            x[5],
+            r.as_mut_ptr(),
+            t.as_mut_ptr(),
+            g.as_mut_ptr(),
+        )
+    };
+    (s, r, t, g)
+}
+
+fn last_error() -> String {
+    // SAFETY: the library's thread-local buffer, NUL-terminated.
+    unsafe { CStr::from_ptr(ifl_last_error()) }
+        .to_string_lossy()
+        .into_owned()
+}
+
+const GENERAL_FLAGS: IflPorePressureVariant = IflPorePressureVariant {
+    open: 1,
+    steady: 0,
+    finite_sliding: 1,
+    per_side: 0,
+};
+
+#[test]
+fn the_abi_returns_the_core_terms_in_fortran_order() {
+    for per_side in [0, 1] {
+        let v = IflPorePressureVariant {
+            per_side,
+            ..GENERAL_FLAGS
+        };
+        let x = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+        let (s, r, t, g) = call(v, x);
+        assert_eq!(s, IflStatus::Ok);
+        let basis = if per_side == 1 {
+            Basis::PerSide
+        } else {
+            Basis::MeanJump
+        };
+        let core = terms(&POINT, Variant::GENERAL, basis);
+        assert_eq!(r, core.residual);
+        assert_eq!(g, core.geometric);
+        for i in 0..4 {
+            for j in 0..4 {
+                // TANGENT(i,j) of a Fortran TANGENT(4,4).
+                assert_eq!(t[i + 4 * j], core.tangent[i][j]);
+            }
+        }
+    }
+}
+
+#[test]
+fn bad_input_is_refused_with_a_clear_message_and_zero_outputs() {
+    let good = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    let cases: [(IflPorePressureVariant, usize, f64, IflStatus, &str); 7] = [
+        (
+            GENERAL_FLAGS,
+            0,
+            f64::NAN,
+            IflStatus::BadInput,
+            "p1 = NaN is not finite",
+        ),
+        (
+            GENERAL_FLAGS,
+            2,
+            f64::INFINITY,
+            IflStatus::BadInput,
+            "q_hat = inf",
+        ),
+        (
+            GENERAL_FLAGS,
+            4,
+            f64::NEG_INFINITY,
+            IflStatus::BadInput,
+            "dh = -inf",
+        ),
+        (
+            GENERAL_FLAGS,
+            5,
+            0.0,
+            IflStatus::BadInput,
+            "dt = 0: a transient point",
+        ),
+        (GENERAL_FLAGS, 5, -1.0, IflStatus::BadInput, "dt = -1"),
+        (
+            IflPorePressureVariant {
+                steady: 2,
+                ..GENERAL_FLAGS
+            },
+            0,
+            POINT.p1,
+            IflStatus::BadParameter,
+            "variant.steady = 2; expected 0 or 1",
+        ),
+        (
+            GENERAL_FLAGS,
+            5,
+            1e300,
+            IflStatus::NumericalFailure,
+            "overflow",
+        ),
+    ];
+    for (v, index, value, status, cause) in cases {
+        let mut x = good;
+        x[index] = value;
+        if status == IflStatus::NumericalFailure {
+            x[2] = 1e300;
+        }
+        let (s, r, t, g) = call(v, x);
+        assert_eq!(s, status, "{cause}");
+        let msg = last_error();
+        assert!(
+            msg.contains("ifl_pore_pressure")
+                && msg.contains("interaction 'column'")
+                && msg.contains(cause),
+            "{msg}"
+        );
+        assert_eq!((r, t, g), ([0.0; 4], [0.0; 16], [0.0; 4]));
+    }
+    // The steady state does not read dt: a zero or NaN time increment is accepted there.
+    let steady = IflPorePressureVariant {
+        steady: 1,
+        ..GENERAL_FLAGS
+    };
+    let mut x = good;
+    x[5] = f64::NAN;
+    assert_eq!(call(steady, x).0, IflStatus::Ok);
+    // A NULL output is refused, the others zeroed.
+    let (mut r, mut g) = ([7.0; 4], [7.0; 4]);
+    // SAFETY: NULL tangent is the case under test; the other arrays hold 4 doubles.
+    let s = unsafe {
+        ifl_pore_pressure(
+            std::ptr::null(),
+            GENERAL_FLAGS,
+            1.0,
+            1.0,
+            0.0,
+            0.0,
+            0.0,
+            1.0,
+            r.as_mut_ptr(),
+            std::ptr::null_mut(),
+            g.as_mut_ptr(),
+        )
+    };
+    assert_eq!(s, IflStatus::BadInput);
+    assert!(last_error().contains("NULL"), "{}", last_error());
+    assert_eq!((r, g), ([0.0; 4], [0.0; 4]));
+}
