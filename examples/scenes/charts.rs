@@ -34,7 +34,8 @@ fn err<E: std::fmt::Display>(e: E) -> String {
     e.to_string()
 }
 
-/// Range of positive finite values, widened to whole decades.
+/// Range of positive finite values, widened to whole decades with at least a tenth of a
+/// decade to spare at each end.
 pub fn decades(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let (mut lo, mut hi) = (f64::INFINITY, 0.0f64);
     for v in values.filter(|v| v.is_finite() && *v > 0.0) {
@@ -44,10 +45,9 @@ pub fn decades(values: impl Iterator<Item = f64>) -> (f64, f64) {
     if !lo.is_finite() {
         return (1e-3, 1.0);
     }
-    (
-        10f64.powf(lo.log10().floor()),
-        10f64.powf(hi.log10().ceil().max(lo.log10().floor() + 1.0)),
-    )
+    // A tenth of a decade of room, so that no curve lies on an axis.
+    let (a, b) = ((lo.log10() - 0.1).floor(), (hi.log10() + 0.1).ceil());
+    (10f64.powf(a), 10f64.powf(b.max(a + 1.0)))
 }
 
 /// Tick values of a log axis over [lo, hi]: every decade, plus 2 and 5 times each decade when
@@ -55,7 +55,7 @@ pub fn decades(values: impl Iterator<Item = f64>) -> (f64, f64) {
 pub fn log_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
     let (a, b) = (lo.log10().floor() as i32 - 1, hi.log10().ceil() as i32 + 1);
     let inside = |v: f64| v >= lo * (1.0 - 1e-9) && v <= hi * (1.0 + 1e-9);
-    let few = hi / lo < 100.0;
+    let few = hi / lo < 500.0;
     let mut bold = Vec::new();
     let mut light = Vec::new();
     for e in a..=b {
@@ -107,6 +107,8 @@ pub enum Marker {
     Dot,
     /// Hollow circle, larger (drawn over a coinciding curve's dots).
     Ring,
+    /// A larger hollow circle (a second coinciding curve).
+    BigRing,
     /// Cross (a run that did not end "ok").
     Cross,
     /// Filled triangle (a run with no error to show).
@@ -327,6 +329,9 @@ fn draw_pixel_marker(
         Marker::Ring => area
             .draw(&Circle::new((x, y), 6, c.stroke_width(2)))
             .map_err(err),
+        Marker::BigRing => area
+            .draw(&Circle::new((x, y), 9, c.stroke_width(2)))
+            .map_err(err),
         Marker::Cross => area
             .draw(&Cross::new((x, y), 4, c.stroke_width(2)))
             .map_err(err),
@@ -351,6 +356,9 @@ fn draw_markers(
             .map(|_| ()),
         Marker::Ring => chart
             .draw_series(pts.map(|p| Circle::new(p, 6, c.stroke_width(2))))
+            .map(|_| ()),
+        Marker::BigRing => chart
+            .draw_series(pts.map(|p| Circle::new(p, 9, c.stroke_width(2))))
             .map(|_| ()),
         Marker::Cross => chart
             .draw_series(pts.map(|p| Cross::new(p, 4, c.stroke_width(2))))
@@ -437,20 +445,26 @@ pub fn work_precision(
                 })
         })
     };
+    // Dots; rings for a curve that coincides with an earlier one, larger for the next such.
+    let twin_marker = |i: usize| {
+        if same_as(i).is_none() {
+            Marker::Dot
+        } else if (0..i).all(|j| same_as(j).is_none()) {
+            Marker::Ring
+        } else {
+            Marker::BigRing
+        }
+    };
     let mut legend = Vec::new();
     let mut notes = Vec::new();
     for (i, m) in methods.iter().enumerate() {
         let color = COLORS[i % COLORS.len()];
         let twin = same_as(i);
-        let mk = if twin.is_some() {
-            Marker::Ring
-        } else {
-            Marker::Dot
-        };
+        let mk = twin_marker(i);
         legend.push((Swatch::Line(color, mk, false), (*m).to_string()));
         if let Some(j) = twin {
             notes.push(format!(
-                "'{m}' coincides with '{}' (every error within 5 % at the same step): drawn as rings around its dots.",
+                "'{m}' coincides with '{}' (every error within 5 % at the same step): drawn as rings, no line.",
                 methods[j]
             ));
         }
@@ -537,12 +551,7 @@ pub fn work_precision(
                     .draw_series(LineSeries::new(series.clone(), color.stroke_width(2)))
                     .map_err(err)?;
             }
-            draw_markers(
-                chart,
-                if twin { Marker::Ring } else { Marker::Dot },
-                &series,
-                color,
-            )?;
+            draw_markers(chart, twin_marker(i), &series, color)?;
             let mut claims: Vec<(f64, f64)> = mine
                 .iter()
                 .filter(|p| p.claim.is_finite())

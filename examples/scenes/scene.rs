@@ -361,7 +361,8 @@ impl Timing {
         repeats: 5,
         min_repeat: 1e-3,
     };
-    /// One untimed-quality run (tests: the answer, not the time).
+    /// One run, timed once (tests/scenes_driver.rs: the answer, not the time).
+    #[allow(dead_code)]
     pub const ONCE: Timing = Timing {
         repeats: 1,
         min_repeat: 0.0,
