@@ -6,6 +6,7 @@
 //! reported as not checked.
 
 use crate::charts::{CellMark, Highlight};
+use crate::rate_map::{RateCell, RateMap};
 use crate::scene::Point;
 use crate::stability::{Cell, Map};
 
@@ -110,7 +111,7 @@ fn period() -> f64 {
 }
 
 /// Evaluates every finding on the run's points and F6 maps (`maps`: label → map).
-pub fn evaluate(points: &[Point], maps: &[&Map]) -> Vec<Finding> {
+pub fn evaluate(points: &[Point], maps: &[&Map], rate_maps: &[RateMap]) -> Vec<Finding> {
     let d = Data { points };
     let t = period();
     let map = |integrator_label: &str| maps.iter().find(|m| m.spec.label == integrator_label);
@@ -360,7 +361,56 @@ pub fn evaluate(points: &[Point], maps: &[&Map]) -> Vec<Finding> {
         |(lo, hi)| format!("error/(Δt/hold) from {lo:.3} to {hi:.3}"),
         |(lo, hi)| *lo >= 0.45 && *hi <= 0.56,
     ));
+    // F4 maps, implicit (the first) beyond d_c·v = 1, and cut-backs on both.
+    let beyond = rate_maps.first().map(|m| {
+        let mut ratios = Vec::new();
+        for r in 0..m.decays.len() {
+            if !m.checked(r) {
+                if let Some(c) = m.cells[r].iter().position(|c| *c == RateCell::Settles) {
+                    ratios.push(m.dts[c] / m.limit(r));
+                }
+            }
+        }
+        ratios
+    });
+    out.push(finding(
+        "F4-map-beyond",
+        "F4 implicit map: where d_c·v > 1 the first settling Δt lies between 1 and 2.5 × the linear limit 2|dτ/dv|/k_s (necessary, not sufficient there)",
+        beyond.filter(|r| !r.is_empty()),
+        |r| {
+            format!(
+                "{} rows, ratios {}",
+                r.len(),
+                r.iter().map(|x| format!("{x:.2}")).collect::<Vec<_>>().join(", ")
+            )
+        },
+        |r| r.iter().all(|x| (1.0..=2.5).contains(x)),
+    ));
+    out.push(finding(
+        "F4-map-no-cutback",
+        "F4 maps: the library never asks for a cut-back, also where the sliding rate oscillates: its local solve finds a root in every increment",
+        (rate_maps.len() >= 2).then(|| {
+            rate_maps
+                .iter()
+                .flat_map(|m| m.cells.iter().flatten())
+                .filter(|c| **c == RateCell::CutBack)
+                .count()
+        }),
+        |n| format!("{n} cut-back cells"),
+        |n| *n == 0,
+    ));
     out
+}
+
+/// The main job's own run time (after the build): under 30 s.
+pub fn run_time(seconds: f64, quick: bool) -> Finding {
+    finding(
+        "run-time",
+        "The full main job runs in under 30 s on the 2-core development machine (after the release build)",
+        (!quick).then_some(seconds),
+        |s| format!("{s:.1} s"),
+        |s| *s < 30.0,
+    )
 }
 
 fn count(m: &Map, class: Cell) -> usize {

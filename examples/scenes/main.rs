@@ -538,7 +538,11 @@ fn main() {
     }
     if opts.point.is_none() {
         let map_refs: Vec<&Map> = maps.iter().map(|(_, m)| m).collect();
-        let found = findings::evaluate(&all_points, &map_refs);
+        let mut found = findings::evaluate(&all_points, &map_refs, &rate_maps);
+        found.push(findings::run_time(
+            progress.start.elapsed().as_secs_f64(),
+            opts.quick,
+        ));
         println!("\nFindings (the figures README.md and docs/scenes.md quote, from this run)\n");
         failures += findings::print(&found);
         let path = opts.out.join("findings.csv");
