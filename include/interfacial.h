@@ -199,14 +199,17 @@ enum IflStatus ifl_forced_sliding(const double *props,
  * NUL-terminated; never read past).
  *
  * The law is chosen by `PROPS(1)` (1 = Coulomb; layout in `docs/props.md`). The Coulomb law
- * uses `STATEV(1..3)` (accumulated slip, slip rate, status) and needs `NSTATV ≥ 3`.
- * `PROPS(1) = 2` selects the adhesive law (seed 004): the same state variables, always `LM = 0`.
+ * uses `STATEV(1..3)` (accumulated slip, slip rate, status) and needs `NSTATV ≥ 3`; with
+ * tangential damping (`PROPS(17)` > 0) it also keeps the viscous stress in `STATEV(4..3+NFDIR)`
+ * and needs `NSTATV ≥ 3 + NFDIR`. `PROPS(1) = 2` selects the adhesive law (seed 004): the same
+ * three state variables, always `LM = 0`.
  *
  * On entry `LM` is the previous iteration's answer (0 motion, 1 exact stick, 2 frictionless);
  * with `LM = 2` nothing is written. On exit:
  * - `LM = 0`: `TAU(NFDIR)` is the end-of-increment stress; `DDTDDG(NFDIR,NFDIR)`,
- *   `DDTDDP(NFDIR)`, `DSLIP`, `SED`, `SFD`, `DDTDDT(NFDIR,2)` (zero: μ does not depend on
- *   temperature) and `STATEV` are written.
+ *   `DDTDDP(NFDIR)`, `DSLIP`, `SED`, `SFD`, `DDTDDT(NFDIR,2)` and `STATEV` are written.
+ *   `DDTDDT` is ∂τ/∂`TEMP(1)` and ∂τ/∂`TEMP(2)` (each half of ∂τ/∂θ̄): non-zero when μ depends
+ *   on temperature (`PROPS(12)`, or a friction table in temperature), zero otherwise.
  * - `LM = 1`: exact stick; `TAU`, `DDTDDG`, `DDTDDP` are not written; `DSLIP = 0`, `SED = 0`,
  *   `SFD = 0` and `STATEV` are.
  *
@@ -215,8 +218,9 @@ enum IflStatus ifl_forced_sliding(const double *props,
  * `PNEWDT = 0.25`, leaves `LM`, `TAU` and `STATEV` unchanged, zeroes `DDTDDG`, `DDTDDP`, `DSLIP`,
  * `DDTDDT` and `SFD` (when `NFDIR` is valid), and reports one line per distinct cause (stderr
  * or `$INTERFACIAL_LOG`; `ifl_last_error` on the calling thread). Input arguments are never
- * written. `DROT` is not read: the host has already rotated `TAU`, and the law keeps no vector
- * state.
+ * written. `DROT` is read only with damping (`PROPS(17)` > 0): the viscous stress kept in
+ * `STATEV` is rotated by it before it is taken out of `TAU`; otherwise the law keeps no vector
+ * state and `DROT` is not read (the host has already rotated `TAU`).
  *
  * # Safety
  * The pointers must be valid for the Abaqus FRIC signature: arrays of `NFDIR`, `NFDIR²`,

@@ -208,3 +208,60 @@ fn bad_inputs_and_parameters() {
     let negative = TemperatureTable::constant_in_temperature(Table1::new(&[(0.0, -1.0)]).unwrap());
     assert!(Conduction::pressure_table(negative).is_err());
 }
+
+/// docs/config.md, bad-input row 27a: the CMY law holds up to P/H_c = 1 and refuses beyond it
+/// (the plastic real-area fraction P/H_c cannot exceed 1), naming P/H_c.
+#[test]
+fn cmy_refuses_pressure_above_the_microhardness() {
+    let c = cmy_law();
+    let h_c = 2e9;
+    // At P = H_c: 1.25·k_s·m/σ·1.
+    let at = c.evaluate(0.0, h_c, 300.0, 300.0).unwrap();
+    assert!((at.k - 1.25 * 20.0 * 0.1 / 2e-6).abs() < 1e-9 * at.k);
+    let above = h_c * (1.0 + 1e-12);
+    let e = c
+        .evaluate(0.0, above, 300.0, 300.0)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("P/H_c") && e.contains("microhardness"), "{e}");
+    // The cmy law with radiation in parallel refuses the same way.
+    let both = GapLaw::new(
+        Some(Conduction::solid_spot(1.25, 20.0, 0.1, 2e-6, h_c).unwrap()),
+        Some(Radiation::new(0.8, 5.670374419e-8, -273.15).unwrap()),
+    )
+    .unwrap();
+    assert!(both.evaluate(0.0, above, 300.0, 300.0).is_err());
+}
+
+/// docs/config.md: the correlation's m is the mean absolute slope; an RMS slope overpredicts h
+/// by RMS/mean|·| = sqrt(π/2) ≈ 1.25 for a Gaussian profile (h is linear in m). The ratio from a
+/// numerical integral of E|X| for X ~ N(0, 1), against the closed form sqrt(2/π).
+#[test]
+fn rms_slope_overpredicts_cmy_conductance_by_a_quarter_for_a_gaussian_profile() {
+    let n = 200_000;
+    let (a, b) = (-12.0f64, 12.0f64);
+    let h = (b - a) / n as f64;
+    let pdf = |x: f64| (-0.5 * x * x).exp() / (2.0 * std::f64::consts::PI).sqrt();
+    // Trapezoidal rule for E|X| = ∫|x| φ(x) dx.
+    let mean_abs: f64 = (0..=n)
+        .map(|i| {
+            let x = a + h * i as f64;
+            let w = if i == 0 || i == n { 0.5 } else { 1.0 };
+            w * x.abs() * pdf(x)
+        })
+        .sum::<f64>()
+        * h;
+    assert!((mean_abs - (2.0 / std::f64::consts::PI).sqrt()).abs() < 1e-8);
+    let c = cmy_law();
+    let k_mean = c.evaluate(0.0, 1e7, 0.0, 0.0).unwrap().k;
+    let rms_law = GapLaw::new(
+        Some(Conduction::solid_spot(1.25, 20.0, 0.1 / mean_abs, 2e-6, 2e9).unwrap()),
+        None,
+    )
+    .unwrap();
+    let over = rms_law.evaluate(0.0, 1e7, 0.0, 0.0).unwrap().k / k_mean - 1.0;
+    assert!(
+        (0.24..0.26).contains(&over),
+        "RMS slope overpredicts by {over}"
+    );
+}

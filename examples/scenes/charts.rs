@@ -1,8 +1,14 @@
 //! SVG charts (plotters, SVG backend only): work-precision curves and stability maps.
+//!
+//! Every chart is drawn by [`frame`]: log–log axes with a tick label on every decade (and on 2
+//! and 5 when an axis spans less than two decades), the axis titles with their units, an
+//! optional second x axis on top (Δt as a fraction of the scene's period), the legend in a panel
+//! to the right of the data (never over a point), and notes under the plot (overlapping curves,
+//! the highlighted points the docs quote, the machine the times were taken on).
 
 use std::path::Path;
 
-use plotters::element::DashedPathElement;
+use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
 use plotters::prelude::*;
 
 use crate::oscillator::Oscillator;
@@ -28,8 +34,9 @@ fn err<E: std::fmt::Display>(e: E) -> String {
     e.to_string()
 }
 
-/// Range of positive finite values, widened to whole decades.
-fn decades(values: impl Iterator<Item = f64>) -> (f64, f64) {
+/// Range of positive finite values, widened to whole decades with at least a tenth of a
+/// decade to spare at each end.
+pub fn decades(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let (mut lo, mut hi) = (f64::INFINITY, 0.0f64);
     for v in values.filter(|v| v.is_finite() && *v > 0.0) {
         lo = lo.min(v);
@@ -38,139 +45,540 @@ fn decades(values: impl Iterator<Item = f64>) -> (f64, f64) {
     if !lo.is_finite() {
         return (1e-3, 1.0);
     }
-    (
-        10f64.powf(lo.log10().floor()),
-        10f64.powf(hi.log10().ceil().max(lo.log10().floor() + 1.0)),
-    )
+    // A tenth of a decade of room, so that no curve lies on an axis.
+    let (a, b) = ((lo.log10() - 0.1).floor(), (hi.log10() + 0.1).ceil());
+    (10f64.powf(a), 10f64.powf(b.max(a + 1.0)))
 }
 
-/// Error against cost, one curve per method; `cost` picks the x value of a point. Points whose
-/// run did not end "ok" are left out of the curves and drawn apart in the method's colour: a
-/// cross at their error when it is measurable (chattering, rate-unstable, …), a triangle on the
-/// top edge when it is not (a library cut-back, PNEWDT < 1, or a diverged run). The error is
-/// floored at 1e-16 so that round-off-exact results stay on a log axis.
+/// Tick values of a log axis over [lo, hi]: every decade, plus 2 and 5 times each decade when
+/// the axis spans less than two decades; and the light grid lines 2..9 × each decade.
+pub fn log_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
+    let (a, b) = (lo.log10().floor() as i32 - 1, hi.log10().ceil() as i32 + 1);
+    let inside = |v: f64| v >= lo * (1.0 - 1e-9) && v <= hi * (1.0 + 1e-9);
+    let few = hi / lo < 500.0;
+    let mut bold = Vec::new();
+    let mut light = Vec::new();
+    for e in a..=b {
+        let d = 10f64.powi(e);
+        for m in 1..10 {
+            let v = d * f64::from(m);
+            if !inside(v) {
+                continue;
+            }
+            if m == 1 || (few && (m == 2 || m == 5)) {
+                bold.push(v);
+            } else {
+                light.push(v);
+            }
+        }
+    }
+    (bold, light)
+}
+
+/// A tick label: 1e-3 style, with the mantissa only when it is not 1; plain for 0.1..1000.
+pub fn tick_label(v: f64) -> String {
+    if (0.1..1000.0).contains(&v) {
+        let s = format!("{v:.1}");
+        return s.trim_end_matches('0').trim_end_matches('.').to_string();
+    }
+    let e = v.log10().floor() as i32;
+    let m = (v / 10f64.powi(e)).round() as i32;
+    if m == 1 {
+        format!("1e{e}")
+    } else {
+        format!("{m}e{e}")
+    }
+}
+
+/// One legend entry, drawn in the panel right of the plot.
+pub enum Swatch {
+    /// A line in a colour with a marker on it (dashed when `true`).
+    Line(RGBColor, Marker, bool),
+    /// A filled box (a map class).
+    Box(RGBColor),
+    /// A marker alone.
+    Mark(RGBColor, Marker),
+}
+
+/// Point markers.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Marker {
+    /// Filled circle.
+    Dot,
+    /// Hollow circle, larger (drawn over a coinciding curve's dots).
+    Ring,
+    /// A larger hollow circle (a second coinciding curve).
+    BigRing,
+    /// Cross (a run that did not end "ok").
+    Cross,
+    /// Filled triangle (a run with no error to show).
+    Triangle,
+    /// None.
+    None,
+}
+
+/// Axis title with its unit.
+pub struct Axis {
+    /// Range (log scale).
+    pub range: (f64, f64),
+    /// Title, with the unit.
+    pub title: String,
+}
+
+/// A chart's fixed parts.
+pub struct Frame<'a> {
+    /// Caption.
+    pub title: &'a str,
+    /// x axis.
+    pub x: Axis,
+    /// y axis.
+    pub y: Axis,
+    /// A second x axis on top: the bottom value divided by `scale`, with its title.
+    pub top: Option<(f64, String)>,
+    /// Legend panel entries.
+    pub legend: Vec<(Swatch, String)>,
+    /// Notes under the plot, one line each.
+    pub notes: Vec<String>,
+    /// Pixel size.
+    pub size: (u32, u32),
+}
+
+type LogAxis = WithKeyPoints<LogCoord<f64>>;
+/// The plotting context every chart body draws into.
+pub type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<LogAxis, LogAxis>>;
+
+fn log_axis(lo: f64, hi: f64) -> LogAxis {
+    let (bold, light) = log_ticks(lo, hi);
+    (lo..hi)
+        .log_scale()
+        .with_key_points(bold)
+        .with_light_points(light)
+}
+
+/// Splits `text` into lines of at most `width` characters at spaces.
+fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut lines = Vec::new();
+    let mut line = String::new();
+    for word in text.split(' ') {
+        if !line.is_empty() && line.chars().count() + 1 + word.chars().count() > width {
+            lines.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    if !line.is_empty() {
+        lines.push(line);
+    }
+    lines
+}
+
+/// Draws the frame (axes, legend panel, notes) and calls `body` to draw the data.
+pub fn frame(
+    path: &Path,
+    f: &Frame,
+    body: impl FnOnce(&mut Chart<'_, '_>) -> Result<(), String>,
+) -> Result<(), String> {
+    const LEGEND_W: u32 = 300;
+    const LINE: i32 = 15;
+    let note_lines: Vec<String> = f.notes.iter().flat_map(|n| wrap(n, 120)).collect();
+    let notes_h = 10 + LINE as u32 * note_lines.len() as u32;
+    let (w, h) = (f.size.0 + LEGEND_W, f.size.1 + notes_h);
+    let root = SVGBackend::new(path, (w, h)).into_drawing_area();
+    root.fill(&WHITE).map_err(err)?;
+    let (upper, notes) = root.split_vertically(f.size.1);
+    let (plot, side) = upper.split_horizontally(f.size.0);
+    let mut builder = ChartBuilder::on(&plot);
+    // The caption is drawn by hand at the top (plotters puts it inside the top margin, where the
+    // second x axis goes).
+    builder
+        .margin(12)
+        .margin_top(40)
+        .x_label_area_size(48)
+        .y_label_area_size(78);
+    if f.top.is_some() {
+        // Room above the plot for the second x axis, drawn by hand below (a plotters top label
+        // area would also carry the primary axis' labels).
+        builder.margin_top(92);
+    }
+    let w = 9 * f.title.chars().count() as i32;
+    root.draw(&Text::new(
+        f.title.to_string(),
+        (f.size.0 as i32 / 2 - w / 2, 10),
+        ("sans-serif", 18).into_font(),
+    ))
+    .map_err(err)?;
+    let mut chart = builder
+        .build_cartesian_2d(
+            log_axis(f.x.range.0, f.x.range.1),
+            log_axis(f.y.range.0, f.y.range.1),
+        )
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc(f.x.title.as_str())
+        .y_desc(f.y.title.as_str())
+        .x_label_formatter(&|v| tick_label(*v))
+        .y_label_formatter(&|v| tick_label(*v))
+        .light_line_style(RGBColor(235, 235, 235))
+        .bold_line_style(RGBColor(200, 200, 200))
+        .label_style(("sans-serif", 13))
+        .axis_desc_style(("sans-serif", 14))
+        .draw()
+        .map_err(err)?;
+    body(&mut chart)?;
+    if let Some((scale, title)) = &f.top {
+        // The second x axis: ticks at every decade of x/scale along the plot's top edge.
+        let (a, b) = (f.x.range.0 / scale, f.x.range.1 / scale);
+        let (bold, _) = log_ticks(a, b);
+        let (left, top) = chart.backend_coord(&(f.x.range.0, f.y.range.1));
+        let (right, _) = chart.backend_coord(&(f.x.range.1, f.y.range.1));
+        let label = ("sans-serif", 13).into_font();
+        root.draw(&PathElement::new(
+            vec![(left, top), (right, top)],
+            BLACK.stroke_width(1),
+        ))
+        .map_err(err)?;
+        for v in bold {
+            let (x, _) = chart.backend_coord(&(v * scale, f.y.range.1));
+            root.draw(&PathElement::new(
+                vec![(x, top), (x, top - 5)],
+                BLACK.stroke_width(1),
+            ))
+            .map_err(err)?;
+            let text = tick_label(v);
+            let w = 7 * text.chars().count() as i32;
+            root.draw(&Text::new(text, (x - w / 2, top - 21), label.clone()))
+                .map_err(err)?;
+        }
+        let w = 7 * title.chars().count() as i32;
+        root.draw(&Text::new(
+            title.clone(),
+            ((left + right) / 2 - w / 2, top - 44),
+            ("sans-serif", 14).into_font(),
+        ))
+        .map_err(err)?;
+    }
+    // The legend, right of the plot.
+    let font = ("sans-serif", 12).into_font();
+    let mut y = 40;
+    for (swatch, text) in &f.legend {
+        let (x0, x1, ym) = (8, 34, y + 6);
+        match swatch {
+            Swatch::Line(c, m, dashed) => {
+                if *dashed {
+                    side.draw(&PathElement::new(
+                        vec![(x0, ym), (x0 + 8, ym)],
+                        c.stroke_width(2),
+                    ))
+                    .map_err(err)?;
+                    side.draw(&PathElement::new(
+                        vec![(x0 + 14, ym), (x1, ym)],
+                        c.stroke_width(2),
+                    ))
+                    .map_err(err)?;
+                } else {
+                    side.draw(&PathElement::new(
+                        vec![(x0, ym), (x1, ym)],
+                        c.stroke_width(2),
+                    ))
+                    .map_err(err)?;
+                }
+                draw_pixel_marker(&side, *m, ((x0 + x1) / 2, ym), *c)?;
+            }
+            Swatch::Box(c) => {
+                side.draw(&Rectangle::new([(x0, ym - 6), (x1, ym + 6)], c.filled()))
+                    .map_err(err)?;
+            }
+            Swatch::Mark(c, m) => draw_pixel_marker(&side, *m, ((x0 + x1) / 2, ym), *c)?,
+        }
+        for (i, line) in wrap(text, 36).iter().enumerate() {
+            side.draw(&Text::new(
+                line.clone(),
+                (x1 + 8, y + LINE * i as i32),
+                font.clone(),
+            ))
+            .map_err(err)?;
+            if i > 0 {
+                y += LINE;
+            }
+        }
+        y += LINE + 6;
+    }
+    for (i, line) in note_lines.iter().enumerate() {
+        notes
+            .draw(&Text::new(
+                line.clone(),
+                (20, 4 + LINE * i as i32),
+                ("sans-serif", 12).into_font(),
+            ))
+            .map_err(err)?;
+    }
+    root.present().map_err(err)
+}
+
+fn draw_pixel_marker(
+    area: &DrawingArea<SVGBackend, plotters::coord::Shift>,
+    m: Marker,
+    (x, y): (i32, i32),
+    c: RGBColor,
+) -> Result<(), String> {
+    match m {
+        Marker::Dot => area.draw(&Circle::new((x, y), 3, c.filled())).map_err(err),
+        Marker::Ring => area
+            .draw(&Circle::new((x, y), 6, c.stroke_width(2)))
+            .map_err(err),
+        Marker::BigRing => area
+            .draw(&Circle::new((x, y), 9, c.stroke_width(2)))
+            .map_err(err),
+        Marker::Cross => area
+            .draw(&Cross::new((x, y), 4, c.stroke_width(2)))
+            .map_err(err),
+        Marker::Triangle => area
+            .draw(&TriangleMarker::new((x, y), 5, c.filled()))
+            .map_err(err),
+        Marker::None => Ok(()),
+    }
+}
+
+/// Draws markers at data points.
+fn draw_markers(
+    chart: &mut Chart<'_, '_>,
+    m: Marker,
+    points: &[(f64, f64)],
+    c: RGBColor,
+) -> Result<(), String> {
+    let pts = points.iter().copied();
+    match m {
+        Marker::Dot => chart
+            .draw_series(pts.map(|p| Circle::new(p, 3, c.filled())))
+            .map(|_| ()),
+        Marker::Ring => chart
+            .draw_series(pts.map(|p| Circle::new(p, 6, c.stroke_width(2))))
+            .map(|_| ()),
+        Marker::BigRing => chart
+            .draw_series(pts.map(|p| Circle::new(p, 9, c.stroke_width(2))))
+            .map(|_| ()),
+        Marker::Cross => chart
+            .draw_series(pts.map(|p| Cross::new(p, 4, c.stroke_width(2))))
+            .map(|_| ()),
+        Marker::Triangle => chart
+            .draw_series(pts.map(|p| TriangleMarker::new(p, 5, c.filled())))
+            .map(|_| ()),
+        Marker::None => Ok(()),
+    }
+    .map_err(err)
+}
+
+/// A point the docs quote: drawn with a black ring and a tag, explained in the notes.
+pub struct Highlight {
+    /// Method label.
+    pub method: String,
+    /// Step of the point.
+    pub step: f64,
+    /// Short tag drawn next to it ("A", "B", …).
+    pub tag: String,
+    /// The note: what the docs say about it.
+    pub note: String,
+}
+
+/// How the x value of a work-precision point is taken.
+pub enum Cost {
+    /// Median wall time per run, with the range of the repeats as an error bar.
+    Wall,
+    /// `fric_` calls per run.
+    Calls,
+}
+
+/// Error against cost, one curve per method. Points whose run did not end "ok" are left out of
+/// the curves and drawn apart in the method's colour: a cross at their error when it is
+/// measurable, a triangle on the top edge when it is not. The error is floored at 1e-16 so that
+/// round-off-exact results stay on a log axis. A curve that coincides with an earlier one (every
+/// point within 5 % in error at the same step) is drawn with rings over the first one's dots,
+/// and a note says so.
+#[allow(clippy::too_many_arguments)]
 pub fn work_precision(
     path: &Path,
     title: &str,
-    x_label: &str,
-    error_label: &str,
+    x_title: &str,
+    y_title: &str,
     points: &[Point],
-    legend: SeriesLabelPosition,
-    cost: impl Fn(&Point) -> f64,
+    cost: Cost,
+    highlights: &[Highlight],
+    machine: &str,
 ) -> Result<(), String> {
+    let x_of = |p: &Point| match cost {
+        Cost::Wall => p.wall,
+        Cost::Calls => p.calls as f64,
+    };
     let usable: Vec<&Point> = points
         .iter()
         .filter(|p| p.verdict == "ok" && p.error.is_finite())
         .collect();
     let failed: Vec<&Point> = points.iter().filter(|p| p.verdict != "ok").collect();
-    let (x0, x1) = decades(usable.iter().chain(&failed).map(|p| cost(p)));
+    let (x0, x1) = decades(usable.iter().chain(&failed).flat_map(|p| match cost {
+        Cost::Wall => vec![p.wall_range[0], p.wall_range[1], p.wall],
+        Cost::Calls => vec![p.calls as f64],
+    }));
     let (y0, y1) = decades(
         usable
             .iter()
             .flat_map(|p| [p.error.max(1e-16), p.claim.max(1e-16)])
             .chain(failed.iter().map(|p| p.error.max(1e-16))),
     );
-    let root = SVGBackend::new(path, (820, 540)).into_drawing_area();
-    root.fill(&WHITE).map_err(err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 18))
-        .margin(12)
-        .x_label_area_size(44)
-        .y_label_area_size(70)
-        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
-        .map_err(err)?;
-    chart
-        .configure_mesh()
-        .x_desc(x_label)
-        .y_desc(error_label)
-        .x_label_formatter(&|v| format!("{v:.0e}"))
-        .y_label_formatter(&|v| format!("{v:.0e}"))
-        .draw()
-        .map_err(err)?;
     let mut methods: Vec<&str> = Vec::new();
     for p in points {
         if !methods.contains(&p.method.as_str()) {
             methods.push(&p.method);
         }
     }
+    // Curves identical to an earlier one.
+    let same_as = |i: usize| -> Option<usize> {
+        let mine: Vec<&&Point> = usable.iter().filter(|p| p.method == methods[i]).collect();
+        (0..i).find(|&j| {
+            let theirs: Vec<&&Point> = usable.iter().filter(|p| p.method == methods[j]).collect();
+            !mine.is_empty()
+                && mine.len() == theirs.len()
+                && mine.iter().zip(&theirs).all(|(a, b)| {
+                    a.step == b.step && (a.error - b.error).abs() <= 0.05 * a.error.max(b.error)
+                })
+        })
+    };
+    // Dots; rings for a curve that coincides with an earlier one, larger for the next such.
+    let twin_marker = |i: usize| {
+        if same_as(i).is_none() {
+            Marker::Dot
+        } else if (0..i).all(|j| same_as(j).is_none()) {
+            Marker::Ring
+        } else {
+            Marker::BigRing
+        }
+    };
+    let mut legend = Vec::new();
+    let mut notes = Vec::new();
     for (i, m) in methods.iter().enumerate() {
         let color = COLORS[i % COLORS.len()];
-        let mut series: Vec<(f64, f64)> = usable
-            .iter()
-            .filter(|p| p.method == *m)
-            .map(|p| (cost(p), p.error.max(1e-16)))
-            .collect();
-        series.sort_by(|a, b| a.0.total_cmp(&b.0));
-        // Runs that did not end "ok": crosses at a measurable error, triangles on top.
-        let top = y1 / 10f64.powf(0.05 * (y1 / y0).log10());
-        let mine = || failed.iter().filter(|p| p.method == *m);
-        chart
-            .draw_series(
-                mine()
-                    .filter(|p| p.error.is_finite())
-                    .map(|p| Cross::new((cost(p), p.error.max(1e-16)), 4, color.stroke_width(2))),
-            )
-            .map_err(err)?;
-        chart
-            .draw_series(
-                mine()
-                    .filter(|p| !p.error.is_finite())
-                    .map(|p| TriangleMarker::new((cost(p), top), 5, color.filled())),
-            )
-            .map_err(err)?;
-        if series.is_empty() {
-            continue;
-        }
-        chart
-            .draw_series(LineSeries::new(series.clone(), color.stroke_width(2)))
-            .map_err(err)?
-            .label(*m)
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
-            });
-        chart
-            .draw_series(
-                series
-                    .iter()
-                    .map(|&(x, y)| Circle::new((x, y), 3, color.filled())),
-            )
-            .map_err(err)?;
-        // The bound the scene file claims for this method (dashed, same colour).
-        let mut claims: Vec<(f64, f64)> = usable
-            .iter()
-            .filter(|p| p.method == *m && p.claim.is_finite())
-            .map(|p| (cost(p), p.claim.max(1e-16)))
-            .collect();
-        claims.sort_by(|a, b| a.0.total_cmp(&b.0));
-        if claims.len() > 1 {
-            chart
-                .draw_series(DashedLineSeries::new(claims, 6, 4, color.stroke_width(1)))
-                .map_err(err)?;
+        let twin = same_as(i);
+        let mk = twin_marker(i);
+        legend.push((Swatch::Line(color, mk, false), (*m).to_string()));
+        if let Some(j) = twin {
+            notes.push(format!(
+                "'{m}' coincides with '{}' (every error within 5 % at the same step): drawn as rings, no line.",
+                methods[j]
+            ));
         }
     }
-    chart
-        .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
-        .map_err(err)?
-        .label("dashed: the claimed bound (tests/scenes_driver.rs)")
-        .legend(|(x, y)| {
-            DashedPathElement::new(vec![(x, y), (x + 18, y)], 4, 3, BLACK.stroke_width(1))
-        });
+    legend.push((
+        Swatch::Line(RGBColor(60, 60, 60), Marker::None, true),
+        "dashed, same colour: the bound the scene file claims (checked)".into(),
+    ));
     if !failed.is_empty() {
-        chart
-            .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
-            .map_err(err)?
-            .label("×: run not ok (verdict in the CSV); ▲ on top: no error (diverged, Newton failed, cut-back)")
-            .legend(|(x, y)| Cross::new((x + 9, y), 4, BLACK.stroke_width(2)));
+        legend.push((
+            Swatch::Mark(RGBColor(60, 60, 60), Marker::Cross),
+            "run not ok, error measurable (verdict in the CSV)".into(),
+        ));
+        legend.push((
+            Swatch::Mark(RGBColor(60, 60, 60), Marker::Triangle),
+            "on the top edge: no error to show (diverged, Newton failed, cut-back)".into(),
+        ));
     }
-    chart
-        .configure_series_labels()
-        .position(legend)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 12))
-        .draw()
-        .map_err(err)?;
-    root.present().map_err(err)
+    if !highlights.is_empty() {
+        legend.push((
+            Swatch::Mark(BLACK, Marker::Ring),
+            "black ring + tag: a point the docs quote (notes below)".into(),
+        ));
+    }
+    for h in highlights {
+        notes.push(format!("{}: {}", h.tag, h.note));
+    }
+    if matches!(cost, Cost::Wall) {
+        notes.push(format!(
+            "Times: median of 5 timed repeats per point, each repeat ≥ 1 ms (the run repeated inside it); bars: fastest to slowest repeat. Machine: {machine}."
+        ));
+    }
+    let f = Frame {
+        title,
+        x: Axis {
+            range: (x0, x1),
+            title: x_title.into(),
+        },
+        y: Axis {
+            range: (y0, y1),
+            title: y_title.into(),
+        },
+        top: None,
+        legend,
+        notes,
+        size: (760, 520),
+    };
+    frame(path, &f, |chart| {
+        let top = y1 / 10f64.powf(0.03 * (y1 / y0).log10());
+        for (i, m) in methods.iter().enumerate() {
+            let color = COLORS[i % COLORS.len()];
+            let mine: Vec<&&Point> = usable.iter().filter(|p| p.method == *m).collect();
+            let mut series: Vec<(f64, f64)> =
+                mine.iter().map(|p| (x_of(p), p.error.max(1e-16))).collect();
+            series.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let fails = || failed.iter().filter(|p| p.method == *m);
+            let crosses: Vec<(f64, f64)> = fails()
+                .filter(|p| p.error.is_finite())
+                .map(|p| (x_of(p), p.error.max(1e-16)))
+                .collect();
+            draw_markers(chart, Marker::Cross, &crosses, color)?;
+            let tops: Vec<(f64, f64)> = fails()
+                .filter(|p| !p.error.is_finite())
+                .map(|p| (x_of(p), top))
+                .collect();
+            draw_markers(chart, Marker::Triangle, &tops, color)?;
+            if matches!(cost, Cost::Wall) {
+                chart
+                    .draw_series(mine.iter().map(|p| {
+                        let y = p.error.max(1e-16);
+                        PathElement::new(
+                            vec![(p.wall_range[0], y), (p.wall_range[1], y)],
+                            color.stroke_width(1),
+                        )
+                    }))
+                    .map_err(err)?;
+            }
+            if series.is_empty() {
+                continue;
+            }
+            let twin = same_as(i).is_some();
+            if !twin {
+                chart
+                    .draw_series(LineSeries::new(series.clone(), color.stroke_width(2)))
+                    .map_err(err)?;
+            }
+            draw_markers(chart, twin_marker(i), &series, color)?;
+            let mut claims: Vec<(f64, f64)> = mine
+                .iter()
+                .filter(|p| p.claim.is_finite())
+                .map(|p| (x_of(p), p.claim.max(1e-16)))
+                .collect();
+            claims.sort_by(|a, b| a.0.total_cmp(&b.0));
+            if claims.len() > 1 {
+                chart
+                    .draw_series(DashedLineSeries::new(claims, 6, 4, color.stroke_width(1)))
+                    .map_err(err)?;
+            }
+        }
+        for h in highlights {
+            if let Some(p) = usable
+                .iter()
+                .find(|p| p.method == h.method && p.step == h.step)
+            {
+                let at = (x_of(p), p.error.max(1e-16));
+                chart
+                    .draw_series([EmptyElement::at(at)
+                        + Circle::new((0, 0), 9, BLACK.stroke_width(2))
+                        + Text::new(h.tag.clone(), (10, -18), ("sans-serif", 15).into_font())])
+                    .map_err(err)?;
+            }
+        }
+        Ok(())
+    })
 }
 
 fn cell_color(c: Cell) -> RGBColor {
@@ -185,83 +593,116 @@ fn cell_color(c: Cell) -> RGBColor {
     }
 }
 
-/// The stability map with the theoretical explicit limit Δt = 2/sqrt((k + K_f)/m) drawn on it.
-pub fn stability_map(path: &Path, o: &Oscillator, map: &Map) -> Result<(), String> {
-    let half = |v: &[f64], i: usize, up: bool| -> f64 {
-        // Cell edges halfway (geometrically) between grid values.
-        let n = v.len();
-        let ratio = if n > 1 { (v[1] / v[0]).sqrt() } else { 2.0 };
-        if up { v[i] * ratio } else { v[i] / ratio }.max(f64::MIN_POSITIVE)
+/// Cell edges halfway (geometrically) between grid values.
+fn edge(v: &[f64], i: usize, up: bool) -> f64 {
+    let ratio = if v.len() > 1 {
+        (v[1] / v[0]).sqrt()
+    } else {
+        2.0
     };
+    if up { v[i] * ratio } else { v[i] / ratio }.max(f64::MIN_POSITIVE)
+}
+
+/// A map cell the docs quote: ringed and tagged.
+pub struct CellMark {
+    /// Row and column.
+    pub cell: (usize, usize),
+    /// Tag.
+    pub tag: String,
+    /// Note.
+    pub note: String,
+}
+
+/// The F6 stability map with the theoretical explicit limit Δt = 2/sqrt((k + K_f)/m) drawn on
+/// it, Δt also as a fraction of the period T on the top axis.
+pub fn stability_map(
+    path: &Path,
+    o: &Oscillator,
+    map: &Map,
+    marks: &[CellMark],
+    notes: &[String],
+) -> Result<(), String> {
     let (nx, ny) = (map.dts.len(), map.gammas.len());
-    let (x0, x1) = (half(&map.dts, 0, false), half(&map.dts, nx - 1, true));
-    let (y0, y1) = (half(&map.gammas, 0, false), half(&map.gammas, ny - 1, true));
-    let root = SVGBackend::new(path, (820, 600)).into_drawing_area();
-    root.fill(&WHITE).map_err(err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            format!("F6 stability map: {}", map.spec.label),
-            ("sans-serif", 18),
-        )
-        .margin(12)
-        .x_label_area_size(44)
-        .y_label_area_size(70)
-        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
-        .map_err(err)?;
-    chart
-        .configure_mesh()
-        .disable_mesh()
-        .x_desc("time step Δt")
-        .y_desc("allowable elastic slip γ_crit")
-        .x_label_formatter(&|v| format!("{v:.0e}"))
-        .y_label_formatter(&|v| format!("{v:.0e}"))
-        .draw()
-        .map_err(err)?;
-    for (r, row) in map.cells.iter().enumerate() {
+    let (x0, x1) = (edge(&map.dts, 0, false), edge(&map.dts, nx - 1, true));
+    let (y0, y1) = (edge(&map.gammas, 0, false), edge(&map.gammas, ny - 1, true));
+    let mut legend: Vec<(Swatch, String)> = Cell::ALL
+        .iter()
+        .filter(|c| map.cells.iter().flatten().any(|x| x == *c))
+        .map(|c| (Swatch::Box(cell_color(*c)), c.name().to_string()))
+        .collect();
+    legend.push((
+        Swatch::Line(BLACK, Marker::None, false),
+        "explicit limit Δt = 2/sqrt((k + K_f)/m), K_f = μ_s N/γ_crit".into(),
+    ));
+    if !marks.is_empty() {
+        legend.push((
+            Swatch::Mark(BLACK, Marker::Ring),
+            "ring + tag: a cell the docs quote".into(),
+        ));
+    }
+    let mut all_notes: Vec<String> = marks
+        .iter()
+        .map(|m| format!("{}: {}", m.tag, m.note))
+        .collect();
+    all_notes.extend(notes.iter().cloned());
+    let period = o.period();
+    let f = Frame {
+        title: &format!("F6 stability map: {}", map.spec.label),
+        x: Axis {
+            range: (x0, x1),
+            title: "time step Δt (s)".into(),
+        },
+        y: Axis {
+            range: (y0, y1),
+            title: "allowable elastic slip γ_crit (m)".into(),
+        },
+        top: Some((period, format!("Δt / T, period T = {period:.3} s"))),
+        legend,
+        notes: all_notes,
+        size: (760, 560),
+    };
+    frame(path, &f, |chart| {
+        for (r, row) in map.cells.iter().enumerate() {
+            chart
+                .draw_series(row.iter().enumerate().map(|(c, cell)| {
+                    Rectangle::new(
+                        [
+                            (edge(&map.dts, c, false), edge(&map.gammas, r, false)),
+                            (edge(&map.dts, c, true), edge(&map.gammas, r, true)),
+                        ],
+                        cell_color(*cell).filled(),
+                    )
+                }))
+                .map_err(err)?;
+        }
+        let limit: Vec<(f64, f64)> = crate::stability::log_space(y0, y1, 200)
+            .into_iter()
+            .map(|g| (o.explicit_limit(g), g))
+            .filter(|(dt, _)| *dt >= x0 && *dt <= x1)
+            .collect();
         chart
-            .draw_series(row.iter().enumerate().map(|(c, cell)| {
-                Rectangle::new(
-                    [
-                        (half(&map.dts, c, false), half(&map.gammas, r, false)),
-                        (half(&map.dts, c, true), half(&map.gammas, r, true)),
-                    ],
-                    cell_color(*cell).filled(),
-                )
-            }))
+            .draw_series(LineSeries::new(limit, BLACK.stroke_width(3)))
+            .map_err(err)?;
+        draw_cell_marks(chart, &map.dts, &map.gammas, marks)
+    })
+}
+
+fn draw_cell_marks(
+    chart: &mut Chart<'_, '_>,
+    xs: &[f64],
+    ys: &[f64],
+    marks: &[CellMark],
+) -> Result<(), String> {
+    for m in marks {
+        let (r, c) = m.cell;
+        chart
+            .draw_series([EmptyElement::at((xs[c], ys[r]))
+                + Circle::new((0, 0), 8, WHITE.stroke_width(4))
+                + Circle::new((0, 0), 8, BLACK.stroke_width(2))
+                + Text::new(m.tag.clone(), (10, -20), ("sans-serif", 15).into_font())])
             .map_err(err)?;
     }
-    for cell in Cell::ALL {
-        if map.cells.iter().flatten().any(|c| *c == cell) {
-            let color = cell_color(cell);
-            chart
-                .draw_series(std::iter::empty::<Rectangle<(f64, f64)>>())
-                .map_err(err)?
-                .label(cell.name())
-                .legend(move |(x, y)| {
-                    Rectangle::new([(x, y - 5), (x + 14, y + 5)], color.filled())
-                });
-        }
-    }
-    // The explicit limit as a curve in (Δt, γ_crit): γ_crit = μ_s N / (m (2/Δt)² − k).
-    let limit: Vec<(f64, f64)> = crate::stability::log_space(y0, y1, 200)
-        .into_iter()
-        .map(|g| (o.explicit_limit(g), g))
-        .filter(|(dt, _)| *dt >= x0 && *dt <= x1)
-        .collect();
-    chart
-        .draw_series(LineSeries::new(limit, BLACK.stroke_width(3)))
-        .map_err(err)?
-        .label("explicit limit Δt = 2/sqrt((k+K_f)/m)")
-        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], BLACK.stroke_width(3)));
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 12))
-        .draw()
-        .map_err(err)?;
-    root.present().map_err(err)
+    Ok(())
 }
 
 fn rate_cell_color(c: RateCell) -> RGBColor {
@@ -274,83 +715,67 @@ fn rate_cell_color(c: RateCell) -> RGBColor {
 
 /// An F4 rate-stability map over (Δt, d_c) with the closed-form limit drawn on it.
 pub fn rate_map(path: &Path, map: &RateMap) -> Result<(), String> {
-    let half = |v: &[f64], i: usize, up: bool| -> f64 {
-        let n = v.len();
-        let ratio = if n > 1 { (v[1] / v[0]).sqrt() } else { 2.0 };
-        if up { v[i] * ratio } else { v[i] / ratio }.max(f64::MIN_POSITIVE)
-    };
     let (nx, ny) = (map.dts.len(), map.decays.len());
-    let (x0, x1) = (half(&map.dts, 0, false), half(&map.dts, nx - 1, true));
-    let (y0, y1) = (half(&map.decays, 0, false), half(&map.decays, ny - 1, true));
-    let root = SVGBackend::new(path, (820, 600)).into_drawing_area();
-    root.fill(&WHITE).map_err(err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(map.title(), ("sans-serif", 18))
-        .margin(12)
-        .x_label_area_size(44)
-        .y_label_area_size(70)
-        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
-        .map_err(err)?;
-    chart
-        .configure_mesh()
-        .disable_mesh()
-        .x_desc("time step Δt")
-        .y_desc("decay coefficient d_c")
-        .x_label_formatter(&|v| format!("{v:.0e}"))
-        .y_label_formatter(&|v| format!("{v:.1}"))
-        .draw()
-        .map_err(err)?;
-    for (r, row) in map.cells.iter().enumerate() {
-        chart
-            .draw_series(row.iter().enumerate().map(|(c, cell)| {
-                Rectangle::new(
-                    [
-                        (half(&map.dts, c, false), half(&map.decays, r, false)),
-                        (half(&map.dts, c, true), half(&map.decays, r, true)),
-                    ],
-                    rate_cell_color(*cell).filled(),
-                )
-            }))
-            .map_err(err)?;
-    }
-    for cell in [RateCell::Settles, RateCell::Oscillates, RateCell::CutBack] {
-        if map.cells.iter().flatten().any(|c| *c == cell) {
-            let color = rate_cell_color(cell);
-            chart
-                .draw_series(std::iter::empty::<Rectangle<(f64, f64)>>())
-                .map_err(err)?
-                .label(cell.name())
-                .legend(move |(x, y)| {
-                    Rectangle::new([(x, y - 5), (x + 14, y + 5)], color.filled())
-                });
-        }
-    }
-    // The closed-form limit, row by row on a fine d_c grid.
-    let mut fine = map.scene.clone();
-    let limit: Vec<(f64, f64)> = crate::stability::log_space(y0, y1, 200)
-        .into_iter()
-        .map(|dc| {
-            fine.decay = dc;
-            (fine.rate_stability_limit(map.law, map.gamma_crit), dc)
-        })
-        .filter(|(dt, _)| *dt >= x0 && *dt <= x1)
-        .collect();
-    chart
-        .draw_series(LineSeries::new(limit, BLACK.stroke_width(3)))
-        .map_err(err)?
-        .label(if map.law == RateLaw::DecayFrozen {
-            "closed-form limit Δt = |dτ/dv|/k_s"
+    let (x0, x1) = (edge(&map.dts, 0, false), edge(&map.dts, nx - 1, true));
+    let (y0, y1) = (edge(&map.decays, 0, false), edge(&map.decays, ny - 1, true));
+    let mut legend: Vec<(Swatch, String)> =
+        [RateCell::Settles, RateCell::Oscillates, RateCell::CutBack]
+            .into_iter()
+            .filter(|c| map.cells.iter().flatten().any(|x| x == c))
+            .map(|c| (Swatch::Box(rate_cell_color(c)), c.name().to_string()))
+            .collect();
+    legend.push((
+        Swatch::Line(BLACK, Marker::None, false),
+        if map.law == RateLaw::DecayFrozen {
+            "closed-form limit Δt = |dτ/dv|/k_s".into()
         } else {
-            "closed-form limit Δt = 2|dτ/dv|/k_s"
-        })
-        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], BLACK.stroke_width(3)));
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 12))
-        .draw()
-        .map_err(err)?;
-    root.present().map_err(err)
+            "closed-form limit Δt = 2|dτ/dv|/k_s".into()
+        },
+    ));
+    let f = Frame {
+        title: &map.title(),
+        x: Axis {
+            range: (x0, x1),
+            title: "time step Δt (s)".into(),
+        },
+        y: Axis {
+            range: (y0, y1),
+            title: "decay coefficient d_c (s/m)".into(),
+        },
+        top: None,
+        legend,
+        notes: vec![format!(
+            "Each cell: steady sliding at v = {} m/s from first contact over two time units; it settles when the end stress is τ_law(v) to 1e-9. Rows with d_c·v ≤ 1 are held to the limit within one cell.",
+            map.scene.rates.first().copied().unwrap_or(0.0)
+        )],
+        size: (760, 560),
+    };
+    frame(path, &f, |chart| {
+        for (r, row) in map.cells.iter().enumerate() {
+            chart
+                .draw_series(row.iter().enumerate().map(|(c, cell)| {
+                    Rectangle::new(
+                        [
+                            (edge(&map.dts, c, false), edge(&map.decays, r, false)),
+                            (edge(&map.dts, c, true), edge(&map.decays, r, true)),
+                        ],
+                        rate_cell_color(*cell).filled(),
+                    )
+                }))
+                .map_err(err)?;
+        }
+        let mut fine = map.scene.clone();
+        let limit: Vec<(f64, f64)> = crate::stability::log_space(y0, y1, 200)
+            .into_iter()
+            .map(|dc| {
+                fine.decay = dc;
+                (fine.rate_stability_limit(map.law, map.gamma_crit), dc)
+            })
+            .filter(|(dt, _)| *dt >= x0 && *dt <= x1)
+            .collect();
+        chart
+            .draw_series(LineSeries::new(limit, BLACK.stroke_width(3)))
+            .map_err(err)?;
+        Ok(())
+    })
 }

@@ -420,7 +420,35 @@ table = [[0.0, 20.0, 300.0], [100.0, 60.0, 300.0], [0.0, 60.0, 400.0], [100.0, 2
 view_factor = 0.8
 stefan_boltzmann = 5.670374419e-8
 absolute_zero = -273.15
+
+[interactions.T2PAR.conductance]
+law = "gas-gap"
+k_gas = 0.026
+g0 = 2e-6
+
+[interactions.T2PAR.radiation]
+view_factor = VIEW_FACTOR
+stefan_boltzmann = 5.670374419e-8
+absolute_zero = -273.15
 "#;
+
+/// T2's plates: emissivities of the two facing surfaces, gap, gas, plate thicknesses and
+/// conductivities (SI, °C).
+const T2_EPS: [f64; 2] = [0.6, 0.7];
+const T2_GAP: f64 = 1e-3;
+const T2_K_GAS: f64 = 0.026;
+const T2_G0: f64 = 2e-6;
+const T2_PLATES: [(f64, f64); 2] = [(0.01, 15.0), (0.02, 45.0)];
+
+/// F = 1/(1/ε_A + 1/ε_B − 1): two parallel grey plates, view factor 1.
+fn t2_view_factor() -> f64 {
+    1.0 / (1.0 / T2_EPS[0] + 1.0 / T2_EPS[1] - 1.0)
+}
+
+/// The configuration file's text, with T2's view factor computed from the emissivities.
+fn thermal_config() -> String {
+    THERMAL_CONFIG.replace("VIEW_FACTOR", &format!("{:e}", t2_view_factor()))
+}
 
 /// T1: two bars (L_A/k_A, L_B/k_B) between θ_H and θ_C with gap conductance h at the interface,
 /// solved for the interface temperatures by Newton as a host would: AK(1) from gapcon_,
@@ -512,6 +540,89 @@ fn t2(rows: &mut Vec<Row>) {
             computed: k * (ta - tb),
             // a⁴ − b⁴ loses digits when a ≈ b: allow round-off relative to a⁴.
             tolerance: 1e-12 * 0.8 * 5.670374419e-8 * a.powi(4).max(b.powi(4)),
+        });
+    }
+}
+
+/// T2, steady two-plate problem: plate A (L_A, k_A) held at θ_H on its outer face, plate B
+/// (L_B, k_B) at θ_C, an open gap d between them carrying gas conduction k_gas/(d + g₀) and
+/// grey-body radiation F·σ·((θ_A − θ_Z)⁴ − (θ_B − θ_Z)⁴) in parallel (one interaction with both
+/// laws; their conductances add). Closed form: for interface temperatures θ_A*, θ_B* the flux is
+/// q* = k_gas/(d + g₀)·(θ_A* − θ_B*) + F·σ·(a⁴ − b⁴), and the outer temperatures that hold it are
+/// θ_H = θ_A* + q*·L_A/k_A, θ_C = θ_B* − q*·L_B/k_B. The host is given θ_H and θ_C only and solves
+/// for the interface temperatures by Newton with AK(1) from gapcon_ and ∂q/∂θ from
+/// ifl_gap_conductance, as T1 does; rows: q, θ_A, θ_B, and the radiative share of q.
+fn t2_plates(rows: &mut Vec<Row>) {
+    let sigma = 5.670374419e-8;
+    let f = t2_view_factor();
+    let h_gas = T2_K_GAS / (T2_GAP + T2_G0);
+    let [(la, ka), (lb, kb)] = T2_PLATES;
+    let (ga, gb) = (ka / la, kb / lb);
+    for (ta_star, tb_star) in [(600.0, 150.0), (80.0, 20.0)] {
+        let (a, b) = (ta_star + 273.15f64, tb_star + 273.15f64);
+        let q_rad = f * sigma * (a.powi(4) - b.powi(4));
+        let q_star = h_gas * (ta_star - tb_star) + q_rad;
+        let th = ta_star + q_star / ga;
+        let tc = tb_star - q_star / gb;
+        // The host: Newton on the two interface balances, started from the outer temperatures.
+        let (mut ta, mut tb) = (th, tc);
+        let name = std::ffi::CString::new("T2PAR").unwrap_or_default();
+        let mut iterations = 0;
+        for it in 1..=60 {
+            iterations = it;
+            let k = GapconCall::new("T2PAR", T2_GAP, 0.0, ta, tb).call();
+            let q = k * (ta - tb);
+            let (r1, r2) = (ga * (th - ta) - q, q - gb * (tb - tc));
+            let mut d = IflConductance::default();
+            // SAFETY: valid name and output.
+            let st = unsafe { ifl_gap_conductance(name.as_ptr(), T2_GAP, 0.0, ta, tb, &mut d) };
+            assert_eq!(st, IflStatus::Ok);
+            let (qa, qb) = (d.dq_dtheta_a, d.dq_dtheta_b);
+            let (j11, j12, j21, j22) = (-ga - qa, -qb, qa, qb - gb);
+            let det = j11 * j22 - j12 * j21;
+            let da = -(r1 * j22 - j12 * r2) / det;
+            let db = -(j11 * r2 - r1 * j21) / det;
+            // The interface temperatures lie between the outer ones: keep the iterates there
+            // (a full step from the outer temperatures can overshoot below absolute zero).
+            ta = (ta + da).clamp(tc, th);
+            tb = (tb + db).clamp(tc, th);
+            if da.abs().max(db.abs()) < 1e-13 * th.abs().max(1.0) {
+                break;
+            }
+        }
+        let k = GapconCall::new("T2PAR", T2_GAP, 0.0, ta, tb).call();
+        let q = k * (ta - tb);
+        let case = format!("2 plates, gas ∥ rad., θ_H {th:.1}, θ_C {tc:.1} °C");
+        rows.push(Row {
+            scene: "T2",
+            case: format!("{case} ({iterations} it.)"),
+            quantity: "flux q",
+            exact: q_star,
+            computed: q,
+            tolerance: 1e-10 * q_star,
+        });
+        for (quantity, exact, computed) in [
+            ("interface θ_A", ta_star, ta),
+            ("interface θ_B", tb_star, tb),
+        ] {
+            rows.push(Row {
+                scene: "T2",
+                case: case.clone(),
+                quantity,
+                exact,
+                computed,
+                tolerance: 1e-10 * (th - tc).abs(),
+            });
+        }
+        // The radiative part of the converged flux, F·σ·(a⁴ − b⁴) at the computed θ_A, θ_B.
+        let (ac, bc) = (ta + 273.15, tb + 273.15);
+        rows.push(Row {
+            scene: "T2",
+            case,
+            quantity: "radiative share of q",
+            exact: q_rad / q_star,
+            computed: f * sigma * (ac.powi(4) - bc.powi(4)) / q,
+            tolerance: 1e-9,
         });
     }
 }
@@ -633,7 +744,7 @@ fn a1(rows: &mut Vec<Row>) {
 pub fn run() -> Result<Vec<Row>, String> {
     let config =
         std::env::temp_dir().join(format!("interfacial-scenes-{}.toml", std::process::id()));
-    std::fs::write(&config, THERMAL_CONFIG)
+    std::fs::write(&config, thermal_config())
         .map_err(|e| format!("cannot write {}: {e}", config.display()))?;
     // SAFETY: called from main before any other thread exists and before the first call into
     // the library.
@@ -647,6 +758,7 @@ pub fn run() -> Result<Vec<Row>, String> {
     f5(&mut rows);
     t1(&mut rows);
     t2(&mut rows);
+    t2_plates(&mut rows);
     a1(&mut rows);
     let _ = std::fs::remove_file(&config);
     Ok(rows)

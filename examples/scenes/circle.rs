@@ -25,8 +25,10 @@ pub struct Circle {
 /// One F2 run: the lag error, `fric_` calls and wall time.
 #[derive(Clone, Copy, Debug)]
 pub struct CircleRun {
-    /// |φ − asin(γ_crit/R)|.
+    /// |φ − asin(γ_crit/R)|, φ measured from the end-of-step tangent of the circle.
     pub error: f64,
+    /// The same with φ measured from the chord of the last step (the direction of `DGAM`).
+    pub chord_error: f64,
     /// Largest ||τ| − μp| over the last turn.
     pub magnitude_error: f64,
     /// `fric_` calls.
@@ -90,9 +92,21 @@ impl Circle {
         let cross = tangent[0] * c.tau[1] - tangent[1] * c.tau[0];
         let dot = tangent[0] * c.tau[0] + tangent[1] * c.tau[1];
         let lag = cross.atan2(dot).abs();
+        // The lag from the chord of the last step, the direction the increment DGAM moved along
+        // (the tangent at the step's midpoint angle θ − Δθ/2).
+        let mid = theta - 0.5 * dtheta;
+        let chord = [-mid.sin(), mid.cos()];
+        let chord_lag = (chord[0] * c.tau[1] - chord[1] * c.tau[0])
+            .atan2(chord[0] * c.tau[0] + chord[1] * c.tau[1])
+            .abs();
         CircleRun {
             error: if ok {
                 (lag - exact).abs()
+            } else {
+                f64::INFINITY
+            },
+            chord_error: if ok {
+                (chord_lag - exact).abs()
             } else {
                 f64::INFINITY
             },

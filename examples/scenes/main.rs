@@ -26,6 +26,7 @@ mod checks;
 mod circle;
 mod column;
 mod consolidation;
+mod findings;
 mod oscillator;
 mod pull;
 mod rate_map;
@@ -38,7 +39,7 @@ use std::io::{IsTerminal as _, Write as _};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use scene::{Point, Scene, run_point};
+use scene::{Point, Scene, Timing, run_point_timed};
 use stability::{Map, measured_boundary, run_map, theoretical_boundary};
 
 /// The built-in scene files, in the order they run.
@@ -125,7 +126,7 @@ pub fn sweep(scene: &Scene, quick: bool, mut tick: impl FnMut(&str)) -> Vec<Poin
     let mut points = Vec::new();
     for m in &scene.methods {
         for &s in steps {
-            let p = run_point(scene, m, s);
+            let p = run_point_timed(scene, m, s, Timing::MAIN);
             tick(&format!("{}: {} at step {s}", scene.file.id, m.spec.label));
             points.push(p);
         }
@@ -135,12 +136,12 @@ pub fn sweep(scene: &Scene, quick: bool, mut tick: impl FnMut(&str)) -> Vec<Poin
 
 fn write_points(path: &Path, points: &[Point]) -> Result<(), String> {
     let mut s = String::from(
-        "scene,method,step,relative_step,error,claim,meets_claim,verdict,calls,wall_s,ns_per_call,details\n",
+        "scene,method,step,relative_step,error,claim,meets_claim,verdict,calls,wall_s,wall_min_s,wall_max_s,repeats,runs_per_repeat,ns_per_call,details\n",
     );
     for p in points {
         let _ = writeln!(
             s,
-            "{},\"{}\",{:e},{:e},{:e},{:e},{},{},{},{:e},{:.1},\"{}\"",
+            "{},\"{}\",{:e},{:e},{:e},{:e},{},{},{},{:e},{:e},{:e},{},{},{:.1},\"{}\"",
             p.scene,
             p.method,
             p.step,
@@ -151,6 +152,10 @@ fn write_points(path: &Path, points: &[Point]) -> Result<(), String> {
             p.verdict,
             p.calls,
             p.wall,
+            p.wall_range[0],
+            p.wall_range[1],
+            p.repeats[0],
+            p.repeats[1],
             p.wall / p.calls.max(1) as f64 * 1e9,
             p.details
                 .iter()
@@ -229,8 +234,24 @@ fn print_points(points: &[Point]) -> usize {
     failed
 }
 
+/// The machine the times were taken on: CPU model and logical CPUs.
+fn machine() -> String {
+    let model = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|t| {
+            t.lines()
+                .find(|l| l.starts_with("model name"))
+                .and_then(|l| l.split_once(':'))
+                .map(|(_, m)| m.trim().to_string())
+        })
+        .unwrap_or_else(|| "unknown CPU".into());
+    let cpus = std::thread::available_parallelism().map_or(0, std::num::NonZero::get);
+    format!("{model}, {cpus} logical CPUs")
+}
+
 fn main() {
     let opts = options();
+    let machine = machine();
     if let Err(e) = std::fs::create_dir_all(&opts.out) {
         eprintln!("scenes: cannot create {}: {e}", opts.out.display());
         std::process::exit(2);
@@ -316,46 +337,56 @@ fn main() {
     let mut outputs = Vec::new();
     failures += consolidation::join(p1, &mut check_rows, &mut outputs);
     for scene in &scenes {
-        let points = sweep(scene, opts.quick, |w| progress.tick(w));
+        let mut points = sweep(scene, opts.quick, |w| progress.tick(w));
+        if scene.kind == "circle" {
+            // The same runs' lag error against the chord of the last step (second order), as
+            // its own curve for the middle γ_crit/R (the three coincide).
+            let chord: Vec<Point> = points
+                .iter()
+                .filter(|p| p.method.ends_with("0.1") && p.details.len() > 2)
+                .map(|p| Point {
+                    method: format!("{}, against the chord", p.method),
+                    error: p.details[2],
+                    claim: f64::INFINITY,
+                    ..p.clone()
+                })
+                .collect();
+            points.extend(chord);
+        }
         let id = &scene.file.id;
         let csv = opts.out.join(format!("{id}-work-precision.csv"));
         let time_svg = opts.out.join(format!("{id}-error-vs-time.svg"));
         let calls_svg = opts.out.join(format!("{id}-error-vs-calls.svg"));
-        // Where the curves leave room for the legend.
-        let legend = || {
-            if scene.kind == "pull" {
-                plotters::prelude::SeriesLabelPosition::MiddleRight
-            } else {
-                plotters::prelude::SeriesLabelPosition::LowerLeft
-            }
-        };
         let error_label = match scene.kind {
-            "oscillator" => "max relative error (T, x₂, energy/cycle)",
-            "pull" => "max |γ − γ_exact| / (τ_c/K)",
-            "velocity" => "mean |τ − τ_law(v)| / swing of τ_law",
-            _ => "lag angle error (rad)",
+            "oscillator" => "largest relative error of T, x₂, energy/cycle (–)",
+            "pull" => "max |γ − γ_exact| / (τ_c/K) (–)",
+            "velocity" => "mean |τ − τ_law(v)| / swing of τ_law (–)",
+            _ => "lag angle error (rad), against the end-of-step tangent unless marked",
         };
+        let highlights = findings::highlights(id);
         let written = write_points(&csv, &points)
             .and_then(|()| {
                 charts::work_precision(
                     &time_svg,
                     &format!("{}: error against wall time", scene.file.title),
-                    "wall time per run (s)",
+                    "wall time per run (s): median of 5 repeats, bar = fastest..slowest",
                     error_label,
                     &points,
-                    legend(),
-                    |p| p.wall,
+                    charts::Cost::Wall,
+                    &highlights,
+                    &machine,
                 )
             })
             .and_then(|()| {
                 charts::work_precision(
                     &calls_svg,
                     &format!("{}: error against fric_ calls", scene.file.title),
-                    "fric_ calls per run (Newton iterations included)",
+                    "fric_ calls per run, Newton iterations included (–)",
                     error_label,
                     &points,
-                    legend(),
-                    |p| p.calls as f64,
+                    charts::Cost::Calls,
+                    &highlights,
+                    &machine,
                 )
             });
         if let Err(e) = written {
@@ -408,8 +439,9 @@ fn main() {
                     Ok(map) => {
                         let csv = opts.out.join(format!("{id}-map-{}.csv", i + 1));
                         let svg = opts.out.join(format!("{id}-map-{}.svg", i + 1));
+                        let (marks, notes) = findings::map_marks(&map);
                         if let Err(e) = write_map(&csv, &map)
-                            .and_then(|()| charts::stability_map(&svg, o, &map))
+                            .and_then(|()| charts::stability_map(&svg, o, &map, &marks, &notes))
                         {
                             eprintln!("\nscenes: {e}");
                             failures += 1;
@@ -448,7 +480,9 @@ fn main() {
             continue;
         };
         println!("\nStability map: {}", map.spec.label);
-        let explicit = map.integrator == oscillator::Integrator::Explicit;
+        // The explicit boundary is held to the theory for a host that stops diverging runs.
+        let explicit = map.integrator == oscillator::Integrator::Explicit
+            && map.host == oscillator::Host::Guarded;
         for r in 0..map.gammas.len() {
             let counts = stability::Cell::ALL
                 .iter()
@@ -510,6 +544,23 @@ fn main() {
             );
         }
     }
+    if opts.point.is_none() {
+        let map_refs: Vec<&Map> = maps.iter().map(|(_, m)| m).collect();
+        let mut found = findings::evaluate(&all_points, &map_refs, &rate_maps);
+        found.push(findings::run_time(
+            progress.start.elapsed().as_secs_f64(),
+            opts.quick,
+        ));
+        println!("\nFindings (the figures README.md and docs/scenes.md quote, from this run)\n");
+        failures += findings::print(&found);
+        let path = opts.out.join("findings.csv");
+        if let Err(e) = std::fs::write(&path, findings::csv(&found)) {
+            eprintln!("scenes: cannot write {}: {e}", path.display());
+            failures += 1;
+        }
+        outputs.push(path);
+    }
+    println!("\nTimes: median of 5 repeats of ≥ 1 ms each, on {machine}");
     println!("\nWritten:");
     for p in &outputs {
         println!("  {}", p.display());

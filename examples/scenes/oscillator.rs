@@ -180,6 +180,12 @@ pub struct Run {
     pub reversals: usize,
     /// Relative errors in T, x₂ (relative to A) and the energy per cycle; ∞ when unmeasurable.
     pub errors: [f64; 3],
+    /// Increments the library refused (`PNEWDT` < 1) and the unguarded host redid smaller.
+    pub cutbacks: usize,
+    /// Largest |x| over the run relative to the cycle's size (∞ once not finite).
+    pub peak: f64,
+    /// The library's message for the first refusal.
+    pub refused: String,
 }
 
 impl Run {
@@ -208,8 +214,34 @@ impl Run {
 /// Maximum host Newton iterations per increment.
 pub const MAX_NEWTON: usize = 30;
 
+/// How the host watches its own motion.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Host {
+    /// Stops the run as diverged once |x| passes 1000 × the cycle's size.
+    Guarded,
+    /// No check of its own (as a host that trusts the library to flag a failed increment): it
+    /// passes whatever motion it computed to `fric_`, and when `fric_` answers `PNEWDT` < 1 it
+    /// redoes the increment from the last converged state with Δt·`PNEWDT`, giving up after
+    /// [`MAX_CUTBACKS`] cut-backs in a row.
+    Unguarded,
+}
+
+/// Cut-backs in a row after which the unguarded host gives up.
+pub const MAX_CUTBACKS: usize = 4;
+
 /// Simulates F6 from stuck at x = 0 through `cycles` cycles after the first slip.
 pub fn simulate(o: &Oscillator, integrator: Integrator, stick: Stick, dt: f64) -> Run {
+    simulate_host(o, integrator, stick, dt, Host::Guarded)
+}
+
+/// [`simulate`] with the host's own divergence check on or off.
+pub fn simulate_host(
+    o: &Oscillator,
+    integrator: Integrator,
+    stick: Stick,
+    dt: f64,
+    host: Host,
+) -> Run {
     let start = Instant::now();
     let (gamma_crit, stick_code) = match stick {
         Stick::Elastic { gamma_crit } => (gamma_crit, 0.0),
@@ -257,7 +289,13 @@ pub fn simulate(o: &Oscillator, integrator: Integrator, stick: Stick, dt: f64) -
         cycles: o.cycles as usize,
         reversals: 0,
         errors: [f64::INFINITY; 3],
+        cutbacks: 0,
+        peak: 0.0,
+        refused: String::new(),
     };
+    let mut dt_now = dt;
+    let mut t_now = 0.0f64;
+    let mut in_a_row = 0;
     let mut dissipated = 0.0;
     let mut phase_start = 0.0;
     for n in 0..steps {
@@ -268,22 +306,34 @@ pub fn simulate(o: &Oscillator, integrator: Integrator, stick: Stick, dt: f64) -
         let sv = [c.statev[0], c.statev[1], c.statev[2]];
         let lm_start = c.lm;
         let step = match integrator {
-            Integrator::Explicit => {
-                let x_new = x + dt * v;
+            Integrator::Explicit => loop {
+                let x_new = x + dt_now * v;
                 c.tau[0] = tau;
                 c.lm = 0;
-                c.dgam[0] = v0 * dt - (x_new - x);
+                c.statev[..3].copy_from_slice(&sv);
+                c.dgam[0] = v0 * dt_now - (x_new - x);
                 c.pnewdt = 1e36;
                 c.call();
                 run.calls += 1;
-                if c.pnewdt < 1.0 {
-                    Err(Verdict::CutBack)
-                } else {
+                if c.pnewdt >= 1.0 {
+                    in_a_row = 0;
                     let a_new = (-k * x_new + c.tau[0]) / m;
-                    v += dt * a_new;
-                    Ok((x_new, v, a_new, c.tau[0]))
+                    break Ok((x_new, v + dt_now * a_new, a_new, c.tau[0]));
                 }
-            }
+                if host == Host::Guarded {
+                    break Err(Verdict::CutBack);
+                }
+                // The library refused the increment: cut back as it asks and redo it.
+                run.cutbacks += 1;
+                in_a_row += 1;
+                if run.refused.is_empty() {
+                    run.refused = FricCall::last_error();
+                }
+                if in_a_row > MAX_CUTBACKS {
+                    break Err(Verdict::CutBack);
+                }
+                dt_now *= c.pnewdt;
+            },
             Integrator::Implicit { alpha } => {
                 implicit_step(&mut c, o, alpha, dt, (x, v, a, tau), sv, lm_start, &mut run)
             }
@@ -296,7 +346,12 @@ pub fn simulate(o: &Oscillator, integrator: Integrator, stick: Stick, dt: f64) -
                 break;
             }
         };
-        if !x_new.is_finite() || x_new.abs() > 1e3 * scale {
+        run.peak = if x_new.is_finite() {
+            run.peak.max(x_new.abs() / scale)
+        } else {
+            f64::INFINITY
+        };
+        if host == Host::Guarded && (!x_new.is_finite() || x_new.abs() > 1e3 * scale) {
             run.verdict = Verdict::Diverged;
             break;
         }
@@ -307,7 +362,16 @@ pub fn simulate(o: &Oscillator, integrator: Integrator, stick: Stick, dt: f64) -
             Stick::Elastic { .. } => c.statev[2] != 1.0,
             Stick::Exact => c.lm == 1,
         };
-        let t_new = (n + 1) as f64 * dt;
+        t_now += if integrator == Integrator::Explicit {
+            dt_now
+        } else {
+            dt
+        };
+        let t_new = if host == Host::Guarded {
+            (n + 1) as f64 * dt
+        } else {
+            t_now
+        };
         if tau_new * tau < 0.0 {
             run.reversals += 1;
         }

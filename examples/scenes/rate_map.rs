@@ -120,7 +120,7 @@ impl RateMap {
     /// Title of the map.
     pub fn title(&self) -> String {
         format!(
-            "F4 rate stability, decay law {}, γ_crit = {:e}, v = {}",
+            "F4 rate stability, decay law {}, γ_crit = {:e} m, v = {} m/s",
             if self.law == RateLaw::DecayFrozen {
                 "with μ frozen"
             } else {

@@ -11,6 +11,8 @@
 //! implicitly or with μ frozen, the adhesive law): a new `law` value, a variant of [`Law`] and a
 //! match arm in [`Method::parse`] and in [`run_point`] — nothing else changes.
 
+use std::time::Instant;
+
 use serde::Deserialize;
 
 use crate::circle::Circle;
@@ -104,6 +106,12 @@ pub struct MapSpec {
     pub quick_points: [usize; 2],
     /// Relative error below which a completed run counts as accurate.
     pub accurate: f64,
+    /// "guarded" (default: the host stops a diverging run itself) or "unguarded" (the host
+    /// trusts the library and cuts back when `fric_` answers `PNEWDT` < 1).
+    pub host: Option<String>,
+    /// Cycles simulated per cell (default: the scene's `cycles`); an unguarded host needs long
+    /// runs for an unstable motion to reach the overflow the library refuses.
+    pub cycles: Option<u32>,
 }
 
 /// A law.
@@ -319,8 +327,12 @@ pub struct Point {
     pub details: Vec<f64>,
     /// `fric_` calls in the run.
     pub calls: usize,
-    /// Wall time of the run, seconds.
+    /// Wall time of one run, seconds: the median of the timed repeats.
     pub wall: f64,
+    /// Fastest and slowest of the timed repeats (seconds per run).
+    pub wall_range: [f64; 2],
+    /// Timed repeats, and runs inside each (each repeat lasts ≥ `Timing::min_repeat`).
+    pub repeats: [usize; 2],
     /// How the run ended ("ok", "chattering", "diverged", "newton-failed", "cut-back").
     pub verdict: &'static str,
     /// The claimed bound at this step (∞ when no claim applies).
@@ -334,8 +346,66 @@ impl Point {
     }
 }
 
+/// How a point is timed.
+#[derive(Clone, Copy, Debug)]
+pub struct Timing {
+    /// Timed repeats (the median is reported, the range drawn as an error bar).
+    pub repeats: usize,
+    /// Each repeat runs the scene as many times as it takes to last at least this long (s).
+    pub min_repeat: f64,
+}
+
+impl Timing {
+    /// The main job: the median of 5 repeats of ≥ 1 ms each.
+    pub const MAIN: Timing = Timing {
+        repeats: 5,
+        min_repeat: 1e-3,
+    };
+    /// One run, timed once (tests/scenes_driver.rs: the answer, not the time).
+    #[allow(dead_code)]
+    pub const ONCE: Timing = Timing {
+        repeats: 1,
+        min_repeat: 0.0,
+    };
+}
+
+/// Runs `run` once for its answer, then times it: `timing.repeats` repeats, each of enough
+/// runs to last `timing.min_repeat`. Returns the answer, the median time per run, the fastest and
+/// slowest repeat, and [repeats, runs per repeat].
+fn timed<R>(timing: Timing, mut run: impl FnMut() -> R) -> (R, f64, [f64; 2], [usize; 2]) {
+    let t = Instant::now();
+    let answer = run();
+    let once = t.elapsed().as_secs_f64();
+    if timing.repeats <= 1 {
+        return (answer, once, [once, once], [1, 1]);
+    }
+    let inner = ((timing.min_repeat / once.max(1e-9)).ceil() as usize).clamp(1, 1_000_000);
+    let mut per_run: Vec<f64> = (0..timing.repeats)
+        .map(|_| {
+            let t = Instant::now();
+            for _ in 0..inner {
+                std::hint::black_box(run());
+            }
+            t.elapsed().as_secs_f64() / inner as f64
+        })
+        .collect();
+    per_run.sort_by(f64::total_cmp);
+    let n = per_run.len();
+    let median = if n % 2 == 1 {
+        per_run[n / 2]
+    } else {
+        0.5 * (per_run[n / 2 - 1] + per_run[n / 2])
+    };
+    (
+        answer,
+        median,
+        [per_run[0], per_run[n - 1]],
+        [timing.repeats, inner],
+    )
+}
+
 /// Runs one method at one step.
-pub fn run_point(scene: &Scene, method: &Method, step: f64) -> Point {
+pub fn run_point_timed(scene: &Scene, method: &Method, step: f64, timing: Timing) -> Point {
     let relative_step = scene.reference_step(step);
     let spec = &method.spec;
     let claim = if spec.claim_max_step.is_none_or(|m| step <= m)
@@ -354,22 +424,19 @@ pub fn run_point(scene: &Scene, method: &Method, step: f64) -> Point {
         details: Vec::new(),
         calls: 0,
         wall: 0.0,
+        wall_range: [0.0; 2],
+        repeats: [0; 2],
         verdict: "ok",
         claim,
     };
     if let Some(o) = &scene.file.oscillator {
-        // Timing: the best of three runs (the first one also pays for cold caches).
-        let mut run = simulate(o, method.integrator, method.stick, step);
-        for _ in 0..2 {
-            let again = simulate(o, method.integrator, method.stick, step);
-            if again.wall < run.wall {
-                run = again;
-            }
-        }
+        let (run, wall, range, repeats) = timed(timing, || {
+            simulate(o, method.integrator, method.stick, step)
+        });
         p.error = run.error();
         p.details = run.errors.to_vec();
         p.calls = run.calls;
-        p.wall = run.wall;
+        (p.wall, p.wall_range, p.repeats) = (wall, range, repeats);
         p.verdict = match run.verdict {
             Verdict::Completed if run.stick_unstable(o) => "unstable",
             Verdict::Completed if run.chattering() => "chattering",
@@ -384,48 +451,35 @@ pub fn run_point(scene: &Scene, method: &Method, step: f64) -> Point {
             Stick::Exact => c.radius,
         };
         let per_turn = step.round().max(3.0) as usize;
-        let mut run = c.run(gamma_crit, per_turn);
-        for _ in 0..2 {
-            let again = c.run(gamma_crit, per_turn);
-            if again.wall < run.wall {
-                run = again;
-            }
-        }
+        let (run, wall, range, repeats) = timed(timing, || c.run(gamma_crit, per_turn));
         p.error = run.error;
-        p.details = vec![run.error, run.magnitude_error / (c.mu * c.pressure)];
+        // Lag error against the tangent, |τ| error relative to μp, lag error against the chord.
+        p.details = vec![
+            run.error,
+            run.magnitude_error / (c.mu * c.pressure),
+            run.chord_error,
+        ];
         p.calls = run.calls;
-        p.wall = run.wall;
+        (p.wall, p.wall_range, p.repeats) = (wall, range, repeats);
         p.verdict = if run.ok { "ok" } else { "cut-back" };
     } else if let Some(f1) = &scene.file.pull {
         let per_stretch = step.round().max(1.0) as usize;
-        let mut run = f1.run(method.stick, per_stretch);
-        for _ in 0..2 {
-            let again = f1.run(method.stick, per_stretch);
-            if again.wall < run.wall {
-                run = again;
-            }
-        }
+        let (run, wall, range, repeats) = timed(timing, || f1.run(method.stick, per_stretch));
         p.error = run.error;
         p.details = vec![run.error];
         p.calls = run.calls;
-        p.wall = run.wall;
+        (p.wall, p.wall_range, p.repeats) = (wall, range, repeats);
         p.verdict = if run.ok { "ok" } else { "newton-failed" };
     } else if let (Some(v), Law::Rate(law)) = (&scene.file.velocity, method.law) {
         let gamma_crit = match method.stick {
             Stick::Elastic { gamma_crit } => gamma_crit,
             Stick::Exact => v.hold,
         };
-        let mut run = v.run(law, gamma_crit, step);
-        for _ in 0..2 {
-            let again = v.run(law, gamma_crit, step);
-            if again.wall < run.wall {
-                run = again;
-            }
-        }
+        let (run, wall, range, repeats) = timed(timing, || v.run(law, gamma_crit, step));
         p.error = run.error;
         p.details = vec![run.error, run.steady_error];
         p.calls = run.calls;
-        p.wall = run.wall;
+        (p.wall, p.wall_range, p.repeats) = (wall, range, repeats);
         // PNEWDT < 1: the library's own local solve asked for a smaller step.
         p.verdict = if !run.ok {
             "cut-back"

@@ -2,7 +2,7 @@
 //! stable and accurate, stable but inaccurate, chattering (spurious stick/slip flips), diverged,
 //! Newton failed, or a cut-back request from the library (PNEWDT < 1, never a NaN).
 
-use crate::oscillator::{Integrator, Oscillator, Stick, Verdict, simulate};
+use crate::oscillator::{Host, Integrator, Oscillator, Stick, Verdict, simulate_host};
 use crate::scene::MapSpec;
 
 /// The class of one cell.
@@ -72,6 +72,12 @@ pub struct Map {
     pub errors: Vec<Vec<f64>>,
     /// Total `fric_` calls.
     pub calls: usize,
+    /// The host of the map's runs.
+    pub host: Host,
+    /// Increments the library refused (`PNEWDT` < 1), over the whole map.
+    pub cutbacks: usize,
+    /// The library's message for the first refusal, if any.
+    pub refused: String,
 }
 
 /// `n` log-spaced values from `a` to `b`.
@@ -108,6 +114,23 @@ pub fn run_map(
     mut progress: impl FnMut(usize, usize),
 ) -> Result<Map, String> {
     let integrator = integrator(spec)?;
+    let host = match spec.host.as_deref() {
+        None | Some("guarded") => Host::Guarded,
+        Some("unguarded") if integrator == Integrator::Explicit => Host::Unguarded,
+        Some(other) => {
+            return Err(format!(
+                "map '{}': host '{other}' (expected guarded, or unguarded with explicit stepping)",
+                spec.label
+            ));
+        }
+    };
+    let mut o = *o;
+    if let Some(cycles) = spec.cycles {
+        o.cycles = cycles;
+        o.validate()
+            .map_err(|e| format!("map '{}': {e}", spec.label))?;
+    }
+    let o = &o;
     let (nc, nr) = if quick {
         (spec.quick_points[0], spec.quick_points[1])
     } else {
@@ -123,14 +146,24 @@ pub fn run_map(
         cells: Vec::new(),
         errors: Vec::new(),
         calls: 0,
+        host,
+        cutbacks: 0,
+        refused: String::new(),
     };
     for (r, &g) in gammas.iter().enumerate() {
         let mut row = Vec::new();
         let mut errs = Vec::new();
         for &dt in &dts {
-            let run = simulate(o, integrator, Stick::Elastic { gamma_crit: g }, dt);
+            let run = simulate_host(o, integrator, Stick::Elastic { gamma_crit: g }, dt, host);
             map.calls += run.calls;
+            map.cutbacks += run.cutbacks;
+            if map.refused.is_empty() {
+                map.refused.clone_from(&run.refused);
+            }
             let cell = match run.verdict {
+                _ if run.cutbacks > 0 => Cell::CutBack,
+                // An unguarded host does not stop a diverging run: classify it here.
+                _ if !(run.peak <= 1e3) => Cell::Diverged,
                 Verdict::Diverged => Cell::Diverged,
                 Verdict::NewtonFailed => Cell::NewtonFailed,
                 Verdict::CutBack => Cell::CutBack,

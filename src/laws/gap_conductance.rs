@@ -30,16 +30,21 @@ pub enum Conduction {
         /// Smallest gap used (closed or overclosed points use it).
         min_gap: f64,
     },
-    /// Solid-spot conductance of plastically deforming rough surfaces (Cooper–Mikic–Yovanovich):
-    /// h = c·(k_s·m/σ)·(p/H_c)^0.95 for p > 0, 0 otherwise.
+    /// Solid-spot conductance of plastically deforming rough surfaces (Cooper–Mikic–Yovanovich;
+    /// the correlation h = 1.25·k_s·(m/σ)·(p/H_c)^0.95 of M. M. Yovanovich, "Thermal contact
+    /// correlations", AIAA Paper 81-1164, 1981, in Progress in Astronautics and Aeronautics
+    /// vol. 83, 1982): h = c·(k_s·m/σ)·(p/H_c)^0.95 for 0 < p ≤ H_c, 0 for p ≤ 0; p > H_c is
+    /// refused (the real contact area fraction p/H_c of the plastic model would exceed 1).
     SolidSpot {
-        /// Correlation coefficient (1.25 in the literature).
+        /// Correlation coefficient (1.25 in the correlation).
         c: f64,
         /// Harmonic mean conductivity of the two solids, 2k₁k₂/(k₁ + k₂).
         k_s: f64,
-        /// Effective RMS asperity slope.
+        /// Effective mean absolute profile slope, sqrt(m₁² + m₂²) of the two surfaces' mean
+        /// |dz/dx| (not the RMS slope: for a Gaussian profile the RMS slope is sqrt(π/2) ≈ 1.25
+        /// times larger and would overpredict h by that factor).
         m: f64,
-        /// Effective RMS roughness.
+        /// Effective RMS roughness sqrt(σ₁² + σ₂²).
         sigma: f64,
         /// Microhardness of the softer surface.
         h_c: f64,
@@ -165,6 +170,17 @@ impl Conduction {
     }
 }
 
+/// The CMY correlation outside its model: the plastic real-area fraction p/H_c above 1.
+#[cold]
+#[inline(never)]
+fn pressure_above_hardness(p: f64, h_c: f64) -> LawError {
+    LawError::Input(format!(
+        "contact pressure D(2) = {p} exceeds the microhardness H_c = {h_c} of the cmy law \
+         (P/H_c = {}): the solid-spot correlation needs P/H_c ≤ 1 (docs/config.md)",
+        p / h_c
+    ))
+}
+
 fn check_table(t: &TemperatureTable) -> Result<(), LawError> {
     let least = t.min_value();
     if least < 0.0 {
@@ -234,6 +250,11 @@ impl GapLaw {
         let jump = theta_a - theta_b;
         let mut out = ConductanceResponse::default();
         if let Some(c) = &self.conduction {
+            if let Conduction::SolidSpot { h_c, .. } = c {
+                if p > *h_c {
+                    return Err(pressure_above_hardness(p, *h_c));
+                }
+            }
             let (k, dk_dd, dk_dp, dk_dt) = c.evaluate(d, p, theta_mean);
             // Seed 000, 5.2.4: ∂q/∂θ_A = k + ½ k' (θ_A − θ_B), ∂q/∂θ_B = −k + ½ k' (θ_A − θ_B).
             out = ConductanceResponse {
