@@ -419,22 +419,33 @@ impl Adhesive {
 
     /// Elastic stick with k_s = τ_k/γ_crit: τ = k_s γ^pr, ∂τ/∂p = γ^pr (∂τ_k/∂p)/γ_crit
     /// (Eq. 5.2.3-1).
+    /// `SED` is the elastic energy as the next increment reads the stress: ½|τ|²·γ_crit/τ_s
+    /// with the static strength τ_s at p (a stick increment leaves the point at rest); it is
+    /// ½k_s|γ^pr|² when k_s is the static stiffness.
     #[inline]
     fn stick<const N: usize>(
+        &self,
         predictor: &[f64; N],
         predictor_eq: f64,
-        tau_k: f64,
-        dtau_k_dp: f64,
+        (tau_k, dtau_k_dp): (f64, f64),
+        p: f64,
         gamma_crit: f64,
     ) -> Slide<N> {
         let k_s = tau_k / gamma_crit;
+        let (tau_s, _) = self.static_strength(p);
+        let sed = if tau_s == tau_k || tau_s <= 0.0 {
+            0.5 * k_s * predictor_eq * predictor_eq
+        } else {
+            let tau_eq = k_s * predictor_eq;
+            0.5 * tau_eq * (tau_eq * (gamma_crit / tau_s))
+        };
         Slide {
             traction: Traction {
                 tau: scale(predictor, k_s),
                 ddtddg: diagonal(k_s),
                 ddtddp: scale(predictor, dtau_k_dp / gamma_crit),
                 dslip: [0.0; N],
-                sed: 0.5 * k_s * predictor_eq * predictor_eq,
+                sed,
                 sfd: 0.0,
             },
             branch: SlideBranch::Stick,
@@ -458,7 +469,7 @@ impl Adhesive {
     ) -> Slide<N> {
         let predictor_eq = norm(predictor);
         if predictor_eq <= gamma_crit {
-            return Self::stick(predictor, predictor_eq, tau_k, dtau_k_dp, gamma_crit);
+            return self.stick(predictor, predictor_eq, (tau_k, dtau_k_dp), p, gamma_crit);
         }
         let slip_eq = predictor_eq - gamma_crit;
         let p_plus = p.max(0.0);
@@ -705,7 +716,8 @@ impl Adhesive {
         if probe != 0.0 {
             return Err(name_bad_input(inc));
         }
-        if !(state.slip_rate >= 0.0) {
+        // Read only after a slip (the rate-following memory); then it must be a rate.
+        if state.status == FrictionStatus::Slip && !(state.slip_rate >= 0.0) {
             return Err(LawError::Input(format!(
                 "STATEV(2) (slip rate) = {} must be ≥ 0 (state corrupted by the caller?)",
                 state.slip_rate
@@ -830,8 +842,19 @@ mod tests {
         });
         let (p, dt, v) = (100.0, 0.5, 0.4);
         let g = ((0.5 * 0.1 + 0.3 * v) / (0.1 + v) + 0.05 * v) * p + 2.0;
-        let s = l.slide(&[g], &[v * dt], p, p, dt, 1e-3).unwrap();
+        // After a slip at v the elastic slip of τ̄ = g(v) is γ_crit: all of Δγ slides.
+        let s = l
+            .slide_after(Some(v), &[g], &[v * dt], p, p, dt, 1e-3)
+            .unwrap();
         assert_eq!(s.branch, SlideBranch::Slip);
+        assert!((s.traction.tau[0] - g).abs() < 1e-12 * g, "{s:?} vs {g}");
+        assert!((s.slip_rate - v).abs() < 1e-12);
+        // The earlier formulation has the same fixed point (its trial stress less k_s·vΔt is
+        // g(v)); what differs is whether driving converges to it (docs/props.md, scene F7).
+        let old = l.with_rate_formulation(RateFormulation::RateFreeStiffness);
+        let s = old
+            .slide_after(Some(v), &[g], &[v * dt], p, p, dt, 1e-3)
+            .unwrap();
         assert!((s.traction.tau[0] - g).abs() < 1e-12 * g, "{s:?} vs {g}");
         assert!((s.slip_rate - v).abs() < 1e-12);
     }

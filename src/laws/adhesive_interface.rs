@@ -184,7 +184,8 @@ impl AdhesiveInterface {
         if !finite {
             return Err(name_bad_input(inc));
         }
-        if !(state.slip_rate >= 0.0) {
+        // Read only after a slip (the rate-following memory); then it must be a rate.
+        if state.status == InterfaceStatus::Slip && !(state.slip_rate >= 0.0) {
             return Err(LawError::Input(format!(
                 "STATEV(2) (slip rate) = {} must be ≥ 0 (state corrupted by the caller?)",
                 state.slip_rate
@@ -196,10 +197,11 @@ impl AdhesiveInterface {
         // The bond's life cycle (docs/uinter.md): a point is bonded only after it has been in
         // contact. The state records it: slipping (1) or bonded (3) at the start, or stuck (0)
         // under a compressive start stress (a closed point has p̄ = K_n·h̄ > 0). A fresh point
-        // (all-zero `STATEV` and `STRESS`) and a free one (4) are not bonded.
+        // (all-zero `STATEV` and `STRESS`) is bonded only where it touches (h = 0, the surfaces
+        // of a model that starts in contact); with a gap it is free, as is a free one (4).
         let was_bonded = match state.status {
             InterfaceStatus::Slip | InterfaceStatus::Bonded => true,
-            InterfaceStatus::Stick => inc.normal_stress_start > 0.0,
+            InterfaceStatus::Stick => inc.normal_stress_start > 0.0 || h >= 0.0,
             InterfaceStatus::Open => false,
         };
         // The memory of the rate-following formulation: the previous increment's slip.

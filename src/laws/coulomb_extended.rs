@@ -839,7 +839,15 @@ impl ExtendedCoulomb {
                     ddtddg: diag(stiffness),
                     ddtddp: scale(&predictor, stiffness_p),
                     dslip: [0.0; N],
-                    sed: 0.5 * stiffness * g * g,
+                    sed: if following && start_rate > 0.0 {
+                        rest_energy(
+                            stiffness * g,
+                            self.critical(mbar, 0.0, p, theta).value,
+                            gamma_crit,
+                        )
+                    } else {
+                        0.5 * stiffness * g * g
+                    },
                     sfd: 0.0,
                 },
                 ddtdtheta,
@@ -1069,6 +1077,18 @@ impl ExtendedCoulomb {
             slip_eq,
             iterations: 0,
         })
+    }
+}
+
+/// `SED` of a stick increment after a slip (rate-following): the elastic energy as the next
+/// increment reads the stress, ½|τ̄|²·γ_crit/τ̄_crit(0), since a stick increment leaves the
+/// point at rest (`STATEV(2)` = 0) and the next one recovers γ̄^el with the rate-free stiffness.
+#[cold]
+fn rest_energy(tau_eq: f64, rest_strength: f64, gamma_crit: f64) -> f64 {
+    if rest_strength > 0.0 {
+        0.5 * tau_eq * (tau_eq * (gamma_crit / rest_strength))
+    } else {
+        0.0
     }
 }
 

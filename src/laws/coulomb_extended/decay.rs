@@ -163,7 +163,16 @@ impl ExtendedCoulomb {
                         ddtddg: diag(stiffness),
                         ddtddp: scale(&predictor, stiffness_p),
                         dslip: [0.0; N],
-                        sed: 0.5 * stiffness * g * g,
+                        sed: if phi_k != 1.0 {
+                            // As the next increment reads τ: at rest (see `rest_energy`).
+                            rest_energy(
+                                stiffness * g,
+                                (mbar * factor[0] * p).min(tau_max),
+                                gamma_crit,
+                            )
+                        } else {
+                            0.5 * stiffness * g * g
+                        },
                         sfd: 0.0,
                     },
                     ddtdtheta,
