@@ -331,7 +331,7 @@ pub fn rate_map(path: &Path, map: &RateMap) -> Result<(), String> {
         .into_iter()
         .map(|dc| {
             fine.decay = dc;
-            (fine.rate_stability_limit(map.law, map.gamma_crit), dc)
+            (fine.rate_free_stiffness_limit(map.law, map.gamma_crit), dc)
         })
         .filter(|(dt, _)| *dt >= x0 && *dt <= x1)
         .collect();
@@ -341,7 +341,7 @@ pub fn rate_map(path: &Path, map: &RateMap) -> Result<(), String> {
         .label(if map.law == RateLaw::DecayFrozen {
             "closed-form limit Δt = |dτ/dv|/k_s"
         } else {
-            "closed-form limit Δt = 2|dτ/dv|/k_s"
+            "earlier rate-free stiffness's limit Δt = 2|dτ/dv|/k_s"
         })
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], BLACK.stroke_width(3)));
     chart
