@@ -74,7 +74,7 @@ static double step(fh_fric *h, double dg, double v)
     for (a = 0; a < h->nfdir; a++) {
         h->dgam[a] = dg * d[a];
     }
-    h->dtime = fabs(dg) / v;
+    h->dtime = dg != 0.0 ? fabs(dg) / v : 0.1; /* a stop still takes time */
     h->dpress = 0.0;
     fh_call_ok(h);
     return h->nfdir == 1 ? h->tau[0] : h->tau[0] * d[0] + h->tau[1] * d[1];

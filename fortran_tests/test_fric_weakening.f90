@@ -113,6 +113,7 @@ contains
     real(dp), intent(in) :: dg, v
     dgam(1:nfdir) = dg*d(1:nfdir)
     dtime = abs(dg)/v
+    if (dg == 0) dtime = 0.1_dp ! a stop still takes time
     dpress = 0
     pnewdt = big
     call fric(lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pnewdt, statev, dgam, taulm, &

@@ -317,14 +317,18 @@ fn a_stop_keeps_the_stress() {
             &format!("decay x {x}"),
         );
     }
+    // v = 0.015 with NFDIR = 2 read a stop as a slip of a few ulps (τ jumped to μ_s·p + S_a)
+    // before the stick test allowed for the rounding of γ̄^el.
     for law in ADHESIVE {
-        check_stop(
-            &law.props(),
-            1e-2,
-            law.sliding(1e-2, P),
-            law.static_strength(P),
-            "adhesive",
-        );
+        for v in [1e-2, 1.5e-2, 0.3] {
+            check_stop(
+                &law.props(),
+                v,
+                law.sliding(v, P),
+                law.static_strength(P),
+                "adhesive",
+            );
+        }
     }
 }
 

@@ -27,7 +27,7 @@
 use super::coulomb::{
     Coulomb, CoulombState, CriticalSlip, FrictionStatus, Increment, Traction, Update,
 };
-use super::friction_coefficient::RateFormulation;
+use super::friction_coefficient::{RateFormulation, STICK_TEST_ROUNDING};
 use super::small_vec::{add, all_finite, diagonal, norm, scale, unit};
 use crate::{LawError, Outcome};
 
@@ -468,7 +468,7 @@ impl Adhesive {
         gamma_crit: f64,
     ) -> Slide<N> {
         let predictor_eq = norm(predictor);
-        if predictor_eq <= gamma_crit {
+        if predictor_eq <= gamma_crit * (1.0 + STICK_TEST_ROUNDING) {
             return self.stick(predictor, predictor_eq, (tau_k, dtau_k_dp), p, gamma_crit);
         }
         let slip_eq = predictor_eq - gamma_crit;

@@ -28,7 +28,9 @@ use super::coulomb::{
     Contact, Coulomb, CoulombState, EXACT_STICK_TANGENT_FLOOR, EntryFlag, FrictionStatus,
     Increment, StickMode, Traction,
 };
-use super::friction_coefficient::{CoefficientLaw, Factor, RateFormulation, RateLaw, decay_phi};
+use super::friction_coefficient::{
+    CoefficientLaw, Factor, RateFormulation, RateLaw, STICK_TEST_ROUNDING, decay_phi,
+};
 use super::scalar_root::{RootFailure, bracketed_newton, halley_on_known_bracket};
 use super::small_vec::{all_finite, dot, norm, scale, unit};
 use crate::{LawError, Outcome};
@@ -805,7 +807,7 @@ impl ExtendedCoulomb {
         // Rate-following: τ̄_eq ≤ τ̄_crit ⇔ |γ̄^el| ≤ γ_crit, tested on the slips (exact: the
         // slip of the increment is then γ̄_eq^pr − γ_crit > 0, never a rounded 0 or below).
         let sticks = if following {
-            g <= gamma_crit
+            g <= gamma_crit * (1.0 + STICK_TEST_ROUNDING)
         } else {
             stiffness * g <= stick_crit.value
         };

@@ -43,6 +43,12 @@ pub enum RateFormulation {
     RateFreeStiffness,
 }
 
+/// The rate-following stick test |γ^pr| ≤ γ_crit·(1 + this): the start elastic slip
+/// γ̄^el = τ̄·γ_crit/τ_crit(γ̇₀) of a point that slid is γ_crit to a few roundings, and an
+/// increment without motion must not read as a slip of a few ulps (at a vanishing rate, where
+/// the strength is the static one, that would jump τ to μ_s·p).
+pub const STICK_TEST_ROUNDING: f64 = 16.0 * f64::EPSILON;
+
 /// How μ depends on the equivalent slip rate γ̇_eq.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum RateLaw {

@@ -129,7 +129,7 @@ impl ExtendedCoulomb {
         };
         // Rate-following: stick ⇔ |γ̄^el| ≤ γ_crit, on the slips (see `elastic_stick`).
         let sticks = if following {
-            g <= gamma_crit
+            g <= gamma_crit * (1.0 + STICK_TEST_ROUNDING)
         } else {
             stiffness * g <= stick_crit.value
         };
