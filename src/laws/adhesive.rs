@@ -469,7 +469,12 @@ impl Adhesive {
     ) -> Slide<N> {
         let predictor_eq = norm(predictor);
         if predictor_eq <= gamma_crit * (1.0 + STICK_TEST_ROUNDING) {
-            return self.stick(predictor, predictor_eq, (tau_k, dtau_k_dp), p, gamma_crit);
+            let mut s = self.stick(predictor, predictor_eq, (tau_k, dtau_k_dp), p, gamma_crit);
+            if predictor_eq > gamma_crit {
+                // Within the rounding allowance: on the strength, never above it.
+                s.traction.tau = scale(&unit(predictor, predictor_eq), tau_k);
+            }
+            return s;
         }
         let slip_eq = predictor_eq - gamma_crit;
         let p_plus = p.max(0.0);

@@ -837,7 +837,7 @@ impl ExtendedCoulomb {
             }
             return Ok(ScaledTraction {
                 traction: Traction {
-                    tau: scale(&predictor, stiffness),
+                    tau: on_strength(&predictor, g, gamma_crit, stiffness, k.value),
                     ddtddg: diag(stiffness),
                     ddtddp: scale(&predictor, stiffness_p),
                     dslip: [0.0; N],
@@ -1079,6 +1079,24 @@ impl ExtendedCoulomb {
             slip_eq,
             iterations: 0,
         })
+    }
+}
+
+/// The stick stress k̄_s·γ̄^pr; for |γ̄^pr| within the rounding allowance above γ_crit
+/// (`STICK_TEST_ROUNDING`) the strength itself along γ̄^pr, so that a stick stress is never
+/// above τ̄_crit.
+#[inline(always)]
+pub(super) fn on_strength<const N: usize>(
+    predictor: &[f64; N],
+    g: f64,
+    gamma_crit: f64,
+    stiffness: f64,
+    strength: f64,
+) -> [f64; N] {
+    if g > gamma_crit {
+        scale(&unit(predictor, g), strength)
+    } else {
+        scale(predictor, stiffness)
     }
 }
 

@@ -159,7 +159,7 @@ impl ExtendedCoulomb {
                 }
                 (
                     Traction {
-                        tau: scale(&predictor, stiffness),
+                        tau: on_strength(&predictor, g, gamma_crit, stiffness, k.value),
                         ddtddg: diag(stiffness),
                         ddtddp: scale(&predictor, stiffness_p),
                         dslip: [0.0; N],
