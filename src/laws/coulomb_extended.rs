@@ -837,7 +837,7 @@ impl ExtendedCoulomb {
             }
             return Ok(ScaledTraction {
                 traction: Traction {
-                    tau: on_strength(&predictor, g, gamma_crit, stiffness, k.value),
+                    tau: on_strength(&predictor, following && g > gamma_crit, stiffness, k.value),
                     ddtddg: diag(stiffness),
                     ddtddp: scale(&predictor, stiffness_p),
                     dslip: [0.0; N],
@@ -1082,19 +1082,18 @@ impl ExtendedCoulomb {
     }
 }
 
-/// The stick stress k̄_s·γ̄^pr; for |γ̄^pr| within the rounding allowance above γ_crit
-/// (`STICK_TEST_ROUNDING`) the strength itself along γ̄^pr, so that a stick stress is never
-/// above τ̄_crit.
+/// The stick stress k̄_s·γ̄^pr; with `beyond` (rate-following, |γ̄^pr| within the rounding
+/// allowance above γ_crit, `STICK_TEST_ROUNDING`) the strength itself along γ̄^pr, so that a
+/// stick stress is never above τ̄_crit. (Frozen μ sticks beyond γ_crit when it strengthens.)
 #[inline(always)]
 pub(super) fn on_strength<const N: usize>(
     predictor: &[f64; N],
-    g: f64,
-    gamma_crit: f64,
+    beyond: bool,
     stiffness: f64,
     strength: f64,
 ) -> [f64; N] {
-    if g > gamma_crit {
-        scale(&unit(predictor, g), strength)
+    if beyond {
+        scale(&unit(predictor, norm(predictor)), strength)
     } else {
         scale(predictor, stiffness)
     }

@@ -159,7 +159,12 @@ impl ExtendedCoulomb {
                 }
                 (
                     Traction {
-                        tau: on_strength(&predictor, g, gamma_crit, stiffness, k.value),
+                        tau: on_strength(
+                            &predictor,
+                            following && g > gamma_crit,
+                            stiffness,
+                            k.value,
+                        ),
                         ddtddg: diag(stiffness),
                         ddtddp: scale(&predictor, stiffness_p),
                         dslip: [0.0; N],
