@@ -721,8 +721,9 @@ impl Adhesive {
         if probe != 0.0 {
             return Err(name_bad_input(inc));
         }
-        // Read only after a slip (the rate-following memory); then it must be a rate.
-        if state.status == FrictionStatus::Slip && !(state.slip_rate >= 0.0) {
+        // Read only after a slip (the rate-following memory); then it must be a rate (≥ 0;
+        // finite: the state reader refuses NaN and ∞).
+        if state.status == FrictionStatus::Slip && state.slip_rate < 0.0 {
             return Err(LawError::Input(format!(
                 "STATEV(2) (slip rate) = {} must be ≥ 0 (state corrupted by the caller?)",
                 state.slip_rate
