@@ -636,3 +636,51 @@ fn uinter_slides_steadily_and_keeps_the_stress_at_a_stop() {
         assert!((c.stress[1] - expected).abs() <= 1e-9 * expected);
     }
 }
+
+/// docs/bad-input.md rows 84–85: after a slip (`STATEV(3)` = 1) the adhesive law reads the
+/// start slip rate `STATEV(2)` as its stick-stiffness memory, so a negative one is refused
+/// (cut-back, stress and state unchanged, a message naming `STATEV(2)`); after a stick it is
+/// not read.
+#[test]
+fn a_negative_start_rate_after_a_slip_is_refused() {
+    let law = ADHESIVE[1];
+    for nfdir in [1, 2] {
+        let mut c = FricCall::new(nfdir, &law.props());
+        c.press = P;
+        c.tau[0] = 30.0;
+        c.dgam[0] = 1e-5;
+        c.statev[..3].copy_from_slice(&[0.5, -1e-3, 1.0]);
+        let before = c.clone();
+        c.call();
+        assert_eq!(c.pnewdt, interfacial::CUTBACK_RATIO);
+        assert_eq!(c.tau, before.tau);
+        assert_eq!(c.statev, before.statev);
+        let message = FricCall::last_error();
+        assert!(
+            message.contains("STATEV(2)") && message.contains("FRIC"),
+            "{message}"
+        );
+        // After a stick the rate is not read: the same call succeeds.
+        let mut c = before.clone();
+        c.statev[2] = 0.0;
+        c.call();
+        assert_eq!(c.pnewdt, 1e36);
+    }
+    let mut props = law.props();
+    props.extend([0.0, 1e6]);
+    let mut u = UinterCall::new(2, &props);
+    u.rdisp[0] = 1e-4;
+    u.stress[..2].copy_from_slice(&[P, 30.0]);
+    u.statev[..3].copy_from_slice(&[0.5, -1e-3, 1.0]);
+    u.drdisp[1] = 1e-5;
+    let before = u.clone();
+    u.call();
+    assert_eq!(u.pnewdt, interfacial::CUTBACK_RATIO);
+    assert_eq!(u.stress, before.stress);
+    assert_eq!(u.statev, before.statev);
+    let message = FricCall::last_error();
+    assert!(
+        message.contains("STATEV(2)") && message.contains("UINTER"),
+        "{message}"
+    );
+}
