@@ -684,3 +684,31 @@ fn a_negative_start_rate_after_a_slip_is_refused() {
         "{message}"
     );
 }
+
+/// τ_max between μ_k·p and μ_s·p under strong weakening (issue 16, item 4): the earlier slip
+/// equation could have three roots; the rate-following slip is explicit, so every increment has
+/// one answer: from rest the stress climbs to τ_max (the stick stiffness is τ_max/γ_crit) and
+/// slides there while μ(v)·p ≥ τ_max, and slides at μ(v)·p below it; the tangent on the cap has
+/// no rate term, off the cap it has (∂τ/∂γ̇)/Δt (checked against differences).
+#[test]
+fn tau_max_between_the_kinetic_and_static_strength() {
+    let d_c = 200.0;
+    let tau_max = 35.0;
+    let mut props = decay_props(d_c);
+    props[3] = tau_max;
+    for nfdir in [1, 2] {
+        for x in [0.2, 1.0, 3.0, 10.0] {
+            let v = x / d_c;
+            let expected = (decay_mu(d_c, v) * P).min(tau_max);
+            for r in [0.01, 0.3, 3.0] {
+                let mut point = Point::new(&props, nfdir);
+                let steps = drive(&mut point, r, v, increments_for(r));
+                let what = format!("τ_max NFDIR {nfdir} x {x} r {r}");
+                assert_onset(&steps, tau_max, r, &what);
+                assert_steady(&steps, expected, &what);
+            }
+            let c = next_call(&props, nfdir, 30, v, 0.2 * GAMMA_CRIT);
+            check_tangents(&c, &format!("τ_max NFDIR {nfdir} x {x}"));
+        }
+    }
+}
