@@ -218,7 +218,9 @@ static void onset(void)
             FH_CHECK(last_stick <= MU_S * P + SA);
             /* Instantaneous drop to the dynamic strength at the end-of-increment rate. */
             FH_NEAR(h.tau[0], (MU_D + KMU * v) * P + SA, 1e-12, 0.0);
-            FH_NEAR(h.tau[0] + k_s * h.dslip[0], last_stick + k_s * step, 1e-12, 0.0);
+            /* The elastic slip stays gamma_crit (docs/props.md, rate-following stiffness): the
+             * slip is the trial elastic slip less gamma_crit, k_s dslip = trial - (mu_s p + S_a). */
+            FH_NEAR((MU_S * P + SA) + k_s * h.dslip[0], last_stick + k_s * step, 1e-12, 0.0);
         }
     }
     fh_context("onset");

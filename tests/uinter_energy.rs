@@ -56,6 +56,9 @@ fn spd_in_every_transition() {
     // Closed at p̄ = 50 with τ̄ = 3: tangential energy ½τ̄²γ_crit/(μ_s p̄ + S_a); apart with
     // S = 3·S_a/29 the bond holds at N = 1 and breaks at N = 9.99.
     let closed_shear_energy = 0.5 * 9.0 * GAMMA_CRIT / (MU_S * 50.0 + S_A);
+    // After a slip (rate 0, v_½ = 0) the start shear was built with the sliding strength
+    // μ_d·p̄ + S_a (the rate-following stiffness, docs/props.md).
+    let closed_slip_energy = 0.5 * 9.0 * GAMMA_CRIT / (0.3 * 50.0 + S_A);
     #[rustfmt::skip]
     let cases: [Case; 15] = [
         // name, props, start STRESS, start status, h, Δγ, end status, SPD
@@ -69,7 +72,7 @@ fn spd_in_every_transition() {
         ("closed stick -> broken", &adhesive, &[50.0, 3.0, 0.0], 0.0, -9.99 / K_N, &[0.0, 0.0],
          4.0, closed_shear_energy),
         ("closed slip -> broken", &adhesive, &[50.0, 0.0, 3.0], 1.0, -9.99 / K_N, &[0.0, 0.0],
-         4.0, closed_shear_energy),
+         4.0, closed_slip_energy),
         ("closed -> broken by shear", &adhesive, &[50.0, 3.0, 0.0], 0.0, -1.0 / K_N,
          &[1e-2, 0.0], 4.0, closed_shear_energy),
         // No separation adhesion: the point just opens; nothing breaks.

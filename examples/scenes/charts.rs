@@ -729,7 +729,7 @@ pub fn rate_map(path: &Path, map: &RateMap) -> Result<(), String> {
         if map.law == RateLaw::DecayFrozen {
             "closed-form limit Δt = |dτ/dv|/k_s".into()
         } else {
-            "closed-form limit Δt = 2|dτ/dv|/k_s".into()
+            "earlier rate-free stiffness's limit Δt = 2|dτ/dv|/k_s".into()
         },
     ));
     let f = Frame {
@@ -769,7 +769,7 @@ pub fn rate_map(path: &Path, map: &RateMap) -> Result<(), String> {
             .into_iter()
             .map(|dc| {
                 fine.decay = dc;
-                (fine.rate_stability_limit(map.law, map.gamma_crit), dc)
+                (fine.rate_free_stiffness_limit(map.law, map.gamma_crit), dc)
             })
             .filter(|(dt, _)| *dt >= x0 && *dt <= x1)
             .collect();

@@ -153,7 +153,21 @@ impl VelocitySteps {
     ///   stable for a < 1: Δt > |dτ/dv|/k_s.
     ///
     /// The worst rate of the history sets the limit; 0 when the law is not weakening.
+    ///
+    /// The implicit laws (`Decay`, `Adhesive`) run the library's default rate-following stick
+    /// stiffness (docs/props.md), which slides steadily at every step: their limit is 0. The
+    /// implicit formula above is that of the earlier rate-free stiffness
+    /// ([`Self::rate_free_stiffness_limit`]; scene F7 compares the two).
     pub fn rate_stability_limit(&self, law: RateLaw, gamma_crit: f64) -> f64 {
+        if law == RateLaw::DecayFrozen {
+            self.rate_free_stiffness_limit(law, gamma_crit)
+        } else {
+            0.0
+        }
+    }
+
+    /// The limit of the earlier rate-free stick stiffness (and of frozen μ), as derived above.
+    pub fn rate_free_stiffness_limit(&self, law: RateLaw, gamma_crit: f64) -> f64 {
         let weakening = self
             .rates
             .iter()

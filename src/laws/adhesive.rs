@@ -27,6 +27,7 @@
 use super::coulomb::{
     Coulomb, CoulombState, CriticalSlip, FrictionStatus, Increment, Traction, Update,
 };
+use super::friction_coefficient::{RateFormulation, STICK_TEST_ROUNDING};
 use super::small_vec::{add, all_finite, diagonal, norm, scale, unit};
 use crate::{LawError, Outcome};
 
@@ -72,6 +73,9 @@ pub struct Adhesive {
     normal_adhesion: f64,
     k_mu: f64,
     v_half: f64,
+    /// How the rate-dependent strength enters the return map (the earlier one only for
+    /// comparisons; docs/props.md).
+    formulation: RateFormulation,
 }
 
 /// Which branch of the return map an increment took.
@@ -135,6 +139,7 @@ impl Adhesive {
             normal_adhesion: check("Na (normal adhesive strength)", p.na)?,
             k_mu: check("kmu (friction slope against slip rate)", p.kmu)?,
             v_half: check("vhalf (half-transition slip rate)", p.vhalf)?,
+            formulation: RateFormulation::RateFollowingStiffness,
         })
     }
 
@@ -165,7 +170,24 @@ impl Adhesive {
             normal_adhesion: na,
             k_mu: kmu,
             v_half: vhalf,
+            formulation: RateFormulation::RateFollowingStiffness,
         }
+    }
+
+    /// How the rate-dependent strength enters the return map: the default
+    /// [`RateFormulation::RateFollowingStiffness`], or the earlier rate-free stick stiffness
+    /// τ_s/γ_crit with the slip from the quadratic (for comparisons only; no `PROPS` entry
+    /// selects it).
+    #[must_use]
+    pub fn with_rate_formulation(mut self, formulation: RateFormulation) -> Self {
+        self.formulation = formulation;
+        self
+    }
+
+    /// The rate formulation in use.
+    #[must_use]
+    pub fn rate_formulation(&self) -> RateFormulation {
+        self.formulation
     }
 
     /// Sets γ_crit > 0 as an absolute length.
@@ -258,6 +280,34 @@ impl Adhesive {
         }
     }
 
+    /// The strength that sets the stick stiffness k_s = τ_k/γ_crit, and ∂τ_k/∂p: with the
+    /// rate-following formulation and a point that slid in the previous increment at the rate
+    /// `sliding = Some(Δv₀)`, the sliding strength g(Δv₀) (at Δv₀ = 0 with v_½ = 0 its limit
+    /// from above, μ_d·p⁺ + S_a: the point was sliding, at a rate the host's Δt ≤ 0 did not
+    /// give); otherwise the static strength τ_s.
+    #[inline]
+    #[must_use]
+    pub fn stick_strength(&self, sliding: Option<f64>, p: f64) -> (f64, f64) {
+        match sliding {
+            Some(v) if self.formulation == RateFormulation::RateFollowingStiffness => {
+                let (mu_s, mu_d, vh) = (self.mu_static, self.base.mu(), self.v_half);
+                // μ_d + (μ_s − μ_d)·v_½/(v_½ + Δv₀), which cannot overflow.
+                let transition = if vh + v > 0.0 {
+                    mu_d + (mu_s - mu_d) * (vh / (vh + v))
+                } else {
+                    mu_d
+                };
+                let coefficient = transition + self.k_mu * v;
+                if p < 0.0 {
+                    (self.shear_adhesion, 0.0)
+                } else {
+                    (coefficient * p + self.shear_adhesion, coefficient)
+                }
+            }
+            _ => self.static_strength(p),
+        }
+    }
+
     /// The seed's sliding strength g(Δv) = ((μ_s v_½ + μ_d Δv)/(v_½ + Δv) + k_μ Δv)·p⁺ + S_a,
     /// written exactly as in seed 004 (used to check the return map's residual). At Δv = 0 it
     /// is the static strength (also with v_½ = 0, where the quotient is 0/0).
@@ -304,6 +354,27 @@ impl Adhesive {
         dtime: f64,
         gamma_crit: f64,
     ) -> Result<Slide<N>, LawError> {
+        self.slide_after(None, tau_start, dgam, p_start, p, dtime, gamma_crit)
+    }
+
+    /// [`Self::slide`] for a point whose previous increment slid at the rate
+    /// `sliding = Some(Δv₀)` (`STATEV(3)` = 1, Δv₀ = `STATEV(2)`), or stuck (`None`). With the
+    /// rate-following formulation (the default; docs/props.md) the stick stiffness is
+    /// k_s = g(Δv₀)/γ_crit after a slip and τ_s/γ_crit otherwise, the same at both ends of the
+    /// increment, the stick test is |γ^pr| ≤ γ_crit, and a sliding increment has
+    /// Δs = |γ^pr| − γ_crit and τ = g(Δs/Δt) (seed 000, Eq. 5.2.3-2; seed 004's S_slide).
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    pub fn slide_after<const N: usize>(
+        &self,
+        sliding: Option<f64>,
+        tau_start: &[f64; N],
+        dgam: &[f64; N],
+        p_start: f64,
+        p: f64,
+        dtime: f64,
+        gamma_crit: f64,
+    ) -> Result<Slide<N>, LawError> {
         let rate_dependent = self.k_mu > 0.0 || self.v_half > 0.0;
         if rate_dependent && dtime.is_finite() && dtime <= 0.0 {
             return Err(LawError::Input(format!(
@@ -311,7 +382,7 @@ impl Adhesive {
                  non-zero); it needs Δt > 0"
             )));
         }
-        let (tau_s_start, _) = self.static_strength(p_start);
+        let (tau_s_start, _) = self.stick_strength(sliding, p_start);
         // Elastic slip at the start, γ̄^el = τ̄/k_s(p − Δp).
         let elastic_start = if tau_s_start > 0.0 {
             scale(tau_start, gamma_crit / tau_s_start)
@@ -319,11 +390,153 @@ impl Adhesive {
             [0.0; N]
         };
         let predictor = add(&elastic_start, dgam);
-        let (tau_s, dtau_s_dp) = self.static_strength(p);
+        Ok(self.map(&predictor, sliding, p, dtime, gamma_crit))
+    }
+
+    /// The return map of either formulation from the elastic predictor.
+    #[inline]
+    fn map<const N: usize>(
+        &self,
+        predictor: &[f64; N],
+        sliding: Option<f64>,
+        p: f64,
+        dtime: f64,
+        gamma_crit: f64,
+    ) -> Slide<N> {
+        let (tau_s, dtau_s_dp) = self.stick_strength(sliding, p);
         if tau_s == 0.0 {
-            return Ok(self.no_strength(&predictor, p, dtime, gamma_crit));
+            return self.no_strength(predictor, sliding, p, dtime, gamma_crit);
         }
-        Ok(self.return_map(&predictor, p, tau_s, dtau_s_dp, dtime, gamma_crit))
+        match self.formulation {
+            RateFormulation::RateFollowingStiffness => {
+                self.following_map(predictor, p, tau_s, dtau_s_dp, dtime, gamma_crit)
+            }
+            RateFormulation::RateFreeStiffness => {
+                self.return_map(predictor, p, tau_s, dtau_s_dp, dtime, gamma_crit)
+            }
+        }
+    }
+
+    /// Elastic stick with k_s = τ_k/γ_crit: τ = k_s γ^pr, ∂τ/∂p = γ^pr (∂τ_k/∂p)/γ_crit
+    /// (Eq. 5.2.3-1).
+    /// `SED` is the elastic energy as the next increment reads the stress: ½|τ|²·γ_crit/τ_s
+    /// with the static strength τ_s at p (a stick increment leaves the point at rest); it is
+    /// ½k_s|γ^pr|² when k_s is the static stiffness.
+    #[inline]
+    fn stick<const N: usize>(
+        &self,
+        predictor: &[f64; N],
+        predictor_eq: f64,
+        (tau_k, dtau_k_dp): (f64, f64),
+        p: f64,
+        gamma_crit: f64,
+    ) -> Slide<N> {
+        let k_s = tau_k / gamma_crit;
+        let (tau_s, _) = self.static_strength(p);
+        let sed = if tau_s == tau_k || tau_s <= 0.0 {
+            0.5 * k_s * predictor_eq * predictor_eq
+        } else {
+            let tau_eq = k_s * predictor_eq;
+            0.5 * tau_eq * (tau_eq * (gamma_crit / tau_s))
+        };
+        Slide {
+            traction: Traction {
+                tau: scale(predictor, k_s),
+                ddtddg: diagonal(k_s),
+                ddtddp: scale(predictor, dtau_k_dp / gamma_crit),
+                dslip: [0.0; N],
+                sed,
+                sfd: 0.0,
+            },
+            branch: SlideBranch::Stick,
+            slip_rate: 0.0,
+            stick_stiffness: k_s,
+        }
+    }
+
+    /// The rate-following return map: stick while |γ^pr| ≤ γ_crit; sliding with the elastic
+    /// slip held at γ_crit, Δs = |γ^pr| − γ_crit, τ = g(Δs/Δt)·n (explicit, one answer), and
+    /// the tangent of Eq. 5.2.3-3: (δ − nn)·g/|γ^pr| + nn·∂g/∂Δs, ∂τ/∂p = n·∂g/∂p.
+    #[inline]
+    fn following_map<const N: usize>(
+        &self,
+        predictor: &[f64; N],
+        p: f64,
+        tau_k: f64,
+        dtau_k_dp: f64,
+        dtime: f64,
+        gamma_crit: f64,
+    ) -> Slide<N> {
+        let predictor_eq = norm(predictor);
+        if predictor_eq <= gamma_crit * (1.0 + STICK_TEST_ROUNDING) {
+            let mut s = self.stick(predictor, predictor_eq, (tau_k, dtau_k_dp), p, gamma_crit);
+            if predictor_eq > gamma_crit {
+                // Within the rounding allowance: on the strength, never above it.
+                s.traction.tau = scale(&unit(predictor, predictor_eq), tau_k);
+            }
+            return s;
+        }
+        let slip_eq = predictor_eq - gamma_crit;
+        let p_plus = p.max(0.0);
+        let (mu_s, mu_d) = (self.mu_static, self.base.mu());
+        // In slip-increment form: V = v_½Δt (a length), K = k_μ/Δt (per length). With Δt ≤ 0
+        // (allowed only when k_μ = v_½ = 0) the sliding strength is μ_d·p⁺ + S_a.
+        let (length_half, k_per_length) = if dtime > 0.0 {
+            (self.v_half * dtime, self.k_mu / dtime)
+        } else {
+            (0.0, 0.0)
+        };
+        // Δs > 0, so V + Δs > 0: the transition μ_d + (μ_s − μ_d)·V/(V + Δs) (seed 004's
+        // (μ_s v_½ + μ_d Δv)/(v_½ + Δv), in a form that cannot overflow).
+        let denom = length_half + slip_eq;
+        let share = length_half / denom;
+        let transition = mu_d + (mu_s - mu_d) * share;
+        let pressure_part = if p_plus > 0.0 {
+            // k_μ·Δs·p⁺/Δt with the exponents kept apart (see `return_map`).
+            let rate_term = if dtime > 0.0 && self.k_mu > 0.0 {
+                product_ratio(self.k_mu, slip_eq, p_plus, dtime)
+            } else {
+                0.0
+            };
+            transition * p_plus + rate_term
+        } else {
+            0.0
+        };
+        let tau_eq = pressure_part + self.shear_adhesion;
+        // ∂g/∂Δs = ((μ_d − μ_s)·V/(V + Δs)² + K)·p⁺ and ∂g/∂p.
+        let g_s = ((mu_d - mu_s) * (share / denom) + k_per_length) * p_plus;
+        let g_p = if p < 0.0 {
+            0.0
+        } else {
+            transition + k_per_length * slip_eq
+        };
+        let n = unit(predictor, predictor_eq);
+        let transverse = tau_eq / predictor_eq;
+        let mut ddtddg = [[0.0; N]; N];
+        for (i, row) in ddtddg.iter_mut().enumerate() {
+            for (j, x) in row.iter_mut().enumerate() {
+                let delta = if i == j { 1.0 } else { 0.0 };
+                *x = g_s * n[i] * n[j] + transverse * (delta - n[i] * n[j]);
+            }
+        }
+        Slide {
+            traction: Traction {
+                tau: scale(&n, tau_eq),
+                ddtddg,
+                ddtddp: scale(&n, g_p),
+                dslip: scale(&n, slip_eq),
+                // ½|τ|·γ_crit: the elastic slip is γ_crit.
+                sed: 0.5 * tau_eq * gamma_crit,
+                sfd: tau_eq * slip_eq,
+            },
+            branch: SlideBranch::Slip,
+            slip_rate: if dtime > 0.0 {
+                (slip_eq / dtime).min(f64::MAX)
+            } else {
+                0.0
+            },
+            stick_stiffness: tau_eq / gamma_crit,
+        }
     }
 
     #[inline]
@@ -456,14 +669,13 @@ impl Adhesive {
     fn no_strength<const N: usize>(
         &self,
         predictor: &[f64; N],
+        sliding: Option<f64>,
         p: f64,
         dtime: f64,
         gamma_crit: f64,
     ) -> Slide<N> {
-        let unit_pressure = (p == 0.0 && self.mu_static > 0.0).then(|| {
-            let (tau_s, dtau_s_dp) = self.static_strength(1.0);
-            self.return_map(predictor, 1.0, tau_s, dtau_s_dp, dtime, gamma_crit)
-        });
+        let unit_pressure = (p == 0.0 && self.stick_strength(sliding, 1.0).0 > 0.0)
+            .then(|| self.map(predictor, sliding, 1.0, dtime, gamma_crit));
         let predictor_eq = norm(predictor);
         let slip_eq = (predictor_eq - gamma_crit).max(0.0);
         let (ddtddp, dslip, branch) = match unit_pressure {
@@ -509,8 +721,19 @@ impl Adhesive {
         if probe != 0.0 {
             return Err(name_bad_input(inc));
         }
+        // Read only after a slip (the rate-following memory); then it must be a rate (≥ 0;
+        // finite: the state reader refuses NaN and ∞).
+        if state.status == FrictionStatus::Slip && state.slip_rate < 0.0 {
+            return Err(LawError::Input(format!(
+                "STATEV(2) (slip rate) = {} must be ≥ 0 (state corrupted by the caller?)",
+                state.slip_rate
+            )));
+        }
         let gamma_crit = self.critical_slip_for(inc.characteristic_length)?;
-        let s = self.slide(
+        // The memory of the rate-following formulation: the previous increment's slip.
+        let sliding = (state.status == FrictionStatus::Slip).then_some(state.slip_rate);
+        let s = self.slide_after(
+            sliding,
             &inc.tau,
             &inc.dgam,
             inc.pressure - inc.dpressure,
@@ -625,8 +848,19 @@ mod tests {
         });
         let (p, dt, v) = (100.0, 0.5, 0.4);
         let g = ((0.5 * 0.1 + 0.3 * v) / (0.1 + v) + 0.05 * v) * p + 2.0;
-        let s = l.slide(&[g], &[v * dt], p, p, dt, 1e-3).unwrap();
+        // After a slip at v the elastic slip of τ̄ = g(v) is γ_crit: all of Δγ slides.
+        let s = l
+            .slide_after(Some(v), &[g], &[v * dt], p, p, dt, 1e-3)
+            .unwrap();
         assert_eq!(s.branch, SlideBranch::Slip);
+        assert!((s.traction.tau[0] - g).abs() < 1e-12 * g, "{s:?} vs {g}");
+        assert!((s.slip_rate - v).abs() < 1e-12);
+        // The earlier formulation has the same fixed point (its trial stress less k_s·vΔt is
+        // g(v)); what differs is whether driving converges to it (docs/props.md, scene F7).
+        let old = l.with_rate_formulation(RateFormulation::RateFreeStiffness);
+        let s = old
+            .slide_after(Some(v), &[g], &[v * dt], p, p, dt, 1e-3)
+            .unwrap();
         assert!((s.traction.tau[0] - g).abs() < 1e-12 * g, "{s:?} vs {g}");
         assert!((s.slip_rate - v).abs() < 1e-12);
     }

@@ -23,6 +23,7 @@
 
 use super::adhesive::{Adhesive, SlideBranch};
 use super::coulomb::Traction;
+use super::friction_coefficient::RateFormulation;
 use super::small_vec::{add, all_finite, norm, scale};
 use crate::LawError;
 
@@ -183,13 +184,33 @@ impl AdhesiveInterface {
         if !finite {
             return Err(name_bad_input(inc));
         }
+        // Read only after a slip (the rate-following memory); then it must be a rate (≥ 0;
+        // finite: the state reader refuses NaN and ∞).
+        if state.status == InterfaceStatus::Slip && state.slip_rate < 0.0 {
+            return Err(LawError::Input(format!(
+                "STATEV(2) (slip rate) = {} must be ≥ 0 (state corrupted by the caller?)",
+                state.slip_rate
+            )));
+        }
         let gamma_crit = self.law.critical_slip_for(inc.characteristic_length)?;
         let k_n = self.normal_stiffness;
         let h = inc.overclosure;
-        let was_bonded = state.status != InterfaceStatus::Open;
+        // The bond's life cycle (docs/uinter.md): a point is bonded only after it has been in
+        // contact. The state records it: slipping (1) or bonded (3) at the start, or stuck (0)
+        // under a compressive start stress (a closed point has p̄ = K_n·h̄ > 0). A fresh point
+        // (all-zero `STATEV` and `STRESS`) is bonded only where it touches (h = 0, the surfaces
+        // of a model that starts in contact); with a gap it is free, as is a free one (4).
+        let was_bonded = match state.status {
+            InterfaceStatus::Slip | InterfaceStatus::Bonded => true,
+            InterfaceStatus::Stick => inc.normal_stress_start > 0.0 || h >= 0.0,
+            InterfaceStatus::Open => false,
+        };
+        // The memory of the rate-following formulation: the previous increment's slip.
+        let sliding = (state.status == InterfaceStatus::Slip).then_some(state.slip_rate);
         let response = if h > 0.0 {
             let p = k_n * h;
-            let s = self.law.slide(
+            let s = self.law.slide_after(
+                sliding,
                 &inc.shear_start,
                 &inc.dgam,
                 inc.normal_stress_start,
@@ -198,10 +219,15 @@ impl AdhesiveInterface {
                 gamma_crit,
             )?;
             let slip = norm(&s.traction.dslip);
-            let (dsfd_dgam, dsfd_dp) = dissipation_derivatives(&s.traction, s.stick_stiffness, {
-                let (_, dtau_s_dp) = self.law.static_strength(p);
-                dtau_s_dp / gamma_crit
-            });
+            let (dsfd_dgam, dsfd_dp) = match self.law.rate_formulation() {
+                RateFormulation::RateFollowingStiffness => following_dissipation(&s.traction),
+                RateFormulation::RateFreeStiffness => {
+                    dissipation_derivatives(&s.traction, s.stick_stiffness, {
+                        let (_, dtau_s_dp) = self.law.static_strength(p);
+                        dtau_s_dp / gamma_crit
+                    })
+                }
+            };
             InterfaceResponse {
                 dsfd_dgam,
                 dsfd_dh: dsfd_dp * k_n,
@@ -223,7 +249,7 @@ impl AdhesiveInterface {
                 spd: 0.0,
             }
         } else if was_bonded && self.law.separation_adhesion() {
-            self.bonded(inc, state, gamma_crit)
+            self.bonded(inc, state, sliding, gamma_crit)
         } else {
             self.open(state)
         };
@@ -249,6 +275,7 @@ impl AdhesiveInterface {
         &self,
         inc: &InterfaceIncrement<N>,
         state: &InterfaceState,
+        sliding: Option<f64>,
         gamma_crit: f64,
     ) -> InterfaceResponse<N> {
         let (s_a, n_a, k_n) = (
@@ -256,7 +283,8 @@ impl AdhesiveInterface {
             self.law.normal_adhesion(),
             self.normal_stiffness,
         );
-        let (tau_s_start, _) = self.law.static_strength(inc.normal_stress_start);
+        // The stiffness the start shear was built with (after a slip: the sliding strength).
+        let (tau_s_start, _) = self.law.stick_strength(sliding, inc.normal_stress_start);
         let elastic_start = if tau_s_start > 0.0 {
             scale(&inc.shear_start, gamma_crit / tau_s_start)
         } else {
@@ -364,8 +392,26 @@ fn released_energy(
     (shear + normal).min(f64::MAX)
 }
 
+/// Derivatives of SFD = |τ|·Δs with respect to Δγ and p in the rate-following formulation:
+/// Δs = |γ^pr| − γ_crit, so dΔs = n·dγ and ∂Δs/∂p = 0; dSFD = Δs·d|τ| + |τ|·dΔs.
+fn following_dissipation<const N: usize>(t: &Traction<N>) -> ([f64; N], f64) {
+    let slip = norm(&t.dslip);
+    if slip == 0.0 {
+        return ([0.0; N], 0.0);
+    }
+    let n = scale(&t.dslip, 1.0 / slip);
+    let tau = norm(&t.tau);
+    let mut dsfd_dgam = [0.0; N];
+    for (b, d) in dsfd_dgam.iter_mut().enumerate() {
+        let dtau_b: f64 = (0..N).map(|a| n[a] * t.ddtddg[a][b]).sum();
+        *d = slip * dtau_b + tau * n[b];
+    }
+    let dtau_dp: f64 = (0..N).map(|a| n[a] * t.ddtddp[a]).sum();
+    (dsfd_dgam, slip * dtau_dp)
+}
+
 /// Derivatives of SFD = |τ|·Δs (sliding; 0 otherwise) with respect to Δγ and p, from the
-/// consistent tangents: Δs = |γ^pr| − |τ|/k_s, so
+/// consistent tangents of the earlier (rate-free stiffness) formulation: Δs = |γ^pr| − |τ|/k_s, so
 /// dΔs = n·dγ − d|τ|/k_s + |τ| dk_s/k_s² with d|τ| = n·dτ.
 fn dissipation_derivatives<const N: usize>(
     t: &Traction<N>,

@@ -28,7 +28,9 @@ use super::coulomb::{
     Contact, Coulomb, CoulombState, EXACT_STICK_TANGENT_FLOOR, EntryFlag, FrictionStatus,
     Increment, StickMode, Traction,
 };
-use super::friction_coefficient::{CoefficientLaw, Factor, RateLaw, decay_phi};
+use super::friction_coefficient::{
+    CoefficientLaw, Factor, RateFormulation, RateLaw, STICK_TEST_ROUNDING, decay_phi,
+};
 use super::scalar_root::{RootFailure, bracketed_newton, halley_on_known_bracket};
 use super::small_vec::{all_finite, dot, norm, scale, unit};
 use crate::{LawError, Outcome};
@@ -97,6 +99,8 @@ pub struct ExtendedCoulomb {
     transport: Option<SteadyTransport>,
     /// Test hook: take the general path (scaling, local solve) even where a cheaper one is exact.
     general: bool,
+    /// How a rate-dependent μ enters the return map (the earlier one only for comparisons).
+    formulation: RateFormulation,
 }
 
 /// The extra inputs the extended law reads.
@@ -246,6 +250,7 @@ impl ExtendedCoulomb {
             damping: None,
             transport: None,
             general: false,
+            formulation: RateFormulation::RateFollowingStiffness,
         }
     }
 
@@ -269,6 +274,7 @@ impl ExtendedCoulomb {
             damping,
             transport: None,
             general: false,
+            formulation: RateFormulation::RateFollowingStiffness,
         }
     }
 
@@ -328,6 +334,22 @@ impl ExtendedCoulomb {
     pub fn with_damping(mut self, damping: Option<Damping>) -> Self {
         self.damping = damping;
         self
+    }
+
+    /// How a rate-dependent μ enters the return map: the default
+    /// [`RateFormulation::RateFollowingStiffness`], or the earlier rate-free stick stiffness
+    /// (for comparisons only: it is unstable under velocity weakening, docs/props.md). No
+    /// `PROPS` entry selects it.
+    #[must_use]
+    pub fn with_rate_formulation(mut self, formulation: RateFormulation) -> Self {
+        self.formulation = formulation;
+        self
+    }
+
+    /// The rate formulation in use.
+    #[must_use]
+    pub fn rate_formulation(&self) -> RateFormulation {
+        self.formulation
     }
 
     /// Takes the general path (scaling even when isotropic, the local solve even when μ is
@@ -755,9 +777,17 @@ impl ExtendedCoulomb {
     ) -> Result<ScaledTraction<N>, LawError> {
         let p = inc.pressure;
         let p0 = inc.pressure - inc.dpressure;
-        // Stick stiffness k̄_s = τ̄_crit(0, p, θ̄)/γ_crit at the end and at the start.
-        let k = self.critical(mbar, 0.0, p, theta);
-        let k0 = self.critical(mbar, 0.0, p0, theta);
+        let frozen = self.frozen && self.coefficient.is_rate_dependent();
+        let rate_law = self.coefficient.is_rate_dependent() && !frozen;
+        // The rate-following stick stiffness (docs/props.md): k̄_s = τ̄_crit(γ̇₀, ·)/γ_crit at the
+        // start-of-increment rate γ̇₀ = `STATEV(2)` (seed 000 after Eq. 5.2.3-1: k_s follows
+        // τ_crit), the same rate at both ends of a stick increment, so that an increment without
+        // motion leaves τ̄ as it was. The earlier formulation: the rate-free τ̄_crit(0, ·).
+        let following = rate_law && self.formulation == RateFormulation::RateFollowingStiffness;
+        let stiffness_rate = if following { start_rate } else { 0.0 };
+        // Stick stiffness k̄_s = τ̄_crit(γ̇_k, p, θ̄)/γ_crit at the end and at the start.
+        let k = self.critical(mbar, stiffness_rate, p, theta);
+        let k0 = self.critical(mbar, stiffness_rate, p0, theta);
         // γ̄^el = τ̄/k̄_s(p₀); its θ̄-derivative (the start uses the same θ̄: FRIC has no ΔTEMP).
         let (elastic_start, d_elastic_dtheta) = elastic_start(&s.tau, gamma_crit, &k0, true);
         let mut predictor = elastic_start;
@@ -769,13 +799,19 @@ impl ExtendedCoulomb {
         let (stiffness_p, stiffness_theta) =
             (k.d_pressure / gamma_crit, k.d_temperature / gamma_crit);
         // The critical stress the stick test uses: at zero rate, or frozen at the start rate.
-        let frozen = self.frozen && self.coefficient.is_rate_dependent();
         let stick_crit = if frozen {
             self.critical(mbar, start_rate, p, theta)
         } else {
             k
         };
-        if stiffness * g <= stick_crit.value || stiffness <= 0.0 {
+        // Rate-following: τ̄_eq ≤ τ̄_crit ⇔ |γ̄^el| ≤ γ_crit, tested on the slips (exact: the
+        // slip of the increment is then γ̄_eq^pr − γ_crit > 0, never a rounded 0 or below).
+        let sticks = if following {
+            g <= gamma_crit * (1.0 + STICK_TEST_ROUNDING)
+        } else {
+            stiffness * g <= stick_crit.value
+        };
+        if sticks || stiffness <= 0.0 {
             if stiffness <= 0.0 && g > gamma_crit {
                 // No friction (p ≤ 0): zero stress, all motion beyond γ_crit is slip.
                 let n = unit(&predictor, g);
@@ -801,11 +837,19 @@ impl ExtendedCoulomb {
             }
             return Ok(ScaledTraction {
                 traction: Traction {
-                    tau: scale(&predictor, stiffness),
+                    tau: on_strength(&predictor, following && g > gamma_crit, stiffness, k.value),
                     ddtddg: diag(stiffness),
                     ddtddp: scale(&predictor, stiffness_p),
                     dslip: [0.0; N],
-                    sed: 0.5 * stiffness * g * g,
+                    sed: if following && start_rate > 0.0 {
+                        rest_energy(
+                            stiffness * g,
+                            self.critical(mbar, 0.0, p, theta).value,
+                            gamma_crit,
+                        )
+                    } else {
+                        0.5 * stiffness * g * g
+                    },
                     sfd: 0.0,
                 },
                 ddtdtheta,
@@ -816,8 +860,12 @@ impl ExtendedCoulomb {
 
         // Slip: k̄_s (γ̄_eq^pr − s) = τ̄_crit(s/Δt, p, θ̄).
         let n = unit(&predictor, g);
-        let rate_law = self.coefficient.is_rate_dependent() && !frozen;
-        let (slip_eq, crit, iterations) = if rate_law {
+        let (slip_eq, crit, iterations) = if following {
+            // Eq. 5.2.3-2: the elastic slip stays γ_crit, Δγ̄_eq^sl = γ̄_eq^pr − γ_crit, and
+            // τ̄ = τ̄_crit(Δγ̄_eq^sl/Δt, p, θ̄)·n: explicit, one answer (also with τ_max).
+            let s_eq = g - gamma_crit;
+            (s_eq, self.critical(mbar, s_eq / rate_dt, p, theta), 0)
+        } else if rate_law {
             // One division per solve, not three per iteration.
             let per_dt = 1.0 / rate_dt;
             // F(0) = k̄_s γ̄_eq^pr − τ̄_crit(0) > 0 (slip) and F(γ̄_eq^pr) = −τ̄_crit ≤ 0: the
@@ -907,14 +955,21 @@ impl ExtendedCoulomb {
         let t = crit.value;
         // Rate term per unit slip: ∂τ̄_crit/∂s = (∂τ̄_crit/∂γ̇)/Δt.
         let t_s = if rate_law { crit.d_rate / rate_dt } else { 0.0 };
-        let d = stiffness + t_s;
-        if d == 0.0 || !d.is_finite() {
-            return Err(rate_softening_cancels(t_s, stiffness));
-        }
-        // Implicit derivatives of s from k̄_s (G − s) = τ̄_crit(s/Δt, p, θ̄).
-        let ds_dg = stiffness / d;
-        let ds_dp = (stiffness_p * (g - slip_eq) - crit.d_pressure) / d;
-        let ds_dtheta = (stiffness_theta * (g - slip_eq) - crit.d_temperature) / d;
+        let (ds_dg, ds_dp, ds_dtheta) = if following {
+            // s = G − γ_crit.
+            (1.0, 0.0, 0.0)
+        } else {
+            let d = stiffness + t_s;
+            if d == 0.0 || !d.is_finite() {
+                return Err(rate_softening_cancels(t_s, stiffness));
+            }
+            // Implicit derivatives of s from k̄_s (G − s) = τ̄_crit(s/Δt, p, θ̄).
+            (
+                stiffness / d,
+                (stiffness_p * (g - slip_eq) - crit.d_pressure) / d,
+                (stiffness_theta * (g - slip_eq) - crit.d_temperature) / d,
+            )
+        };
         let transverse = t / g;
         // Eq. 5.2.3-3 in this formulation: (δ − nn) τ̄_crit/γ̄_eq^pr + nn (∂τ̄_crit/∂s) ∂s/∂G.
         let ddtddg = rate_slip_tangent(&n, transverse, t_s, ds_dg);
@@ -934,8 +989,12 @@ impl ExtendedCoulomb {
                 ddtddg,
                 ddtddp: scale(&n, dtau_dp),
                 dslip: scale(&n, slip_eq),
-                // |τ̄|²/(2k̄_s).
-                sed: 0.5 * t * t / stiffness,
+                // |τ̄|²/(2k̄_s), with k̄_s = τ̄_crit/γ_crit at the end when rate-following.
+                sed: if following {
+                    0.5 * t * gamma_crit
+                } else {
+                    0.5 * t * t / stiffness
+                },
                 sfd: t * slip_eq,
             },
             ddtdtheta,
@@ -1020,6 +1079,35 @@ impl ExtendedCoulomb {
             slip_eq,
             iterations: 0,
         })
+    }
+}
+
+/// The stick stress k̄_s·γ̄^pr; with `beyond` (rate-following, |γ̄^pr| within the rounding
+/// allowance above γ_crit, `STICK_TEST_ROUNDING`) the strength itself along γ̄^pr, so that a
+/// stick stress is never above τ̄_crit. (Frozen μ sticks beyond γ_crit when it strengthens.)
+#[inline(always)]
+pub(super) fn on_strength<const N: usize>(
+    predictor: &[f64; N],
+    beyond: bool,
+    stiffness: f64,
+    strength: f64,
+) -> [f64; N] {
+    if beyond {
+        scale(&unit(predictor, norm(predictor)), strength)
+    } else {
+        scale(predictor, stiffness)
+    }
+}
+
+/// `SED` of a stick increment after a slip (rate-following): the elastic energy as the next
+/// increment reads the stress, ½|τ̄|²·γ_crit/τ̄_crit(0), since a stick increment leaves the
+/// point at rest (`STATEV(2)` = 0) and the next one recovers γ̄^el with the rate-free stiffness.
+#[cold]
+fn rest_energy(tau_eq: f64, rest_strength: f64, gamma_crit: f64) -> f64 {
+    if rest_strength > 0.0 {
+        0.5 * tau_eq * (tau_eq * (gamma_crit / rest_strength))
+    } else {
+        0.0
     }
 }
 

@@ -23,6 +23,32 @@
 use crate::LawError;
 use crate::laws::friction_table::FrictionTable;
 
+/// How a rate-dependent strength enters the elastic-stick return map (docs/props.md, "The
+/// rate-dependent formulation"). Shared by the extended Coulomb law (law 1) and the adhesive
+/// law (law 2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum RateFormulation {
+    /// The default. Seed 000 after Eq. 5.2.3-1: the stick stiffness follows the rate-dependent
+    /// strength, k_s = τ_crit(γ̇)/γ_crit, so that in slip the elastic slip stays γ_crit and the
+    /// slip of the increment is explicit, Δγ_eq^sl = γ_eq^pr − γ_crit (Eq. 5.2.3-2), with
+    /// τ = τ_crit(Δγ_eq^sl/Δt)·n. The rate that sets k_s at the start of an increment, and in
+    /// a stick increment, is the previous increment's slip rate (`STATEV(2)`): the memory that
+    /// makes a sliding point keep sliding and a stopped point keep its stress.
+    #[default]
+    RateFollowingStiffness,
+    /// The earlier formulation, kept for comparison (scene F7): a rate-free stick stiffness
+    /// k_s = τ_crit(0)/γ_crit and the slip s solving k_s(γ_eq^pr − s) = τ_crit(s/Δt). It is a
+    /// massless spring pulling a weakening slider: under velocity weakening it slides steadily
+    /// only for large increments (r > 2c·x·e^(−x) for the decay law).
+    RateFreeStiffness,
+}
+
+/// The rate-following stick test |γ^pr| ≤ γ_crit·(1 + this): the start elastic slip
+/// γ̄^el = τ̄·γ_crit/τ_crit(γ̇₀) of a point that slid is γ_crit to a few roundings, and an
+/// increment without motion must not read as a slip of a few ulps (at a vanishing rate, where
+/// the strength is the static one, that would jump τ to μ_s·p).
+pub const STICK_TEST_ROUNDING: f64 = 16.0 * f64::EPSILON;
+
 /// How μ depends on the equivalent slip rate γ̇_eq.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum RateLaw {

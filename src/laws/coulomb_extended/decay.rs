@@ -77,12 +77,21 @@ impl ExtendedCoulomb {
         let start_rate = state.coulomb.slip_rate;
         let p = inc.pressure;
         let p0 = inc.pressure - inc.dpressure;
-        // τ̄_crit(0, p, θ̄) as `critical` forms it, from f = π·Θ (φ(0) = 1).
+        // The rate-following stick stiffness (as in `elastic_stick`): k̄_s at the start rate
+        // γ̇₀ = `STATEV(2)`, φ(γ̇₀) a constant factor of the strength; the earlier formulation
+        // and frozen μ: the rate-free φ(0) = 1.
+        let following = !self.frozen && self.formulation == RateFormulation::RateFollowingStiffness;
+        let phi_k = if following && start_rate > 0.0 {
+            decay_phi(r, d, start_rate).0
+        } else {
+            1.0
+        };
+        // τ̄_crit(γ̇_k, p, θ̄) as `critical` forms it, from f = φ(γ̇_k)·π·Θ (the rate held).
         let rate_free = |pressure: f64, f: [f64; 3]| -> Critical {
             if pressure < 0.0 {
                 return Critical::default();
             }
-            let mu = mbar * f[0];
+            let mu = mbar * f[0] * phi_k;
             if mu * pressure >= tau_max {
                 Critical {
                     value: tau_max,
@@ -93,12 +102,12 @@ impl ExtendedCoulomb {
                     value: mu * pressure,
                     d_rate: 0.0,
                     d_rate2: 0.0,
-                    d_pressure: mu + mbar * f[1] * pressure,
-                    d_temperature: mbar * f[2] * pressure,
+                    d_pressure: mu + mbar * f[1] * phi_k * pressure,
+                    d_temperature: mbar * f[2] * phi_k * pressure,
                 }
             }
         };
-        // Stick stiffness k̄_s = τ̄_crit(0, p, θ̄)/γ_crit at the end and at the start.
+        // Stick stiffness k̄_s = τ̄_crit(γ̇_k, p, θ̄)/γ_crit at the end and at the start.
         let factor = self.coefficient.rate_free(p, theta);
         let k = rate_free(p, factor);
         let k0 = rate_free(p0, self.coefficient.rate_free(p0, theta));
@@ -118,85 +127,116 @@ impl ExtendedCoulomb {
         } else {
             k
         };
-        let (traction, ddtdtheta, slip_eq, iterations) =
-            if stiffness * g <= stick_crit.value || stiffness <= 0.0 {
-                if stiffness <= 0.0 && g > gamma_crit {
-                    // No friction (p ≤ 0): zero stress, all motion beyond γ_crit is slip.
-                    let n = unit(&predictor, g);
-                    let slip_eq = g - gamma_crit;
-                    (
-                        Traction {
-                            tau: [0.0; N],
-                            ddtddg: [[0.0; N]; N],
-                            ddtddp: scale(&n, k.d_pressure),
-                            dslip: scale(&n, slip_eq),
-                            sed: 0.0,
-                            sfd: 0.0,
-                        },
-                        [0.0; N],
-                        slip_eq,
-                        0,
-                    )
-                } else {
-                    // Stick (Eq. 5.2.3-1): τ = k_s γ^pr.
-                    let mut ddtdtheta = scale(&predictor, stiffness_theta);
-                    for i in 0..N {
-                        ddtdtheta[i] += stiffness * d_elastic_dtheta[i];
-                    }
-                    (
-                        Traction {
-                            tau: scale(&predictor, stiffness),
-                            ddtddg: diag(stiffness),
-                            ddtddp: scale(&predictor, stiffness_p),
-                            dslip: [0.0; N],
-                            sed: 0.5 * stiffness * g * g,
-                            sfd: 0.0,
-                        },
-                        ddtdtheta,
-                        0.0,
-                        0,
-                    )
-                }
-            } else {
-                // Slip: k_s (γ_eq^pr − s) = τ_crit(s/Δt, p, θ̄).
-                let (slip_eq, crit, iterations) = if self.frozen {
-                    // μ frozen at the start rate: s = γ_eq^pr − τ_crit/k_s, explicit.
-                    (g - stick_crit.value / stiffness, stick_crit, 0)
-                } else {
-                    // Start from the slip at the start-of-increment rate, else from the rate-free
-                    // answer; stop at the round-off level of F (as `elastic_stick`).
-                    let guess = if start_rate > 0.0 {
-                        start_rate * rate_dt
-                    } else {
-                        g - gamma_crit
-                    };
-                    let f_tol = 8.0 * f64::EPSILON * (stiffness * g + k.value);
-                    // p ≥ 0 here (k_s > 0). 1/k̄_s as γ_crit/τ̄_crit(0): one division from τ̄_crit(0)
-                    // to the first guess, not two.
-                    let compliance = gamma_crit / k.value;
-                    self.solve_decay(
-                        factor,
-                        (r, d),
-                        mbar,
-                        p,
-                        g,
-                        (stiffness, compliance),
-                        per_dt,
-                        guess,
-                        f_tol,
-                    )
-                    .map_err(|e| local_solve_failed(e, g, rate_dt))?
-                };
-                // (After the solve in the code, so that its division does not queue in front of
-                // those on the way to the first exp.)
+        // Rate-following: stick ⇔ |γ̄^el| ≤ γ_crit, on the slips (see `elastic_stick`).
+        let sticks = if following {
+            g <= gamma_crit * (1.0 + STICK_TEST_ROUNDING)
+        } else {
+            stiffness * g <= stick_crit.value
+        };
+        let (traction, ddtdtheta, slip_eq, iterations) = if sticks || stiffness <= 0.0 {
+            if stiffness <= 0.0 && g > gamma_crit {
+                // No friction (p ≤ 0): zero stress, all motion beyond γ_crit is slip.
                 let n = unit(&predictor, g);
-                let t = crit.value;
-                // ∂τ_crit/∂s = (∂τ_crit/∂γ̇)/Δt (0 when frozen).
-                let t_s = if self.frozen {
-                    0.0
+                let slip_eq = g - gamma_crit;
+                (
+                    Traction {
+                        tau: [0.0; N],
+                        ddtddg: [[0.0; N]; N],
+                        ddtddp: scale(&n, k.d_pressure),
+                        dslip: scale(&n, slip_eq),
+                        sed: 0.0,
+                        sfd: 0.0,
+                    },
+                    [0.0; N],
+                    slip_eq,
+                    0,
+                )
+            } else {
+                // Stick (Eq. 5.2.3-1): τ = k_s γ^pr.
+                let mut ddtdtheta = scale(&predictor, stiffness_theta);
+                for i in 0..N {
+                    ddtdtheta[i] += stiffness * d_elastic_dtheta[i];
+                }
+                (
+                    Traction {
+                        tau: on_strength(
+                            &predictor,
+                            following && g > gamma_crit,
+                            stiffness,
+                            k.value,
+                        ),
+                        ddtddg: diag(stiffness),
+                        ddtddp: scale(&predictor, stiffness_p),
+                        dslip: [0.0; N],
+                        sed: if phi_k != 1.0 {
+                            // As the next increment reads τ: at rest (see `rest_energy`).
+                            rest_energy(
+                                stiffness * g,
+                                (mbar * factor[0] * p).min(tau_max),
+                                gamma_crit,
+                            )
+                        } else {
+                            0.5 * stiffness * g * g
+                        },
+                        sfd: 0.0,
+                    },
+                    ddtdtheta,
+                    0.0,
+                    0,
+                )
+            }
+        } else {
+            // Slip: k_s (γ_eq^pr − s) = τ_crit(s/Δt, p, θ̄).
+            let (slip_eq, crit, iterations) = if following {
+                // Eq. 5.2.3-2: s = γ̄_eq^pr − γ_crit, τ̄ = τ̄_crit(s/Δt)·n, explicit.
+                let s_eq = g - gamma_crit;
+                (
+                    s_eq,
+                    decay_critical(factor, (r, d), mbar, p, tau_max, s_eq * per_dt),
+                    0,
+                )
+            } else if self.frozen {
+                // μ frozen at the start rate: s = γ_eq^pr − τ_crit/k_s, explicit.
+                (g - stick_crit.value / stiffness, stick_crit, 0)
+            } else {
+                // Start from the slip at the start-of-increment rate, else from the rate-free
+                // answer; stop at the round-off level of F (as `elastic_stick`).
+                let guess = if start_rate > 0.0 {
+                    start_rate * rate_dt
                 } else {
-                    crit.d_rate * per_dt
+                    g - gamma_crit
                 };
+                let f_tol = 8.0 * f64::EPSILON * (stiffness * g + k.value);
+                // p ≥ 0 here (k_s > 0). 1/k̄_s as γ_crit/τ̄_crit(0): one division from τ̄_crit(0)
+                // to the first guess, not two.
+                let compliance = gamma_crit / k.value;
+                self.solve_decay(
+                    factor,
+                    (r, d),
+                    mbar,
+                    p,
+                    g,
+                    (stiffness, compliance),
+                    per_dt,
+                    guess,
+                    f_tol,
+                )
+                .map_err(|e| local_solve_failed(e, g, rate_dt))?
+            };
+            // (After the solve in the code, so that its division does not queue in front of
+            // those on the way to the first exp.)
+            let n = unit(&predictor, g);
+            let t = crit.value;
+            // ∂τ_crit/∂s = (∂τ_crit/∂γ̇)/Δt (0 when frozen).
+            let t_s = if self.frozen {
+                0.0
+            } else {
+                crit.d_rate * per_dt
+            };
+            let (ds_dg, ds_dp, per_dd) = if following {
+                // s = G − γ_crit.
+                (1.0, 0.0, 0.0)
+            } else {
                 let dd = stiffness + t_s;
                 if dd == 0.0 || !dd.is_finite() {
                     return Err(rate_softening_cancels(t_s, stiffness));
@@ -204,39 +244,47 @@ impl ExtendedCoulomb {
                 // Implicit derivatives of s from k_s (G − s) = τ_crit(s/Δt, p, θ̄).
                 // One division for the three implicit derivatives.
                 let per_dd = 1.0 / dd;
-                let ds_dg = stiffness * per_dd;
-                let ds_dp = (stiffness_p * (g - slip_eq) - crit.d_pressure) * per_dd;
-                let transverse = t / g;
-                // Eq. 5.2.3-3: (δ − nn) τ_crit/γ_eq^pr + nn (∂τ_crit/∂s) ∂s/∂G.
-                let ddtddg = super::rate_slip_tangent(&n, transverse, t_s, ds_dg);
-                let dtau_dp = t_s * ds_dp + crit.d_pressure;
-                let mut ddtdtheta = [0.0; N];
-                if with_theta {
-                    // θ̄: through the start elastic slip v = ∂γ^pr/∂θ̄ and through τ_crit(·, θ̄).
-                    let ds_dtheta = (stiffness_theta * (g - slip_eq) - crit.d_temperature) * per_dd;
-                    let v = d_elastic_dtheta;
-                    let nv = dot(&n, &v);
-                    let dt_dtheta = t_s * (ds_dg * nv + ds_dtheta) + crit.d_temperature;
-                    for i in 0..N {
-                        let proj_v = if N == 1 { 0.0 } else { v[i] - n[i] * nv };
-                        ddtdtheta[i] = transverse * proj_v + n[i] * dt_dtheta;
-                    }
-                }
                 (
-                    Traction {
-                        tau: scale(&n, t),
-                        ddtddg,
-                        ddtddp: scale(&n, dtau_dp),
-                        dslip: scale(&n, slip_eq),
-                        // |τ|²/(2k_s).
-                        sed: 0.5 * t * t / stiffness,
-                        sfd: t * slip_eq,
-                    },
-                    ddtdtheta,
-                    slip_eq,
-                    iterations,
+                    stiffness * per_dd,
+                    (stiffness_p * (g - slip_eq) - crit.d_pressure) * per_dd,
+                    per_dd,
                 )
             };
+            let transverse = t / g;
+            // Eq. 5.2.3-3: (δ − nn) τ_crit/γ_eq^pr + nn (∂τ_crit/∂s) ∂s/∂G.
+            let ddtddg = super::rate_slip_tangent(&n, transverse, t_s, ds_dg);
+            let dtau_dp = t_s * ds_dp + crit.d_pressure;
+            let mut ddtdtheta = [0.0; N];
+            if with_theta {
+                // θ̄: through the start elastic slip v = ∂γ^pr/∂θ̄ and through τ_crit(·, θ̄).
+                let ds_dtheta = (stiffness_theta * (g - slip_eq) - crit.d_temperature) * per_dd;
+                let v = d_elastic_dtheta;
+                let nv = dot(&n, &v);
+                let dt_dtheta = t_s * (ds_dg * nv + ds_dtheta) + crit.d_temperature;
+                for i in 0..N {
+                    let proj_v = if N == 1 { 0.0 } else { v[i] - n[i] * nv };
+                    ddtdtheta[i] = transverse * proj_v + n[i] * dt_dtheta;
+                }
+            }
+            (
+                Traction {
+                    tau: scale(&n, t),
+                    ddtddg,
+                    ddtddp: scale(&n, dtau_dp),
+                    dslip: scale(&n, slip_eq),
+                    // |τ|²/(2k_s), k_s = τ_crit/γ_crit at the end when rate-following.
+                    sed: if following {
+                        0.5 * t * gamma_crit
+                    } else {
+                        0.5 * t * t / stiffness
+                    },
+                    sfd: t * slip_eq,
+                },
+                ddtdtheta,
+                slip_eq,
+                iterations,
+            )
+        };
         // `check_outputs` in one test: x·0 is 0 for finite x, NaN otherwise.
         let mut probe = traction.sed * 0.0 + traction.sfd * 0.0;
         for i in 0..N {
@@ -317,23 +365,52 @@ impl ExtendedCoulomb {
         let (x, phi, dphi, iterations) =
             decay_halley(r, d, a, tau_max, stiffness, g, per_dt, guess, x_tol, f_tol)?;
         let root_x = x;
-        let c = if a * phi >= tau_max {
-            Critical {
-                value: tau_max,
-                ..Critical::default()
-            }
-        } else {
-            let mp = mbar * p;
-            Critical {
-                value: a * phi,
-                d_rate: a * dphi,
-                d_rate2: 0.0,
-                d_pressure: mbar * phi * pt + mp * (phi * pt_p),
-                d_temperature: mp * (phi * pt_t),
-            }
-        };
+        let c = critical_from_phi([pt, pt_p, pt_t], mbar, p, tau_max, phi, dphi);
         Ok((root_x, c, iterations))
     }
+}
+
+/// τ̄_crit = min(A·φ, τ_max), A = μ̄·π·Θ·p, with its partials, from φ and φ' at the rate.
+#[inline(always)]
+fn critical_from_phi(
+    [pt, pt_p, pt_t]: [f64; 3],
+    mbar: f64,
+    p: f64,
+    tau_max: f64,
+    phi: f64,
+    dphi: f64,
+) -> Critical {
+    let a = mbar * pt * p;
+    if a * phi >= tau_max {
+        Critical {
+            value: tau_max,
+            ..Critical::default()
+        }
+    } else {
+        let mp = mbar * p;
+        Critical {
+            value: a * phi,
+            d_rate: a * dphi,
+            d_rate2: 0.0,
+            d_pressure: mbar * phi * pt + mp * (phi * pt_p),
+            d_temperature: mp * (phi * pt_t),
+        }
+    }
+}
+
+/// The decay law's τ̄_crit(γ̇, p, θ̄) at a given rate (the rate-following slip answer), from the
+/// rate-free factor π·Θ and its partials.
+#[inline(always)]
+fn decay_critical(
+    factor: [f64; 3],
+    (r, d): (f64, f64),
+    mbar: f64,
+    p: f64,
+    tau_max: f64,
+    rate: f64,
+) -> Critical {
+    let (phi, dphi, _) = decay_phi(r, d, rate);
+    critical_from_phi(factor, mbar, p, tau_max, phi, dphi)
 }
 
 /// The decay law's local solve F(s) = k̄_s (γ̄_eq^pr − s) − min(A·φ(s/Δt), τ_max) = 0 on the

@@ -1,0 +1,244 @@
+! test_fric_weakening.f90 -- velocity-weakening friction (issue 16, scene F7) through FRIC and
+! UINTER, called as a user's Fortran 90 host calls them: plain `call fric(...)` and
+! `call uinter(...)`, no interface block. The Fortran twin of c_tests/test_fric_weakening.c,
+! with the same scenes and closed forms:
+!   steady sliding at v with increments r*gamma_crit (r = 0.01 .. 5, d_c v = 0.3 .. 10), NFDIR 1
+!     and 2: tau = mu(v) p (decay law, PROPS(8) = 1) or S_slide(v) (adhesive law, seed 004),
+!     never above the static strength before the first slip;
+!   stop: increments without motion keep the sliding stress (stick);
+!   reversal: stick through zero stress, then sliding at -mu(v) p;
+!   fresh gap (UINTER): free (zero stress, STATEV(3) = 4, LOPENCLOSE = 0) until first contact,
+!     bonded (STATEV(3) = 3, tension K_n |h|) at the same gap afterwards.
+!
+! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
+
+program test_fric_weakening
+  use harness_tally
+  implicit none
+  real(dp), parameter :: gcrit = 1.0e-3_dp, p = 100.0_dp, mu_s = 0.5_dp, mu_k = 0.2_dp
+  real(dp), parameter :: dc = 200.0_dp, sa = 3.0_dp, kmu = 0.5_dp, vhalf = 1.0e-3_dp
+  real(dp), parameter :: sentinel = -999.25_dp, big = 1.0e36_dp
+  integer, parameter :: mg = 8, msv = 8
+
+  integer :: lm, kstep, kinc, noel, npt, node, npatch, nfdir, mcrd, npred, nstatv, nprops
+  real(dp) :: tau(mg), ddtddg(mg), ddtddp(mg), dslip(mg), sed, sfd, ddtddt(mg), pnewdt
+  real(dp) :: statev(msv), dgam(mg), taulm(mg), press, dpress, ddpddh, slip(mg), time(2)
+  real(dp) :: dtime, coords(3), rcoord(3), drot(2, 2), temp(2), predef(2, 1), chrlngth
+  real(dp) :: props(20), d(2)
+  character(len=80) :: ciname, slname, msname
+  integer :: law, nd
+
+  do law = 1, 2
+    do nd = 1, 2
+      call steady(law, nd)
+      call stop_and_reversal(law, nd)
+    end do
+  end do
+  call fresh_gap(2)
+  call fresh_gap(3)
+  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
+  if (nfail > 0 .or. npass == 0) error stop 1
+
+contains
+
+  real(dp) function sliding(lw, v)
+    integer, intent(in) :: lw
+    real(dp), intent(in) :: v
+    if (lw == 1) then
+      sliding = (mu_k + (mu_s - mu_k)*exp(-dc*v))*p
+    else
+      sliding = ((mu_s*vhalf + mu_k*v)/(vhalf + v) + kmu*v)*p + sa
+    end if
+  end function sliding
+
+  real(dp) function static_strength(lw)
+    integer, intent(in) :: lw
+    static_strength = mu_s*p
+    if (lw == 2) static_strength = mu_s*p + sa
+  end function static_strength
+
+  subroutine point(lw, n)
+    integer, intent(in) :: lw, n
+    props = 0
+    if (lw == 1) then
+      props(1:10) = [1.0_dp, mu_s, 0.0_dp, 0.0_dp, gcrit, 0.0_dp, 0.0_dp, 1.0_dp, mu_k, dc]
+      nprops = 10
+    else
+      props(1:8) = [2.0_dp, mu_k, mu_s, sa, 0.0_dp, kmu, vhalf, gcrit]
+      nprops = 8
+    end if
+    lm = 0
+    tau = sentinel
+    tau(1:n) = 0
+    ddtddg = sentinel
+    ddtddp = sentinel
+    dslip = sentinel
+    ddtddt = sentinel
+    statev = sentinel
+    statev(1:3) = 0
+    dgam = sentinel
+    dgam(1:n) = 0
+    taulm = 0
+    slip = 0
+    press = p
+    dpress = 0
+    ddpddh = 1.0e6_dp
+    kstep = 1
+    kinc = 1
+    time = 0
+    dtime = 1
+    noel = 17
+    ciname = 'WEAKENING'
+    slname = 'SLAVE'
+    msname = 'MASTER'
+    npt = 1
+    node = 42
+    npatch = 1
+    coords = 0
+    rcoord = 0
+    drot = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+    temp = 20
+    predef = 0
+    nfdir = n
+    mcrd = 3
+    npred = 1
+    nstatv = 3
+    chrlngth = 1
+    d = [1.0_dp, 0.0_dp]
+    if (n == 2) d = [0.6_dp, -0.8_dp]
+  end subroutine point
+
+  ! One increment of slip dg along d in time |dg|/v; returns tau along d.
+  real(dp) function step(dg, v)
+    real(dp), intent(in) :: dg, v
+    dgam(1:nfdir) = dg*d(1:nfdir)
+    dtime = abs(dg)/v
+    if (dg == 0) dtime = 0.1_dp ! a stop still takes time
+    dpress = 0
+    pnewdt = big
+    call fric(lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pnewdt, statev, dgam, taulm, &
+              press, dpress, ddpddh, slip, kstep, kinc, time, dtime, noel, ciname, slname, &
+              msname, npt, node, npatch, coords, rcoord, drot, temp, predef, nfdir, mcrd, &
+              npred, nstatv, chrlngth, props, nprops)
+    call check(pnewdt == big, 'no cut-back')
+    call check(all(tau(nfdir + 1:) == sentinel), 'TAU past NFDIR untouched')
+    call check(all(statev(nstatv + 1:) == sentinel), 'STATEV past NSTATV untouched')
+    step = dot_product(tau(1:nfdir), d(1:nfdir))
+  end function step
+
+  subroutine steady(lw, n)
+    integer, intent(in) :: lw, n
+    real(dp), parameter :: ratios(6) = [0.01_dp, 0.1_dp, 0.25_dp, 0.5_dp, 1.0_dp, 5.0_dp]
+    real(dp), parameter :: xs(4) = [0.3_dp, 1.0_dp, 3.0_dp, 10.0_dp]
+    real(dp) :: r, v, t, want
+    integer :: i, j, k, ninc
+    logical :: slid
+    do i = 1, 6
+      do j = 1, 4
+        r = ratios(i)
+        v = xs(j)/dc
+        want = sliding(lw, v)
+        write (scene, '(a,i0,a,i0,a,g0.3,a,g0.3)') 'steady law ', lw, ' NFDIR ', n, ' r ', r, &
+          ' d_c v ', xs(j)
+        call point(lw, n)
+        ninc = ceiling(1.5_dp/r) + 20
+        slid = .false.
+        do k = 1, ninc
+          t = step(r*gcrit, v)
+          if (statev(3) == 1) slid = .true.
+          if (.not. slid) call check(t <= static_strength(lw)*(1 + 1.0e-12_dp), &
+                                     'below the static strength before the first slip')
+        end do
+        call check(slid, 'slides')
+        do k = 1, 20
+          t = step(r*gcrit, v)
+          call check(statev(3) == 1, 'sliding')
+          call check_near(t, want, 1.0e-9_dp, 0.0_dp, 'tau = mu(v) p')
+          call check_near(statev(2), v, 1.0e-9_dp, 0.0_dp, 'STATEV(2) = v')
+        end do
+      end do
+    end do
+  end subroutine steady
+
+  subroutine stop_and_reversal(lw, n)
+    integer, intent(in) :: lw, n
+    real(dp) :: v, want, t, r
+    integer :: k, crossed, first_slip
+    v = 3.0_dp/dc
+    r = 0.1_dp
+    want = sliding(lw, v)
+    call point(lw, n)
+    write (scene, '(a,i0,a,i0)') 'stop law ', lw, ' NFDIR ', n
+    do k = 1, 40
+      t = step(r*gcrit, v)
+    end do
+    call check_near(t, want, 1.0e-9_dp, 0.0_dp, 'sliding before the stop')
+    do k = 1, 4
+      t = step(0.0_dp, v)
+      call check(statev(3) == 0, 'a stop is stick')
+      call check_near(t, want, 1.0e-9_dp, 0.0_dp, 'a stop keeps the stress')
+    end do
+    write (scene, '(a,i0,a,i0)') 'reversal law ', lw, ' NFDIR ', n
+    crossed = -1
+    first_slip = -1
+    do k = 1, 80
+      t = step(-r*gcrit, v)
+      if (crossed < 0 .and. t < 0) crossed = k
+      if (first_slip < 0 .and. statev(3) == 1) first_slip = k
+    end do
+    call check(crossed > 1, 'the first reversed increment still pushes forward')
+    call check(first_slip > crossed, 'stick through zero stress')
+    call check_near(t, -want, 1.0e-9_dp, 0.0_dp, 'sliding the other way')
+  end subroutine stop_and_reversal
+
+  subroutine fresh_gap(ndir)
+    integer, intent(in) :: ndir
+    real(dp) :: stress(4), ddsddr(10), dvisc(10), dstruct(10), flux(3), ddfddt(5), ddsddt(7)
+    real(dp) :: ddfddr(7), sv(4), ssed, ssfd, spd, svd, scd, pnew, rdisp(3), drdisp(3)
+    real(dp) :: utemp(2), dtemp(2), upredef(2), dpred(2), utime(2), udtime, freqr
+    real(dp) :: uprops(10), ucoords(3), alocaldir(9), udrot(2, 2), area, uchr
+    character(len=80) :: cin, sln, msn
+    integer :: unode, unstatv, unpred, unprops, umcrd, ukstep, ukinc, kit, linper
+    integer :: lopenclose, lstate, lsdi, lprint, pass
+    uprops = [2.0_dp, mu_k, mu_s, sa, 5.0_dp, 0.0_dp, 0.0_dp, gcrit, 0.0_dp, 1.0e6_dp]
+    stress = 0
+    stress(4) = sentinel
+    sv = 0
+    sv(4) = sentinel
+    ssed = 0; ssfd = 0; spd = 0; svd = 0; scd = 0
+    rdisp = 0; drdisp = [-1.0e-6_dp, 1.0e-5_dp, 0.0_dp]
+    utemp = 20; dtemp = 0; upredef = 0; dpred = 0; utime = 0; udtime = 1; freqr = 0
+    ucoords = 0; alocaldir = 0; udrot = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+    area = 1; uchr = 1
+    cin = 'FRESH'; sln = 'SLAVE'; msn = 'MASTER'
+    unode = 1; unstatv = 3; unpred = 1; unprops = 10; umcrd = 3; ukstep = 1; ukinc = 1
+    kit = 1; linper = 0; lopenclose = -1; lstate = -1; lsdi = 0; lprint = 0
+    do pass = 0, 2
+      write (scene, '(a,i0,a,i0)') 'fresh gap NDIR ', ndir, ' pass ', pass
+      rdisp(1) = -1.0e-6_dp
+      if (pass == 1) rdisp(1) = 1.0e-6_dp
+      pnew = big
+      call uinter(stress, ddsddr, dvisc, dstruct, flux, ddfddt, ddsddt, ddfddr, sv, ssed, &
+                  ssfd, spd, svd, scd, pnew, rdisp, drdisp, utemp, dtemp, upredef, dpred, &
+                  utime, udtime, freqr, cin, sln, msn, uprops, ucoords, alocaldir, udrot, &
+                  area, uchr, unode, ndir, unstatv, unpred, unprops, umcrd, ukstep, ukinc, kit, &
+                  linper, lopenclose, lstate, lsdi, lprint)
+      call check(pnew == big, 'no cut-back')
+      call check(sv(4) == sentinel .and. stress(4) == sentinel, 'guards untouched')
+      drdisp(2) = 0
+      select case (pass)
+      case (0)
+        call check(all(stress(1:ndir) == 0), 'a fresh point with a gap carries nothing')
+        call check(sv(3) == 4, 'status open')
+        call check(lopenclose == 0, 'LOPENCLOSE = 0')
+      case (1)
+        call check_near(stress(1), 1.0_dp, 1.0e-12_dp, 0.0_dp, 'closed: p = K_n h')
+        call check(sv(3) == 0, 'status stick')
+      case default
+        call check_near(stress(1), -1.0_dp, 1.0e-12_dp, 0.0_dp, 'bonded: tension K_n |h|')
+        call check(sv(3) == 3, 'status bonded')
+        call check(lopenclose == 1, 'LOPENCLOSE = 1')
+      end select
+    end do
+  end subroutine fresh_gap
+end program test_fric_weakening
