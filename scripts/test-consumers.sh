@@ -8,8 +8,8 @@
 #   - a Fortran 77 host via a Makefile and pkg-config, shared and static, and the same host
 #     keeping its own FRIC next to the library's GAPCON (static and shared);
 #   - docs/install.md's CalculiX steps on a stand-in for a stock CalculiX build;
-# and, from the source tree, a C host via add_subdirectory. Each host asserts closed forms and
-# error texts and prints "N passed, M failed".
+# and, from the source tree, a C host via add_subdirectory and via FetchContent. Each host
+# asserts closed forms and error texts and prints "N passed, M failed".
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -89,9 +89,12 @@ run "$work/f77/host_own_shared" own-fric
 step "CalculiX: docs/install.md's steps on a stand-in for a stock build (ccx_2.22.a)"
 run examples/consumers/calculix_recipe/recipe.sh "$prefix" "$work/ccx"
 
-step "C host, add_subdirectory of the source tree"
-cmake -S examples/consumers/c_add_subdirectory -B "$work/sub" -DINTERFACIAL_SOURCE_DIR="$root" \
-  -DEXPECTED_VERSION="$version" >/dev/null
-cmake --build "$work/sub" -j"$jobs" >/dev/null
-run "$work/sub/host"
+for fetch in OFF ON; do
+  step "C host, the source tree as a subproject (FetchContent: $fetch; add_subdirectory otherwise)"
+  cmake -S examples/consumers/c_add_subdirectory -B "$work/sub-$fetch" \
+    -DINTERFACIAL_SOURCE_DIR="$root" -DEXPECTED_VERSION="$version" -DUSE_FETCHCONTENT=$fetch \
+    >/dev/null
+  cmake --build "$work/sub-$fetch" -j"$jobs" >/dev/null
+  run "$work/sub-$fetch/host"
+done
 echo "consumers: all passed"

@@ -3,7 +3,7 @@
 
 use std::ffi::{c_char, c_int};
 
-use super::{boundary, fortran_string, read, read_array, write};
+use super::{boundary, fortran_name_bytes, fortran_string, read, read_array, write};
 use crate::LawError;
 use crate::config;
 use crate::report::Site;
@@ -166,7 +166,7 @@ unsafe fn gap_conductance(
         || unsafe { site(ciname, ciname_len, noel, node) },
         // SAFETY: D(2), TEMP(2) readable, AK(1) writable per the GAPCON contract.
         || unsafe {
-            let law = config::gap_law_for(name_bytes(ciname, ciname_len))?;
+            let law = config::gap_law_for(fortran_name_bytes(ciname, ciname_len))?;
             let [clearance, pressure] = read_array::<2>(d, "D")?;
             let [theta_a, theta_b] = read_array::<2>(temp, "TEMP")?;
             let r = law.evaluate(clearance, pressure, theta_a, theta_b)?;
@@ -179,19 +179,6 @@ unsafe fn gap_conductance(
         // SAFETY: AK(1) writable (or NULL, then skipped).
         || unsafe { write(ak, GAPCON_SAFE_CONDUCTANCE) },
     );
-}
-
-/// CINAME as bytes, without copying.
-///
-/// # Safety
-/// `p` is NULL or points to `len` readable bytes that outlive the borrow.
-unsafe fn name_bytes<'a>(p: *const c_char, len: usize) -> &'a [u8] {
-    if p.is_null() || len == 0 {
-        &[]
-    } else {
-        // SAFETY: as documented.
-        unsafe { std::slice::from_raw_parts(p.cast::<u8>(), len) }
-    }
 }
 
 unsafe fn site(

@@ -215,6 +215,20 @@ pub(crate) unsafe fn write<T>(p: *mut T, v: T) {
 /// argument list (CalculiX's `gapcon` with `AREA` calling the Abaqus build).
 pub(crate) const MAX_NAME_LEN: usize = 65535;
 
+/// A Fortran `CHARACTER` argument as bytes, without copying, for name lookups: empty for NULL,
+/// a zero length or a length above [`MAX_NAME_LEN`] (an address, not a length: never read).
+///
+/// # Safety
+/// `p` is NULL or points to `len` readable bytes that outlive the borrow.
+pub(crate) unsafe fn fortran_name_bytes<'a>(p: *const c_char, len: usize) -> &'a [u8] {
+    if p.is_null() || len == 0 || len > MAX_NAME_LEN {
+        &[]
+    } else {
+        // SAFETY: as documented.
+        unsafe { std::slice::from_raw_parts(p.cast::<u8>(), len) }
+    }
+}
+
 /// A Fortran `CHARACTER` argument: `len` bytes, blank-padded, not NUL-terminated. Trailing
 /// blanks (and NULs, which some C callers leave) are trimmed; nothing past `len` is read.
 ///
