@@ -422,3 +422,36 @@ fn a_finding_fails_when_the_data_stops_supporting_it() {
     assert_eq!(verdict(&make(&errors)), Some(false));
     assert_eq!(verdict(&make(&errors[..4])), None);
 }
+
+#[test]
+fn an_unguarded_host_gets_a_refusal_and_cuts_back_beyond_the_spring_limit() {
+    // F6 map 3 (reduced grid): a host with no divergence check of its own. Beyond 2·sqrt(m/k)
+    // the motion overflows, fric_ refuses the non-finite DGAM (PNEWDT = 0.25) and the host cuts
+    // back; below 1.6 s nothing is refused; no cell holds a NaN.
+    let scene = f6();
+    let o = scene.file.oscillator.expect("F6");
+    let spec = scene
+        .file
+        .maps
+        .iter()
+        .find(|m| m.host.as_deref() == Some("unguarded"))
+        .expect("the cut-back map");
+    let map = run_map(&o, spec, true, |_, _| {}).expect("map");
+    let spring_limit = 2.0 * (o.mass / o.spring).sqrt();
+    let mut beyond = 0;
+    for row in &map.cells {
+        for (c, cell) in row.iter().enumerate() {
+            if map.dts[c] > 1.05 * spring_limit {
+                assert_eq!(*cell, Cell::CutBack, "Δt {}", map.dts[c]);
+                beyond += 1;
+            }
+            if map.dts[c] < 1.6 {
+                assert_ne!(*cell, Cell::CutBack, "Δt {}", map.dts[c]);
+            }
+        }
+    }
+    assert!(beyond >= 2, "{beyond} cells beyond the limit");
+    assert!(map.cutbacks >= beyond);
+    assert!(map.refused.contains("DGAM"), "{}", map.refused);
+    assert!(map.errors.iter().flatten().all(|e| !e.is_nan()));
+}

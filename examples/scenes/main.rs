@@ -14,12 +14,14 @@
 //!    against the closed form, wall time and `fric_` calls, each point held to the accuracy its
 //!    chart claims (dashed on the charts).
 //! 3. Stability maps of F6 over (Δt, γ_crit), with the explicit limit, and the check that the
-//!    measured explicit boundary is within one grid cell of 2/sqrt((k + K_f)/m).
+//!    measured explicit boundary is within one grid cell of 2/sqrt((k + K_f)/m); a map with an
+//!    unguarded host that cuts back when `fric_` refuses (PNEWDT < 1); the F4 rate maps.
+//! 4. Findings (`findings.rs`): every figure README.md and docs/scenes.md quote, recomputed.
 //!
 //! Writes `<out>/<scene>-work-precision.csv`, `<out>/<scene>-error-vs-time.svg`,
-//! `<out>/<scene>-error-vs-calls.svg`, `<out>/F6-map-<n>.csv` and `.svg`, and `<out>/checks.csv`
-//! (default `<out>` = `target/scenes`). Exits non-zero when a check or a claim fails. How to read
-//! and extend it: `docs/scenes.md`.
+//! `<out>/<scene>-error-vs-calls.svg`, `<out>/F6-map-<n>.csv` and `.svg`, `<out>/checks.csv` and
+//! `<out>/findings.csv` (default `<out>` = `target/scenes`). Exits non-zero when a check, a claim
+//! or a finding fails. How to read and extend it: `docs/scenes.md`.
 
 mod charts;
 mod checks;
