@@ -283,8 +283,8 @@ fn anisotropic_sed_and_accumulated_slip_are_as_documented() {
     c.call();
     assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
     assert_eq!(c.statev[2], 0.0, "the point must stick");
-    for i in 0..2 {
-        assert!((c.tau[i] - k[i] * c.dgam[i]).abs() < 1e-12 * kbar * 1e-4);
+    for (i, k_i) in k.iter().enumerate() {
+        assert!((c.tau[i] - k_i * c.dgam[i]).abs() < 1e-12 * kbar * 1e-4);
     }
     let sed = c.tau[0] * c.tau[0] / (2.0 * k[0]) + c.tau[1] * c.tau[1] / (2.0 * k[1]);
     assert!(
