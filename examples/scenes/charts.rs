@@ -634,6 +634,11 @@ pub fn stability_map(
         Swatch::Line(BLACK, Marker::None, false),
         "explicit limit Δt = 2/sqrt((k + K_f)/m), K_f = μ_s N/γ_crit".into(),
     ));
+    let spring_limit = 2.0 * (o.mass / o.spring).sqrt();
+    legend.push((
+        Swatch::Line(BLACK, Marker::None, true),
+        format!("the spring's own explicit limit 2·sqrt(m/k) = {spring_limit:.3} s"),
+    ));
     if !marks.is_empty() {
         legend.push((
             Swatch::Mark(BLACK, Marker::Ring),
@@ -683,6 +688,16 @@ pub fn stability_map(
         chart
             .draw_series(LineSeries::new(limit, BLACK.stroke_width(3)))
             .map_err(err)?;
+        if spring_limit > x0 && spring_limit < x1 {
+            chart
+                .draw_series(DashedLineSeries::new(
+                    [(spring_limit, y0), (spring_limit, y1)],
+                    8,
+                    5,
+                    BLACK.stroke_width(2),
+                ))
+                .map_err(err)?;
+        }
         draw_cell_marks(chart, &map.dts, &map.gammas, marks)
     })
 }
