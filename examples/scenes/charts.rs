@@ -632,7 +632,11 @@ pub fn stability_map(
         .collect();
     legend.push((
         Swatch::Line(BLACK, Marker::None, false),
-        "explicit limit Δt = 2/sqrt((k + K_f)/m), K_f = μ_s N/γ_crit".into(),
+        if map.integrator == crate::oscillator::Integrator::Explicit {
+            "explicit limit Δt = 2/sqrt((k + K_f)/m), K_f = μ_s N/γ_crit".into()
+        } else {
+            "for reference, the explicit limit Δt = 2/sqrt((k + K_f)/m), K_f = μ_s N/γ_crit".into()
+        },
     ));
     let spring_limit = 2.0 * (o.mass / o.spring).sqrt();
     legend.push((
