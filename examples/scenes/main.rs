@@ -360,7 +360,7 @@ fn main() {
         let highlights = findings::highlights(id);
         let written = write_points(&csv, &points)
             .and_then(|()| {
-                charts::work_precision(
+                charts::work_precision_chart(
                     &time_svg,
                     &format!("{}: error against wall time", scene.file.title),
                     "wall time per run (s): median of 5 repeats, bar = fastest..slowest",
@@ -372,7 +372,7 @@ fn main() {
                 )
             })
             .and_then(|()| {
-                charts::work_precision(
+                charts::work_precision_chart(
                     &calls_svg,
                     &format!("{}: error against fric_ calls", scene.file.title),
                     "fric_ calls per run, Newton iterations included (–)",
