@@ -228,7 +228,13 @@ fn print_points(points: &[Point]) -> usize {
             p.calls,
             p.wall / p.calls.max(1) as f64 * 1e9,
             p.verdict,
-            if p.meets_claim() { "yes" } else { "NO" }
+            if !p.claim.is_finite() {
+                "no claim"
+            } else if p.meets_claim() {
+                "yes"
+            } else {
+                "NO"
+            }
         );
     }
     failed
