@@ -148,7 +148,11 @@ fn write_points(path: &Path, points: &[Point]) -> Result<(), String> {
             p.relative_step,
             p.error,
             p.claim,
-            p.meets_claim(),
+            if p.claim.is_finite() {
+                if p.meets_claim() { "true" } else { "false" }
+            } else {
+                "no claim"
+            },
             p.verdict,
             p.calls,
             p.wall,
