@@ -259,3 +259,46 @@ fn hht_slip_rate_in_statev_uses_the_scaled_increment() {
         c.statev[1]
     );
 }
+
+/// docs/fric.md: with anisotropy SED = Σ τ_i²/(2k_i), k_i = (μ_i/μ̄)²·k̄_s, and STATEV(1) adds the
+/// length of the actual (unscaled) slip increment |DSLIP|.
+#[test]
+fn anisotropic_sed_and_accumulated_slip_are_as_documented() {
+    let text = read("docs/fric.md");
+    assert!(text.contains(&normalised(
+        "|τ̄|²/(2k̄_s) = Σ τ_i²/(2k_i) with k_i = (μ_i/μ̄)²·k̄_s. `STATEV(1)` adds the length of \
+         the actual slip increment |Δγ^sl| (not the scaled one)"
+    )));
+    let (mu1, mu2, p, gamma_crit) = (0.4, 0.2, 50.0, 1e-3);
+    let props = extended(&[(2, mu2)]);
+    let mbar = ((mu1 * mu1 + mu2 * mu2) / 2.0f64).sqrt();
+    let kbar = mbar * p / gamma_crit;
+    let k = [(mu1 / mbar).powi(2) * kbar, (mu2 / mbar).powi(2) * kbar];
+    // Stick from rest: τ_i = k_i·Δγ_i.
+    let mut c = FricCall::new(2, &props);
+    c.press = p;
+    c.dpress = 0.0;
+    c.dtime = 0.1;
+    c.dgam = [2e-4, -1e-4, 0.0];
+    c.call();
+    assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+    assert_eq!(c.statev[2], 0.0, "the point must stick");
+    for (i, k_i) in k.iter().enumerate() {
+        assert!((c.tau[i] - k_i * c.dgam[i]).abs() < 1e-12 * kbar * 1e-4);
+    }
+    let sed = c.tau[0] * c.tau[0] / (2.0 * k[0]) + c.tau[1] * c.tau[1] / (2.0 * k[1]);
+    assert!(
+        (c.sed - sed).abs() < 1e-12 * sed,
+        "SED {} against {sed}",
+        c.sed
+    );
+    // Slip: STATEV(1) grows by |DSLIP|.
+    let before = c.statev[0];
+    c.dgam = [4e-3, 3e-3, 0.0];
+    c.call();
+    assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+    assert_eq!(c.statev[2], 1.0, "the point must slip");
+    let slip = c.dslip[0].hypot(c.dslip[1]);
+    assert!(slip > 0.0);
+    assert!((c.statev[0] - before - slip).abs() < 1e-15 * slip.max(1.0));
+}

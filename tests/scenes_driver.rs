@@ -6,8 +6,12 @@
 //! The driver's modules are compiled into this test by path, so the test runs the same code.
 #![allow(dead_code)]
 
+#[path = "../examples/scenes/charts.rs"]
+mod charts;
 #[path = "../examples/scenes/circle.rs"]
 mod circle;
+#[path = "../examples/scenes/findings.rs"]
+mod findings;
 #[path = "../examples/scenes/oscillator.rs"]
 mod oscillator;
 #[path = "../examples/scenes/pull.rs"]
@@ -373,4 +377,97 @@ fn rate_stability_maps_follow_the_closed_form_limit() {
         );
         assert!(!cells.contains(&&rate_map::RateCell::CutBack));
     }
+}
+
+#[test]
+fn the_rate_stability_limits_docs_scenes_md_quotes() {
+    // docs/scenes.md: "With γ_c = 1e-3 (k_s = μ_s p/γ_c) the limits at v = 0.05 are 3.3e-3 and
+    // 1.6e-3": 2|dτ/dv|/k_s and |dτ/dv|/k_s with |dτ/dv| = (μ_s − μ_k)·d_c·e^(−d_c v)·p.
+    let mut v = f4().file.velocity.expect("F4");
+    v.rates = vec![0.05];
+    let slope = (v.mu_static - v.mu_kinetic) * v.decay * (-v.decay * 0.05f64).exp() * v.pressure;
+    let k_s = v.mu_static * v.pressure / 1e-3;
+    let (implicit, frozen) = (
+        v.rate_stability_limit(velocity::RateLaw::Decay, 1e-3),
+        v.rate_stability_limit(velocity::RateLaw::DecayFrozen, 1e-3),
+    );
+    assert!((implicit - 2.0 * slope / k_s).abs() < 1e-12 * implicit);
+    assert!((frozen - slope / k_s).abs() < 1e-12 * frozen);
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/scenes.md"))
+        .expect("docs/scenes.md");
+    assert!(text.contains("the limits at v = 0.05 are 3.3e-3 and 1.6e-3"));
+    assert_eq!(format!("{implicit:.1e}"), "3.3e-3");
+    assert_eq!(format!("{frozen:.1e}"), "1.6e-3");
+}
+
+#[test]
+fn a_finding_fails_when_the_data_stops_supporting_it() {
+    // F6-penalty-floor ("the penalty stays above 10 %") on points built from one real run: holds
+    // with every error at 20 %, fails as soon as one completed run is within 5 %, and is not
+    // checked without enough points.
+    let scene = f6();
+    let base = run_point(&scene, &scene.methods[0], 0.01);
+    let make = |errors: &[f64]| -> Vec<scene::Point> {
+        let methods = [
+            "explicit CD, elastic γc=1e-3",
+            "explicit CD, elastic γc=1e-4",
+            "Newmark, elastic γc=1e-3",
+        ];
+        errors
+            .iter()
+            .enumerate()
+            .map(|(i, e)| scene::Point {
+                method: methods[i % 3].into(),
+                step: 1e-3 * (1 + i) as f64,
+                error: *e,
+                verdict: "ok",
+                ..base.clone()
+            })
+            .collect()
+    };
+    let verdict = |points: &[scene::Point]| {
+        findings::evaluate(points, &[], &[])
+            .into_iter()
+            .find(|f| f.id == "F6-penalty-floor")
+            .expect("the finding")
+            .ok
+    };
+    let mut errors = vec![0.2; 12];
+    assert_eq!(verdict(&make(&errors)), Some(true));
+    errors[7] = 0.05;
+    assert_eq!(verdict(&make(&errors)), Some(false));
+    assert_eq!(verdict(&make(&errors[..4])), None);
+}
+
+#[test]
+fn an_unguarded_host_gets_a_refusal_and_cuts_back_beyond_the_spring_limit() {
+    // F6 map 3 (reduced grid): a host with no divergence check of its own. Beyond 2·sqrt(m/k)
+    // the motion overflows, fric_ refuses the non-finite DGAM (PNEWDT = 0.25) and the host cuts
+    // back; below 1.6 s nothing is refused; no cell holds a NaN.
+    let scene = f6();
+    let o = scene.file.oscillator.expect("F6");
+    let spec = scene
+        .file
+        .maps
+        .iter()
+        .find(|m| m.host.as_deref() == Some("unguarded"))
+        .expect("the cut-back map");
+    let map = run_map(&o, spec, true, |_, _| {}).expect("map");
+    let spring_limit = 2.0 * (o.mass / o.spring).sqrt();
+    let mut beyond = 0;
+    for row in &map.cells {
+        for (c, cell) in row.iter().enumerate() {
+            if map.dts[c] > 1.05 * spring_limit {
+                assert_eq!(*cell, Cell::CutBack, "Δt {}", map.dts[c]);
+                beyond += 1;
+            }
+            if map.dts[c] < 1.6 {
+                assert_ne!(*cell, Cell::CutBack, "Δt {}", map.dts[c]);
+            }
+        }
+    }
+    assert!(beyond >= 2, "{beyond} cells beyond the limit");
+    assert!(map.cutbacks >= beyond);
+    assert!(map.refused.contains("DGAM"), "{}", map.refused);
+    assert!(map.errors.iter().flatten().all(|e| !e.is_nan()));
 }

@@ -384,11 +384,37 @@ pub struct Highlight {
 }
 
 /// How the x value of a work-precision point is taken.
-pub enum Cost {
+pub enum Cost<'a> {
     /// Median wall time per run, with the range of the repeats as an error bar.
     Wall,
     /// `fric_` calls per run.
     Calls,
+    /// Any other cost of a point (no bars).
+    Other(&'a dyn Fn(&Point) -> f64),
+}
+
+/// The earlier signature (x from a closure; the legend goes to the side panel whatever
+/// `_legend` says; no highlights), kept for callers written against it.
+#[allow(dead_code)]
+pub fn work_precision(
+    path: &Path,
+    title: &str,
+    x_title: &str,
+    y_title: &str,
+    points: &[Point],
+    _legend: SeriesLabelPosition,
+    cost: impl Fn(&Point) -> f64,
+) -> Result<(), String> {
+    work_precision_chart(
+        path,
+        title,
+        x_title,
+        y_title,
+        points,
+        Cost::Other(&cost),
+        &[],
+        "",
+    )
 }
 
 /// Error against cost, one curve per method. Points whose run did not end "ok" are left out of
@@ -398,7 +424,7 @@ pub enum Cost {
 /// point within 5 % in error at the same step) is drawn with rings over the first one's dots,
 /// and a note says so.
 #[allow(clippy::too_many_arguments)]
-pub fn work_precision(
+pub fn work_precision_chart(
     path: &Path,
     title: &str,
     x_title: &str,
@@ -411,6 +437,7 @@ pub fn work_precision(
     let x_of = |p: &Point| match cost {
         Cost::Wall => p.wall,
         Cost::Calls => p.calls as f64,
+        Cost::Other(f) => f(p),
     };
     let usable: Vec<&Point> = points
         .iter()
@@ -420,6 +447,7 @@ pub fn work_precision(
     let (x0, x1) = decades(usable.iter().chain(&failed).flat_map(|p| match cost {
         Cost::Wall => vec![p.wall_range[0], p.wall_range[1], p.wall],
         Cost::Calls => vec![p.calls as f64],
+        Cost::Other(f) => vec![f(p)],
     }));
     let (y0, y1) = decades(
         usable
@@ -632,7 +660,16 @@ pub fn stability_map(
         .collect();
     legend.push((
         Swatch::Line(BLACK, Marker::None, false),
-        "explicit limit Δt = 2/sqrt((k + K_f)/m), K_f = μ_s N/γ_crit".into(),
+        if map.integrator == crate::oscillator::Integrator::Explicit {
+            "explicit limit Δt = 2/sqrt((k + K_f)/m), K_f = μ_s N/γ_crit".into()
+        } else {
+            "for reference, the explicit limit Δt = 2/sqrt((k + K_f)/m), K_f = μ_s N/γ_crit".into()
+        },
+    ));
+    let spring_limit = 2.0 * (o.mass / o.spring).sqrt();
+    legend.push((
+        Swatch::Line(BLACK, Marker::None, true),
+        format!("the spring's own explicit limit 2·sqrt(m/k) = {spring_limit:.3} s"),
     ));
     if !marks.is_empty() {
         legend.push((
@@ -683,6 +720,16 @@ pub fn stability_map(
         chart
             .draw_series(LineSeries::new(limit, BLACK.stroke_width(3)))
             .map_err(err)?;
+        if spring_limit > x0 && spring_limit < x1 {
+            chart
+                .draw_series(DashedLineSeries::new(
+                    [(spring_limit, y0), (spring_limit, y1)],
+                    8,
+                    5,
+                    BLACK.stroke_width(2),
+                ))
+                .map_err(err)?;
+        }
         draw_cell_marks(chart, &map.dts, &map.gammas, marks)
     })
 }

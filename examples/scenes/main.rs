@@ -14,12 +14,14 @@
 //!    against the closed form, wall time and `fric_` calls, each point held to the accuracy its
 //!    chart claims (dashed on the charts).
 //! 3. Stability maps of F6 over (Δt, γ_crit), with the explicit limit, and the check that the
-//!    measured explicit boundary is within one grid cell of 2/sqrt((k + K_f)/m).
+//!    measured explicit boundary is within one grid cell of 2/sqrt((k + K_f)/m); a map with an
+//!    unguarded host that cuts back when `fric_` refuses (PNEWDT < 1); the F4 rate maps.
+//! 4. Findings (`findings.rs`): every figure README.md and docs/scenes.md quote, recomputed.
 //!
 //! Writes `<out>/<scene>-work-precision.csv`, `<out>/<scene>-error-vs-time.svg`,
-//! `<out>/<scene>-error-vs-calls.svg`, `<out>/F6-map-<n>.csv` and `.svg`, and `<out>/checks.csv`
-//! (default `<out>` = `target/scenes`). Exits non-zero when a check or a claim fails. How to read
-//! and extend it: `docs/scenes.md`.
+//! `<out>/<scene>-error-vs-calls.svg`, `<out>/F6-map-<n>.csv` and `.svg`, `<out>/checks.csv` and
+//! `<out>/findings.csv` (default `<out>` = `target/scenes`). Exits non-zero when a check, a claim
+//! or a finding fails. How to read and extend it: `docs/scenes.md`.
 
 mod charts;
 mod checks;
@@ -148,7 +150,11 @@ fn write_points(path: &Path, points: &[Point]) -> Result<(), String> {
             p.relative_step,
             p.error,
             p.claim,
-            p.meets_claim(),
+            if p.claim.is_finite() {
+                if p.meets_claim() { "true" } else { "false" }
+            } else {
+                "no claim"
+            },
             p.verdict,
             p.calls,
             p.wall,
@@ -228,7 +234,13 @@ fn print_points(points: &[Point]) -> usize {
             p.calls,
             p.wall / p.calls.max(1) as f64 * 1e9,
             p.verdict,
-            if p.meets_claim() { "yes" } else { "NO" }
+            if !p.claim.is_finite() {
+                "no claim"
+            } else if p.meets_claim() {
+                "yes"
+            } else {
+                "NO"
+            }
         );
     }
     failed
@@ -366,7 +378,7 @@ fn main() {
         let highlights = findings::highlights(id);
         let written = write_points(&csv, &points)
             .and_then(|()| {
-                charts::work_precision(
+                charts::work_precision_chart(
                     &time_svg,
                     &format!("{}: error against wall time", scene.file.title),
                     "wall time per run (s): median of 5 repeats, bar = fastest..slowest",
@@ -378,7 +390,7 @@ fn main() {
                 )
             })
             .and_then(|()| {
-                charts::work_precision(
+                charts::work_precision_chart(
                     &calls_svg,
                     &format!("{}: error against fric_ calls", scene.file.title),
                     "fric_ calls per run, Newton iterations included (–)",

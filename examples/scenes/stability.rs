@@ -163,7 +163,7 @@ pub fn run_map(
             let cell = match run.verdict {
                 _ if run.cutbacks > 0 => Cell::CutBack,
                 // An unguarded host does not stop a diverging run: classify it here.
-                _ if !(run.peak <= 1e3) => Cell::Diverged,
+                _ if run.peak.is_nan() || run.peak > 1e3 => Cell::Diverged,
                 Verdict::Diverged => Cell::Diverged,
                 Verdict::NewtonFailed => Cell::NewtonFailed,
                 Verdict::CutBack => Cell::CutBack,
