@@ -155,7 +155,8 @@ fn the_first_step_is_monotone_from_c_dt_over_dz2_of_one_quarter() {
 #[test]
 fn bad_scene_values_are_refused_by_key() {
     let good = built_in();
-    let cases: [(&str, Box<dyn Fn(&mut Column)>); 5] = [
+    type Spoil = Box<dyn Fn(&mut Column)>;
+    let cases: [(&str, Spoil); 5] = [
         ("column.dt", Box::new(|c| c.dt = 0.0)),
         (
             "column.layers[1].permeability",

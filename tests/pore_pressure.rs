@@ -2,6 +2,8 @@
 //! differences of its own residual in every variant and basis, each simplification (closed
 //! contact, steady state, small sliding) against the general form under its assumptions, the
 //! side-swap invariant, and bad input refused through `ifl_pore_pressure`.
+// Entries of 4-vectors and 4×4 matrices compared index by index read best with indices.
+#![allow(clippy::needless_range_loop)]
 
 use std::ffi::CStr;
 

@@ -295,8 +295,9 @@ impl Band {
         }
         for k in (0..n).rev() {
             let mut s = b[k];
-            for j in k + 1..=(k + reach).min(n - 1) {
-                s -= self.a[self.at(k, j)] * b[j];
+            let last = (k + reach).min(n - 1);
+            for (j, bj) in b.iter().enumerate().take(last + 1).skip(k + 1) {
+                s -= self.a[self.at(k, j)] * bj;
             }
             b[k] = s / self.a[self.at(k, k)];
         }
@@ -510,6 +511,7 @@ fn kernel(
 
 impl Mesh {
     /// Residual R(x) (and, with `band`, the tangent ∂R/∂x) of the step from `prev`.
+    #[allow(clippy::too_many_arguments)]
     fn assemble(
         &self,
         x: &[f64],

@@ -90,7 +90,13 @@ pub fn parse(text: &str, origin: &str) -> Result<P1File, String> {
                 "{origin}: study: repeats and refinements must be ≥ 1"
             ));
         }
-        if s.dts.iter().chain(&s.quick_dts).any(|d| !(*d > 0.0)) || !(s.refine_sweep_dt > 0.0) {
+        if s.dts
+            .iter()
+            .chain(&s.quick_dts)
+            .any(|d| d.is_nan() || *d <= 0.0)
+            || s.refine_sweep_dt.is_nan()
+            || s.refine_sweep_dt <= 0.0
+        {
             return Err(format!("{origin}: study: every Δt must be > 0"));
         }
     }
@@ -394,6 +400,15 @@ pub fn run(f: &P1File, quick: bool, out: &Path) -> Result<Outcome, String> {
 /// below 1e-15).
 const OSCILLATION: f64 = 1e-12;
 
+/// A chart: file name, x label, y label, points, x value of a point.
+type Chart<'a> = (
+    &'a str,
+    &'a str,
+    &'a str,
+    &'a [Point],
+    &'a dyn Fn(&Point) -> f64,
+);
+
 /// Observed order log(e_a/e_b)/log(s_a/s_b).
 fn order(a: &Point, b: &Point) -> f64 {
     (a.error / b.error).ln() / (a.step / b.step).ln()
@@ -548,13 +563,13 @@ fn study(
             rho[0], rho[1], h.overshoot[0], h.overshoot[1], h.undershoot
         );
         sweep.push((rho, h.overshoot));
-        for layer in 0..2 {
+        for (layer, (&ratio, &overshoot)) in rho.iter().zip(&h.overshoot).enumerate() {
             stability_points.push(Point {
                 scene: id.clone(),
                 method: format!("layer {}", layer + 1),
-                step: rho[layer],
-                relative_step: rho[layer],
-                error: h.overshoot[layer].max(0.0),
+                step: ratio,
+                relative_step: ratio,
+                error: overshoot.max(0.0),
                 details: Vec::new(),
                 calls: h.kernel_calls,
                 wall: 0.0,
@@ -572,7 +587,7 @@ fn study(
             .fold(f64::NAN, f64::max);
         let first_good = sweep
             .iter()
-            .filter(|(r, o)| o[layer] <= OSCILLATION && !(r[layer] <= last_bad))
+            .filter(|(r, o)| o[layer] <= OSCILLATION && (last_bad.is_nan() || r[layer] > last_bad))
             .map(|(r, _)| r[layer])
             .fold(f64::NAN, f64::min);
         println!(
@@ -637,7 +652,7 @@ fn study(
     std::fs::write(&path, csv).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     outputs.push(path);
     let label = "max(|u − u_series|/q₀, |U − U_series|)";
-    let charts: [(&str, &str, &str, &[Point], &dyn Fn(&Point) -> f64); 4] = [
+    let charts: [Chart; 4] = [
         (
             "error-vs-dt",
             "time increment Δt",

@@ -221,20 +221,26 @@ pub fn interface_terms(
     }
 }
 
+/// ±0 for a finite `x`, NaN for NaN or ±∞.
+#[inline(always)]
+fn zero_if_finite(x: f64) -> f64 {
+    x * 0.0
+}
+
 /// [`interface_terms`] for valid inputs in one pass, `None` otherwise (the caller then asks
 /// [`interface_terms`] for the cause). Same results bit for bit: the checks are folded into one
 /// comparison instead of one branch per input (measured faster than `is_finite` per input).
 #[inline(always)]
 #[must_use]
 pub fn interface_terms_lean(point: &InterfacePoint, variant: Variant) -> Option<PorePressureTerms> {
-    // One sum, one branch: x − x is 0 exactly when x is finite (NaN otherwise).
-    let finite_sum = (point.p1 - point.p1)
-        + (point.p2 - point.p2)
-        + (point.q_hat - point.q_hat)
-        + (point.h - point.h)
-        + (point.dh - point.dh);
+    // One sum, one branch: x·0 is ±0 exactly when x is finite (NaN otherwise).
+    let finite_sum = zero_if_finite(point.p1)
+        + zero_if_finite(point.p2)
+        + zero_if_finite(point.q_hat)
+        + zero_if_finite(point.h)
+        + zero_if_finite(point.dh);
     let time_ok = match variant.regime {
-        Regime::Transient => point.dt > 0.0 && point.dt - point.dt == 0.0,
+        Regime::Transient => point.dt > 0.0 && zero_if_finite(point.dt) == 0.0,
         Regime::Steady => true,
     };
     if !(finite_sum == 0.0 && time_ok) {
@@ -242,8 +248,7 @@ pub fn interface_terms_lean(point: &InterfacePoint, variant: Variant) -> Option<
     }
     let t = interface_terms_unchecked(point, variant);
     // p̄ and p̂ of finite pressures are finite; only the products with Δt can overflow.
-    (t.residual[P_JUMP] - t.residual[P_JUMP] + t.residual[Q_HAT] - t.residual[Q_HAT] == 0.0)
-        .then_some(t)
+    (zero_if_finite(t.residual[P_JUMP]) + zero_if_finite(t.residual[Q_HAT]) == 0.0).then_some(t)
 }
 
 /// [`interface_terms`] without validation: finite inputs in range give finite outputs; the
