@@ -5,7 +5,7 @@
 use std::ffi::{CStr, c_char, c_int};
 
 use super::native::IflStatus;
-use super::{boundary, write_array, write_matrix};
+use super::{boundary, write_array};
 use crate::LawError;
 use crate::laws::pore_pressure::{
     Basis, Contact, InterfacePoint, PorePressureTerms, Regime, Sliding, Variant, interface_terms,
@@ -298,7 +298,14 @@ unsafe fn write_terms(
     // SAFETY: forwarded from the caller.
     unsafe {
         write_array(residual, &t.residual);
-        write_matrix(tangent, &t.tangent);
+        if !tangent.is_null() {
+            // Column-major TANGENT(i,j) at i + 4j, stored in address order.
+            for j in 0..4 {
+                for i in 0..4 {
+                    tangent.add(i + 4 * j).write(t.tangent[i][j]);
+                }
+            }
+        }
         write_array(geometric, &t.geometric);
     }
 }
