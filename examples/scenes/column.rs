@@ -757,7 +757,8 @@ pub fn consolidate(
     let mut calls = 0;
     let analysis = Analysis::Transient(dt);
     let band = mesh.tangent(analysis, &bc, &mut calls)?;
-    let steps = (column.end / dt).round().max(1.0) as usize;
+    // Enough steps to reach the end time (and so every requested time).
+    let steps = (column.end / dt * (1.0 - 1e-12)).ceil().max(1.0) as usize;
     // Before the load: no settlement, no excess pressure (the first backward-Euler step takes
     // the undrained response and the first Δt of drainage together).
     let mut x = vec![0.0; mesh.n];

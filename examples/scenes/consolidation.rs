@@ -8,7 +8,8 @@
 //! Writes `<out>/<id>-u.csv` (columns `time,depth,u,u_series,u_no_interface`: excess pore
 //! pressure at the file's depths and times), `<out>/<id>-U.csv` (`time,U,U_series,
 //! U_no_interface`: degree of consolidation by settlement), `<out>/<id>-work-precision.csv`,
-//! `<out>/<id>-stability.csv` and three SVG charts; the rows join the main job's checks.
+//! `<out>/<id>-stability.csv` and four SVG charts (error against Δt, elements and wall time; the
+//! first-step overshoot against c·Δt/Δz²); the rows join the main job's checks.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
