@@ -1039,3 +1039,30 @@ pub fn terzaghi(z_over_d: f64, time_factor: f64) -> f64 {
     }
     sum
 }
+
+/// Degree of consolidation at early times, while the drained faces still see semi-infinite
+/// layers: each drained face i has settled m_v,i·q₀·2·sqrt(c_i·t/π) (the error-function
+/// solution), so U = Σ 2·q₀·sqrt(c_i·t/π)/M_i / (q₀·Σ H_i/M_i). Exact to e^{−H_i²/(4 c_i t)}.
+pub fn early_degree(column: &Column, t: f64) -> f64 {
+    let face = |layer: &Layer| {
+        2.0 * column.load * (layer.cv() * t / std::f64::consts::PI).sqrt() / layer.modulus
+    };
+    let mut settled = 0.0;
+    if column.top == Drainage::Drained {
+        settled += face(&column.layers[0]);
+    }
+    if column.bottom == Drainage::Drained {
+        settled += face(&column.layers[1]);
+    }
+    settled / column.final_settlement()
+}
+
+/// A time at which [`early_degree`] is exact to round-off: the diffusion length sqrt(c·t) is a
+/// hundredth of the thinner drained layer.
+pub fn early_time(column: &Column) -> f64 {
+    column
+        .layers
+        .iter()
+        .map(|l| 1e-4 * l.thickness * l.thickness / l.cv())
+        .fold(f64::INFINITY, f64::min)
+}

@@ -18,7 +18,9 @@ use std::time::Instant;
 use serde::Deserialize;
 
 use crate::checks::Row;
-use crate::column::{Column, Join, Series, consolidate, steady, terzaghi};
+use crate::column::{
+    Column, Join, Series, consolidate, early_degree, early_time, steady, terzaghi,
+};
 use crate::scene::Point;
 
 /// The built-in P1 file.
@@ -276,6 +278,21 @@ pub fn run(f: &P1File, quick: bool, out: &Path) -> Result<Outcome, String> {
             "u(z, T_v = 0.1) / q0 vs Terzaghi",
             terzaghi(z / d, 0.1),
             series.pressure(zz, t) / same.load,
+            1e-9,
+        );
+    }
+
+    // No eigenvalue missed: at an early time the series' degree of consolidation equals the
+    // error-function solution of the drained faces (every term matters there).
+    {
+        let t = early_time(c);
+        let early = Series::new(c, t)?;
+        row(
+            &mut rows,
+            format!("series at t = {t:.1e}, {} terms", early.terms()),
+            "U vs erfc solution at the drained faces",
+            early_degree(c, t),
+            early.degree(t),
             1e-9,
         );
     }
