@@ -15,6 +15,8 @@
 //!    chart claims (dashed on the charts).
 //! 3. Stability maps of F6 over (Δt, γ_crit), with the explicit limit, and the check that the
 //!    measured explicit boundary is within one grid cell of 2/sqrt((k + K_f)/m).
+//! 4. P1, the two-layer consolidation column through `ifl_pore_pressure` (consolidation.rs; a
+//!    `--point` file with a `[column]` table runs alone; docs/pore-pressure.md).
 //!
 //! Writes `<out>/<scene>-work-precision.csv`, `<out>/<scene>-error-vs-time.svg`,
 //! `<out>/<scene>-error-vs-calls.svg`, `<out>/F6-map-<n>.csv` and `.svg`, and `<out>/checks.csv`
