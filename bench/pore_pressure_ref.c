@@ -6,6 +6,7 @@
  * Compiled as its own translation unit so that it is a real call, as the library's is.
  */
 #include <math.h>
+#include <string.h>
 
 int ref_pore_pressure_closed_small(double p1, double p2, double q_hat, double h, double dh,
                                    double dt, double residual[4], double tangent[16],
@@ -31,14 +32,25 @@ int ref_pore_pressure_closed_small(double p1, double p2, double q_hat, double h,
     if (!(isfinite(residual[2]) && isfinite(residual[3]))) {
         return 3;
     }
-    for (int i = 0; i < 16; i++) {
-        tangent[i] = 0.0;
-    }
-    tangent[0 + 4 * 1] = -1.0; /* d r_h / d pbar */
-    tangent[2 + 4 * 3] = -dt;  /* d r_phat / d qhat */
-    tangent[3 + 4 * 2] = -dt;  /* d r_qhat / d phat */
-    for (int i = 0; i < 4; i++) {
-        geometric[i] = 0.0;
-    }
+    /* Every entry stored once, column-major TANGENT(i,j) at i + 4j (a zeroing loop or a local
+     * array compiles to `rep stos`, whose start-up alone costs more than the whole kernel). */
+    tangent[0] = 0.0; /* column h: d r / d h = 0 (closed contact) */
+    tangent[1] = 0.0;
+    tangent[2] = 0.0;
+    tangent[3] = 0.0;
+    tangent[4] = -1.0; /* column pbar: d r_h / d pbar = -1 */
+    tangent[5] = 0.0;
+    tangent[6] = 0.0;
+    tangent[7] = 0.0;
+    tangent[8] = 0.0; /* column phat: d r_qhat / d phat = -dt */
+    tangent[9] = 0.0;
+    tangent[10] = 0.0;
+    tangent[11] = -dt;
+    tangent[12] = 0.0; /* column qhat: d r_phat / d qhat = -dt */
+    tangent[13] = 0.0;
+    tangent[14] = -dt;
+    tangent[15] = 0.0;
+    static const double zero4[4] = {0.0, 0.0, 0.0, 0.0};
+    memcpy(geometric, zero4, sizeof zero4);
     return 0;
 }

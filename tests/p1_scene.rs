@@ -8,7 +8,9 @@
 #[path = "../examples/scenes/column.rs"]
 mod column;
 
-use column::{Column, Drainage, Join, Series, consolidate, steady, terzaghi};
+use column::{
+    Column, Drainage, Join, Series, consolidate, early_degree, early_time, steady, terzaghi,
+};
 use serde::Deserialize;
 
 fn built_in() -> Column {
@@ -155,7 +157,8 @@ fn the_first_step_is_monotone_from_c_dt_over_dz2_of_one_quarter() {
 #[test]
 fn bad_scene_values_are_refused_by_key() {
     let good = built_in();
-    let cases: [(&str, Box<dyn Fn(&mut Column)>); 5] = [
+    type Spoil = Box<dyn Fn(&mut Column)>;
+    let cases: [(&str, Spoil); 5] = [
         ("column.dt", Box::new(|c| c.dt = 0.0)),
         (
             "column.layers[1].permeability",
@@ -178,6 +181,29 @@ fn bad_scene_values_are_refused_by_key() {
         assert!(
             e.contains(key.split(' ').next().unwrap_or(key)),
             "{key}: {e}"
+        );
+    }
+}
+
+#[test]
+fn the_series_misses_no_eigenvalue_at_early_times() {
+    // Every term counts at an early time; the error-function solution at the drained faces is
+    // exact there.
+    for (top, bottom) in [
+        (Drainage::Drained, Drainage::Undrained),
+        (Drainage::Drained, Drainage::Drained),
+        (Drainage::Undrained, Drainage::Drained),
+    ] {
+        let mut c = built_in();
+        c.top = top;
+        c.bottom = bottom;
+        let t = early_time(&c);
+        let s = Series::new(&c, t).unwrap();
+        assert!(s.terms() > 100, "{}", s.terms());
+        let (got, want) = (s.degree(t), early_degree(&c, t));
+        assert!(
+            (got - want).abs() <= 1e-9,
+            "{top:?}/{bottom:?}: {got} vs {want}"
         );
     }
 }

@@ -295,8 +295,9 @@ impl Band {
         }
         for k in (0..n).rev() {
             let mut s = b[k];
-            for j in k + 1..=(k + reach).min(n - 1) {
-                s -= self.a[self.at(k, j)] * b[j];
+            let last = (k + reach).min(n - 1);
+            for (j, bj) in b.iter().enumerate().take(last + 1).skip(k + 1) {
+                s -= self.a[self.at(k, j)] * bj;
             }
             b[k] = s / self.a[self.at(k, k)];
         }
@@ -510,6 +511,7 @@ fn kernel(
 
 impl Mesh {
     /// Residual R(x) (and, with `band`, the tangent ∂R/∂x) of the step from `prev`.
+    #[allow(clippy::too_many_arguments)]
     fn assemble(
         &self,
         x: &[f64],
@@ -755,7 +757,8 @@ pub fn consolidate(
     let mut calls = 0;
     let analysis = Analysis::Transient(dt);
     let band = mesh.tangent(analysis, &bc, &mut calls)?;
-    let steps = (column.end / dt).round().max(1.0) as usize;
+    // Enough steps to reach the end time (and so every requested time).
+    let steps = (column.end / dt * (1.0 - 1e-12)).ceil().max(1.0) as usize;
     // Before the load: no settlement, no excess pressure (the first backward-Euler step takes
     // the undrained response and the first Δt of drainage together).
     let mut x = vec![0.0; mesh.n];
@@ -1035,4 +1038,31 @@ pub fn terzaghi(z_over_d: f64, time_factor: f64) -> f64 {
         sum += 2.0 / big_m * (big_m * z_over_d).sin() * decay;
     }
     sum
+}
+
+/// Degree of consolidation at early times, while the drained faces still see semi-infinite
+/// layers: each drained face i has settled m_v,i·q₀·2·sqrt(c_i·t/π) (the error-function
+/// solution), so U = Σ 2·q₀·sqrt(c_i·t/π)/M_i / (q₀·Σ H_i/M_i). Exact to e^{−H_i²/(4 c_i t)}.
+pub fn early_degree(column: &Column, t: f64) -> f64 {
+    let face = |layer: &Layer| {
+        2.0 * column.load * (layer.cv() * t / std::f64::consts::PI).sqrt() / layer.modulus
+    };
+    let mut settled = 0.0;
+    if column.top == Drainage::Drained {
+        settled += face(&column.layers[0]);
+    }
+    if column.bottom == Drainage::Drained {
+        settled += face(&column.layers[1]);
+    }
+    settled / column.final_settlement()
+}
+
+/// A time at which [`early_degree`] is exact to round-off: the diffusion length sqrt(c·t) is a
+/// hundredth of the thinner drained layer.
+pub fn early_time(column: &Column) -> f64 {
+    column
+        .layers
+        .iter()
+        .map(|l| 1e-4 * l.thickness * l.thickness / l.cv())
+        .fold(f64::INFINITY, f64::min)
 }

@@ -8,7 +8,8 @@
 //! Writes `<out>/<id>-u.csv` (columns `time,depth,u,u_series,u_no_interface`: excess pore
 //! pressure at the file's depths and times), `<out>/<id>-U.csv` (`time,U,U_series,
 //! U_no_interface`: degree of consolidation by settlement), `<out>/<id>-work-precision.csv`,
-//! `<out>/<id>-stability.csv` and three SVG charts; the rows join the main job's checks.
+//! `<out>/<id>-stability.csv` and four SVG charts (error against Δt, elements and wall time; the
+//! first-step overshoot against c·Δt/Δz²); the rows join the main job's checks.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -17,7 +18,9 @@ use std::time::Instant;
 use serde::Deserialize;
 
 use crate::checks::Row;
-use crate::column::{Column, Join, Series, consolidate, steady, terzaghi};
+use crate::column::{
+    Column, Join, Series, consolidate, early_degree, early_time, steady, terzaghi,
+};
 use crate::scene::Point;
 
 /// The built-in P1 file.
@@ -90,7 +93,13 @@ pub fn parse(text: &str, origin: &str) -> Result<P1File, String> {
                 "{origin}: study: repeats and refinements must be ≥ 1"
             ));
         }
-        if s.dts.iter().chain(&s.quick_dts).any(|d| !(*d > 0.0)) || !(s.refine_sweep_dt > 0.0) {
+        if s.dts
+            .iter()
+            .chain(&s.quick_dts)
+            .any(|d| d.is_nan() || *d <= 0.0)
+            || s.refine_sweep_dt.is_nan()
+            || s.refine_sweep_dt <= 0.0
+        {
             return Err(format!("{origin}: study: every Δt must be > 0"));
         }
     }
@@ -122,7 +131,7 @@ fn errors(f: &P1File, series: &Series, u: &[Vec<f64>], degree: &[f64]) -> (f64, 
 }
 
 /// Median wall time of `repeats` runs and the last run's result.
-fn timed<T>(repeats: usize, mut run: impl FnMut() -> T) -> (f64, T) {
+fn timed<T>(repeats: usize, mut run: impl FnMut() -> T) -> (f64, [f64; 2], T) {
     let mut times = Vec::with_capacity(repeats);
     let mut last = None;
     for _ in 0..repeats.max(1) {
@@ -132,8 +141,9 @@ fn timed<T>(repeats: usize, mut run: impl FnMut() -> T) -> (f64, T) {
     }
     times.sort_by(f64::total_cmp);
     let median = times[times.len() / 2];
+    let range = [times[0], times[times.len() - 1]];
     match last {
-        Some(v) => (median, v),
+        Some(v) => (median, range, v),
         None => unreachable!("at least one run"),
     }
 }
@@ -273,6 +283,21 @@ pub fn run(f: &P1File, quick: bool, out: &Path) -> Result<Outcome, String> {
         );
     }
 
+    // No eigenvalue missed: at an early time the series' degree of consolidation equals the
+    // error-function solution of the drained faces (every term matters there).
+    {
+        let t = early_time(c);
+        let early = Series::new(c, t)?;
+        row(
+            &mut rows,
+            format!("series at t = {t:.1e}, {} terms", early.terms()),
+            "U vs erfc solution at the drained faces",
+            early_degree(c, t),
+            early.degree(t),
+            1e-9,
+        );
+    }
+
     // Transient step load at the file's Δt and mesh, with and without the interface.
     let t_min = c.times.iter().copied().fold(c.end, f64::min);
     let series = Series::new(c, t_min)?;
@@ -394,6 +419,15 @@ pub fn run(f: &P1File, quick: bool, out: &Path) -> Result<Outcome, String> {
 /// below 1e-15).
 const OSCILLATION: f64 = 1e-12;
 
+/// A chart: file name, x label, y label, points, x value of a point.
+type Chart<'a> = (
+    &'a str,
+    &'a str,
+    &'a str,
+    &'a [Point],
+    &'a dyn Fn(&Point) -> f64,
+);
+
 /// Observed order log(e_a/e_b)/log(s_a/s_b).
 fn order(a: &Point, b: &Point) -> f64 {
     (a.error / b.error).ln() / (a.step / b.step).ln()
@@ -412,7 +446,7 @@ fn study(
     let id = &f.id;
     let mut failures = 0;
     let point = |method: String, step: f64, join: Join, refine: usize, dt: f64| {
-        let (wall, h) = timed(s.repeats, || consolidate(c, join, refine, dt, false));
+        let (wall, wall_range, h) = timed(s.repeats, || consolidate(c, join, refine, dt, false));
         let h = h?;
         let (eu, e_degree) = errors(f, series, &h.u, &h.degree);
         Ok::<Point, String>(Point {
@@ -424,6 +458,8 @@ fn study(
             details: vec![eu, e_degree, h.overshoot[0].max(h.overshoot[1]).max(0.0)],
             calls: h.kernel_calls,
             wall,
+            wall_range,
+            repeats: [s.repeats.max(1), 1],
             // A finite run is "ok" for the charts; a first-step oscillation (c·Δt/Δz² < 1/4 in a
             // layer) is reported in the table and the CSV, and mapped by the stability sweep.
             verdict: "ok",
@@ -548,16 +584,18 @@ fn study(
             rho[0], rho[1], h.overshoot[0], h.overshoot[1], h.undershoot
         );
         sweep.push((rho, h.overshoot));
-        for layer in 0..2 {
+        for (layer, (&ratio, &overshoot)) in rho.iter().zip(&h.overshoot).enumerate() {
             stability_points.push(Point {
                 scene: id.clone(),
                 method: format!("layer {}", layer + 1),
-                step: rho[layer],
-                relative_step: rho[layer],
-                error: h.overshoot[layer].max(0.0),
+                step: ratio,
+                relative_step: ratio,
+                error: overshoot.max(0.0),
                 details: Vec::new(),
                 calls: h.kernel_calls,
                 wall: 0.0,
+                wall_range: [0.0, 0.0],
+                repeats: [0, 0],
                 verdict: "ok",
                 claim: f64::INFINITY,
             });
@@ -572,7 +610,7 @@ fn study(
             .fold(f64::NAN, f64::max);
         let first_good = sweep
             .iter()
-            .filter(|(r, o)| o[layer] <= OSCILLATION && !(r[layer] <= last_bad))
+            .filter(|(r, o)| o[layer] <= OSCILLATION && (last_bad.is_nan() || r[layer] > last_bad))
             .map(|(r, _)| r[layer])
             .fold(f64::NAN, f64::min);
         println!(
@@ -637,7 +675,7 @@ fn study(
     std::fs::write(&path, csv).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     outputs.push(path);
     let label = "max(|u − u_series|/q₀, |U − U_series|)";
-    let charts: [(&str, &str, &str, &[Point], &dyn Fn(&Point) -> f64); 4] = [
+    let charts: [Chart; 4] = [
         (
             "error-vs-dt",
             "time increment Δt",

@@ -17,6 +17,8 @@
 //!    measured explicit boundary is within one grid cell of 2/sqrt((k + K_f)/m); a map with an
 //!    unguarded host that cuts back when `fric_` refuses (PNEWDT < 1); the F4 rate maps.
 //! 4. Findings (`findings.rs`): every figure README.md and docs/scenes.md quote, recomputed.
+//! 5. P1, the two-layer consolidation column through `ifl_pore_pressure` (consolidation.rs; a
+//!    `--point` file with a `[column]` table runs alone; docs/pore-pressure.md).
 //!
 //! Writes `<out>/<scene>-work-precision.csv`, `<out>/<scene>-error-vs-time.svg`,
 //! `<out>/<scene>-error-vs-calls.svg`, `<out>/F6-map-<n>.csv` and `.svg`, `<out>/checks.csv` and

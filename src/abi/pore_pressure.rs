@@ -5,10 +5,11 @@
 use std::ffi::{CStr, c_char, c_int};
 
 use super::native::IflStatus;
-use super::{boundary, write_array, write_matrix};
+use super::{boundary, write_array};
 use crate::LawError;
 use crate::laws::pore_pressure::{
     Basis, Contact, InterfacePoint, PorePressureTerms, Regime, Sliding, Variant, interface_terms,
+    interface_terms_lean,
 };
 use crate::report::Site;
 
@@ -41,6 +42,64 @@ fn flag(name: &str, v: c_int) -> Result<bool, LawError> {
             "variant.{name} = {other}; expected 0 or 1"
         ))),
     }
+}
+
+/// The lean path for the variant whose flags are the bits of `FLAGS` (open, steady,
+/// finite_sliding, per_side from bit 0): writes the terms and returns true, or returns false
+/// (nothing written) when the inputs need the careful path.
+#[inline(always)]
+fn lean_as<const FLAGS: c_int>(
+    point: &InterfacePoint,
+    (residual, tangent, geometric): (*mut f64, *mut f64, *mut f64),
+) -> bool {
+    let Some((variant, basis)) = decode_lean(IflPorePressureVariant {
+        open: FLAGS & 1,
+        steady: (FLAGS >> 1) & 1,
+        finite_sliding: (FLAGS >> 2) & 1,
+        per_side: (FLAGS >> 3) & 1,
+    }) else {
+        return false;
+    };
+    match interface_terms_lean(point, variant) {
+        Some(t) => {
+            // SAFETY: checked non-NULL by the caller; 4, 16 and 4 writable doubles by contract.
+            unsafe { write_terms(residual, tangent, geometric, &t.in_basis(basis)) };
+            true
+        }
+        None => false,
+    }
+}
+
+/// [`decode`] without messages: `None` for a flag other than 0 or 1.
+#[inline(always)]
+fn decode_lean(v: IflPorePressureVariant) -> Option<(Variant, Basis)> {
+    if (v.open | v.steady | v.finite_sliding | v.per_side) & !1 != 0 {
+        return None;
+    }
+    Some((
+        Variant {
+            contact: if v.open == 1 {
+                Contact::Open
+            } else {
+                Contact::Closed
+            },
+            regime: if v.steady == 1 {
+                Regime::Steady
+            } else {
+                Regime::Transient
+            },
+            sliding: if v.finite_sliding == 1 {
+                Sliding::Finite
+            } else {
+                Sliding::Small
+            },
+        },
+        if v.per_side == 1 {
+            Basis::PerSide
+        } else {
+            Basis::MeanJump
+        },
+    ))
 }
 
 fn decode(v: IflPorePressureVariant) -> Result<(Variant, Basis), LawError> {
@@ -112,6 +171,77 @@ pub unsafe extern "C" fn ifl_pore_pressure(
     tangent: *mut f64,
     geometric: *mut f64,
 ) -> IflStatus {
+    // The lean path: valid flags, pointers and inputs, straight through (no allocation, no
+    // formatting); anything else, and a panic (which cannot happen here, but would be caught),
+    // goes to the careful path below, which names the cause.
+    let point = InterfacePoint {
+        p1,
+        p2,
+        q_hat,
+        h,
+        dh,
+        dt,
+    };
+    let lean = std::panic::catch_unwind(|| {
+        if residual.is_null() || tangent.is_null() || geometric.is_null() {
+            return false;
+        }
+        let v = variant;
+        if (v.open | v.steady | v.finite_sliding | v.per_side) & !1 != 0 {
+            return false;
+        }
+        // One straight-line copy per variant (the flags are constants in each).
+        let out = (residual, tangent, geometric);
+        match v.open | (v.steady << 1) | (v.finite_sliding << 2) | (v.per_side << 3) {
+            0 => lean_as::<0>(&point, out),
+            1 => lean_as::<1>(&point, out),
+            2 => lean_as::<2>(&point, out),
+            3 => lean_as::<3>(&point, out),
+            4 => lean_as::<4>(&point, out),
+            5 => lean_as::<5>(&point, out),
+            6 => lean_as::<6>(&point, out),
+            7 => lean_as::<7>(&point, out),
+            8 => lean_as::<8>(&point, out),
+            9 => lean_as::<9>(&point, out),
+            10 => lean_as::<10>(&point, out),
+            11 => lean_as::<11>(&point, out),
+            12 => lean_as::<12>(&point, out),
+            13 => lean_as::<13>(&point, out),
+            14 => lean_as::<14>(&point, out),
+            _ => lean_as::<15>(&point, out),
+        }
+    });
+    if matches!(lean, Ok(true)) {
+        return IflStatus::Ok;
+    }
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        careful(
+            interaction,
+            variant,
+            [p1, p2, q_hat, h, dh, dt],
+            residual,
+            tangent,
+            geometric,
+        )
+    }
+}
+
+/// The careful path of [`ifl_pore_pressure`]: every check with its message, inside
+/// [`boundary`]. Kept out of line so that the lean path's frame stays small.
+///
+/// # Safety
+/// As [`ifl_pore_pressure`].
+#[cold]
+#[inline(never)]
+unsafe fn careful(
+    interaction: *const c_char,
+    variant: IflPorePressureVariant,
+    [p1, p2, q_hat, h, dh, dt]: [f64; 6],
+    residual: *mut f64,
+    tangent: *mut f64,
+    geometric: *mut f64,
+) -> IflStatus {
     let run = || -> Result<(), LawError> {
         if residual.is_null() || tangent.is_null() || geometric.is_null() {
             return Err(LawError::Input(
@@ -158,7 +288,7 @@ pub unsafe extern "C" fn ifl_pore_pressure(
 
 /// # Safety
 /// Each pointer is NULL or points to 4, 16 and 4 writable doubles.
-#[inline]
+#[inline(always)]
 unsafe fn write_terms(
     residual: *mut f64,
     tangent: *mut f64,
@@ -168,7 +298,14 @@ unsafe fn write_terms(
     // SAFETY: forwarded from the caller.
     unsafe {
         write_array(residual, &t.residual);
-        write_matrix(tangent, &t.tangent);
+        if !tangent.is_null() {
+            // Column-major TANGENT(i,j) at i + 4j, stored in address order.
+            for j in 0..4 {
+                for i in 0..4 {
+                    tangent.add(i + 4 * j).write(t.tangent[i][j]);
+                }
+            }
+        }
         write_array(geometric, &t.geometric);
     }
 }

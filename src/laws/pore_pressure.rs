@@ -221,9 +221,39 @@ pub fn interface_terms(
     }
 }
 
+/// ±0 for a finite `x`, NaN for NaN or ±∞.
+#[inline(always)]
+fn zero_if_finite(x: f64) -> f64 {
+    x * 0.0
+}
+
+/// [`interface_terms`] for valid inputs in one pass, `None` otherwise (the caller then asks
+/// [`interface_terms`] for the cause). Same results bit for bit: the checks are folded into one
+/// comparison instead of one branch per input (measured faster than `is_finite` per input).
+#[inline(always)]
+#[must_use]
+pub fn interface_terms_lean(point: &InterfacePoint, variant: Variant) -> Option<PorePressureTerms> {
+    // One sum, one branch: x·0 is ±0 exactly when x is finite (NaN otherwise).
+    let finite_sum = zero_if_finite(point.p1)
+        + zero_if_finite(point.p2)
+        + zero_if_finite(point.q_hat)
+        + zero_if_finite(point.h)
+        + zero_if_finite(point.dh);
+    let time_ok = match variant.regime {
+        Regime::Transient => point.dt > 0.0 && zero_if_finite(point.dt) == 0.0,
+        Regime::Steady => true,
+    };
+    if !(finite_sum == 0.0 && time_ok) {
+        return None;
+    }
+    let t = interface_terms_unchecked(point, variant);
+    // p̄ and p̂ of finite pressures are finite; only the products with Δt can overflow.
+    (zero_if_finite(t.residual[P_JUMP]) + zero_if_finite(t.residual[Q_HAT]) == 0.0).then_some(t)
+}
+
 /// [`interface_terms`] without validation: finite inputs in range give finite outputs; the
 /// caller has checked them.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn interface_terms_unchecked(point: &InterfacePoint, variant: Variant) -> PorePressureTerms {
     // p̄ = (p₁ + p₂)/2, p̂ = (p₁ − p₂)/2, halved first so that finite pressures never overflow.
@@ -273,6 +303,7 @@ impl PorePressureTerms {
     /// The same terms in the per-side basis (h, p₁, p₂, q̂). With δp̄ = (δp₁ + δp₂)/2 and
     /// δp̂ = (δp₁ − δp₂)/2, i.e. x_mean-jump = T·x_per-side, the coefficients transform with Tᵀ
     /// (residual, geometric) and the tangent as Tᵀ·K·T.
+    #[inline(always)]
     #[must_use]
     pub fn per_side(&self) -> PorePressureTerms {
         let side = |v: &[f64; 4]| {
@@ -299,6 +330,7 @@ impl PorePressureTerms {
     }
 
     /// The terms in `basis`.
+    #[inline(always)]
     #[must_use]
     pub fn in_basis(&self, basis: Basis) -> PorePressureTerms {
         match basis {
