@@ -36,7 +36,7 @@ typedef enum IflStatus {
   /**
    * A bug in the library (a caught panic).
    */
-  IFL_STATUS_INTERNAL_ERROR = 4,
+  IFL_STATUS_INTERNAL_ERROR = 4
 } IflStatus;
 
 /**
@@ -117,7 +117,7 @@ typedef float IflReal;
 
 #ifdef __cplusplus
 extern "C" {
-#endif // __cplusplus
+#endif /* __cplusplus */
 
 /**
  * Many independent `fric_` points in one call (structure of arrays, leading dimension `ld`).
@@ -332,6 +332,10 @@ void fric_coef_(double *fcoef,
  * `AK(1) = 0` and one message per distinct cause (stderr or `$INTERFACIAL_LOG`;
  * `ifl_last_error` on the calling thread).
  *
+ * Called with CalculiX's argument list (`AREA` after `KINC`, so an address arrives as the
+ * hidden length of `CINAME`: any value above 65535), it refuses: `AK(1) = 0`, nothing else
+ * written, and a message that names the CalculiX variant, `libinterfacial_calculix`.
+ *
  * # Safety
  * Pointers valid for the GAPCON signature: `AK(5)`, `D(2)`, `TEMP(2)`, `CINAME` of the hidden
  * length `ciname_len`. The unread arguments may be anything.
@@ -388,14 +392,18 @@ void gapcon_(double *ak,
 #endif
 
 /**
- * The library version as a NUL-terminated string, e.g. `"0.1.0"`. Static storage: never free it.
+ * The library version as a NUL-terminated string: `"0.1.0"` for the default build,
+ * `"0.1.0+calculix"` for the CalculiX variant (`gapcon_` with `AREA`), so a host can tell
+ * which one it loaded. Static storage: never free it.
  */
 const char *ifl_version(void);
 
 /**
  * The last error message reported on the calling thread, NUL-terminated; `""` when there has
- * been none since the last `ifl_clear_error`. The pointer stays valid until the next call into
- * the library on the same thread; copy the text if you need it longer. Never free it.
+ * been none since the last `ifl_clear_error`. A successful call does not clear it (like
+ * `errno`): only the next failure on this thread replaces it, only `ifl_clear_error` empties
+ * it. The pointer stays valid until the next call into the library on the same thread; copy
+ * the text if you need it longer. Never free it.
  */
 const char *ifl_last_error(void);
 
@@ -411,7 +419,8 @@ const char *ifl_last_error(void);
 size_t ifl_last_error_copy(char *buf, size_t len);
 
 /**
- * Forgets the calling thread's last error message.
+ * Forgets the calling thread's last error message (successful calls keep it, so clear before
+ * a call whose own failure you want to read).
  */
 void ifl_clear_error(void);
 
@@ -420,6 +429,7 @@ void ifl_clear_error(void);
  * the `INTERFACIAL_CONFIG` file, evaluated at clearance `d`, contact pressure `p` and surface
  * temperatures `theta_a`, `theta_b`. On success writes `*out` and returns `IFL_STATUS_OK`; on
  * failure writes `*out` as all zeros (when `out` is not NULL), reports, and returns the cause.
+ * [`ifl_gap_conductance_n`] takes the name with its length instead (no NUL needed).
  *
  * # Safety
  * `interaction` is NULL or a NUL-terminated string; `out` is NULL or writable.
@@ -430,6 +440,24 @@ enum IflStatus ifl_gap_conductance(const char *interaction,
                                    double theta_a,
                                    double theta_b,
                                    struct IflConductance *out);
+
+/**
+ * [`ifl_gap_conductance`] with the name given as `interaction_len` bytes at `interaction`, as
+ * Fortran passes a `CHARACTER` (blank-padded, no NUL): nothing past `interaction_len` is read,
+ * trailing blanks and NULs are ignored. For Fortran, the `interfacial` module's
+ * `ifl_gap_conductance(name, ...)` calls it with `len(name)`.
+ *
+ * # Safety
+ * `interaction` is NULL or points to `interaction_len` readable bytes (any pointer when
+ * `interaction_len` is 0); `out` is NULL or writable.
+ */
+enum IflStatus ifl_gap_conductance_n(const char *interaction,
+                                     size_t interaction_len,
+                                     double d,
+                                     double p,
+                                     double theta_a,
+                                     double theta_b,
+                                     struct IflConductance *out);
 
 /**
  * The interface pore-pressure terms of one integration point (seed 000):
@@ -631,7 +659,7 @@ void vfric_(IflReal *f_tangential,
             size_t surf_mst_len);
 
 #ifdef __cplusplus
-}  // extern "C"
-#endif  // __cplusplus
+}  /* extern "C" */
+#endif /* __cplusplus */
 
 #endif  /* INTERFACIAL_H */
