@@ -1,7 +1,7 @@
 //! One declarative description per `PROPS` layout, and what is derived from it.
 //!
 //! A [`Layout`] lists each entry once (index, seed name, symbol, meaning, unit, [`Class`] of
-//! valid values, [`Default`]), the [`Rule`]s that tie entries together and the named
+//! valid values, [`Default`](enum@Default)), the [`Rule`]s that tie entries together and the named
 //! [`Fixed`] layouts that a fast path recognises (the adhesive law's Coulomb special case).
 //! From that one table come:
 //!
