@@ -86,31 +86,15 @@ impl ExtendedCoulomb {
         } else {
             1.0
         };
-        // τ̄_crit(γ̇_k, p, θ̄) as `critical` forms it, from f = φ(γ̇_k)·π·Θ (the rate held).
-        let rate_free = |pressure: f64, f: [f64; 3]| -> Critical {
-            if pressure < 0.0 {
-                return Critical::default();
-            }
-            let mu = mbar * f[0] * phi_k;
-            if mu * pressure >= tau_max {
-                Critical {
-                    value: tau_max,
-                    ..Critical::default()
-                }
-            } else {
-                Critical {
-                    value: mu * pressure,
-                    d_rate: 0.0,
-                    d_rate2: 0.0,
-                    d_pressure: mu + mbar * f[1] * phi_k * pressure,
-                    d_temperature: mbar * f[2] * phi_k * pressure,
-                }
-            }
-        };
         // Stick stiffness k̄_s = τ̄_crit(γ̇_k, p, θ̄)/γ_crit at the end and at the start.
         let factor = self.coefficient.rate_free(p, theta);
-        let k = rate_free(p, factor);
-        let k0 = rate_free(p0, self.coefficient.rate_free(p0, theta));
+        let k = held_rate_critical(p, factor, mbar * phi_k, tau_max);
+        let k0 = held_rate_critical(
+            p0,
+            self.coefficient.rate_free(p0, theta),
+            mbar * phi_k,
+            tau_max,
+        );
         // γ^el = τ/k_s(p₀) and its θ̄-derivative (as in `elastic_stick`).
         let (elastic_start, d_elastic_dtheta) =
             elastic_start(&inc.tau, gamma_crit, &k0, with_theta);
@@ -367,6 +351,30 @@ impl ExtendedCoulomb {
         let root_x = x;
         let c = critical_from_phi([pt, pt_p, pt_t], mbar, p, tau_max, phi, dphi);
         Ok((root_x, c, iterations))
+    }
+}
+
+/// τ̄_crit(γ̇_k, p, θ̄) as `critical` forms it, from f = π·Θ and its partials, with the rate held
+/// (`scaled_mu` = μ̄·φ(γ̇_k); φ(0) = 1); 0 for p < 0.
+#[inline(always)]
+fn held_rate_critical(pressure: f64, f: [f64; 3], scaled_mu: f64, tau_max: f64) -> Critical {
+    if pressure < 0.0 {
+        return Critical::default();
+    }
+    let mu = scaled_mu * f[0];
+    if mu * pressure >= tau_max {
+        Critical {
+            value: tau_max,
+            ..Critical::default()
+        }
+    } else {
+        Critical {
+            value: mu * pressure,
+            d_rate: 0.0,
+            d_rate2: 0.0,
+            d_pressure: mu + scaled_mu * f[1] * pressure,
+            d_temperature: scaled_mu * f[2] * pressure,
+        }
     }
 }
 
