@@ -744,7 +744,11 @@ fn the_earlier_formulation_takes_the_smallest_of_three_roots() {
     assert_eq!(sign_changes, 3, "the case must have three roots");
     for start_rate in [0.0, 1e-4, 5e-3, 1.0] {
         for general in [false, true] {
-            let law = if general { law.with_general_path() } else { law };
+            let law = if general {
+                law.with_general_path()
+            } else {
+                law
+            };
             let inc = Increment::<1> {
                 tau: [0.0],
                 dgam: [g],

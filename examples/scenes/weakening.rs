@@ -545,8 +545,6 @@ impl Belt {
             onset: Vec::with_capacity(steps),
             failed: 0,
         };
-        let (tau0, state0) = (c.tau, c.statev.clone());
-        let _ = (tau0, state0);
         let mut was_stuck = true;
         let mut onset_before = false;
         for _ in 0..steps {
