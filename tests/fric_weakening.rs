@@ -771,3 +771,48 @@ fn the_earlier_formulation_takes_the_smallest_of_three_roots() {
         }
     }
 }
+
+/// docs/uinter.md, the bond's life cycle: a point sliding at the start carries the elastic
+/// slip γ_crit into the bond (S = S_a), so it separates freely; a stuck point (here: after a
+/// stop) carries less and bonds.
+#[test]
+fn a_sliding_point_separates_freely_a_stuck_one_bonds() {
+    // μ_d 0.2, μ_s 0.5, S_a 3, N_a 5, K_n 1e6; closed at p = 100.
+    let props = [2.0, 0.2, 0.5, 3.0, 5.0, 0.0, 0.0, GAMMA_CRIT, 0.0, 1e6];
+    for stop_first in [false, true] {
+        let mut c = UinterCall::new(2, &props);
+        c.rdisp[0] = P / 1e6;
+        c.drdisp[0] = P / 1e6;
+        c.dtime = 0.01;
+        for _ in 0..30 {
+            c.drdisp[1] = 0.2 * GAMMA_CRIT;
+            c.call();
+            c.drdisp[0] = 0.0;
+        }
+        assert_eq!(c.statev[2], 1.0);
+        assert!((c.stress[1] - (0.2 * P + 3.0)).abs() < 1e-9);
+        if stop_first {
+            c.drdisp[1] = 0.0;
+            c.call();
+            assert_eq!(c.statev[2], 0.0);
+        }
+        // Apart by 1 µm: tension K_n·|h| = 1 < N_a.
+        c.rdisp[0] = -1e-6;
+        c.drdisp = [-1e-6 - P / 1e6, 0.0, 0.0];
+        c.call();
+        assert_eq!(c.pnewdt, 1e36);
+        if stop_first {
+            // γ̄^el = τ̄·γ_crit/τ_s(p̄) with τ_s = 53: S = S_a·23/53, (23·3/53/3)² + 0.04 < 1.
+            assert_eq!(c.statev[2], 3.0);
+            assert!(
+                (c.stress[1] - 3.0 * 23.0 / 53.0).abs() < 1e-9,
+                "{:?}",
+                c.stress
+            );
+            assert!((c.stress[0] + 1.0).abs() < 1e-9);
+        } else {
+            assert_eq!(c.statev[2], 4.0);
+            assert_eq!(c.stress[..2], [0.0, 0.0]);
+        }
+    }
+}
