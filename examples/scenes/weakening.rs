@@ -276,7 +276,7 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
             .legend(|(a, b)| PathElement::new(vec![(a, b), (a + 18, b)], BLACK));
         chart
             .configure_series_labels()
-            .position(SeriesLabelPosition::LowerRight)
+            .position(SeriesLabelPosition::MiddleMiddle)
             .background_style(WHITE.mix(0.9))
             .border_style(BLACK)
             .label_font(("sans-serif", 12))
