@@ -250,7 +250,11 @@ static void run_point(int ip, uint64_t *digests, final_rec *fin, tally *t)
         }
         p = stress[0];
         mu = props[2] > props[1] ? props[2] : props[1];
-        bound = (mu + props[5] * statev[1]) * (p > 0.0 ? p : 0.0) + props[3];
+        /* After a slip a stick increment keeps the start rate's strength (docs/props.md). */
+        bound = (mu + props[5] * (statev0[2] == 1.0 && statev0[1] > statev[1] ? statev0[1]
+                                                                             : statev[1])) *
+                    (p > 0.0 ? p : 0.0) +
+                props[3];
         if (tau > bound * (1.0 + 1e-12)) {
             violation(t, "|tau| above the strength", ip, inc);
         }

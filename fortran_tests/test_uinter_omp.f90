@@ -212,7 +212,10 @@ contains
       end do
       p = stress(1)
       mu = max(props(2), props(3))
-      bound = (mu + props(6)*statev(2))*max(p, 0.0_dp) + props(4)
+      ! After a slip a stick increment keeps the start rate's strength (docs/props.md).
+      bound = statev(2)
+      if (statev0(3) == 1.0_dp) bound = max(bound, statev0(2))
+      bound = (mu + props(6)*bound)*max(p, 0.0_dp) + props(4)
       if (tau > bound*(1.0_dp + 1.0e-12_dp)) call fault('|tau| above the strength')
       if (sed < 0.0_dp .or. sfd < 0.0_dp .or. spd < 0.0_dp .or. statev(1) < statev0(1) .or. &
           statev(2) < 0.0_dp) &

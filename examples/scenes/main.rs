@@ -37,6 +37,7 @@ mod rate_map;
 mod scene;
 mod stability;
 mod velocity;
+mod weakening;
 
 use std::fmt::Write as _;
 use std::io::{IsTerminal as _, Write as _};
@@ -350,6 +351,21 @@ fn main() {
     let mut rate_maps: Vec<rate_map::RateMap> = Vec::new();
     let mut outputs = Vec::new();
     failures += consolidation::join(p1, &mut check_rows, &mut outputs);
+    // F7, velocity weakening (examples/scenes/weakening.rs): its rows join the checks.
+    let mut newton_table = String::new();
+    if opts.point.is_none() {
+        match weakening::run(&opts.out, opts.quick) {
+            Ok((rows, files, table)) => {
+                check_rows.extend(rows);
+                outputs.extend(files);
+                newton_table = table;
+            }
+            Err(e) => {
+                eprintln!("\nscenes: {e}");
+                failures += 1;
+            }
+        }
+    }
     for scene in &scenes {
         let mut points = sweep(scene, opts.quick, |w| progress.tick(w));
         if scene.kind == "circle" {
@@ -486,6 +502,11 @@ fn main() {
         }
         outputs.insert(0, path);
         println!();
+    }
+    if !newton_table.is_empty() {
+        println!(
+            "F7: F6 with the decay law, Newton iterations per implicit step\n\n{newton_table}"
+        );
     }
     println!("Work-precision (error against the closed form; claim = the chart's stated bound)\n");
     failures += print_points(&all_points);

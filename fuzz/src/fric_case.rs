@@ -419,7 +419,14 @@ impl FricCase {
         let p_plus = self.press.max(0.0);
         // The rate term from STATEV(2), and again from |DSLIP|·(p/Δt): STATEV(2) can be
         // subnormal (few significant bits) while the law's own k_μ/Δt is not.
-        let via_state = k_mu * out.statev[1] * p_plus;
+        // After a slip (start status 1) a stick increment keeps the stiffness of the start rate
+        // (docs/props.md, the rate-dependent formulation): its strength is g(start rate).
+        let start_rate = if self.statev.get(2) == Some(&1.0) {
+            self.statev.get(1).copied().unwrap_or(0.0).max(0.0)
+        } else {
+            0.0
+        };
+        let via_state = k_mu * out.statev[1].max(start_rate) * p_plus;
         let slip = out.dslip.iter().fold(0.0f64, |s, x| s.hypot(*x));
         let via_slip = if self.dtime > 0.0 && !out.dslip.contains(&UNWRITTEN) {
             k_mu * slip * (p_plus / self.dtime)
@@ -427,7 +434,7 @@ impl FricCase {
             0.0
         };
         // A rate saturated at f64::MAX with k_μ > 0: no finite bound to check.
-        if out.statev[1] == f64::MAX && k_mu > 0.0 {
+        if out.statev[1].max(start_rate) == f64::MAX && k_mu > 0.0 {
             return Ok(());
         }
         let rate_term = if via_slip.is_finite() {

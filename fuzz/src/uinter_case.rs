@@ -447,7 +447,14 @@ impl UinterCase {
         let p_plus = out.stress[0].max(0.0);
         // A slip rate saturated at f64::MAX (a slip over a subnormal DTIME) no longer tells
         // the rate the law used: no bound then for a rate-dependent law.
-        let rate = out.statev[1];
+        // After a slip (start status 1) a stick increment keeps the stiffness of the start rate
+        // (docs/props.md, the rate-dependent formulation): its strength is g(start rate).
+        let start_rate = if self.statev.get(2) == Some(&1.0) {
+            self.statev.get(1).copied().unwrap_or(0.0).max(0.0)
+        } else {
+            0.0
+        };
+        let rate = out.statev[1].max(start_rate);
         let bound = if rate == f64::MAX && k_mu > 0.0 {
             f64::INFINITY
         } else {

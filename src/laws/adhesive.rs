@@ -7,13 +7,18 @@
 //! k_μ the slope of μ against the slip rate (`kmu`), S_a and N_a the shear and normal adhesive
 //! strengths (`Sa`, `Na`), γ_crit the allowable elastic slip, Δv the slip rate.
 //!
-//! - Static strength (the stick limit): τ_s(p) = μ_s·p⁺ + S_a, p⁺ = max(p, 0); elastic stick
-//!   with k_s = τ_s/γ_crit, so a point starts to slide exactly when its stick stress exceeds
-//!   μ_s·p + S_a (seed 004, first equation, condition S_stick > μ_s N + S_a).
+//! - Static strength (the stick limit from rest): τ_s(p) = μ_s·p⁺ + S_a, p⁺ = max(p, 0); elastic
+//!   stick with k_s = τ_s/γ_crit, so a point starts to slide exactly when its stick stress
+//!   exceeds μ_s·p + S_a (seed 004, first equation, condition S_stick > μ_s N + S_a).
 //! - Sliding strength: g(Δv) = ((μ_s·v_½ + μ_d·Δv)/(v_½ + Δv) + k_μ·Δv)·p⁺ + S_a
 //!   (seed 004, first equation), with Δv the end-of-increment slip rate Δs/Δt (backward Euler).
 //!   With v_½ = 0 the leading term is μ_d for every Δv > 0: the instantaneous drop.
-//! - The return map solves τ = k_s(|γ^pr| − Δs) = g(Δs/Δt) for the slip increment Δs ≥ 0.
+//! - The return map (default, [`RateFormulation::RateFollowingStiffness`], docs/props.md): after
+//!   a slip at Δv₀ the stick stiffness is g(Δv₀)/γ_crit, otherwise τ_s/γ_crit; stick while
+//!   |γ^pr| ≤ γ_crit; sliding with Δs = |γ^pr| − γ_crit and τ = g(Δs/Δt) (the elastic slip stays
+//!   γ_crit), explicit.
+//! - The earlier return map ([`RateFormulation::RateFreeStiffness`], kept for comparisons)
+//!   solves τ = k_s(|γ^pr| − Δs) = g(Δs/Δt) for the slip increment Δs ≥ 0.
 //!   Multiplied by (v_½ + Δv) it is the quadratic
 //!   a·Δs² − b·Δs − c = 0 with a = k_s + p⁺k_μ/Δt, b = T − S_a − μ_d p⁺ − a·v_½Δt,
 //!   c = (T − τ_s)·v_½Δt, T = k_s|γ^pr| the trial stress. Sliding means T > τ_s, so c ≥ 0 and

@@ -6,12 +6,15 @@
 //!   isotropic with μ̄ = sqrt((μ₁² + μ₂²)/2); τ_max applies to the scaled stresses; the stick
 //!   stiffnesses are k_i = (μ_i/μ̄)²·k̄_s; tangents are scaled back with the same factors;
 //! - μ(γ̇_eq, p, θ̄) ([`super::friction_coefficient`]), with the slip rate taken at the end of
-//!   the increment, γ̇_eq = Δγ_eq^sl/Δt (backward Euler). In elastic stick the stick stiffness is
-//!   the one of the rate-free critical stress, k_s = τ_crit(0, p, θ̄)/γ_crit (the slip rate is
-//!   zero in stick, seed 000 after Eq. 5.2.3-1), so the slip increment s = Δγ_eq^sl solves the
-//!   scalar equation k_s·(γ_eq^pr − s) = τ_crit(s/Δt, p, θ̄), solved by a bracketed Newton (Halley)
-//!   iteration ([`super::scalar_root`]); the consistent tangent is that of Eq. 5.2.3-3 with the
-//!   ∂μ/∂γ̇ term of this formulation. Optionally μ is frozen at its start-of-increment value;
+//!   the increment, γ̇_eq = Δγ_eq^sl/Δt (backward Euler). In elastic stick the stick stiffness
+//!   follows the rate-dependent strength (seed 000 after Eq. 5.2.3-1), k_s = τ_crit(γ̇₀, p, θ̄)/γ_crit
+//!   at the start-of-increment rate γ̇₀ = `STATEV(2)` at both ends of the increment; stick while
+//!   |γ^pr| ≤ γ_crit; in slip the elastic slip stays γ_crit, s = Δγ_eq^sl = γ_eq^pr − γ_crit and
+//!   τ = τ_crit(s/Δt, p, θ̄)·n (Eq. 5.2.3-2), explicit; tangent Eq. 5.2.3-3 (docs/props.md, "The
+//!   rate-dependent formulation"). The earlier formulation (rate-free k_s, s from
+//!   k_s·(γ_eq^pr − s) = τ_crit(s/Δt), a bracketed Halley solve, [`super::scalar_root`]) stays
+//!   for comparisons ([`RateFormulation::RateFreeStiffness`]). Optionally μ is frozen at its
+//!   start-of-increment value;
 //! - exact stick with rate-dependent slip (Eq. 5.2.3-7 to 5.2.3-9);
 //! - Hilber-Hughes-Taylor dynamics: the time increment used for rates is β·Δt/γ;
 //! - viscous tangential damping τ_v = c·γ̇ (seed 003), added to the friction stress;

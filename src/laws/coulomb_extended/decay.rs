@@ -86,31 +86,15 @@ impl ExtendedCoulomb {
         } else {
             1.0
         };
-        // τ̄_crit(γ̇_k, p, θ̄) as `critical` forms it, from f = φ(γ̇_k)·π·Θ (the rate held).
-        let rate_free = |pressure: f64, f: [f64; 3]| -> Critical {
-            if pressure < 0.0 {
-                return Critical::default();
-            }
-            let mu = mbar * f[0] * phi_k;
-            if mu * pressure >= tau_max {
-                Critical {
-                    value: tau_max,
-                    ..Critical::default()
-                }
-            } else {
-                Critical {
-                    value: mu * pressure,
-                    d_rate: 0.0,
-                    d_rate2: 0.0,
-                    d_pressure: mu + mbar * f[1] * phi_k * pressure,
-                    d_temperature: mbar * f[2] * phi_k * pressure,
-                }
-            }
-        };
         // Stick stiffness k̄_s = τ̄_crit(γ̇_k, p, θ̄)/γ_crit at the end and at the start.
         let factor = self.coefficient.rate_free(p, theta);
-        let k = rate_free(p, factor);
-        let k0 = rate_free(p0, self.coefficient.rate_free(p0, theta));
+        let k = held_rate_critical(p, factor, mbar * phi_k, tau_max);
+        let k0 = held_rate_critical(
+            p0,
+            self.coefficient.rate_free(p0, theta),
+            mbar * phi_k,
+            tau_max,
+        );
         // γ^el = τ/k_s(p₀) and its θ̄-derivative (as in `elastic_stick`).
         let (elastic_start, d_elastic_dtheta) =
             elastic_start(&inc.tau, gamma_crit, &k0, with_theta);
@@ -347,6 +331,24 @@ impl ExtendedCoulomb {
         let x_tol = 4.0 * f64::EPSILON * g;
         let tau_max = self.base.shear_limit().unwrap_or(f64::INFINITY);
         let a = mbar * pt * p;
+        // The smallest root (docs/props.md, "τ_max with several roots"; the earlier
+        // formulation only): with A·r < τ_max < A (r < 1) the strength is capped on [0, s*],
+        // A·φ(s*/Δt) = τ_max, and below the cap after s*; F is linear on the cap and concave
+        // after it (φ is convex), so the smallest root is the cap's G − τ_max/k̄_s when that
+        // lies in [0, s*], and otherwise the only root in [s*, G]. No case is left undecided.
+        let mut floor = 0.0;
+        if tau_max < a && a * r < tau_max && r < 1.0 {
+            let on_cap = g - tau_max * compliance;
+            let s_star = -((tau_max / a - r) / (1.0 - r)).ln() / (d * per_dt);
+            if on_cap <= s_star {
+                let cap = Critical {
+                    value: tau_max,
+                    ..Critical::default()
+                };
+                return Ok((on_cap.max(0.0), cap, 0));
+            }
+            floor = s_star;
+        }
         // φ lies between 1 (at rest) and r (fast): the root lies between the slips for the
         // largest and the smallest of τ̄_crit, so a guess outside is moved to the nearer one.
         // (Only the first guess: its rounding does not matter, so one division.)
@@ -358,15 +360,50 @@ impl ExtendedCoulomb {
             // way to the first exp; a NaN bound leaves the guess alone all the same), not
             // `clamp` (no panic on a NaN bound); the solver clips into [0, γ̄_eq^pr].
             let guess = if guess < low { low } else { guess };
-            if guess > high { high } else { guess }
+            let guess = if guess > high { high } else { guess };
+            if guess < floor { floor } else { guess }
         };
         // F(0) = k̄_s γ̄_eq^pr − τ̄_crit(0) > 0 (slip) and F(γ̄_eq^pr) = −τ̄_crit ≤ 0: the root is
         // bracketed.
-        let (x, phi, dphi, iterations) =
-            decay_halley(r, d, a, tau_max, stiffness, g, per_dt, guess, x_tol, f_tol)?;
+        let (x, phi, dphi, iterations) = decay_halley(
+            r,
+            d,
+            a,
+            tau_max,
+            stiffness,
+            (g, floor),
+            per_dt,
+            guess,
+            x_tol,
+            f_tol,
+        )?;
         let root_x = x;
         let c = critical_from_phi([pt, pt_p, pt_t], mbar, p, tau_max, phi, dphi);
         Ok((root_x, c, iterations))
+    }
+}
+
+/// τ̄_crit(γ̇_k, p, θ̄) as `critical` forms it, from f = π·Θ and its partials, with the rate held
+/// (`scaled_mu` = μ̄·φ(γ̇_k); φ(0) = 1); 0 for p < 0.
+#[inline(always)]
+fn held_rate_critical(pressure: f64, f: [f64; 3], scaled_mu: f64, tau_max: f64) -> Critical {
+    if pressure < 0.0 {
+        return Critical::default();
+    }
+    let mu = scaled_mu * f[0];
+    if mu * pressure >= tau_max {
+        Critical {
+            value: tau_max,
+            ..Critical::default()
+        }
+    } else {
+        Critical {
+            value: mu * pressure,
+            d_rate: 0.0,
+            d_rate2: 0.0,
+            d_pressure: mu + scaled_mu * f[1] * pressure,
+            d_temperature: scaled_mu * f[2] * pressure,
+        }
     }
 }
 
@@ -435,25 +472,26 @@ fn decay_halley(
     a: f64,
     tau_max: f64,
     stiffness: f64,
-    g: f64,
+    (g, floor): (f64, f64),
     per_dt: f64,
     guess: f64,
     x_tol: f64,
     f_tol: f64,
 ) -> Result<(f64, f64, f64, u32), RootFailure> {
     let mut residual = DecayResidual::new(r, d, a, tau_max, stiffness, g, per_dt);
-    // Bracket [low, high] = [γ̄_eq^pr, 0] with F(low) ≤ 0 ≤ F(high).
-    let (low, high) = (g, 0.0);
+    // Bracket [low, high] = [γ̄_eq^pr, floor] with F(low) ≤ 0 ≤ F(high) (floor = 0, or s* of
+    // the smallest-root rule).
+    let (low, high) = (g, floor);
     if low == high {
         let (_, phi, dphi) = residual.eval::<false>(low);
         return Ok((low, phi, dphi, 0));
     }
-    // Into [0, γ̄_eq^pr] (g > 0 here) with comparisons: `clamp` tests its bounds.
+    // Into [floor, γ̄_eq^pr] (g > floor here) with comparisons: `clamp` tests its bounds.
     let x = if guess.is_finite() {
-        let x = if guess > 0.0 { guess } else { 0.0 };
+        let x = if guess > floor { guess } else { floor };
         if x < g { x } else { g }
     } else {
-        0.5 * g
+        0.5 * (g + floor)
     };
     let mut it = HalleyState {
         x,
@@ -703,7 +741,7 @@ mod tests {
             let f_tol = 8.0 * f64::EPSILON * (stiffness * g + a);
             let x_tol = 4.0 * f64::EPSILON * g;
             let Ok((x, phi, dphi, _)) =
-                decay_halley(r, d, a, cap, stiffness, g, per_dt, guess_fraction * g, x_tol, f_tol)
+                decay_halley(r, d, a, cap, stiffness, (g, 0.0), per_dt, guess_fraction * g, x_tol, f_tol)
             else {
                 return Err(TestCaseError::fail("no convergence"));
             };

@@ -1,0 +1,861 @@
+//! F7, steady sliding under velocity weakening (`shared/design/scenes.md`, issue 16): one point
+//! driven at a constant slip velocity v with increments Δγ = r·γ_crit at constant pressure p,
+//! law 1 with the exponential decay law μ(v) = μ_k + (μ_s − μ_k)·exp(−d_c·v). The answer is
+//! steady sliding at τ = μ(v)·p for every r. Compared: the library's formulation (rate-following
+//! stick stiffness, through `fric_`) and the earlier one (rate-free stick stiffness, Rust API
+//! `RateFormulation::RateFreeStiffness`, kept for this comparison only).
+//!
+//! 1. Error of the mean friction against r, per formulation (d_c·v = 1 and 3).
+//! 2. Stability map over (r, d_c·v), per formulation, with the earlier formulation's closed-form
+//!    boundaries drawn: its slip equation is stable only for r > 2c·x·e^(−x) (x = d_c·v,
+//!    c = 1 − μ_k/μ_s; docs/props.md), and its memoryless stick test sticks whenever
+//!    μ(v)·p + k_s·Δγ ≤ μ_s·p, i.e. r ≤ c·(1 − e^(−x)).
+//! 3. F6 (block on a belt, spring to a wall) with the decay law: genuine stick-slip, implicit
+//!    (backward Euler) steps with Newton iterations on `fric_`'s stress and tangent, coarse
+//!    steps against a fine-step reference; the Newton iterations per increment with the exact
+//!    tangent and with a bounded one (the negative rate term dropped), near the slip onsets and
+//!    overall.
+//!
+//! Every claim is a check row (`checks.csv`, scene F7) that fails when the data stop supporting
+//! it.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use interfacial::abi::host::FricCall;
+use interfacial::laws::coulomb::{Contact, Coulomb, Increment};
+use interfacial::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
+use interfacial::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
+use plotters::prelude::*;
+
+use crate::checks::Row;
+
+const MU_S: f64 = 0.5;
+const MU_K: f64 = 0.2;
+const D_C: f64 = 200.0;
+const P: f64 = 100.0;
+const GAMMA_CRIT: f64 = 1e-3;
+/// c = 1 − μ_k/μ_s.
+const C: f64 = 1.0 - MU_K / MU_S;
+
+/// Which return map.
+#[derive(Clone, Copy, PartialEq, Debug)]
+pub enum Formulation {
+    /// The library's (`fric_`): rate-following stick stiffness.
+    RateFollowing,
+    /// The earlier one (Rust API): rate-free stick stiffness, memoryless stick test.
+    RateFree,
+}
+
+impl Formulation {
+    fn name(self) -> &'static str {
+        match self {
+            Formulation::RateFollowing => "rate-following stiffness (fric_)",
+            Formulation::RateFree => "earlier rate-free stiffness",
+        }
+    }
+}
+
+fn mu_p(x: f64) -> f64 {
+    (MU_K + (MU_S - MU_K) * (-x).exp()) * P
+}
+
+/// The earlier formulation's bounds: slip equation stable for r > 2c·x·e^(−x); the memoryless
+/// stick test lets steady sliding continue only for r > c·(1 − e^(−x)).
+pub fn rate_free_bounds(x: f64) -> (f64, f64) {
+    (2.0 * C * x * (-x).exp(), C * (1.0 - (-x).exp()))
+}
+
+fn decay_props() -> Vec<f64> {
+    vec![1.0, MU_S, 0.0, 0.0, GAMMA_CRIT, 0.0, 0.0, 1.0, MU_K, D_C]
+}
+
+/// τ of `n` increments of r·γ_crit at the slip velocity v = x/d_c, from rest.
+fn drive(f: Formulation, x: f64, r: f64, n: usize) -> Result<Vec<f64>, String> {
+    let v = x / D_C;
+    let dgam = r * GAMMA_CRIT;
+    let dtime = dgam / v;
+    let mut taus = Vec::with_capacity(n);
+    match f {
+        Formulation::RateFollowing => {
+            let mut c = FricCall::new(1, &decay_props());
+            c.press = P;
+            for _ in 0..n {
+                c.dgam[0] = dgam;
+                c.dtime = dtime;
+                c.pnewdt = 1e36;
+                c.call();
+                if c.pnewdt < 1.0 {
+                    return Err(format!("F7: fric_ cut back: {}", FricCall::last_error()));
+                }
+                taus.push(c.tau[0]);
+            }
+        }
+        Formulation::RateFree => {
+            let law = ExtendedCoulomb::new(
+                Coulomb::new(MU_S)
+                    .and_then(|c| c.with_critical_slip_absolute(GAMMA_CRIT))
+                    .map_err(|e| e.to_string())?,
+            )
+            .with_coefficient_law(
+                CoefficientLaw::default()
+                    .with_exponential_decay(MU_K / MU_S, D_C)
+                    .map_err(|e| e.to_string())?,
+            )
+            .with_rate_formulation(RateFormulation::RateFreeStiffness);
+            let (mut tau, mut state) = (0.0, ExtendedState::<1>::default());
+            for _ in 0..n {
+                let inc = Increment::<1> {
+                    tau: [tau],
+                    dgam: [dgam],
+                    pressure: P,
+                    dpressure: 0.0,
+                    dtime,
+                    characteristic_length: 1.0,
+                    ..Increment::default()
+                };
+                let up = law
+                    .update(&inc, &Conditions::default(), &state)
+                    .map_err(|e| format!("F7: earlier formulation refused: {e}"))?;
+                let Contact::Motion(t) = up.contact else {
+                    return Err("F7: exact stick in elastic stick".into());
+                };
+                tau = t.tau[0];
+                state = up.state;
+                taus.push(tau);
+            }
+        }
+    }
+    Ok(taus)
+}
+
+/// Increments to load from rest and slide long enough to judge.
+fn length(r: f64) -> usize {
+    (1.5 / r).ceil() as usize + 300
+}
+
+/// |mean τ − μ(v)p|/(μ(v)p) over the last 200 increments.
+fn mean_error(f: Formulation, x: f64, r: f64) -> Result<f64, String> {
+    let taus = drive(f, x, r, length(r))?;
+    let tail = &taus[taus.len() - 200..];
+    let mean = tail.iter().sum::<f64>() / tail.len() as f64;
+    Ok((mean - mu_p(x)).abs() / mu_p(x))
+}
+
+/// Settles: every one of the last 100 increments within 10⁻⁶ of μ(v)p.
+fn settles(f: Formulation, x: f64, r: f64) -> Result<bool, String> {
+    let taus = drive(f, x, r, length(r))?;
+    let exact = mu_p(x);
+    Ok(taus[taus.len() - 100..]
+        .iter()
+        .all(|t| (t - exact).abs() <= 1e-6 * exact))
+}
+
+fn log_space(a: f64, b: f64, n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| a * (b / a).powf(i as f64 / (n - 1).max(1) as f64))
+        .collect()
+}
+
+fn err<E: std::fmt::Display>(e: E) -> String {
+    e.to_string()
+}
+
+fn row(case: String, quantity: &'static str, exact: f64, computed: f64, tolerance: f64) -> Row {
+    Row {
+        scene: "F7",
+        case,
+        quantity,
+        exact,
+        computed,
+        tolerance,
+    }
+}
+
+/// Part 1: error of the mean friction against r.
+fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<PathBuf>, String> {
+    let rs = log_space(0.01, 1.0, if quick { 9 } else { 21 });
+    let mut csv = String::from("x,r,formulation,mean_error\n");
+    let mut series = Vec::new();
+    for x in [1.0, 3.0] {
+        for f in [Formulation::RateFollowing, Formulation::RateFree] {
+            let mut pts = Vec::new();
+            for &r in &rs {
+                let e = mean_error(f, x, r)?;
+                let _ = writeln!(csv, "{x},{r:e},{},{e:e}", f.name());
+                pts.push((r, e));
+                if f == Formulation::RateFollowing {
+                    rows.push(row(
+                        format!("d_c·v = {x}, r = {r:.3}"),
+                        "rate-following: mean friction error (issue: < 1 %)",
+                        0.0,
+                        e,
+                        0.01,
+                    ));
+                }
+            }
+            series.push((x, f, pts));
+        }
+    }
+    // The earlier formulation on the issue's case (x = 3, r = 0.25) misses by more than 1 %,
+    // and at x = 1 it misses for every r below its stability bound 2c/e.
+    let issue = mean_error(Formulation::RateFree, 3.0, 0.25)?;
+    rows.push(row(
+        "earlier, d_c·v = 3, r = 0.25 (the issue's case)".into(),
+        "earlier formulation misses μ(v)p by > 1 % (1 = yes)",
+        1.0,
+        f64::from(u8::from(issue > 0.01)),
+        0.0,
+    ));
+    let (bound, _) = rate_free_bounds(1.0);
+    let misses = series
+        .iter()
+        .filter(|(x, f, _)| *x == 1.0 && *f == Formulation::RateFree)
+        .flat_map(|(_, _, pts)| pts.iter())
+        .filter(|(r, e)| *r < bound / 1.5 && *e <= 0.01)
+        .count();
+    rows.push(row(
+        "earlier, d_c·v = 1, r < (2c/e)/1.5".into(),
+        "earlier formulation: increments below its bound that meet 1 %",
+        0.0,
+        misses as f64,
+        0.0,
+    ));
+    let csv_path = out.join("F7-mean-error.csv");
+    std::fs::write(&csv_path, csv).map_err(|e| format!("{}: {e}", csv_path.display()))?;
+    let svg = out.join("F7-mean-error.svg");
+    {
+        let root = SVGBackend::new(&svg, (820, 560)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(
+                "F7: error of the mean friction against the increment r·γ_crit",
+                ("sans-serif", 18),
+            )
+            .margin(12)
+            .x_label_area_size(44)
+            .y_label_area_size(70)
+            .build_cartesian_2d((0.008..1.25).log_scale(), (1e-17..10.0).log_scale())
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .x_desc("increment r = Δγ/γ_crit")
+            .y_desc("|mean τ − μ(v)p| / μ(v)p")
+            .x_label_formatter(&|v| format!("{v:.0e}"))
+            .y_label_formatter(&|v| format!("{v:.0e}"))
+            .draw()
+            .map_err(err)?;
+        let colors = [
+            RGBColor(31, 119, 180),
+            RGBColor(255, 127, 14),
+            RGBColor(44, 160, 44),
+            RGBColor(214, 39, 40),
+        ];
+        for (i, (x, f, pts)) in series.iter().enumerate() {
+            let color = colors[i % colors.len()];
+            // An exact zero is drawn at the bottom of the chart.
+            let pts: Vec<(f64, f64)> = pts.iter().map(|(r, e)| (*r, e.max(1e-17))).collect();
+            chart
+                .draw_series(LineSeries::new(pts.clone(), color.stroke_width(2)))
+                .map_err(err)?
+                .label(format!("{}, d_c·v = {x}", f.name()))
+                .legend(move |(a, b)| PathElement::new(vec![(a, b), (a + 18, b)], color));
+            chart
+                .draw_series(pts.iter().map(|p| Circle::new(*p, 3, color.filled())))
+                .map_err(err)?;
+        }
+        chart
+            .draw_series(DashedLineSeries::new(
+                vec![(0.008, 0.01), (1.25, 0.01)],
+                6,
+                4,
+                BLACK.stroke_width(1),
+            ))
+            .map_err(err)?
+            .label("the issue's 1 %")
+            .legend(|(a, b)| PathElement::new(vec![(a, b), (a + 18, b)], BLACK));
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::MiddleMiddle)
+            .background_style(WHITE.mix(0.9))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 12))
+            .draw()
+            .map_err(err)?;
+        root.present().map_err(err)?;
+    }
+    Ok(vec![csv_path, svg])
+}
+
+/// Part 2: stability maps over (r, d_c·v).
+fn stability_maps(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<PathBuf>, String> {
+    let (nr, nx) = if quick { (10, 7) } else { (25, 15) };
+    let rs = log_space(0.01, 10.0, nr);
+    let xs = log_space(0.1, 30.0, nx);
+    let mut outputs = Vec::new();
+    let mut csv = String::from("formulation,r,x,settles,slip_bound,stick_bound\n");
+    for f in [Formulation::RateFollowing, Formulation::RateFree] {
+        let mut cells = vec![vec![false; nr]; nx];
+        for (j, &x) in xs.iter().enumerate() {
+            for (i, &r) in rs.iter().enumerate() {
+                cells[j][i] = settles(f, x, r)?;
+                let (b1, b2) = rate_free_bounds(x);
+                let _ = writeln!(
+                    csv,
+                    "{},{r:e},{x:e},{},{b1:e},{b2:e}",
+                    f.name(),
+                    cells[j][i]
+                );
+            }
+        }
+        let flat = || {
+            xs.iter().enumerate().flat_map(|(j, &x)| {
+                rs.iter()
+                    .enumerate()
+                    .map(move |(i, &r)| (x, r, i, j))
+                    .collect::<Vec<_>>()
+            })
+        };
+        match f {
+            Formulation::RateFollowing => {
+                let unsettled = flat().filter(|&(_, _, i, j)| !cells[j][i]).count();
+                rows.push(row(
+                    format!("{nr}×{nx} cells, r 0.01–10, d_c·v 0.1–30"),
+                    "rate-following: cells that do not settle",
+                    0.0,
+                    unsettled as f64,
+                    0.0,
+                ));
+            }
+            Formulation::RateFree => {
+                // Necessary conditions of the closed forms: below either bound (with a margin
+                // of 1.5) no cell settles; well above both, every cell does.
+                let below = flat()
+                    .filter(|&(x, r, i, j)| {
+                        let (b1, b2) = rate_free_bounds(x);
+                        (r < b1 / 1.5 || r < b2 / 1.5) && cells[j][i]
+                    })
+                    .count();
+                let above = flat()
+                    .filter(|&(x, r, i, j)| {
+                        let (b1, b2) = rate_free_bounds(x);
+                        r > 1.5 * b1.max(b2) && !cells[j][i]
+                    })
+                    .count();
+                let oscillating = flat().filter(|&(_, _, i, j)| !cells[j][i]).count();
+                rows.push(row(
+                    "earlier, r below a closed-form bound / 1.5".into(),
+                    "cells that settle (closed form: none)",
+                    0.0,
+                    below as f64,
+                    0.0,
+                ));
+                rows.push(row(
+                    "earlier, r above 1.5 × both bounds".into(),
+                    "cells that do not settle (closed form: none)",
+                    0.0,
+                    above as f64,
+                    0.0,
+                ));
+                rows.push(row(
+                    "earlier, whole map".into(),
+                    "cells that do not settle (> 0: the map has both classes)",
+                    1.0,
+                    f64::from(u8::from(oscillating > 0)),
+                    0.0,
+                ));
+            }
+        }
+        let svg = out.join(match f {
+            Formulation::RateFollowing => "F7-map-rate-following.svg",
+            Formulation::RateFree => "F7-map-earlier.svg",
+        });
+        map_chart(&svg, f, &rs, &xs, &cells)?;
+        outputs.push(svg);
+    }
+    let csv_path = out.join("F7-maps.csv");
+    std::fs::write(&csv_path, csv).map_err(|e| format!("{}: {e}", csv_path.display()))?;
+    outputs.push(csv_path);
+    Ok(outputs)
+}
+
+fn map_chart(
+    path: &Path,
+    f: Formulation,
+    rs: &[f64],
+    xs: &[f64],
+    cells: &[Vec<bool>],
+) -> Result<(), String> {
+    let half = |v: &[f64], i: usize, up: bool| -> f64 {
+        let ratio = (v[1] / v[0]).sqrt();
+        if up { v[i] * ratio } else { v[i] / ratio }
+    };
+    let (x0, x1) = (half(rs, 0, false), half(rs, rs.len() - 1, true));
+    let (y0, y1) = (half(xs, 0, false), half(xs, xs.len() - 1, true));
+    let root = SVGBackend::new(path, (820, 600)).into_drawing_area();
+    root.fill(&WHITE).map_err(err)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            format!("F7: steady sliding under weakening, {}", f.name()),
+            ("sans-serif", 18),
+        )
+        .margin(12)
+        .x_label_area_size(44)
+        .y_label_area_size(70)
+        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc("increment r = Δγ/γ_crit")
+        .y_desc("d_c·v")
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .y_label_formatter(&|v| format!("{v:.1}"))
+        .draw()
+        .map_err(err)?;
+    let (settle, cycle) = (RGBColor(44, 160, 44), RGBColor(214, 39, 40));
+    for (j, row) in cells.iter().enumerate() {
+        chart
+            .draw_series(row.iter().enumerate().map(|(i, ok)| {
+                Rectangle::new(
+                    [
+                        (half(rs, i, false), half(xs, j, false)),
+                        (half(rs, i, true), half(xs, j, true)),
+                    ],
+                    if *ok { settle } else { cycle }.mix(0.6).filled(),
+                )
+            }))
+            .map_err(err)?;
+    }
+    for (label, color) in [("settles at μ(v)p", settle), ("cycles", cycle)] {
+        chart
+            .draw_series(std::iter::empty::<Rectangle<(f64, f64)>>())
+            .map_err(err)?
+            .label(label)
+            .legend(move |(a, b)| Rectangle::new([(a, b - 5), (a + 14, b + 5)], color.filled()));
+    }
+    let fine = log_space(y0, y1, 200);
+    let curve = |k: usize| -> Vec<(f64, f64)> {
+        fine.iter()
+            .map(|&x| {
+                let b = rate_free_bounds(x);
+                (if k == 0 { b.0 } else { b.1 }, x)
+            })
+            .filter(|(r, _)| *r >= x0 && *r <= x1)
+            .collect()
+    };
+    chart
+        .draw_series(LineSeries::new(curve(0), BLACK.stroke_width(3)))
+        .map_err(err)?
+        .label("earlier slip equation stable: r > 2c·x·e^(−x)")
+        .legend(|(a, b)| PathElement::new(vec![(a, b), (a + 18, b)], BLACK.stroke_width(3)));
+    chart
+        .draw_series(DashedLineSeries::new(curve(1), 6, 4, BLUE.stroke_width(2)))
+        .map_err(err)?
+        .label("earlier memoryless stick test: r > c·(1 − e^(−x))")
+        .legend(|(a, b)| PathElement::new(vec![(a, b), (a + 18, b)], BLUE.stroke_width(2)));
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.9))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 12))
+        .draw()
+        .map_err(err)?;
+    root.present().map_err(err)
+}
+
+/// F6 with the decay law: block m on a belt at v₀, spring k to a wall, normal force N.
+#[derive(Clone, Copy)]
+struct Belt {
+    mass: f64,
+    spring: f64,
+    normal: f64,
+    mu_s: f64,
+    mu_k: f64,
+    decay: f64,
+    belt: f64,
+    gamma_crit: f64,
+    /// Law 2 (seed 004) with this v_½ instead of the decay law (μ_s, μ_d = μ_k, no adhesion).
+    adhesive_vhalf: Option<f64>,
+}
+
+/// Which tangent the host's Newton iteration uses.
+#[derive(Clone, Copy, PartialEq, Debug)]
+pub enum Tangent {
+    /// `DDTDDG` as returned (the consistent tangent).
+    Exact,
+    /// max(`DDTDDG`, 0): the negative rate term dropped (a host-side choice).
+    Bounded,
+}
+
+/// One backward-Euler run: x(t) at the end of every step, Newton iterations per step, whether
+/// a step was near a slip onset (the previous or this step changed stick → slip), failures.
+struct BeltRun {
+    x: Vec<f64>,
+    stuck: Vec<bool>,
+    iterations: Vec<u32>,
+    onset: Vec<bool>,
+    failed: usize,
+}
+
+const MAX_NEWTON: u32 = 50;
+
+impl Belt {
+    fn props(&self) -> Vec<f64> {
+        if let Some(vhalf) = self.adhesive_vhalf {
+            return vec![
+                2.0,
+                self.mu_k,
+                self.mu_s,
+                0.0,
+                0.0,
+                0.0,
+                vhalf,
+                self.gamma_crit,
+            ];
+        }
+        vec![
+            1.0,
+            self.mu_s,
+            0.0,
+            0.0,
+            self.gamma_crit,
+            0.0,
+            0.0,
+            1.0,
+            self.mu_k,
+            self.decay,
+        ]
+    }
+
+    /// Backward Euler in x and v for `t_end`, Newton on the end position with `fric_`'s
+    /// stress (friction on the block, area 1) and tangent; slip Δγ = v₀Δt − Δx (the belt
+    /// relative to the block).
+    fn run(&self, dt: f64, t_end: f64, tangent: Tangent) -> BeltRun {
+        let steps = (t_end / dt).round() as usize;
+        let mut c = FricCall::new(1, &self.props());
+        c.press = self.normal;
+        c.dtime = dt;
+        let (mut x, mut v) = (0.0, 0.0);
+        let mut out = BeltRun {
+            x: Vec::with_capacity(steps),
+            stuck: Vec::with_capacity(steps),
+            iterations: Vec::with_capacity(steps),
+            onset: Vec::with_capacity(steps),
+            failed: 0,
+        };
+        let mut was_stuck = true;
+        let mut onset_before = false;
+        for _ in 0..steps {
+            let (tau_start, state_start) = (c.tau, c.statev.clone());
+            // Predictor: the block stays where it is.
+            let mut x1 = x;
+            let mut iterations = 0;
+            let mut converged = false;
+            while iterations < MAX_NEWTON {
+                iterations += 1;
+                c.tau = tau_start;
+                c.statev.clone_from(&state_start);
+                c.dgam[0] = self.belt * dt - (x1 - x);
+                c.pnewdt = 1e36;
+                c.call();
+                let v1 = (x1 - x) / dt;
+                // m (v₁ − v)/Δt = −k x₁ + τ.
+                let residual = self.mass * (v1 - v) / dt + self.spring * x1 - c.tau[0];
+                let k_t = match tangent {
+                    Tangent::Exact => c.ddtddg[0],
+                    Tangent::Bounded => c.ddtddg[0].max(0.0),
+                };
+                let slope = self.mass / (dt * dt) + self.spring + k_t;
+                let scale = self.mu_s * self.normal;
+                if residual.abs() <= 1e-10 * scale && iterations > 1 {
+                    converged = true;
+                    break;
+                }
+                x1 -= residual / slope;
+            }
+            if !converged {
+                out.failed += 1;
+            }
+            v = (x1 - x) / dt;
+            x = x1;
+            let stuck = c.statev[2] == 0.0;
+            let onset = was_stuck && !stuck;
+            out.onset.push(onset || onset_before);
+            onset_before = onset;
+            was_stuck = stuck;
+            out.x.push(x);
+            out.stuck.push(stuck);
+            out.iterations.push(iterations);
+        }
+        out
+    }
+}
+
+/// x_max, x_min over the second half, the mean period there (between downward crossings of
+/// the middle of [x_min, x_max]: the slips, which are fast; the penalty spring's ringing after
+/// a stick makes several stick/slip changes per cycle, so onsets are not counted), and the
+/// fraction of steps stuck.
+fn cycle_measures(run: &BeltRun, dt: f64) -> (f64, f64, f64, f64) {
+    let n = run.x.len();
+    let half = &run.x[n / 2..];
+    let xmax = half.iter().copied().fold(f64::MIN, f64::max);
+    let xmin = half.iter().copied().fold(f64::MAX, f64::min);
+    let mid = 0.5 * (xmax + xmin);
+    let crossings: Vec<usize> = (n / 2 + 1..n)
+        .filter(|&i| run.x[i - 1] >= mid && run.x[i] < mid)
+        .collect();
+    let period = if crossings.len() >= 2 {
+        (crossings[crossings.len() - 1] - crossings[0]) as f64 * dt / (crossings.len() - 1) as f64
+    } else {
+        f64::NAN
+    };
+    let stuck = run.stuck[n / 2..].iter().filter(|s| **s).count() as f64 / (n - n / 2) as f64;
+    (xmax, xmin, period, stuck)
+}
+
+/// Part 3: F6 with velocity weakening, and the Newton iterations.
+fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, String), String> {
+    let b = Belt {
+        mass: 1.0,
+        spring: 1.0,
+        normal: 1.0,
+        mu_s: 0.6,
+        mu_k: 0.5,
+        decay: 20.0,
+        belt: 0.1,
+        gamma_crit: 1e-3,
+        adhesive_vhalf: None,
+    };
+    let t_end = 40.0;
+    let reference_dt = if quick { 1e-3 } else { 2.5e-4 };
+    let reference = b.run(reference_dt, t_end, Tangent::Exact);
+    let (rmax, rmin, rperiod, rstuck) = cycle_measures(&reference, reference_dt);
+    let amplitude = (b.mu_s - b.mu_k) * b.normal / b.spring;
+    rows.push(row(
+        format!("reference Δt = {reference_dt}"),
+        "genuine stick-slip: x_max − x_min over A = (μ_s − μ_k)N/k (1–5)",
+        3.0,
+        (rmax - rmin) / amplitude,
+        2.0,
+    ));
+    rows.push(row(
+        format!("reference Δt = {reference_dt}"),
+        "genuine stick-slip: fraction of steps stuck (0.1–0.5)",
+        0.3,
+        rstuck,
+        0.2,
+    ));
+    let mut csv = String::from(
+        "dt,tangent,x_max,x_min,period,stuck_fraction,newton_mean,newton_max,newton_mean_onset,newton_max_onset,unconverged\n",
+    );
+    let mut table = String::from(
+        "| Δt | tangent | x_max − ref | x_min − ref | period − ref | Newton mean | max | mean near onset | max near onset | unconverged |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+    );
+    // Mean Newton iterations near the onsets, per (Δt, tangent), for the exact-against-bounded
+    // rows (docs/props.md: the exact tangent stays the default because it needs fewer).
+    let mut onset_means: Vec<(f64, Tangent, f64)> = Vec::new();
+    let mut adhesive_means: Vec<(f64, Tangent, f64)> = Vec::new();
+    let mut traces = vec![(
+        format!("reference Δt = {reference_dt}"),
+        reference_dt,
+        reference.x.clone(),
+    )];
+    for dt in [0.05, 0.02, 0.01] {
+        for tangent in [Tangent::Exact, Tangent::Bounded] {
+            let run = b.run(dt, t_end, tangent);
+            let (xmax, xmin, period, stuck) = cycle_measures(&run, dt);
+            let it = |onset: bool| -> (f64, u32) {
+                let sel: Vec<u32> = run
+                    .iterations
+                    .iter()
+                    .zip(&run.onset)
+                    .filter(|(_, o)| !onset || **o)
+                    .map(|(i, _)| *i)
+                    .collect();
+                let mean = sel.iter().map(|&i| f64::from(i)).sum::<f64>() / sel.len().max(1) as f64;
+                (mean, sel.iter().copied().max().unwrap_or(0))
+            };
+            let ((mean, max), (omean, omax)) = (it(false), it(true));
+            onset_means.push((dt, tangent, omean));
+            let _ = writeln!(
+                csv,
+                "{dt},{tangent:?},{xmax:e},{xmin:e},{period:e},{stuck:e},{mean},{max},{omean},{omax},{}",
+                run.failed
+            );
+            let _ = writeln!(
+                table,
+                "| {dt} | {tangent:?} | {:+.4} | {:+.4} | {:+.3} | {mean:.2} | {max} | {omean:.2} | {omax} | {} |",
+                xmax - rmax,
+                xmin - rmin,
+                period - rperiod,
+                run.failed
+            );
+            if tangent == Tangent::Exact {
+                let case = format!("Δt = {dt}, exact tangent");
+                if dt <= 0.02 {
+                    rows.push(row(
+                        case.clone(),
+                        "Newton: unconverged steps",
+                        0.0,
+                        run.failed as f64,
+                        0.0,
+                    ));
+                    // Coarse steps keep the stick-slip cycle of the fine reference.
+                    rows.push(row(
+                        case.clone(),
+                        "x_max against the reference, over A",
+                        0.0,
+                        (xmax - rmax) / amplitude,
+                        0.05,
+                    ));
+                    rows.push(row(
+                        case.clone(),
+                        "x_min against the reference, over A",
+                        0.0,
+                        (xmin - rmin) / amplitude,
+                        0.1,
+                    ));
+                    rows.push(row(
+                        case,
+                        "period against the reference, relative",
+                        0.0,
+                        (period - rperiod) / rperiod,
+                        0.05,
+                    ));
+                }
+                traces.push((format!("Δt = {dt}"), dt, run.x.clone()));
+            }
+        }
+    }
+    let csv_path = out.join("F7-belt.csv");
+    std::fs::write(&csv_path, csv).map_err(|e| format!("{}: {e}", csv_path.display()))?;
+    let svg = out.join("F7-belt.svg");
+    {
+        let root = SVGBackend::new(&svg, (900, 500)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(
+                "F7: F6 with velocity-weakening μ (decay law), implicit steps against a fine reference",
+                ("sans-serif", 16),
+            )
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(60)
+            .build_cartesian_2d(0.0..t_end, 0.0..0.75)
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .x_desc("time t")
+            .y_desc("block position x")
+            .draw()
+            .map_err(err)?;
+        let colors = [
+            BLACK,
+            RGBColor(31, 119, 180),
+            RGBColor(255, 127, 14),
+            RGBColor(44, 160, 44),
+        ];
+        for (k, (label, dt, xs)) in traces.iter().enumerate() {
+            let color = colors[k % colors.len()];
+            let stride = (xs.len() / 4000).max(1);
+            let pts: Vec<(f64, f64)> = xs
+                .iter()
+                .enumerate()
+                .step_by(stride)
+                .map(|(i, x)| ((i + 1) as f64 * dt, *x))
+                .collect();
+            chart
+                .draw_series(LineSeries::new(
+                    pts,
+                    color.stroke_width(if k == 0 { 3 } else { 1 }),
+                ))
+                .map_err(err)?
+                .label(label.clone())
+                .legend(move |(a, b)| PathElement::new(vec![(a, b), (a + 18, b)], color));
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::LowerMiddle)
+            .background_style(WHITE.mix(0.9))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 12))
+            .draw()
+            .map_err(err)?;
+        root.present().map_err(err)?;
+    }
+    // The same belt with the adhesive law and a small v_½ (issue 16, item 3: a steep onset
+    // drop, strongly negative tangent): Newton iterations only.
+    let _ = writeln!(
+        table,
+        "\nAdhesive law (seed 004), μ_s 0.6, μ_d 0.5, v_½ = 0.005, same belt:\n\n| Δt | tangent | Newton mean | max | mean near onset | max near onset | unconverged |\n|---|---|---:|---:|---:|---:|---:|"
+    );
+    let a = Belt {
+        adhesive_vhalf: Some(0.005),
+        ..b
+    };
+    for dt in [0.05, 0.02, 0.01] {
+        for tangent in [Tangent::Exact, Tangent::Bounded] {
+            let run = a.run(dt, t_end, tangent);
+            let stats = |onset: bool| -> (f64, u32) {
+                let sel: Vec<u32> = run
+                    .iterations
+                    .iter()
+                    .zip(&run.onset)
+                    .filter(|(_, o)| !onset || **o)
+                    .map(|(i, _)| *i)
+                    .collect();
+                let mean = sel.iter().map(|&i| f64::from(i)).sum::<f64>() / sel.len().max(1) as f64;
+                (mean, sel.iter().copied().max().unwrap_or(0))
+            };
+            let ((mean, max), (omean, omax)) = (stats(false), stats(true));
+            adhesive_means.push((dt, tangent, omean));
+            let _ = writeln!(
+                table,
+                "| {dt} | {tangent:?} | {mean:.2} | {max} | {omean:.2} | {omax} | {} |",
+                run.failed
+            );
+            // Measured: 2 steps of 2000 at Δt = 0.02 (slip → stick, not onsets) and 9 at 0.05 do
+            // not converge in 50 iterations (a host cuts back there); claimed from 0.01 down.
+            if tangent == Tangent::Exact && dt <= 0.01 {
+                rows.push(row(
+                    format!("adhesive v_½ = 0.005, Δt = {dt}, exact tangent"),
+                    "Newton: unconverged steps",
+                    0.0,
+                    run.failed as f64,
+                    0.0,
+                ));
+            }
+        }
+    }
+    for (law, means) in [("decay", &onset_means), ("adhesive", &adhesive_means)] {
+        for dt in [0.02, 0.01] {
+            let of = |t: Tangent| {
+                means
+                    .iter()
+                    .find(|(d, tt, _)| *d == dt && *tt == t)
+                    .map_or(f64::NAN, |m| m.2)
+            };
+            rows.push(row(
+                format!("{law}, Δt = {dt}"),
+                "Newton near onset: exact tangent needs fewer iterations than bounded (1 = yes)",
+                1.0,
+                f64::from(u8::from(of(Tangent::Exact) < of(Tangent::Bounded))),
+                0.0,
+            ));
+        }
+    }
+    Ok((vec![csv_path, svg], table))
+}
+
+/// Runs F7: check rows, and the charts and CSV written to `out`. Returns the rows, the files
+/// written and the Newton table (markdown) for the summary.
+pub fn run(out: &Path, quick: bool) -> Result<(Vec<Row>, Vec<PathBuf>, String), String> {
+    let mut rows = Vec::new();
+    let mut outputs = mean_error_chart(out, quick, &mut rows)?;
+    outputs.extend(stability_maps(out, quick, &mut rows)?);
+    let (files, table) = belt(out, quick, &mut rows)?;
+    outputs.extend(files);
+    Ok((rows, outputs, table))
+}
