@@ -392,6 +392,9 @@ fn gap_conductance_is_finite_non_negative_and_inside_its_table() {
 fn analytic_gap_laws_and_radiation_are_finite_and_non_negative() {
     let mut rng = Rng(7);
     for i in 0..100_000 {
+        // The solid-spot correlation's hardness H_c (its last parameter): P/H_c > 1 is refused
+        // (docs/config.md), so those cases must come back as a refusal, not a number.
+        let hardness = rng.log_range(1e8, 1e10);
         let conduction = match i % 3 {
             0 => Conduction::constant(rng.log_range(1e-3, 1e5)),
             1 => Conduction::gas_gap(
@@ -404,7 +407,7 @@ fn analytic_gap_laws_and_radiation_are_finite_and_non_negative() {
                 rng.log_range(1.0, 400.0),
                 rng.range(0.01, 0.5),
                 rng.log_range(1e-7, 1e-4),
-                rng.log_range(1e8, 1e10),
+                hardness,
             ),
         }
         .expect("valid parameters");
@@ -415,7 +418,22 @@ fn analytic_gap_laws_and_radiation_are_finite_and_non_negative() {
         let gap = GapLaw::new(Some(conduction), radiation).expect("one part");
         let (d, p) = (rng.range(-1e-3, 1e-2), rng.range(-1e6, 1e9));
         let (ta, tb) = (zero + rng.range(0.0, 2000.0), zero + rng.range(0.0, 2000.0));
-        let r = gap.evaluate(d, p, ta, tb).expect("finite input");
+        let over_hardness = i % 3 == 2 && p > hardness;
+        let r = match gap.evaluate(d, p, ta, tb) {
+            Ok(r) => {
+                assert!(
+                    !over_hardness,
+                    "case {i}: P/H_c = {} > 1 answered",
+                    p / hardness
+                );
+                r
+            }
+            Err(e) if over_hardness => {
+                assert!(e.to_string().contains("H_c"), "case {i}: {e}");
+                continue;
+            }
+            Err(e) => panic!("case {i}: finite input refused: {e}"),
+        };
         let all = [
             r.k,
             r.dk_dd,

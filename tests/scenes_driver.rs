@@ -387,10 +387,13 @@ fn the_rate_stability_limits_docs_scenes_md_quotes() {
     v.rates = vec![0.05];
     let slope = (v.mu_static - v.mu_kinetic) * v.decay * (-v.decay * 0.05f64).exp() * v.pressure;
     let k_s = v.mu_static * v.pressure / 1e-3;
+    // The implicit law's limit is that of the earlier rate-free stiffness (docs/props.md, "The
+    // rate-dependent formulation"); the rate-following default has none.
     let (implicit, frozen) = (
-        v.rate_stability_limit(velocity::RateLaw::Decay, 1e-3),
+        v.rate_free_stiffness_limit(velocity::RateLaw::Decay, 1e-3),
         v.rate_stability_limit(velocity::RateLaw::DecayFrozen, 1e-3),
     );
+    assert_eq!(v.rate_stability_limit(velocity::RateLaw::Decay, 1e-3), 0.0);
     assert!((implicit - 2.0 * slope / k_s).abs() < 1e-12 * implicit);
     assert!((frozen - slope / k_s).abs() < 1e-12 * frozen);
     let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/scenes.md"))
