@@ -49,17 +49,36 @@ pub(crate) enum Fault {
     Internal,
 }
 
-/// Runs an entry point's `body`. On an error or a panic it first calls `on_fault` (which writes
-/// the routine's safe outputs, e.g. `PNEWDT`), then reports the cause at `site()`. Nothing
-/// unwinds out of it.
+/// Runs an entry point's `body`: the one panic boundary of an export. On an error or a panic it
+/// first calls `on_fault` (which writes the routine's safe outputs, e.g. `PNEWDT`), then
+/// reports the cause at `site()`. Nothing unwinds out of it.
+///
+/// Only the call and the test of its answer are inlined; everything after a fault is out of
+/// line ([`fault`]), so an entry point's hot path pays nothing for it (the closures given are
+/// built only on the way there).
+#[inline(always)]
 pub(crate) fn boundary(
     site: impl FnOnce() -> Site,
     body: impl FnOnce() -> Result<(), LawError>,
     on_fault: impl FnOnce(),
 ) -> Result<(), Fault> {
-    let (fault, cause) = match catch_unwind(AssertUnwindSafe(body)) {
-        Ok(Ok(())) => return Ok(()),
-        Ok(Err(e)) => {
+    match catch_unwind(AssertUnwindSafe(body)) {
+        Ok(Ok(())) => Ok(()),
+        Ok(Err(e)) => Err(fault(site, on_fault, Ok(e))),
+        Err(payload) => Err(fault(site, on_fault, Err(payload))),
+    }
+}
+
+/// The fault half of [`boundary`]: `why` is the body's error, or its panic's payload.
+#[cold]
+#[inline(never)]
+fn fault(
+    site: impl FnOnce() -> Site,
+    on_fault: impl FnOnce(),
+    why: Result<LawError, Box<dyn std::any::Any + Send>>,
+) -> Fault {
+    let (fault, cause) = match why {
+        Ok(e) => {
             let fault = match e {
                 LawError::Parameter(_) => Fault::Parameter,
                 LawError::Config(_) => Fault::Config,
@@ -86,12 +105,12 @@ pub(crate) fn boundary(
         on_fault();
         report(&site(), &cause, fault != Fault::Config);
     }));
-    Err(fault)
+    fault
 }
 
 #[cold]
 #[inline(never)]
-fn null_pointer(name: &str) -> LawError {
+pub(crate) fn null_pointer(name: &str) -> LawError {
     LawError::Input(format!("{name} is a NULL pointer"))
 }
 

@@ -172,7 +172,7 @@ pub(crate) fn adhesive_fast(props: &[f64]) -> Option<FrictionLaw> {
 
 /// The Coulomb law of a valid adhesive `PROPS` in its [`COULOMB_SPECIAL_CASE`], else `None`
 /// (any other adhesive `PROPS`, or not the adhesive law at all). Inlined into the out-of-line
-/// `other_plain_layouts` (props.rs), which `fric_`'s plain path calls only when `PROPS` is not
+/// `plain_coulomb_other_lengths` (props.rs), which `fric_`'s plain path calls only when `PROPS` is not
 /// the plain Coulomb layout. A property test checks that it agrees with the full parse
 /// followed by [`Adhesive::coulomb_special_case`].
 #[inline]
