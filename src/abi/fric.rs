@@ -3,7 +3,7 @@
 use std::ffi::{c_char, c_int};
 
 use super::{
-    boundary, fortran_string, null_pointer, read, read_array, slice, write, write_array,
+    Export, boundary_for, fortran_string, null_pointer, read, read_array, slice, write, write_array,
     write_matrix, write_zeros,
 };
 use crate::config::friction_table_for;
@@ -236,18 +236,15 @@ impl FricArgs {
     /// As `fric_`.
     #[inline(always)]
     unsafe fn call(self) {
-        // SAFETY (all three closures): the host's pointers, valid per the contract of `fric_`.
-        let _ = boundary(
-            move || unsafe { self.site() },
-            move || unsafe {
-                if self.plain_fast() {
-                    Ok(())
-                } else {
-                    self.general()
-                }
-            },
-            move || unsafe { self.fail() },
-        );
+        // SAFETY: the host's pointers, valid per the contract of `fric_`.
+        let _ = boundary_for(self, |args| unsafe {
+            if args.plain_fast() {
+                Ok(())
+            } else {
+                let copy = args;
+                general(&copy)
+            }
+        });
     }
 
     /// The plain law's call when everything is valid: `true` when the call is done (outputs
@@ -321,9 +318,9 @@ impl FricArgs {
         }
     }
 
-    /// The one reader of the increment, for every law and path: `TAU`, `DGAM`, `TAULM` (only
-    /// with `LM = 1` on entry), `PRESS`, `DPRESS`, `DTIME`, `CHRLNGTH`, in that order (the
-    /// checked path names the first NULL).
+    /// The one reader of the increment, for every law and path: `PRESS`, `DPRESS`, `TAU`,
+    /// `DGAM`, `TAULM` (only with `LM = 1` on entry), `DTIME`, `CHRLNGTH`, in that order (the
+    /// checked path names the first NULL; the order is the plain path's fastest).
     ///
     /// # Safety
     /// As `fric_`, N = NFDIR.
@@ -334,16 +331,21 @@ impl FricArgs {
     ) -> Result<Increment<N>, E> {
         // SAFETY (whole body): arrays of N entries per the FRIC contract.
         unsafe {
+            let pressure = arg(self.press, "PRESS")?;
+            let dpressure = arg(self.dpress, "DPRESS")?;
+            let tau = arg(self.tau.cast::<[f64; N]>(), "TAU")?;
+            let dgam = arg(self.dgam.cast::<[f64; N]>(), "DGAM")?;
+            let taulm = if entry == EntryFlag::ExactStick {
+                arg(self.taulm.cast::<[f64; N]>(), "TAULM")?
+            } else {
+                [0.0; N]
+            };
             Ok(Increment {
-                tau: arg(self.tau.cast::<[f64; N]>(), "TAU")?,
-                dgam: arg(self.dgam.cast::<[f64; N]>(), "DGAM")?,
-                taulm: if entry == EntryFlag::ExactStick {
-                    arg(self.taulm.cast::<[f64; N]>(), "TAULM")?
-                } else {
-                    [0.0; N]
-                },
-                pressure: arg(self.press, "PRESS")?,
-                dpressure: arg(self.dpress, "DPRESS")?,
+                tau,
+                dgam,
+                taulm,
+                pressure,
+                dpressure,
                 dtime: arg(self.dtime, "DTIME")?,
                 characteristic_length: arg(self.chrlngth, "CHRLNGTH")?,
                 entry,
@@ -414,9 +416,7 @@ impl FricArgs {
     ///
     /// # Safety
     /// As `fric_`.
-    #[cold]
-    #[inline(never)]
-    unsafe fn general(self) -> Result<(), LawError> {
+    unsafe fn general(&self) -> Result<(), LawError> {
         // SAFETY: as `fric_`.
         unsafe {
             if self.decay_fast() {
@@ -594,6 +594,30 @@ impl FricArgs {
         }
     }
 
+}
+
+/// `FricArgs::general`, out of line and `cold` (for the code layout and register allocation of
+/// the plain path), on its own copy of the view.
+#[cold]
+#[inline(never)]
+unsafe fn general(args: &FricArgs) -> Result<(), LawError> {
+    // SAFETY: as `fric_`.
+    unsafe { args.general() }
+}
+
+impl Export for FricArgs {
+    fn site(&self) -> Site {
+        // SAFETY: the host's pointers, valid per the contract of `fric_`.
+        unsafe { self.site() }
+    }
+
+    fn on_fault(&self) {
+        // SAFETY: as above.
+        unsafe { self.fail() }
+    }
+}
+
+impl FricArgs {
     /// The documented safe outputs of a failed call.
     ///
     /// # Safety

@@ -52,11 +52,6 @@ pub(crate) enum Fault {
 /// Runs an entry point's `body`: the one panic boundary of an export. On an error or a panic it
 /// first calls `on_fault` (which writes the routine's safe outputs, e.g. `PNEWDT`), then
 /// reports the cause at `site()`. Nothing unwinds out of it.
-///
-/// Only the call and the test of its answer are inlined; everything after a fault is out of
-/// line ([`fault`]), so an entry point's hot path pays nothing for it (the closures given are
-/// built only on the way there).
-#[inline(always)]
 pub(crate) fn boundary(
     site: impl FnOnce() -> Site,
     body: impl FnOnce() -> Result<(), LawError>,
@@ -67,6 +62,47 @@ pub(crate) fn boundary(
         Ok(Err(e)) => Err(fault(site, on_fault, Ok(e))),
         Err(payload) => Err(fault(site, on_fault, Err(payload))),
     }
+}
+
+/// The arguments of an export whose hot path must not pay for its failure path: what
+/// [`boundary_for`] needs from them after a fault.
+pub(crate) trait Export: Copy {
+    /// Where the message comes from.
+    fn site(&self) -> Site;
+    /// Writes the routine's documented safe outputs.
+    fn on_fault(&self);
+}
+
+/// [`boundary`] for an export whose arguments are one [`Export`] view: only the call and the
+/// test of its answer are inlined. After a fault the view is copied (there, not on the way in)
+/// and handed to the out-of-line [`fault`], so the view itself never has its address taken and
+/// stays in registers on the hot path.
+#[inline(always)]
+pub(crate) fn boundary_for<A: Export>(
+    args: A,
+    body: impl FnOnce(A) -> Result<(), LawError>,
+) -> Result<(), Fault> {
+    match catch_unwind(AssertUnwindSafe(move || body(args))) {
+        Ok(Ok(())) => Ok(()),
+        other => {
+            let copy = args;
+            Err(fault_for(&copy, other))
+        }
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn fault_for<A: Export>(
+    args: &A,
+    answer: std::thread::Result<Result<(), LawError>>,
+) -> Fault {
+    let why = match answer {
+        Ok(Err(e)) => Ok(e),
+        Err(payload) => Err(payload),
+        Ok(Ok(())) => return Fault::Internal,
+    };
+    fault(|| args.site(), || args.on_fault(), why)
 }
 
 /// The fault half of [`boundary`]: `why` is the body's error, or its panic's payload.
