@@ -1,6 +1,7 @@
 //! `fric_`: the Abaqus/Standard FRIC user subroutine.
 
 use std::ffi::{c_char, c_int};
+use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::{
     Export, boundary_for, fortran_string, null_pointer, read, read_array, slice, write, write_array,
@@ -237,14 +238,13 @@ impl FricArgs {
     #[inline(always)]
     unsafe fn call(self) {
         // SAFETY: the host's pointers, valid per the contract of `fric_`.
-        let _ = boundary_for(self, |args| unsafe {
-            if args.plain_fast() {
-                Ok(())
-            } else {
-                let copy = args;
-                general(&copy)
-            }
-        });
+        let fast = catch_unwind(AssertUnwindSafe(move || unsafe { self.plain_fast() }));
+        if let Ok(true) = fast {
+            return;
+        }
+        let copy = self;
+        // SAFETY: as above.
+        unsafe { general(&copy, fast.err()) }
     }
 
     /// The plain law's call when everything is valid: `true` when the call is done (outputs
@@ -597,12 +597,18 @@ impl FricArgs {
 }
 
 /// `FricArgs::general`, out of line and `cold` (for the code layout and register allocation of
-/// the plain path), on its own copy of the view.
+/// the plain path), on its own copy of the view, inside the export's one boundary; a panic of
+/// the plain path (`panic`) is raised again inside it.
 #[cold]
 #[inline(never)]
-unsafe fn general(args: &FricArgs) -> Result<(), LawError> {
-    // SAFETY: as `fric_`.
-    unsafe { args.general() }
+unsafe fn general(args: &FricArgs, panic: Option<Box<dyn std::any::Any + Send>>) {
+    let _ = boundary_for(*args, |args| {
+        if let Some(payload) = panic {
+            std::panic::resume_unwind(payload);
+        }
+        // SAFETY: as `fric_`.
+        unsafe { args.general() }
+    });
 }
 
 impl Export for FricArgs {
