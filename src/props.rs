@@ -365,9 +365,7 @@ fn extended_props_padded(props: &[f64]) -> Option<[f64; COULOMB_EXTENDED_NPROPS 
 /// fixes are compared with their one accepted value. For the rate law's fast path in `fric_`.
 #[inline(always)]
 #[must_use]
-pub(crate) fn fast_decay_lean(
-    props: &[f64; COULOMB_EXTENDED_NPROPS],
-) -> Option<ExtendedCoulomb> {
+pub(crate) fn fast_decay_lean(props: &[f64; COULOMB_EXTENDED_NPROPS]) -> Option<ExtendedCoulomb> {
     // PROPS(8) first: the other extended layouts (constant μ with HHT, damping, anisotropy,
     // the μ table) leave here with one test.
     if props[7] != 1.0 || careful_path_only() {

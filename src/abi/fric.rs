@@ -4,7 +4,7 @@ use std::ffi::{c_char, c_int};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::{
-    Export, boundary_for, fortran_string, null_pointer, read, read_array, slice, write, write_array,
+    boundary, fortran_string, null_pointer, read, read_array, slice, write, write_array,
     write_matrix, write_zeros,
 };
 use crate::config::friction_table_for;
@@ -98,6 +98,114 @@ pub unsafe extern "C" fn fric_(
     slname_len: usize,
     msname_len: usize,
 ) {
+    // The plain law's fast path on the view of the arguments it reads; anything else goes
+    // out of line with `fric_`'s own argument list (a sibling call: nothing is copied or
+    // packed on the plain path, docs/performance.md, fourth pass).
+    let fast = FricArgs {
+        lm,
+        tau,
+        ddtddg,
+        ddtddp,
+        dslip,
+        sed,
+        sfd,
+        ddtddt,
+        pnewdt,
+        statev,
+        dgam,
+        taulm,
+        press,
+        dpress,
+        dtime,
+        noel,
+        ciname,
+        ciname_len,
+        npt,
+        node,
+        coords,
+        drot,
+        temp,
+        nfdir,
+        mcrd,
+        nstatv,
+        chrlngth,
+        props,
+        nprops,
+    };
+    // SAFETY: the host's pointers, valid per the contract above.
+    if let Ok(true) = catch_unwind(AssertUnwindSafe(|| unsafe { fast.plain_fast() })) {
+        return;
+    }
+    // SAFETY: the host's pointers, passed on unchanged.
+    unsafe {
+        fric_general(
+            lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pnewdt, statev, dgam, taulm, press,
+            dpress, ddpddh, slip, kstep, kinc, time, dtime, noel, ciname, slname, msname, npt,
+            node, npatch, coords, rcoord, drot, temp, predef, nfdir, mcrd, npred, nstatv, chrlngth,
+            props, nprops, ciname_len, slname_len, msname_len,
+        )
+    }
+}
+
+/// `fric_` for everything but the plain law, inside the export's boundary (`abi::boundary`:
+/// an error or a panic gets the safe outputs of [`FricArgs::fail`] and one report). Out of
+/// line and `cold` (code layout and register allocation of the plain path).
+///
+/// It repeats `fric_`'s argument list on purpose: `fric_` ends in a sibling call (a jump, the
+/// arguments left where the host put them). Packing them into one view passed by reference
+/// instead cost the plain path 13–17 instructions per call (the six register arguments then
+/// stay in registers across it; measured 2026-11-26, issue 19) and three arrays of pointers
+/// 37 (docs/performance.md, fourth pass).
+///
+/// # Safety
+/// As `fric_`.
+#[cold]
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+unsafe extern "C" fn fric_general(
+    lm: *mut c_int,
+    tau: *mut f64,
+    ddtddg: *mut f64,
+    ddtddp: *mut f64,
+    dslip: *mut f64,
+    sed: *mut f64,
+    sfd: *mut f64,
+    ddtddt: *mut f64,
+    pnewdt: *mut f64,
+    statev: *mut f64,
+    dgam: *const f64,
+    taulm: *const f64,
+    press: *const f64,
+    dpress: *const f64,
+    ddpddh: *const f64,
+    slip: *const f64,
+    kstep: *const c_int,
+    kinc: *const c_int,
+    time: *const f64,
+    dtime: *const f64,
+    noel: *const c_int,
+    ciname: *const c_char,
+    slname: *const c_char,
+    msname: *const c_char,
+    npt: *const c_int,
+    node: *const c_int,
+    npatch: *const c_int,
+    coords: *const f64,
+    rcoord: *const f64,
+    drot: *const f64,
+    temp: *const f64,
+    predef: *const f64,
+    nfdir: *const c_int,
+    mcrd: *const c_int,
+    npred: *const c_int,
+    nstatv: *const c_int,
+    chrlngth: *const f64,
+    props: *const f64,
+    nprops: *const c_int,
+    ciname_len: usize,
+    slname_len: usize,
+    msname_len: usize,
+) {
     // Not read (the laws need none of them; `DROT` is read only by the damping law in 3-D).
     let _ = (ddpddh, slip, kstep, kinc, time, npatch, rcoord, predef);
     let _ = (npred, slname, msname, slname_len, msname_len);
@@ -132,12 +240,17 @@ pub unsafe extern "C" fn fric_(
         props,
         nprops,
     };
-    // SAFETY: the host's pointers, valid per the contract above.
-    unsafe { args.call() }
+    let _ = boundary(
+        // SAFETY (all three closures): the host's pointers, valid per the contract above.
+        || unsafe { args.site() },
+        || unsafe { args.general() },
+        || unsafe { args.fail() },
+    );
 }
 
 /// The arguments `fric_` reads or writes: the one view of the host's call that every path
-/// below works on (copied by value, so no path takes the address of the host's arguments).
+/// below works on (the plain path in `fric_`, everything else in `fric_general`). Its address
+/// is never taken on the plain path, so it lives in registers there.
 #[derive(Clone, Copy)]
 struct FricArgs {
     lm: *mut c_int,
@@ -224,29 +337,6 @@ enum Law<'a> {
 }
 
 impl FricArgs {
-    /// The whole call, inside the one panic boundary of `fric_`.
-    ///
-    /// The plain law (isotropic, constant μ, `PROPS(1..7)`, or the adhesive law's Coulomb
-    /// special case) with valid arguments takes one pass that tests everything with a few
-    /// combined branches and never builds an error; anything else (the rate law's lean layout,
-    /// the extended and adhesive laws, bad arguments with their messages) goes out of line to
-    /// [`Self::general`], which starts afresh (a fast path writes nothing unless it succeeds).
-    /// An error or a panic on either path gets the documented safe outputs and one report.
-    ///
-    /// # Safety
-    /// As `fric_`.
-    #[inline(always)]
-    unsafe fn call(self) {
-        // SAFETY: the host's pointers, valid per the contract of `fric_`.
-        let fast = catch_unwind(AssertUnwindSafe(move || unsafe { self.plain_fast() }));
-        if let Ok(true) = fast {
-            return;
-        }
-        let copy = self;
-        // SAFETY: as above.
-        unsafe { general(&copy, fast.err()) }
-    }
-
     /// The plain law's call when everything is valid: `true` when the call is done (outputs
     /// written, or `LM = 2` on entry), `false` with nothing written when anything is off (a
     /// NULL, a size, `PROPS` not the plain layout, a non-finite input or result).
@@ -409,10 +499,8 @@ impl FricArgs {
         }
     }
 
-    /// `fric_` for everything but the plain law: the rate law's lean layout (`rate.rs`), then
-    /// the checked path with its messages. Out of line, `cold` for the code layout and register
-    /// allocation of the plain path (the extended law is still fast once here: its own fast
-    /// `PROPS` reader, docs/benchmarks.md).
+    /// Everything but the plain law: the rate law's lean layout (`rate.rs`), then the checked
+    /// path with its messages.
     ///
     /// # Safety
     /// As `fric_`.
@@ -594,36 +682,6 @@ impl FricArgs {
         }
     }
 
-}
-
-/// `FricArgs::general`, out of line and `cold` (for the code layout and register allocation of
-/// the plain path), on its own copy of the view, inside the export's one boundary; a panic of
-/// the plain path (`panic`) is raised again inside it.
-#[cold]
-#[inline(never)]
-unsafe fn general(args: &FricArgs, panic: Option<Box<dyn std::any::Any + Send>>) {
-    let _ = boundary_for(*args, |args| {
-        if let Some(payload) = panic {
-            std::panic::resume_unwind(payload);
-        }
-        // SAFETY: as `fric_`.
-        unsafe { args.general() }
-    });
-}
-
-impl Export for FricArgs {
-    fn site(&self) -> Site {
-        // SAFETY: the host's pointers, valid per the contract of `fric_`.
-        unsafe { self.site() }
-    }
-
-    fn on_fault(&self) {
-        // SAFETY: as above.
-        unsafe { self.fail() }
-    }
-}
-
-impl FricArgs {
     /// The documented safe outputs of a failed call.
     ///
     /// # Safety
@@ -657,8 +715,7 @@ impl FricArgs {
     /// As `fric_`.
     unsafe fn site(&self) -> Site {
         // SAFETY: the host's pointers; NULL reads as "?".
-        let num =
-            |p: *const c_int| unsafe { get(p) }.map_or("?".to_string(), |v| v.to_string());
+        let num = |p: *const c_int| unsafe { get(p) }.map_or("?".to_string(), |v| v.to_string());
         Site {
             routine: "FRIC",
             // SAFETY: CINAME has the hidden length the host passed.

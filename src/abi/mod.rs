@@ -49,72 +49,17 @@ pub(crate) enum Fault {
     Internal,
 }
 
-/// Runs an entry point's `body`: the one panic boundary of an export. On an error or a panic it
-/// first calls `on_fault` (which writes the routine's safe outputs, e.g. `PNEWDT`), then
-/// reports the cause at `site()`. Nothing unwinds out of it.
+/// Runs an entry point's `body`. On an error or a panic it first calls `on_fault` (which writes
+/// the routine's safe outputs, e.g. `PNEWDT`), then reports the cause at `site()`. Nothing
+/// unwinds out of it.
 pub(crate) fn boundary(
     site: impl FnOnce() -> Site,
     body: impl FnOnce() -> Result<(), LawError>,
     on_fault: impl FnOnce(),
 ) -> Result<(), Fault> {
-    match catch_unwind(AssertUnwindSafe(body)) {
-        Ok(Ok(())) => Ok(()),
-        Ok(Err(e)) => Err(fault(site, on_fault, Ok(e))),
-        Err(payload) => Err(fault(site, on_fault, Err(payload))),
-    }
-}
-
-/// The arguments of an export whose hot path must not pay for its failure path: what
-/// [`boundary_for`] needs from them after a fault.
-pub(crate) trait Export: Copy {
-    /// Where the message comes from.
-    fn site(&self) -> Site;
-    /// Writes the routine's documented safe outputs.
-    fn on_fault(&self);
-}
-
-/// [`boundary`] for an export whose arguments are one [`Export`] view: only the call and the
-/// test of its answer are inlined. After a fault the view is copied (there, not on the way in)
-/// and handed to the out-of-line [`fault`], so the view itself never has its address taken and
-/// stays in registers on the hot path.
-#[inline(always)]
-pub(crate) fn boundary_for<A: Export>(
-    args: A,
-    body: impl FnOnce(A) -> Result<(), LawError>,
-) -> Result<(), Fault> {
-    match catch_unwind(AssertUnwindSafe(move || body(args))) {
-        Ok(Ok(())) => Ok(()),
-        other => {
-            let copy = args;
-            Err(fault_for(&copy, other))
-        }
-    }
-}
-
-#[cold]
-#[inline(never)]
-fn fault_for<A: Export>(
-    args: &A,
-    answer: std::thread::Result<Result<(), LawError>>,
-) -> Fault {
-    let why = match answer {
-        Ok(Err(e)) => Ok(e),
-        Err(payload) => Err(payload),
-        Ok(Ok(())) => return Fault::Internal,
-    };
-    fault(|| args.site(), || args.on_fault(), why)
-}
-
-/// The fault half of [`boundary`]: `why` is the body's error, or its panic's payload.
-#[cold]
-#[inline(never)]
-fn fault(
-    site: impl FnOnce() -> Site,
-    on_fault: impl FnOnce(),
-    why: Result<LawError, Box<dyn std::any::Any + Send>>,
-) -> Fault {
-    let (fault, cause) = match why {
-        Ok(e) => {
+    let (fault, cause) = match catch_unwind(AssertUnwindSafe(body)) {
+        Ok(Ok(())) => return Ok(()),
+        Ok(Err(e)) => {
             let fault = match e {
                 LawError::Parameter(_) => Fault::Parameter,
                 LawError::Config(_) => Fault::Config,
@@ -141,7 +86,7 @@ fn fault(
         on_fault();
         report(&site(), &cause, fault != Fault::Config);
     }));
-    fault
+    Err(fault)
 }
 
 #[cold]
