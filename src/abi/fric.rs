@@ -1,5 +1,7 @@
 //! `fric_`: the Abaqus/Standard FRIC user subroutine.
 
+use std::any::Any;
+use std::cell::Cell;
 use std::ffi::{c_char, c_int};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
@@ -133,8 +135,12 @@ pub unsafe extern "C" fn fric_(
         nprops,
     };
     // SAFETY: the host's pointers, valid per the contract above.
-    if let Ok(true) = catch_unwind(AssertUnwindSafe(|| unsafe { fast.plain_fast() })) {
-        return;
+    match catch_unwind(AssertUnwindSafe(|| unsafe { fast.plain_fast() })) {
+        Ok(true) => return,
+        Ok(false) => {}
+        // Not answered here: handed to the export's one boundary in `fric_general`, which
+        // raises it again before anything else (no retry) and reports it.
+        Err(payload) => hand_over(payload),
     }
     // SAFETY: the host's pointers, passed on unchanged.
     unsafe {
@@ -243,9 +249,26 @@ unsafe extern "C" fn fric_general(
     let _ = boundary(
         // SAFETY (all three closures): the host's pointers, valid per the contract above.
         || unsafe { args.site() },
-        || unsafe { args.general() },
+        || {
+            if let Some(payload) = HANDED_OVER.take() {
+                std::panic::resume_unwind(payload);
+            }
+            unsafe { args.general() }
+        },
         || unsafe { args.fail() },
     );
+}
+
+thread_local! {
+    /// A panic of `fric_`'s plain path on this thread, on its way to the export's boundary.
+    static HANDED_OVER: Cell<Option<Box<dyn Any + Send>>> = const { Cell::new(None) };
+}
+
+/// Keeps a panic of the plain path for `fric_general`'s boundary.
+#[cold]
+#[inline(never)]
+fn hand_over(payload: Box<dyn Any + Send>) {
+    HANDED_OVER.set(Some(payload));
 }
 
 /// The arguments `fric_` reads or writes: the one view of the host's call that every path
