@@ -763,8 +763,9 @@ mod tests {
         #![proptest_config(ProptestConfig { cases: 500, failure_persistence: None, ..ProptestConfig::default() })]
         /// `fric_`'s fast path for the decay law's lean layout against the careful path on the
         /// very same arguments (LM = 0 both times; the switch, not an argument, sends the
-        /// second call to the careful path): every output bit for bit, NFDIR 1 and 2, stick and
-        /// slip, with and without τ_max and frozen μ.
+        /// second call to the careful path): every output bit for bit, `PNEWDT` left alone, the
+        /// guards past NFDIR and NSTATV intact; NFDIR 1 and 2, stick and slip, with and without
+        /// τ_max, frozen μ, p dependence and θ̄ dependence (`TEMP` read only then).
         #[test]
         fn fric_decay_fast_path_agrees_with_the_careful_path(
             nfdir in 1..=2i32,
@@ -781,17 +782,26 @@ mod tests {
             slip in 0.0..1.0f64,
             rate in 0.0..5.0f64,
             dtime in 1e-3..1.0f64,
+            p_ref in prop_oneof![Just(0.0), 10.0..500.0f64],
+            temperature in prop_oneof![Just(None), (-0.02..0.02f64, 0.0..100.0f64).prop_map(Some)],
+            temp in prop::array::uniform2(0.0..200.0f64),
         ) {
             let mut props = [0.0; COULOMB_EXTENDED_NPROPS];
             props[..10].copy_from_slice(&[
                 1.0, mu_s, 0.0, tau_max, gamma_crit, 0.0, 0.0, 1.0, ratio * mu_s, d_c,
             ]);
+            props[10] = p_ref;
+            if let Some((b_theta, theta_ref)) = temperature {
+                props[11] = b_theta;
+                props[12] = theta_ref;
+            }
             props[19] = if frozen { 1.0 } else { 0.0 };
             prop_assert!(fast_decay_lean(&props).is_some());
             let mut fast = crate::abi::host::FricCall::new(nfdir, &props);
             fast.press = press;
             fast.dpress = dpress;
             fast.dtime = dtime;
+            fast.temp = temp;
             fast.dgam[..2].copy_from_slice(&dgam);
             fast.tau[..2].copy_from_slice(&tau);
             fast.statev[0] = slip;

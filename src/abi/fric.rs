@@ -159,7 +159,7 @@ pub unsafe extern "C" fn fric_(
 ///
 /// It repeats `fric_`'s argument list on purpose: `fric_` ends in a sibling call (a jump, the
 /// arguments left where the host put them). Packing them into one view passed by reference
-/// instead cost the plain path 13–17 instructions per call (the six register arguments then
+/// instead cost the plain path 18–22 instructions per call (the six register arguments then
 /// stay in registers across it; measured 2026-11-26, issue 19) and three arrays of pointers
 /// 37 (docs/performance.md, fourth pass).
 ///
