@@ -12,7 +12,9 @@ use super::{
 use crate::config::friction_table_for;
 use crate::laws::adhesive::Adhesive;
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment, StickMode};
-use crate::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
+use crate::laws::coulomb_extended::{
+    Conditions, ExtendedCoulomb, ExtendedState, mean_surface_temperature,
+};
 use crate::props::{
     FrictionLaw, coulomb_extended_with_table, fast_extended_coulomb, fast_plain_coulomb,
     friction_law,
@@ -679,8 +681,7 @@ impl FricArgs {
         unsafe {
             let mut conditions = Conditions::default();
             if law.reads_temperature() {
-                let [t1, t2] = read_array::<2>(self.temp, "TEMP")?;
-                conditions.temperature = 0.5 * (t1 + t2);
+                conditions.temperature = mean_surface_temperature(read_array(self.temp, "TEMP")?);
             }
             if law.damping().is_some() && N == 2 {
                 // DROT(2,2), column-major: DROT(a,b) at (a-1) + 2(b-1).

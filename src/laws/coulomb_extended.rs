@@ -1059,6 +1059,14 @@ impl<const N: usize> ExtendedState<N> {
     }
 }
 
+/// θ̄, the temperature μ depends on: the mean of the two surfaces' temperatures
+/// (`TEMP(1)`, `TEMP(2)`), so each carries half of ∂τ/∂θ̄ ([`ExtendedUpdate::ddtddt_column`]).
+#[inline(always)]
+#[must_use]
+pub fn mean_surface_temperature([slave, master]: [f64; 2]) -> f64 {
+    0.5 * (slave + master)
+}
+
 impl<const N: usize> ExtendedUpdate<N> {
     /// One column of `DDTDDT(NFDIR,2)`: θ̄ = (θ_slave + θ_master)/2, so each surface
     /// temperature carries half of ∂τ/∂θ̄ (both columns are this one).

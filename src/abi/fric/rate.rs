@@ -12,7 +12,7 @@ use std::ffi::c_int;
 
 use super::{FricArgs, get};
 use crate::laws::coulomb::{CoulombState, EntryFlag};
-use crate::laws::coulomb_extended::{ExtendedCoulomb, ExtendedState};
+use crate::laws::coulomb_extended::{ExtendedCoulomb, ExtendedState, mean_surface_temperature};
 use crate::props::{COULOMB_EXTENDED_NPROPS, fast_decay_lean};
 
 impl FricArgs {
@@ -64,10 +64,10 @@ impl FricArgs {
                 return false;
             };
             let theta = if law.reads_temperature() {
-                let Some([t1, t2]) = get(self.temp.cast::<[f64; 2]>()) else {
+                let Some(temp) = get(self.temp.cast::<[f64; 2]>()) else {
                     return false;
                 };
-                0.5 * (t1 + t2)
+                mean_surface_temperature(temp)
             } else {
                 0.0
             };
