@@ -46,12 +46,18 @@ pub(crate) mod testing {
     use std::cell::Cell;
     thread_local! {
         static FORCE_PANIC: Cell<bool> = const { Cell::new(false) };
+        static FORCED_PANICS: Cell<u32> = const { Cell::new(0) };
     }
     pub(crate) fn force_panic(on: bool) {
         FORCE_PANIC.with(|f| f.set(on));
     }
+    /// How many forced panics this thread has raised so far.
+    pub(crate) fn forced_panics() -> u32 {
+        FORCED_PANICS.get()
+    }
     pub(crate) fn maybe_panic() {
         if FORCE_PANIC.with(|f| f.get()) {
+            FORCED_PANICS.set(FORCED_PANICS.get() + 1);
             panic!("forced panic (test hook)");
         }
     }

@@ -69,7 +69,7 @@ pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
 /// out of line, so the plain law costs the same.
 #[inline(always)]
 #[must_use]
-pub fn plain_coulomb_or_special_case(props: &[f64]) -> Option<Coulomb> {
+pub fn fast_plain_coulomb(props: &[f64]) -> Option<Coulomb> {
     if careful_path_only() {
         return None;
     }
@@ -78,14 +78,14 @@ pub fn plain_coulomb_or_special_case(props: &[f64]) -> Option<Coulomb> {
         // Law 1 with more than 7 entries is the extended layout: no call to find that out
         // (the rate laws' path starts here too).
         Err(_) if props.len() > COULOMB_NPROPS && props[0] == f64::from(LAW_COULOMB) => None,
-        Err(_) => other_plain_layouts(props),
+        Err(_) => plain_coulomb_other_lengths(props),
     }
 }
 
-/// [`plain_coulomb_or_special_case`] for every `NPROPS` but 7: a shorter Coulomb `PROPS`, or
+/// [`fast_plain_coulomb`] for every `NPROPS` but 7: a shorter Coulomb `PROPS`, or
 /// the adhesive law's special case. One call out of line, chosen by `PROPS(1)`.
 #[inline(never)]
-fn other_plain_layouts(props: &[f64]) -> Option<Coulomb> {
+fn plain_coulomb_other_lengths(props: &[f64]) -> Option<Coulomb> {
     match props.first() {
         Some(&code) if code == f64::from(LAW_COULOMB) => {
             coulomb_from_entries(coulomb_props_padded(props)?)
@@ -101,7 +101,7 @@ fn other_plain_layouts(props: &[f64]) -> Option<Coulomb> {
 /// and invalid `PROPS` included): the second hot path of `fric_`.
 #[inline(always)]
 #[must_use]
-pub fn extended_coulomb(props: &[f64]) -> Option<ExtendedCoulomb> {
+pub fn fast_extended_coulomb(props: &[f64]) -> Option<ExtendedCoulomb> {
     if careful_path_only() {
         return None;
     }
@@ -131,7 +131,7 @@ thread_local! {
 }
 
 /// Unit tests only: while `on`, every fast `PROPS` reader of this thread declines
-/// ([`plain_coulomb_or_special_case`], [`extended_coulomb`], [`extended_decay_lean`], the fast
+/// ([`fast_plain_coulomb`], [`fast_extended_coulomb`], [`fast_decay_lean`], the fast
 /// layouts of [`friction_law`], the adhesive fast path), so every call of the entry points
 /// takes the careful (checked) path: how a test compares the two paths on the same arguments,
 /// as `abi::batch`'s baseline switch does for the batch kernel. Outside `cargo test` of this
@@ -365,9 +365,7 @@ fn extended_props_padded(props: &[f64]) -> Option<[f64; COULOMB_EXTENDED_NPROPS 
 /// fixes are compared with their one accepted value. For the rate law's fast path in `fric_`.
 #[inline(always)]
 #[must_use]
-pub(crate) fn extended_decay_lean(
-    props: &[f64; COULOMB_EXTENDED_NPROPS],
-) -> Option<ExtendedCoulomb> {
+pub(crate) fn fast_decay_lean(props: &[f64; COULOMB_EXTENDED_NPROPS]) -> Option<ExtendedCoulomb> {
     // PROPS(8) first: the other extended layouts (constant μ with HHT, damping, anisotropy,
     // the μ table) leave here with one test.
     if props[7] != 1.0 || careful_path_only() {
@@ -742,14 +740,14 @@ mod tests {
         let mut decay = [0.0; COULOMB_EXTENDED_NPROPS];
         decay[..10].copy_from_slice(&[1.0, 0.5, 0.0, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.2, 3.0]);
         let adhesive_props_array = AdhesiveBuilder::new().coeff(0.3).sa(1.0).build();
-        let fast_plain = plain_coulomb_or_special_case(&plain);
+        let fast_plain = fast_plain_coulomb(&plain);
         assert!(fast_plain.is_some());
-        assert!(extended_coulomb(&decay).is_some() && extended_decay_lean(&decay).is_some());
+        assert!(fast_extended_coulomb(&decay).is_some() && fast_decay_lean(&decay).is_some());
         let fast_law = friction_law(&decay).unwrap();
         let fast_adhesive = adhesive_props(&adhesive_props_array).unwrap();
         let _careful = CarefulPath::on();
-        assert_eq!(plain_coulomb_or_special_case(&plain), None);
-        assert!(extended_coulomb(&decay).is_none() && extended_decay_lean(&decay).is_none());
+        assert_eq!(fast_plain_coulomb(&plain), None);
+        assert!(fast_extended_coulomb(&decay).is_none() && fast_decay_lean(&decay).is_none());
         assert_eq!(friction_law(&decay).unwrap(), fast_law);
         assert_eq!(
             friction_law(&plain).unwrap(),
@@ -765,8 +763,9 @@ mod tests {
         #![proptest_config(ProptestConfig { cases: 500, failure_persistence: None, ..ProptestConfig::default() })]
         /// `fric_`'s fast path for the decay law's lean layout against the careful path on the
         /// very same arguments (LM = 0 both times; the switch, not an argument, sends the
-        /// second call to the careful path): every output bit for bit, NFDIR 1 and 2, stick and
-        /// slip, with and without τ_max and frozen μ.
+        /// second call to the careful path): every output bit for bit, `PNEWDT` left alone, the
+        /// guards past NFDIR and NSTATV intact; NFDIR 1 and 2, stick and slip, with and without
+        /// τ_max, frozen μ, p dependence and θ̄ dependence (`TEMP` read only then).
         #[test]
         fn fric_decay_fast_path_agrees_with_the_careful_path(
             nfdir in 1..=2i32,
@@ -783,17 +782,26 @@ mod tests {
             slip in 0.0..1.0f64,
             rate in 0.0..5.0f64,
             dtime in 1e-3..1.0f64,
+            p_ref in prop_oneof![Just(0.0), 10.0..500.0f64],
+            temperature in prop_oneof![Just(None), (-0.02..0.02f64, 0.0..100.0f64).prop_map(Some)],
+            temp in prop::array::uniform2(0.0..200.0f64),
         ) {
             let mut props = [0.0; COULOMB_EXTENDED_NPROPS];
             props[..10].copy_from_slice(&[
                 1.0, mu_s, 0.0, tau_max, gamma_crit, 0.0, 0.0, 1.0, ratio * mu_s, d_c,
             ]);
+            props[10] = p_ref;
+            if let Some((b_theta, theta_ref)) = temperature {
+                props[11] = b_theta;
+                props[12] = theta_ref;
+            }
             props[19] = if frozen { 1.0 } else { 0.0 };
-            prop_assert!(extended_decay_lean(&props).is_some());
+            prop_assert!(fast_decay_lean(&props).is_some());
             let mut fast = crate::abi::host::FricCall::new(nfdir, &props);
             fast.press = press;
             fast.dpress = dpress;
             fast.dtime = dtime;
+            fast.temp = temp;
             fast.dgam[..2].copy_from_slice(&dgam);
             fast.tau[..2].copy_from_slice(&tau);
             fast.statev[0] = slip;
@@ -954,7 +962,7 @@ mod tests {
     /// The lean parser against the checked one on a lean layout: when the checked parser
     /// accepts and the layout is lean, the lean parser gives the same law; otherwise it refuses.
     fn check_lean_against_checked(props: &[f64; COULOMB_EXTENDED_NPROPS]) -> Result<(), String> {
-        let lean = extended_decay_lean(props);
+        let lean = fast_decay_lean(props);
         match coulomb_extended(props) {
             Ok(FrictionLaw::CoulombExtended(law)) if is_lean_decay_layout(props) => {
                 if lean == Some(law) {
@@ -974,7 +982,7 @@ mod tests {
         }
     }
 
-    /// The rate fast path's parser ([`extended_decay_lean`]): the range edges in every
+    /// The rate fast path's parser ([`fast_decay_lean`]): the range edges in every
     /// position of lean decay layouts (with τ_max, p_ref, Θ(θ̄), frozen μ, PROPS(3) = μ or not)
     /// against the checked parser.
     #[test]
@@ -992,7 +1000,7 @@ mod tests {
         full[19] = 1.0;
         let mut checked_any = 0;
         for layout in [decay, full] {
-            assert!(extended_decay_lean(&layout).is_some());
+            assert!(fast_decay_lean(&layout).is_some());
             for position in 0..COULOMB_EXTENDED_NPROPS {
                 for v in edges {
                     let mut props = layout;
@@ -1000,7 +1008,7 @@ mod tests {
                     if let Err(e) = check_lean_against_checked(&props) {
                         panic!("PROPS({}) = {v:e}: {e}", position + 1);
                     }
-                    checked_any += usize::from(extended_decay_lean(&props).is_some());
+                    checked_any += usize::from(fast_decay_lean(&props).is_some());
                 }
             }
         }

@@ -580,50 +580,6 @@ proptest! {
     }
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig { cases: 1000, failure_persistence: None, ..ProptestConfig::default() })]
-
-    /// `fric_`'s fast path for the decay law's lean layout (NPROPS = 20, isotropic, elastic
-    /// stick, no HHT, damping or steady transport), taken with `LM = 0` on entry, against the
-    /// checked path, which the same call takes with `LM = 1` (the fast path leaves that to it;
-    /// elastic stick does not depend on it): every output equal, `PNEWDT` left alone, the
-    /// guards past NFDIR and NSTATV intact. With and without p and θ̄ dependence, τ_max, frozen
-    /// μ, NFDIR 1 and 2, stick and slip.
-    #[test]
-    fn fric_decay_fast_path_agrees_with_the_checked_path(
-        s in sample(),
-        mu2_given in prop::bool::ANY,
-        decay in (0.2..1.5f64, 0.1..20.0f64),
-    ) {
-        let mut s = s;
-        s.law.mu2 = if mu2_given { s.law.mu1 } else { 0.0 };
-        s.law.exact = false;
-        s.law.hht_alpha = None;
-        s.law.c0 = 0.0;
-        if s.law.decay.is_none() {
-            s.law.decay = Some((decay.0 * s.law.mu1, decay.1));
-        }
-        let mut fast = prepare(&s, [0.0; 2], 0.0, [0.0; 2]);
-        fast.taulm = [0.5, -0.25, 0.0];
-        let mut checked = fast.clone();
-        checked.lm = 1;
-        fast.call();
-        checked.call();
-        prop_assert_eq!(fast.lm, 0);
-        prop_assert_eq!(checked.lm, 0);
-        prop_assert_eq!(fast.pnewdt, 1e36);
-        prop_assert_eq!(checked.pnewdt, 1e36);
-        prop_assert_eq!(fast.tau, checked.tau);
-        prop_assert_eq!(fast.ddtddg, checked.ddtddg);
-        prop_assert_eq!(fast.ddtddp, checked.ddtddp);
-        prop_assert_eq!(fast.dslip, checked.dslip);
-        prop_assert_eq!((fast.sed, fast.sfd), (checked.sed, checked.sfd));
-        prop_assert_eq!(fast.ddtddt, checked.ddtddt);
-        prop_assert_eq!(&fast.statev, &checked.statev);
-        prop_assert!(fast.guards_intact());
-    }
-}
-
 /// Scene F3: steady slip along d at angle θ with μ₁ ≠ μ₂: the stress sits on the friction
 /// ellipse (τ₁/μ₁)² + (τ₂/μ₂)² = p², with τ_i ∝ μ_i²·d_i.
 #[test]

@@ -63,7 +63,7 @@ fn a_stale_table_is_caught() {
     let table = ADHESIVE.markdown_table();
     let fresh = format!("intro\n{begin}{table}{end}outro\n");
     assert_eq!(with_table(&fresh, "law 2", &table).unwrap(), fresh);
-    let stale = fresh.replacen("finite, ≥ 0", "finite, > 0", 1);
+    let stale = fresh.replacen("finite and ≥ 0", "finite and > 0", 1);
     assert_ne!(with_table(&stale, "law 2", &table).unwrap(), stale);
     assert!(with_table("no markers\n", "law 2", &table).is_err());
 }
@@ -84,10 +84,10 @@ fn the_table_says_what_the_schema_means() {
     assert!(row(1).ends_with("| exactly 2 |"), "{}", row(1));
     assert!(row(3).contains("none: μ_s = μ_d"), "{}", row(3));
     assert!(
-        row(3).ends_with("| finite; when > 0, ≥ `coeff` |"),
+        row(3).ends_with("| finite (≤ 0 for none); when > 0, ≥ `coeff` |"),
         "{}",
         row(3)
     );
     assert!(row(9).contains("| 0.005 |"), "{}", row(9));
-    assert!(row(13).contains("| 0.5 | (0, 1] |"), "{}", row(13));
+    assert!(row(13).contains("| 0.5 | in (0, 1] |"), "{}", row(13));
 }

@@ -1,21 +1,27 @@
 //! `fric_`: the Abaqus/Standard FRIC user subroutine.
 
+use std::any::Any;
+use std::cell::Cell;
 use std::ffi::{c_char, c_int};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::{
-    boundary, fortran_string, read, read_array, slice, write, write_array, write_matrix,
-    write_zeros,
+    boundary, fortran_string, null_pointer, read, read_array, slice, write, write_array,
+    write_matrix, write_zeros,
 };
 use crate::config::friction_table_for;
+use crate::laws::adhesive::Adhesive;
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment, StickMode};
-use crate::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
-use crate::props::coulomb_extended_with_table;
-use crate::props::{FrictionLaw, extended_coulomb, friction_law, plain_coulomb_or_special_case};
+use crate::laws::coulomb_extended::{
+    Conditions, ExtendedCoulomb, ExtendedState, mean_surface_temperature,
+};
+use crate::props::{
+    FrictionLaw, coulomb_extended_with_table, fast_extended_coulomb, fast_plain_coulomb,
+    friction_law,
+};
 use crate::report::Site;
 use crate::{CUTBACK_RATIO, LawError};
 
-mod adhesive;
 mod rate;
 
 /// Abaqus/Standard `FRIC`: frictional stress, tangents, energies and state of one closed contact
@@ -100,26 +106,49 @@ pub unsafe extern "C" fn fric_(
     slname_len: usize,
     msname_len: usize,
 ) {
-    // The plain law (isotropic, constant μ, PROPS(1..7), or the adhesive law's Coulomb special
-    // case) with valid arguments takes one pass that tests everything with a few combined
-    // branches and never builds an error; anything else (the extended law, bad arguments with
-    // their messages) goes out of line to the checked path, which starts afresh (the fast
-    // path writes nothing unless it succeeds).
-    let handled = catch_unwind(AssertUnwindSafe(|| {
-        // SAFETY: the host's pointers, valid per the contract above.
-        unsafe {
-            plain_fast(
-                lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, statev, dgam, taulm, press,
-                dpress, dtime, nfdir, nstatv, chrlngth, props, nprops,
-            )
-        }
-    }));
-    if matches!(handled, Ok(true)) {
-        return;
+    // The plain law's fast path on the view of the arguments it reads; anything else goes
+    // out of line with `fric_`'s own argument list (a sibling call: nothing is copied or
+    // packed on the plain path, docs/performance.md, fourth pass).
+    let fast = FricArgs {
+        lm,
+        tau,
+        ddtddg,
+        ddtddp,
+        dslip,
+        sed,
+        sfd,
+        ddtddt,
+        pnewdt,
+        statev,
+        dgam,
+        taulm,
+        press,
+        dpress,
+        dtime,
+        noel,
+        ciname,
+        ciname_len,
+        npt,
+        node,
+        coords,
+        drot,
+        temp,
+        nfdir,
+        mcrd,
+        nstatv,
+        chrlngth,
+        props,
+        nprops,
+    };
+    // SAFETY: the host's pointers, valid per the contract above.
+    match catch_unwind(AssertUnwindSafe(|| unsafe { fast.plain_fast() })) {
+        Ok(true) => return,
+        Ok(false) => {}
+        // Not answered here: handed to the export's one boundary in `fric_general`, which
+        // raises it again before anything else (no retry) and reports it.
+        Err(payload) => hand_over(payload),
     }
-    // SAFETY: the host's pointers, passed on unchanged. The same argument list as `fric_`:
-    // packing the pointers into arrays here had cost the plain path above its register
-    // allocation (docs/performance.md, fourth pass).
+    // SAFETY: the host's pointers, passed on unchanged.
     unsafe {
         fric_general(
             lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pnewdt, statev, dgam, taulm, press,
@@ -130,258 +159,18 @@ pub unsafe extern "C" fn fric_(
     }
 }
 
-/// The plain law's call when everything is valid: `true` when the call is done (outputs
-/// written, or `LM = 2` on entry), `false` with nothing written when anything is off (a NULL,
-/// a size, `PROPS` not the plain layout, a non-finite input or result), for the checked path
-/// to handle and name.
+/// `fric_` for everything but the plain law, inside the export's boundary (`abi::boundary`:
+/// an error or a panic gets the safe outputs of [`FricArgs::fail`] and one report). Out of
+/// line and `cold` (code layout and register allocation of the plain path).
+///
+/// It repeats `fric_`'s argument list on purpose: `fric_` ends in a sibling call (a jump, the
+/// arguments left where the host put them). Packing them into one view passed by reference
+/// instead cost the plain path 18–22 instructions per call (the six register arguments then
+/// stay in registers across it; measured 2026-11-26, issue 19) and three arrays of pointers
+/// 37 (docs/performance.md, fourth pass).
 ///
 /// # Safety
 /// As `fric_`.
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-unsafe fn plain_fast(
-    lm: *mut c_int,
-    tau: *mut f64,
-    ddtddg: *mut f64,
-    ddtddp: *mut f64,
-    dslip: *mut f64,
-    sed: *mut f64,
-    sfd: *mut f64,
-    ddtddt: *mut f64,
-    statev: *mut f64,
-    dgam: *const f64,
-    taulm: *const f64,
-    press: *const f64,
-    dpress: *const f64,
-    dtime: *const f64,
-    nfdir: *const c_int,
-    nstatv: *const c_int,
-    chrlngth: *const f64,
-    props: *const f64,
-    nprops: *const c_int,
-) -> bool {
-    // SAFETY (whole body): every pointer is tested for NULL before it is read; arrays are read
-    // with the lengths the host declared, after those were checked.
-    unsafe {
-        if lm.is_null() {
-            return false;
-        }
-        let entry = match *lm {
-            0 => EntryFlag::Motion,
-            1 if !taulm.is_null() => EntryFlag::ExactStick,
-            // Frictionless: nothing to do, whatever the rest says.
-            2 => return true,
-            _ => return false,
-        };
-        let Some(Ok(n)) = get(nprops).map(usize::try_from) else {
-            return false;
-        };
-        if props.is_null() {
-            return false;
-        }
-        let Some(law) = plain_coulomb_or_special_case(std::slice::from_raw_parts(props, n)) else {
-            return false;
-        };
-        match get(nstatv) {
-            Some(n) if n >= CoulombState::NSTATV as c_int => {}
-            _ => return false,
-        }
-        let out = Outputs {
-            lm,
-            tau,
-            ddtddg,
-            ddtddp,
-            dslip,
-            sed,
-            sfd,
-            ddtddt,
-            statev,
-        };
-        let input = Inputs {
-            tau,
-            dgam,
-            taulm,
-            press,
-            dpress,
-            dtime,
-            chrlngth,
-            statev,
-        };
-        // Elastic stick (Abaqus's default, and the common case) does not look at the entry
-        // flag or TAULM: its own copy of the point, with neither.
-        match (get(nfdir), law.stick() == StickMode::Elastic) {
-            (Some(1), true) => point_fast::<1, true>(&law, entry, &input, &out),
-            (Some(2), true) => point_fast::<2, true>(&law, entry, &input, &out),
-            (Some(1), false) => point_fast::<1, false>(&law, entry, &input, &out),
-            (Some(2), false) => point_fast::<2, false>(&law, entry, &input, &out),
-            _ => false,
-        }
-    }
-}
-
-/// `*p`, or `None` for NULL (read unaligned: Fortran guarantees nothing more than the C ABI).
-///
-/// # Safety
-/// `p` is NULL or points to a readable `T`.
-#[inline(always)]
-unsafe fn get<T: Copy>(p: *const T) -> Option<T> {
-    if p.is_null() {
-        None
-    } else {
-        // SAFETY: non-NULL, readable by contract.
-        Some(unsafe { p.read_unaligned() })
-    }
-}
-
-/// The pointers [`point_fast`] writes through.
-struct Outputs {
-    lm: *mut c_int,
-    tau: *mut f64,
-    ddtddg: *mut f64,
-    ddtddp: *mut f64,
-    dslip: *mut f64,
-    sed: *mut f64,
-    sfd: *mut f64,
-    ddtddt: *mut f64,
-    statev: *mut f64,
-}
-
-impl Outputs {
-    /// Writes a successful answer: `STATEV(1..3)`, `LM`, and with relative motion `TAU`,
-    /// `DDTDDG`, `DDTDDP`, `DSLIP`, `SED`, `SFD` and both columns of `DDTDDT` (each
-    /// `ddtddt_column`); in exact stick `DSLIP`, `SED` and `SFD` are zero and the rest is left
-    /// alone. NULL optional outputs are skipped.
-    ///
-    /// # Safety
-    /// The pointers as `fric_` documents them, for NFDIR = N.
-    #[inline(always)]
-    unsafe fn write_answer<const N: usize>(
-        &self,
-        contact: &Contact<N>,
-        state: &CoulombState,
-        ddtddt_column: &[f64; N],
-    ) {
-        // SAFETY: arrays of N, N·N, 2N and NSTATV ≥ 3 entries per the FRIC contract.
-        unsafe {
-            let mut end_state = [0.0; CoulombState::NSTATV];
-            state.write_statev(&mut end_state);
-            write_array(self.statev, &end_state);
-            match contact {
-                Contact::ExactStick => {
-                    write(self.lm, 1);
-                    write_array(self.dslip, &[0.0; N]);
-                    write(self.sed, 0.0);
-                    write(self.sfd, 0.0);
-                }
-                Contact::Motion(t) => {
-                    write(self.lm, 0);
-                    write_array(self.tau, &t.tau);
-                    write_matrix(self.ddtddg, &t.ddtddg);
-                    write_array(self.ddtddp, &t.ddtddp);
-                    write_array(self.dslip, &t.dslip);
-                    write(self.sed, t.sed);
-                    write(self.sfd, t.sfd);
-                    if !self.ddtddt.is_null() {
-                        write_array(self.ddtddt, ddtddt_column);
-                        write_array(self.ddtddt.add(N), ddtddt_column);
-                    }
-                }
-            }
-        }
-    }
-}
-
-/// The pointers [`point_fast`] reads.
-struct Inputs {
-    tau: *const f64,
-    dgam: *const f64,
-    taulm: *const f64,
-    press: *const f64,
-    dpress: *const f64,
-    dtime: *const f64,
-    chrlngth: *const f64,
-    statev: *const f64,
-}
-
-/// One contact point of the plain law, N = NFDIR: as [`FricArgs::point`], with every test
-/// folded into the few branches of [`Coulomb::try_update`]; `false` (nothing written) when a
-/// pointer is NULL or an input or result is not finite.
-///
-/// # Safety
-/// As `fric_`, with `NSTATV ≥ 3` checked.
-#[inline(always)]
-unsafe fn point_fast<const N: usize, const ELASTIC: bool>(
-    law: &Coulomb,
-    entry: EntryFlag,
-    input: &Inputs,
-    out: &Outputs,
-) -> bool {
-    let exact = entry == EntryFlag::ExactStick;
-    // SAFETY (whole body): each pointer is tested for NULL right before it is read (one branch
-    // each, and no load moves in front of its test); arrays of N, N·N, 2N and NSTATV ≥ 3
-    // entries per the FRIC contract.
-    unsafe {
-        let Some(pressure) = get(input.press) else {
-            return false;
-        };
-        let Some(dpressure) = get(input.dpress) else {
-            return false;
-        };
-        let Some(tau) = get(input.tau.cast::<[f64; N]>()) else {
-            return false;
-        };
-        let Some(dgam) = get(input.dgam.cast::<[f64; N]>()) else {
-            return false;
-        };
-        // Elastic stick does not read TAULM (a NULL one with LM = 1 is refused by
-        // `plain_fast`, as the checked path refuses it).
-        let taulm = if ELASTIC || !exact {
-            [0.0; N]
-        } else {
-            let Some(taulm) = get(input.taulm.cast::<[f64; N]>()) else {
-                return false;
-            };
-            taulm
-        };
-        let Some(dtime) = get(input.dtime) else {
-            return false;
-        };
-        let Some(characteristic_length) = get(input.chrlngth) else {
-            return false;
-        };
-        let inc = Increment::<N> {
-            tau,
-            dgam,
-            taulm,
-            pressure,
-            dpressure,
-            dtime,
-            characteristic_length,
-            // Elastic stick does not read the entry flag.
-            entry: if ELASTIC { EntryFlag::Motion } else { entry },
-        };
-        let Some([s, rate, status]) = get(input.statev.cast::<[f64; 3]>()) else {
-            return false;
-        };
-        // Tested for finiteness with the inputs by `try_update`.
-        let state = CoulombState::from_values_unchecked(s, rate, status);
-        let Some(up) = law.try_update(&inc, &state) else {
-            return false;
-        };
-        // DDTDDT(NFDIR,2) = 0: μ does not depend on temperature.
-        out.write_answer(&up.contact, &up.state, &[0.0; N]);
-        // The plain law always converges: PNEWDT is left alone.
-        true
-    }
-}
-
-/// `fric_` for everything but the plain law: the extended law, and every bad `PROPS` with its
-/// message. Out of line, with the pointers passed as plain values.
-///
-/// # Safety
-/// As `fric_`.
-// `cold` only for code layout and register allocation of the plain path in `fric_`; the
-// extended law is still fast once here (its own fast PROPS parser, docs/benchmarks.md).
 #[cold]
 #[inline(never)]
 #[allow(clippy::too_many_arguments)]
@@ -429,6 +218,7 @@ unsafe extern "C" fn fric_general(
     slname_len: usize,
     msname_len: usize,
 ) {
+    // Not read (the laws need none of them; `DROT` is read only by the damping law in 3-D).
     let _ = (ddpddh, slip, kstep, kinc, time, npatch, rcoord, predef);
     let _ = (npred, slname, msname, slname_len, msname_len);
     let args = FricArgs {
@@ -447,32 +237,50 @@ unsafe extern "C" fn fric_general(
         press,
         dpress,
         dtime,
+        noel,
+        ciname,
+        ciname_len,
+        npt,
+        node,
+        coords,
+        drot,
+        temp,
         nfdir,
+        mcrd,
         nstatv,
         chrlngth,
         props,
         nprops,
-        temp,
-        drot,
-        coords,
-        mcrd,
     };
     let _ = boundary(
-        // SAFETY (all three closures): the pointers are the host's, valid per the contract above.
-        || unsafe { site(ciname, ciname_len, noel, node, npt) },
-        // The rate law's lean layout first (`rate.rs`), then the checked path.
-        || unsafe {
-            if args.decay_fast() {
-                Ok(())
-            } else {
-                args.run(ciname, ciname_len)
+        // SAFETY (all three closures): the host's pointers, valid per the contract above.
+        || unsafe { args.site() },
+        || {
+            if let Some(payload) = HANDED_OVER.take() {
+                std::panic::resume_unwind(payload);
             }
+            unsafe { args.general() }
         },
         || unsafe { args.fail() },
     );
 }
 
-/// The arguments `fric_` reads or writes, gathered so the generic body can be written once.
+thread_local! {
+    /// A panic of `fric_`'s plain path on this thread, on its way to the export's boundary.
+    static HANDED_OVER: Cell<Option<Box<dyn Any + Send>>> = const { Cell::new(None) };
+}
+
+/// Keeps a panic of the plain path for `fric_general`'s boundary.
+#[cold]
+#[inline(never)]
+fn hand_over(payload: Box<dyn Any + Send>) {
+    HANDED_OVER.set(Some(payload));
+}
+
+/// The arguments `fric_` reads or writes: the one view of the host's call that every path
+/// below works on (the plain path in `fric_`, everything else in `fric_general`). Its address
+/// is never taken on the plain path, so it lives in registers there.
+#[derive(Clone, Copy)]
 struct FricArgs {
     lm: *mut c_int,
     tau: *mut f64,
@@ -489,39 +297,260 @@ struct FricArgs {
     press: *const f64,
     dpress: *const f64,
     dtime: *const f64,
+    noel: *const c_int,
+    ciname: *const c_char,
+    ciname_len: usize,
+    npt: *const c_int,
+    node: *const c_int,
+    coords: *const f64,
+    drot: *const f64,
+    temp: *const f64,
     nfdir: *const c_int,
+    mcrd: *const c_int,
     nstatv: *const c_int,
     chrlngth: *const f64,
     props: *const f64,
     nprops: *const c_int,
-    temp: *const f64,
-    drot: *const f64,
-    coords: *const f64,
-    mcrd: *const c_int,
+}
+
+/// How a read of a host pointer refuses a NULL: quietly (`()`, the fast paths, which then
+/// decline and leave the call to the checked path) or with a message naming the argument
+/// (`LawError`, the checked path). One reader serves both, so both read the same arguments.
+trait Refusal: Sized {
+    fn null(name: &'static str) -> Self;
+}
+
+impl Refusal for () {
+    #[inline(always)]
+    fn null(_: &'static str) {}
+}
+
+impl Refusal for LawError {
+    #[inline(always)]
+    fn null(name: &'static str) -> Self {
+        null_pointer(name)
+    }
+}
+
+/// `*p`, or the refusal naming `name` for NULL (read unaligned: Fortran guarantees nothing
+/// more than the C ABI).
+///
+/// # Safety
+/// `p` is NULL or points to a readable `T`.
+#[inline(always)]
+unsafe fn arg<T: Copy, E: Refusal>(p: *const T, name: &'static str) -> Result<T, E> {
+    if p.is_null() {
+        Err(E::null(name))
+    } else {
+        // SAFETY: non-NULL, readable by contract.
+        Ok(unsafe { p.read_unaligned() })
+    }
+}
+
+/// `*p`, or `None` for NULL (the fast paths' reads of sizes and flags).
+///
+/// # Safety
+/// `p` is NULL or points to a readable `T`.
+#[inline(always)]
+unsafe fn get<T: Copy>(p: *const T) -> Option<T> {
+    // SAFETY: as `arg`.
+    unsafe { arg::<T, ()>(p, "") }.ok()
+}
+
+/// The law a call runs, as the `PROPS` layer gave it.
+#[derive(Clone, Copy)]
+enum Law<'a> {
+    Coulomb(&'a Coulomb),
+    Extended(&'a ExtendedCoulomb),
+    Adhesive(&'a Adhesive),
 }
 
 impl FricArgs {
-    /// The output pointers, for [`Outputs::write_answer`].
+    /// The plain law's call when everything is valid: `true` when the call is done (outputs
+    /// written, or `LM = 2` on entry), `false` with nothing written when anything is off (a
+    /// NULL, a size, `PROPS` not the plain layout, a non-finite input or result).
+    ///
+    /// # Safety
+    /// As `fric_`.
     #[inline(always)]
-    fn outputs(&self) -> Outputs {
-        Outputs {
-            lm: self.lm,
-            tau: self.tau,
-            ddtddg: self.ddtddg,
-            ddtddp: self.ddtddp,
-            dslip: self.dslip,
-            sed: self.sed,
-            sfd: self.sfd,
-            ddtddt: self.ddtddt,
-            statev: self.statev,
+    unsafe fn plain_fast(&self) -> bool {
+        // SAFETY (whole body): every pointer is tested for NULL before it is read; arrays are
+        // read with the lengths the host declared, after those were checked.
+        unsafe {
+            let entry = match get(self.lm) {
+                Some(0) => EntryFlag::Motion,
+                Some(1) if !self.taulm.is_null() => EntryFlag::ExactStick,
+                // Frictionless: nothing to do, whatever the rest says.
+                Some(2) => return true,
+                _ => return false,
+            };
+            let Some(Ok(n)) = get(self.nprops).map(usize::try_from) else {
+                return false;
+            };
+            if self.props.is_null() {
+                return false;
+            }
+            let Some(law) = fast_plain_coulomb(std::slice::from_raw_parts(self.props, n)) else {
+                return false;
+            };
+            match get(self.nstatv) {
+                Some(n) if n >= CoulombState::NSTATV as c_int => {}
+                _ => return false,
+            }
+            // Elastic stick (Abaqus's default, and the common case) does not look at the
+            // entry flag or TAULM: its own copy of the point, with neither.
+            match (get(self.nfdir), law.stick() == StickMode::Elastic) {
+                (Some(1), true) => self.plain_point::<1>(&law, EntryFlag::Motion),
+                (Some(2), true) => self.plain_point::<2>(&law, EntryFlag::Motion),
+                (Some(1), false) => self.plain_point::<1>(&law, entry),
+                (Some(2), false) => self.plain_point::<2>(&law, entry),
+                _ => false,
+            }
         }
     }
 
-    /// Checks the sizes and the law once, then runs the NFDIR-specific code.
+    /// One contact point of the plain law, N = NFDIR: the increment and `STATEV(1..3)` read
+    /// quietly, every test folded into the few branches of [`Coulomb::try_update`]; `false`
+    /// (nothing written) when a pointer is NULL or an input or result is not finite.
+    ///
+    /// # Safety
+    /// As `fric_`, with `NSTATV ≥ 3` checked.
     #[inline(always)]
-    /// `ciname` (of `ciname_len` bytes) is read only when `PROPS(8) = 2` asks for the
-    /// interaction's μ table.
-    unsafe fn run(&self, ciname: *const c_char, ciname_len: usize) -> Result<(), LawError> {
+    unsafe fn plain_point<const N: usize>(&self, law: &Coulomb, entry: EntryFlag) -> bool {
+        // SAFETY (whole body): arrays of N and NSTATV ≥ 3 entries per the FRIC contract.
+        unsafe {
+            let Ok(inc) = self.increment::<N, ()>(entry) else {
+                return false;
+            };
+            let Some([s, rate, status]) = get(self.statev.cast::<[f64; 3]>()) else {
+                return false;
+            };
+            // Tested for finiteness with the inputs by `try_update`.
+            let state = CoulombState::from_values_unchecked(s, rate, status);
+            let Some(up) = law.try_update(&inc, &state) else {
+                return false;
+            };
+            // DDTDDT(NFDIR,2) = 0: μ does not depend on temperature. The plain law always
+            // converges: PNEWDT is left alone.
+            self.write_answer(&up.contact, &coulomb_statev(&up.state), &[0.0; N]);
+            true
+        }
+    }
+
+    /// The one reader of the increment, for every law and path: `PRESS`, `DPRESS`, `TAU`,
+    /// `DGAM`, `TAULM` (only with `LM = 1` on entry), `DTIME`, `CHRLNGTH`, in that order (the
+    /// checked path names the first NULL; the order is the plain path's fastest).
+    ///
+    /// # Safety
+    /// As `fric_`, N = NFDIR.
+    #[inline(always)]
+    unsafe fn increment<const N: usize, E: Refusal>(
+        &self,
+        entry: EntryFlag,
+    ) -> Result<Increment<N>, E> {
+        // SAFETY (whole body): arrays of N entries per the FRIC contract.
+        unsafe {
+            let pressure = arg(self.press, "PRESS")?;
+            let dpressure = arg(self.dpress, "DPRESS")?;
+            let tau = arg(self.tau.cast::<[f64; N]>(), "TAU")?;
+            let dgam = arg(self.dgam.cast::<[f64; N]>(), "DGAM")?;
+            let taulm = if entry == EntryFlag::ExactStick {
+                arg(self.taulm.cast::<[f64; N]>(), "TAULM")?
+            } else {
+                [0.0; N]
+            };
+            Ok(Increment {
+                tau,
+                dgam,
+                taulm,
+                pressure,
+                dpressure,
+                dtime: arg(self.dtime, "DTIME")?,
+                characteristic_length: arg(self.chrlngth, "CHRLNGTH")?,
+                entry,
+            })
+        }
+    }
+
+    /// The one writer of a successful answer: `STATEV(1..)` (`statev`, the law's layout),
+    /// `LM`, and with relative motion `TAU`, `DDTDDG`, `DDTDDP`, `DSLIP`, `SED`, `SFD` and both
+    /// columns of `DDTDDT` (each `ddtddt_column`); in exact stick `DSLIP`, `SED` and `SFD` are
+    /// zero and the rest is left alone. NULL optional outputs are skipped.
+    ///
+    /// # Safety
+    /// As `fric_`, N = NFDIR, `NSTATV ≥ statev.len()` checked.
+    #[inline(always)]
+    unsafe fn write_answer<const N: usize>(
+        &self,
+        contact: &Contact<N>,
+        statev: &[f64],
+        ddtddt_column: &[f64; N],
+    ) {
+        // SAFETY: arrays of N, N·N, 2N and NSTATV ≥ statev.len() entries per the FRIC contract.
+        unsafe {
+            for (i, x) in statev.iter().enumerate() {
+                self.statev.add(i).write(*x);
+            }
+            match contact {
+                Contact::ExactStick => {
+                    write(self.lm, 1);
+                    write_array(self.dslip, &[0.0; N]);
+                    write(self.sed, 0.0);
+                    write(self.sfd, 0.0);
+                }
+                Contact::Motion(t) => {
+                    write(self.lm, 0);
+                    write_array(self.tau, &t.tau);
+                    write_matrix(self.ddtddg, &t.ddtddg);
+                    write_array(self.ddtddp, &t.ddtddp);
+                    write_array(self.dslip, &t.dslip);
+                    write(self.sed, t.sed);
+                    write(self.sfd, t.sfd);
+                    if !self.ddtddt.is_null() {
+                        write_array(self.ddtddt, ddtddt_column);
+                        write_array(self.ddtddt.add(N), ddtddt_column);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Lowers `PNEWDT` to the law's step ratio (never raises it).
+    ///
+    /// # Safety
+    /// As `fric_`.
+    unsafe fn lower_pnewdt(&self, ratio: f64) {
+        // SAFETY: PNEWDT is NULL or a valid double per the FRIC contract.
+        unsafe {
+            if ratio.is_finite() && !self.pnewdt.is_null() && ratio < self.pnewdt.read() {
+                self.pnewdt.write(ratio);
+            }
+        }
+    }
+
+    /// Everything but the plain law: the rate law's lean layout (`rate.rs`), then the checked
+    /// path with its messages.
+    ///
+    /// # Safety
+    /// As `fric_`.
+    unsafe fn general(&self) -> Result<(), LawError> {
+        // SAFETY: as `fric_`.
+        unsafe {
+            if self.decay_fast() {
+                Ok(())
+            } else {
+                self.run()
+            }
+        }
+    }
+
+    /// The checked path: reads every argument with named checks, the law through the `PROPS`
+    /// layer (its fast layouts first, then the checked parsers, which name the entry), then
+    /// `NSTATV` and `NFDIR` once, and runs [`Self::point`].
+    ///
+    /// # Safety
+    /// As `fric_`.
+    unsafe fn run(&self) -> Result<(), LawError> {
         // SAFETY (whole body): pointers valid per the FRIC contract; every array is read with
         // the length the host declared, after that length was checked.
         unsafe {
@@ -539,131 +568,124 @@ impl FricArgs {
                 return Err(negative_nprops(nprops));
             };
             let props = slice(self.props, nprops, "PROPS")?;
-            // The extended law's own fast path (no FrictionLaw built and moved).
-            if let Some(law) = extended_coulomb(props) {
-                let nstatv = self.nstatv()?;
-                return match read(self.nfdir, "NFDIR")? {
-                    1 => self.point_extended::<1>(&law, entry, nstatv),
-                    2 => self.point_extended::<2>(&law, entry, nstatv),
-                    other => Err(bad_nfdir(other)),
-                };
+            // The extended law's own fast reader (no FrictionLaw built and moved).
+            if let Some(law) = fast_extended_coulomb(props) {
+                return self.on_nfdir(Law::Extended(&law), entry);
             }
             let law = if props.get(7) == Some(&2.0) {
                 // μ table (PROPS(8) = 2): the interaction's, from the configuration file.
-                let name = if ciname.is_null() {
+                let name = if self.ciname.is_null() {
                     &[][..]
                 } else {
-                    std::slice::from_raw_parts(ciname.cast::<u8>(), ciname_len)
+                    std::slice::from_raw_parts(self.ciname.cast::<u8>(), self.ciname_len)
                 };
                 coulomb_extended_with_table(props, Some(friction_table_for(name)?))?
             } else {
                 friction_law(props)?
             };
-            match law {
-                FrictionLaw::Coulomb(law) => {
-                    let nstatv = self.nstatv()?;
-                    match read(self.nfdir, "NFDIR")? {
-                        1 => self.point::<1>(&law, entry, nstatv),
-                        2 => self.point::<2>(&law, entry, nstatv),
-                        other => Err(bad_nfdir(other)),
-                    }
-                }
-                FrictionLaw::CoulombExtended(law) => {
-                    let nstatv = self.nstatv()?;
-                    match read(self.nfdir, "NFDIR")? {
-                        1 => self.point_extended::<1>(&law, entry, nstatv),
-                        2 => self.point_extended::<2>(&law, entry, nstatv),
-                        other => Err(bad_nfdir(other)),
-                    }
-                }
+            match &law {
+                FrictionLaw::Coulomb(law) => self.on_nfdir(Law::Coulomb(law), entry),
+                FrictionLaw::CoulombExtended(law) => self.on_nfdir(Law::Extended(law), entry),
                 // (S_a = k_μ = v_½ = 0, μ_s = μ_d comes as the Coulomb law.)
-                FrictionLaw::Adhesive(a) => self.adhesive(&a.law),
+                FrictionLaw::Adhesive(a) => self.on_nfdir(Law::Adhesive(&a.law), entry),
             }
         }
     }
 
-    /// `NSTATV`, at least the Coulomb law's 3.
-    #[inline(always)]
-    unsafe fn nstatv(&self) -> Result<usize, LawError> {
-        // SAFETY: NSTATV is a valid pointer or NULL per the FRIC contract.
-        let nstatv = unsafe { read(self.nstatv, "NSTATV") }?;
-        match usize::try_from(nstatv) {
-            Ok(n) if n >= CoulombState::NSTATV => Ok(n),
-            _ => Err(short_nstatv(nstatv)),
+    /// Checks `NSTATV` (at least the Coulomb law's 3) and `NFDIR` (1 or 2), then runs the
+    /// point with N = NFDIR.
+    ///
+    /// # Safety
+    /// As `fric_`.
+    unsafe fn on_nfdir(&self, law: Law<'_>, entry: EntryFlag) -> Result<(), LawError> {
+        // SAFETY: NSTATV and NFDIR are valid pointers or NULL per the FRIC contract.
+        unsafe {
+            let nstatv = read(self.nstatv, "NSTATV")?;
+            let nstatv = match usize::try_from(nstatv) {
+                Ok(n) if n >= CoulombState::NSTATV => n,
+                _ => return Err(short_nstatv(nstatv)),
+            };
+            match read(self.nfdir, "NFDIR")? {
+                1 => self.point::<1>(law, entry, nstatv),
+                2 => self.point::<2>(law, entry, nstatv),
+                other => Err(bad_nfdir(other)),
+            }
         }
     }
 
-    /// One contact point with N = NFDIR friction directions. Everything is computed before the
-    /// first output is written, so a failure leaves the caller's arrays as they were.
-    #[inline(always)]
+    /// One contact point with N = NFDIR friction directions, any law. Everything is computed
+    /// before the first output is written, so a failure leaves the caller's arrays as they
+    /// were.
+    ///
+    /// # Safety
+    /// As `fric_`, N = NFDIR, `NSTATV ≥ 3` checked and equal to `nstatv`.
     unsafe fn point<const N: usize>(
         &self,
-        law: &Coulomb,
+        law: Law<'_>,
         entry: EntryFlag,
         nstatv: usize,
     ) -> Result<(), LawError> {
-        // SAFETY (whole body): arrays of N, N·N and NSTATV entries per the FRIC contract.
+        // SAFETY (whole body): arrays of N, N·N, 2N, NSTATV, 2 and 4 entries per the FRIC
+        // contract; STATEV is read and written only up to the checked NSTATV.
         unsafe {
-            let inc = Increment::<N> {
-                tau: read_array(self.tau, "TAU")?,
-                dgam: read_array(self.dgam, "DGAM")?,
-                taulm: if entry == EntryFlag::ExactStick {
-                    read_array(self.taulm, "TAULM")?
-                } else {
-                    [0.0; N]
-                },
-                pressure: read(self.press, "PRESS")?,
-                dpressure: read(self.dpress, "DPRESS")?,
-                dtime: read(self.dtime, "DTIME")?,
-                characteristic_length: read(self.chrlngth, "CHRLNGTH")?,
-                entry,
-            };
-            let state = CoulombState::from_statev(slice(self.statev, nstatv, "STATEV")?)?;
-            let up = law.update(&inc, &state)?;
-            // DDTDDT(NFDIR,2) = 0: μ does not depend on temperature.
-            self.outputs()
-                .write_answer(&up.contact, &up.state, &[0.0; N]);
-            let ratio = up.outcome.step_ratio;
-            if ratio.is_finite() && !self.pnewdt.is_null() && ratio < self.pnewdt.read() {
-                self.pnewdt.write(ratio);
+            match law {
+                Law::Coulomb(law) => {
+                    let inc = self.increment::<N, LawError>(entry)?;
+                    let state = CoulombState::from_statev(slice(self.statev, nstatv, "STATEV")?)?;
+                    let up = law.update(&inc, &state)?;
+                    // DDTDDT(NFDIR,2) = 0: μ does not depend on temperature.
+                    self.write_answer(&up.contact, &coulomb_statev(&up.state), &[0.0; N]);
+                    self.lower_pnewdt(up.outcome.step_ratio);
+                }
+                Law::Extended(law) => {
+                    let needed = law.nstatv(N);
+                    if nstatv < needed {
+                        return Err(short_nstatv_extended(nstatv, needed));
+                    }
+                    let inc = self.increment::<N, LawError>(entry)?;
+                    let conditions = self.conditions::<N>(law)?;
+                    let statev = slice(self.statev, nstatv, "STATEV")?;
+                    let state = ExtendedState::<N>::from_statev(law, statev)?;
+                    let up = law.update(&inc, &conditions, &state)?;
+                    let mut end = [0.0; 5];
+                    let end = up.state.to_statev(law, &mut end);
+                    self.write_answer(&up.contact, end, &up.ddtddt_column());
+                    self.lower_pnewdt(up.outcome.step_ratio);
+                }
+                // Elastic stick only: `LM = 1` on entry (a host that starts the increment
+                // "sticking") reads as `LM = 0`, and the answer is always `LM = 0`.
+                Law::Adhesive(law) => {
+                    let inc = self.increment::<N, LawError>(EntryFlag::Motion)?;
+                    let state = CoulombState::from_statev(slice(self.statev, nstatv, "STATEV")?)?;
+                    let up = law.update(&inc, &state)?;
+                    if up.contact == Contact::ExactStick {
+                        return Err(LawError::Numerical(
+                            "the adhesive law answered exact stick (a bug; please report it)"
+                                .into(),
+                        ));
+                    }
+                    // DDTDDT(NFDIR,2): the law does not depend on temperature.
+                    self.write_answer(&up.contact, &coulomb_statev(&up.state), &[0.0; N]);
+                }
             }
             Ok(())
         }
     }
 
-    /// One contact point with the extended Coulomb law (anisotropy, μ law, HHT, damping).
-    /// Computes everything before writing, like [`Self::point`].
-    unsafe fn point_extended<const N: usize>(
+    /// What the extended law reads besides the increment: the mean surface temperature when μ
+    /// depends on it, `DROT` for damping in 3-D, the point's coordinates for steady transport.
+    ///
+    /// # Safety
+    /// As `fric_`, N = NFDIR.
+    unsafe fn conditions<const N: usize>(
         &self,
         law: &ExtendedCoulomb,
-        entry: EntryFlag,
-        nstatv: usize,
-    ) -> Result<(), LawError> {
-        // SAFETY (whole body): arrays of N, N·N, 2N, NSTATV, 2 and 4 entries per the FRIC
-        // contract; STATEV is read only up to the checked NSTATV.
+    ) -> Result<Conditions, LawError> {
+        // SAFETY (whole body): TEMP(2), DROT(2,2) and COORDS(MCRD) per the FRIC contract.
         unsafe {
-            let needed = law.nstatv(N);
-            if nstatv < needed {
-                return Err(short_nstatv_extended(nstatv, needed));
-            }
-            let inc = Increment::<N> {
-                tau: read_array(self.tau, "TAU")?,
-                dgam: read_array(self.dgam, "DGAM")?,
-                taulm: if entry == EntryFlag::ExactStick {
-                    read_array(self.taulm, "TAULM")?
-                } else {
-                    [0.0; N]
-                },
-                pressure: read(self.press, "PRESS")?,
-                dpressure: read(self.dpress, "DPRESS")?,
-                dtime: read(self.dtime, "DTIME")?,
-                characteristic_length: read(self.chrlngth, "CHRLNGTH")?,
-                entry,
-            };
             let mut conditions = Conditions::default();
             if law.reads_temperature() {
-                let [t1, t2] = read_array::<2>(self.temp, "TEMP")?;
-                conditions.temperature = 0.5 * (t1 + t2);
+                conditions.temperature = mean_surface_temperature(read_array(self.temp, "TEMP")?);
             }
             if law.damping().is_some() && N == 2 {
                 // DROT(2,2), column-major: DROT(a,b) at (a-1) + 2(b-1).
@@ -684,56 +706,14 @@ impl FricArgs {
                 conditions.coords[..n].copy_from_slice(c);
                 conditions.ncoords = n;
             }
-            let statev = slice(self.statev, nstatv, "STATEV")?;
-            let mut state = ExtendedState::<N> {
-                coulomb: CoulombState::from_statev(statev)?,
-                viscous: [0.0; N],
-            };
-            if law.damping().is_some() {
-                state.viscous.copy_from_slice(&statev[3..3 + N]);
-            }
-            let up = law.update(&inc, &conditions, &state)?;
-            let mut end_state = [0.0; CoulombState::NSTATV];
-            up.state.coulomb.write_statev(&mut end_state);
-            write_array(self.statev, &end_state);
-            if law.damping().is_some() {
-                write_array(self.statev.add(3), &up.state.viscous);
-            }
-            match up.contact {
-                Contact::ExactStick => {
-                    write(self.lm, 1);
-                    write_array(self.dslip, &[0.0; N]);
-                    write(self.sed, 0.0);
-                    write(self.sfd, 0.0);
-                }
-                Contact::Motion(t) => {
-                    write(self.lm, 0);
-                    write_array(self.tau, &t.tau);
-                    write_matrix(self.ddtddg, &t.ddtddg);
-                    write_array(self.ddtddp, &t.ddtddp);
-                    write_array(self.dslip, &t.dslip);
-                    write(self.sed, t.sed);
-                    write(self.sfd, t.sfd);
-                    // DDTDDT(a,1) and DDTDDT(a,2): θ̄ = (θ_slave + θ_master)/2, so each
-                    // surface temperature carries half of ∂τ/∂θ̄.
-                    if !self.ddtddt.is_null() {
-                        let half = scale_half(&up.ddtdtheta);
-                        write_array(self.ddtddt, &half);
-                        write_array(self.ddtddt.add(N), &half);
-                    }
-                }
-            }
-            let ratio = up.outcome.step_ratio;
-            if ratio.is_finite() && !self.pnewdt.is_null() && ratio < self.pnewdt.read() {
-                self.pnewdt.write(ratio);
-            }
-            Ok(())
+            Ok(conditions)
         }
     }
 
-    /// The documented safe outputs of a failed call. Inlined, so that no call takes the
-    /// arguments' address (which would keep them in memory on every call).
-    #[inline(always)]
+    /// The documented safe outputs of a failed call.
+    ///
+    /// # Safety
+    /// As `fric_`.
     unsafe fn fail(&self) {
         // SAFETY: as in `run`; arrays are written only when NFDIR is known to be 1 or 2.
         unsafe {
@@ -744,24 +724,46 @@ impl FricArgs {
                 }
             }
             write(self.sfd, 0.0);
-            match read(self.nfdir, "NFDIR") {
-                Ok(1) => self.zero_tangents::<1>(),
-                Ok(2) => self.zero_tangents::<2>(),
-                _ => {}
-            }
+            let n = match read(self.nfdir, "NFDIR") {
+                Ok(1) => 1,
+                Ok(2) => 2,
+                _ => return,
+            };
+            // N = NFDIR entries per array, N·N for DDTDDG, 2N for DDTDDT.
+            write_zeros(self.ddtddg, n * n);
+            write_zeros(self.ddtddp, n);
+            write_zeros(self.dslip, n);
+            write_zeros(self.ddtddt, 2 * n);
         }
     }
 
-    #[inline(always)]
-    unsafe fn zero_tangents<const N: usize>(&self) {
-        // SAFETY: N = NFDIR entries per array, N·N for the matrices, 2N for DDTDDT.
-        unsafe {
-            write_matrix::<N>(self.ddtddg, &[[0.0; N]; N]);
-            write_array::<N>(self.ddtddp, &[0.0; N]);
-            write_array::<N>(self.dslip, &[0.0; N]);
-            write_zeros(self.ddtddt, 2 * N);
+    /// Where a FRIC message comes from, read only on the error path.
+    ///
+    /// # Safety
+    /// As `fric_`.
+    unsafe fn site(&self) -> Site {
+        // SAFETY: the host's pointers; NULL reads as "?".
+        let num = |p: *const c_int| unsafe { get(p) }.map_or("?".to_string(), |v| v.to_string());
+        Site {
+            routine: "FRIC",
+            // SAFETY: CINAME has the hidden length the host passed.
+            interaction: unsafe { fortran_string(self.ciname, self.ciname_len) },
+            place: format!(
+                "element {}, node {}, point {}",
+                num(self.noel),
+                num(self.node),
+                num(self.npt)
+            ),
         }
     }
+}
+
+/// `STATEV(1..3)` of the Coulomb state.
+#[inline(always)]
+fn coulomb_statev(state: &CoulombState) -> [f64; CoulombState::NSTATV] {
+    let mut out = [0.0; CoulombState::NSTATV];
+    state.write_statev(&mut out);
+    out
 }
 
 #[cold]
@@ -786,14 +788,6 @@ fn short_nstatv(nstatv: c_int) -> LawError {
     ))
 }
 
-fn scale_half<const N: usize>(v: &[f64; N]) -> [f64; N] {
-    let mut out = *v;
-    for x in &mut out {
-        *x *= 0.5;
-    }
-    out
-}
-
 #[cold]
 #[inline(never)]
 fn bad_mcrd(mcrd: c_int) -> LawError {
@@ -815,27 +809,4 @@ fn short_nstatv_extended(nstatv: usize, needed: usize) -> LawError {
 #[inline(never)]
 fn bad_nfdir(nfdir: c_int) -> LawError {
     LawError::Parameter(format!("NFDIR = {nfdir}; expected 1 (2-D) or 2 (3-D)"))
-}
-
-/// Where a FRIC message comes from, read only on the error path.
-unsafe fn site(
-    ciname: *const c_char,
-    ciname_len: usize,
-    noel: *const c_int,
-    node: *const c_int,
-    npt: *const c_int,
-) -> Site {
-    // SAFETY: the host's pointers; NULL reads as "?".
-    let num = |p: *const c_int| unsafe { read(p, "") }.map_or("?".to_string(), |v| v.to_string());
-    Site {
-        routine: "FRIC",
-        // SAFETY: CINAME has the hidden length the host passed.
-        interaction: unsafe { fortran_string(ciname, ciname_len) },
-        place: format!(
-            "element {}, node {}, point {}",
-            num(noel),
-            num(node),
-            num(npt)
-        ),
-    }
 }

@@ -93,7 +93,7 @@ pub(crate) fn boundary(
 
 #[cold]
 #[inline(never)]
-fn null_pointer(name: &str) -> LawError {
+pub(crate) fn null_pointer(name: &str) -> LawError {
     LawError::Input(format!("{name} is a NULL pointer"))
 }
 
@@ -255,7 +255,7 @@ pub(crate) unsafe fn fortran_string(p: *const c_char, len: usize) -> String {
 mod tests {
     use super::host::FricCall;
     use crate::CUTBACK_RATIO;
-    use crate::testing::force_panic;
+    use crate::testing::{force_panic, forced_panics};
 
     #[test]
     fn a_panic_in_the_core_becomes_a_cut_back() {
@@ -264,9 +264,13 @@ mod tests {
         c.tau = [1.0, 2.0, c.tau[2], c.tau[3]];
         c.dgam[0] = 1e-4;
         c.statev[..3].copy_from_slice(&[0.5, 0.0, 1.0]);
+        let before = forced_panics();
         force_panic(true);
         c.call();
         force_panic(false);
+        // The plain path's panic is reported by the export's one boundary, not swallowed and
+        // the call run again on the checked path (which would panic a second time).
+        assert_eq!(forced_panics() - before, 1);
         assert_eq!(c.pnewdt, CUTBACK_RATIO);
         assert_eq!(&c.tau[..2], &[1.0, 2.0]);
         assert_eq!(&c.statev[..3], &[0.5, 0.0, 1.0]);

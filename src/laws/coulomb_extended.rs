@@ -1114,6 +1114,64 @@ fn rest_energy(tau_eq: f64, rest_strength: f64, gamma_crit: f64) -> f64 {
     }
 }
 
+/// The law's `STATEV` layout: `STATEV(1..3)` the Coulomb state ([`CoulombState`]); with
+/// tangential damping `STATEV(4..3+N)` the viscous stress τ_v at the end of the last increment
+/// ([`ExtendedCoulomb::nstatv`] entries in all).
+impl<const N: usize> ExtendedState<N> {
+    /// Reads the state; `statev` holds at least `law.nstatv(N)` entries (fewer is an error).
+    pub fn from_statev(law: &ExtendedCoulomb, statev: &[f64]) -> Result<Self, LawError> {
+        let mut state = ExtendedState {
+            coulomb: CoulombState::from_statev(statev)?,
+            viscous: [0.0; N],
+        };
+        if law.damping.is_some() {
+            match statev.get(CoulombState::NSTATV..CoulombState::NSTATV + N) {
+                Some(v) => state.viscous.copy_from_slice(v),
+                None => {
+                    return Err(LawError::Parameter(format!(
+                        "STATEV holds {} entries; the Coulomb law with tangential damping needs {}",
+                        statev.len(),
+                        law.nstatv(N)
+                    )));
+                }
+            }
+        }
+        Ok(state)
+    }
+
+    /// Writes the state to `out[..law.nstatv(N)]` and returns that many entries (N = NFDIR,
+    /// 1 or 2).
+    pub fn to_statev<'a>(&self, law: &ExtendedCoulomb, out: &'a mut [f64; 5]) -> &'a [f64] {
+        self.coulomb.write_statev(out);
+        if law.damping.is_some() {
+            out[CoulombState::NSTATV..CoulombState::NSTATV + N].copy_from_slice(&self.viscous);
+        }
+        &out[..law.nstatv(N)]
+    }
+}
+
+/// θ̄, the temperature μ depends on: the mean of the two surfaces' temperatures
+/// (`TEMP(1)`, `TEMP(2)`), so each carries half of ∂τ/∂θ̄ ([`ExtendedUpdate::ddtddt_column`]).
+#[inline(always)]
+#[must_use]
+pub fn mean_surface_temperature([slave, master]: [f64; 2]) -> f64 {
+    0.5 * (slave + master)
+}
+
+impl<const N: usize> ExtendedUpdate<N> {
+    /// One column of `DDTDDT(NFDIR,2)`: θ̄ = (θ_slave + θ_master)/2, so each surface
+    /// temperature carries half of ∂τ/∂θ̄ (both columns are this one).
+    #[inline(always)]
+    #[must_use]
+    pub fn ddtddt_column(&self) -> [f64; N] {
+        let mut out = self.ddtdtheta;
+        for x in &mut out {
+            *x *= 0.5;
+        }
+        out
+    }
+}
+
 #[cold]
 #[inline(never)]
 fn rate_softening_cancels(t_s: f64, stiffness: f64) -> LawError {

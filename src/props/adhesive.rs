@@ -172,7 +172,7 @@ pub(crate) fn adhesive_fast(props: &[f64]) -> Option<FrictionLaw> {
 
 /// The Coulomb law of a valid adhesive `PROPS` in its [`COULOMB_SPECIAL_CASE`], else `None`
 /// (any other adhesive `PROPS`, or not the adhesive law at all). Inlined into the out-of-line
-/// `other_plain_layouts` (props.rs), which `fric_`'s plain path calls only when `PROPS` is not
+/// `plain_coulomb_other_lengths` (props.rs), which `fric_`'s plain path calls only when `PROPS` is not
 /// the plain Coulomb layout. A property test checks that it agrees with the full parse
 /// followed by [`Adhesive::coulomb_special_case`].
 #[inline]
@@ -317,7 +317,7 @@ mod tests {
     use proptest::prelude::*;
 
     /// The checked reader before the schema (kept as the oracle): the law's own constructors
-    /// (`Adhesive::new`, `with_*`) validate, and messages are matched back to entries.
+    /// (`Adhesive::new`, `with_*`) validate.
     /// Adhesive layout: `PROPS(2)` coeff μ_d, `PROPS(3)` coeffStatic μ_s (≤ 0 → none),
     /// `PROPS(4)` Sa, `PROPS(5)` Na, `PROPS(6)` kmu, `PROPS(7)` vhalf, `PROPS(8)` γ_crit
     /// (0 → tolerance × CHRLNGTH), `PROPS(9)` slip tolerance (0 → 0.005), `PROPS(10)` K_n,
@@ -352,18 +352,8 @@ mod tests {
             kmu: get(6),
             vhalf: get(7),
         };
-        let mut law = Adhesive::new(&parameters).map_err(|e| {
-            // Name the entry: the core names the seed's parameter.
-            let entry = match &e {
-                LawError::Parameter(m) if m.starts_with("coeffStatic") => 3,
-                LawError::Parameter(m) if m.starts_with("coeff") => 2,
-                LawError::Parameter(m) if m.starts_with("Sa") => 4,
-                LawError::Parameter(m) if m.starts_with("Na") => 5,
-                LawError::Parameter(m) if m.starts_with("kmu") => 6,
-                _ => 7,
-            };
-            in_props(entry, e)
-        })?;
+        // The constructor's message names the seed's parameter (its key), not the entry.
+        let mut law = Adhesive::new(&parameters)?;
         let tolerance = get(9);
         if tolerance != 0.0 {
             law = law
@@ -533,7 +523,13 @@ mod tests {
                 (Err(_), Err(b)) => {
                     let typed = ADHESIVE.check::<ADHESIVE_NPROPS>(&props).unwrap_err();
                     if let Some(i) = typed.index() {
-                        let named = b.to_string().contains(&format!("PROPS({i})"));
+                        // The constructors name PROPS(2..7) by the seed's name, the rest by
+                        // index.
+                        let b = b.to_string();
+                        let by_key = ADHESIVE.entries.get(i - 1).is_some_and(|e| {
+                            b.starts_with(&format!("bad parameter: {} ", e.key))
+                        });
+                        let named = b.contains(&format!("PROPS({i})")) || by_key;
                         prop_assert!(named || i == 8, "{props:?}: {typed} / {b}");
                     }
                 }

@@ -83,16 +83,12 @@ impl Class {
         }
     }
 
-    /// The docs table's "valid" column.
+    /// The docs table's "valid" column: the message's words, but for a switch, whose two
+    /// meanings the "meaning" column gives.
     fn valid_text(self) -> String {
         match self {
-            Class::Code(c) => format!("exactly {c}"),
-            Class::NonNegative => "finite, ≥ 0".into(),
-            Class::OffOrPositive => "finite, > 0".into(),
-            Class::FiniteOrNone => "finite".into(),
             Class::Switch { .. } => "0 or 1".into(),
-            Class::UnitInterval => "[0, 1]".into(),
-            Class::OffOrFraction => "(0, 1]".into(),
+            other => other.requirement(),
         }
     }
 }

@@ -1,19 +1,19 @@
 //! The rate law's fast path in `fric_` (issue 4): the exponential-decay law in its lean layout
-//! ([`extended_decay_lean`]: isotropic, elastic stick, no HHT, damping or steady transport),
-//! taken by `fric_general` before the checked path. Like the plain law's `plain_fast`, it
+//! ([`fast_decay_lean`]: isotropic, elastic stick, no HHT, damping or steady transport),
+//! taken by `FricArgs::general` before the checked path. Like the plain law's `plain_fast`, it
 //! tests every pointer and size with a few branches, never builds an error and writes nothing
 //! unless it succeeds; anything else (`LM = 1` on entry, another layout, a NULL, a bad input, a
 //! failed local solve) returns `false` and the checked path starts afresh, names the problem and
 //! lowers `PNEWDT`. The law's arithmetic is `ExtendedCoulomb::update`'s own lean path, so both
-//! paths give the same numbers (`tests/friction_extended.rs`,
-//! `fric_decay_fast_path_agrees_with_the_checked_path`, compares them).
+//! paths give the same numbers (`fric_decay_fast_path_agrees_with_the_careful_path` in
+//! src/props.rs compares them bit for bit on the same arguments).
 
 use std::ffi::c_int;
 
-use super::{FricArgs, get, scale_half};
-use crate::laws::coulomb::{CoulombState, EntryFlag, Increment};
-use crate::laws::coulomb_extended::{ExtendedCoulomb, ExtendedState};
-use crate::props::{COULOMB_EXTENDED_NPROPS, extended_decay_lean};
+use super::{FricArgs, get};
+use crate::laws::coulomb::{CoulombState, EntryFlag};
+use crate::laws::coulomb_extended::{ExtendedCoulomb, ExtendedState, mean_surface_temperature};
+use crate::props::{COULOMB_EXTENDED_NPROPS, fast_decay_lean};
 
 impl FricArgs {
     /// `true` when the call is done (the outputs written), `false` with nothing written.
@@ -33,7 +33,7 @@ impl FricArgs {
                 return false;
             }
             let props = &*self.props.cast::<[f64; COULOMB_EXTENDED_NPROPS]>();
-            let Some(law) = extended_decay_lean(props) else {
+            let Some(law) = fast_decay_lean(props) else {
                 return false;
             };
             match get(self.nstatv) {
@@ -48,9 +48,10 @@ impl FricArgs {
         }
     }
 
-    /// One point with N = NFDIR friction directions: the reads of `point_extended` for this
-    /// layout (no TAULM with `LM = 0`, TEMP only when μ depends on it, no DROT or COORDS), the
-    /// law's lean update, the writes of `point_extended`.
+    /// One point with N = NFDIR friction directions: the increment by the shell's one reader
+    /// (quietly), TEMP only when μ depends on it (this layout has no damping or steady
+    /// transport: no DROT or COORDS, and `STATEV(1..3)` only), the law's lean update, the
+    /// shell's one writer.
     ///
     /// # Safety
     /// As `fric_`, with `NSTATV ≥ 3` checked.
@@ -59,29 +60,14 @@ impl FricArgs {
         // SAFETY (whole body): each pointer is tested for NULL before it is read; arrays of N,
         // N·N, 2N, 2 (TEMP) and NSTATV ≥ 3 entries per the FRIC contract.
         unsafe {
-            let Some(pressure) = get(self.press) else {
-                return false;
-            };
-            let Some(dpressure) = get(self.dpress) else {
-                return false;
-            };
-            let Some(tau) = get(self.tau.cast::<[f64; N]>()) else {
-                return false;
-            };
-            let Some(dgam) = get(self.dgam.cast::<[f64; N]>()) else {
-                return false;
-            };
-            let Some(dtime) = get(self.dtime) else {
-                return false;
-            };
-            let Some(characteristic_length) = get(self.chrlngth) else {
+            let Ok(inc) = self.increment::<N, ()>(EntryFlag::Motion) else {
                 return false;
             };
             let theta = if law.reads_temperature() {
-                let Some([t1, t2]) = get(self.temp.cast::<[f64; 2]>()) else {
+                let Some(temp) = get(self.temp.cast::<[f64; 2]>()) else {
                     return false;
                 };
-                0.5 * (t1 + t2)
+                mean_surface_temperature(temp)
             } else {
                 0.0
             };
@@ -91,21 +77,11 @@ impl FricArgs {
             let Some(coulomb) = CoulombState::from_values(s, rate, status) else {
                 return false;
             };
-            let inc = Increment::<N> {
-                tau,
-                dgam,
-                taulm: [0.0; N],
-                pressure,
-                dpressure,
-                dtime,
-                characteristic_length,
-                entry: EntryFlag::Motion,
-            };
             let state = ExtendedState::<N> {
                 coulomb,
                 viscous: [0.0; N],
             };
-            // (Always `Some` for the laws of `extended_decay_lean`.) An error is named by the
+            // (Always `Some` for the laws of `fast_decay_lean`.) An error is named by the
             // checked path, which meets it again.
             let Some(decay) = law.lean_decay::<N>() else {
                 return false;
@@ -113,11 +89,11 @@ impl FricArgs {
             let Ok(up) = law.isotropic_decay(&inc, theta, &state, decay) else {
                 return false;
             };
-            // DDTDDT(a,1) and DDTDDT(a,2): each surface temperature carries half of ∂τ/∂θ̄.
-            self.outputs()
-                .write_answer(&up.contact, &up.state.coulomb, &scale_half(&up.ddtdtheta));
+            let mut end = [0.0; CoulombState::NSTATV];
+            up.state.coulomb.write_statev(&mut end);
+            self.write_answer(&up.contact, &end, &up.ddtddt_column());
             // (The lean path always converges with no opinion on the step: PNEWDT is left
-            // alone, as `point_extended` leaves it.)
+            // alone, as the checked path leaves it.)
             debug_assert!(!up.outcome.step_ratio.is_finite());
             true
         }
