@@ -16,7 +16,9 @@
 !             `constant` (mu does not depend on the rate), through the extended law's general
 !             path; its checksum must agree with `constant` to round-off
 !   aniso     constant mu, mu2 = PROPS(3) = 0.3: the friction ellipse (scaled variables)
-! Target (issue 4): decay under 3x constant. Usage: bench_rate [NREP [NRUN]] (default 200, 15).
+! Target (issue 4): decay under 3x constant. Usage: bench_rate [NREP [NRUN [ROW]]] (default 200,
+! 15, all rows); ROW (1-6, in the order above) runs that row alone, for counting instructions
+! (scripts/bench-rate-count.sh): no ratios, no checksum comparison.
 module bench_rate_data
   use, intrinsic :: iso_fortran_env, only: dp => real64, int64
   implicit none
@@ -112,7 +114,7 @@ end module bench_rate_data
 program bench_rate
   use bench_rate_data
   implicit none
-  integer :: nrep, nrun, r, w
+  integer :: nrep, nrun, r, w, only
   character(len=32) :: arg
   real(dp) :: best(nrow), t, chk(nrow)
   character(len=*), parameter :: names(nrow) = [character(len=34) :: 'constant', &
@@ -128,7 +130,27 @@ program bench_rate
     call get_command_argument(2, arg)
     read (arg, *) nrun
   end if
+  only = 0
+  if (command_argument_count() >= 3) then
+    call get_command_argument(3, arg)
+    read (arg, *) only
+    if (only < 1 .or. only > nrow) then
+      write (*, '(a,i0)') 'bench_rate: ROW must be 1 to ', nrow
+      error stop 2
+    end if
+  end if
   call prepare()
+  if (only /= 0) then
+    chk = 0
+    best = huge(1.0_dp)
+    do r = 1, nrun
+      call run_loop(only, nrep, chk(only), t)
+      best(only) = min(best(only), t)
+    end do
+    write (*, '(a,a,a,f8.1,a,es22.14)') '| ', trim(names(only)), ' | ', &
+      1.0e9_dp * best(only) / (real(nrep, dp) * npoints), ' ns/call | checksum ', chk(only)
+    stop
+  end if
   best = huge(1.0_dp)
   chk = 0
   do r = 1, nrun
@@ -156,4 +178,5 @@ program bench_rate
   end if
   if (best(2) / best(1) >= 3.0_dp) write (*, '(a)') 'decay path (cold start) above the 3x target'
   if (best(4) / best(1) >= 3.0_dp) write (*, '(a)') 'decay path (warm start) above the 3x target'
+  if (best(3) / best(1) >= 3.0_dp) write (*, '(a)') 'frozen path above the 3x target'
 end program bench_rate

@@ -8,8 +8,10 @@
 # both benchmarks, CASE to bench_fric only)
 # gapcon_ reads its laws from $INTERFACIAL_CONFIG once per process, so bench_gapcon runs three
 # times: with bench/gapcon_bench.toml, bench/gapcon_lookup_1.toml and bench/gapcon_lookup_20.toml.
-# Not part of CMake/CTest on purpose: timings are measurements, not pass/fail tests. Ends by
-# running scripts/bench-batch.sh (batch throughput, docs/benchmarks-batch.md).
+# Not part of CMake/CTest on purpose: timings are measurements, not pass/fail tests. With
+# valgrind, also counts the rate law's instructions per call (scripts/bench-rate-count.sh) and
+# fails at the end if the decay law or frozen μ reaches 3× constant μ. Ends by running
+# scripts/bench-batch.sh (batch throughput, docs/benchmarks-batch.md).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${BENCH_BUILD_DIR:-/tmp/build-bench}"
@@ -53,6 +55,19 @@ echo "== bench_fric${*:+ $*}"
 
 echo "== bench_rate ${1:-200} ${2:-15}"
 ./bench_rate "${1:-200}" "${2:-15}" | tee bench_rate.txt
+
+# The 3x bound of the rate law, in instructions (deterministic), when valgrind is there.
+rate_count_status=0
+if command -v valgrind >/dev/null 2>&1; then
+  echo "== scripts/bench-rate-count.sh"
+  BENCH_BUILD_DIR="$build" "$root/scripts/bench-rate-count.sh" >bench_rate_count.txt ||
+    rate_count_status=$?
+  cat bench_rate_count.txt
+else
+  echo "valgrind is not installed: no instruction counts (scripts/bench-rate-count.sh)" |
+    tee bench_rate_count.txt
+  rate_count_status=2
+fi
 
 # NREP and NRUN only: CASE numbers the rows of bench_fric.
 gapcon_args=("${1:-200}" "${2:-15}")
@@ -255,6 +270,17 @@ bench/bench_rate.f90 target/release/libinterfacial.a ${native_libs[*]}\`; run
 
 EOF
   cat bench_rate.txt
+  cat <<EOF
+
+Instructions per call (callgrind, deterministic, so the bound is checked on a loaded machine):
+[\`scripts/bench-rate-count.sh\`](../scripts/bench-rate-count.sh) runs each row alone
+(\`bench_rate 3 1 ROW\`) and counts \`run_loop\` only (\`--collect-atstart=no
+--toggle-collect='__bench_rate_data_MOD_run_loop'\`), start-up and set-up excluded; it fails
+when the decay law (cold or warm) or frozen μ reaches 3× constant μ (issues 4 and 16), and
+then so does this script.
+
+EOF
+  cat bench_rate_count.txt
 } >"$doc"
 echo "== wrote $doc"
 
@@ -262,3 +288,8 @@ echo "== wrote $doc"
 # runs every benchmark. BENCH_BUILD_DIR is this script's; bench-batch.sh keeps its own default.
 echo "== scripts/bench-batch.sh ${1:-200} ${2:-15}"
 env -u BENCH_BUILD_DIR "$root/scripts/bench-batch.sh" "${1:-200}" "${2:-15}"
+
+if [ "$rate_count_status" -eq 1 ]; then
+  echo "bench.sh: the rate law's instruction count is at or above 3x constant mu (see $doc)" >&2
+  exit 1
+fi

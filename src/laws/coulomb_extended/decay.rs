@@ -106,10 +106,13 @@ impl ExtendedCoulomb {
         let stiffness = k.value / gamma_crit;
         let stiffness_p = k.d_pressure / gamma_crit;
         let stiffness_theta = k.d_temperature / gamma_crit;
-        let stick_crit = if self.frozen {
+        let stick_crit = if !self.frozen {
+            k
+        } else if with_theta {
+            // `critical` multiplies (μ̄·φ·π)·Θ: with Θ on, π and Θ are needed apart.
             self.critical(mbar, start_rate, p, theta)
         } else {
-            k
+            frozen_critical(factor, (r, d), mbar, p, tau_max, start_rate)
         };
         // Rate-following: stick ⇔ |γ̄^el| ≤ γ_crit, on the slips (see `elastic_stick`).
         let sticks = if following {
@@ -407,6 +410,43 @@ fn held_rate_critical(pressure: f64, f: [f64; 3], scaled_mu: f64, tau_max: f64) 
     }
 }
 
+/// τ̄_crit(γ̇₀, p) of μ frozen at the start rate γ̇₀ without a temperature factor (Θ = 1), the
+/// value `critical` gives, inline and bit for bit: `critical` forms μ = ((μ̄·φ(γ̇₀))·π)·Θ and
+/// τ̄_crit = μ·p, ∂τ̄_crit/∂p = μ + ((μ̄·φ)·π')·Θ·p; with Θ = 1, `f` = (π, π', 0) and the
+/// products (μ̄·φ)·π and (μ̄·φ)·π' are the same numbers ((x·π)·1 = x·π). φ is `decay_phi`'s,
+/// which is the φ of `critical` (the same terms from one exponential, 1 at γ̇₀ = 0). The rate
+/// derivatives are left 0: frozen μ does not follow this increment's rate (the slip answer
+/// reads ∂τ̄_crit/∂s as 0 when frozen); ∂/∂θ̄ is 0 with Θ = 1. 0 for p < 0, as `critical`.
+#[inline(always)]
+fn frozen_critical(
+    f: [f64; 3],
+    (r, d): (f64, f64),
+    mbar: f64,
+    p: f64,
+    tau_max: f64,
+    start_rate: f64,
+) -> Critical {
+    if p < 0.0 {
+        return Critical::default();
+    }
+    let m = mbar * decay_phi(r, d, start_rate).0;
+    let mu = m * f[0];
+    if mu * p >= tau_max {
+        Critical {
+            value: tau_max,
+            ..Critical::default()
+        }
+    } else {
+        Critical {
+            value: mu * p,
+            d_rate: 0.0,
+            d_rate2: 0.0,
+            d_pressure: mu + m * f[1] * p,
+            d_temperature: 0.0,
+        }
+    }
+}
+
 /// τ̄_crit = min(A·φ, τ_max), A = μ̄·π·Θ·p, with its partials, from φ and φ' at the rate.
 #[inline(always)]
 fn critical_from_phi(
@@ -691,6 +731,14 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
+    fn tau_max_or_infinity(tau_max: f64) -> f64 {
+        if tau_max > 0.0 {
+            tau_max
+        } else {
+            f64::INFINITY
+        }
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig { cases: 4000, failure_persistence: None, ..ProptestConfig::default() })]
 
@@ -717,6 +765,48 @@ mod tests {
             let e = -2.0 * dphi / c;
             prop_assert!((e - exact).abs() <= 4.0 * f64::EPSILON * exact, "{e:e} vs {exact:e}");
             prop_assert!((phi - (exact + 0.5 * (1.0 - exact))).abs() <= 4.0 * f64::EPSILON);
+        }
+
+        /// Frozen μ's inline strength (`frozen_critical`, no temperature factor) against the
+        /// general `critical` at the same start rate: value and ∂/∂p equal bit for bit (the
+        /// lean path's stresses and tangents must not move), with and without π(p) and
+        /// τ_max, at rest, on both sides of `decay_terms`' switch from `exp_m1` to `exp`, for
+        /// μ_k below and above μ_s and p < 0.
+        #[test]
+        fn frozen_strength_is_critical_bit_for_bit(
+            mu in prop_oneof![1e-3..1.0f64, 1.0..1e3f64],
+            r in prop_oneof![0.0..1.0f64, 1.0..50.0f64],
+            d in prop_oneof![1e-3..1.0f64, 1.0..1e3f64],
+            rate in prop_oneof![Just(0.0), 0.0..0.5f64, 0.0..1e3f64],
+            p in prop_oneof![-10.0..0.0f64, 0.0..1e4f64],
+            p_ref in prop_oneof![Just(0.0), 1e-2..1e4f64],
+            tau_max in prop_oneof![Just(0.0), 1e-2..1e4f64],
+        ) {
+            let mut base = Coulomb::new(mu).unwrap();
+            if tau_max > 0.0 {
+                base = base.with_shear_limit(tau_max).unwrap();
+            }
+            let mut coefficient = CoefficientLaw::default().with_exponential_decay(r, d).unwrap();
+            if p_ref > 0.0 {
+                coefficient = coefficient.with_pressure_reference(p_ref).unwrap();
+            }
+            let law = ExtendedCoulomb::new(base)
+                .with_coefficient_law(coefficient)
+                .with_frozen_coefficient(true);
+            // The rate argument of `decay_terms`, −d·γ̇₀, on both sides of −0.5.
+            let rate = if rate < 0.5 { rate / d } else { rate };
+            let lean = law.lean_decay::<2>().unwrap();
+            let cap = tau_max_or_infinity(tau_max);
+            let general = law.critical(mu, rate, p, 0.0);
+            let inline = frozen_critical(law.coefficient.rate_free(p, 0.0), lean, mu, p, cap, rate);
+            prop_assert_eq!(inline.value.to_bits(), general.value.to_bits(), "{:?} {:?}", inline, general);
+            prop_assert_eq!(
+                inline.d_pressure.to_bits(),
+                general.d_pressure.to_bits(),
+                "{:?} {:?}", inline, general
+            );
+            prop_assert_eq!(inline.d_temperature, 0.0);
+            prop_assert_eq!(general.d_temperature, 0.0);
         }
 
         /// The solve's root against an independent evaluation of the residual with `exp` at the
