@@ -1,0 +1,112 @@
+! harness_threads.f90 -- what the OpenMP harnesses (test_*_omp.f90) share, next to the tally of
+! harness_tally.f90 (which it passes on: a harness that uses this module has check, npass,
+! nfail, dp, last_error and ifl_clear_error too). The Fortran side of c_tests/thread_harness.h.
+!
+! Each OpenMP harness runs the same work twice, once in an OpenMP parallel loop and once
+! serially, and compares the two bit for bit. Shared here:
+!   - lehmer / uniform: the MINSTD generator x <- 48271 x mod (2**31 - 1), seeded per point or
+!     per block by the harness, so a draw never depends on the thread that makes it;
+!   - digest: two multiplicative hashes mod 2**31 - 1 over the 32-bit halves of each value's bit
+!     pattern (h(1), h(2)), for a real, an array of reals or a 64-bit pattern; digest_of(h)
+!     folds them into one 62-bit number; same_bits compares two reals bit for bit;
+!   - shrink_factor: INTERFACIAL_TEST_SHRINK=n (valgrind runs), clamped;
+!   - report_kinds / report_violations: a run's counts and its first violation, printed.
+! No OpenMP directive lives here (this module is built without -fopenmp): the parallel loop and
+! the critical section around a harness's first violation stay in the harness.
+module harness_threads
+  use, intrinsic :: iso_fortran_env, only: int64
+  use harness_tally
+  implicit none
+  ! OMP_NUM_THREADS set by CTest; at least this many threads must have done work.
+  integer, parameter :: nthreads_min = 8
+  integer(int64), parameter :: lehmer_m = 2147483647_int64
+
+  interface digest
+    module procedure digest_bits, digest_real, digest_reals
+  end interface digest
+
+contains
+
+  integer(int64) function lehmer(x)
+    integer(int64), intent(inout) :: x
+    x = mod(48271_int64*x, lehmer_m)
+    lehmer = x
+  end function lehmer
+
+  ! Uniform in [lo, hi) from the generator's next value.
+  real(dp) function uniform(x, lo, hi)
+    integer(int64), intent(inout) :: x
+    real(dp), intent(in) :: lo, hi
+    uniform = lo + (hi - lo)*(real(lehmer(x) - 1_int64, dp)/real(lehmer_m - 1_int64, dp))
+  end function uniform
+
+  ! Folds a 64-bit pattern into the two hashes (no product exceeds 2**48).
+  subroutine digest_bits(h, bits)
+    integer(int64), intent(inout) :: h(2)
+    integer(int64), intent(in) :: bits
+    integer(int64) :: lo, hi
+    lo = iand(bits, 4294967295_int64)
+    hi = iand(ishft(bits, -32), 4294967295_int64)
+    h(1) = mod(mod(h(1)*48271_int64 + lo, lehmer_m)*48271_int64 + hi, lehmer_m)
+    h(2) = mod(mod(h(2)*16807_int64 + hi, lehmer_m)*16807_int64 + lo, lehmer_m)
+  end subroutine digest_bits
+
+  subroutine digest_real(h, v)
+    integer(int64), intent(inout) :: h(2)
+    real(dp), intent(in) :: v
+    call digest_bits(h, transfer(v, 0_int64))
+  end subroutine digest_real
+
+  subroutine digest_reals(h, v)
+    integer(int64), intent(inout) :: h(2)
+    real(dp), intent(in) :: v(:)
+    integer :: i
+    do i = 1, size(v)
+      call digest_bits(h, transfer(v(i), 0_int64))
+    end do
+  end subroutine digest_reals
+
+  ! The two hashes as one number below 2**62.
+  integer(int64) function digest_of(h)
+    integer(int64), intent(in) :: h(2)
+    digest_of = h(1)*lehmer_m + h(2)
+  end function digest_of
+
+  logical function same_bits(a, b)
+    real(dp), intent(in) :: a, b
+    same_bits = transfer(a, 0_int64) == transfer(b, 0_int64)
+  end function same_bits
+
+  ! INTERFACIAL_TEST_SHRINK=n divides a harness's size by n; at most max_shrink, at least 1.
+  integer function shrink_factor(max_shrink)
+    integer, intent(in) :: max_shrink
+    character(len=32) :: v
+    integer :: stat, n
+    shrink_factor = 1
+    call get_environment_variable('INTERFACIAL_TEST_SHRINK', v, status=stat)
+    if (stat /= 0) return
+    read (v, *, iostat=stat) n
+    if (stat /= 0 .or. n < 1) return
+    shrink_factor = min(n, max_shrink)
+  end function shrink_factor
+
+  ! "<run>: <head>; <name> <count> ..." on one line.
+  subroutine report_kinds(run, head, names, kinds)
+    character(len=*), intent(in) :: run, head, names(:)
+    integer(int64), intent(in) :: kinds(:)
+    integer :: k
+    write (*, '(a,a,a,a)', advance='no') run, ': ', head, ';'
+    do k = 1, size(kinds)
+      write (*, '(1x,a,1x,i0)', advance='no') trim(names(k)), kinds(k)
+    end do
+    write (*, '()')
+  end subroutine report_kinds
+
+  ! "  <run>: <bad> violations, first: <first>" when there was one.
+  subroutine report_violations(run, bad, first)
+    character(len=*), intent(in) :: run, first
+    integer, intent(in) :: bad
+    if (bad > 0) write (*, '(a,a,a,i0,a,a)') '  ', run, ': ', bad, ' violations, first: ', &
+      trim(first)
+  end subroutine report_violations
+end module harness_threads
