@@ -12,7 +12,9 @@
 !   - shrink_factor: INTERFACIAL_TEST_SHRINK=n (valgrind runs), clamped;
 !   - report_kinds / report_violations: a run's counts and its first violation, printed.
 ! No OpenMP directive lives here (this module is built without -fopenmp): the parallel loop and
-! the critical section around a harness's first violation stay in the harness.
+! the critical section around a harness's first violation stay in the harness. The procedures
+! the threads call are RECURSIVE, so their locals live on each thread's stack even without
+! -fopenmp (and -fcheck=recursion does not take two threads in one for a recursion).
 module harness_threads
   use, intrinsic :: iso_fortran_env, only: int64
   use harness_tally
@@ -27,21 +29,21 @@ module harness_threads
 
 contains
 
-  integer(int64) function lehmer(x)
+  recursive integer(int64) function lehmer(x)
     integer(int64), intent(inout) :: x
     x = mod(48271_int64*x, lehmer_m)
     lehmer = x
   end function lehmer
 
   ! Uniform in [lo, hi) from the generator's next value.
-  real(dp) function uniform(x, lo, hi)
+  recursive real(dp) function uniform(x, lo, hi)
     integer(int64), intent(inout) :: x
     real(dp), intent(in) :: lo, hi
     uniform = lo + (hi - lo)*(real(lehmer(x) - 1_int64, dp)/real(lehmer_m - 1_int64, dp))
   end function uniform
 
   ! Folds a 64-bit pattern into the two hashes (no product exceeds 2**48).
-  subroutine digest_bits(h, bits)
+  recursive subroutine digest_bits(h, bits)
     integer(int64), intent(inout) :: h(2)
     integer(int64), intent(in) :: bits
     integer(int64) :: lo, hi
@@ -51,13 +53,13 @@ contains
     h(2) = mod(mod(h(2)*16807_int64 + hi, lehmer_m)*16807_int64 + lo, lehmer_m)
   end subroutine digest_bits
 
-  subroutine digest_real(h, v)
+  recursive subroutine digest_real(h, v)
     integer(int64), intent(inout) :: h(2)
     real(dp), intent(in) :: v
     call digest_bits(h, transfer(v, 0_int64))
   end subroutine digest_real
 
-  subroutine digest_reals(h, v)
+  recursive subroutine digest_reals(h, v)
     integer(int64), intent(inout) :: h(2)
     real(dp), intent(in) :: v(:)
     integer :: i
@@ -67,12 +69,12 @@ contains
   end subroutine digest_reals
 
   ! The two hashes as one number below 2**62.
-  integer(int64) function digest_of(h)
+  recursive integer(int64) function digest_of(h)
     integer(int64), intent(in) :: h(2)
     digest_of = h(1)*lehmer_m + h(2)
   end function digest_of
 
-  logical function same_bits(a, b)
+  recursive logical function same_bits(a, b)
     real(dp), intent(in) :: a, b
     same_bits = transfer(a, 0_int64) == transfer(b, 0_int64)
   end function same_bits
