@@ -10,7 +10,11 @@
 !     pattern (h(1), h(2)), for a real, an array of reals or a 64-bit pattern; digest_of(h)
 !     folds them into one 62-bit number; same_bits compares two reals bit for bit;
 !   - shrink_factor: INTERFACIAL_TEST_SHRINK=n (valgrind runs), clamped;
-!   - report_kinds / report_violations: a run's counts and its first violation, printed.
+!   - report_kinds / report_violations: a run's counts and its first violation, printed;
+!     judge_run: both, and the check that the run had no violation;
+!   - compare_point_runs: the end of a harness of points carried over increments (FRIC, UINTER):
+!     every kind of call well represented, the same counts, every call's digest and every
+!     point's final record bit for bit; finish: the last line and the exit status.
 ! No OpenMP directive lives here (this module is built without -fopenmp): the parallel loop and
 ! the critical section around a harness's first violation stay in the harness. The procedures
 ! the threads call are RECURSIVE, so their locals live on each thread's stack even without
@@ -111,4 +115,54 @@ contains
     if (bad > 0) write (*, '(a,a,a,i0,a,a)') '  ', run, ': ', bad, ' violations, first: ', &
       trim(first)
   end subroutine report_violations
+
+  ! A run's counts ("<calls> calls; <kind> <count> ...") and its first violation printed, and
+  ! checked that it had none.
+  subroutine judge_run(run, names, kinds, calls, bad, first)
+    character(len=*), intent(in) :: run, names(:), first
+    integer(int64), intent(in) :: kinds(:), calls
+    integer, intent(in) :: bad
+    character(len=32) :: head
+    write (head, '(i0,a)') calls, ' calls'
+    call report_kinds(run, trim(head), names, kinds)
+    call report_violations(run, bad, first)
+    call check(bad == 0, 'every '//run//' call obeys the law')
+  end subroutine judge_run
+
+  ! The two runs of a point harness against each other: enough calls of each kind in the serial
+  ! run (at least one and 1 in 2000), the same counts of each kind, the digest of every call
+  ! (dig(increment, point)) and the final record of every point (fin(:, point)) bit for bit.
+  subroutine compare_point_runs(entry, nworkers, names, kinds_par, kinds_ser, dig_par, dig_ser, &
+                                fin_par, fin_ser)
+    character(len=*), intent(in) :: entry, names(:)
+    integer, intent(in) :: nworkers
+    integer(int64), intent(in) :: kinds_par(:), kinds_ser(:), dig_par(:, :), dig_ser(:, :)
+    real(dp), intent(in) :: fin_par(:, :), fin_ser(:, :)
+    integer(int64) :: calls
+    integer :: k, ip, ndiff, nfin, nrec
+    calls = int(size(dig_ser), int64)
+    do k = 1, size(kinds_ser)
+      call check(kinds_ser(k) > 0 .and. kinds_ser(k) >= calls/2000, &
+                 'serial run: enough calls of kind '//trim(names(k)))
+    end do
+    ndiff = count(dig_par /= dig_ser)
+    nrec = size(fin_ser, 1)
+    nfin = 0
+    do ip = 1, size(fin_ser, 2)
+      if (any(transfer(fin_par(:, ip), 0_int64, nrec) /= transfer(fin_ser(:, ip), 0_int64, nrec))) &
+        nfin = nfin + 1
+    end do
+    call check(all(kinds_par == kinds_ser), 'same counts of each kind in both runs')
+    call check(ndiff == 0, 'every call: outputs bit for bit equal to the serial run')
+    call check(nfin == 0, 'every point: final state bit for bit equal to the serial run')
+    write (*, '(i0,a,a,a,i0,a,i0,a,i0,a,i0,a)') calls, ' ', entry, ' calls on ', nworkers, &
+      ' OpenMP threads and ', calls, ' serial: ', ndiff, ' calls and ', nfin, &
+      ' final states differ'
+  end subroutine compare_point_runs
+
+  ! The last line, "<n> passed, <m> failed", and ERROR STOP on a failure.
+  subroutine finish()
+    write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
+    if (nfail > 0) error stop 1
+  end subroutine finish
 end module harness_threads

@@ -245,6 +245,5 @@ program test_fric_coef_omp
     ' OpenMP threads and serially: ', ndiff, ' blocks differ'
 
   deallocate (dig_par, dig_ser, law_par, law_ser, n_par, n_ser, worked)
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 end program test_fric_coef_omp

@@ -214,6 +214,5 @@ program test_gapcon_omp
     ' checked by hand'
 
   deallocate (ak_par, ak_ser, ok_par, ok_ser, worked)
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 end program test_gapcon_omp

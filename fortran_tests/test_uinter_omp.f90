@@ -205,21 +205,13 @@ contains
       !$omp end critical (uinter_omp_fault)
     end subroutine fault
   end subroutine run_point
-
-  subroutine report(run, kinds, calls)
-    character(len=*), intent(in) :: run
-    integer(int64), intent(in) :: kinds(n_kinds), calls
-    character(len=32) :: head
-    write (head, '(i0,a)') calls, ' calls'
-    call report_kinds(run, trim(head), kind_names, kinds)
-  end subroutine report
 end module uinter_omp_support
 
 program test_uinter_omp
   use uinter_omp_support
   use omp_lib, only: omp_get_thread_num, omp_get_max_threads
   implicit none
-  integer :: npoints, ip, k, bad_par, bad_ser, nworkers, ndiff, nfin
+  integer :: npoints, ip, bad_par, bad_ser, nworkers
   integer(int64), allocatable :: dig_par(:, :), dig_ser(:, :)
   real(dp), allocatable :: fin_par(:, :), fin_ser(:, :)
   integer(int64) :: kinds_par(n_kinds), kinds_ser(n_kinds), calls
@@ -244,35 +236,15 @@ program test_uinter_omp
   end do
   !$omp end parallel do
   nworkers = count(worked)
-  call report('OpenMP', kinds_par, calls)
+  call judge_run('OpenMP', kind_names, kinds_par, calls, bad_par, first_par)
   call check(nworkers >= nthreads_min, 'at least 8 OpenMP threads did work')
-  call report_violations('OpenMP', bad_par, first_par)
-  call check(bad_par == 0, 'every OpenMP call obeys the law')
 
   do ip = 1, npoints
     call run_point(ip, dig_ser(:, ip), fin_ser(:, ip), kinds_ser, bad_ser, first_ser)
   end do
-  call report('serial', kinds_ser, calls)
-  call report_violations('serial', bad_ser, first_ser)
-  call check(bad_ser == 0, 'every serial call obeys the law')
-  do k = 1, n_kinds
-    call check(kinds_ser(k) > 0 .and. kinds_ser(k) >= calls/2000, &
-               'serial run: enough calls of kind '//trim(kind_names(k)))
-  end do
-
-  ndiff = count(dig_par /= dig_ser)
-  nfin = 0
-  do ip = 1, npoints
-    if (any(transfer(fin_par(:, ip), 0_int64, nrec) /= transfer(fin_ser(:, ip), 0_int64, nrec))) &
-      nfin = nfin + 1
-  end do
-  call check(all(kinds_par == kinds_ser), 'same counts of each kind in both runs')
-  call check(ndiff == 0, 'every call: outputs bit for bit equal to the serial run')
-  call check(nfin == 0, 'every point: final state bit for bit equal to the serial run')
-  write (*, '(i0,a,i0,a,i0,a,i0,a,i0,a)') calls, ' UINTER calls on ', nworkers, &
-    ' OpenMP threads and ', calls, ' serial: ', ndiff, ' calls and ', nfin, &
-    ' final states differ'
+  call judge_run('serial', kind_names, kinds_ser, calls, bad_ser, first_ser)
+  call compare_point_runs('UINTER', nworkers, kind_names, kinds_par, kinds_ser, dig_par, dig_ser, &
+                          fin_par, fin_ser)
   deallocate (dig_par, dig_ser, fin_par, fin_ser, worked)
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 end program test_uinter_omp

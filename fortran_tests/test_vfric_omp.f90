@@ -272,6 +272,5 @@ program test_vfric_omp
     ' OpenMP threads and serially: ', ndiff, ' blocks differ'
 
   deallocate (dig_par, dig_ser, kind_par, kind_ser, n_par, n_ser, b_par, b_ser, worked)
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 end program test_vfric_omp
