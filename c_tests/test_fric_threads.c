@@ -346,93 +346,33 @@ static void final_of(const contact *c, final_rec *f)
     f->lm = c->lm;
 }
 
-/* Where a run writes: digests[point * INCS + inc] and finals[point]. */
-typedef struct {
-    uint64_t *digests;
-    final_rec *finals;
-} run_out;
-
-/* Points [first, last) of one run into its run_out (ctx). */
-static void run_points(int first, int last, void *ctx, th_tally *t)
+/* One point of one run: INCS increments into digests[inc], the final outputs into *fin. */
+static void run_point(int p, uint64_t *digests, void *fin, th_tally *t)
 {
-    run_out *out = ctx;
-    int p, k;
-    for (p = first; p < last; p++) {
-        contact c;
-        if (!contact_init(&c, p, t)) {
-            contact_free(&c);
-            continue;
-        }
-        for (k = 0; k < INCS; k++) {
-            out->digests[(size_t)p * INCS + (size_t)k] = increment(&c, p, k, t);
-        }
-        final_of(&c, &out->finals[p]);
+    contact c;
+    int k;
+    if (!contact_init(&c, p, t)) {
         contact_free(&c);
+        return;
     }
+    for (k = 0; k < INCS; k++) {
+        digests[k] = increment(&c, p, k, t);
+    }
+    final_of(&c, fin);
+    contact_free(&c);
 }
 
-static void report_tally(const char *run, const th_tally *t, long calls)
+static void report_tally(const char *run, const th_tally *t)
 {
     char head[48];
-    snprintf(head, sizeof head, "%ld calls", calls);
+    snprintf(head, sizeof head, "%ld calls", (long)t->points);
     th_report(run, head, t, KIND_NAMES, N_KINDS, "");
 }
 
 int main(void)
 {
-    int points = FULL_POINTS / th_shrink_factor(FULL_POINTS / MIN_POINTS), i, k;
-    size_t calls = (size_t)points * INCS;
-    uint64_t *dig_par = calloc(calls, sizeof *dig_par), *dig_ser = calloc(calls, sizeof *dig_ser);
-    final_rec *fin_par = calloc((size_t)points, sizeof *fin_par);
-    final_rec *fin_ser = calloc((size_t)points, sizeof *fin_ser);
-    run_out out_par = {dig_par, fin_par}, out_ser = {dig_ser, fin_ser};
-    th_tally par, ser;
-
-    fh_context("allocation");
-    if (!FH_CHECK(dig_par != NULL && dig_ser != NULL && fin_par != NULL && fin_ser != NULL)) {
-        return fh_finish();
-    }
-    memset(&par, 0, sizeof par);
-    memset(&ser, 0, sizeof ser);
-
-    fh_context("%d threads, %d points x %d increments", TH_THREADS, points, INCS);
-    if (!FH_CHECK(th_run_threads(points, run_points, &out_par, &par))) {
-        return fh_finish(); /* the barrier would never open */
-    }
-    report_tally("8 threads", &par, (long)calls);
-    FH_CHECK(par.alloc_fail == 0);
-    FH_CHECK(par.violations == 0);
-    FH_CHECK(par.msg_bad == 0);
-
-    fh_context("serial run");
-    run_points(0, points, &out_ser, &ser);
-    report_tally("serial", &ser, (long)calls);
-    FH_CHECK(ser.alloc_fail == 0);
-    FH_CHECK(ser.violations == 0);
-    FH_CHECK(ser.msg_bad == 0);
-    /* Each kind of call is well represented (at least 1 in 2000 calls, at least once). */
-    for (k = 0; k < N_KINDS; k++) {
-        fh_context("serial run: %s calls", KIND_NAMES[k]);
-        FH_CHECK(ser.kinds[k] > 0 && ser.kinds[k] >= (long)(calls / 2000));
-    }
-
-    fh_context("8 threads against serial, bit for bit");
-    FH_CHECK(memcmp(par.kinds, ser.kinds, sizeof par.kinds) == 0);
-    {
-        long diff = th_count_differences(dig_par, dig_ser, calls, INCS, "point", "increment");
-        long fdiff = 0;
-        for (i = 0; i < points; i++) {
-            fdiff += memcmp(&fin_par[i], &fin_ser[i], sizeof fin_par[i]) != 0;
-        }
-        FH_CHECK(memcmp(dig_par, dig_ser, calls * sizeof *dig_par) == 0);
-        FH_CHECK(diff == 0);
-        FH_CHECK(fdiff == 0);
-        printf("%zu fric_ calls on %d threads and %zu serial: %ld calls and %ld final states "
-               "differ\n", calls, TH_THREADS, calls, diff, fdiff);
-    }
-    free(dig_par);
-    free(dig_ser);
-    free(fin_par);
-    free(fin_ser);
+    int points = FULL_POINTS / th_shrink_factor(FULL_POINTS / MIN_POINTS);
+    th_point_runs("fric_", points, INCS, run_point, sizeof(final_rec), report_tally, KIND_NAMES,
+                  N_KINDS);
     return fh_finish();
 }

@@ -71,8 +71,9 @@ static double *block(size_t n)
 }
 
 /* One point, all increments; digests[inc] per call, final state in *fin. */
-static void run_point(int ip, uint64_t *digests, final_rec *fin, th_tally *t)
+static void run_point(int ip, uint64_t *digests, void *fin_out, th_tally *t)
 {
+    final_rec *fin = fin_out;
     uint32_t rng = 1u + (uint32_t)ip * 7919u;
     const int ndir = (th_lehmer(&rng) & 1u) ? 3 : 2;
     const int nstatv = (th_lehmer(&rng) & 1u) ? 5 : 3;
@@ -263,41 +264,20 @@ static void run_point(int ip, uint64_t *digests, final_rec *fin, th_tally *t)
     free(drot);
 }
 
-/* Where a run writes: digests[point * INCS + inc] and finals[point]. */
-typedef struct {
-    uint64_t *digests;
-    final_rec *finals;
-} run_out;
-
-static void run_points(int first, int last, void *ctx, th_tally *t)
-{
-    run_out *out = ctx;
-    int ip;
-    for (ip = first; ip < last; ip++) {
-        run_point(ip, out->digests + (size_t)ip * INCS, out->finals + ip, t);
-    }
-}
-
-static void report_tally(const char *run, const th_tally *t, long calls)
+static void report_tally(const char *run, const th_tally *t)
 {
     char head[48];
-    snprintf(head, sizeof head, "%ld calls", calls);
+    snprintf(head, sizeof head, "%ld calls", (long)t->points);
     th_report(run, head, t, KIND_NAMES, N_KINDS, "");
 }
 
 int main(int argc, char **argv)
 {
     const char *path = argc > 1 ? argv[1] : "uinter_threads.toml";
-    int points = FULL_POINTS / th_shrink_factor(FULL_POINTS / MIN_POINTS), k;
-    size_t calls = (size_t)points * INCS;
-    uint64_t *dig_par = calloc(calls, sizeof *dig_par), *dig_ser = calloc(calls, sizeof *dig_ser);
-    final_rec *fin_par = calloc((size_t)points, sizeof *fin_par);
-    final_rec *fin_ser = calloc((size_t)points, sizeof *fin_ser);
-    run_out out_par = {dig_par, fin_par}, out_ser = {dig_ser, fin_ser};
-    th_tally par, ser;
+    int points = FULL_POINTS / th_shrink_factor(FULL_POINTS / MIN_POINTS);
     FILE *f;
 
-    fh_context("configuration and allocation");
+    fh_context("configuration");
     f = fopen(path, "w");
     if (!FH_CHECK(f != NULL)) {
         return fh_finish();
@@ -307,34 +287,7 @@ int main(int argc, char **argv)
           f);
     fclose(f);
     setenv("INTERFACIAL_CONFIG", path, 1);
-    if (!FH_CHECK(dig_par != NULL && dig_ser != NULL && fin_par != NULL && fin_ser != NULL)) {
-        return fh_finish();
-    }
-    memset(&par, 0, sizeof par);
-    memset(&ser, 0, sizeof ser);
-
-    fh_context("%d threads, %d points x %d increments", TH_THREADS, points, INCS);
-    if (!FH_CHECK(th_run_threads(points, run_points, &out_par, &par))) {
-        return fh_finish();
-    }
-    report_tally("8 threads", &par, (long)calls);
-    FH_CHECK(par.violations == 0);
-
-    fh_context("serial run");
-    run_points(0, points, &out_ser, &ser);
-    report_tally("serial", &ser, (long)calls);
-    FH_CHECK(ser.violations == 0);
-    for (k = 0; k < N_KINDS; k++) {
-        fh_context("kind '%s' occurs in at least 1 of 2000 calls", KIND_NAMES[k]);
-        FH_CHECK(ser.kinds[k] >= 1 && ser.kinds[k] * 2000 >= (long)calls);
-        FH_CHECK(par.kinds[k] == ser.kinds[k]);
-    }
-    fh_context("bit for bit: %zu digests, %d final states", calls, points);
-    FH_CHECK(memcmp(dig_par, dig_ser, calls * sizeof *dig_par) == 0);
-    FH_CHECK(memcmp(fin_par, fin_ser, (size_t)points * sizeof *fin_par) == 0);
-    free(dig_par);
-    free(dig_ser);
-    free(fin_par);
-    free(fin_ser);
+    th_point_runs("uinter_", points, INCS, run_point, sizeof(final_rec), report_tally, KIND_NAMES,
+                  N_KINDS);
     return fh_finish();
 }

@@ -12,7 +12,10 @@
  *     in words), th_violation to record one, th_report to print a run's counts;
  *   - th_run_threads: split [0, n) into TH_THREADS contiguous ranges, run a harness's range
  *     function on each from the start barrier, join, and add up the threads' tallies;
- *   - th_count_differences: how many digests differ between the runs, the first few printed.
+ *   - th_count_differences: how many digests differ between the runs, the first few printed;
+ *   - th_block_runs / th_point_runs: both runs of a harness whose item writes one digest (a
+ *     block of points) or a digest per increment and a final record (a point carried over
+ *     increments), each run reported and checked, then compared bit for bit.
  * What a harness checks (the law, the messages, which outputs are digested) stays in it.
  */
 #ifndef THREAD_HARNESS_H
@@ -24,6 +27,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "harness.h"
 
 #if defined(__GNUC__)
 #define TH_PRINTF(fmt_index, first_arg) __attribute__((format(printf, fmt_index, first_arg)))
@@ -195,6 +200,148 @@ static inline long th_count_differences(const uint64_t *par, const uint64_t *ser
         }
     }
     return diff;
+}
+
+
+/* A run's report: "<run>: <counts> ..." (th_report with the harness's own head). */
+typedef void (*th_report_fn)(const char *run, const th_tally *t);
+
+/* The checks every run makes of its own tally. */
+static inline void th_check_run(const th_tally *t)
+{
+    FH_CHECK(t->alloc_fail == 0);
+    FH_CHECK(t->violations == 0);
+    FH_CHECK(t->msg_bad == 0);
+}
+
+/*
+ * Both runs of a harness whose item b (a block) writes one digest, digests[b] (ctx of fn is the
+ * digest array): on TH_THREADS threads, then serially on this thread; each reported and checked
+ * (no allocation failure, no violation, no bad message); then the same digests, the same counts
+ * of each kind, of points and of bad points. par and ser receive the runs' tallies. Returns 0
+ * when the harness must stop at once (no memory, or a thread not created).
+ */
+static inline int th_block_runs(int n, th_range_fn fn, th_report_fn report, th_tally *par,
+                                th_tally *ser)
+{
+    uint64_t *dig_par = calloc((size_t)n, sizeof *dig_par);
+    uint64_t *dig_ser = calloc((size_t)n, sizeof *dig_ser);
+    long diff;
+
+    memset(par, 0, sizeof *par);
+    memset(ser, 0, sizeof *ser);
+    fh_context("allocation");
+    if (!FH_CHECK(dig_par != NULL && dig_ser != NULL)) {
+        return 0;
+    }
+    fh_context("%d threads, %d blocks", TH_THREADS, n);
+    if (!FH_CHECK(th_run_threads(n, fn, dig_par, par))) {
+        return 0; /* the barrier would never open */
+    }
+    report("8 threads", par);
+    th_check_run(par);
+
+    fh_context("serial run");
+    fn(0, n, dig_ser, ser);
+    report("serial", ser);
+    th_check_run(ser);
+
+    fh_context("8 threads against the serial run");
+    FH_CHECK(memcmp(dig_par, dig_ser, sizeof *dig_par * (size_t)n) == 0);
+    FH_CHECK(memcmp(par->kinds, ser->kinds, sizeof par->kinds) == 0);
+    FH_CHECK(par->points == ser->points);
+    FH_CHECK(par->bad_points == ser->bad_points);
+    diff = th_count_differences(dig_par, dig_ser, (size_t)n, 1, "block", "");
+    printf("blocks whose outputs differ between the runs: %ld of %d\n", diff, n);
+    free(dig_par);
+    free(dig_ser);
+    return 1;
+}
+
+/* A point carried over incs increments: digests[inc] for each call, its final record in *fin
+ * (th_points counts the calls in the tally's points). */
+typedef void (*th_point_fn)(int point, uint64_t *digests, void *fin, th_tally *t);
+
+typedef struct {
+    th_point_fn point;
+    int incs;
+    size_t fin_size;
+    uint64_t *digests; /* [point * incs + inc] */
+    unsigned char *finals; /* [point * fin_size] */
+} th_point_run;
+
+static inline void th_points(int first, int last, void *ctx, th_tally *t)
+{
+    th_point_run *r = ctx;
+    int p;
+    for (p = first; p < last; p++) {
+        r->point(p, r->digests + (size_t)p * (size_t)r->incs, r->finals + (size_t)p * r->fin_size,
+                 t);
+        t->points += r->incs; /* calls */
+    }
+}
+
+/*
+ * Both runs of a harness of n points over incs increments (the entry point is named in the
+ * summary line): on TH_THREADS threads, then serially; each reported and checked; every kind of
+ * call (names[0..n_kinds)) at least once and in at least 1 in 2000 calls of the serial run; then
+ * the same counts, every call's digest and every point's final record (fin_size bytes, zero-padded
+ * by the harness) bit for bit. Returns 0 when the harness must stop at once.
+ */
+static inline int th_point_runs(const char *entry, int n, int incs, th_point_fn point,
+                                size_t fin_size, th_report_fn report, const char *const *names,
+                                int n_kinds)
+{
+    size_t calls = (size_t)n * (size_t)incs;
+    th_point_run par_run = {point, incs, fin_size, calloc(calls, sizeof(uint64_t)),
+                            calloc((size_t)n, fin_size)};
+    th_point_run ser_run = {point, incs, fin_size, calloc(calls, sizeof(uint64_t)),
+                            calloc((size_t)n, fin_size)};
+    th_tally par, ser;
+    long diff, fdiff = 0;
+    int p, k;
+
+    memset(&par, 0, sizeof par);
+    memset(&ser, 0, sizeof ser);
+    fh_context("allocation");
+    if (!FH_CHECK(par_run.digests != NULL && par_run.finals != NULL && ser_run.digests != NULL &&
+                  ser_run.finals != NULL)) {
+        return 0;
+    }
+    fh_context("%d threads, %d points x %d increments", TH_THREADS, n, incs);
+    if (!FH_CHECK(th_run_threads(n, th_points, &par_run, &par))) {
+        return 0; /* the barrier would never open */
+    }
+    report("8 threads", &par);
+    th_check_run(&par);
+
+    fh_context("serial run");
+    th_points(0, n, &ser_run, &ser);
+    report("serial", &ser);
+    th_check_run(&ser);
+    for (k = 0; k < n_kinds; k++) {
+        fh_context("serial run: %s calls", names[k]);
+        FH_CHECK(ser.kinds[k] > 0 && ser.kinds[k] >= (long)(calls / 2000));
+    }
+
+    fh_context("8 threads against serial, bit for bit");
+    FH_CHECK(par.points == (long)calls && ser.points == (long)calls);
+    FH_CHECK(memcmp(par.kinds, ser.kinds, sizeof par.kinds) == 0);
+    diff = th_count_differences(par_run.digests, ser_run.digests, calls, (size_t)incs, "point",
+                                "increment");
+    for (p = 0; p < n; p++) {
+        fdiff += memcmp(par_run.finals + (size_t)p * fin_size,
+                        ser_run.finals + (size_t)p * fin_size, fin_size) != 0;
+    }
+    FH_CHECK(diff == 0);
+    FH_CHECK(fdiff == 0);
+    printf("%zu %s calls on %d threads and %zu serial: %ld calls and %ld final states differ\n",
+           calls, entry, TH_THREADS, calls, diff, fdiff);
+    free(par_run.digests);
+    free(par_run.finals);
+    free(ser_run.digests);
+    free(ser_run.finals);
+    return 1;
 }
 
 #endif
