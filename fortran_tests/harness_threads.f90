@@ -14,7 +14,8 @@
 !     judge_run: both, and the check that the run had no violation;
 !   - compare_point_runs: the end of a harness of points carried over increments (FRIC, UINTER):
 !     every kind of call well represented, the same counts, every call's digest and every
-!     point's final record bit for bit; finish: the last line and the exit status.
+!     point's final record bit for bit; compare_block_runs: the same for a harness of blocks
+!     (FRIC_COEF, VFRIC); finish: the last line and the exit status.
 ! No OpenMP directive lives here (this module is built without -fopenmp): the parallel loop and
 ! the critical section around a harness's first violation stay in the harness. The procedures
 ! the threads call are RECURSIVE, so their locals live on each thread's stack even without
@@ -159,6 +160,34 @@ contains
       ' OpenMP threads and ', calls, ' serial: ', ndiff, ' calls and ', nfin, &
       ' final states differ'
   end subroutine compare_point_runs
+
+  ! The two runs of a block harness against each other: every kind of block (names) in at
+  ! least 1 in 2 n_kinds blocks, at least 1M point evaluations at full size (divided by
+  ! shrink), the same kind and size of every block, and every block's digest bit for bit.
+  subroutine compare_block_runs(entry, nworkers, shrink, names, kind_par, kind_ser, n_par, &
+                                n_ser, dig_par, dig_ser)
+    character(len=*), intent(in) :: entry, names(:)
+    integer, intent(in) :: nworkers, shrink, kind_par(:), kind_ser(:), n_par(:), n_ser(:)
+    integer(int64), intent(in) :: dig_par(:, :), dig_ser(:, :)
+    integer(int64) :: points
+    integer :: k, nblocks, ndiff
+    nblocks = size(kind_par)
+    points = sum(int(n_par, int64))
+    write (*, '(a,i0,a,i0,a)', advance='no') 'blocks ', nblocks, ', point evaluations ', &
+      points, ', per kind:'
+    do k = 1, size(names)
+      write (*, '(1x,a,1x,i0)', advance='no') trim(names(k)), count(kind_par == k)
+      call check(count(kind_par == k) >= nblocks/(2*size(names)), 'enough blocks of kind '// &
+                 trim(names(k)))
+    end do
+    write (*, '()')
+    call check(points >= 1000000_int64/shrink, 'at least 1M point evaluations (full size)')
+    call check(all(kind_par == kind_ser) .and. all(n_par == n_ser), 'same blocks in both runs')
+    ndiff = count(dig_par(1, :) /= dig_ser(1, :) .or. dig_par(2, :) /= dig_ser(2, :))
+    call check(ndiff == 0, 'every block: outputs bit for bit equal to the serial run')
+    write (*, '(i0,a,a,a,i0,a,i0,a)') nblocks, ' ', entry, ' blocks on ', nworkers, &
+      ' OpenMP threads and serially: ', ndiff, ' blocks differ'
+  end subroutine compare_block_runs
 
   ! The last line, "<n> passed, <m> failed", and ERROR STOP on a failure.
   subroutine finish()

@@ -192,12 +192,11 @@ program test_fric_coef_omp
   use fric_coef_omp_support
   use omp_lib, only: omp_get_thread_num, omp_get_max_threads
   implicit none
-  integer :: nblocks, ib, k, bad_par, bad_ser, nworkers, ndiff, shrink
+  integer :: nblocks, ib, bad_par, bad_ser, nworkers, shrink
   integer(int64), allocatable :: dig_par(:, :), dig_ser(:, :)
   integer, allocatable :: law_par(:), law_ser(:), n_par(:), n_ser(:)
   logical, allocatable :: worked(:)
   character(len=256) :: first_par, first_ser
-  integer(int64) :: points
 
   shrink = shrink_factor(full_blocks/min_blocks)
   nblocks = full_blocks/shrink
@@ -228,21 +227,8 @@ program test_fric_coef_omp
   call report_violations('serial', bad_ser, first_ser)
   call check(bad_ser == 0, 'every serial block matches the closed form')
 
-  points = sum(int(n_par, int64))
-  write (*, '(a,i0,a,i0,a)', advance='no') 'blocks ', nblocks, ', point evaluations ', points, &
-    ', per law:'
-  do k = 1, n_laws
-    write (*, '(1x,a,1x,i0)', advance='no') trim(law_names(k)), count(law_par == k)
-    call check(count(law_par == k) >= nblocks/(2*n_laws), 'enough blocks of law '// &
-               trim(law_names(k)))
-  end do
-  write (*, '()')
-  call check(points >= 1000000_int64/shrink, 'at least 1M point evaluations (full size)')
-  call check(all(law_par == law_ser) .and. all(n_par == n_ser), 'same blocks in both runs')
-  ndiff = count(dig_par(1, :) /= dig_ser(1, :) .or. dig_par(2, :) /= dig_ser(2, :))
-  call check(ndiff == 0, 'every block: outputs bit for bit equal to the serial run')
-  write (*, '(i0,a,i0,a,i0,a)') nblocks, ' FRIC_COEF blocks on ', nworkers, &
-    ' OpenMP threads and serially: ', ndiff, ' blocks differ'
+  call compare_block_runs('FRIC_COEF', nworkers, shrink, law_names, law_par, law_ser, n_par, &
+                          n_ser, dig_par, dig_ser)
 
   deallocate (dig_par, dig_ser, law_par, law_ser, n_par, n_ser, worked)
   call finish()
