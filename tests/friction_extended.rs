@@ -5,6 +5,9 @@
 
 #![allow(clippy::needless_range_loop)] // index loops mirror the a, b indices of the equations
 
+#[path = "common/central.rs"]
+mod central;
+
 use interfacial::abi::host::FricCall;
 use interfacial::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment, StickMode};
 use interfacial::laws::coulomb_extended::{
@@ -236,8 +239,7 @@ thread_local! {
     static CHECKED: Cell<u32> = const { Cell::new(0) };
 }
 
-/// Central difference of TAU(a) with step h along `shift(h)`, and whether the step h and 2h
-/// agree (no kink or branch change inside the stencil).
+/// Central difference of TAU(a) with step h along `shift(h)` (see [`central::central_tau`]).
 fn central(
     s: &Sample,
     a: usize,
@@ -245,21 +247,10 @@ fn central(
     shift: impl Fn(f64) -> ([f64; 2], f64, [f64; 2]),
     scale: f64,
 ) -> Option<f64> {
-    let fd = |h: f64| {
-        let (g1, p1, t1) = shift(h);
-        let (g2, p2, t2) = shift(-h);
-        let up = call(s, g1, p1, t1);
-        let dn = call(s, g2, p2, t2);
-        if up.pnewdt != 1e36 || dn.pnewdt != 1e36 || up.lm != 0 || dn.lm != 0 {
-            return None;
-        }
-        if up.statev[2] != dn.statev[2] {
-            return None;
-        }
-        Some((up.tau[a] - dn.tau[a]) / (2.0 * h))
-    };
-    let (f1, f2) = (fd(h)?, fd(2.0 * h)?);
-    ((f1 - f2).abs() <= 1e-7 * scale).then_some(f1)
+    central::central_tau(a, h, scale, |h| {
+        let (g, p, t) = shift(h);
+        call(s, g, p, t)
+    })
 }
 
 /// DDTDDG, DDTDDP and DDTDDT(·,1..2) against central differences of TAU, in every branch

@@ -7,6 +7,9 @@
 
 #![allow(clippy::needless_range_loop)] // index loops mirror the a, b indices of the equations
 
+#[path = "common/central.rs"]
+mod central;
+
 use std::ffi::c_int;
 use std::process::Command;
 use std::sync::Once;
@@ -198,8 +201,7 @@ fn call(s: &Sample, dg: [f64; 2], dp: f64, dt: [f64; 2]) -> FricCall {
     c
 }
 
-/// Central difference of TAU(a), or None when the stencil crosses a kink of the table or a
-/// branch change (steps h and 2h disagree, or the status differs).
+/// Central difference of TAU(a) with step h along `shift(h)` (see [`central::central_tau`]).
 fn central(
     s: &Sample,
     a: usize,
@@ -207,21 +209,10 @@ fn central(
     shift: impl Fn(f64) -> ([f64; 2], f64, [f64; 2]),
     scale: f64,
 ) -> Option<f64> {
-    let fd = |h: f64| {
-        let (g1, p1, t1) = shift(h);
-        let (g2, p2, t2) = shift(-h);
-        let up = call(s, g1, p1, t1);
-        let dn = call(s, g2, p2, t2);
-        if up.pnewdt != 1e36 || dn.pnewdt != 1e36 || up.lm != 0 || dn.lm != 0 {
-            return None;
-        }
-        if up.statev[2] != dn.statev[2] {
-            return None;
-        }
-        Some((up.tau[a] - dn.tau[a]) / (2.0 * h))
-    };
-    let (f1, f2) = (fd(h)?, fd(2.0 * h)?);
-    ((f1 - f2).abs() <= 1e-7 * scale).then_some(f1)
+    central::central_tau(a, h, scale, |h| {
+        let (g, p, t) = shift(h);
+        call(s, g, p, t)
+    })
 }
 
 /// DDTDDG, DDTDDP and DDTDDT against central differences of TAU with the four-column table
