@@ -8,7 +8,7 @@
 
 use std::ffi::{CStr, c_char, c_int};
 
-use crate::bytes::{Bytes, len, bits};
+use crate::bytes::{Bytes, bits, len};
 use crate::gapcon_case::NAMES;
 use interfacial::abi::{ifl_clear_error, ifl_last_error, uinter_};
 
