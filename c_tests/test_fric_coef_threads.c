@@ -249,17 +249,6 @@ static uint64_t run_block(int b, th_tally *t)
     return h;
 }
 
-/* Blocks [first, last) into digests[b]; ctx is the digest array of the run. */
-static void run_blocks(int first, int last, void *ctx, th_tally *t)
-{
-    uint64_t *digests = ctx;
-    int b;
-    for (b = first; b < last; b++) {
-        ifl_clear_error();
-        digests[b] = run_block(b, t);
-    }
-}
-
 static void report_tally(const char *run, const th_tally *t)
 {
     char head[64];
@@ -269,18 +258,9 @@ static void report_tally(const char *run, const th_tally *t)
 
 int main(void)
 {
-    int shrink = th_shrink_factor(FULL_BLOCKS / MIN_BLOCKS), blocks = FULL_BLOCKS / shrink, k;
+    int shrink = th_shrink_factor(FULL_BLOCKS / MIN_BLOCKS), blocks = FULL_BLOCKS / shrink;
     th_tally par, ser;
 
-    if (!th_block_runs(blocks, run_blocks, report_tally, &par, &ser)) {
-        return fh_finish();
-    }
-    fh_context("the runs' counts");
-    /* At least 1M point evaluations at full size; every law well represented. */
-    FH_CHECK(par.points >= 1000000L / shrink);
-    for (k = 0; k < N_LAWS; k++) {
-        fh_context("law %s", LAW_NAMES[k]);
-        FH_CHECK(par.kinds[k] >= blocks / (2 * N_LAWS));
-    }
+    th_block_runs(blocks, shrink, run_block, report_tally, LAW_NAMES, N_LAWS, &par, &ser);
     return fh_finish();
 }

@@ -214,47 +214,75 @@ static inline void th_check_run(const th_tally *t)
     FH_CHECK(t->msg_bad == 0);
 }
 
+/* One block b of a run: calls the entry point, checks it, returns the digest of its outputs. */
+typedef uint64_t (*th_block_fn)(int b, th_tally *t);
+
+typedef struct {
+    th_block_fn block;
+    uint64_t *digests; /* [b] */
+} th_block_run;
+
+/* Blocks [first, last) of a run, each with this thread's last error cleared first. */
+static inline void th_blocks(int first, int last, void *ctx, th_tally *t)
+{
+    th_block_run *r = ctx;
+    int b;
+    for (b = first; b < last; b++) {
+        ifl_clear_error();
+        r->digests[b] = r->block(b, t);
+    }
+}
+
 /*
- * Both runs of a harness whose item b (a block) writes one digest, digests[b] (ctx of fn is the
- * digest array): on TH_THREADS threads, then serially on this thread; each reported and checked
- * (no allocation failure, no violation, no bad message); then the same digests, the same counts
- * of each kind, of points and of bad points. par and ser receive the runs' tallies. Returns 0
- * when the harness must stop at once (no memory, or a thread not created).
+ * Both runs of a harness of n blocks (full size divided by shrink): on TH_THREADS threads, then
+ * serially on this thread; each reported and checked (no allocation failure, no violation, no
+ * bad message); then the same digests, the same counts of each kind, of points and of bad
+ * points; at least 1M point evaluations at full size and every kind (names[0..n_kinds)) in at
+ * least one block in 2 n_kinds. par and ser receive the runs' tallies. Returns 0 when the harness
+ * must stop at once (no memory, or a thread not created).
  */
-static inline int th_block_runs(int n, th_range_fn fn, th_report_fn report, th_tally *par,
+static inline int th_block_runs(int n, int shrink, th_block_fn block, th_report_fn report,
+                                const char *const *names, int n_kinds, th_tally *par,
                                 th_tally *ser)
 {
-    uint64_t *dig_par = calloc((size_t)n, sizeof *dig_par);
-    uint64_t *dig_ser = calloc((size_t)n, sizeof *dig_ser);
+    th_block_run par_run = {block, calloc((size_t)n, sizeof(uint64_t))};
+    th_block_run ser_run = {block, calloc((size_t)n, sizeof(uint64_t))};
     long diff;
+    int k;
 
     memset(par, 0, sizeof *par);
     memset(ser, 0, sizeof *ser);
     fh_context("allocation");
-    if (!FH_CHECK(dig_par != NULL && dig_ser != NULL)) {
+    if (!FH_CHECK(par_run.digests != NULL && ser_run.digests != NULL)) {
         return 0;
     }
     fh_context("%d threads, %d blocks", TH_THREADS, n);
-    if (!FH_CHECK(th_run_threads(n, fn, dig_par, par))) {
+    if (!FH_CHECK(th_run_threads(n, th_blocks, &par_run, par))) {
         return 0; /* the barrier would never open */
     }
     report("8 threads", par);
     th_check_run(par);
 
     fh_context("serial run");
-    fn(0, n, dig_ser, ser);
+    th_blocks(0, n, &ser_run, ser);
     report("serial", ser);
     th_check_run(ser);
 
     fh_context("8 threads against the serial run");
-    FH_CHECK(memcmp(dig_par, dig_ser, sizeof *dig_par * (size_t)n) == 0);
+    FH_CHECK(memcmp(par_run.digests, ser_run.digests, sizeof(uint64_t) * (size_t)n) == 0);
     FH_CHECK(memcmp(par->kinds, ser->kinds, sizeof par->kinds) == 0);
     FH_CHECK(par->points == ser->points);
     FH_CHECK(par->bad_points == ser->bad_points);
-    diff = th_count_differences(dig_par, dig_ser, (size_t)n, 1, "block", "");
+    /* At least 1M point evaluations at full size; every kind well represented. */
+    FH_CHECK(par->points >= 1000000L / shrink);
+    for (k = 0; k < n_kinds; k++) {
+        fh_context("blocks of kind %s", names[k]);
+        FH_CHECK(par->kinds[k] >= n / (2 * n_kinds));
+    }
+    diff = th_count_differences(par_run.digests, ser_run.digests, (size_t)n, 1, "block", "");
     printf("blocks whose outputs differ between the runs: %ld of %d\n", diff, n);
-    free(dig_par);
-    free(dig_ser);
+    free(par_run.digests);
+    free(ser_run.digests);
     return 1;
 }
 
