@@ -80,7 +80,7 @@ impl BatchCase {
         let mut b = Bytes::new(data);
         let npoints = usize::from(b.u8() % 12);
         let pad = b.pick(&[0usize, 0, 1, 2, 3, 7]);
-        let ld = if b.u8().is_multiple_of(16) {
+        let ld = if b.u8() % 16 == 0 {
             npoints.saturating_sub(1)
         } else {
             npoints + pad
