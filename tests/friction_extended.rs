@@ -283,7 +283,7 @@ fn check_tangents(s: Sample) -> Result<(), TestCaseError> {
     for b in 0..n {
         for a in 0..n {
             let h = 1e-6 * gc;
-            let fd = central_tau(a, h, k_scale, along_dgam(b), &at);
+            let fd = central_tau(a, h, k_scale, along_dgam(b), at);
             match fd {
                 Some(fd) => {
                     let an = base.ddtddg(a, b);
@@ -299,7 +299,7 @@ fn check_tangents(s: Sample) -> Result<(), TestCaseError> {
     // DDTDDP(a): the end pressure moves, the start (PRESS − DPRESS) stays.
     let hp = 1e-6 * s.p0;
     for a in 0..n {
-        match central_tau(a, hp, mbar.max(1.0), along_press, &at) {
+        match central_tau(a, hp, mbar.max(1.0), along_press, at) {
             Some(fd) => {
                 let an = base.ddtddp[a];
                 prop_assert!(
@@ -315,7 +315,7 @@ fn check_tangents(s: Sample) -> Result<(), TestCaseError> {
     let t_scale = mbar * p.abs().max(1.0) * 0.05;
     for k in 0..2 {
         for a in 0..n {
-            let fd = central_tau(a, ht, t_scale, along_temp(k), &at);
+            let fd = central_tau(a, ht, t_scale, along_temp(k), at);
             match fd {
                 Some(fd) => {
                     let an = base.ddtddt[a + k * n];

@@ -239,18 +239,18 @@ fn tangents_match_central_differences_with_a_table() {
             };
         for b in 0..n {
             for a in 0..n {
-                let fd = central_tau(a, 1e-6 * GC, k_scale, along_dgam(b), &at);
+                let fd = central_tau(a, 1e-6 * GC, k_scale, along_dgam(b), at);
                 check(format!("DDTDDG({a},{b})"), fd, base.ddtddg(a, b), k_scale)?;
             }
         }
         for a in 0..n {
-            let fd = central_tau(a, 1e-6 * s.p0, 1.0, along_press, &at);
+            let fd = central_tau(a, 1e-6 * s.p0, 1.0, along_press, at);
             check(format!("DDTDDP({a})"), fd, base.ddtddp[a], 1.0)?;
         }
         let t_scale = p.max(1.0) * 1e-3;
         for k in 0..2 {
             for a in 0..n {
-                let fd = central_tau(a, 1e-4, t_scale, along_temp(k), &at);
+                let fd = central_tau(a, 1e-4, t_scale, along_temp(k), at);
                 check(
                     format!("DDTDDT({a},{k})"),
                     fd,
