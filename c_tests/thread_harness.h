@@ -45,7 +45,7 @@ static inline uint32_t th_lehmer(uint32_t *x)
     *x = (uint32_t)(((uint64_t)*x * 48271u) % TH_LEHMER_M);
     return *x;
 }
-/* A draw in [lo, hi] from the generator's next value. */
+/* A draw in [lo, hi) from the generator's next value. */
 static inline double th_uniform(uint32_t *x, double lo, double hi)
 {
     return lo + (hi - lo) * ((double)(th_lehmer(x) - 1u) / (double)(TH_LEHMER_M - 1u));
@@ -77,7 +77,7 @@ static inline int th_shrink_factor(int max_shrink)
 /* ---- What one run (or one thread of it) counts ------------------------------------------ */
 typedef struct {
     long kinds[TH_MAX_KINDS]; /* calls or blocks of each kind the harness names */
-    long points;              /* point evaluations (block harnesses) */
+    long points;              /* point evaluations: a block's points, or a point's calls */
     long bad_points;          /* points drawn bad on purpose */
     long msg_bad;             /* refused calls whose last error does not name the point */
     long alloc_fail;
@@ -201,7 +201,6 @@ static inline long th_count_differences(const uint64_t *par, const uint64_t *ser
     }
     return diff;
 }
-
 
 /* A run's report: "<run>: <counts> ..." (th_report with the harness's own head). */
 typedef void (*th_report_fn)(const char *run, const th_tally *t);
