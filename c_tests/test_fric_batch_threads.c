@@ -17,30 +17,19 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
-#include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "harness.h"
+#include "thread_harness.h"
 
-enum { N_THREADS = 8, FULL_POINTS = 4096, PAD = 8, INCS = 32, NF = 2, NSTATV = 3 };
+enum { FULL_POINTS = 4096, PAD = 8, INCS = 32, NF = 2, NSTATV = 3 };
 #define FILL (-3.25e33)
 #define MU 0.3
 
 static const double PROPS[5] = {1.0, MU, 0.0, 0.0, 1e-3};
-
-#define LEHMER_M 2147483647u
-static uint32_t lehmer(uint32_t *x)
-{
-    *x = (uint32_t)(((uint64_t)*x * 48271u) % LEHMER_M);
-    return *x;
-}
-static double uniform(uint32_t *x, double lo, double hi)
-{
-    return lo + (hi - lo) * ((double)(lehmer(x) - 1u) / (double)(LEHMER_M - 1u));
-}
 
 static int points, ld;
 /* Inputs, shared read-only by every thread: [inc][component][ld]. */
@@ -54,16 +43,6 @@ typedef struct {
     int check_law; /* serial run: check every point of every increment against the law */
     long bad_law, checked;
 } run;
-
-static uint64_t fnv(uint64_t h, const void *p, size_t n)
-{
-    const unsigned char *b = p;
-    size_t i;
-    for (i = 0; i < n; i++) {
-        h = (h ^ b[i]) * 1099511628211ull;
-    }
-    return h;
-}
 
 static double *filled(size_t n)
 {
@@ -124,17 +103,17 @@ static void run_all(run *r)
                                     r->lm, r->tau, r->ddtddg, r->ddtddp, r->dslip, r->sed,
                                     r->sfd, r->statev, dgam_all + off * NF, NULL,
                                     press_all + off, dpress_all + off, chrl_all + off, &pnewdt);
-        uint64_t h = 1469598103934665603ull;
-        h = fnv(h, r->lm, (size_t)ld * sizeof(int));
-        h = fnv(h, r->tau, (size_t)ld * NF * sizeof(double));
-        h = fnv(h, r->ddtddg, (size_t)ld * NF * NF * sizeof(double));
-        h = fnv(h, r->ddtddp, (size_t)ld * NF * sizeof(double));
-        h = fnv(h, r->dslip, (size_t)ld * NF * sizeof(double));
-        h = fnv(h, r->sed, (size_t)ld * sizeof(double));
-        h = fnv(h, r->sfd, (size_t)ld * sizeof(double));
-        h = fnv(h, r->statev, (size_t)ld * NSTATV * sizeof(double));
-        h = fnv(h, &pnewdt, sizeof pnewdt);
-        r->digest[inc] = fnv(h, &status, sizeof status);
+        uint64_t h = TH_FNV_OFFSET;
+        h = th_fnv(h, r->lm, (size_t)ld * sizeof(int));
+        h = th_fnv(h, r->tau, (size_t)ld * NF * sizeof(double));
+        h = th_fnv(h, r->ddtddg, (size_t)ld * NF * NF * sizeof(double));
+        h = th_fnv(h, r->ddtddp, (size_t)ld * NF * sizeof(double));
+        h = th_fnv(h, r->dslip, (size_t)ld * NF * sizeof(double));
+        h = th_fnv(h, r->sed, (size_t)ld * sizeof(double));
+        h = th_fnv(h, r->sfd, (size_t)ld * sizeof(double));
+        h = th_fnv(h, r->statev, (size_t)ld * NSTATV * sizeof(double));
+        h = th_fnv(h, &pnewdt, sizeof pnewdt);
+        r->digest[inc] = th_fnv(h, &status, sizeof status);
         if (r->check_law) {
             int i;
             for (i = 0; i < points; i++) {
@@ -155,22 +134,15 @@ static void run_all(run *r)
     }
 }
 
-static pthread_barrier_t start_line;
-
-
-static void *work(void *arg)
+/* Runs [first, last) of the array ctx, each all INCS batches (one run per thread). */
+static void run_range(int first, int last, void *ctx, th_tally *t)
 {
-    run *r = arg;
-    pthread_barrier_wait(&start_line);
-    run_all(r);
-    return NULL;
-}
-
-static int shrink_factor(void)
-{
-    const char *s = getenv("INTERFACIAL_TEST_SHRINK");
-    long v = s != NULL ? strtol(s, NULL, 10) : 1;
-    return v < 1 ? 1 : v > 64 ? 64 : (int)v;
+    run *runs = ctx;
+    int i;
+    (void)t;
+    for (i = first; i < last; i++) {
+        run_all(&runs[i]);
+    }
 }
 
 static int same(const run *a, const run *b)
@@ -189,11 +161,11 @@ static int same(const run *a, const run *b)
 
 int main(void)
 {
-    run par[N_THREADS], ser;
-    pthread_t tid[N_THREADS];
-    int i, inc, created = 0, nan_points = 0, slipping = 0, bad_law = 0, padding_ok = 1;
+    run par[TH_THREADS], ser;
+    th_tally unused;
+    int i, inc, nan_points = 0, slipping = 0, bad_law = 0, padding_ok = 1;
 
-    points = FULL_POINTS / shrink_factor();
+    points = FULL_POINTS / th_shrink_factor(64);
     ld = points + PAD;
     fh_context("inputs");
     dgam_all = filled((size_t)INCS * ld * NF);
@@ -208,38 +180,28 @@ int main(void)
             uint32_t x = 1u + (uint32_t)(i * INCS + inc);
             size_t k = (size_t)inc * ld + (size_t)i;
             double amp = i % 4 == 0 ? 5e-4 : 5e-3; /* a quarter of the points mostly stick */
-            lehmer(&x);
-            dgam_all[(size_t)inc * ld * NF + (size_t)i] = uniform(&x, -amp, amp);
-            dgam_all[(size_t)inc * ld * NF + (size_t)ld + (size_t)i] = uniform(&x, -amp, amp);
-            if (lehmer(&x) % 509u == 0) {
+            th_lehmer(&x);
+            dgam_all[(size_t)inc * ld * NF + (size_t)i] = th_uniform(&x, -amp, amp);
+            dgam_all[(size_t)inc * ld * NF + (size_t)ld + (size_t)i] = th_uniform(&x, -amp, amp);
+            if (th_lehmer(&x) % 509u == 0) {
                 dgam_all[(size_t)inc * ld * NF + (size_t)i] = NAN;
                 nan_points++;
             }
-            press_all[k] = uniform(&x, 10.0, 100.0);
-            dpress_all[k] = uniform(&x, -1.0, 1.0);
+            press_all[k] = th_uniform(&x, 10.0, 100.0);
+            dpress_all[k] = th_uniform(&x, -1.0, 1.0);
             chrl_all[k] = 1.0;
         }
     }
 
-    fh_context("%d threads x %d batches of %d points", N_THREADS, INCS, points);
-    pthread_barrier_init(&start_line, NULL, N_THREADS);
-    for (i = 0; i < N_THREADS; i++) {
+    fh_context("%d threads x %d batches of %d points", TH_THREADS, INCS, points);
+    for (i = 0; i < TH_THREADS; i++) {
         run_init(&par[i]);
         FH_CHECK(!par[i].failed_alloc);
     }
-    for (i = 0; i < N_THREADS; i++) {
-        if (pthread_create(&tid[i], NULL, work, &par[i]) != 0) {
-            break;
-        }
-        created++;
-    }
-    if (!FH_CHECK(created == N_THREADS)) {
+    memset(&unused, 0, sizeof unused);
+    if (!FH_CHECK(th_run_threads(TH_THREADS, run_range, par, &unused))) {
         return fh_finish();
     }
-    for (i = 0; i < N_THREADS; i++) {
-        pthread_join(tid[i], NULL);
-    }
-    pthread_barrier_destroy(&start_line);
 
     fh_context("serial run");
     run_init(&ser);
@@ -256,7 +218,7 @@ int main(void)
     }
     printf("%d threads x %d batches x %d points = %ld point updates; %d NaN inputs; %d points "
            "slipping at the end\n",
-           N_THREADS, INCS, points, (long)N_THREADS * INCS * points, nan_points, slipping);
+           TH_THREADS, INCS, points, (long)TH_THREADS * INCS * points, nan_points, slipping);
     FH_CHECK(bad_law == 0);
     FH_CHECK(ser.checked > (long)INCS * points * 9 / 10);
     FH_CHECK(padding_ok);
@@ -264,7 +226,7 @@ int main(void)
     FH_CHECK(slipping > 0 && slipping < points);
 
     fh_context("bit for bit against the serial run");
-    for (i = 0; i < N_THREADS; i++) {
+    for (i = 0; i < TH_THREADS; i++) {
         FH_CHECK(same(&par[i], &ser));
         run_free(&par[i]);
     }

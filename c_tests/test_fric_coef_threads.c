@@ -30,7 +30,6 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
-#include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,51 +37,17 @@
 
 #include "harness.h"
 #include "interfacial.h"
+#include "thread_harness.h"
 
-enum { N_THREADS = 8, FULL_BLOCKS = 16384, MAX_NBLOCK = 127, MIN_BLOCKS = 512, NPROPS = 13 };
+enum { FULL_BLOCKS = 16384, MAX_NBLOCK = 127, MIN_BLOCKS = 512, NPROPS = 13 };
 enum { N_LAWS = 8, LAW_BAD = 7 };
 static const char *const LAW_NAMES[N_LAWS] = {
     "constant", "anisotropic", "decay", "decay+pressure", "decay+temperature",
     "pressure+temperature anisotropic", "all", "refused"};
 
-/* ---- Lehmer generator (MINSTD): x <- 48271 x mod (2^31 - 1) ---------------------------- */
-#define LEHMER_M 2147483647u
-static uint32_t lehmer(uint32_t *x)
+static void violation(th_tally *t, int block, const char *what, double got, double want)
 {
-    *x = (uint32_t)(((uint64_t)*x * 48271u) % LEHMER_M);
-    return *x;
-}
-static double uniform(uint32_t *x, double lo, double hi)
-{
-    return lo + (hi - lo) * ((double)(lehmer(x) - 1u) / (double)(LEHMER_M - 1u));
-}
-
-/* ---- 64-bit FNV-1a over bytes ------------------------------------------------------------- */
-static uint64_t fnv1a(uint64_t h, const void *p, size_t n)
-{
-    const unsigned char *b = p;
-    size_t i;
-    for (i = 0; i < n; i++) {
-        h ^= b[i];
-        h *= 1099511628211u;
-    }
-    return h;
-}
-
-typedef struct {
-    long kinds[N_LAWS];
-    long points;
-    long violations;
-    long alloc_fail;
-    char first_violation[256];
-} tally;
-
-static void violation(tally *t, int block, const char *what, double got, double want)
-{
-    if (t->violations++ == 0) {
-        snprintf(t->first_violation, sizeof t->first_violation,
-                 "block %d: %s: got %.17g, expected %.17g", block, what, got, want);
-    }
+    th_violation(t, "block %d: %s: got %.17g, expected %.17g", block, what, got, want);
 }
 
 /* One block's law and inputs, all drawn from the block's own generator. */
@@ -94,17 +59,17 @@ typedef struct {
 
 static int draw_block(int b, block_in *in)
 {
-    uint32_t x = (uint32_t)b * 2654435761u % (LEHMER_M - 1u) + 1u;
+    uint32_t x = (uint32_t)b * 2654435761u % (TH_LEHMER_M - 1u) + 1u;
     int k, law, decay, pref, temp;
-    lehmer(&x);
-    law = (int)(lehmer(&x) % N_LAWS);
+    th_lehmer(&x);
+    law = (int)(th_lehmer(&x) % N_LAWS);
     in->law = law;
     in->n = 1 + b % MAX_NBLOCK;
     memset(in->props, 0, sizeof in->props);
     in->props[0] = 1.0;
-    in->props[1] = uniform(&x, 0.05, 0.9);
+    in->props[1] = th_uniform(&x, 0.05, 0.9);
     if (law == 1 || law == 5 || law == 6) {
-        in->props[2] = uniform(&x, 0.05, 0.9);
+        in->props[2] = th_uniform(&x, 0.05, 0.9);
     }
     decay = law == 2 || law == 3 || law == 4 || law == 6 || law == LAW_BAD;
     pref = law == 3 || law == 5 || law == 6;
@@ -112,17 +77,17 @@ static int draw_block(int b, block_in *in)
     if (decay) {
         in->props[7] = 1.0;
         /* μ_k below μ_s mostly (decay), above it now and then (strengthening). */
-        in->props[8] = in->props[1] * uniform(&x, 0.0, lehmer(&x) % 4 == 0 ? 3.0 : 1.0);
-        in->props[9] = uniform(&x, 0.1, 10.0);
+        in->props[8] = in->props[1] * th_uniform(&x, 0.0, th_lehmer(&x) % 4 == 0 ? 3.0 : 1.0);
+        in->props[9] = th_uniform(&x, 0.1, 10.0);
     }
     if (pref) {
-        in->props[10] = uniform(&x, 10.0, 500.0);
+        in->props[10] = th_uniform(&x, 10.0, 500.0);
     }
     if (temp) {
-        in->props[11] = uniform(&x, -0.01, 0.01);
-        in->props[12] = uniform(&x, 0.0, 100.0);
+        in->props[11] = th_uniform(&x, -0.01, 0.01);
+        in->props[12] = th_uniform(&x, 0.0, 100.0);
     }
-    in->ntemp = temp ? 1 : (int)(lehmer(&x) % 2);
+    in->ntemp = temp ? 1 : (int)(th_lehmer(&x) % 2);
     in->slip = malloc(sizeof(double) * 6 * (size_t)in->n);
     in->pressure = malloc(sizeof(double) * (size_t)in->n);
     in->temp = malloc(sizeof(double) * (size_t)in->n);
@@ -130,21 +95,21 @@ static int draw_block(int b, block_in *in)
         return 0;
     }
     for (k = 0; k < 6 * in->n; k++) {
-        in->slip[k] = uniform(&x, 0.0, 5.0);
+        in->slip[k] = th_uniform(&x, 0.0, 5.0);
     }
     for (k = 0; k < in->n; k++) {
-        if (lehmer(&x) % 8 == 0) {
+        if (th_lehmer(&x) % 8 == 0) {
             in->slip[k] = 0.0;
         }
-        in->pressure[k] = uniform(&x, -20.0, 300.0);
-        in->temp[k] = uniform(&x, 0.0, 200.0);
+        in->pressure[k] = th_uniform(&x, -20.0, 300.0);
+        in->temp[k] = th_uniform(&x, 0.0, 200.0);
     }
     if (law == LAW_BAD) {
-        k = (int)(lehmer(&x) % (uint32_t)in->n);
-        if (lehmer(&x) % 2 == 0) {
+        k = (int)(th_lehmer(&x) % (uint32_t)in->n);
+        if (th_lehmer(&x) % 2 == 0) {
             in->pressure[k] = NAN;
         } else {
-            in->slip[k] = -uniform(&x, 0.1, 1.0);
+            in->slip[k] = -th_uniform(&x, 0.1, 1.0);
         }
     }
     return 1;
@@ -185,14 +150,14 @@ static void closed_form(const block_in *in, int k, double mu[2], double dmu_rate
 static const char *const FIELD_NAMES[3] = {"mu1", "mu2", "?"};
 
 /* Calls fric_coef_ for block b and checks it; returns the digest of its outputs. */
-static uint64_t run_block(int b, tally *t)
+static uint64_t run_block(int b, th_tally *t)
 {
     block_in in;
     int n, nprops = NPROPS, nfields = 0, idata[3] = {1, 1, 1}, k, j, d;
     double rdata[3] = {0.0, 0.0, 0.0}, field[1] = {0.0};
     double *coef, *deriv;
     char name[80], blank[80];
-    uint64_t h = 14695981039346656037u;
+    uint64_t h = TH_FNV_OFFSET;
 
     memset(&in, 0, sizeof in);
     if (!draw_block(b, &in)) {
@@ -225,8 +190,8 @@ static uint64_t run_block(int b, tally *t)
                sizeof blank);
     t->kinds[in.law]++;
     t->points += n;
-    h = fnv1a(h, coef, sizeof(double) * 2 * (size_t)n);
-    h = fnv1a(h, deriv, sizeof(double) * 40 * (size_t)n);
+    h = th_fnv(h, coef, sizeof(double) * 2 * (size_t)n);
+    h = th_fnv(h, deriv, sizeof(double) * 40 * (size_t)n);
 
     if (in.law == LAW_BAD) {
         char want[32];
@@ -284,123 +249,18 @@ static uint64_t run_block(int b, tally *t)
     return h;
 }
 
-static void run_blocks(int first, int last, uint64_t *digests, tally *t)
+static void report_tally(const char *run, const th_tally *t)
 {
-    int b;
-    for (b = first; b < last; b++) {
-        ifl_clear_error();
-        digests[b] = run_block(b, t);
-    }
-}
-
-typedef struct {
-    int first, last;
-    uint64_t *digests;
-    tally t;
-} worker;
-
-static pthread_barrier_t start_line;
-
-static void *work(void *arg)
-{
-    worker *w = arg;
-    pthread_barrier_wait(&start_line);
-    run_blocks(w->first, w->last, w->digests, &w->t);
-    return NULL;
-}
-
-static int shrink_factor(void)
-{
-    const char *s = getenv("INTERFACIAL_TEST_SHRINK");
-    long v = s != NULL ? strtol(s, NULL, 10) : 1;
-    if (v < 1) {
-        return 1;
-    }
-    return v > FULL_BLOCKS / MIN_BLOCKS ? FULL_BLOCKS / MIN_BLOCKS : (int)v;
-}
-
-static void report_tally(const char *run, const tally *t)
-{
-    int k;
-    printf("%s: %ld point evaluations;", run, t->points);
-    for (k = 0; k < N_LAWS; k++) {
-        printf(" %s %ld%s", LAW_NAMES[k], t->kinds[k], k + 1 < N_LAWS ? "," : " blocks\n");
-    }
-    if (t->violations > 0) {
-        fprintf(stderr, "  %s: %ld violations, first: %s\n", run, t->violations,
-                t->first_violation);
-    }
+    char head[64];
+    snprintf(head, sizeof head, "%ld point evaluations", t->points);
+    th_report(run, head, t, LAW_NAMES, N_LAWS, " blocks");
 }
 
 int main(void)
 {
-    int shrink = shrink_factor(), blocks = FULL_BLOCKS / shrink, i, k, created = 0;
-    uint64_t *dig_par = calloc((size_t)blocks, sizeof *dig_par);
-    uint64_t *dig_ser = calloc((size_t)blocks, sizeof *dig_ser);
-    worker w[N_THREADS];
-    pthread_t tid[N_THREADS];
-    tally par, ser;
+    int shrink = th_shrink_factor(FULL_BLOCKS / MIN_BLOCKS), blocks = FULL_BLOCKS / shrink;
+    th_tally par, ser;
 
-    fh_context("allocation");
-    if (!FH_CHECK(dig_par != NULL && dig_ser != NULL)) {
-        return fh_finish();
-    }
-    memset(w, 0, sizeof w);
-    memset(&par, 0, sizeof par);
-    memset(&ser, 0, sizeof ser);
-
-    fh_context("%d threads, %d blocks", N_THREADS, blocks);
-    pthread_barrier_init(&start_line, NULL, N_THREADS);
-    for (i = 0; i < N_THREADS; i++) {
-        w[i].first = (int)((long)blocks * i / N_THREADS);
-        w[i].last = (int)((long)blocks * (i + 1) / N_THREADS);
-        w[i].digests = dig_par;
-        if (pthread_create(&tid[i], NULL, work, &w[i]) != 0) {
-            break;
-        }
-        created++;
-    }
-    if (!FH_CHECK(created == N_THREADS)) {
-        return fh_finish(); /* the barrier would never open */
-    }
-    for (i = 0; i < N_THREADS; i++) {
-        pthread_join(tid[i], NULL);
-        for (k = 0; k < N_LAWS; k++) {
-            par.kinds[k] += w[i].t.kinds[k];
-        }
-        par.points += w[i].t.points;
-        par.violations += w[i].t.violations;
-        par.alloc_fail += w[i].t.alloc_fail;
-        if (par.first_violation[0] == '\0') {
-            memcpy(par.first_violation, w[i].t.first_violation, sizeof par.first_violation);
-        }
-    }
-    pthread_barrier_destroy(&start_line);
-    report_tally("8 threads", &par);
-    FH_CHECK(par.alloc_fail == 0);
-    FH_CHECK(par.violations == 0);
-
-    fh_context("serial run");
-    run_blocks(0, blocks, dig_ser, &ser);
-    report_tally("serial", &ser);
-    FH_CHECK(ser.alloc_fail == 0);
-    FH_CHECK(ser.violations == 0);
-
-    fh_context("8 threads against the serial run");
-    FH_CHECK(memcmp(dig_par, dig_ser, sizeof *dig_par * (size_t)blocks) == 0);
-    FH_CHECK(memcmp(par.kinds, ser.kinds, sizeof par.kinds) == 0);
-    FH_CHECK(par.points == ser.points);
-    /* At least 1M point evaluations at full size; every law well represented. */
-    FH_CHECK(par.points >= 1000000L / shrink);
-    for (k = 0; k < N_LAWS; k++) {
-        fh_context("law %s", LAW_NAMES[k]);
-        FH_CHECK(par.kinds[k] >= blocks / (2 * N_LAWS));
-    }
-    for (i = 0, k = 0; i < blocks; i++) {
-        k += dig_par[i] != dig_ser[i];
-    }
-    printf("blocks whose outputs differ between the runs: %d of %d\n", k, blocks);
-    free(dig_par);
-    free(dig_ser);
+    th_block_runs(blocks, shrink, run_block, report_tally, LAW_NAMES, N_LAWS, &par, &ser);
     return fh_finish();
 }

@@ -34,15 +34,15 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
-#include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "harness.h"
+#include "thread_harness.h"
 
-enum { N_THREADS = 8, FULL_POINTS = 4096, INCS = 256, MIN_POINTS = 64 };
+enum { FULL_POINTS = 4096, INCS = 256, MIN_POINTS = 64 };
 #define PNEWDT_IN 1e36
 #define STATEV_TAIL (-5.5e55) /* in STATEV(4..NSTATV): fric_ must leave it */
 
@@ -67,19 +67,6 @@ static const char *const KIND_NAMES[N_KINDS] = {
     "reversal to exact stick", "rough", "negative pressure", "refused (NaN)", "NFDIR 1",
     "NFDIR 2"};
 
-/* ---- Lehmer generator (MINSTD): x <- 48271 x mod (2^31 - 1) ---------------------------- */
-#define LEHMER_M 2147483647u
-static uint32_t lehmer(uint32_t *x)
-{
-    *x = (uint32_t)(((uint64_t)*x * 48271u) % LEHMER_M);
-    return *x;
-}
-/* Uniform in [lo, hi). */
-static double uniform(uint32_t *x, double lo, double hi)
-{
-    return lo + (hi - lo) * ((double)(lehmer(x) - 1u) / (double)(LEHMER_M - 1u));
-}
-
 /* ---- one contact point ---------------------------------------------------------------- */
 typedef struct {
     uint32_t rng;
@@ -99,15 +86,7 @@ typedef struct {
     int64_t lm;
 } final_rec;
 
-typedef struct {
-    long kinds[N_KINDS];
-    long violations; /* calls that broke a check of the law */
-    long msg_bad;    /* refused calls whose last error does not name the point */
-    long alloc_fail;
-    char first_violation[256];
-} tally;
-
-static void *xcalloc(size_t n, size_t size, tally *t)
+static void *xcalloc(size_t n, size_t size, th_tally *t)
 {
     void *p = calloc(n, size);
     if (p == NULL) {
@@ -116,32 +95,32 @@ static void *xcalloc(size_t n, size_t size, tally *t)
     return p;
 }
 
-static int contact_init(contact *c, int index, tally *t)
+static int contact_init(contact *c, int index, th_tally *t)
 {
     uint32_t *r = &c->rng;
     int n, i;
     memset(c, 0, sizeof *c);
-    c->rng = (uint32_t)(index % (int)(LEHMER_M - 1u)) + 1u;
+    c->rng = (uint32_t)(index % (int)(TH_LEHMER_M - 1u)) + 1u;
     for (i = 0; i < 4; i++) { /* decorrelate neighbouring seeds */
-        lehmer(r);
+        th_lehmer(r);
     }
-    c->nfdir = n = uniform(r, 0.0, 1.0) < 0.5 ? 1 : 2;
+    c->nfdir = n = th_uniform(r, 0.0, 1.0) < 0.5 ? 1 : 2;
     {
-        double m = uniform(r, 0.0, 1.0);
+        double m = th_uniform(r, 0.0, 1.0);
         c->mode = m < 0.6 ? 0 : m < 0.9 ? 1 : 2;
     }
-    c->nstatv = uniform(r, 0.0, 1.0) < 0.75 ? 3 : 5;
-    c->p_ref = uniform(r, 10.0, 100.0);
+    c->nstatv = th_uniform(r, 0.0, 1.0) < 0.75 ? 3 : 5;
+    c->p_ref = th_uniform(r, 10.0, 100.0);
     c->props[0] = 1.0;                        /* Coulomb */
-    c->props[1] = uniform(r, 0.1, 0.6);       /* mu */
-    c->tau_max = uniform(r, 0.0, 1.0) < 0.3 ? c->props[1] * c->p_ref * uniform(r, 0.6, 1.0)
+    c->props[1] = th_uniform(r, 0.1, 0.6);       /* mu */
+    c->tau_max = th_uniform(r, 0.0, 1.0) < 0.3 ? c->props[1] * c->p_ref * th_uniform(r, 0.6, 1.0)
                                             : INFINITY;
     c->props[3] = isinf(c->tau_max) ? 0.0 : c->tau_max;
-    c->chrlngth = uniform(r, 0.05, 0.2);
-    if (uniform(r, 0.0, 1.0) < 0.5) {
-        c->props[4] = c->gamma_crit = uniform(r, 1e-4, 1e-3);
+    c->chrlngth = th_uniform(r, 0.05, 0.2);
+    if (th_uniform(r, 0.0, 1.0) < 0.5) {
+        c->props[4] = c->gamma_crit = th_uniform(r, 1e-4, 1e-3);
     } else {
-        c->props[5] = uniform(r, 0.002, 0.01);
+        c->props[5] = th_uniform(r, 0.002, 0.01);
         c->gamma_crit = c->props[5] * c->chrlngth;
     }
     c->props[6] = (double)c->mode;
@@ -180,40 +159,26 @@ static void contact_free(contact *c)
     free(c->slip);
 }
 
-/* ---- FNV-1a, 64 bits ------------------------------------------------------------------- */
-static uint64_t fnv(uint64_t h, const void *p, size_t n)
-{
-    const unsigned char *b = p;
-    size_t i;
-    for (i = 0; i < n; i++) {
-        h = (h ^ b[i]) * 1099511628211u;
-    }
-    return h;
-}
-
 /* Every output of the last call, byte by byte. */
 static uint64_t digest(const contact *c)
 {
     size_t n = (size_t)c->nfdir;
-    uint64_t h = 14695981039346656037u;
-    h = fnv(h, &c->lm, sizeof c->lm);
-    h = fnv(h, c->tau, n * sizeof(double));
-    h = fnv(h, c->ddtddg, n * n * sizeof(double));
-    h = fnv(h, c->ddtddp, n * sizeof(double));
-    h = fnv(h, c->dslip, n * sizeof(double));
-    h = fnv(h, &c->sed, sizeof c->sed);
-    h = fnv(h, &c->sfd, sizeof c->sfd);
-    h = fnv(h, c->ddtddt, 2 * n * sizeof(double));
-    h = fnv(h, &c->pnewdt, sizeof c->pnewdt);
-    return fnv(h, c->statev, (size_t)c->nstatv * sizeof(double));
+    uint64_t h = TH_FNV_OFFSET;
+    h = th_fnv(h, &c->lm, sizeof c->lm);
+    h = th_fnv(h, c->tau, n * sizeof(double));
+    h = th_fnv(h, c->ddtddg, n * n * sizeof(double));
+    h = th_fnv(h, c->ddtddp, n * sizeof(double));
+    h = th_fnv(h, c->dslip, n * sizeof(double));
+    h = th_fnv(h, &c->sed, sizeof c->sed);
+    h = th_fnv(h, &c->sfd, sizeof c->sfd);
+    h = th_fnv(h, c->ddtddt, 2 * n * sizeof(double));
+    h = th_fnv(h, &c->pnewdt, sizeof c->pnewdt);
+    return th_fnv(h, c->statev, (size_t)c->nstatv * sizeof(double));
 }
 
-static void violation(tally *t, int point, int inc, const char *what)
+static void violation(th_tally *t, int point, int inc, const char *what)
 {
-    if (t->violations++ == 0) {
-        snprintf(t->first_violation, sizeof t->first_violation, "point %d, increment %d: %s",
-                 point, inc, what);
-    }
+    th_violation(t, "point %d, increment %d: %s", point, inc, what);
 }
 
 static double norm(const double *v, int n)
@@ -222,7 +187,7 @@ static double norm(const double *v, int n)
 }
 
 /* One increment of point `point`: the host's inputs, the call, the checks; returns the digest. */
-static uint64_t increment(contact *c, int point, int inc, tally *t)
+static uint64_t increment(contact *c, int point, int inc, th_tally *t)
 {
     char names[3][80];
     uint32_t *r = &c->rng;
@@ -240,17 +205,17 @@ static uint64_t increment(contact *c, int point, int inc, tally *t)
     memcpy(names[0], "FRICTION_THREADS", 16);
     memcpy(names[1], "SLAVE", 5);
     memcpy(names[2], "MASTER", 6);
-    press = c->p_ref * uniform(r, 0.7, 1.3);
-    if (uniform(r, 0.0, 1.0) < 1.0 / 64.0) {
+    press = c->p_ref * th_uniform(r, 0.7, 1.3);
+    if (th_uniform(r, 0.0, 1.0) < 1.0 / 64.0) {
         press = -0.05 * c->p_ref; /* barely closed: no friction */
     }
     dpress = press - p_old;
     for (i = 0; i < n; i++) {
-        c->dgam[i] = uniform(r, -2.0, 2.0) * gc;
+        c->dgam[i] = th_uniform(r, -2.0, 2.0) * gc;
     }
     tau_crit = press > 0.0 ? fmin(c->props[1] * press, c->tau_max) : 0.0;
     for (i = 0; i < n; i++) {
-        c->taulm[i] = uniform(r, -1.2, 1.2) * (press > 0.0 ? tau_crit : c->p_ref) / sqrt(n);
+        c->taulm[i] = th_uniform(r, -1.2, 1.2) * (press > 0.0 ? tau_crit : c->p_ref) / sqrt(n);
     }
     nan_call = (point % 8 == 3) && (inc % 97 == 50);
     if (nan_call) {
@@ -381,151 +346,33 @@ static void final_of(const contact *c, final_rec *f)
     f->lm = c->lm;
 }
 
-/* Points [first, last) of one run into digests[point * INCS + inc] and finals[point]. */
-static void run_points(int first, int last, uint64_t *digests, final_rec *finals, tally *t)
+/* One point of one run: INCS increments into digests[inc], the final outputs into *fin. */
+static void run_point(int p, uint64_t *digests, void *fin, th_tally *t)
 {
-    int p, k;
-    for (p = first; p < last; p++) {
-        contact c;
-        if (!contact_init(&c, p, t)) {
-            contact_free(&c);
-            continue;
-        }
-        for (k = 0; k < INCS; k++) {
-            digests[(size_t)p * INCS + (size_t)k] = increment(&c, p, k, t);
-        }
-        final_of(&c, &finals[p]);
-        contact_free(&c);
-    }
-}
-
-typedef struct {
-    int first, last;
-    uint64_t *digests;
-    final_rec *finals;
-    tally t;
-} worker;
-
-static pthread_barrier_t start_line;
-
-static void *work(void *arg)
-{
-    worker *w = arg;
-    pthread_barrier_wait(&start_line);
-    run_points(w->first, w->last, w->digests, w->finals, &w->t);
-    return NULL;
-}
-
-static int shrink_factor(void)
-{
-    const char *s = getenv("INTERFACIAL_TEST_SHRINK");
-    long v = s != NULL ? strtol(s, NULL, 10) : 1;
-    if (v < 1) {
-        return 1;
-    }
-    return v > FULL_POINTS / MIN_POINTS ? FULL_POINTS / MIN_POINTS : (int)v;
-}
-
-static void report_tally(const char *run, const tally *t, long calls)
-{
+    contact c;
     int k;
-    printf("%s: %ld calls;", run, calls);
-    for (k = 0; k < N_KINDS; k++) {
-        printf(" %s %ld%s", KIND_NAMES[k], t->kinds[k], k + 1 < N_KINDS ? "," : "\n");
+    if (!contact_init(&c, p, t)) {
+        contact_free(&c);
+        return;
     }
-    if (t->violations > 0) {
-        fprintf(stderr, "  %s: %ld violations, first: %s\n", run, t->violations,
-                t->first_violation);
+    for (k = 0; k < INCS; k++) {
+        digests[k] = increment(&c, p, k, t);
     }
+    final_of(&c, fin);
+    contact_free(&c);
+}
+
+static void report_tally(const char *run, const th_tally *t)
+{
+    char head[48];
+    snprintf(head, sizeof head, "%ld calls", (long)t->points);
+    th_report(run, head, t, KIND_NAMES, N_KINDS, "");
 }
 
 int main(void)
 {
-    int points = FULL_POINTS / shrink_factor(), i, k, created = 0;
-    size_t calls = (size_t)points * INCS;
-    uint64_t *dig_par = calloc(calls, sizeof *dig_par), *dig_ser = calloc(calls, sizeof *dig_ser);
-    final_rec *fin_par = calloc((size_t)points, sizeof *fin_par);
-    final_rec *fin_ser = calloc((size_t)points, sizeof *fin_ser);
-    worker w[N_THREADS];
-    pthread_t tid[N_THREADS];
-    tally par, ser;
-
-    fh_context("allocation");
-    if (!FH_CHECK(dig_par != NULL && dig_ser != NULL && fin_par != NULL && fin_ser != NULL)) {
-        return fh_finish();
-    }
-    memset(w, 0, sizeof w);
-    memset(&par, 0, sizeof par);
-    memset(&ser, 0, sizeof ser);
-
-    fh_context("%d threads, %d points x %d increments", N_THREADS, points, INCS);
-    pthread_barrier_init(&start_line, NULL, N_THREADS);
-    for (i = 0; i < N_THREADS; i++) {
-        w[i].first = (int)((long)points * i / N_THREADS);
-        w[i].last = (int)((long)points * (i + 1) / N_THREADS);
-        w[i].digests = dig_par;
-        w[i].finals = fin_par;
-        if (pthread_create(&tid[i], NULL, work, &w[i]) != 0) {
-            break;
-        }
-        created++;
-    }
-    if (!FH_CHECK(created == N_THREADS)) {
-        return fh_finish(); /* the barrier would never open */
-    }
-    for (i = 0; i < N_THREADS; i++) {
-        pthread_join(tid[i], NULL);
-        for (k = 0; k < N_KINDS; k++) {
-            par.kinds[k] += w[i].t.kinds[k];
-        }
-        par.violations += w[i].t.violations;
-        par.msg_bad += w[i].t.msg_bad;
-        par.alloc_fail += w[i].t.alloc_fail;
-        if (par.first_violation[0] == '\0') {
-            memcpy(par.first_violation, w[i].t.first_violation, sizeof par.first_violation);
-        }
-    }
-    pthread_barrier_destroy(&start_line);
-    report_tally("8 threads", &par, (long)calls);
-    FH_CHECK(par.alloc_fail == 0);
-    FH_CHECK(par.violations == 0);
-    FH_CHECK(par.msg_bad == 0);
-
-    fh_context("serial run");
-    run_points(0, points, dig_ser, fin_ser, &ser);
-    report_tally("serial", &ser, (long)calls);
-    FH_CHECK(ser.alloc_fail == 0);
-    FH_CHECK(ser.violations == 0);
-    FH_CHECK(ser.msg_bad == 0);
-    /* Each kind of call is well represented (at least 1 in 2000 calls, at least once). */
-    for (k = 0; k < N_KINDS; k++) {
-        fh_context("serial run: %s calls", KIND_NAMES[k]);
-        FH_CHECK(ser.kinds[k] > 0 && ser.kinds[k] >= (long)(calls / 2000));
-    }
-
-    fh_context("8 threads against serial, bit for bit");
-    FH_CHECK(memcmp(par.kinds, ser.kinds, sizeof par.kinds) == 0);
-    {
-        long diff = 0, fdiff = 0;
-        size_t j;
-        for (j = 0; j < calls; j++) {
-            if (dig_par[j] != dig_ser[j] && diff++ < 5) {
-                fprintf(stderr, "  point %zu, increment %zu: outputs differ\n", j / INCS,
-                        j % INCS);
-            }
-        }
-        for (i = 0; i < points; i++) {
-            fdiff += memcmp(&fin_par[i], &fin_ser[i], sizeof fin_par[i]) != 0;
-        }
-        FH_CHECK(memcmp(dig_par, dig_ser, calls * sizeof *dig_par) == 0);
-        FH_CHECK(diff == 0);
-        FH_CHECK(fdiff == 0);
-        printf("%zu fric_ calls on %d threads and %zu serial: %ld calls and %ld final states "
-               "differ\n", calls, N_THREADS, calls, diff, fdiff);
-    }
-    free(dig_par);
-    free(dig_ser);
-    free(fin_par);
-    free(fin_ser);
+    int points = FULL_POINTS / th_shrink_factor(FULL_POINTS / MIN_POINTS);
+    th_point_runs("fric_", points, INCS, run_point, sizeof(final_rec), report_tally, KIND_NAMES,
+                  N_KINDS);
     return fh_finish();
 }

@@ -30,8 +30,9 @@
 #include <string.h>
 
 #include "gapcon_harness.h"
+#include "thread_harness.h"
 
-enum { N_THREADS = 8, PER_THREAD = 131072, FULL_POINTS = N_THREADS * PER_THREAD };
+enum { N_THREADS = TH_THREADS, PER_THREAD = 131072, FULL_POINTS = N_THREADS * PER_THREAD };
 enum { MIN_POINTS = 8192 };
 
 enum { LAW_CONST, LAW_PTAB, LAW_TTAB, LAW_RAD, LAW_GAS_RAD, LAW_CMY, N_LAWS };
@@ -62,16 +63,6 @@ static point *points;
 static double *ak_par, *ak_ser;
 static IflConductance *nat_par, *nat_ser;
 static int *status_par, *status_ser;
-
-static int shrink_factor(void)
-{
-    const char *s = getenv("INTERFACIAL_TEST_SHRINK");
-    long v = s != NULL ? strtol(s, NULL, 10) : 1;
-    if (v < 1) {
-        return 1;
-    }
-    return v > FULL_POINTS / MIN_POINTS ? FULL_POINTS / MIN_POINTS : (int)v;
-}
 
 static pthread_barrier_t start_line, failed_line;
 
@@ -263,7 +254,7 @@ int main(int argc, char **argv)
     if (log != NULL && log[0] != '\0') {
         remove(log); /* the library appends */
     }
-    n_points = FULL_POINTS / shrink_factor();
+    n_points = FULL_POINTS / th_shrink_factor(FULL_POINTS / MIN_POINTS);
     points = calloc((size_t)n_points, sizeof *points);
     ak_par = calloc((size_t)n_points, sizeof *ak_par);
     ak_ser = calloc((size_t)n_points, sizeof *ak_ser);

@@ -28,15 +28,15 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
-#include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "harness.h"
+#include "thread_harness.h"
 
-enum { N_THREADS = 8, FULL_POINTS = 4096, INCS = 256, MIN_POINTS = 64 };
+enum { FULL_POINTS = 4096, INCS = 256, MIN_POINTS = 64 };
 #define PNEWDT_IN 1e36
 #define STATEV_TAIL (-5.5e55)
 #define KN 1e4
@@ -56,44 +56,14 @@ enum {
 static const char *const KIND_NAMES[N_KINDS] = {"stick",  "slip", "bonded", "open", "re-contact",
                                                 "heat",   "refused (NaN)", "NDIR 2", "NDIR 3"};
 
-#define LEHMER_M 2147483647u
-static uint32_t lehmer(uint32_t *x)
+static void violation(th_tally *t, const char *what, int point, int inc)
 {
-    *x = (uint32_t)(((uint64_t)*x * 48271u) % LEHMER_M);
-    return *x;
-}
-static double uniform(uint32_t *x, double lo, double hi)
-{
-    return lo + (hi - lo) * ((double)(lehmer(x) - 1u) / (double)(LEHMER_M - 1u));
-}
-
-typedef struct {
-    long kinds[N_KINDS];
-    long violations;
-    char first_violation[200];
-} tally;
-
-static void violation(tally *t, const char *what, int point, int inc)
-{
-    if (t->violations++ == 0) {
-        snprintf(t->first_violation, sizeof t->first_violation, "point %d increment %d: %s",
-                 point, inc, what);
-    }
+    th_violation(t, "point %d increment %d: %s", point, inc, what);
 }
 
 typedef struct {
     double stress[3], statev[5];
 } final_rec;
-
-static uint64_t fnv(uint64_t h, const void *p, size_t n)
-{
-    const unsigned char *b = p;
-    size_t i;
-    for (i = 0; i < n; i++) {
-        h = (h ^ b[i]) * 1099511628211ull;
-    }
-    return h;
-}
 
 static double *block(size_t n)
 {
@@ -101,14 +71,15 @@ static double *block(size_t n)
 }
 
 /* One point, all increments; digests[inc] per call, final state in *fin. */
-static void run_point(int ip, uint64_t *digests, final_rec *fin, tally *t)
+static void run_point(int ip, uint64_t *digests, void *fin_out, th_tally *t)
 {
+    final_rec *fin = fin_out;
     uint32_t rng = 1u + (uint32_t)ip * 7919u;
-    const int ndir = (lehmer(&rng) & 1u) ? 3 : 2;
-    const int nstatv = (lehmer(&rng) & 1u) ? 5 : 3;
-    const int adhesion = lehmer(&rng) % 3u != 0;
-    const int rate = lehmer(&rng) % 4u == 0;
-    const int heat = lehmer(&rng) % 2u == 0;
+    const int ndir = (th_lehmer(&rng) & 1u) ? 3 : 2;
+    const int nstatv = (th_lehmer(&rng) & 1u) ? 5 : 3;
+    const int adhesion = th_lehmer(&rng) % 3u != 0;
+    const int rate = th_lehmer(&rng) % 4u == 0;
+    const int heat = th_lehmer(&rng) % 2u == 0;
     double props[13] = {2.0};
     double *stress = block((size_t)ndir), *ddsddr = block((size_t)(ndir * ndir));
     double *dvisc = block((size_t)(ndir * ndir)), *dstruct = block((size_t)(ndir * ndir));
@@ -129,13 +100,13 @@ static void run_point(int ip, uint64_t *digests, final_rec *fin, tally *t)
         violation(t, "allocation failed", ip, 0);
         return;
     }
-    props[1] = uniform(&rng, 0.1, 0.5);                                   /* mu_d */
-    props[2] = (lehmer(&rng) & 1u) ? props[1] + uniform(&rng, 0.0, 0.2) : 0.0; /* mu_s */
-    props[3] = adhesion ? uniform(&rng, 1.0, 20.0) : 0.0;                 /* S_a */
-    props[4] = adhesion ? uniform(&rng, 5.0, 50.0) : 0.0;                 /* N_a */
-    props[5] = rate ? uniform(&rng, 0.0, 0.5) : 0.0;                      /* k_mu */
-    props[6] = rate ? uniform(&rng, 0.01, 1.0) : 0.0;                     /* v_half */
-    props[7] = uniform(&rng, 1e-4, 1e-3);                                 /* gamma_crit */
+    props[1] = th_uniform(&rng, 0.1, 0.5);                                   /* mu_d */
+    props[2] = (th_lehmer(&rng) & 1u) ? props[1] + th_uniform(&rng, 0.0, 0.2) : 0.0; /* mu_s */
+    props[3] = adhesion ? th_uniform(&rng, 1.0, 20.0) : 0.0;                 /* S_a */
+    props[4] = adhesion ? th_uniform(&rng, 5.0, 50.0) : 0.0;                 /* N_a */
+    props[5] = rate ? th_uniform(&rng, 0.0, 0.5) : 0.0;                      /* k_mu */
+    props[6] = rate ? th_uniform(&rng, 0.01, 1.0) : 0.0;                     /* v_half */
+    props[7] = th_uniform(&rng, 1e-4, 1e-3);                                 /* gamma_crit */
     props[9] = KN;
     props[10] = heat ? 1.0 : 0.0;
     props[11] = heat ? 0.5 : 0.0;
@@ -159,8 +130,8 @@ static void run_point(int ip, uint64_t *digests, final_rec *fin, tally *t)
         ddsddt[k] = ddfddr[k] = -1.0;
     }
     sed = sfd = spd = svd = scd = -1.0;
-    temp[0] = uniform(&rng, 300.0, 400.0);
-    temp[1] = uniform(&rng, 20.0, 100.0);
+    temp[0] = th_uniform(&rng, 300.0, 400.0);
+    temp[1] = th_uniform(&rng, 20.0, 100.0);
     dtemp[0] = dtemp[1] = predef[0] = predef[1] = dpred[0] = dpred[1] = 0.0;
     time[0] = time[1] = 0.0;
     memset(coords, 0, 3 * sizeof(double));
@@ -168,22 +139,22 @@ static void run_point(int ip, uint64_t *digests, final_rec *fin, tally *t)
     memset(drot, 0, 4 * sizeof(double));
     /* Overclosure wave: mostly closed (p up to ~ KN amp), dipping into tension (bonded) and,
      * for larger amplitudes, apart (open), then back in contact. */
-    amp = uniform(&rng, 1e-4, 2e-3);
-    offset = uniform(&rng, -0.5, 0.6) * amp;
-    omega = uniform(&rng, 0.05, 0.3);
-    slide_amp = uniform(&rng, 0.2, 3.0) * props[7];
+    amp = th_uniform(&rng, 1e-4, 2e-3);
+    offset = th_uniform(&rng, -0.5, 0.6) * amp;
+    omega = th_uniform(&rng, 0.05, 0.3);
+    slide_amp = th_uniform(&rng, 0.2, 3.0) * props[7];
     t->kinds[ndir == 2 ? K_NDIR2 : K_NDIR3] += INCS;
 
     for (inc = 0; inc < INCS; inc++) {
         double stress0[3], statev0[5], status0 = statev[2], tau = 0.0, p, bound, mu;
-        int refuse = lehmer(&rng) % 997u == 0, a, finite = 1;
+        int refuse = th_lehmer(&rng) % 997u == 0, a, finite = 1;
         uint64_t h = 1469598103934665603ull;
         memcpy(stress0, stress, (size_t)ndir * sizeof(double));
         memcpy(statev0, statev, (size_t)nstatv * sizeof(double));
         rdisp[0] = offset + amp * sin(omega * inc);
         drdisp[0] = 0.0;
         for (a = 1; a < ndir; a++) {
-            drdisp[a] = uniform(&rng, -slide_amp, slide_amp);
+            drdisp[a] = th_uniform(&rng, -slide_amp, slide_amp);
             rdisp[a] += drdisp[a];
         }
         if (refuse) {
@@ -199,18 +170,18 @@ static void run_point(int ip, uint64_t *digests, final_rec *fin, tally *t)
                 &dtime, &freqr, ciname, slname, msname, props, coords, alocaldir, drot, &area,
                 &chrlngth, &node, &ndir, &nstatv, &npred, &nprops, &mcrd, &kstep, &kinc, &kit,
                 &linper, &lopenclose, &lstate, &lsdi, &lprint, 80, 80, 80);
-        h = fnv(h, stress, (size_t)ndir * sizeof(double));
-        h = fnv(h, ddsddr, (size_t)(ndir * ndir) * sizeof(double));
-        h = fnv(h, flux, 2 * sizeof(double));
-        h = fnv(h, ddfddt, 4 * sizeof(double));
-        h = fnv(h, ddfddr, (size_t)(2 * ndir) * sizeof(double));
-        h = fnv(h, statev, (size_t)nstatv * sizeof(double));
-        h = fnv(h, &sed, sizeof sed);
-        h = fnv(h, &sfd, sizeof sfd);
-        h = fnv(h, &spd, sizeof spd);
-        h = fnv(h, &pnewdt, sizeof pnewdt);
-        h = fnv(h, &lopenclose, sizeof lopenclose);
-        h = fnv(h, &lstate, sizeof lstate);
+        h = th_fnv(h, stress, (size_t)ndir * sizeof(double));
+        h = th_fnv(h, ddsddr, (size_t)(ndir * ndir) * sizeof(double));
+        h = th_fnv(h, flux, 2 * sizeof(double));
+        h = th_fnv(h, ddfddt, 4 * sizeof(double));
+        h = th_fnv(h, ddfddr, (size_t)(2 * ndir) * sizeof(double));
+        h = th_fnv(h, statev, (size_t)nstatv * sizeof(double));
+        h = th_fnv(h, &sed, sizeof sed);
+        h = th_fnv(h, &sfd, sizeof sfd);
+        h = th_fnv(h, &spd, sizeof spd);
+        h = th_fnv(h, &pnewdt, sizeof pnewdt);
+        h = th_fnv(h, &lopenclose, sizeof lopenclose);
+        h = th_fnv(h, &lstate, sizeof lstate);
         digests[inc] = h;
         for (k = 3; k < nstatv; k++) {
             if (statev[k] != STATEV_TAIL) {
@@ -297,68 +268,20 @@ static void run_point(int ip, uint64_t *digests, final_rec *fin, tally *t)
     free(drot);
 }
 
-typedef struct {
-    int first, last;
-    uint64_t *digests;
-    final_rec *finals;
-    tally t;
-} worker;
-
-static pthread_barrier_t start_line;
-
-static void run_points(int first, int last, uint64_t *digests, final_rec *finals, tally *t)
+static void report_tally(const char *run, const th_tally *t)
 {
-    int ip;
-    for (ip = first; ip < last; ip++) {
-        run_point(ip, digests + (size_t)ip * INCS, finals + ip, t);
-    }
-}
-
-static void *work(void *arg)
-{
-    worker *w = arg;
-    pthread_barrier_wait(&start_line);
-    run_points(w->first, w->last, w->digests, w->finals, &w->t);
-    return NULL;
-}
-
-static int shrink_factor(void)
-{
-    const char *s = getenv("INTERFACIAL_TEST_SHRINK");
-    long v = s != NULL ? strtol(s, NULL, 10) : 1;
-    if (v < 1) {
-        return 1;
-    }
-    return v > FULL_POINTS / MIN_POINTS ? FULL_POINTS / MIN_POINTS : (int)v;
-}
-
-static void report_tally(const char *run, const tally *t, long calls)
-{
-    int k;
-    printf("%s: %ld calls;", run, calls);
-    for (k = 0; k < N_KINDS; k++) {
-        printf(" %s %ld%s", KIND_NAMES[k], t->kinds[k], k + 1 < N_KINDS ? "," : "\n");
-    }
-    if (t->violations > 0) {
-        fprintf(stderr, "  %s: %ld violations, first: %s\n", run, t->violations,
-                t->first_violation);
-    }
+    char head[48];
+    snprintf(head, sizeof head, "%ld calls", (long)t->points);
+    th_report(run, head, t, KIND_NAMES, N_KINDS, "");
 }
 
 int main(int argc, char **argv)
 {
     const char *path = argc > 1 ? argv[1] : "uinter_threads.toml";
-    int points = FULL_POINTS / shrink_factor(), i, k, created = 0;
-    size_t calls = (size_t)points * INCS;
-    uint64_t *dig_par = calloc(calls, sizeof *dig_par), *dig_ser = calloc(calls, sizeof *dig_ser);
-    final_rec *fin_par = calloc((size_t)points, sizeof *fin_par);
-    final_rec *fin_ser = calloc((size_t)points, sizeof *fin_ser);
-    worker w[N_THREADS];
-    pthread_t tid[N_THREADS];
-    tally par, ser;
+    int points = FULL_POINTS / th_shrink_factor(FULL_POINTS / MIN_POINTS);
     FILE *f;
 
-    fh_context("configuration and allocation");
+    fh_context("configuration");
     f = fopen(path, "w");
     if (!FH_CHECK(f != NULL)) {
         return fh_finish();
@@ -368,57 +291,7 @@ int main(int argc, char **argv)
           f);
     fclose(f);
     setenv("INTERFACIAL_CONFIG", path, 1);
-    if (!FH_CHECK(dig_par != NULL && dig_ser != NULL && fin_par != NULL && fin_ser != NULL)) {
-        return fh_finish();
-    }
-    memset(w, 0, sizeof w);
-    memset(&par, 0, sizeof par);
-    memset(&ser, 0, sizeof ser);
-
-    fh_context("%d threads, %d points x %d increments", N_THREADS, points, INCS);
-    pthread_barrier_init(&start_line, NULL, N_THREADS);
-    for (i = 0; i < N_THREADS; i++) {
-        w[i].first = (int)((long)points * i / N_THREADS);
-        w[i].last = (int)((long)points * (i + 1) / N_THREADS);
-        w[i].digests = dig_par;
-        w[i].finals = fin_par;
-        if (pthread_create(&tid[i], NULL, work, &w[i]) != 0) {
-            break;
-        }
-        created++;
-    }
-    if (!FH_CHECK(created == N_THREADS)) {
-        return fh_finish();
-    }
-    for (i = 0; i < N_THREADS; i++) {
-        pthread_join(tid[i], NULL);
-        for (k = 0; k < N_KINDS; k++) {
-            par.kinds[k] += w[i].t.kinds[k];
-        }
-        par.violations += w[i].t.violations;
-        if (par.first_violation[0] == '\0') {
-            memcpy(par.first_violation, w[i].t.first_violation, sizeof par.first_violation);
-        }
-    }
-    pthread_barrier_destroy(&start_line);
-    report_tally("8 threads", &par, (long)calls);
-    FH_CHECK(par.violations == 0);
-
-    fh_context("serial run");
-    run_points(0, points, dig_ser, fin_ser, &ser);
-    report_tally("serial", &ser, (long)calls);
-    FH_CHECK(ser.violations == 0);
-    for (k = 0; k < N_KINDS; k++) {
-        fh_context("kind '%s' occurs in at least 1 of 2000 calls", KIND_NAMES[k]);
-        FH_CHECK(ser.kinds[k] >= 1 && ser.kinds[k] * 2000 >= (long)calls);
-        FH_CHECK(par.kinds[k] == ser.kinds[k]);
-    }
-    fh_context("bit for bit: %zu digests, %d final states", calls, points);
-    FH_CHECK(memcmp(dig_par, dig_ser, calls * sizeof *dig_par) == 0);
-    FH_CHECK(memcmp(fin_par, fin_ser, (size_t)points * sizeof *fin_par) == 0);
-    free(dig_par);
-    free(dig_ser);
-    free(fin_par);
-    free(fin_ser);
+    th_point_runs("uinter_", points, INCS, run_point, sizeof(final_rec), report_tally, KIND_NAMES,
+                  N_KINDS);
     return fh_finish();
 }

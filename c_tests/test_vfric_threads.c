@@ -32,7 +32,6 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
-#include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -40,52 +39,17 @@
 
 #include "harness.h"
 #include "interfacial.h"
+#include "thread_harness.h"
 
-enum { N_THREADS = 8, FULL_BLOCKS = 16384, MAX_NCONTACT = 127, MIN_BLOCKS = 512, NPROPS = 7 };
+enum { FULL_BLOCKS = 16384, MAX_NCONTACT = 127, MIN_BLOCKS = 512, NPROPS = 7 };
 enum { MAX_SLAVES = 64, NSTATEV = 2, UNREAD = 3 * 3 * MAX_NCONTACT };
 enum { N_KINDS = 7, KIND_BAD_POINTS = 4, KIND_REFUSED = 5, KIND_NFRICDIR = 6 };
 static const char *const KIND_NAMES[N_KINDS] = {
     "plain", "tau_max", "rough", "exact stick", "bad points", "refused", "nFricDir 3"};
 
-/* ---- Lehmer generator (MINSTD): x <- 48271 x mod (2^31 - 1) ---------------------------- */
-#define LEHMER_M 2147483647u
-static uint32_t lehmer(uint32_t *x)
+static void violation(th_tally *t, int block, const char *what, double got, double want)
 {
-    *x = (uint32_t)(((uint64_t)*x * 48271u) % LEHMER_M);
-    return *x;
-}
-static double uniform(uint32_t *x, double lo, double hi)
-{
-    return lo + (hi - lo) * ((double)(lehmer(x) - 1u) / (double)(LEHMER_M - 1u));
-}
-
-/* ---- 64-bit FNV-1a over bytes ------------------------------------------------------------- */
-static uint64_t fnv1a(uint64_t h, const void *p, size_t n)
-{
-    const unsigned char *b = p;
-    size_t i;
-    for (i = 0; i < n; i++) {
-        h ^= b[i];
-        h *= 1099511628211u;
-    }
-    return h;
-}
-
-typedef struct {
-    long kinds[N_KINDS];
-    long points;
-    long bad_points;
-    long violations;
-    long alloc_fail;
-    char first_violation[256];
-} tally;
-
-static void violation(tally *t, int block, const char *what, double got, double want)
-{
-    if (t->violations++ == 0) {
-        snprintf(t->first_violation, sizeof t->first_violation,
-                 "block %d: %s: got %.17g, expected %.17g", block, what, got, want);
-    }
+    th_violation(t, "block %d: %s: got %.17g, expected %.17g", block, what, got, want);
 }
 
 /* One block's law and inputs, all drawn from the block's own generator. */
@@ -99,20 +63,20 @@ typedef struct {
 
 static int draw_block(int b, block_in *in)
 {
-    uint32_t x = (uint32_t)b * 2654435761u % (LEHMER_M - 1u) + 1u;
+    uint32_t x = (uint32_t)b * 2654435761u % (TH_LEHMER_M - 1u) + 1u;
     int k, kind, nbad;
-    lehmer(&x);
-    kind = (int)(lehmer(&x) % N_KINDS);
+    th_lehmer(&x);
+    kind = (int)(th_lehmer(&x) % N_KINDS);
     in->kind = kind;
     in->n = 1 + b % MAX_NCONTACT;
-    in->nf = kind == KIND_NFRICDIR ? 3 : 1 + (int)(lehmer(&x) % 2);
-    in->nslv = 1 + (int)(lehmer(&x) % MAX_SLAVES);
+    in->nf = kind == KIND_NFRICDIR ? 3 : 1 + (int)(th_lehmer(&x) % 2);
+    in->nslv = 1 + (int)(th_lehmer(&x) % MAX_SLAVES);
     in->last_bad = -1;
     memset(in->props, 0, sizeof in->props);
     in->props[0] = 1.0;
-    in->props[1] = uniform(&x, 0.05, 0.9);
+    in->props[1] = th_uniform(&x, 0.05, 0.9);
     if (kind != 0) {
-        in->props[3] = uniform(&x, 1.0, 50.0);
+        in->props[3] = th_uniform(&x, 1.0, 50.0);
     }
     if (kind == 2) {
         in->props[6] = 2.0;
@@ -129,22 +93,22 @@ static int draw_block(int b, block_in *in)
         return 0;
     }
     for (k = 0; k < in->nslv; k++) {
-        in->area[k] = uniform(&x, 0.1, 2.0);
+        in->area[k] = th_uniform(&x, 0.1, 2.0);
     }
     for (k = 0; k < in->n; k++) {
-        in->normal[k] = uniform(&x, -20.0, 300.0);
-        in->stick[k] = uniform(&x, 0.0, 100.0);
-        in->slave[k] = 1 + (int)(lehmer(&x) % (uint32_t)in->nslv);
+        in->normal[k] = th_uniform(&x, -20.0, 300.0);
+        in->stick[k] = th_uniform(&x, 0.0, 100.0);
+        in->slave[k] = 1 + (int)(th_lehmer(&x) % (uint32_t)in->nslv);
     }
     if (kind == KIND_BAD_POINTS) {
-        for (nbad = 1 + (int)(lehmer(&x) % 3); nbad > 0; nbad--) {
-            k = (int)(lehmer(&x) % (uint32_t)in->n);
-            switch (lehmer(&x) % 3) {
+        for (nbad = 1 + (int)(th_lehmer(&x) % 3); nbad > 0; nbad--) {
+            k = (int)(th_lehmer(&x) % (uint32_t)in->n);
+            switch (th_lehmer(&x) % 3) {
             case 0:
                 in->normal[k] = NAN;
                 break;
             case 1:
-                in->stick[k] = -uniform(&x, 0.1, 1.0);
+                in->stick[k] = -th_uniform(&x, 0.1, 1.0);
                 break;
             default:
                 in->slave[k] = in->nslv + 1;
@@ -157,7 +121,7 @@ static int draw_block(int b, block_in *in)
         }
     }
     if (kind == KIND_REFUSED) {
-        switch (lehmer(&x) % 3) {
+        switch (th_lehmer(&x) % 3) {
         case 0:
             in->props[1] = -in->props[1]; /* μ < 0 */
             break;
@@ -205,14 +169,14 @@ static int same_bits(double a, double b)
 }
 
 /* Calls vfric_ for block b and checks it; returns the digest of its outputs and message. */
-static uint64_t run_block(int b, tally *t)
+static uint64_t run_block(int b, th_tally *t)
 {
     block_in in;
     int n, nf, k, len, one = 1, two = NSTATEV, four = 4, nprops = NPROPS, ndir, ints[4] = {1, 1, 1, 1};
     double *ftan, *statev, *unread;
     char name[80], blank[80], want[48];
     const char *msg;
-    uint64_t h = 14695981039346656037u;
+    uint64_t h = TH_FNV_OFFSET;
 
     memset(&in, 0, sizeof in);
     if (!draw_block(b, &in)) {
@@ -255,8 +219,8 @@ static uint64_t run_block(int b, tally *t)
     msg = ifl_last_error();
     t->kinds[in.kind]++;
     t->points += n;
-    h = fnv1a(h, ftan, sizeof(double) * (size_t)(nf * n));
-    h = fnv1a(h, msg, strlen(msg) + 1);
+    h = th_fnv(h, ftan, sizeof(double) * (size_t)(nf * n));
+    h = th_fnv(h, msg, strlen(msg) + 1);
 
     for (k = 0; k < NSTATEV * n; k++) {
         if (statev[k] != 0.5 * k) {
@@ -307,126 +271,22 @@ static uint64_t run_block(int b, tally *t)
     return h;
 }
 
-static void run_blocks(int first, int last, uint64_t *digests, tally *t)
+static void report_tally(const char *run, const th_tally *t)
 {
-    int b;
-    for (b = first; b < last; b++) {
-        ifl_clear_error();
-        digests[b] = run_block(b, t);
-    }
-}
-
-typedef struct {
-    int first, last;
-    uint64_t *digests;
-    tally t;
-} worker;
-
-static pthread_barrier_t start_line;
-
-static void *work(void *arg)
-{
-    worker *w = arg;
-    pthread_barrier_wait(&start_line);
-    run_blocks(w->first, w->last, w->digests, &w->t);
-    return NULL;
-}
-
-static int shrink_factor(void)
-{
-    const char *s = getenv("INTERFACIAL_TEST_SHRINK");
-    long v = s != NULL ? strtol(s, NULL, 10) : 1;
-    if (v < 1) {
-        return 1;
-    }
-    return v > FULL_BLOCKS / MIN_BLOCKS ? FULL_BLOCKS / MIN_BLOCKS : (int)v;
-}
-
-static void report_tally(const char *run, const tally *t)
-{
-    int k;
-    printf("%s: %ld point evaluations (%ld bad points);", run, t->points, t->bad_points);
-    for (k = 0; k < N_KINDS; k++) {
-        printf(" %s %ld%s", KIND_NAMES[k], t->kinds[k], k + 1 < N_KINDS ? "," : " blocks\n");
-    }
-    if (t->violations > 0) {
-        fprintf(stderr, "  %s: %ld violations, first: %s\n", run, t->violations,
-                t->first_violation);
-    }
+    char head[96];
+    snprintf(head, sizeof head, "%ld point evaluations (%ld bad points)", t->points,
+             t->bad_points);
+    th_report(run, head, t, KIND_NAMES, N_KINDS, " blocks");
 }
 
 int main(void)
 {
-    int shrink = shrink_factor(), blocks = FULL_BLOCKS / shrink, i, k, created = 0;
-    uint64_t *dig_par = calloc((size_t)blocks, sizeof *dig_par);
-    uint64_t *dig_ser = calloc((size_t)blocks, sizeof *dig_ser);
-    worker w[N_THREADS];
-    pthread_t tid[N_THREADS];
-    tally par, ser;
+    int shrink = th_shrink_factor(FULL_BLOCKS / MIN_BLOCKS), blocks = FULL_BLOCKS / shrink;
+    th_tally par, ser;
 
-    fh_context("allocation");
-    if (!FH_CHECK(dig_par != NULL && dig_ser != NULL)) {
-        return fh_finish();
+    if (th_block_runs(blocks, shrink, run_block, report_tally, KIND_NAMES, N_KINDS, &par, &ser)) {
+        fh_context("bad points");
+        FH_CHECK(par.bad_points >= blocks / (2 * N_KINDS));
     }
-    memset(w, 0, sizeof w);
-    memset(&par, 0, sizeof par);
-    memset(&ser, 0, sizeof ser);
-
-    fh_context("%d threads, %d blocks", N_THREADS, blocks);
-    pthread_barrier_init(&start_line, NULL, N_THREADS);
-    for (i = 0; i < N_THREADS; i++) {
-        w[i].first = (int)((long)blocks * i / N_THREADS);
-        w[i].last = (int)((long)blocks * (i + 1) / N_THREADS);
-        w[i].digests = dig_par;
-        if (pthread_create(&tid[i], NULL, work, &w[i]) != 0) {
-            break;
-        }
-        created++;
-    }
-    if (!FH_CHECK(created == N_THREADS)) {
-        return fh_finish(); /* the barrier would never open */
-    }
-    for (i = 0; i < N_THREADS; i++) {
-        pthread_join(tid[i], NULL);
-        for (k = 0; k < N_KINDS; k++) {
-            par.kinds[k] += w[i].t.kinds[k];
-        }
-        par.points += w[i].t.points;
-        par.bad_points += w[i].t.bad_points;
-        par.violations += w[i].t.violations;
-        par.alloc_fail += w[i].t.alloc_fail;
-        if (par.first_violation[0] == '\0') {
-            memcpy(par.first_violation, w[i].t.first_violation, sizeof par.first_violation);
-        }
-    }
-    pthread_barrier_destroy(&start_line);
-    report_tally("8 threads", &par);
-    FH_CHECK(par.alloc_fail == 0);
-    FH_CHECK(par.violations == 0);
-
-    fh_context("serial run");
-    run_blocks(0, blocks, dig_ser, &ser);
-    report_tally("serial", &ser);
-    FH_CHECK(ser.alloc_fail == 0);
-    FH_CHECK(ser.violations == 0);
-
-    fh_context("8 threads against the serial run");
-    FH_CHECK(memcmp(dig_par, dig_ser, sizeof *dig_par * (size_t)blocks) == 0);
-    FH_CHECK(memcmp(par.kinds, ser.kinds, sizeof par.kinds) == 0);
-    FH_CHECK(par.points == ser.points);
-    FH_CHECK(par.bad_points == ser.bad_points);
-    /* At least 1M point evaluations at full size; every kind well represented. */
-    FH_CHECK(par.points >= 1000000L / shrink);
-    FH_CHECK(par.bad_points >= blocks / (2 * N_KINDS));
-    for (k = 0; k < N_KINDS; k++) {
-        fh_context("kind %s", KIND_NAMES[k]);
-        FH_CHECK(par.kinds[k] >= blocks / (2 * N_KINDS));
-    }
-    for (i = 0, k = 0; i < blocks; i++) {
-        k += dig_par[i] != dig_ser[i];
-    }
-    printf("blocks whose outputs differ between the runs: %d of %d\n", k, blocks);
-    free(dig_par);
-    free(dig_ser);
     return fh_finish();
 }

@@ -27,73 +27,20 @@ module fric_coef_omp_support
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: iso_c_binding, only: c_char, c_size_t
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+  use harness_threads
   implicit none
-  integer, parameter :: dp = kind(1.0d0)
   integer, parameter :: full_blocks = 16384, max_nblock = 127, min_blocks = 512
-  integer, parameter :: nthreads_min = 8, nprops = 13, n_laws = 8, law_bad = 8
-  integer(int64), parameter :: lehmer_m = 2147483647_int64
+  integer, parameter :: nprops = 13, n_laws = 8, law_bad = 8
   character(len=32), parameter :: law_names(n_laws) = [character(len=32) :: 'constant', &
     'anisotropic', 'decay', 'decay+pressure', 'decay+temperature', &
     'pressure+temperature aniso', 'all', 'refused']
 
-  integer :: npass = 0, nfail = 0
-
-  interface
-    function ifl_last_error_copy(buf, len) bind(c, name='ifl_last_error_copy') result(n)
-      import :: c_char, c_size_t
-      character(kind=c_char), dimension(*), intent(out) :: buf
-      integer(c_size_t), value :: len
-      integer(c_size_t) :: n
-    end function ifl_last_error_copy
-    subroutine ifl_clear_error() bind(c, name='ifl_clear_error')
-    end subroutine ifl_clear_error
-  end interface
-
 contains
 
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (ok) then
-      npass = npass + 1
-    else
-      nfail = nfail + 1
-      write (*, '(a,a)') 'FAIL: ', what
-    end if
-  end subroutine check
-
-  integer(int64) function lehmer(x)
-    integer(int64), intent(inout) :: x
-    x = mod(48271_int64*x, lehmer_m)
-    lehmer = x
-  end function lehmer
-
-  ! Uniform in [lo, hi).
-  real(dp) function uniform(x, lo, hi)
-    integer(int64), intent(inout) :: x
-    real(dp), intent(in) :: lo, hi
-    uniform = lo + (hi - lo)*(real(lehmer(x) - 1, dp)/real(lehmer_m - 2, dp))
-  end function uniform
-
-  ! Folds the bit pattern of v into the two hashes.
-  subroutine fold(h, v)
-    integer(int64), intent(inout) :: h(2)
-    real(dp), intent(in) :: v(:)
-    integer(int64) :: bits, lo, hi
-    integer :: i
-    do i = 1, size(v)
-      bits = transfer(v(i), 0_int64)
-      lo = iand(bits, 4294967295_int64)
-      hi = iand(ishft(bits, -32), 4294967295_int64)
-      h(1) = mod(mod(h(1)*48271_int64 + lo, lehmer_m)*48271_int64 + hi, lehmer_m)
-      h(2) = mod(mod(h(2)*16807_int64 + hi, lehmer_m)*16807_int64 + lo, lehmer_m)
-    end do
-  end subroutine fold
-
   ! Calls FRIC_COEF for block ib, checks it, returns its digest and law.
-  subroutine run_block(ib, digest, law, npts, bad, first_bad)
+  subroutine run_block(ib, dig, law, npts, bad, first_bad)
     integer, intent(in) :: ib
-    integer(int64), intent(out) :: digest(2)
+    integer(int64), intent(out) :: dig(2)
     integer, intent(out) :: law, npts
     integer, intent(inout) :: bad
     character(len=256), intent(inout) :: first_bad
@@ -167,9 +114,9 @@ contains
     call ifl_clear_error()
     call fric_coef(coef, deriv, n, npr, ntemp, nfields, idata, rdata, name, blank, blank, &
                    props, slip, press, temp, field)
-    digest = 0
-    call fold(digest, reshape(coef, [2*n]))
-    call fold(digest, reshape(deriv, [40*n]))
+    dig = 0
+    call digest(dig, reshape(coef, [2*n]))
+    call digest(dig, reshape(deriv, [40*n]))
 
     what = ' '
     mlen = ifl_last_error_copy(msg, int(size(msg), c_size_t))
@@ -239,30 +186,19 @@ contains
     end do
   end function starts_fric_coef
 
-  integer function shrink_factor()
-    character(len=32) :: v
-    integer :: stat, n
-    shrink_factor = 1
-    call get_environment_variable('INTERFACIAL_TEST_SHRINK', v, status=stat)
-    if (stat /= 0) return
-    read (v, *, iostat=stat) n
-    if (stat /= 0 .or. n < 1) return
-    shrink_factor = min(n, full_blocks/min_blocks)
-  end function shrink_factor
 end module fric_coef_omp_support
 
 program test_fric_coef_omp
   use fric_coef_omp_support
   use omp_lib, only: omp_get_thread_num, omp_get_max_threads
   implicit none
-  integer :: nblocks, ib, k, bad_par, bad_ser, nworkers, ndiff, shrink
+  integer :: nblocks, ib, bad_par, bad_ser, nworkers, shrink
   integer(int64), allocatable :: dig_par(:, :), dig_ser(:, :)
   integer, allocatable :: law_par(:), law_ser(:), n_par(:), n_ser(:)
   logical, allocatable :: worked(:)
   character(len=256) :: first_par, first_ser
-  integer(int64) :: points
 
-  shrink = shrink_factor()
+  shrink = shrink_factor(full_blocks/min_blocks)
   nblocks = full_blocks/shrink
   allocate (dig_par(2, nblocks), dig_ser(2, nblocks), law_par(nblocks), law_ser(nblocks), &
             n_par(nblocks), n_ser(nblocks), worked(0:max(omp_get_max_threads(), 1) - 1))
@@ -282,34 +218,18 @@ program test_fric_coef_omp
   !$omp end parallel do
   nworkers = count(worked)
   call check(nworkers >= nthreads_min, 'at least 8 OpenMP threads did work')
-  if (bad_par > 0) write (*, '(a,i0,a,a)') '  OpenMP: ', bad_par, ' violations, first: ', &
-    trim(first_par)
+  call report_violations('OpenMP', bad_par, first_par)
   call check(bad_par == 0, 'every OpenMP block matches the closed form')
 
   do ib = 1, nblocks
     call run_block(ib, dig_ser(:, ib), law_ser(ib), n_ser(ib), bad_ser, first_ser)
   end do
-  if (bad_ser > 0) write (*, '(a,i0,a,a)') '  serial: ', bad_ser, ' violations, first: ', &
-    trim(first_ser)
+  call report_violations('serial', bad_ser, first_ser)
   call check(bad_ser == 0, 'every serial block matches the closed form')
 
-  points = sum(int(n_par, int64))
-  write (*, '(a,i0,a,i0,a)', advance='no') 'blocks ', nblocks, ', point evaluations ', points, &
-    ', per law:'
-  do k = 1, n_laws
-    write (*, '(1x,a,1x,i0)', advance='no') trim(law_names(k)), count(law_par == k)
-    call check(count(law_par == k) >= nblocks/(2*n_laws), 'enough blocks of law '// &
-               trim(law_names(k)))
-  end do
-  write (*, '()')
-  call check(points >= 1000000_int64/shrink, 'at least 1M point evaluations (full size)')
-  call check(all(law_par == law_ser) .and. all(n_par == n_ser), 'same blocks in both runs')
-  ndiff = count(dig_par(1, :) /= dig_ser(1, :) .or. dig_par(2, :) /= dig_ser(2, :))
-  call check(ndiff == 0, 'every block: outputs bit for bit equal to the serial run')
-  write (*, '(i0,a,i0,a,i0,a)') nblocks, ' FRIC_COEF blocks on ', nworkers, &
-    ' OpenMP threads and serially: ', ndiff, ' blocks differ'
+  call compare_block_runs('FRIC_COEF', nworkers, shrink, law_names, law_par, law_ser, n_par, &
+                          n_ser, dig_par, dig_ser)
 
   deallocate (dig_par, dig_ser, law_par, law_ser, n_par, n_ser, worked)
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 end program test_fric_coef_omp

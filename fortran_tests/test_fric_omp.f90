@@ -29,10 +29,9 @@ module fric_omp_support
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: iso_c_binding, only: c_char, c_size_t
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+  use harness_threads
   implicit none
-  integer, parameter :: dp = kind(1.0d0)
-  integer, parameter :: full_points = 4096, incs = 256, min_points = 64, nthreads_min = 8
-  integer(int64), parameter :: lehmer_m = 2147483647_int64
+  integer, parameter :: full_points = 4096, incs = 256, min_points = 64
   real(dp), parameter :: pnewdt_in = 1.0e36_dp, statev_tail = -5.5e55_dp, cutback = 0.25_dp
   integer, parameter :: nrec = 24 ! final record: see final_record
 
@@ -45,62 +44,7 @@ module fric_omp_support
     'reversal to exact stick', 'rough', 'negative pressure', 'refused (NaN)', 'NFDIR 1', &
     'NFDIR 2']
 
-  integer :: npass = 0, nfail = 0
-
-  interface
-    function ifl_last_error_copy(buf, len) bind(c, name='ifl_last_error_copy') result(n)
-      import :: c_char, c_size_t
-      character(kind=c_char), dimension(*), intent(out) :: buf
-      integer(c_size_t), value :: len
-      integer(c_size_t) :: n
-    end function ifl_last_error_copy
-  end interface
-
 contains
-
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (ok) then
-      npass = npass + 1
-    else
-      nfail = nfail + 1
-      write (*, '(a,a)') 'FAIL: ', what
-    end if
-  end subroutine check
-
-  integer(int64) function lehmer(x)
-    integer(int64), intent(inout) :: x
-    x = mod(48271_int64*x, lehmer_m)
-    lehmer = x
-  end function lehmer
-
-  ! Uniform in [lo, hi).
-  real(dp) function uniform(x, lo, hi)
-    integer(int64), intent(inout) :: x
-    real(dp), intent(in) :: lo, hi
-    uniform = lo + (hi - lo)*(real(lehmer(x) - 1_int64, dp)/real(lehmer_m - 1_int64, dp))
-  end function uniform
-
-  ! Two multiplicative hashes mod 2**31 - 1 over the 64 bits of v, in three pieces of at most
-  ! 31 bits (no product exceeds 2**48).
-  subroutine mix(h1, h2, v)
-    integer(int64), intent(inout) :: h1, h2
-    real(dp), intent(in) :: v
-    integer(int64) :: bits, piece(3)
-    integer :: i
-    bits = transfer(v, bits)
-    piece = [ibits(bits, 0, 31), ibits(bits, 31, 31), ibits(bits, 62, 2)]
-    do i = 1, 3
-      h1 = mod(h1*48271_int64 + piece(i) + 1_int64, lehmer_m)
-      h2 = mod(h2*69621_int64 + piece(i) + 1_int64, lehmer_m)
-    end do
-  end subroutine mix
-
-  logical function same_bits(a, b)
-    real(dp), intent(in) :: a, b
-    same_bits = transfer(a, 0_int64) == transfer(b, 0_int64)
-  end function same_bits
 
   real(dp) function norm(v)
     real(dp), intent(in) :: v(:)
@@ -126,7 +70,7 @@ contains
       coords(3), rcoord(3), drot(2, 2), temp(2), predef(2, 1)
     character(len=80) :: ciname, slname, msname
     ! The host's bookkeeping.
-    integer(int64) :: rng, h1, h2
+    integer(int64) :: rng, h(2)
     real(dp) :: p_ref, tau_max, gc, p_old, tau_crit, tau_old(2), statev_old(3), s1_old, tn, m
     logical :: nan_call, slipping
     character(len=512) :: msg
@@ -135,7 +79,7 @@ contains
 
     rng = int(mod(ip, int(lehmer_m) - 1), int64) + 1_int64
     do i = 1, 4 ! decorrelate neighbouring seeds
-      h1 = lehmer(rng)
+      h(1) = lehmer(rng)
     end do
     nfdir = merge(1, 2, uniform(rng, 0.0_dp, 1.0_dp) < 0.5_dp)
     m = uniform(rng, 0.0_dp, 1.0_dp)
@@ -246,26 +190,25 @@ contains
       else
         call judge()
       end if
-      h1 = 1_int64
-      h2 = 1_int64
-      call mix(h1, h2, real(lm, dp))
+      h = 1_int64
+      call digest(h, real(lm, dp))
       do i = 1, nfdir
-        call mix(h1, h2, tau(i))
-        call mix(h1, h2, ddtddp(i))
-        call mix(h1, h2, dslip(i))
-        call mix(h1, h2, ddtddt(i, 1))
-        call mix(h1, h2, ddtddt(i, 2))
+        call digest(h, tau(i))
+        call digest(h, ddtddp(i))
+        call digest(h, dslip(i))
+        call digest(h, ddtddt(i, 1))
+        call digest(h, ddtddt(i, 2))
       end do
       do i = 1, nfdir*nfdir
-        call mix(h1, h2, ddtddg(mod(i - 1, nfdir) + 1, (i - 1)/nfdir + 1))
+        call digest(h, ddtddg(mod(i - 1, nfdir) + 1, (i - 1)/nfdir + 1))
       end do
-      call mix(h1, h2, sed)
-      call mix(h1, h2, sfd)
-      call mix(h1, h2, pnewdt)
+      call digest(h, sed)
+      call digest(h, sfd)
+      call digest(h, pnewdt)
       do i = 1, nstatv
-        call mix(h1, h2, statev(i))
+        call digest(h, statev(i))
       end do
-      dig(inc) = h1*2147483648_int64 + h2
+      dig(inc) = digest_of(h)
     end do
 
     fin = 0.0_dp
@@ -337,42 +280,20 @@ contains
       end if
     end subroutine judge
   end subroutine run_point
-
-  integer function shrink_factor()
-    character(len=32) :: v
-    integer :: stat, n
-    shrink_factor = 1
-    call get_environment_variable('INTERFACIAL_TEST_SHRINK', v, status=stat)
-    if (stat /= 0) return
-    read (v, *, iostat=stat) n
-    if (stat /= 0 .or. n < 1) return
-    shrink_factor = min(n, full_points/min_points)
-  end function shrink_factor
-
-  subroutine report(run, kinds, calls)
-    character(len=*), intent(in) :: run
-    integer(int64), intent(in) :: kinds(n_kinds), calls
-    integer :: k
-    write (*, '(a,a,i0,a)', advance='no') run, ': ', calls, ' calls;'
-    do k = 1, n_kinds
-      write (*, '(1x,a,1x,i0)', advance='no') trim(kind_names(k)), kinds(k)
-    end do
-    write (*, '()')
-  end subroutine report
 end module fric_omp_support
 
 program test_fric_omp
   use fric_omp_support
   use omp_lib, only: omp_get_thread_num, omp_get_max_threads
   implicit none
-  integer :: npoints, ip, k, bad_par, bad_ser, nworkers, ndiff, nfin
+  integer :: npoints, ip, bad_par, bad_ser, nworkers
   integer(int64), allocatable :: dig_par(:, :), dig_ser(:, :)
   real(dp), allocatable :: fin_par(:, :), fin_ser(:, :)
   integer(int64) :: kinds_par(n_kinds), kinds_ser(n_kinds), calls
   logical, allocatable :: worked(:)
   character(len=256) :: first_par, first_ser
 
-  npoints = full_points/shrink_factor()
+  npoints = full_points/shrink_factor(full_points/min_points)
   calls = int(npoints, int64)*incs
   allocate (dig_par(incs, npoints), dig_ser(incs, npoints), fin_par(nrec, npoints), &
             fin_ser(nrec, npoints), worked(0:max(omp_get_max_threads(), 1) - 1))
@@ -395,38 +316,15 @@ program test_fric_omp
   end do
   !$omp end parallel do
   nworkers = count(worked)
-  call report('OpenMP', kinds_par, calls)
+  call judge_run('OpenMP', kind_names, kinds_par, calls, bad_par, first_par)
   call check(nworkers >= nthreads_min, 'at least 8 OpenMP threads did work')
-  if (bad_par > 0) write (*, '(a,i0,a,a)') '  OpenMP: ', bad_par, ' violations, first: ', &
-    trim(first_par)
-  call check(bad_par == 0, 'every OpenMP call obeys the law')
 
   do ip = 1, npoints
     call run_point(ip, dig_ser(:, ip), fin_ser(:, ip), kinds_ser, bad_ser, first_ser)
   end do
-  call report('serial', kinds_ser, calls)
-  if (bad_ser > 0) write (*, '(a,i0,a,a)') '  serial: ', bad_ser, ' violations, first: ', &
-    trim(first_ser)
-  call check(bad_ser == 0, 'every serial call obeys the law')
-  do k = 1, n_kinds
-    call check(kinds_ser(k) > 0 .and. kinds_ser(k) >= calls/2000, &
-               'serial run: enough calls of kind '//trim(kind_names(k)))
-  end do
-
-  ndiff = count(dig_par /= dig_ser)
-  nfin = 0
-  do ip = 1, npoints
-    if (any(transfer(fin_par(:, ip), 0_int64, nrec) /= transfer(fin_ser(:, ip), 0_int64, nrec))) &
-      nfin = nfin + 1
-  end do
-  call check(all(kinds_par == kinds_ser), 'same counts of each kind in both runs')
-  call check(ndiff == 0, 'every call: outputs bit for bit equal to the serial run')
-  call check(nfin == 0, 'every point: final outputs bit for bit equal to the serial run')
-  write (*, '(i0,a,i0,a,i0,a,i0,a,i0,a)') calls, ' FRIC calls on ', nworkers, &
-    ' OpenMP threads and ', calls, ' serial: ', ndiff, ' calls and ', nfin, &
-    ' final states differ'
-
+  call judge_run('serial', kind_names, kinds_ser, calls, bad_ser, first_ser)
+  call compare_point_runs('FRIC', nworkers, kind_names, kinds_par, kinds_ser, dig_par, dig_ser, &
+                          fin_par, fin_ser)
   deallocate (dig_par, dig_ser, fin_par, fin_ser, worked)
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 end program test_fric_omp

@@ -24,17 +24,14 @@
 module gapcon_omp_support
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: iso_c_binding, only: c_char, c_double, c_int, c_null_char
+  use harness_threads
   implicit none
-  integer, parameter :: dp = kind(1.0d0)
-  integer, parameter :: full_points = 8*131072, min_points = 8192, nthreads_min = 8
-  integer(int64), parameter :: lehmer_m = 2147483647_int64
+  integer, parameter :: full_points = 8*131072, min_points = 8192
   real(dp), parameter :: guard = -3.33e33_dp, sigma = 5.670374419e-8_dp, view = 0.8_dp
 
   integer, parameter :: n_laws = 6
   character(len=8), parameter :: names(n_laws) = [character(len=8) :: 'T1CONST', 'T1PTAB', &
     'T1TEMP', 'RADK', 'RADC', 'GASRAD']
-
-  integer :: npass = 0, nfail = 0
 
   type, bind(c) :: ifl_conductance
     real(c_double) :: k, dk_dd, dk_dp, dk_dtheta_mean, dq_dtheta_a, dq_dtheta_b
@@ -52,24 +49,6 @@ module gapcon_omp_support
   end interface
 
 contains
-
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (ok) then
-      npass = npass + 1
-    else
-      nfail = nfail + 1
-      write (*, '(a,a)') 'FAIL: ', what
-    end if
-  end subroutine check
-
-  real(dp) function uniform(x, lo, hi)
-    integer(int64), intent(inout) :: x
-    real(dp), intent(in) :: lo, hi
-    x = mod(48271_int64*x, lehmer_m)
-    uniform = lo + (hi - lo)*(real(x - 1_int64, dp)/real(lehmer_m - 1_int64, dp))
-  end function uniform
 
   ! Point ip: its law, clearance d, pressure p and surface temperatures ta, tb.
   subroutine point_inputs(ip, law, d, p, ta, tb)
@@ -158,16 +137,6 @@ contains
     end select
   end subroutine by_hand
 
-  integer function shrink_factor()
-    character(len=32) :: v
-    integer :: stat, n
-    shrink_factor = 1
-    call get_environment_variable('INTERFACIAL_TEST_SHRINK', v, status=stat)
-    if (stat /= 0) return
-    read (v, *, iostat=stat) n
-    if (stat /= 0 .or. n < 1) return
-    shrink_factor = min(n, full_points/min_points)
-  end function shrink_factor
 end module gapcon_omp_support
 
 program test_gapcon_omp
@@ -183,7 +152,7 @@ program test_gapcon_omp
   type(ifl_conductance) :: nat
   integer(c_int) :: status
 
-  npoints = full_points/shrink_factor()
+  npoints = full_points/shrink_factor(full_points/min_points)
   allocate (ak_par(npoints), ak_ser(npoints), ok_par(npoints), ok_ser(npoints), &
             worked(0:max(omp_get_max_threads(), 1) - 1))
   worked = .false.
@@ -245,6 +214,5 @@ program test_gapcon_omp
     ' checked by hand'
 
   deallocate (ak_par, ak_ser, ok_par, ok_ser, worked)
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 end program test_gapcon_omp

@@ -26,65 +26,17 @@
 module uinter_omp_support
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
+  use harness_threads
   implicit none
-  integer, parameter :: dp = kind(1.0d0)
-  integer, parameter :: full_points = 4096, incs = 256, min_points = 64, nthreads_min = 8
-  integer(int64), parameter :: lehmer_m = 2147483647_int64
+  integer, parameter :: full_points = 4096, incs = 256, min_points = 64
   real(dp), parameter :: pnewdt_in = 1.0e36_dp, statev_tail = -5.5e55_dp, kn = 1.0e4_dp
   integer, parameter :: nrec = 8 ! final record: STRESS(3), STATEV(5)
   integer, parameter :: k_stick = 1, k_slip = 2, k_bonded = 3, k_open = 4, k_recontact = 5, &
     k_heat = 6, k_refused = 7, k_ndir2 = 8, k_ndir3 = 9, n_kinds = 9
   character(len=16), parameter :: kind_names(n_kinds) = [character(len=16) :: 'stick', &
     'slip', 'bonded', 'open', 're-contact', 'heat', 'refused (NaN)', 'NDIR 2', 'NDIR 3']
-  integer :: npass = 0, nfail = 0
 
 contains
-
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (ok) then
-      npass = npass + 1
-    else
-      nfail = nfail + 1
-      write (*, '(a,a)') 'FAIL: ', what
-    end if
-  end subroutine check
-
-  integer(int64) function lehmer(x)
-    integer(int64), intent(inout) :: x
-    x = mod(48271_int64*x, lehmer_m)
-    lehmer = x
-  end function lehmer
-
-  real(dp) function uniform(x, lo, hi)
-    integer(int64), intent(inout) :: x
-    real(dp), intent(in) :: lo, hi
-    uniform = lo + (hi - lo)*(real(lehmer(x) - 1_int64, dp)/real(lehmer_m - 1_int64, dp))
-  end function uniform
-
-  ! Two multiplicative hashes mod 2**31 - 1 over the 64 bits of v, in three pieces.
-  subroutine mix(h1, h2, v)
-    integer(int64), intent(inout) :: h1, h2
-    real(dp), intent(in) :: v
-    integer(int64) :: bits, piece(3)
-    integer :: i
-    bits = transfer(v, bits)
-    piece = [ibits(bits, 0, 31), ibits(bits, 31, 31), ibits(bits, 62, 2)]
-    do i = 1, 3
-      h1 = mod(h1*48271_int64 + piece(i) + 1_int64, lehmer_m)
-      h2 = mod(h2*69621_int64 + piece(i) + 1_int64, lehmer_m)
-    end do
-  end subroutine mix
-
-  subroutine mix_all(h1, h2, v)
-    integer(int64), intent(inout) :: h1, h2
-    real(dp), intent(in) :: v(:)
-    integer :: i
-    do i = 1, size(v)
-      call mix(h1, h2, v(i))
-    end do
-  end subroutine mix_all
 
   ! One interface point of one run: 256 digests into dig(:), the final state into fin(:).
   subroutine run_point(ip, dig, fin, kinds, bad, first_bad)
@@ -94,7 +46,7 @@ contains
     integer(int64), intent(inout) :: kinds(n_kinds)
     integer, intent(inout) :: bad
     character(len=*), intent(inout) :: first_bad
-    integer(int64) :: rng, h1, h2
+    integer(int64) :: rng, h(2)
     integer :: ndir, nstatv, node, npred, nprops, mcrd, kstep, kinc, kit, linper
     integer :: lopenclose, lstate, lsdi, lprint, inc, a
     logical :: adhesion, rate, heat, refuse, finite
@@ -176,15 +128,15 @@ contains
                   dtime, freqr, ciname, slname, msname, props, coords, alocaldir, drot, area, &
                   chrlngth, node, ndir, nstatv, npred, nprops, mcrd, kstep, kinc, kit, linper, &
                   lopenclose, lstate, lsdi, lprint)
-      h1 = 1_int64; h2 = 2_int64
-      call mix_all(h1, h2, stress)
-      call mix_all(h1, h2, ddsddr)
-      call mix_all(h1, h2, flux)
-      call mix_all(h1, h2, ddfddt)
-      call mix_all(h1, h2, ddfddr)
-      call mix_all(h1, h2, statev)
-      call mix_all(h1, h2, [sed, sfd, spd, pnewdt, real(lopenclose, dp), real(lstate, dp)])
-      dig(inc) = h1*lehmer_m + h2
+      h = [1_int64, 2_int64]
+      call digest(h, stress)
+      call digest(h, ddsddr)
+      call digest(h, flux)
+      call digest(h, ddfddt)
+      call digest(h, ddfddr)
+      call digest(h, statev)
+      call digest(h, [sed, sfd, spd, pnewdt, real(lopenclose, dp), real(lstate, dp)])
+      dig(inc) = digest_of(h)
       if (nstatv > 3) then
         if (any(transfer(statev(4:), 0_int64, nstatv - 3) /= &
                 transfer(statev_tail, 0_int64))) call fault('STATEV past 3 written')
@@ -256,42 +208,20 @@ contains
       !$omp end critical (uinter_omp_fault)
     end subroutine fault
   end subroutine run_point
-
-  integer function shrink_factor()
-    character(len=32) :: v
-    integer :: stat, n
-    shrink_factor = 1
-    call get_environment_variable('INTERFACIAL_TEST_SHRINK', v, status=stat)
-    if (stat /= 0) return
-    read (v, *, iostat=stat) n
-    if (stat /= 0 .or. n < 1) return
-    shrink_factor = min(n, full_points/min_points)
-  end function shrink_factor
-
-  subroutine report(run, kinds, calls)
-    character(len=*), intent(in) :: run
-    integer(int64), intent(in) :: kinds(n_kinds), calls
-    integer :: k
-    write (*, '(a,a,i0,a)', advance='no') run, ': ', calls, ' calls;'
-    do k = 1, n_kinds
-      write (*, '(1x,a,1x,i0)', advance='no') trim(kind_names(k)), kinds(k)
-    end do
-    write (*, '()')
-  end subroutine report
 end module uinter_omp_support
 
 program test_uinter_omp
   use uinter_omp_support
   use omp_lib, only: omp_get_thread_num, omp_get_max_threads
   implicit none
-  integer :: npoints, ip, k, bad_par, bad_ser, nworkers, ndiff, nfin
+  integer :: npoints, ip, bad_par, bad_ser, nworkers
   integer(int64), allocatable :: dig_par(:, :), dig_ser(:, :)
   real(dp), allocatable :: fin_par(:, :), fin_ser(:, :)
   integer(int64) :: kinds_par(n_kinds), kinds_ser(n_kinds), calls
   logical, allocatable :: worked(:)
   character(len=256) :: first_par, first_ser
 
-  npoints = full_points/shrink_factor()
+  npoints = full_points/shrink_factor(full_points/min_points)
   calls = int(npoints, int64)*incs
   allocate (dig_par(incs, npoints), dig_ser(incs, npoints), fin_par(nrec, npoints), &
             fin_ser(nrec, npoints), worked(0:max(omp_get_max_threads(), 1) - 1))
@@ -309,37 +239,15 @@ program test_uinter_omp
   end do
   !$omp end parallel do
   nworkers = count(worked)
-  call report('OpenMP', kinds_par, calls)
+  call judge_run('OpenMP', kind_names, kinds_par, calls, bad_par, first_par)
   call check(nworkers >= nthreads_min, 'at least 8 OpenMP threads did work')
-  if (bad_par > 0) write (*, '(a,i0,a,a)') '  OpenMP: ', bad_par, ' violations, first: ', &
-    trim(first_par)
-  call check(bad_par == 0, 'every OpenMP call obeys the law')
 
   do ip = 1, npoints
     call run_point(ip, dig_ser(:, ip), fin_ser(:, ip), kinds_ser, bad_ser, first_ser)
   end do
-  call report('serial', kinds_ser, calls)
-  if (bad_ser > 0) write (*, '(a,i0,a,a)') '  serial: ', bad_ser, ' violations, first: ', &
-    trim(first_ser)
-  call check(bad_ser == 0, 'every serial call obeys the law')
-  do k = 1, n_kinds
-    call check(kinds_ser(k) > 0 .and. kinds_ser(k) >= calls/2000, &
-               'serial run: enough calls of kind '//trim(kind_names(k)))
-  end do
-
-  ndiff = count(dig_par /= dig_ser)
-  nfin = 0
-  do ip = 1, npoints
-    if (any(transfer(fin_par(:, ip), 0_int64, nrec) /= transfer(fin_ser(:, ip), 0_int64, nrec))) &
-      nfin = nfin + 1
-  end do
-  call check(all(kinds_par == kinds_ser), 'same counts of each kind in both runs')
-  call check(ndiff == 0, 'every call: outputs bit for bit equal to the serial run')
-  call check(nfin == 0, 'every point: final state bit for bit equal to the serial run')
-  write (*, '(i0,a,i0,a,i0,a,i0,a,i0,a)') calls, ' UINTER calls on ', nworkers, &
-    ' OpenMP threads and ', calls, ' serial: ', ndiff, ' calls and ', nfin, &
-    ' final states differ'
+  call judge_run('serial', kind_names, kinds_ser, calls, bad_ser, first_ser)
+  call compare_point_runs('UINTER', nworkers, kind_names, kinds_par, kinds_ser, dig_par, dig_ser, &
+                          fin_par, fin_ser)
   deallocate (dig_par, dig_ser, fin_par, fin_ser, worked)
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 end program test_uinter_omp

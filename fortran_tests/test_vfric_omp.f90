@@ -30,76 +30,22 @@ module vfric_omp_support
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: iso_c_binding, only: c_char, c_size_t
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+  use harness_threads
   implicit none
-  integer, parameter :: dp = kind(1.0d0)
   integer, parameter :: full_blocks = 16384, max_ncontact = 127, min_blocks = 512
-  integer, parameter :: nthreads_min = 8, nprops = 7, n_kinds = 7, max_slaves = 64
+  integer, parameter :: nprops = 7, n_kinds = 7, max_slaves = 64
   integer, parameter :: kind_bad_points = 5, kind_refused = 6, kind_nfricdir = 7
   integer, parameter :: n_unread = 3*3*max_ncontact
-  integer(int64), parameter :: lehmer_m = 2147483647_int64
   real(dp), parameter :: guard = -7.77e77_dp
   character(len=16), parameter :: kind_names(n_kinds) = [character(len=16) :: 'plain', &
     'tau_max', 'rough', 'exact stick', 'bad points', 'refused', 'nFricDir 3']
 
-  integer :: npass = 0, nfail = 0
-
-  interface
-    function ifl_last_error_copy(buf, len) bind(c, name='ifl_last_error_copy') result(n)
-      import :: c_char, c_size_t
-      character(kind=c_char), dimension(*), intent(out) :: buf
-      integer(c_size_t), value :: len
-      integer(c_size_t) :: n
-    end function ifl_last_error_copy
-    subroutine ifl_clear_error() bind(c, name='ifl_clear_error')
-    end subroutine ifl_clear_error
-  end interface
-
 contains
 
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (ok) then
-      npass = npass + 1
-    else
-      nfail = nfail + 1
-      write (*, '(a,a)') 'FAIL: ', what
-    end if
-  end subroutine check
-
-  integer(int64) function lehmer(x)
-    integer(int64), intent(inout) :: x
-    x = mod(48271_int64*x, lehmer_m)
-    lehmer = x
-  end function lehmer
-
-  ! Uniform in [lo, hi).
-  real(dp) function uniform(x, lo, hi)
-    integer(int64), intent(inout) :: x
-    real(dp), intent(in) :: lo, hi
-    uniform = lo + (hi - lo)*(real(lehmer(x) - 1, dp)/real(lehmer_m - 2, dp))
-  end function uniform
-
-  ! Folds a 64-bit pattern into the two hashes.
-  subroutine fold_bits(h, bits)
-    integer(int64), intent(inout) :: h(2)
-    integer(int64), intent(in) :: bits
-    integer(int64) :: lo, hi
-    lo = iand(bits, 4294967295_int64)
-    hi = iand(ishft(bits, -32), 4294967295_int64)
-    h(1) = mod(mod(h(1)*48271_int64 + lo, lehmer_m)*48271_int64 + hi, lehmer_m)
-    h(2) = mod(mod(h(2)*16807_int64 + hi, lehmer_m)*16807_int64 + lo, lehmer_m)
-  end subroutine fold_bits
-
-  logical function same_bits(a, b)
-    real(dp), intent(in) :: a, b
-    same_bits = transfer(a, 0_int64) == transfer(b, 0_int64)
-  end function same_bits
-
   ! Calls VFRIC for block ib, checks it, returns its digest, kind and size.
-  subroutine run_block(ib, digest, kind, npts, nbad_pts, bad, first_bad)
+  subroutine run_block(ib, dig, kind, npts, nbad_pts, bad, first_bad)
     integer, intent(in) :: ib
-    integer(int64), intent(out) :: digest(2)
+    integer(int64), intent(out) :: dig(2)
     integer, intent(out) :: kind, npts, nbad_pts
     integer, intent(inout) :: bad
     character(len=256), intent(inout) :: first_bad
@@ -193,14 +139,14 @@ contains
     do j = 1, min(int(mlen), len(text))
       text(j:j) = msg(j)
     end do
-    digest = 0
+    dig = 0
     do k = 1, n
       do j = 1, nf
-        call fold_bits(digest, transfer(ftan(j, k), 0_int64))
+        call digest(dig, transfer(ftan(j, k), 0_int64))
       end do
     end do
     do j = 1, min(int(mlen), len(text))
-      call fold_bits(digest, int(ichar(text(j:j)), int64))
+      call digest(dig, int(ichar(text(j:j)), int64))
     end do
 
     what = ' '
@@ -264,30 +210,19 @@ contains
     deallocate (ftan, statev, normal, stick, area, slave, isbad)
   end subroutine run_block
 
-  integer function shrink_factor()
-    character(len=32) :: v
-    integer :: stat, n
-    shrink_factor = 1
-    call get_environment_variable('INTERFACIAL_TEST_SHRINK', v, status=stat)
-    if (stat /= 0) return
-    read (v, *, iostat=stat) n
-    if (stat /= 0 .or. n < 1) return
-    shrink_factor = min(n, full_blocks/min_blocks)
-  end function shrink_factor
 end module vfric_omp_support
 
 program test_vfric_omp
   use vfric_omp_support
   use omp_lib, only: omp_get_thread_num, omp_get_max_threads
   implicit none
-  integer :: nblocks, ib, k, bad_par, bad_ser, nworkers, ndiff, shrink
+  integer :: nblocks, ib, bad_par, bad_ser, nworkers, shrink
   integer(int64), allocatable :: dig_par(:, :), dig_ser(:, :)
   integer, allocatable :: kind_par(:), kind_ser(:), n_par(:), n_ser(:), b_par(:), b_ser(:)
   logical, allocatable :: worked(:)
   character(len=256) :: first_par, first_ser
-  integer(int64) :: points
 
-  shrink = shrink_factor()
+  shrink = shrink_factor(full_blocks/min_blocks)
   nblocks = full_blocks/shrink
   allocate (dig_par(2, nblocks), dig_ser(2, nblocks), kind_par(nblocks), kind_ser(nblocks), &
             n_par(nblocks), n_ser(nblocks), b_par(nblocks), b_ser(nblocks), &
@@ -308,36 +243,21 @@ program test_vfric_omp
   !$omp end parallel do
   nworkers = count(worked)
   call check(nworkers >= nthreads_min, 'at least 8 OpenMP threads did work')
-  if (bad_par > 0) write (*, '(a,i0,a,a)') '  OpenMP: ', bad_par, ' violations, first: ', &
-    trim(first_par)
+  call report_violations('OpenMP', bad_par, first_par)
   call check(bad_par == 0, 'every OpenMP block matches docs/vfric.md')
 
   do ib = 1, nblocks
     call run_block(ib, dig_ser(:, ib), kind_ser(ib), n_ser(ib), b_ser(ib), bad_ser, first_ser)
   end do
-  if (bad_ser > 0) write (*, '(a,i0,a,a)') '  serial: ', bad_ser, ' violations, first: ', &
-    trim(first_ser)
+  call report_violations('serial', bad_ser, first_ser)
   call check(bad_ser == 0, 'every serial block matches docs/vfric.md')
 
-  points = sum(int(n_par, int64))
-  write (*, '(a,i0,a,i0,a,i0,a)', advance='no') 'blocks ', nblocks, ', point evaluations ', &
-    points, ' (', sum(b_par), ' bad points), per kind:'
-  do k = 1, n_kinds
-    write (*, '(1x,a,1x,i0)', advance='no') trim(kind_names(k)), count(kind_par == k)
-    call check(count(kind_par == k) >= nblocks/(2*n_kinds), 'enough blocks of kind '// &
-               trim(kind_names(k)))
-  end do
-  write (*, '()')
-  call check(points >= 1000000_int64/shrink, 'at least 1M point evaluations (full size)')
+  write (*, '(a,i0)') 'bad points: ', sum(b_par)
   call check(sum(b_par) >= nblocks/(2*n_kinds), 'enough bad points')
-  call check(all(kind_par == kind_ser) .and. all(n_par == n_ser) .and. all(b_par == b_ser), &
-             'same blocks in both runs')
-  ndiff = count(dig_par(1, :) /= dig_ser(1, :) .or. dig_par(2, :) /= dig_ser(2, :))
-  call check(ndiff == 0, 'every block: forces and message bit for bit equal to the serial run')
-  write (*, '(i0,a,i0,a,i0,a)') nblocks, ' VFRIC blocks on ', nworkers, &
-    ' OpenMP threads and serially: ', ndiff, ' blocks differ'
+  call check(all(b_par == b_ser), 'the same bad points in both runs')
+  call compare_block_runs('VFRIC', nworkers, shrink, kind_names, kind_par, kind_ser, n_par, &
+                          n_ser, dig_par, dig_ser)
 
   deallocate (dig_par, dig_ser, kind_par, kind_ser, n_par, n_ser, b_par, b_ser, worked)
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 end program test_vfric_omp

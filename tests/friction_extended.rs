@@ -5,6 +5,10 @@
 
 #![allow(clippy::needless_range_loop)] // index loops mirror the a, b indices of the equations
 
+#[path = "common/central.rs"]
+mod central;
+use central::{Shift, along_dgam, along_press, along_temp, central_tau};
+
 use interfacial::abi::host::FricCall;
 use interfacial::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment, StickMode};
 use interfacial::laws::coulomb_extended::{
@@ -236,32 +240,6 @@ thread_local! {
     static CHECKED: Cell<u32> = const { Cell::new(0) };
 }
 
-/// Central difference of TAU(a) with step h along `shift(h)`, and whether the step h and 2h
-/// agree (no kink or branch change inside the stencil).
-fn central(
-    s: &Sample,
-    a: usize,
-    h: f64,
-    shift: impl Fn(f64) -> ([f64; 2], f64, [f64; 2]),
-    scale: f64,
-) -> Option<f64> {
-    let fd = |h: f64| {
-        let (g1, p1, t1) = shift(h);
-        let (g2, p2, t2) = shift(-h);
-        let up = call(s, g1, p1, t1);
-        let dn = call(s, g2, p2, t2);
-        if up.pnewdt != 1e36 || dn.pnewdt != 1e36 || up.lm != 0 || dn.lm != 0 {
-            return None;
-        }
-        if up.statev[2] != dn.statev[2] {
-            return None;
-        }
-        Some((up.tau[a] - dn.tau[a]) / (2.0 * h))
-    };
-    let (f1, f2) = (fd(h)?, fd(2.0 * h)?);
-    ((f1 - f2).abs() <= 1e-7 * scale).then_some(f1)
-}
-
 /// DDTDDG, DDTDDP and DDTDDT(·,1..2) against central differences of TAU, in every branch
 /// (stick, slip, cap, exact-stick slip) and every law (constant, decay, frozen, pressure,
 /// temperature, HHT, damping, anisotropy), NFDIR 1 and 2; and the invariants of each result.
@@ -293,6 +271,7 @@ fn check_tangents(s: Sample) -> Result<(), TestCaseError> {
     if base.lm != 0 {
         return Ok(()); // exact stick (LM = 1): no tangent to check
     }
+    let at = |(g, dp, dt): Shift| call(&s, g, dp, dt);
     let law = &s.law;
     let p = s.p0 + s.dp;
     let mbar = law.mbar(n);
@@ -304,17 +283,7 @@ fn check_tangents(s: Sample) -> Result<(), TestCaseError> {
     for b in 0..n {
         for a in 0..n {
             let h = 1e-6 * gc;
-            let fd = central(
-                &s,
-                a,
-                h,
-                |h| {
-                    let mut g = [0.0; 2];
-                    g[b] = h;
-                    (g, 0.0, [0.0; 2])
-                },
-                k_scale,
-            );
+            let fd = central_tau(a, h, k_scale, along_dgam(b), at);
             match fd {
                 Some(fd) => {
                     let an = base.ddtddg(a, b);
@@ -330,7 +299,7 @@ fn check_tangents(s: Sample) -> Result<(), TestCaseError> {
     // DDTDDP(a): the end pressure moves, the start (PRESS − DPRESS) stays.
     let hp = 1e-6 * s.p0;
     for a in 0..n {
-        match central(&s, a, hp, |h| ([0.0; 2], h, [0.0; 2]), mbar.max(1.0)) {
+        match central_tau(a, hp, mbar.max(1.0), along_press, at) {
             Some(fd) => {
                 let an = base.ddtddp[a];
                 prop_assert!(
@@ -346,17 +315,7 @@ fn check_tangents(s: Sample) -> Result<(), TestCaseError> {
     let t_scale = mbar * p.abs().max(1.0) * 0.05;
     for k in 0..2 {
         for a in 0..n {
-            let fd = central(
-                &s,
-                a,
-                ht,
-                |h| {
-                    let mut t = [0.0; 2];
-                    t[k] = h;
-                    ([0.0; 2], 0.0, t)
-                },
-                t_scale,
-            );
+            let fd = central_tau(a, ht, t_scale, along_temp(k), at);
             match fd {
                 Some(fd) => {
                     let an = base.ddtddt[a + k * n];

@@ -7,6 +7,10 @@
 
 #![allow(clippy::needless_range_loop)] // index loops mirror the a, b indices of the equations
 
+#[path = "common/central.rs"]
+mod central;
+use central::{Shift, along_dgam, along_press, along_temp, central_tau};
+
 use std::ffi::c_int;
 use std::process::Command;
 use std::sync::Once;
@@ -198,32 +202,6 @@ fn call(s: &Sample, dg: [f64; 2], dp: f64, dt: [f64; 2]) -> FricCall {
     c
 }
 
-/// Central difference of TAU(a), or None when the stencil crosses a kink of the table or a
-/// branch change (steps h and 2h disagree, or the status differs).
-fn central(
-    s: &Sample,
-    a: usize,
-    h: f64,
-    shift: impl Fn(f64) -> ([f64; 2], f64, [f64; 2]),
-    scale: f64,
-) -> Option<f64> {
-    let fd = |h: f64| {
-        let (g1, p1, t1) = shift(h);
-        let (g2, p2, t2) = shift(-h);
-        let up = call(s, g1, p1, t1);
-        let dn = call(s, g2, p2, t2);
-        if up.pnewdt != 1e36 || dn.pnewdt != 1e36 || up.lm != 0 || dn.lm != 0 {
-            return None;
-        }
-        if up.statev[2] != dn.statev[2] {
-            return None;
-        }
-        Some((up.tau[a] - dn.tau[a]) / (2.0 * h))
-    };
-    let (f1, f2) = (fd(h)?, fd(2.0 * h)?);
-    ((f1 - f2).abs() <= 1e-7 * scale).then_some(f1)
-}
-
 /// DDTDDG, DDTDDP and DDTDDT against central differences of TAU with the four-column table
 /// (every derivative of μ is non-zero somewhere), and the stress on the table's yield surface
 /// in slip. Samples whose stencil crosses a kink are skipped; at most a fifth may be.
@@ -244,6 +222,7 @@ fn tangents_match_central_differences_with_a_table() {
         if base.lm != 0 {
             return Ok(());
         }
+        let at = |(g, dp, dt): Shift| call(&s, g, dp, dt);
         let p = s.p0 + s.dp;
         let k_scale = 0.5 * p.max(1.0) / GC;
         let mut skipped = false;
@@ -260,38 +239,18 @@ fn tangents_match_central_differences_with_a_table() {
             };
         for b in 0..n {
             for a in 0..n {
-                let fd = central(
-                    &s,
-                    a,
-                    1e-6 * GC,
-                    |h| {
-                        let mut g = [0.0; 2];
-                        g[b] = h;
-                        (g, 0.0, [0.0; 2])
-                    },
-                    k_scale,
-                );
+                let fd = central_tau(a, 1e-6 * GC, k_scale, along_dgam(b), at);
                 check(format!("DDTDDG({a},{b})"), fd, base.ddtddg(a, b), k_scale)?;
             }
         }
         for a in 0..n {
-            let fd = central(&s, a, 1e-6 * s.p0, |h| ([0.0; 2], h, [0.0; 2]), 1.0);
+            let fd = central_tau(a, 1e-6 * s.p0, 1.0, along_press, at);
             check(format!("DDTDDP({a})"), fd, base.ddtddp[a], 1.0)?;
         }
         let t_scale = p.max(1.0) * 1e-3;
         for k in 0..2 {
             for a in 0..n {
-                let fd = central(
-                    &s,
-                    a,
-                    1e-4,
-                    |h| {
-                        let mut t = [0.0; 2];
-                        t[k] = h;
-                        ([0.0; 2], 0.0, t)
-                    },
-                    t_scale,
-                );
+                let fd = central_tau(a, 1e-4, t_scale, along_temp(k), at);
                 check(
                     format!("DDTDDT({a},{k})"),
                     fd,

@@ -3,14 +3,5 @@
 
 use interfacial_fuzz::gapcon_case::setup;
 use interfacial_fuzz::uinter_case::UinterCase;
-use libfuzzer_sys::fuzz_target;
 
-fuzz_target!(
-    init: setup(),
-    |data: &[u8]| {
-        let case = UinterCase::decode(data);
-        if let Err(e) = case.check() {
-            panic!("uinter_ property violated: {e}\ninput: {case:?}");
-        }
-    }
-);
+interfacial_fuzz::fuzz_case!(UinterCase, "uinter_", init: setup());

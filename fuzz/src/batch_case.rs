@@ -7,7 +7,7 @@
 
 use std::ffi::{CStr, c_int};
 
-use crate::bytes::Bytes;
+use crate::bytes::{Bytes, bits};
 use crate::fric_case::{FricCase, FricOutputs};
 use interfacial::abi::{IflStatus, ifl_clear_error, ifl_fric_batch, ifl_last_error};
 
@@ -55,10 +55,6 @@ pub struct BatchOutputs {
     pub pnewdt: f64,
     pub status: i32,
     pub message: String,
-}
-
-fn bits(v: &[f64]) -> Vec<u64> {
-    v.iter().map(|x| x.to_bits()).collect()
 }
 
 impl BatchCase {

@@ -1,6 +1,9 @@
 //! Turns fuzzer bytes into argument values. Every draw consumes a few bytes; once the input is
 //! used up every draw returns zero bits, so any byte string decodes to some call.
 //!
+//! Also the small decoding helpers every case shares: [`len`] (a Fortran count as a length),
+//! [`bits`] (bit patterns, to compare arrays NaN-exactly), [`Bytes::reals`] and [`Bytes::name`].
+//!
 //! Reals are drawn by class (one selector byte) so the fuzzer reaches the values that break
 //! floating-point code — NaN, ±Inf, ±0, subnormals, f64::MAX, magnitudes near the overflow and
 //! underflow thresholds, raw bit patterns — as easily as ordinary ones.
@@ -94,6 +97,33 @@ impl<'a> Bytes<'a> {
 }
 
 impl Bytes<'_> {
+    /// `n` reals of any class.
+    pub fn reals(&mut self, n: usize) -> Vec<f64> {
+        (0..n).map(|_| self.real()).collect()
+    }
+
+    /// A `CHARACTER` argument: 80 bytes mostly (else 0..=127), up to 12 capital letters then
+    /// blanks.
+    pub fn name(&mut self) -> Vec<u8> {
+        self.name_padded(true, b' ')
+    }
+
+    /// A `CHARACTER` argument as [`Bytes::name`] draws it, its up to 12 leading bytes mapped to
+    /// capital letters or left raw (`letters`), padded with `pad` to the hidden length.
+    pub fn name_padded(&mut self, letters: bool, pad: u8) -> Vec<u8> {
+        let l = usize::from(self.u8());
+        let l = if l < 128 { 80 } else { l - 128 };
+        let printed = usize::from(self.u8() % 13);
+        let mut v = self.bytes(l.min(printed));
+        if letters {
+            for x in &mut v {
+                *x = b'A' + *x % 26;
+            }
+        }
+        v.resize(l, pad);
+        v
+    }
+
     /// An ordinary positive real, 1.x · 10^(-6..=6): material parameters that are valid.
     pub fn positive(&mut self) -> f64 {
         self.mantissa() * 10f64.powi(i32::from(self.u8() % 13) - 6)
@@ -103,4 +133,15 @@ impl Bytes<'_> {
     pub fn unit(&mut self) -> f64 {
         f64::from(self.u8()) / 255.0
     }
+}
+
+/// A Fortran count as a length: a negative one is 0.
+pub fn len(n: i32) -> usize {
+    usize::try_from(n).unwrap_or(0)
+}
+
+/// The bit patterns of `v`, so that two arrays compare equal only when every entry (NaN
+/// payloads and signed zeros included) is the same.
+pub fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
 }

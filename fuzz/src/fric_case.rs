@@ -6,7 +6,7 @@
 
 use std::ffi::{CStr, c_char};
 
-use crate::bytes::Bytes;
+use crate::bytes::{Bytes, bits, len};
 use interfacial::abi::{fric_, ifl_clear_error, ifl_last_error};
 
 /// Written into every output before the call, to see what the call wrote.
@@ -63,14 +63,6 @@ pub struct FricCase {
     pub msname: Vec<u8>,
     /// Pass NULL for the optional outputs `DSLIP`, `SED`, `SFD`, `DDTDDT`.
     pub null_optional: bool,
-}
-
-fn len(n: i32) -> usize {
-    usize::try_from(n).unwrap_or(0)
-}
-
-fn vec_of(b: &mut Bytes, n: usize) -> Vec<f64> {
-    (0..n).map(|_| b.real()).collect()
 }
 
 impl FricCase {
@@ -157,19 +149,9 @@ impl FricCase {
             props.push(v);
         }
         let flags = b.u8();
+        // Mostly a printable name, blank-padded to the hidden length.
         let name = |b: &mut Bytes| {
-            let l = usize::from(b.u8());
-            let l = if l < 128 { 80 } else { l - 128 };
-            let printed = usize::from(b.u8() % 13);
-            let mut v = b.bytes(l.min(printed));
-            // Mostly a printable name, blank-padded to the hidden length.
-            if flags & 0x40 == 0 {
-                for x in &mut v {
-                    *x = b'A' + *x % 26;
-                }
-            }
-            v.resize(l, if flags & 0x20 == 0 { b' ' } else { 0 });
-            v
+            b.name_padded(flags & 0x40 == 0, if flags & 0x20 == 0 { b' ' } else { 0 })
         };
         FricCase {
             lm,
@@ -184,12 +166,12 @@ impl FricCase {
             npt: 1,
             node: i32::from(b.u16()),
             npatch: 1,
-            tau: vec_of(&mut b, n),
-            dgam: vec_of(&mut b, n),
-            taulm: vec_of(&mut b, n),
-            slip: vec_of(&mut b, n),
+            tau: b.reals(n),
+            dgam: b.reals(n),
+            taulm: b.reals(n),
+            slip: b.reals(n),
             statev: {
-                let mut s = vec_of(&mut b, len(nstatv));
+                let mut s = b.reals(len(nstatv));
                 // STATEV(3) is a status code; keep it one mostly.
                 if let Some(x) = s.get_mut(2) {
                     *x = f64::from(b.u8() % 3);
@@ -203,12 +185,12 @@ impl FricCase {
             dtime: b.real(),
             chrlngth: b.real(),
             pnewdt: b.large(),
-            time: vec_of(&mut b, 2),
-            coords: vec_of(&mut b, len(mcrd)),
-            rcoord: vec_of(&mut b, len(mcrd)),
-            drot: vec_of(&mut b, 4),
-            temp: vec_of(&mut b, 2),
-            predef: vec_of(&mut b, 2 * len(npred)),
+            time: b.reals(2),
+            coords: b.reals(len(mcrd)),
+            rcoord: b.reals(len(mcrd)),
+            drot: b.reals(4),
+            temp: b.reals(2),
+            predef: b.reals(2 * len(npred)),
             ciname: name(&mut b),
             slname: name(&mut b),
             msname: name(&mut b),
@@ -479,10 +461,6 @@ impl FricOutputs {
             .filter(|x| x.to_bits() != UNWRITTEN.to_bits())
             .collect()
     }
-}
-
-fn bits(v: &[f64]) -> Vec<u64> {
-    v.iter().map(|x| x.to_bits()).collect()
 }
 
 /// Bitwise equality of every input.

@@ -7,7 +7,7 @@
 
 use std::ffi::{CStr, c_char, c_int};
 
-use crate::bytes::Bytes;
+use crate::bytes::{Bytes, bits, len};
 use interfacial::abi::{
     IflStatus, fric_coef_, ifl_clear_error, ifl_forced_sliding, ifl_last_error,
 };
@@ -17,18 +17,6 @@ pub const UNWRITTEN: f64 = -7.77e77;
 
 /// Derivative slots per point and direction: `fCoefDeriv(nBlock,20,2)`.
 const NDERIV: usize = 20;
-
-fn len(n: i32) -> usize {
-    usize::try_from(n).unwrap_or(0)
-}
-
-fn vec_of(b: &mut Bytes, n: usize) -> Vec<f64> {
-    (0..n).map(|_| b.real()).collect()
-}
-
-fn bits(v: &[f64]) -> Vec<u64> {
-    v.iter().map(|x| x.to_bits()).collect()
-}
 
 /// A law-1 `PROPS` of `nprops` entries favouring valid μ laws (docs/props.md): `PROPS(1) = 1`,
 /// μ ≥ 0, `PROPS(3)` 0 or μ, `PROPS(4..7)` 0, the decay law, p_ref and the temperature law each
@@ -59,19 +47,6 @@ pub fn decode_props(b: &mut Bytes, nprops: usize) -> Vec<f64> {
         props.push(v);
     }
     props
-}
-
-fn name(b: &mut Bytes) -> Vec<u8> {
-    let l = usize::from(b.u8());
-    let l = if l < 128 { 80 } else { l - 128 };
-    let printed = usize::from(b.u8() % 13);
-    let mut v: Vec<u8> = b
-        .bytes(l.min(printed))
-        .iter()
-        .map(|x| b'A' + x % 26)
-        .collect();
-    v.resize(l, b' ');
-    v
 }
 
 /// Which pointer argument of `fric_coef_` is passed as NULL (a broken host).
@@ -186,7 +161,7 @@ impl FricCoefCase {
         let n = len(nblock);
         let props = decode_props(b, len(nprops));
         // Slip rates: mostly finite and ≥ 0 (slipData(k,1) is a magnitude).
-        let mut slip = vec_of(b, 6 * n);
+        let mut slip = b.reals(6 * n);
         let flags = b.u8();
         if flags & 1 == 0 {
             for x in &mut slip[..n] {
@@ -199,15 +174,15 @@ impl FricCoefCase {
             ntemp,
             nfields,
             idata: vec![b.u8().into(); 3],
-            rdata: vec_of(b, 3),
+            rdata: b.reals(3),
             props,
             slip,
-            pressure: vec_of(b, n),
-            temp: vec_of(b, n),
-            field: vec_of(b, n * len(nfields)),
-            surf_int: name(b),
-            surf_sec: name(b),
-            surf_main: name(b),
+            pressure: b.reals(n),
+            temp: b.reals(n),
+            field: b.reals(n * len(nfields)),
+            surf_int: b.name(),
+            surf_sec: b.name(),
+            surf_main: b.name(),
             null,
         }
     }
@@ -489,7 +464,7 @@ impl ForcedSlidingCase {
             props,
             nprops,
             nfdir,
-            velocity: vec_of(b, len(nfdir)),
+            velocity: b.reals(len(nfdir)),
             pressure: b.real(),
             temperature: b.real(),
             null,

@@ -8,7 +8,7 @@
 
 use std::ffi::{CStr, c_char, c_int};
 
-use crate::bytes::Bytes;
+use crate::bytes::{Bytes, bits, len};
 use crate::gapcon_case::NAMES;
 use interfacial::abi::{ifl_clear_error, ifl_last_error, uinter_};
 
@@ -68,18 +68,6 @@ pub struct UinterCase {
     /// Pass NULL for every optional output (`DVISCOUS`, `DSTRUCTURAL`, `FLUX`, `DDFDDT`,
     /// `DDSDDT`, `DDFDDR`, `SED` … `SCD`, `LSTATE`).
     pub null_optional: bool,
-}
-
-fn len(n: i32) -> usize {
-    usize::try_from(n).unwrap_or(0)
-}
-
-fn vec_of(b: &mut Bytes, n: usize) -> Vec<f64> {
-    (0..n).map(|_| b.real()).collect()
-}
-
-fn bits(v: &[f64]) -> Vec<u64> {
-    v.iter().map(|x| x.to_bits()).collect()
 }
 
 impl UinterCase {
@@ -148,7 +136,7 @@ impl UinterCase {
         };
         let ci = (configured < 224).then(|| NAMES[usize::from(configured) % NAMES.len()]);
         let statev = {
-            let mut s = vec_of(&mut b, len(nstatv));
+            let mut s = b.reals(len(nstatv));
             // STATEV(3) is a status code; keep it one of the law's mostly.
             if let Some(x) = s.get_mut(2) {
                 let k = b.u8();
@@ -179,22 +167,22 @@ impl UinterCase {
             lopenclose: b.pick(&[-1, 0, 1, 2]),
             lstate: b.pick(&[-1, 0, 1, 3, 4]),
             lsdi: 0,
-            stress: vec_of(&mut b, n),
+            stress: b.reals(n),
             statev,
             pnewdt: b.large(),
-            rdisp: vec_of(&mut b, n),
-            drdisp: vec_of(&mut b, n),
-            temp: vec_of(&mut b, 2),
-            dtemp: vec_of(&mut b, 2),
-            predef: vec_of(&mut b, 2 * len(npred)),
-            dpred: vec_of(&mut b, 2 * len(npred)),
-            time: vec_of(&mut b, 2),
+            rdisp: b.reals(n),
+            drdisp: b.reals(n),
+            temp: b.reals(2),
+            dtemp: b.reals(2),
+            predef: b.reals(2 * len(npred)),
+            dpred: b.reals(2 * len(npred)),
+            time: b.reals(2),
             dtime: b.real(),
             freqr: b.real(),
             props,
-            coords: vec_of(&mut b, len(mcrd)),
-            alocaldir: vec_of(&mut b, len(mcrd) * len(mcrd)),
-            drot: vec_of(&mut b, 4),
+            coords: b.reals(len(mcrd)),
+            alocaldir: b.reals(len(mcrd) * len(mcrd)),
+            drot: b.reals(4),
             area: b.real(),
             chrlngth: b.real(),
             ciname: name(&mut b, ci),

@@ -7,7 +7,7 @@
 
 use std::ffi::{CStr, c_char, c_int};
 
-use crate::bytes::Bytes;
+use crate::bytes::{Bytes, bits, len};
 use interfacial::abi::{ifl_clear_error, ifl_last_error, vfric_};
 
 /// Written into every output entry and guard before the call, to see what the call wrote.
@@ -19,14 +19,6 @@ pub const GUARD: usize = 4;
 /// Length of the shared buffers passed for the arguments VFRIC does not read (`dSlipFric`,
 /// `fTangPrev`, coordinates, …): every one of them is at most this long for the sizes drawn.
 const UNREAD_LEN: usize = 3 * 3 * 18 + 8;
-
-fn len(n: i32) -> usize {
-    usize::try_from(n).unwrap_or(0)
-}
-
-fn bits(v: &[f64]) -> Vec<u64> {
-    v.iter().map(|x| x.to_bits()).collect()
-}
 
 /// Which pointer argument is passed as NULL. VFRIC documents the ones it reads as refused when
 /// NULL (a fault of the whole call), and the others as never dereferenced (`Unread`: all of
@@ -145,19 +137,6 @@ fn decode_props(b: &mut Bytes, nprops: usize) -> Vec<f64> {
     props
 }
 
-fn name(b: &mut Bytes) -> Vec<u8> {
-    let l = usize::from(b.u8());
-    let l = if l < 128 { 80 } else { l - 128 };
-    let printed = usize::from(b.u8() % 13);
-    let mut v: Vec<u8> = b
-        .bytes(l.min(printed))
-        .iter()
-        .map(|x| b'A' + x % 26)
-        .collect();
-    v.resize(l, b' ');
-    v
-}
-
 impl VfricCase {
     /// A valid block: these `props`, normal and stick forces (equal lengths), every point on
     /// slave node `slave[k]` of `area`, `nFricDir = nf`, interaction `"VF1"` (80 bytes).
@@ -260,7 +239,7 @@ impl VfricCase {
             props,
             statev: (0..2 * n).map(|_| b.real()).collect(),
             unread: (0..UNREAD_LEN).map(|_| b.real()).collect(),
-            surf_int: name(b),
+            surf_int: b.name(),
             null,
         }
     }

@@ -1,0 +1,56 @@
+//! The central differences that the tangent tests compare `fric_`'s derivatives with, shared by
+//! tests/friction_extended.rs and tests/friction_table.rs (included there by path).
+
+use interfacial::abi::host::FricCall;
+
+/// A move of the increment's inputs: (ΔDGAM(1..2), ΔPRESS, ΔTEMP(1..2)).
+pub type Shift = ([f64; 2], f64, [f64; 2]);
+
+/// DGAM(b) moved by h: the column b of DDTDDG.
+pub fn along_dgam(b: usize) -> impl Fn(f64) -> Shift {
+    move |h| {
+        let mut g = [0.0; 2];
+        g[b] = h;
+        (g, 0.0, [0.0; 2])
+    }
+}
+
+/// The end pressure moved by h (`PRESS` and `DPRESS` together, the start stays): DDTDDP.
+pub fn along_press(h: f64) -> Shift {
+    ([0.0; 2], h, [0.0; 2])
+}
+
+/// TEMP(k) moved by h: the column k of DDTDDT.
+pub fn along_temp(k: usize) -> impl Fn(f64) -> Shift {
+    move |h| {
+        let mut t = [0.0; 2];
+        t[k] = h;
+        ([0.0; 2], 0.0, t)
+    }
+}
+
+/// (TAU(a)(+h) − TAU(a)(−h)) / 2h along `shift`, `call_at` making the `fric_` call with the
+/// inputs moved; `None` when a side was refused or stuck exactly (`PNEWDT` lowered, `LM` ≠ 0),
+/// when the two sides are in different branches (`STATEV(3)` differs), or when the steps h and
+/// 2h disagree by more than 10⁻⁷·`scale` (the stencil crosses a kink).
+pub fn central_tau(
+    a: usize,
+    h: f64,
+    scale: f64,
+    shift: impl Fn(f64) -> Shift,
+    call_at: impl Fn(Shift) -> FricCall,
+) -> Option<f64> {
+    let fd = |h: f64| {
+        let up = call_at(shift(h));
+        let dn = call_at(shift(-h));
+        if up.pnewdt != 1e36 || dn.pnewdt != 1e36 || up.lm != 0 || dn.lm != 0 {
+            return None;
+        }
+        if up.statev[2] != dn.statev[2] {
+            return None;
+        }
+        Some((up.tau[a] - dn.tau[a]) / (2.0 * h))
+    };
+    let (f1, f2) = (fd(h)?, fd(2.0 * h)?);
+    ((f1 - f2).abs() <= 1e-7 * scale).then_some(f1)
+}
