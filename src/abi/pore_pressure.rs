@@ -146,7 +146,8 @@ fn decode(v: IflPorePressureVariant) -> Result<(Variant, Basis), LawError> {
 /// - `geometric[4]`: coefficient of dδx_i, the change of the variation from the host's contact
 ///   geometry; all zeros in small sliding.
 ///
-/// `interaction` (NUL-terminated, may be NULL) only names the caller in error messages.
+/// `interaction` (NUL-terminated, may be NULL) only names the caller in error messages;
+/// [`ifl_pore_pressure_n`] takes it with its length instead (no NUL needed).
 /// Returns `IFL_STATUS_OK`; on a NaN or infinite input or `dt <= 0` in a transient analysis
 /// `IFL_STATUS_BAD_INPUT`, on a flag other than 0 or 1 `IFL_STATUS_BAD_PARAMETER`, on an
 /// overflow of finite inputs `IFL_STATUS_NUMERICAL_FAILURE`, on a NULL output
@@ -171,9 +172,6 @@ pub unsafe extern "C" fn ifl_pore_pressure(
     tangent: *mut f64,
     geometric: *mut f64,
 ) -> IflStatus {
-    // The lean path: valid flags, pointers and inputs, straight through (no allocation, no
-    // formatting); anything else, and a panic (which cannot happen here, but would be caught),
-    // goes to the careful path below, which names the cause.
     let point = InterfacePoint {
         p1,
         p2,
@@ -182,6 +180,121 @@ pub unsafe extern "C" fn ifl_pore_pressure(
         dh,
         dt,
     };
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        pore_pressure(
+            Name::Terminated(interaction),
+            variant,
+            &point,
+            residual,
+            tangent,
+            geometric,
+        )
+    }
+}
+
+/// [`ifl_pore_pressure`] with the interaction's name given as `interaction_len` bytes at
+/// `interaction`, as Fortran passes a `CHARACTER` (blank-padded, no NUL): nothing past
+/// `interaction_len` is read, trailing blanks and NULs are dropped from messages. For Fortran,
+/// the `interfacial` module's `ifl_pore_pressure(name, ...)` calls it with `len(name)`.
+/// Everything else (inputs, outputs, statuses) is as [`ifl_pore_pressure`]; messages name
+/// `ifl_pore_pressure_n`.
+///
+/// # Safety
+/// `interaction` is NULL or points to `interaction_len` readable bytes (any pointer when
+/// `interaction_len` is 0); the outputs as [`ifl_pore_pressure`].
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn ifl_pore_pressure_n(
+    interaction: *const c_char,
+    interaction_len: usize,
+    variant: IflPorePressureVariant,
+    p1: f64,
+    p2: f64,
+    q_hat: f64,
+    h: f64,
+    dh: f64,
+    dt: f64,
+    residual: *mut f64,
+    tangent: *mut f64,
+    geometric: *mut f64,
+) -> IflStatus {
+    let point = InterfacePoint {
+        p1,
+        p2,
+        q_hat,
+        h,
+        dh,
+        dt,
+    };
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        pore_pressure(
+            Name::Counted(interaction, interaction_len),
+            variant,
+            &point,
+            residual,
+            tangent,
+            geometric,
+        )
+    }
+}
+
+/// How the caller gave the interaction's name (read only on the careful path, for messages).
+#[derive(Clone, Copy)]
+enum Name {
+    /// NUL-terminated or NULL ([`ifl_pore_pressure`]).
+    Terminated(*const c_char),
+    /// `len` bytes, no NUL needed ([`ifl_pore_pressure_n`]).
+    Counted(*const c_char, usize),
+}
+
+impl Name {
+    fn routine(self) -> &'static str {
+        match self {
+            Name::Terminated(_) => "ifl_pore_pressure",
+            Name::Counted(..) => "ifl_pore_pressure_n",
+        }
+    }
+
+    /// The name as shown in messages, trailing blanks and NULs dropped.
+    ///
+    /// # Safety
+    /// As the entry point that made it.
+    unsafe fn shown(self) -> String {
+        let bytes: &[u8] = match self {
+            Name::Terminated(p) | Name::Counted(p, _) if p.is_null() => &[],
+            Name::Counted(_, 0) => &[],
+            // SAFETY: NUL-terminated by contract.
+            Name::Terminated(p) => unsafe { CStr::from_ptr(p) }.to_bytes(),
+            // SAFETY: `len` readable bytes by contract.
+            Name::Counted(p, len) => unsafe { std::slice::from_raw_parts(p.cast::<u8>(), len) },
+        };
+        let end = bytes
+            .iter()
+            .rposition(|b| !b.is_ascii_whitespace() && *b != 0)
+            .map_or(0, |i| i + 1);
+        String::from_utf8_lossy(&bytes[..end]).into_owned()
+    }
+}
+
+/// The body of both entry points.
+///
+/// # Safety
+/// As [`ifl_pore_pressure`] for the outputs, as the entry point for `name`.
+#[inline(always)]
+unsafe fn pore_pressure(
+    name: Name,
+    variant: IflPorePressureVariant,
+    point: &InterfacePoint,
+    residual: *mut f64,
+    tangent: *mut f64,
+    geometric: *mut f64,
+) -> IflStatus {
+    // The lean path: valid flags, pointers and inputs, straight through (no allocation, no
+    // formatting); anything else, and a panic (which cannot happen here, but would be caught),
+    // goes to the careful path below, which names the cause.
+    let point = *point;
     let lean = std::panic::catch_unwind(|| {
         if residual.is_null() || tangent.is_null() || geometric.is_null() {
             return false;
@@ -217,9 +330,9 @@ pub unsafe extern "C" fn ifl_pore_pressure(
     // SAFETY: forwarded from the caller.
     unsafe {
         careful(
-            interaction,
+            name,
             variant,
-            [p1, p2, q_hat, h, dh, dt],
+            &point,
             residual,
             tangent,
             geometric,
@@ -235,9 +348,9 @@ pub unsafe extern "C" fn ifl_pore_pressure(
 #[cold]
 #[inline(never)]
 unsafe fn careful(
-    interaction: *const c_char,
+    name: Name,
     variant: IflPorePressureVariant,
-    [p1, p2, q_hat, h, dh, dt]: [f64; 6],
+    point: &InterfacePoint,
     residual: *mut f64,
     tangent: *mut f64,
     geometric: *mut f64,
@@ -249,15 +362,7 @@ unsafe fn careful(
             ));
         }
         let (variant, basis) = decode(variant)?;
-        let point = InterfacePoint {
-            p1,
-            p2,
-            q_hat,
-            h,
-            dh,
-            dt,
-        };
-        let terms = interface_terms(&point, variant)?.in_basis(basis);
+        let terms = interface_terms(point, variant)?.in_basis(basis);
         // SAFETY: non-NULL, 4, 16 and 4 writable doubles by contract.
         unsafe { write_terms(residual, tangent, geometric, &terms) };
         Ok(())
@@ -268,16 +373,9 @@ unsafe fn careful(
     };
     boundary(
         || Site {
-            routine: "ifl_pore_pressure",
-            interaction: if interaction.is_null() {
-                String::new()
-            } else {
-                // SAFETY: NUL-terminated by contract.
-                unsafe { CStr::from_ptr(interaction) }
-                    .to_string_lossy()
-                    .trim_end()
-                    .to_owned()
-            },
+            routine: name.routine(),
+            // SAFETY: as the entry point that made `name`.
+            interaction: unsafe { name.shown() },
             place: "native call".into(),
         },
         run,
