@@ -1,13 +1,16 @@
 //! The interface pore-pressure kernel (seed 000): its linearization against central finite
 //! differences of its own residual in every variant and basis, each simplification (closed
 //! contact, steady state, small sliding) against the general form under its assumptions, the
-//! side-swap invariant, and bad input refused through `ifl_pore_pressure`.
+//! side-swap invariant, and bad input refused through `ifl_pore_pressure` and its
+//! length-carrying form `ifl_pore_pressure_n`.
 // Entries of 4-vectors and 4×4 matrices compared index by index read best with indices.
 #![allow(clippy::needless_range_loop)]
 
 use std::ffi::CStr;
 
-use interfacial::abi::{IflPorePressureVariant, IflStatus, ifl_last_error, ifl_pore_pressure};
+use interfacial::abi::{
+    IflPorePressureVariant, IflStatus, ifl_last_error, ifl_pore_pressure, ifl_pore_pressure_n,
+};
 use interfacial::laws::pore_pressure::{
     Basis, Contact, H, InterfacePoint, P_JUMP, P_MEAN, PorePressureTerms, Q_HAT, Regime, Sliding,
     Variant, interface_terms,
@@ -469,5 +472,95 @@ fn every_flag_combination_returns_the_core_terms_bit_for_bit() {
         assert_eq!(bits(&g), bits(&core.geometric), "flags {flags}");
         let core_t: Vec<f64> = (0..16).map(|k| core.tangent[k % 4][k / 4]).collect();
         assert_eq!(bits(&t), bits(&core_t), "flags {flags}");
+    }
+}
+
+/// `ifl_pore_pressure_n` on `len` bytes of `name`.
+fn call_n(name: &[u8], len: usize, v: IflPorePressureVariant, x: [f64; 6]) -> Outputs {
+    let (mut r, mut t, mut g) = ([7.0; 4], [7.0; 16], [7.0; 4]);
+    // SAFETY: `len` <= name.len() readable bytes; arrays of 4, 16 and 4 doubles.
+    let s = unsafe {
+        ifl_pore_pressure_n(
+            name.as_ptr().cast(),
+            len,
+            v,
+            x[0],
+            x[1],
+            x[2],
+            x[3],
+            x[4],
+            x[5],
+            r.as_mut_ptr(),
+            t.as_mut_ptr(),
+            g.as_mut_ptr(),
+        )
+    };
+    (s, r, t, g)
+}
+
+#[test]
+fn the_length_carrying_form_answers_as_the_nul_terminated_one() {
+    let good = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    let bits = |o: &Outputs| {
+        (
+            o.0,
+            o.1.map(f64::to_bits),
+            o.2.map(f64::to_bits),
+            o.3.map(f64::to_bits),
+        )
+    };
+    for flags in 0..16 {
+        let v = IflPorePressureVariant {
+            open: flags & 1,
+            steady: (flags >> 1) & 1,
+            finite_sliding: (flags >> 2) & 1,
+            per_side: (flags >> 3) & 1,
+        };
+        assert_eq!(
+            bits(&call_n(b"column", 6, v, good)),
+            bits(&call(v, good)),
+            "flags {flags}"
+        );
+    }
+}
+
+#[test]
+fn the_length_carrying_form_reads_only_its_length_and_needs_no_nul() {
+    let mut x = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    x[5] = 0.0;
+    // A Fortran CHARACTER*12: blank-padded, no NUL, and bytes after it that are not the name's.
+    let buffer = b"column      XYZ";
+    let (s, r, t, g) = call_n(buffer, 12, GENERAL_FLAGS, x);
+    assert_eq!(s, IflStatus::BadInput);
+    let msg = last_error();
+    assert!(
+        msg.contains("ifl_pore_pressure_n: interaction 'column' ") && msg.contains("dt = 0"),
+        "{msg}"
+    );
+    assert!(!msg.contains("XYZ"), "{msg}");
+    assert_eq!((r, t, g), ([0.0; 4], [0.0; 16], [0.0; 4]));
+    // Length 0 (any pointer, here NULL) and a NULL name with a length: no name, same refusal.
+    for len in [0, 5] {
+        let (mut r, mut t, mut g) = ([7.0; 4], [7.0; 16], [7.0; 4]);
+        // SAFETY: a NULL name is allowed; arrays of 4, 16 and 4 doubles.
+        let s = unsafe {
+            ifl_pore_pressure_n(
+                std::ptr::null(),
+                len,
+                GENERAL_FLAGS,
+                x[0],
+                x[1],
+                x[2],
+                x[3],
+                x[4],
+                x[5],
+                r.as_mut_ptr(),
+                t.as_mut_ptr(),
+                g.as_mut_ptr(),
+            )
+        };
+        assert_eq!(s, IflStatus::BadInput);
+        assert!(last_error().contains("interaction ''"), "{}", last_error());
+        assert_eq!((r, t, g), ([0.0; 4], [0.0; 16], [0.0; 4]));
     }
 }

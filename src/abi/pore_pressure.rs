@@ -328,16 +328,7 @@ unsafe fn pore_pressure(
         return IflStatus::Ok;
     }
     // SAFETY: forwarded from the caller.
-    unsafe {
-        careful(
-            name,
-            variant,
-            &point,
-            residual,
-            tangent,
-            geometric,
-        )
-    }
+    unsafe { careful(name, variant, &point, residual, tangent, geometric) }
 }
 
 /// The careful path of [`ifl_pore_pressure`]: every check with its message, inside
