@@ -12,8 +12,8 @@ use interfacial::abi::{
     IflPorePressureVariant, IflStatus, ifl_last_error, ifl_pore_pressure, ifl_pore_pressure_n,
 };
 use interfacial::laws::pore_pressure::{
-    Basis, Contact, H, InterfacePoint, P_JUMP, P_MEAN, PorePressureTerms, Q_HAT, Regime, Sliding,
-    Variant, interface_terms,
+    Basis, Contact, H, InterfacePoint, P_JUMP, P_MEAN, PointFault, PorePressureTerms, Q_HAT,
+    Regime, Sliding, Variant, interface_terms,
 };
 use proptest::prelude::*;
 
@@ -563,4 +563,101 @@ fn the_length_carrying_form_reads_only_its_length_and_needs_no_nul() {
         assert!(last_error().contains("interaction ''"), "{}", last_error());
         assert_eq!((r, t, g), ([0.0; 4], [0.0; 16], [0.0; 4]));
     }
+}
+
+/// The flags of `flags` (bit 0 open, 1 steady, 2 finite sliding, 3 per side) as the ABI's
+/// struct and as the core's variant and basis.
+fn decoded(flags: i32) -> (IflPorePressureVariant, Variant, Basis) {
+    let v = IflPorePressureVariant {
+        open: flags & 1,
+        steady: (flags >> 1) & 1,
+        finite_sliding: (flags >> 2) & 1,
+        per_side: (flags >> 3) & 1,
+    };
+    let variant = Variant {
+        contact: [Contact::Closed, Contact::Open][(flags & 1) as usize],
+        regime: [Regime::Transient, Regime::Steady][((flags >> 1) & 1) as usize],
+        sliding: [Sliding::Small, Sliding::Finite][((flags >> 2) & 1) as usize],
+    };
+    let basis = [Basis::MeanJump, Basis::PerSide][((flags >> 3) & 1) as usize];
+    (v, variant, basis)
+}
+
+#[test]
+fn the_abi_refuses_exactly_what_the_checked_core_refuses() {
+    // The ABI's fast path folds its checks into one comparison on the results; the checked
+    // core validates input by input. Every special value in every input (and the pairs that
+    // cancel or overflow together), in every flag combination: same status, and on success the
+    // same terms bit for bit.
+    let specials = [
+        1.0,
+        -2.5,
+        0.0,
+        -0.0,
+        5e-324,
+        1e300,
+        -1e300,
+        f64::MAX,
+        f64::MIN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+    ];
+    let good = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    let mut inputs: Vec<[f64; 6]> = Vec::new();
+    for i in 0..6 {
+        for &x in &specials {
+            let mut p = good;
+            p[i] = x;
+            inputs.push(p);
+        }
+    }
+    for (i, j) in [(0, 1), (2, 5), (0, 5), (1, 5)] {
+        for &x in &specials {
+            for &y in &specials {
+                let mut p = good;
+                p[i] = x;
+                p[j] = y;
+                inputs.push(p);
+            }
+        }
+    }
+    let mut refused = 0;
+    for flags in 0..16 {
+        let (v, variant, basis) = decoded(flags);
+        for x in &inputs {
+            let point = InterfacePoint {
+                p1: x[0],
+                p2: x[1],
+                q_hat: x[2],
+                h: x[3],
+                dh: x[4],
+                dt: x[5],
+            };
+            let (s, r, t, g) = call(v, *x);
+            match interface_terms(&point, variant) {
+                Ok(core) => {
+                    let core = core.in_basis(basis);
+                    assert_eq!(s, IflStatus::Ok, "flags {flags}, {x:?}");
+                    let bits = |a: &[f64]| a.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+                    assert_eq!(bits(&r), bits(&core.residual), "flags {flags}, {x:?}");
+                    assert_eq!(bits(&g), bits(&core.geometric), "flags {flags}, {x:?}");
+                    let core_t: Vec<f64> = (0..16).map(|k| core.tangent[k % 4][k / 4]).collect();
+                    assert_eq!(bits(&t), bits(&core_t), "flags {flags}, {x:?}");
+                }
+                Err(fault) => {
+                    refused += 1;
+                    let want = if fault == PointFault::Overflow {
+                        IflStatus::NumericalFailure
+                    } else {
+                        IflStatus::BadInput
+                    };
+                    assert_eq!(s, want, "flags {flags}, {x:?}: {fault}");
+                    assert_eq!((r, t, g), ([0.0; 4], [0.0; 16], [0.0; 4]));
+                }
+            }
+        }
+    }
+    // The sweep reaches refusals of both kinds, not only accepted points.
+    assert!(refused > 1000, "{refused}");
 }

@@ -250,6 +250,14 @@ enum Name {
 }
 
 impl Name {
+    /// The pointer, the length (0 when NUL-terminated) and whether the length counts.
+    fn parts(self) -> (*const c_char, usize, bool) {
+        match self {
+            Name::Terminated(p) => (p, 0, false),
+            Name::Counted(p, len) => (p, len, true),
+        }
+    }
+
     fn routine(self) -> &'static str {
         match self {
             Name::Terminated(_) => "ifl_pore_pressure",
@@ -291,21 +299,27 @@ unsafe fn pore_pressure(
     tangent: *mut f64,
     geometric: *mut f64,
 ) -> IflStatus {
-    // The lean path: valid flags, pointers and inputs, straight through (no allocation, no
-    // formatting); anything else, and a panic (which cannot happen here, but would be caught),
-    // goes to the careful path below, which names the cause.
+    // The lean path: valid flags, pointers and inputs, straight through. It is plain
+    // arithmetic and stores (no allocation, no formatting, no indexing that could panic, so no
+    // unwinding to catch: the symbol's code calls nothing, see docs/pore-pressure.md "Speed");
+    // anything else goes to the careful path below, which names the cause inside `boundary`.
     let point = *point;
-    let lean = std::panic::catch_unwind(|| {
-        if residual.is_null() || tangent.is_null() || geometric.is_null() {
-            return false;
-        }
-        let v = variant;
-        if (v.open | v.steady | v.finite_sliding | v.per_side) & !1 != 0 {
-            return false;
-        }
-        // One straight-line copy per variant (the flags are constants in each).
+    let v = variant;
+    // The variant as the two machine words it arrives in (open | steady << 32, finite_sliding
+    // | per_side << 32): every flag is 0 or 1 exactly when no bit but 0 and 32 is set.
+    let word = |a: c_int, b: c_int| u64::from(a as u32) | (u64::from(b as u32) << 32);
+    let (lo, hi) = (word(v.open, v.steady), word(v.finite_sliding, v.per_side));
+    let flags_bad = (lo | hi) & !0x0000_0001_0000_0001 != 0;
+    // Non-short-circuit `|`: one branch for the three pointers and the four flags together.
+    let pointers_null = residual.is_null() | tangent.is_null() | geometric.is_null();
+    if !(pointers_null | flags_bad) {
+        // One straight-line copy per variant (the flags are constants in each), chosen by
+        // open | steady << 1 | finite_sliding << 2 | per_side << 3: with x = lo | hi << 2 the
+        // bits 0 and 2 are open and finite_sliding, x >> 31 brings steady (bit 32) to 1 and
+        // per_side (bit 34) to 3.
         let out = (residual, tangent, geometric);
-        match v.open | (v.steady << 1) | (v.finite_sliding << 2) | (v.per_side << 3) {
+        let x = lo | (hi << 2);
+        let done = match (x | (x >> 31)) & 15 {
             0 => lean_as::<0>(&point, out),
             1 => lean_as::<1>(&point, out),
             2 => lean_as::<2>(&point, out),
@@ -322,30 +336,49 @@ unsafe fn pore_pressure(
             13 => lean_as::<13>(&point, out),
             14 => lean_as::<14>(&point, out),
             _ => lean_as::<15>(&point, out),
+        };
+        if done {
+            return IflStatus::Ok;
         }
-    });
-    if matches!(lean, Ok(true)) {
-        return IflStatus::Ok;
     }
     // SAFETY: forwarded from the caller.
-    unsafe { careful(name, variant, &point, residual, tangent, geometric) }
+    unsafe {
+        careful(
+            name.parts(),
+            [v.open, v.steady, v.finite_sliding, v.per_side],
+            [point.p1, point.p2, point.q_hat],
+            [point.h, point.dh, point.dt],
+            residual,
+            tangent,
+            geometric,
+        )
+    }
 }
 
 /// The careful path of [`ifl_pore_pressure`]: every check with its message, inside
-/// [`boundary`]. Kept out of line so that the lean path's frame stays small.
+/// [`boundary`]. Kept out of line, and given its arguments in registers-sized pieces (nothing
+/// by reference), so that the lean path neither builds a frame nor spills its inputs.
 ///
 /// # Safety
 /// As [`ifl_pore_pressure`].
 #[cold]
 #[inline(never)]
+#[allow(clippy::too_many_arguments)]
 unsafe fn careful(
-    name: Name,
-    variant: IflPorePressureVariant,
-    point: &InterfacePoint,
+    (name, name_len, counted): (*const c_char, usize, bool),
+    [open, steady, finite_sliding, per_side]: [c_int; 4],
+    [p1, p2, q_hat]: [f64; 3],
+    [h, dh, dt]: [f64; 3],
     residual: *mut f64,
     tangent: *mut f64,
     geometric: *mut f64,
 ) -> IflStatus {
+    let variant = IflPorePressureVariant {
+        open,
+        steady,
+        finite_sliding,
+        per_side,
+    };
     let run = || -> Result<(), LawError> {
         if residual.is_null() || tangent.is_null() || geometric.is_null() {
             return Err(LawError::Input(
@@ -353,7 +386,15 @@ unsafe fn careful(
             ));
         }
         let (variant, basis) = decode(variant)?;
-        let terms = interface_terms(point, variant)?.in_basis(basis);
+        let point = InterfacePoint {
+            p1,
+            p2,
+            q_hat,
+            h,
+            dh,
+            dt,
+        };
+        let terms = interface_terms(&point, variant)?.in_basis(basis);
         // SAFETY: non-NULL, 4, 16 and 4 writable doubles by contract.
         unsafe { write_terms(residual, tangent, geometric, &terms) };
         Ok(())
@@ -361,6 +402,11 @@ unsafe fn careful(
     let on_fault = || {
         // SAFETY: NULL is skipped; otherwise writable by contract.
         unsafe { write_terms(residual, tangent, geometric, &PorePressureTerms::default()) };
+    };
+    let name = if counted {
+        Name::Counted(name, name_len)
+    } else {
+        Name::Terminated(name)
     };
     boundary(
         || Site {
