@@ -181,11 +181,22 @@ pub unsafe extern "C" fn ifl_pore_pressure(
         dt,
     };
     // SAFETY: forwarded from the caller.
+    if unsafe { lean(variant, &point, residual, tangent, geometric) } {
+        return IflStatus::Ok;
+    }
+    let (lo, hi) = words(variant);
+    // SAFETY: forwarded from the caller.
     unsafe {
-        pore_pressure(
-            Name::Terminated(interaction),
-            variant,
-            &point,
+        careful_terminated(
+            interaction,
+            lo,
+            hi,
+            p1,
+            p2,
+            q_hat,
+            h,
+            dh,
+            dt,
             residual,
             tangent,
             geometric,
@@ -228,8 +239,12 @@ pub unsafe extern "C" fn ifl_pore_pressure_n(
         dt,
     };
     // SAFETY: forwarded from the caller.
+    if unsafe { lean(variant, &point, residual, tangent, geometric) } {
+        return IflStatus::Ok;
+    }
+    // SAFETY: forwarded from the caller.
     unsafe {
-        pore_pressure(
+        careful(
             Name::Counted(interaction, interaction_len),
             variant,
             &point,
@@ -250,14 +265,6 @@ enum Name {
 }
 
 impl Name {
-    /// The pointer, the length (0 when NUL-terminated) and whether the length counts.
-    fn parts(self) -> (*const c_char, usize, bool) {
-        match self {
-            Name::Terminated(p) => (p, 0, false),
-            Name::Counted(p, len) => (p, len, true),
-        }
-    }
-
     fn routine(self) -> &'static str {
         match self {
             Name::Terminated(_) => "ifl_pore_pressure",
@@ -286,29 +293,31 @@ impl Name {
     }
 }
 
-/// The body of both entry points.
+/// The variant as the two machine words it arrives in: open | steady << 32 and
+/// finite_sliding | per_side << 32.
+#[inline(always)]
+fn words(v: IflPorePressureVariant) -> (u64, u64) {
+    let word = |a: c_int, b: c_int| u64::from(a as u32) | (u64::from(b as u32) << 32);
+    (word(v.open, v.steady), word(v.finite_sliding, v.per_side))
+}
+
+/// The lean path of both entry points: writes the terms and returns true for valid flags,
+/// pointers and inputs; returns false, writing nothing, for anything else.
 ///
 /// # Safety
-/// As [`ifl_pore_pressure`] for the outputs, as the entry point for `name`.
+/// As [`ifl_pore_pressure`] for the outputs.
 #[inline(always)]
-unsafe fn pore_pressure(
-    name: Name,
+unsafe fn lean(
     variant: IflPorePressureVariant,
     point: &InterfacePoint,
     residual: *mut f64,
     tangent: *mut f64,
     geometric: *mut f64,
-) -> IflStatus {
-    // The lean path: valid flags, pointers and inputs, straight through. It is plain
-    // arithmetic and stores (no allocation, no formatting, no indexing that could panic, so no
-    // unwinding to catch: the symbol's code calls nothing, see docs/pore-pressure.md "Speed");
-    // anything else goes to the careful path below, which names the cause inside `boundary`.
-    let point = *point;
-    let v = variant;
-    // The variant as the two machine words it arrives in (open | steady << 32, finite_sliding
-    // | per_side << 32): every flag is 0 or 1 exactly when no bit but 0 and 32 is set.
-    let word = |a: c_int, b: c_int| u64::from(a as u32) | (u64::from(b as u32) << 32);
-    let (lo, hi) = (word(v.open, v.steady), word(v.finite_sliding, v.per_side));
+) -> bool {
+    // Plain arithmetic and stores: no allocation, no formatting, no indexing that could panic,
+    // so no unwinding to catch (the careful path runs inside `boundary`).
+    // Every flag is 0 or 1 exactly when no bit but 0 and 32 of either word is set.
+    let (lo, hi) = words(variant);
     let flags_bad = (lo | hi) & !0x0000_0001_0000_0001 != 0;
     // Non-short-circuit `|`: one branch for the three pointers and the four flags together.
     let pointers_null = residual.is_null() | tangent.is_null() | geometric.is_null();
@@ -320,34 +329,70 @@ unsafe fn pore_pressure(
         let out = (residual, tangent, geometric);
         let x = lo | (hi << 2);
         let done = match (x | (x >> 31)) & 15 {
-            0 => lean_as::<0>(&point, out),
-            1 => lean_as::<1>(&point, out),
-            2 => lean_as::<2>(&point, out),
-            3 => lean_as::<3>(&point, out),
-            4 => lean_as::<4>(&point, out),
-            5 => lean_as::<5>(&point, out),
-            6 => lean_as::<6>(&point, out),
-            7 => lean_as::<7>(&point, out),
-            8 => lean_as::<8>(&point, out),
-            9 => lean_as::<9>(&point, out),
-            10 => lean_as::<10>(&point, out),
-            11 => lean_as::<11>(&point, out),
-            12 => lean_as::<12>(&point, out),
-            13 => lean_as::<13>(&point, out),
-            14 => lean_as::<14>(&point, out),
-            _ => lean_as::<15>(&point, out),
+            0 => lean_as::<0>(point, out),
+            1 => lean_as::<1>(point, out),
+            2 => lean_as::<2>(point, out),
+            3 => lean_as::<3>(point, out),
+            4 => lean_as::<4>(point, out),
+            5 => lean_as::<5>(point, out),
+            6 => lean_as::<6>(point, out),
+            7 => lean_as::<7>(point, out),
+            8 => lean_as::<8>(point, out),
+            9 => lean_as::<9>(point, out),
+            10 => lean_as::<10>(point, out),
+            11 => lean_as::<11>(point, out),
+            12 => lean_as::<12>(point, out),
+            13 => lean_as::<13>(point, out),
+            14 => lean_as::<14>(point, out),
+            _ => lean_as::<15>(point, out),
         };
-        if done {
-            return IflStatus::Ok;
-        }
+        return done;
     }
+    false
+}
+
+/// [`careful`] for [`ifl_pore_pressure`], its arguments in the registers they arrived in (six
+/// integer words, six doubles): the entry point reaches it by a jump, with no frame of its own.
+///
+/// # Safety
+/// As [`ifl_pore_pressure`].
+#[cold]
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+unsafe fn careful_terminated(
+    interaction: *const c_char,
+    lo: u64,
+    hi: u64,
+    p1: f64,
+    p2: f64,
+    q_hat: f64,
+    h: f64,
+    dh: f64,
+    dt: f64,
+    residual: *mut f64,
+    tangent: *mut f64,
+    geometric: *mut f64,
+) -> IflStatus {
+    let variant = IflPorePressureVariant {
+        open: lo as u32 as c_int,
+        steady: (lo >> 32) as u32 as c_int,
+        finite_sliding: hi as u32 as c_int,
+        per_side: (hi >> 32) as u32 as c_int,
+    };
+    let point = InterfacePoint {
+        p1,
+        p2,
+        q_hat,
+        h,
+        dh,
+        dt,
+    };
     // SAFETY: forwarded from the caller.
     unsafe {
         careful(
-            name.parts(),
-            [v.open, v.steady, v.finite_sliding, v.per_side],
-            [point.p1, point.p2, point.q_hat],
-            [point.h, point.dh, point.dt],
+            Name::Terminated(interaction),
+            variant,
+            &point,
             residual,
             tangent,
             geometric,
@@ -355,30 +400,21 @@ unsafe fn pore_pressure(
     }
 }
 
-/// The careful path of [`ifl_pore_pressure`]: every check with its message, inside
-/// [`boundary`]. Kept out of line, and given its arguments in registers-sized pieces (nothing
-/// by reference), so that the lean path neither builds a frame nor spills its inputs.
+/// The careful path of both entry points: every check with its message, inside [`boundary`].
+/// Kept out of line so that the lean path's frame stays small.
 ///
 /// # Safety
-/// As [`ifl_pore_pressure`].
+/// As [`ifl_pore_pressure`] for the outputs, as the entry point for `name`.
 #[cold]
 #[inline(never)]
-#[allow(clippy::too_many_arguments)]
 unsafe fn careful(
-    (name, name_len, counted): (*const c_char, usize, bool),
-    [open, steady, finite_sliding, per_side]: [c_int; 4],
-    [p1, p2, q_hat]: [f64; 3],
-    [h, dh, dt]: [f64; 3],
+    name: Name,
+    variant: IflPorePressureVariant,
+    point: &InterfacePoint,
     residual: *mut f64,
     tangent: *mut f64,
     geometric: *mut f64,
 ) -> IflStatus {
-    let variant = IflPorePressureVariant {
-        open,
-        steady,
-        finite_sliding,
-        per_side,
-    };
     let run = || -> Result<(), LawError> {
         if residual.is_null() || tangent.is_null() || geometric.is_null() {
             return Err(LawError::Input(
@@ -386,15 +422,7 @@ unsafe fn careful(
             ));
         }
         let (variant, basis) = decode(variant)?;
-        let point = InterfacePoint {
-            p1,
-            p2,
-            q_hat,
-            h,
-            dh,
-            dt,
-        };
-        let terms = interface_terms(&point, variant)?.in_basis(basis);
+        let terms = interface_terms(point, variant)?.in_basis(basis);
         // SAFETY: non-NULL, 4, 16 and 4 writable doubles by contract.
         unsafe { write_terms(residual, tangent, geometric, &terms) };
         Ok(())
@@ -402,11 +430,6 @@ unsafe fn careful(
     let on_fault = || {
         // SAFETY: NULL is skipped; otherwise writable by contract.
         unsafe { write_terms(residual, tangent, geometric, &PorePressureTerms::default()) };
-    };
-    let name = if counted {
-        Name::Counted(name, name_len)
-    } else {
-        Name::Terminated(name)
     };
     boundary(
         || Site {
