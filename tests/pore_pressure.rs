@@ -661,3 +661,31 @@ fn the_abi_refuses_exactly_what_the_checked_core_refuses() {
     // The sweep reaches refusals of both kinds, not only accepted points.
     assert!(refused > 1000, "{refused}");
 }
+
+#[test]
+fn a_flag_other_than_0_or_1_is_refused_naming_the_flag() {
+    let x = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    for bad in [-1, 2, i32::MIN, i32::MAX] {
+        for (k, name) in ["open", "steady", "finite_sliding", "per_side"]
+            .into_iter()
+            .enumerate()
+        {
+            let mut flags = [0; 4];
+            flags[k] = bad;
+            let v = IflPorePressureVariant {
+                open: flags[0],
+                steady: flags[1],
+                finite_sliding: flags[2],
+                per_side: flags[3],
+            };
+            let (s, r, t, g) = call(v, x);
+            assert_eq!(s, IflStatus::BadParameter, "{name} = {bad}");
+            let msg = last_error();
+            assert!(
+                msg.contains(&format!("variant.{name} = {bad}; expected 0 or 1")),
+                "{msg}"
+            );
+            assert_eq!((r, t, g), ([0.0; 4], [0.0; 16], [0.0; 4]));
+        }
+    }
+}
