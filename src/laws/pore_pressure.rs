@@ -14,7 +14,7 @@
 //! Per unit area, with the leading minus sign of δΠ^ipp included, in the basis
 //! x = (h, p̄, p̂, q̂) of [`Basis::MeanJump`] (or (h, p₁, p₂, q̂) of [`Basis::PerSide`]):
 //! - `residual[i]`: the coefficient of δx_i in δΠ^ipp;
-//! - `tangent[i][j]`: ∂residual[i]/∂x_j, the coefficient of δx_i·dx_j in dδΠ^ipp (the column
+//! - `tangent[i][j]`: ∂`residual[i]`/∂x_j, the coefficient of δx_i·dx_j in dδΠ^ipp (the column
 //!   of h is taken with the start-of-increment opening fixed, so dΔh = dh);
 //! - `geometric[i]`: the coefficient of dδx_i in dδΠ^ipp, which the host multiplies by the
 //!   change of the variation that its own contact geometry gives (zero in small sliding).
@@ -162,7 +162,7 @@ impl From<PointFault> for LawError {
 pub struct PorePressureTerms {
     /// Coefficients of δx_i in δΠ^ipp.
     pub residual: [f64; 4],
-    /// tangent[i][j] = ∂residual[i]/∂x_j.
+    /// `tangent[i][j]` = ∂`residual[i]`/∂x_j.
     pub tangent: [[f64; 4]; 4],
     /// Coefficients of dδx_i in dδΠ^ipp (zero in small sliding).
     pub geometric: [f64; 4],
