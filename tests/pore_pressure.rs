@@ -689,3 +689,19 @@ fn a_flag_other_than_0_or_1_is_refused_naming_the_flag() {
         }
     }
 }
+
+#[test]
+fn a_success_leaves_the_last_error_as_every_entry_point_does() {
+    // docs/install.md: a successful call does not clear the thread's last error.
+    let good = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    let mut bad = good;
+    bad[0] = f64::NAN;
+    assert_eq!(call(GENERAL_FLAGS, bad).0, IflStatus::BadInput);
+    let before = last_error();
+    assert!(before.contains("p1 = NaN"), "{before}");
+    assert_eq!(call(GENERAL_FLAGS, good).0, IflStatus::Ok);
+    assert_eq!(call_n(b"column", 6, GENERAL_FLAGS, good).0, IflStatus::Ok);
+    assert_eq!(last_error(), before);
+    interfacial::abi::ifl_clear_error();
+    assert_eq!(last_error(), "");
+}
