@@ -352,14 +352,16 @@ unsafe fn lean(
 }
 
 /// [`careful`] for [`ifl_pore_pressure`], its arguments in the registers they arrived in (six
-/// integer words, six doubles): the entry point reaches it by a jump, with no frame of its own.
+/// integer words, six doubles). `extern "C"` makes it nounwind to the caller (its body catches
+/// every panic in [`boundary`]), so the entry point needs no unwind landing pad around the call
+/// and reaches it by a plain jump, with no frame of its own.
 ///
 /// # Safety
 /// As [`ifl_pore_pressure`].
 #[cold]
 #[inline(never)]
 #[allow(clippy::too_many_arguments)]
-unsafe fn careful_terminated(
+unsafe extern "C" fn careful_terminated(
     interaction: *const c_char,
     lo: u64,
     hi: u64,
