@@ -1,6 +1,7 @@
-//! `ifl_pore_pressure`: the interface pore-pressure kernel (seed 000, interface pore pressure)
-//! through the native API. No physics here: flags are decoded, pointers checked, and
-//! [`crate::laws::pore_pressure`] does the rest.
+//! `ifl_pore_pressure` and `ifl_pore_pressure_n` (the same with a length-carrying name): the
+//! interface pore-pressure kernel (seed 000, interface pore pressure) through the native API.
+//! No physics here: flags are decoded, pointers checked, and [`crate::laws::pore_pressure`]
+//! does the rest.
 
 use std::ffi::{CStr, c_char, c_int};
 
@@ -47,8 +48,11 @@ fn flag(name: &str, v: c_int) -> Result<bool, LawError> {
 /// The lean path for the variant whose flags are the bits of `FLAGS` (open, steady,
 /// finite_sliding, per_side from bit 0): writes the terms and returns true, or returns false
 /// (nothing written) when the inputs need the careful path.
+///
+/// # Safety
+/// `residual`, `tangent` and `geometric` are non-NULL and point to 4, 16 and 4 writable doubles.
 #[inline(always)]
-fn lean_as<const FLAGS: c_int>(
+unsafe fn lean_as<const FLAGS: c_int>(
     point: &InterfacePoint,
     (residual, tangent, geometric): (*mut f64, *mut f64, *mut f64),
 ) -> bool {
@@ -62,7 +66,7 @@ fn lean_as<const FLAGS: c_int>(
     };
     match interface_terms_lean(point, variant) {
         Some(t) => {
-            // SAFETY: checked non-NULL by the caller; 4, 16 and 4 writable doubles by contract.
+            // SAFETY: non-NULL, 4, 16 and 4 writable doubles (this function's contract).
             unsafe { write_terms(residual, tangent, geometric, &t.in_basis(basis)) };
             true
         }
@@ -328,23 +332,26 @@ unsafe fn lean(
         // per_side (bit 34) to 3.
         let out = (residual, tangent, geometric);
         let x = lo | (hi << 2);
-        let done = match (x | (x >> 31)) & 15 {
-            0 => lean_as::<0>(point, out),
-            1 => lean_as::<1>(point, out),
-            2 => lean_as::<2>(point, out),
-            3 => lean_as::<3>(point, out),
-            4 => lean_as::<4>(point, out),
-            5 => lean_as::<5>(point, out),
-            6 => lean_as::<6>(point, out),
-            7 => lean_as::<7>(point, out),
-            8 => lean_as::<8>(point, out),
-            9 => lean_as::<9>(point, out),
-            10 => lean_as::<10>(point, out),
-            11 => lean_as::<11>(point, out),
-            12 => lean_as::<12>(point, out),
-            13 => lean_as::<13>(point, out),
-            14 => lean_as::<14>(point, out),
-            _ => lean_as::<15>(point, out),
+        // SAFETY: non-NULL (tested above); 4, 16 and 4 writable doubles by contract.
+        let done = unsafe {
+            match (x | (x >> 31)) & 15 {
+                0 => lean_as::<0>(point, out),
+                1 => lean_as::<1>(point, out),
+                2 => lean_as::<2>(point, out),
+                3 => lean_as::<3>(point, out),
+                4 => lean_as::<4>(point, out),
+                5 => lean_as::<5>(point, out),
+                6 => lean_as::<6>(point, out),
+                7 => lean_as::<7>(point, out),
+                8 => lean_as::<8>(point, out),
+                9 => lean_as::<9>(point, out),
+                10 => lean_as::<10>(point, out),
+                11 => lean_as::<11>(point, out),
+                12 => lean_as::<12>(point, out),
+                13 => lean_as::<13>(point, out),
+                14 => lean_as::<14>(point, out),
+                _ => lean_as::<15>(point, out),
+            }
         };
         return done;
     }
