@@ -107,6 +107,25 @@ enum IflStatus ifl_fric_batch(size_t npoints, size_t ld, int nfdir, const double
                               const double *taulm, const double *press, const double *dpress,
                               const double *chrlngth, double *pnewdt);
 
+/* The interface pore-pressure kernel (docs/pore-pressure.md): the variant is four ints passed
+ * by value (Fortran: a bind(C) derived type of four integer(c_int), VALUE); the name either
+ * NUL-terminated or with its length (the form Fortran's CHARACTER needs); outputs RESIDUAL(4),
+ * TANGENT(4,4), GEOMETRIC(4). */
+_Static_assert(sizeof(IflPorePressureVariant) == 4 * sizeof(int), "variant is four ints");
+_Static_assert(offsetof(IflPorePressureVariant, open) == 0, "open first");
+_Static_assert(offsetof(IflPorePressureVariant, steady) == sizeof(int), "steady second");
+_Static_assert(offsetof(IflPorePressureVariant, finite_sliding) == 2 * sizeof(int),
+               "finite_sliding third");
+_Static_assert(offsetof(IflPorePressureVariant, per_side) == 3 * sizeof(int), "per_side last");
+enum IflStatus ifl_pore_pressure(const char *interaction, IflPorePressureVariant variant,
+                                 double p1, double p2, double q_hat, double h, double dh,
+                                 double dt, double *residual, double *tangent,
+                                 double *geometric);
+enum IflStatus ifl_pore_pressure_n(const char *interaction, size_t interaction_len,
+                                   IflPorePressureVariant variant, double p1, double p2,
+                                   double q_hat, double h, double dh, double dt,
+                                   double *residual, double *tangent, double *geometric);
+
 /* VFRIC (abi.md, section "VFRIC"), double-precision build: vaba_param.inc = IMPLICIT REAL*8, so
  * every real is double and names starting I-N (nContact, jConSlvid, lContType, ...) are int;
  * 42 explicit arguments + the hidden lengths of surfInt, surfSlv, surfMst. */
@@ -148,11 +167,17 @@ int main(void)
                                   double *, double *, double *, double *, double *, double *,
                                   double *, const double *, const double *, const double *,
                                   const double *, const double *, double *) = ifl_fric_batch;
+    enum IflStatus (*const pore)(const char *, IflPorePressureVariant, double, double, double,
+                                 double, double, double, double *, double *,
+                                 double *) = ifl_pore_pressure;
+    enum IflStatus (*const pore_n)(const char *, size_t, IflPorePressureVariant, double, double,
+                                   double, double, double, double, double *, double *,
+                                   double *) = ifl_pore_pressure_n;
     int passed = 0, failed = 0;
 
     /* Linked and callable through the hand-written types. */
     if (fric != NULL && version != NULL && last_error != NULL && error_copy != NULL &&
-        clear_error != NULL && batch != NULL) {
+        clear_error != NULL && batch != NULL && pore != NULL && pore_n != NULL) {
         passed++;
     } else {
         failed++;
@@ -161,6 +186,28 @@ int main(void)
         passed++;
     } else {
         failed++;
+    }
+    /* Both name forms through the hand-written types, on a name without a NUL in its 7 bytes:
+     * closed, transient, small sliding, p_mean = 2, p_jump = 1, q_hat = 0.5, dt = 0.25 give
+     * residual -(p_mean, 0, dt q_hat, dt p_jump) (seed 000, closed contact). */
+    {
+        const char name[7] = {'c', 'o', 'l', 'u', 'm', 'n', ' '};
+        const IflPorePressureVariant closed = {0, 0, 0, 0};
+        const double want[4] = {-2.0, 0.0, -0.125, -0.25};
+        double r[4], t[16], g[4], rn[4], tn[16], gn[4];
+        int same = 1;
+        int i;
+        enum IflStatus s = pore("column", closed, 3.0, 1.0, 0.5, 0.0, 0.0, 0.25, r, t, g);
+        enum IflStatus sn =
+            pore_n(name, sizeof name, closed, 3.0, 1.0, 0.5, 0.0, 0.0, 0.25, rn, tn, gn);
+        for (i = 0; i < 4; i++) {
+            same = same && r[i] == want[i] && rn[i] == want[i];
+        }
+        if (s == IFL_STATUS_OK && sn == IFL_STATUS_OK && same) {
+            passed++;
+        } else {
+            failed++;
+        }
     }
     printf("%d passed, %d failed\n", passed, failed);
     return failed == 0 ? 0 : 1;

@@ -7,8 +7,8 @@
 !   types: INTEGER is integer(c_int), so a caller built with -fdefault-integer-8 that uses this
 !   module gets a compile-time type mismatch instead of corrupted integers;
 ! - Fortran wrappers that take character(*) names (no NUL needed) and return text as
-!   character(:), allocatable: ifl_gap_conductance(name, ...), ifl_last_error_message(),
-!   ifl_version_string().
+!   character(:), allocatable: ifl_gap_conductance(name, ...), ifl_pore_pressure(name, ...),
+!   ifl_last_error_message(), ifl_version_string().
 !
 ! Installed as interfacial.mod (for the gfortran that built it) next to interfacial.h, and as
 ! this source in share/interfacial/fortran/ for other compilers: compile it with yours and link
@@ -36,9 +36,20 @@ module interfacial
     real(c_double) :: dq_dtheta_b = 0
   end type ifl_conductance
 
+  ! struct IflPorePressureVariant: one flag per choice, each 0 or 1 (docs/pore-pressure.md).
+  ! The default, all zeros, is closed contact, transient, small sliding, unknowns
+  ! (h, p_mean, p_jump, q_hat); e.g. ifl_pore_pressure_variant(steady=1, per_side=1).
+  type, bind(C), public :: ifl_pore_pressure_variant
+    integer(c_int) :: open = 0
+    integer(c_int) :: steady = 0
+    integer(c_int) :: finite_sliding = 0
+    integer(c_int) :: per_side = 0
+  end type ifl_pore_pressure_variant
+
   public :: ifl_fric_batch, ifl_forced_sliding, ifl_version, ifl_last_error, &
-    ifl_last_error_copy, ifl_clear_error, ifl_gap_conductance_c, ifl_gap_conductance_n
-  public :: ifl_gap_conductance, ifl_last_error_message, ifl_version_string
+    ifl_last_error_copy, ifl_clear_error, ifl_gap_conductance_c, ifl_gap_conductance_n, &
+    ifl_pore_pressure_c, ifl_pore_pressure_n
+  public :: ifl_gap_conductance, ifl_pore_pressure, ifl_last_error_message, ifl_version_string
   public :: fric, gapcon, fric_coef, uinter, vfric
 
   ! ---- the native C API (include/interfacial.h) --------------------------------------------
@@ -111,12 +122,40 @@ module interfacial
       type(ifl_conductance), intent(out) :: out
       integer(c_int) :: status
     end function ifl_gap_conductance_n
+
+    ! The interface pore-pressure kernel (seed 000) with a NUL-terminated name; Fortran callers
+    ! use the generic ifl_pore_pressure(name, ...) below instead. tangent is TANGENT(4,4).
+    function ifl_pore_pressure_c(interaction, variant, p1, p2, q_hat, h, dh, dt, residual, &
+        tangent, geometric) result(status) bind(C, name='ifl_pore_pressure')
+      import :: c_char, c_double, c_int, ifl_pore_pressure_variant
+      character(kind=c_char), intent(in) :: interaction(*)
+      type(ifl_pore_pressure_variant), value :: variant
+      real(c_double), value :: p1, p2, q_hat, h, dh, dt
+      real(c_double), intent(out) :: residual(4), tangent(4, 4), geometric(4)
+      integer(c_int) :: status
+    end function ifl_pore_pressure_c
+
+    function ifl_pore_pressure_n(interaction, interaction_len, variant, p1, p2, q_hat, h, dh, &
+        dt, residual, tangent, geometric) result(status) bind(C, name='ifl_pore_pressure_n')
+      import :: c_char, c_double, c_int, c_size_t, ifl_pore_pressure_variant
+      character(kind=c_char), intent(in) :: interaction(*)
+      integer(c_size_t), value :: interaction_len
+      type(ifl_pore_pressure_variant), value :: variant
+      real(c_double), value :: p1, p2, q_hat, h, dh, dt
+      real(c_double), intent(out) :: residual(4), tangent(4, 4), geometric(4)
+      integer(c_int) :: status
+    end function ifl_pore_pressure_n
   end interface
 
   ! The thermal law of an interaction by its Fortran name (blank-padded, no NUL).
   interface ifl_gap_conductance
     module procedure ifl_gap_conductance_chars
   end interface ifl_gap_conductance
+
+  ! The interface pore-pressure kernel with a Fortran name (blank-padded, no NUL).
+  interface ifl_pore_pressure
+    module procedure ifl_pore_pressure_chars
+  end interface ifl_pore_pressure
 
   interface
     function c_strlen(s) result(n) bind(C, name='strlen')
@@ -212,6 +251,23 @@ contains
     status = ifl_gap_conductance_n(name, int(len(interaction), c_size_t), d, p, theta_a, &
       theta_b, out)
   end function ifl_gap_conductance_chars
+
+  !> ifl_pore_pressure(name, variant, p1, p2, q_hat, h, dh, dt, residual, tangent, geometric):
+  !> the interface pore-pressure terms of one point (docs/pore-pressure.md); `name` (trailing
+  !> blanks ignored, no NUL needed) only labels error messages. Returns an IFL_STATUS_* value;
+  !> the outputs are all zeros on failure.
+  function ifl_pore_pressure_chars(interaction, variant, p1, p2, q_hat, h, dh, dt, residual, &
+      tangent, geometric) result(status)
+    character(len=*), intent(in) :: interaction
+    type(ifl_pore_pressure_variant), intent(in) :: variant
+    real(c_double), intent(in) :: p1, p2, q_hat, h, dh, dt
+    real(c_double), intent(out) :: residual(4), tangent(4, 4), geometric(4)
+    integer(c_int) :: status
+    character(kind=c_char, len=max(1, len(interaction))) :: name
+    name = interaction
+    status = ifl_pore_pressure_n(name, int(len(interaction), c_size_t), variant, p1, p2, q_hat, &
+      h, dh, dt, residual, tangent, geometric)
+  end function ifl_pore_pressure_chars
 
   !> The calling thread's last error message, '' when there is none (or since ifl_clear_error).
   function ifl_last_error_message() result(text)

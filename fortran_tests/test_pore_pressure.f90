@@ -1,36 +1,22 @@
 ! test_pore_pressure.f90 -- the Fortran twin of c_tests/test_pore_pressure.c: steady seepage
-! through two porous layers joined by the interface pore-pressure kernel (ifl_pore_pressure,
-! seed 000), called step by step through its own bind(C) interface while the top pressure
-! ramps up. Closed form: q = (p_top - p_base)/(L1/k1 + L2/k2), linear pressure per layer,
-! p1 = p2 at the interface, flux across q_hat/2 = q.
+! through two porous layers joined by the interface pore-pressure kernel (seed 000), called step
+! by step through the `interfacial` module (ifl_pore_pressure with a character(*) name, which
+! calls ifl_pore_pressure_n: no NUL) while the top pressure ramps up. Closed form:
+! q = (p_top - p_base)/(L1/k1 + L2/k2), linear pressure per layer, p1 = p2 at the interface,
+! flux across q_hat/2 = q.
 program test_pore_pressure
-  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_null_char
+  use, intrinsic :: iso_c_binding, only: c_null_char
+  use interfacial, only: ifl_pore_pressure, ifl_pore_pressure_c, ifl_pore_pressure_variant, &
+    ifl_last_error_message, IFL_STATUS_OK, IFL_STATUS_BAD_INPUT
   use harness_tally
   implicit none
-
-  type, bind(c) :: ifl_pore_pressure_variant
-    integer(c_int) :: open, steady, finite_sliding, per_side
-  end type ifl_pore_pressure_variant
-
-  interface
-    ! IflStatus ifl_pore_pressure(const char *interaction, IflPorePressureVariant variant,
-    !   double p1, double p2, double q_hat, double h, double dh, double dt,
-    !   double residual[4], double tangent[16], double geometric[4]);
-    function ifl_pore_pressure(interaction, variant, p1, p2, q_hat, h, dh, dt, residual, &
-                               tangent, geometric) bind(c, name='ifl_pore_pressure') result(status)
-      import :: c_int, c_double, c_char, ifl_pore_pressure_variant
-      character(kind=c_char), dimension(*), intent(in) :: interaction
-      type(ifl_pore_pressure_variant), value :: variant
-      real(c_double), value :: p1, p2, q_hat, h, dh, dt
-      real(c_double), intent(out) :: residual(4), tangent(4, 4), geometric(4)
-      integer(c_int) :: status
-    end function ifl_pore_pressure
-  end interface
 
   integer, parameter :: ne = 4, np = 2*(ne + 1), n = np + 1, qhat = n
   real(dp), parameter :: l1 = 1.0_dp, l2 = 2.0_dp, k1 = 1.0e-3_dp, k2 = 1.0e-4_dp, p_base = 0.0_dp
   real(dp) :: x(n), r(n), k(n, n), p_top, q, p_i, worst, res(4), tng(4, 4), geo(4)
   integer :: step, layer, node, status
+  ! A blank-padded name as an Abaqus-style host keeps it: no NUL anywhere.
+  character(len=80) :: ciname = 'seepage'
   logical :: ok
 
   x = 0.0_dp
@@ -64,13 +50,33 @@ program test_pore_pressure
     call check_near(worst, 0.0_dp, 0.0_dp, 1.0e-14_dp*p_top, 'residual after one Newton step')
   end do
 
-  scene = 'refused: transient with dt = 0'
-  status = ifl_pore_pressure('seepage'//c_null_char, ifl_pore_pressure_variant(1, 0, 1, 0), &
+  scene = 'refused: transient with dt = 0 (character(*) name)'
+  status = ifl_pore_pressure(ciname, ifl_pore_pressure_variant(1, 0, 1, 0), &
                              130.0_dp, 70.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, res, tng, geo)
-  call check(status == 2, 'status IFL_STATUS_BAD_INPUT (2)')
-  call check_contains(last_error(), 'ifl_pore_pressure')
-  call check_contains(last_error(), 'dt = 0')
-  call check(all(res == 0.0_dp) .and. all(tng == 0.0_dp), 'outputs zeroed')
+  call check(status == IFL_STATUS_BAD_INPUT, 'status IFL_STATUS_BAD_INPUT')
+  call check_contains(ifl_last_error_message(), 'ifl_pore_pressure_n')
+  ! The name without its 73 trailing blanks, closed by the quote.
+  call check_contains(ifl_last_error_message(), "interaction 'seepage'")
+  call check_contains(ifl_last_error_message(), 'dt = 0')
+  call check(all(res == 0.0_dp) .and. all(tng == 0.0_dp) .and. all(geo == 0.0_dp), &
+             'outputs zeroed')
+
+  scene = 'refused: transient with dt = 0 (NUL-terminated name, the C function)'
+  status = ifl_pore_pressure_c('seepage'//c_null_char, ifl_pore_pressure_variant(open=1), &
+                               130.0_dp, 70.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, res, tng, geo)
+  call check(status == IFL_STATUS_BAD_INPUT, 'status IFL_STATUS_BAD_INPUT')
+  call check_contains(ifl_last_error_message(), "ifl_pore_pressure: interaction 'seepage'")
+
+  scene = 'closed, transient, small sliding (the default variant): seed 000 coefficients'
+  ! p_mean = 100, p_jump = 30: residual -(p_mean, 0, dt*q_hat, dt*p_jump).
+  status = ifl_pore_pressure(ciname, ifl_pore_pressure_variant(), 130.0_dp, 70.0_dp, 0.5_dp, &
+                             0.0_dp, 0.0_dp, 0.25_dp, res, tng, geo)
+  call check(status == IFL_STATUS_OK, 'status IFL_STATUS_OK')
+  call check(all(res == [-100.0_dp, 0.0_dp, -0.125_dp, -7.5_dp]), 'residual -(p_mean, 0, dt q, dt p_jump)')
+  call check(tng(1, 2) == -1.0_dp .and. tng(3, 4) == -0.25_dp .and. tng(4, 3) == -0.25_dp, &
+             'tangent entries -1, -dt, -dt')
+  call check(count(tng /= 0.0_dp) == 3, 'no other tangent entry')
+  call check(all(geo == 0.0_dp), 'small sliding: no geometric terms')
 
   write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
   if (nfail > 0 .or. npass == 0) stop 1
@@ -105,9 +111,9 @@ contains
       end do
     end do
     ! Steady, closed, small sliding, per-side unknowns (h, p1, p2, q_hat).
-    status = ifl_pore_pressure('seepage'//c_null_char, ifl_pore_pressure_variant(0, 1, 0, 1), &
+    status = ifl_pore_pressure(ciname, ifl_pore_pressure_variant(steady=1, per_side=1), &
                                x(ne + 1), x(ne + 2), x(qhat), 0.0_dp, 0.0_dp, 0.0_dp, kr, kt, kg)
-    ok = status == 0
+    ok = status == IFL_STATUS_OK
     call check(ok, 'kernel status IFL_STATUS_OK')
     if (.not. ok) return
     call check(all(kg == 0.0_dp), 'small sliding: no geometric terms')

@@ -478,7 +478,8 @@ enum IflStatus ifl_gap_conductance_n(const char *interaction,
  * - `geometric[4]`: coefficient of dδx_i, the change of the variation from the host's contact
  *   geometry; all zeros in small sliding.
  *
- * `interaction` (NUL-terminated, may be NULL) only names the caller in error messages.
+ * `interaction` (NUL-terminated, may be NULL) only names the caller in error messages;
+ * [`ifl_pore_pressure_n`] takes it with its length instead (no NUL needed).
  * Returns `IFL_STATUS_OK`; on a NaN or infinite input or `dt <= 0` in a transient analysis
  * `IFL_STATUS_BAD_INPUT`, on a flag other than 0 or 1 `IFL_STATUS_BAD_PARAMETER`, on an
  * overflow of finite inputs `IFL_STATUS_NUMERICAL_FAILURE`, on a NULL output
@@ -500,6 +501,31 @@ enum IflStatus ifl_pore_pressure(const char *interaction,
                                  double *residual,
                                  double *tangent,
                                  double *geometric);
+
+/**
+ * [`ifl_pore_pressure`] with the interaction's name given as `interaction_len` bytes at
+ * `interaction`, as Fortran passes a `CHARACTER` (blank-padded, no NUL): nothing past
+ * `interaction_len` is read, trailing blanks and NULs are dropped from messages. For Fortran,
+ * the `interfacial` module's `ifl_pore_pressure(name, ...)` calls it with `len(name)`.
+ * Everything else (inputs, outputs, statuses) is as [`ifl_pore_pressure`]; messages name
+ * `ifl_pore_pressure_n`.
+ *
+ * # Safety
+ * `interaction` is NULL or points to `interaction_len` readable bytes (any pointer when
+ * `interaction_len` is 0); the outputs as [`ifl_pore_pressure`].
+ */
+enum IflStatus ifl_pore_pressure_n(const char *interaction,
+                                   size_t interaction_len,
+                                   struct IflPorePressureVariant variant,
+                                   double p1,
+                                   double p2,
+                                   double q_hat,
+                                   double h,
+                                   double dh,
+                                   double dt,
+                                   double *residual,
+                                   double *tangent,
+                                   double *geometric);
 
 /**
  * Abaqus/Standard `UINTER`: the full constitutive behaviour of one interface point, callable

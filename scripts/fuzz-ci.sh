@@ -14,8 +14,8 @@ fuzz_seed="${FUZZ_SEED:-1}"
 # overrides all of them), so every machine replays exactly the inputs checked before the commit;
 # the time limit only cuts a slow machine short (a prefix of the same sequence).
 declare -A default_runs=([fric]=150000 [gapcon]=400000 [config]=150000 [uinter]=200000
-  [batch]=80000 [fric_coef]=200000 [vfric]=300000)
-targets=(fric gapcon config uinter batch fric_coef vfric)
+  [batch]=80000 [fric_coef]=200000 [vfric]=300000 [pore_pressure]=300000)
+targets=(fric gapcon config uinter batch fric_coef vfric pore_pressure)
 
 if ! command -v cargo-fuzz >/dev/null 2>&1; then
   echo "== cargo install cargo-fuzz --locked"

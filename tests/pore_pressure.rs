@@ -1,16 +1,19 @@
 //! The interface pore-pressure kernel (seed 000): its linearization against central finite
 //! differences of its own residual in every variant and basis, each simplification (closed
 //! contact, steady state, small sliding) against the general form under its assumptions, the
-//! side-swap invariant, and bad input refused through `ifl_pore_pressure`.
+//! side-swap invariant, and bad input refused through `ifl_pore_pressure` and its
+//! length-carrying form `ifl_pore_pressure_n`.
 // Entries of 4-vectors and 4×4 matrices compared index by index read best with indices.
 #![allow(clippy::needless_range_loop)]
 
 use std::ffi::CStr;
 
-use interfacial::abi::{IflPorePressureVariant, IflStatus, ifl_last_error, ifl_pore_pressure};
+use interfacial::abi::{
+    IflPorePressureVariant, IflStatus, ifl_last_error, ifl_pore_pressure, ifl_pore_pressure_n,
+};
 use interfacial::laws::pore_pressure::{
-    Basis, Contact, H, InterfacePoint, P_JUMP, P_MEAN, PorePressureTerms, Q_HAT, Regime, Sliding,
-    Variant, interface_terms,
+    Basis, Contact, H, InterfacePoint, P_JUMP, P_MEAN, PointFault, PorePressureTerms, Q_HAT,
+    Regime, Sliding, Variant, interface_terms,
 };
 use proptest::prelude::*;
 
@@ -470,4 +473,235 @@ fn every_flag_combination_returns_the_core_terms_bit_for_bit() {
         let core_t: Vec<f64> = (0..16).map(|k| core.tangent[k % 4][k / 4]).collect();
         assert_eq!(bits(&t), bits(&core_t), "flags {flags}");
     }
+}
+
+/// `ifl_pore_pressure_n` on `len` bytes of `name`.
+fn call_n(name: &[u8], len: usize, v: IflPorePressureVariant, x: [f64; 6]) -> Outputs {
+    let (mut r, mut t, mut g) = ([7.0; 4], [7.0; 16], [7.0; 4]);
+    // SAFETY: `len` <= name.len() readable bytes; arrays of 4, 16 and 4 doubles.
+    let s = unsafe {
+        ifl_pore_pressure_n(
+            name.as_ptr().cast(),
+            len,
+            v,
+            x[0],
+            x[1],
+            x[2],
+            x[3],
+            x[4],
+            x[5],
+            r.as_mut_ptr(),
+            t.as_mut_ptr(),
+            g.as_mut_ptr(),
+        )
+    };
+    (s, r, t, g)
+}
+
+#[test]
+fn the_length_carrying_form_answers_as_the_nul_terminated_one() {
+    let good = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    let bits = |o: &Outputs| {
+        (
+            o.0,
+            o.1.map(f64::to_bits),
+            o.2.map(f64::to_bits),
+            o.3.map(f64::to_bits),
+        )
+    };
+    for flags in 0..16 {
+        let v = IflPorePressureVariant {
+            open: flags & 1,
+            steady: (flags >> 1) & 1,
+            finite_sliding: (flags >> 2) & 1,
+            per_side: (flags >> 3) & 1,
+        };
+        assert_eq!(
+            bits(&call_n(b"column", 6, v, good)),
+            bits(&call(v, good)),
+            "flags {flags}"
+        );
+    }
+}
+
+#[test]
+fn the_length_carrying_form_reads_only_its_length_and_needs_no_nul() {
+    let mut x = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    x[5] = 0.0;
+    // A Fortran CHARACTER*12: blank-padded, no NUL, and bytes after it that are not the name's.
+    let buffer = b"column      XYZ";
+    let (s, r, t, g) = call_n(buffer, 12, GENERAL_FLAGS, x);
+    assert_eq!(s, IflStatus::BadInput);
+    let msg = last_error();
+    assert!(
+        msg.contains("ifl_pore_pressure_n: interaction 'column' ") && msg.contains("dt = 0"),
+        "{msg}"
+    );
+    assert!(!msg.contains("XYZ"), "{msg}");
+    assert_eq!((r, t, g), ([0.0; 4], [0.0; 16], [0.0; 4]));
+    // Length 0 (any pointer, here NULL) and a NULL name with a length: no name, same refusal.
+    for len in [0, 5] {
+        let (mut r, mut t, mut g) = ([7.0; 4], [7.0; 16], [7.0; 4]);
+        // SAFETY: a NULL name is allowed; arrays of 4, 16 and 4 doubles.
+        let s = unsafe {
+            ifl_pore_pressure_n(
+                std::ptr::null(),
+                len,
+                GENERAL_FLAGS,
+                x[0],
+                x[1],
+                x[2],
+                x[3],
+                x[4],
+                x[5],
+                r.as_mut_ptr(),
+                t.as_mut_ptr(),
+                g.as_mut_ptr(),
+            )
+        };
+        assert_eq!(s, IflStatus::BadInput);
+        assert!(last_error().contains("interaction ''"), "{}", last_error());
+        assert_eq!((r, t, g), ([0.0; 4], [0.0; 16], [0.0; 4]));
+    }
+}
+
+/// The flags of `flags` (bit 0 open, 1 steady, 2 finite sliding, 3 per side) as the ABI's
+/// struct and as the core's variant and basis.
+fn decoded(flags: i32) -> (IflPorePressureVariant, Variant, Basis) {
+    let v = IflPorePressureVariant {
+        open: flags & 1,
+        steady: (flags >> 1) & 1,
+        finite_sliding: (flags >> 2) & 1,
+        per_side: (flags >> 3) & 1,
+    };
+    let variant = Variant {
+        contact: [Contact::Closed, Contact::Open][(flags & 1) as usize],
+        regime: [Regime::Transient, Regime::Steady][((flags >> 1) & 1) as usize],
+        sliding: [Sliding::Small, Sliding::Finite][((flags >> 2) & 1) as usize],
+    };
+    let basis = [Basis::MeanJump, Basis::PerSide][((flags >> 3) & 1) as usize];
+    (v, variant, basis)
+}
+
+#[test]
+fn the_abi_refuses_exactly_what_the_checked_core_refuses() {
+    // The ABI's fast path folds its checks into one comparison on the results; the checked
+    // core validates input by input. Every special value in every input (and the pairs that
+    // cancel or overflow together), in every flag combination: same status, and on success the
+    // same terms bit for bit.
+    let specials = [
+        1.0,
+        -2.5,
+        0.0,
+        -0.0,
+        5e-324,
+        1e300,
+        -1e300,
+        f64::MAX,
+        f64::MIN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+    ];
+    let good = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    let mut inputs: Vec<[f64; 6]> = Vec::new();
+    for i in 0..6 {
+        for &x in &specials {
+            let mut p = good;
+            p[i] = x;
+            inputs.push(p);
+        }
+    }
+    for (i, j) in [(0, 1), (2, 5), (0, 5), (1, 5)] {
+        for &x in &specials {
+            for &y in &specials {
+                let mut p = good;
+                p[i] = x;
+                p[j] = y;
+                inputs.push(p);
+            }
+        }
+    }
+    let mut refused = 0;
+    for flags in 0..16 {
+        let (v, variant, basis) = decoded(flags);
+        for x in &inputs {
+            let point = InterfacePoint {
+                p1: x[0],
+                p2: x[1],
+                q_hat: x[2],
+                h: x[3],
+                dh: x[4],
+                dt: x[5],
+            };
+            let (s, r, t, g) = call(v, *x);
+            match interface_terms(&point, variant) {
+                Ok(core) => {
+                    let core = core.in_basis(basis);
+                    assert_eq!(s, IflStatus::Ok, "flags {flags}, {x:?}");
+                    let bits = |a: &[f64]| a.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+                    assert_eq!(bits(&r), bits(&core.residual), "flags {flags}, {x:?}");
+                    assert_eq!(bits(&g), bits(&core.geometric), "flags {flags}, {x:?}");
+                    let core_t: Vec<f64> = (0..16).map(|k| core.tangent[k % 4][k / 4]).collect();
+                    assert_eq!(bits(&t), bits(&core_t), "flags {flags}, {x:?}");
+                }
+                Err(fault) => {
+                    refused += 1;
+                    let want = if fault == PointFault::Overflow {
+                        IflStatus::NumericalFailure
+                    } else {
+                        IflStatus::BadInput
+                    };
+                    assert_eq!(s, want, "flags {flags}, {x:?}: {fault}");
+                    assert_eq!((r, t, g), ([0.0; 4], [0.0; 16], [0.0; 4]));
+                }
+            }
+        }
+    }
+    // The sweep reaches refusals of both kinds, not only accepted points.
+    assert!(refused > 1000, "{refused}");
+}
+
+#[test]
+fn a_flag_other_than_0_or_1_is_refused_naming_the_flag() {
+    let x = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    for bad in [-1, 2, i32::MIN, i32::MAX] {
+        for (k, name) in ["open", "steady", "finite_sliding", "per_side"]
+            .into_iter()
+            .enumerate()
+        {
+            let mut flags = [0; 4];
+            flags[k] = bad;
+            let v = IflPorePressureVariant {
+                open: flags[0],
+                steady: flags[1],
+                finite_sliding: flags[2],
+                per_side: flags[3],
+            };
+            let (s, r, t, g) = call(v, x);
+            assert_eq!(s, IflStatus::BadParameter, "{name} = {bad}");
+            let msg = last_error();
+            assert!(
+                msg.contains(&format!("variant.{name} = {bad}; expected 0 or 1")),
+                "{msg}"
+            );
+            assert_eq!((r, t, g), ([0.0; 4], [0.0; 16], [0.0; 4]));
+        }
+    }
+}
+
+#[test]
+fn a_success_leaves_the_last_error_as_every_entry_point_does() {
+    // docs/install.md: a successful call does not clear the thread's last error.
+    let good = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    let mut bad = good;
+    bad[0] = f64::NAN;
+    assert_eq!(call(GENERAL_FLAGS, bad).0, IflStatus::BadInput);
+    let before = last_error();
+    assert!(before.contains("p1 = NaN"), "{before}");
+    assert_eq!(call(GENERAL_FLAGS, good).0, IflStatus::Ok);
+    assert_eq!(call_n(b"column", 6, GENERAL_FLAGS, good).0, IflStatus::Ok);
+    assert_eq!(last_error(), before);
+    interfacial::abi::ifl_clear_error();
+    assert_eq!(last_error(), "");
 }

@@ -32,7 +32,7 @@ pub use native::{
     IflConductance, IflStatus, ifl_clear_error, ifl_gap_conductance, ifl_gap_conductance_n,
     ifl_last_error, ifl_last_error_copy, ifl_version,
 };
-pub use pore_pressure::{IflPorePressureVariant, ifl_pore_pressure};
+pub use pore_pressure::{IflPorePressureVariant, ifl_pore_pressure, ifl_pore_pressure_n};
 pub use uinter::uinter_;
 pub use vfric::vfric_;
 

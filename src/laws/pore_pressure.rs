@@ -14,7 +14,7 @@
 //! Per unit area, with the leading minus sign of δΠ^ipp included, in the basis
 //! x = (h, p̄, p̂, q̂) of [`Basis::MeanJump`] (or (h, p₁, p₂, q̂) of [`Basis::PerSide`]):
 //! - `residual[i]`: the coefficient of δx_i in δΠ^ipp;
-//! - `tangent[i][j]` = `∂residual[i]/∂x_j`, the coefficient of δx_i·dx_j in dδΠ^ipp (the column
+//! - `tangent[i][j]`: ∂`residual[i]`/∂x_j, the coefficient of δx_i·dx_j in dδΠ^ipp (the column
 //!   of h is taken with the start-of-increment opening fixed, so dΔh = dh);
 //! - `geometric[i]`: the coefficient of dδx_i in dδΠ^ipp, which the host multiplies by the
 //!   change of the variation that its own contact geometry gives (zero in small sliding).
@@ -162,7 +162,7 @@ impl From<PointFault> for LawError {
 pub struct PorePressureTerms {
     /// Coefficients of δx_i in δΠ^ipp.
     pub residual: [f64; 4],
-    /// `tangent[i][j]` = `∂residual[i]/∂x_j`.
+    /// `tangent[i][j]` = ∂`residual[i]`/∂x_j.
     pub tangent: [[f64; 4]; 4],
     /// Coefficients of dδx_i in dδΠ^ipp (zero in small sliding).
     pub geometric: [f64; 4],
@@ -227,28 +227,42 @@ fn zero_if_finite(x: f64) -> f64 {
     x * 0.0
 }
 
+/// `x > 0 && x.is_finite()` in one integer comparison: the bit patterns of the positive finite
+/// doubles are exactly 1 ..= 0x7FEF_FFFF_FFFF_FFFF (+0 is 0; −0, the negatives and negative NaNs
+/// have the sign bit set; +∞ is 0x7FF0_0000_0000_0000 and positive NaNs lie above it).
+#[inline(always)]
+fn positive_finite(x: f64) -> bool {
+    x.to_bits().wrapping_sub(1) < 0x7FEF_FFFF_FFFF_FFFF
+}
+
 /// [`interface_terms`] for valid inputs in one pass, `None` otherwise (the caller then asks
-/// [`interface_terms`] for the cause). Same results bit for bit: the checks are folded into one
-/// comparison instead of one branch per input (measured faster than `is_finite` per input).
+/// [`interface_terms`] for the cause). Same results bit for bit, and `None` exactly when
+/// [`interface_terms`] refuses: the checks fold into one integer comparison (Δt) and one
+/// floating-point comparison on the results.
+///
+/// Why checking the results suffices (Δt > 0 and finite, or 1 in steady state): the residual
+/// of h is −(p₁/2 + p₂/2), non-finite exactly when p₁ or p₂ is (∞ + finite = ∞, ∞ − ∞ = NaN,
+/// NaN propagates; finite halves cannot overflow); the residual of p̂ is −Δt·q̂, non-finite
+/// when q̂ is or when it overflows; the residual of q̂ is −Δt·p̂, non-finite only by overflow.
+/// h and Δh enter no product that the others cover, so they are checked themselves.
 #[inline(always)]
 #[must_use]
 pub fn interface_terms_lean(point: &InterfacePoint, variant: Variant) -> Option<PorePressureTerms> {
-    // One sum, one branch: x·0 is ±0 exactly when x is finite (NaN otherwise).
-    let finite_sum = zero_if_finite(point.p1)
-        + zero_if_finite(point.p2)
-        + zero_if_finite(point.q_hat)
-        + zero_if_finite(point.h)
-        + zero_if_finite(point.dh);
     let time_ok = match variant.regime {
-        Regime::Transient => point.dt > 0.0 && zero_if_finite(point.dt) == 0.0,
+        Regime::Transient => positive_finite(point.dt),
         Regime::Steady => true,
     };
-    if !(finite_sum == 0.0 && time_ok) {
+    if !time_ok {
         return None;
     }
     let t = interface_terms_unchecked(point, variant);
-    // p̄ and p̂ of finite pressures are finite; only the products with Δt can overflow.
-    (zero_if_finite(t.residual[P_JUMP]) + zero_if_finite(t.residual[Q_HAT]) == 0.0).then_some(t)
+    // One sum, one branch: x·0 is ±0 exactly when x is finite (NaN otherwise).
+    let finite_sum = zero_if_finite(t.residual[H])
+        + zero_if_finite(t.residual[P_JUMP])
+        + zero_if_finite(t.residual[Q_HAT])
+        + zero_if_finite(point.h)
+        + zero_if_finite(point.dh);
+    (finite_sum == 0.0).then_some(t)
 }
 
 /// [`interface_terms`] without validation: finite inputs in range give finite outputs; the
@@ -371,6 +385,29 @@ mod tests {
         // ∂r_h/∂p₁ = ∂r_h/∂p̄ · ∂p̄/∂p₁ = −1/2.
         assert_eq!(s.tangent[H][1], -0.5);
         assert_eq!(s.tangent[H][2], -0.5);
+    }
+
+    #[test]
+    fn positive_finite_is_the_two_comparisons() {
+        let nan_negative = f64::from_bits(f64::NAN.to_bits() | (1 << 63));
+        for x in [
+            0.0,
+            -0.0,
+            5e-324,
+            -5e-324,
+            f64::MIN_POSITIVE,
+            1.0,
+            -1.0,
+            f64::MAX,
+            f64::MIN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            nan_negative,
+            f64::from_bits(0x7FF0_0000_0000_0001),
+        ] {
+            assert_eq!(positive_finite(x), x > 0.0 && x.is_finite(), "{x:e}");
+        }
     }
 
     #[test]
