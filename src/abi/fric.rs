@@ -6,8 +6,8 @@ use std::ffi::{c_char, c_int};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::{
-    boundary, fortran_string, null_pointer, read, read_array, slice, write, write_array,
-    write_matrix, write_zeros,
+    boundary, fortran_name_bytes, fortran_string, null_pointer, read, read_array, slice, write,
+    write_array, write_matrix, write_zeros,
 };
 use crate::config::friction_table_for;
 use crate::laws::adhesive::Adhesive;
@@ -574,11 +574,8 @@ impl FricArgs {
             }
             let law = if props.get(7) == Some(&2.0) {
                 // μ table (PROPS(8) = 2): the interaction's, from the configuration file.
-                let name = if self.ciname.is_null() {
-                    &[][..]
-                } else {
-                    std::slice::from_raw_parts(self.ciname.cast::<u8>(), self.ciname_len)
-                };
+                // A NULL name or an implausible hidden length (an address) reads as no name.
+                let name = fortran_name_bytes(self.ciname, self.ciname_len);
                 coulomb_extended_with_table(props, Some(friction_table_for(name)?))?
             } else {
                 friction_law(props)?

@@ -3,7 +3,7 @@
 
 use std::ffi::{c_char, c_int};
 
-use super::{boundary, fortran_string, null_pointer, read, slice};
+use super::{boundary, fortran_name_bytes, fortran_string, null_pointer, read, slice};
 use crate::LawError;
 use crate::config::friction_table_for;
 use crate::laws::coulomb_extended::ExtendedCoulomb;
@@ -122,11 +122,8 @@ impl CoefArgs {
             let props = slice(self.props, nprops, "props")?;
             let law = if props.get(7) == Some(&2.0) {
                 // μ table (PROPS(8) = 2): the interaction's, from the configuration file.
-                let name = if self.surf_int.is_null() {
-                    &[][..]
-                } else {
-                    std::slice::from_raw_parts(self.surf_int.cast::<u8>(), self.surf_int_len)
-                };
+                // A NULL name or an implausible hidden length (an address) reads as no name.
+                let name = fortran_name_bytes(self.surf_int, self.surf_int_len);
                 coulomb_extended_with_table(props, Some(friction_table_for(name)?))?
             } else {
                 friction_law(props)?
