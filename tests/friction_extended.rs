@@ -10,7 +10,7 @@ mod central;
 use central::{Shift, along_dgam, along_press, along_temp, central_tau};
 
 use interfacial::abi::host::FricCall;
-use interfacial::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment, StickMode};
+use interfacial::laws::coulomb::{Contact, Coulomb, EntryFlag, Increment};
 use interfacial::laws::coulomb_extended::{
     Conditions, Damping, ExtendedCoulomb, ExtendedState, Hht, MAX_LOCAL_ITERATIONS,
 };

@@ -1,5 +1,9 @@
-//! `uinter_`: the Abaqus/Standard UINTER user subroutine, for the adhesive interface
-//! (`PROPS(1) = 2`): normal contact, separation adhesion, friction and heat exchange.
+//! `uinter_`: the Abaqus/Standard UINTER user subroutine. A thin shell: one argument view
+//! (`UinterArgs`), a dispatch on the law code `PROPS(1)` with one arm per UINTER law (today the
+//! adhesive interface, `PROPS(1) = 2`: normal contact, separation adhesion, friction and heat
+//! exchange), one reader of the increment, one writer of the outputs, one panic boundary. The
+//! physics, the heat exchange included, is in the laws (docs/architecture.md, "The `uinter_`
+//! shell").
 
 use std::ffi::{c_char, c_int};
 
@@ -269,10 +273,8 @@ impl UinterArgs {
             let heat = InterfaceHeat::exchange(conduction, heating, &r.mechanical_answer(&inc))?;
             let mut end_state = [0.0; InterfaceState::NSTATV];
             r.state.write_statev(&mut end_state);
-            let mut dtau_dh = [0.0; N];
-            for a in 0..N {
-                dtau_dh[a] = r.shear.ddtddp[a] * r.dp_dh;
-            }
+            // ∂τ_a/∂h = ∂τ_a/∂p · ∂p/∂h.
+            let dtau_dh = r.shear.ddtddp.map(|d| d * r.dp_dh);
             self.write_answer(&UinterAnswer::<N> {
                 normal_stress: r.normal_stress,
                 shear: r.shear.tau,

@@ -89,12 +89,7 @@ impl InterfaceHeat {
             let q = c.k * (theta_s - theta_m);
             out.flux = [-q, q];
             // DDFDDT(i,j) = −∂FLUX(i)/∂θ_j with ∂q/∂θ_A, ∂q/∂θ_B of seed 000, 5.2.4.
-            out.ddfddt = [
-                c.dq_dtheta_a,
-                -c.dq_dtheta_a,
-                c.dq_dtheta_b,
-                -c.dq_dtheta_b,
-            ];
+            out.ddfddt = [c.dq_dtheta_a, -c.dq_dtheta_a, c.dq_dtheta_b, -c.dq_dtheta_b];
             // ∂k/∂h: through the clearance −h when apart, through p(h) when closed.
             let dk_dh = if m.overclosure < 0.0 {
                 -c.dk_dd
@@ -129,5 +124,145 @@ impl InterfaceHeat {
                 "the heat flux overflowed (inputs too large for f64)".into(),
             ))
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::laws::gap_conductance::Conduction;
+
+    fn answer(h: f64, k_n: f64) -> MechanicalAnswer<2> {
+        MechanicalAnswer {
+            overclosure: h,
+            normal_stress: k_n * h,
+            dp_dh: k_n,
+            sfd: 0.0,
+            dsfd_dh: 0.0,
+            dsfd_dgam: [0.0; 2],
+            dtime: 0.1,
+        }
+    }
+
+    const NO_HEATING: FrictionalHeating = FrictionalHeating {
+        heat_fraction: 0.0,
+        slave_fraction: 0.5,
+    };
+
+    /// η·SFD/Δt split f / 1 − f, and its derivatives the same split of η·∂SFD/∂(h, Δγ)/Δt;
+    /// nothing with Δt = 0 or η = 0; the two fluxes add up to η·SFD/Δt.
+    #[test]
+    fn frictional_heat_is_split_between_the_surfaces() {
+        let (eta, f, dt) = (0.8, 0.25, 0.5);
+        let m = MechanicalAnswer::<2> {
+            sfd: 3.0,
+            dsfd_dh: 7.0,
+            dsfd_dgam: [11.0, -13.0],
+            dtime: dt,
+            ..answer(1e-3, 1e4)
+        };
+        let heating = FrictionalHeating {
+            heat_fraction: eta,
+            slave_fraction: f,
+        };
+        let out = InterfaceHeat::exchange(None, heating, &m).unwrap();
+        let q = eta * 3.0 / dt;
+        assert!((out.flux[0] - f * q).abs() <= 1e-15 * q);
+        assert!((out.flux[1] - (1.0 - f) * q).abs() <= 1e-15 * q);
+        assert!((out.flux[0] + out.flux[1] - q).abs() <= 1e-15 * q);
+        for (i, part) in [f, 1.0 - f].into_iter().enumerate() {
+            let want = [7.0, 11.0, -13.0].map(|d| part * eta * d / dt);
+            for (got, w) in out.ddfddr[i].iter().zip(want) {
+                assert!((got - w).abs() <= 1e-14 * w.abs(), "{got} against {w}");
+            }
+        }
+        assert_eq!(out.ddfddt, [0.0; 4]);
+        for m in [MechanicalAnswer { dtime: 0.0, ..m }, m] {
+            let h = if m.dtime == 0.0 { heating } else { NO_HEATING };
+            let none = InterfaceHeat::exchange(None, h, &m).unwrap();
+            assert_eq!(none.flux, [0.0; 2]);
+            assert_eq!(none.ddfddr, [[0.0; 3]; 2]);
+        }
+    }
+
+    /// Constant k: q = k(θ_A − θ_B) out of the slave into the master (seed 000, 5.2.4),
+    /// DDFDDT = −∂FLUX/∂θ = [[k, −k], [−k, k]], no dependence on h.
+    #[test]
+    fn constant_conductance_closed_form() {
+        let k = 2.5;
+        let law = GapLaw::new(Some(Conduction::Constant(k)), None).unwrap();
+        let g = GapConduction {
+            law: &law,
+            theta_slave: 80.0,
+            theta_master: 20.0,
+        };
+        let out = InterfaceHeat::exchange(Some(g), NO_HEATING, &answer(-1e-3, 1e4)).unwrap();
+        assert_eq!(out.flux, [-k * 60.0, k * 60.0]);
+        assert_eq!(out.ddfddt, [k, -k, -k, k]);
+        assert_eq!(out.ddfddr, [[0.0; 3]; 2]);
+    }
+
+    /// ∂FLUX/∂h against central differences of FLUX itself: apart (gas-gap k through the
+    /// clearance −h) and closed (solid-spot k through p = K_n·h).
+    #[test]
+    fn ddfddr_h_matches_central_differences() {
+        let k_n = 1e4;
+        let laws = [
+            (
+                Conduction::GasGap {
+                    k_gas: 0.03,
+                    g0: 1e-5,
+                    min_gap: 1e-6,
+                },
+                -2e-4,
+            ),
+            (
+                Conduction::SolidSpot {
+                    c: 1.25,
+                    k_s: 40.0,
+                    m: 0.1,
+                    sigma: 1e-6,
+                    h_c: 1e9,
+                },
+                3e-3,
+            ),
+        ];
+        for (conduction, h) in laws {
+            let law = GapLaw::new(Some(conduction), None).unwrap();
+            let g = GapConduction {
+                law: &law,
+                theta_slave: 120.0,
+                theta_master: 35.0,
+            };
+            let at = |h: f64| InterfaceHeat::exchange(Some(g), NO_HEATING, &answer(h, k_n));
+            let out = at(h).unwrap();
+            let step = 1e-6 * h.abs();
+            let (up, down) = (at(h + step).unwrap(), at(h - step).unwrap());
+            for i in 0..2 {
+                let fd = (up.flux[i] - down.flux[i]) / (2.0 * step);
+                assert!(fd != 0.0, "the case must depend on h");
+                assert!(
+                    (out.ddfddr[i][0] - fd).abs() <= 1e-6 * fd.abs(),
+                    "{i}: {} against {fd}",
+                    out.ddfddr[i][0]
+                );
+            }
+        }
+    }
+
+    /// A heat flux too large for f64 is refused, not returned as ∞.
+    #[test]
+    fn overflow_is_refused() {
+        let m = MechanicalAnswer::<2> {
+            sfd: 1e300,
+            dtime: 1e-10,
+            ..answer(1e-3, 1e4)
+        };
+        let heating = FrictionalHeating {
+            heat_fraction: 1.0,
+            slave_fraction: 0.5,
+        };
+        let e = InterfaceHeat::exchange(None, heating, &m).unwrap_err();
+        assert!(e.to_string().contains("heat flux overflowed"), "{e}");
     }
 }
