@@ -713,65 +713,6 @@ fn tau_max_between_the_kinetic_and_static_strength() {
     }
 }
 
-/// The earlier formulation (comparison only) with τ_max between μ_k·p and μ_s·p under strong
-/// weakening: its slip equation k̄_s(G − s) = min(A·φ(s/Δt), τ_max) has three roots here
-/// (counted below on a fine grid, independently of the solver); the documented rule takes the
-/// smallest, on the cap (s = G − τ_max/k̄_s, τ = τ_max), wherever the solve starts from.
-#[test]
-fn the_earlier_formulation_takes_the_smallest_of_three_roots() {
-    let (tau_max, d_c, dt, gamma_crit) = (35.0, 2000.0, 0.05, 1e-3);
-    let mu_k = 0.2; // r = 0.4, A = μ_s·p = 50, A·r = 20 < τ_max < A
-    let law = ExtendedCoulomb::new(
-        Coulomb::new(MU_S)
-            .and_then(|c| c.with_shear_limit(tau_max))
-            .and_then(|c| c.with_critical_slip_absolute(gamma_crit))
-            .unwrap(),
-    )
-    .with_coefficient_law(
-        CoefficientLaw::default()
-            .with_exponential_decay(mu_k / MU_S, d_c)
-            .unwrap(),
-    )
-    .with_rate_formulation(RateFormulation::RateFreeStiffness);
-    let g = 1.01e-3;
-    let k = tau_max / gamma_crit;
-    let f = |s: f64| {
-        let phi = mu_k / MU_S + (1.0 - mu_k / MU_S) * (-d_c * s / dt).exp();
-        k * (g - s) - (MU_S * P * phi).min(tau_max)
-    };
-    let grid: Vec<f64> = (0..=100_000).map(|i| g * f64::from(i) / 1e5).collect();
-    let sign_changes = grid.windows(2).filter(|w| f(w[0]) * f(w[1]) < 0.0).count();
-    assert_eq!(sign_changes, 3, "the case must have three roots");
-    for start_rate in [0.0, 1e-4, 5e-3, 1.0] {
-        for general in [false, true] {
-            let law = if general {
-                law.with_general_path()
-            } else {
-                law
-            };
-            let inc = Increment::<1> {
-                tau: [0.0],
-                dgam: [g],
-                pressure: P,
-                dpressure: 0.0,
-                dtime: dt,
-                characteristic_length: 1.0,
-                ..Increment::default()
-            };
-            let mut state = ExtendedState::<1>::default();
-            state.coulomb.slip_rate = start_rate;
-            let up = law.update(&inc, &Conditions::default(), &state).unwrap();
-            let interfacial::laws::coulomb::Contact::Motion(t) = up.contact else {
-                panic!("no exact stick here")
-            };
-            let smallest = g - tau_max / k;
-            assert!((t.dslip[0] - smallest).abs() <= 1e-12 * g, "{t:?}");
-            assert!((t.tau[0] - tau_max).abs() <= 1e-12 * tau_max, "{t:?}");
-            assert!(f(smallest).abs() <= 1e-9 * tau_max);
-        }
-    }
-}
-
 /// docs/uinter.md, the bond's life cycle: a point sliding at the start carries the elastic
 /// slip γ_crit into the bond (S = S_a), so it separates freely; a stuck point (here: after a
 /// stop) carries less and bonds.

@@ -1,12 +1,17 @@
-//! `uinter_`: the Abaqus/Standard UINTER user subroutine, for the adhesive interface
-//! (`PROPS(1) = 2`): normal contact, separation adhesion, friction and heat exchange.
+//! `uinter_`: the Abaqus/Standard UINTER user subroutine. A thin shell: one argument view
+//! (`UinterArgs`), a dispatch on the law code `PROPS(1)` with one arm per UINTER law (today the
+//! adhesive interface, `PROPS(1) = 2`: normal contact, separation adhesion, friction and heat
+//! exchange), one reader of the increment, one writer of the outputs, one panic boundary. The
+//! physics, the heat exchange included, is in the laws (docs/architecture.md, "The `uinter_`
+//! shell").
 
 use std::ffi::{c_char, c_int};
 
 use super::{boundary, fortran_string, read, read_array, slice, write, write_zeros};
 use crate::config;
-use crate::laws::adhesive_interface::{InterfaceIncrement, InterfaceResponse, InterfaceState};
-use crate::props::{AdhesiveProps, HeatExchange, LAW_ADHESIVE, adhesive_props};
+use crate::laws::adhesive_interface::{InterfaceIncrement, InterfaceState};
+use crate::laws::interface_heat::{FrictionalHeating, GapConduction, InterfaceHeat};
+use crate::props::{AdhesiveProps, LAW_ADHESIVE, adhesive_props};
 use crate::report::Site;
 use crate::{CUTBACK_RATIO, LawError};
 
@@ -167,12 +172,33 @@ struct UinterArgs {
     lstate: *mut c_int,
 }
 
-/// The heat flux of one point: `FLUX(2)`, `DDFDDT(2,2)` (column-major), `DDFDDR(2,NDIR)` as
-/// `[∂/∂h, ∂/∂Δγ…]` per row.
-struct Heat {
-    flux: [f64; 2],
-    ddfddt: [f64; 4],
-    ddfddr: [[f64; 3]; 2],
+/// What every UINTER law answers for one point with N = NDIR − 1 tangential directions: the
+/// one writer ([`UinterArgs::write_answer`]) puts it where the host expects it.
+struct UinterAnswer<'a, const N: usize> {
+    /// `STRESS(1)`, the normal stress (positive in compression).
+    normal_stress: f64,
+    /// `STRESS(2..NDIR)`.
+    shear: [f64; N],
+    /// `DDSDDR(1,1)` = ∂p/∂h.
+    dp_dh: f64,
+    /// `DDSDDR(1,1+b)` = ∂p/∂Δγ_b.
+    dp_dgam: [f64; N],
+    /// `DDSDDR(1+a,1)` = ∂τ_a/∂h.
+    dtau_dh: [f64; N],
+    /// `DDSDDR(1+a,1+b)` = ∂τ_a/∂Δγ_b.
+    dtau_dgam: [[f64; N]; N],
+    /// `FLUX`, `DDFDDT`, `DDFDDR`.
+    heat: InterfaceHeat,
+    /// `STATEV(1..len)` at the end, in the law's layout.
+    statev: &'a [f64],
+    /// `SED`, `SFD`, `SPD`.
+    sed: f64,
+    sfd: f64,
+    spd: f64,
+    /// `LOPENCLOSE`.
+    closed: bool,
+    /// `LSTATE`.
+    lstate: c_int,
 }
 
 impl UinterArgs {
@@ -186,39 +212,97 @@ impl UinterArgs {
                 )));
             };
             let props = slice(self.props, nprops, "PROPS")?;
-            if props.first() != Some(&f64::from(LAW_ADHESIVE)) {
-                return Err(not_adhesive(props.first().copied()));
+            // One arm per UINTER law, on the law code PROPS(1): a new law is one arm here
+            // and its `*_point` function below (docs/architecture.md, "add a law").
+            match props.first().copied() {
+                Some(code) if code == f64::from(LAW_ADHESIVE) => self.adhesive(props),
+                code => Err(not_uinter_law(code)),
             }
-            let props = adhesive_props(props)?;
-            let nstatv = read(self.nstatv, "NSTATV")?;
-            let nstatv = match usize::try_from(nstatv) {
-                Ok(n) if n >= InterfaceState::NSTATV => n,
-                _ => {
-                    return Err(LawError::Parameter(format!(
-                        "NSTATV = {nstatv} but the adhesive interface needs {} state variables \
-                         (*DEPVAR / the NSTATV of *SURFACE INTERACTION, USER)",
-                        InterfaceState::NSTATV
-                    )));
-                }
-            };
+        }
+    }
+
+    /// `NSTATV`, which must be at least `needed` (the law's state variables).
+    unsafe fn nstatv(&self, needed: usize, law: &str) -> Result<usize, LawError> {
+        // SAFETY: NSTATV readable per the contract (NULL refused by name).
+        let nstatv = unsafe { read(self.nstatv, "NSTATV")? };
+        match usize::try_from(nstatv) {
+            Ok(n) if n >= needed => Ok(n),
+            _ => Err(LawError::Parameter(format!(
+                "NSTATV = {nstatv} but {law} needs {needed} state variables \
+                 (*DEPVAR / the NSTATV of *SURFACE INTERACTION, USER)"
+            ))),
+        }
+    }
+
+    /// `PROPS(1) = 2`: the adhesive interface, 3 state variables.
+    unsafe fn adhesive(&self, props: &[f64]) -> Result<(), LawError> {
+        let props = adhesive_props(props)?;
+        // SAFETY (whole body): pointers valid per the UINTER contract.
+        unsafe {
+            let nstatv = self.nstatv(InterfaceState::NSTATV, "the adhesive interface")?;
             match read(self.ndir, "NDIR")? {
-                2 => self.point::<1>(&props, nstatv),
-                3 => self.point::<2>(&props, nstatv),
+                2 => self.adhesive_point::<1>(&props, nstatv),
+                3 => self.adhesive_point::<2>(&props, nstatv),
                 other => Err(bad_ndir(other)),
             }
         }
     }
 
-    /// One point with N = NDIR − 1 tangential directions; everything is computed before the
-    /// first output is written.
-    unsafe fn point<const N: usize>(
+    /// One point of the adhesive interface; everything is computed before the first output
+    /// is written.
+    unsafe fn adhesive_point<const N: usize>(
         &self,
         props: &AdhesiveProps,
         nstatv: usize,
     ) -> Result<(), LawError> {
-        // SAFETY (whole body): arrays of NDIR, NDIR², 2, 4, 2·NDIR and NSTATV entries.
+        let interface = props.interface()?;
+        // SAFETY (whole body): pointers valid per the UINTER contract, NDIR = N + 1.
         unsafe {
-            let interface = props.interface()?;
+            let (inc, statev) = self.increment::<N>(nstatv)?;
+            let state = InterfaceState::from_statev(statev)?;
+            let r = interface.update(&inc, &state)?;
+            let conduction = if props.heat.conductance {
+                Some(self.conduction()?)
+            } else {
+                None
+            };
+            let heating = FrictionalHeating {
+                heat_fraction: props.heat.heat_fraction,
+                slave_fraction: props.heat.slave_fraction,
+            };
+            let heat = InterfaceHeat::exchange(conduction, heating, &r.mechanical_answer(&inc))?;
+            let mut end_state = [0.0; InterfaceState::NSTATV];
+            r.state.write_statev(&mut end_state);
+            // ∂τ_a/∂h = ∂τ_a/∂p · ∂p/∂h.
+            let dtau_dh = r.shear.ddtddp.map(|d| d * r.dp_dh);
+            self.write_answer(&UinterAnswer::<N> {
+                normal_stress: r.normal_stress,
+                shear: r.shear.tau,
+                dp_dh: r.dp_dh,
+                dp_dgam: [0.0; N],
+                dtau_dh,
+                dtau_dgam: r.shear.ddtddg,
+                heat,
+                statev: &end_state,
+                sed: r.sed,
+                sfd: r.shear.sfd,
+                spd: r.spd,
+                closed: r.closed,
+                lstate: r.state.status as c_int,
+            });
+            Ok(())
+        }
+    }
+
+    /// The one reader of the increment, for every UINTER law: `STRESS`, `RDISP`, `DRDISP`
+    /// (NDIR = N + 1 entries each), `DTIME`, `CHRLNGTH`, then `STATEV(NSTATV)`, in this
+    /// order (the first bad one is the message).
+    unsafe fn increment<'a, const N: usize>(
+        &self,
+        nstatv: usize,
+    ) -> Result<(InterfaceIncrement<N>, &'a [f64]), LawError> {
+        // SAFETY (whole body): arrays of NDIR and NSTATV entries per the contract.
+        unsafe {
             let ndir = N + 1;
             let stress_in = slice(self.stress, ndir, "STRESS")?;
             let rdisp = slice(self.rdisp, ndir, "RDISP")?;
@@ -235,27 +319,51 @@ impl UinterArgs {
                 dtime: read(self.dtime, "DTIME")?,
                 characteristic_length: read(self.chrlngth, "CHRLNGTH")?,
             };
-            let state = InterfaceState::from_statev(slice(self.statev, nstatv, "STATEV")?)?;
-            let r = interface.update(&inc, &state)?;
-            let heat = self.heat(&props.heat, &inc, &r)?;
+            Ok((inc, slice(self.statev, nstatv, "STATEV")?))
+        }
+    }
 
-            let mut end_state = [0.0; InterfaceState::NSTATV];
-            r.state.write_statev(&mut end_state);
-            for (i, v) in end_state.iter().enumerate() {
+    /// The thermal inputs of gap conduction: the interaction's GAPCON law from
+    /// `INTERFACIAL_CONFIG` (keyed by `CINAME`), then `TEMP(2)`.
+    unsafe fn conduction(&self) -> Result<GapConduction<'static>, LawError> {
+        // SAFETY: CINAME of its hidden length, TEMP(2) readable per the contract.
+        unsafe {
+            let name = if self.ciname.is_null() || self.ciname_len == 0 {
+                &[][..]
+            } else {
+                std::slice::from_raw_parts(self.ciname.cast::<u8>(), self.ciname_len)
+            };
+            let law = config::gap_law_for(name)?;
+            let [theta_slave, theta_master] = read_array::<2>(self.temp, "TEMP")?;
+            Ok(GapConduction {
+                law,
+                theta_slave,
+                theta_master,
+            })
+        }
+    }
+
+    /// The one writer of a successful answer: every output UINTER defines (optional ones
+    /// only when not NULL); `DVISCOUS`, `DSTRUCTURAL`, `DDSDDT`, `SVD`, `SCD` zero.
+    unsafe fn write_answer<const N: usize>(&self, a: &UinterAnswer<'_, N>) {
+        // SAFETY (whole body): arrays of NDIR, NDIR², 2, 4, 2·NDIR and NSTATV entries.
+        unsafe {
+            let ndir = N + 1;
+            for (i, v) in a.statev.iter().enumerate() {
                 self.statev.add(i).write(*v);
             }
-            self.stress.write(r.normal_stress);
-            for a in 0..N {
-                self.stress.add(1 + a).write(r.shear.tau[a]);
+            self.stress.write(a.normal_stress);
+            for i in 0..N {
+                self.stress.add(1 + i).write(a.shear[i]);
             }
             if !self.ddsddr.is_null() {
                 let at = |i: usize, j: usize| self.ddsddr.add(i + j * ndir);
-                at(0, 0).write(r.dp_dh);
-                for a in 0..N {
-                    at(0, 1 + a).write(0.0);
-                    at(1 + a, 0).write(r.shear.ddtddp[a] * r.dp_dh);
-                    for b in 0..N {
-                        at(1 + a, 1 + b).write(r.shear.ddtddg[a][b]);
+                at(0, 0).write(a.dp_dh);
+                for i in 0..N {
+                    at(0, 1 + i).write(a.dp_dgam[i]);
+                    at(1 + i, 0).write(a.dtau_dh[i]);
+                    for j in 0..N {
+                        at(1 + i, 1 + j).write(a.dtau_dgam[i][j]);
                     }
                 }
             }
@@ -263,98 +371,28 @@ impl UinterArgs {
             write_zeros(self.dstructural, ndir * ndir);
             write_zeros(self.ddsddt, 2 * ndir);
             if !self.flux.is_null() {
-                self.flux.write(heat.flux[0]);
-                self.flux.add(1).write(heat.flux[1]);
+                self.flux.write(a.heat.flux[0]);
+                self.flux.add(1).write(a.heat.flux[1]);
             }
             if !self.ddfddt.is_null() {
-                for (k, v) in heat.ddfddt.iter().enumerate() {
+                for (k, v) in a.heat.ddfddt.iter().enumerate() {
                     self.ddfddt.add(k).write(*v);
                 }
             }
             if !self.ddfddr.is_null() {
                 for i in 0..2 {
                     for j in 0..ndir {
-                        self.ddfddr.add(i + 2 * j).write(heat.ddfddr[i][j]);
+                        self.ddfddr.add(i + 2 * j).write(a.heat.ddfddr[i][j]);
                     }
                 }
             }
-            write(self.sed, r.sed);
-            write(self.sfd, r.shear.sfd);
-            write(self.spd, r.spd);
+            write(self.sed, a.sed);
+            write(self.sfd, a.sfd);
+            write(self.spd, a.spd);
             write(self.svd, 0.0);
             write(self.scd, 0.0);
-            write(self.lopenclose, c_int::from(r.closed));
-            write(self.lstate, r.state.status as c_int);
-            Ok(())
-        }
-    }
-
-    /// Conduction k(θ_slave − θ_master) from the interaction's thermal law (the GAPCON laws of
-    /// `INTERFACIAL_CONFIG`, clearance max(−h, 0) and pressure max(p, 0)), plus the frictional
-    /// heat η·SFD/Δt, a part f into the slave and 1 − f into the master.
-    unsafe fn heat<const N: usize>(
-        &self,
-        h: &HeatExchange,
-        inc: &InterfaceIncrement<N>,
-        r: &InterfaceResponse<N>,
-    ) -> Result<Heat, LawError> {
-        let mut out = Heat {
-            flux: [0.0; 2],
-            ddfddt: [0.0; 4],
-            ddfddr: [[0.0; 3]; 2],
-        };
-        if h.conductance {
-            // SAFETY: CINAME of its hidden length, TEMP(2) readable per the contract.
-            let (law, [theta_s, theta_m]) = unsafe {
-                let name = if self.ciname.is_null() || self.ciname_len == 0 {
-                    &[][..]
-                } else {
-                    std::slice::from_raw_parts(self.ciname.cast::<u8>(), self.ciname_len)
-                };
-                (
-                    config::gap_law_for(name)?,
-                    read_array::<2>(self.temp, "TEMP")?,
-                )
-            };
-            let clearance = (-inc.overclosure).max(0.0);
-            let pressure = r.normal_stress.max(0.0);
-            let c = law.evaluate(clearance, pressure, theta_s, theta_m)?;
-            // q = k(θ_s − θ_m) leaves the slave and enters the master.
-            let q = c.k * (theta_s - theta_m);
-            out.flux = [-q, q];
-            // DDFDDT(i,j) = −∂FLUX(i)/∂θ_j, column-major.
-            out.ddfddt = [c.dq_dtheta_a, -c.dq_dtheta_a, c.dq_dtheta_b, -c.dq_dtheta_b];
-            let dk_dh = if inc.overclosure < 0.0 {
-                -c.dk_dd
-            } else if r.normal_stress > 0.0 {
-                c.dk_dp * r.dp_dh
-            } else {
-                0.0
-            };
-            out.ddfddr[0][0] = -dk_dh * (theta_s - theta_m);
-            out.ddfddr[1][0] = dk_dh * (theta_s - theta_m);
-        }
-        if h.heat_fraction > 0.0 && inc.dtime > 0.0 {
-            let eta = h.heat_fraction / inc.dtime;
-            let f = h.slave_fraction;
-            out.flux[0] += f * eta * r.shear.sfd;
-            out.flux[1] += (1.0 - f) * eta * r.shear.sfd;
-            for (i, part) in [f, 1.0 - f].into_iter().enumerate() {
-                out.ddfddr[i][0] += part * eta * r.dsfd_dh;
-                for b in 0..N {
-                    out.ddfddr[i][1 + b] += part * eta * r.dsfd_dgam[b];
-                }
-            }
-        }
-        let finite = out.flux.iter().all(|v| v.is_finite())
-            && out.ddfddt.iter().all(|v| v.is_finite())
-            && out.ddfddr.iter().flatten().all(|v| v.is_finite());
-        if finite {
-            Ok(out)
-        } else {
-            Err(LawError::Numerical(
-                "the heat flux overflowed (inputs too large for f64)".into(),
-            ))
+            write(self.lopenclose, c_int::from(a.closed));
+            write(self.lstate, a.lstate);
         }
     }
 
@@ -385,7 +423,7 @@ impl UinterArgs {
 
 #[cold]
 #[inline(never)]
-fn not_adhesive(code: Option<f64>) -> LawError {
+fn not_uinter_law(code: Option<f64>) -> LawError {
     let code = code.map_or("absent (NPROPS = 0)".to_string(), |c| c.to_string());
     LawError::Parameter(format!(
         "PROPS(1) = {code}: UINTER needs PROPS(1) = 2 (the adhesive interface law); the other \

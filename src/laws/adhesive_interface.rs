@@ -24,6 +24,7 @@
 use super::adhesive::{Adhesive, SlideBranch};
 use super::coulomb::Traction;
 use super::friction_coefficient::RateFormulation;
+use super::interface_heat::MechanicalAnswer;
 use super::small_vec::{add, all_finite, norm, scale};
 use crate::LawError;
 
@@ -135,6 +136,23 @@ pub struct InterfaceResponse<const N: usize> {
     /// the point was bonded or closed at the start, the surfaces are apart and the separation
     /// criterion fails. An output only: it enters no tangent.
     pub spd: f64,
+}
+
+impl<const N: usize> InterfaceResponse<N> {
+    /// What the interface's heat exchange ([`super::interface_heat::InterfaceHeat`]) needs
+    /// from this answer to the increment `inc`.
+    #[must_use]
+    pub fn mechanical_answer(&self, inc: &InterfaceIncrement<N>) -> MechanicalAnswer<N> {
+        MechanicalAnswer {
+            overclosure: inc.overclosure,
+            normal_stress: self.normal_stress,
+            dp_dh: self.dp_dh,
+            sfd: self.shear.sfd,
+            dsfd_dh: self.dsfd_dh,
+            dsfd_dgam: self.dsfd_dgam,
+            dtime: inc.dtime,
+        }
+    }
 }
 
 /// The adhesive law with a penalty normal stiffness K_n.

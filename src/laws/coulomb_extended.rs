@@ -40,6 +40,8 @@ use crate::{LawError, Outcome};
 
 mod damping;
 mod decay;
+#[cfg(test)]
+mod general_path_tests;
 mod steady_transport;
 
 pub use damping::Damping;
@@ -100,7 +102,8 @@ pub struct ExtendedCoulomb {
     hht: Option<Hht>,
     damping: Option<Damping>,
     transport: Option<SteadyTransport>,
-    /// Test hook: take the general path (scaling, local solve) even where a cheaper one is exact.
+    /// Unit-test hook (`ExtendedCoulomb::with_general_path`): the general path (scaling,
+    /// local solve) even where a cheaper one is exact; always false outside this crate's tests.
     general: bool,
     /// How a rate-dependent μ enters the return map (the earlier one only for comparisons).
     formulation: RateFormulation,
@@ -355,10 +358,13 @@ impl ExtendedCoulomb {
         self.formulation
     }
 
-    /// Takes the general path (scaling even when isotropic, the local solve even when μ is
-    /// constant) — for the tests that show the cheap paths agree with it.
+    /// Unit tests only: takes the general path (scaling even when isotropic, the local solve
+    /// even when μ is constant), so a test compares the cheap paths with it on the same law
+    /// (`coulomb_extended/general_path_tests.rs`); like `props::force_careful_path`, it does not
+    /// exist outside `cargo test` of this crate.
+    #[cfg(test)]
     #[must_use]
-    pub fn with_general_path(mut self) -> Self {
+    pub(crate) fn with_general_path(mut self) -> Self {
         self.general = true;
         self
     }

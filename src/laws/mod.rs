@@ -10,6 +10,7 @@ pub mod friction_coefficient;
 pub mod friction_table;
 pub mod gap_conductance;
 pub mod gap_radiation;
+pub mod interface_heat;
 pub mod pore_pressure;
 pub mod scalar_root;
 mod small_vec;
