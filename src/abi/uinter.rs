@@ -7,7 +7,9 @@
 
 use std::ffi::{c_char, c_int};
 
-use super::{boundary, fortran_string, read, read_array, slice, write, write_zeros};
+use super::{
+    boundary, fortran_name_bytes, fortran_string, read, read_array, slice, write, write_zeros,
+};
 use crate::config;
 use crate::laws::adhesive_interface::{InterfaceIncrement, InterfaceState};
 use crate::laws::interface_heat::{FrictionalHeating, GapConduction, InterfaceHeat};
@@ -328,11 +330,8 @@ impl UinterArgs {
     unsafe fn conduction(&self) -> Result<GapConduction<'static>, LawError> {
         // SAFETY: CINAME of its hidden length, TEMP(2) readable per the contract.
         unsafe {
-            let name = if self.ciname.is_null() || self.ciname_len == 0 {
-                &[][..]
-            } else {
-                std::slice::from_raw_parts(self.ciname.cast::<u8>(), self.ciname_len)
-            };
+            // A NULL name or an implausible hidden length (an address) reads as no name.
+            let name = fortran_name_bytes(self.ciname, self.ciname_len);
             let law = config::gap_law_for(name)?;
             let [theta_slave, theta_master] = read_array::<2>(self.temp, "TEMP")?;
             Ok(GapConduction {
