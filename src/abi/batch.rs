@@ -19,7 +19,7 @@
 
 use std::ffi::c_int;
 
-use super::{Fault, IflStatus, boundary};
+use super::{Fault, IflStatus, boundary, cut_back};
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
 use crate::laws::coulomb_batch::{ChunkInput, ElasticStickKernel};
 use crate::props::{FrictionLaw, friction_law};
@@ -791,17 +791,8 @@ pub unsafe extern "C" fn ifl_fric_batch(
                 }
             }
         },
-        || {
-            if !pnewdt.is_null() {
-                // SAFETY: writable per the contract.
-                unsafe {
-                    let current = pnewdt.read();
-                    if current.is_nan() || current > CUTBACK_RATIO {
-                        pnewdt.write(CUTBACK_RATIO);
-                    }
-                }
-            }
-        },
+        // SAFETY: NULL or writable per the contract.
+        || unsafe { cut_back(pnewdt) },
     );
     whole.and(point_fault).into()
 }

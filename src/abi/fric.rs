@@ -6,9 +6,10 @@ use std::ffi::{c_char, c_int};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::{
-    boundary, fortran_name_bytes, fortran_string, null_pointer, read, read_array, slice, write,
-    write_array, write_matrix, write_zeros,
+    boundary, cut_back, fortran_name_bytes, fortran_string, null_pointer, read, read_array, slice,
+    write, write_array, write_matrix, write_zeros,
 };
+use crate::LawError;
 use crate::config::friction_table_for;
 use crate::laws::adhesive::Adhesive;
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment, StickMode};
@@ -20,7 +21,6 @@ use crate::props::{
     friction_law,
 };
 use crate::report::Site;
-use crate::{CUTBACK_RATIO, LawError};
 
 mod rate;
 
@@ -714,12 +714,7 @@ impl FricArgs {
     unsafe fn fail(&self) {
         // SAFETY: as in `run`; arrays are written only when NFDIR is known to be 1 or 2.
         unsafe {
-            if !self.pnewdt.is_null() {
-                let current = self.pnewdt.read();
-                if current.is_nan() || current > CUTBACK_RATIO {
-                    self.pnewdt.write(CUTBACK_RATIO);
-                }
-            }
+            cut_back(self.pnewdt);
             write(self.sfd, 0.0);
             let n = match read(self.nfdir, "NFDIR") {
                 Ok(1) => 1,

@@ -209,6 +209,24 @@ pub(crate) unsafe fn write<T>(p: *mut T, v: T) {
     }
 }
 
+/// A failed call's `PNEWDT`: lowered to [`crate::CUTBACK_RATIO`] (a NaN is replaced), never
+/// raised; NULL is left alone.
+///
+/// # Safety
+/// `pnewdt` is NULL or a valid, writable double.
+pub(crate) unsafe fn cut_back(pnewdt: *mut f64) {
+    if pnewdt.is_null() {
+        return;
+    }
+    // SAFETY: non-NULL and valid by the caller's contract.
+    unsafe {
+        let current = pnewdt.read();
+        if current.is_nan() || current > crate::CUTBACK_RATIO {
+            pnewdt.write(crate::CUTBACK_RATIO);
+        }
+    }
+}
+
 /// The largest hidden length taken as a name length. Abaqus names have at most 80 characters,
 /// and on Linux no object lives below `vm.mmap_min_addr` (65536 by default), so a larger
 /// "length" is an address that landed in the hidden-length slot: a caller with a different

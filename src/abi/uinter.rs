@@ -8,14 +8,15 @@
 use std::ffi::{c_char, c_int};
 
 use super::{
-    boundary, fortran_name_bytes, fortran_string, read, read_array, slice, write, write_zeros,
+    boundary, cut_back, fortran_name_bytes, fortran_string, read, read_array, slice, write,
+    write_zeros,
 };
+use crate::LawError;
 use crate::config;
 use crate::laws::adhesive_interface::{InterfaceIncrement, InterfaceState};
 use crate::laws::interface_heat::{FrictionalHeating, GapConduction, InterfaceHeat};
 use crate::props::{AdhesiveProps, LAW_ADHESIVE, adhesive_props};
 use crate::report::Site;
-use crate::{CUTBACK_RATIO, LawError};
 
 /// Abaqus/Standard `UINTER`: the full constitutive behaviour of one interface point, callable
 /// from Fortran as `CALL UINTER(...)` with no interface block (47 arguments by reference, then
@@ -399,12 +400,7 @@ impl UinterArgs {
     unsafe fn fail(&self) {
         // SAFETY: as in `run`; arrays are written only when NDIR is known to be 2 or 3.
         unsafe {
-            if !self.pnewdt.is_null() {
-                let current = self.pnewdt.read();
-                if current.is_nan() || current > CUTBACK_RATIO {
-                    self.pnewdt.write(CUTBACK_RATIO);
-                }
-            }
+            cut_back(self.pnewdt);
             write(self.sfd, 0.0);
             write(self.spd, 0.0);
             if let Ok(ndir @ (2 | 3)) = read(self.ndir, "NDIR") {
