@@ -587,10 +587,17 @@ pub fn work_precision_full(
         let mk = twin_marker(i);
         legend.push((Swatch::Line(color, mk, false), (*m).to_string()));
         if let Some(j) = twin {
-            notes.push(format!(
-                "'{m}' coincides with '{}' (every error within 5 % at the same step): drawn as rings, no line.",
-                methods[j]
-            ));
+            notes.push(if timed {
+                format!(
+                    "'{m}' has the errors of '{}' (every error within 5 % at the same step; its times differ): drawn as rings on a thin line.",
+                    methods[j]
+                )
+            } else {
+                format!(
+                    "'{m}' coincides with '{}' (every error within 5 % at the same step): drawn as rings, no line.",
+                    methods[j]
+                )
+            });
         }
     }
     if usable.iter().any(|p| p.claim.is_finite()) {
@@ -684,6 +691,11 @@ pub fn work_precision_full(
             if !twin {
                 chart
                     .draw_series(LineSeries::new(series.clone(), color.stroke_width(2)))
+                    .map_err(err)?;
+            } else if timed {
+                // Same errors, other times: a thin line so the curve can be followed.
+                chart
+                    .draw_series(LineSeries::new(series.clone(), color.stroke_width(1)))
                     .map_err(err)?;
             }
             draw_markers(chart, twin_marker(i), &series, color)?;

@@ -489,7 +489,7 @@ fn study(
     for &r in refines {
         for join in [Join::Interface, Join::Shared] {
             let label = format!(
-                "element sweep, Δt {:e}, {}",
+                "element sweep, Δt {:e} s, {}",
                 s.refine_sweep_dt,
                 if join == Join::Interface {
                     "interface kernel"
@@ -675,10 +675,10 @@ fn study(
     let path = out.join(format!("{id}-work-precision.csv"));
     std::fs::write(&path, csv).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     outputs.push(path);
-    let label = "error max(|u − u_series|/q₀, |U − U_series|) (relative)";
+    let label = "error max(|u − u_series|/q₀, |U − U_series|) (–)";
     let units = "Units: the scene file's consistent units (p1.toml: m, kPa, s; c_v in m²/s).";
     let error_note = format!(
-        "Error: the larger of the pore-pressure error over q₀ and the error in the degree of consolidation U, at the file's depths and output times (earliest t = {:e} s), against the series solution.",
+        "Error: the larger of the pore-pressure error over q₀ and the error in the degree of consolidation U, at the file's depths and output times (earliest t = {} s), against the series solution.",
         c.times.iter().copied().fold(f64::INFINITY, f64::min)
     );
     let machine = crate::machine();
@@ -718,13 +718,16 @@ fn study(
         ),
         (
             "stability",
-            "c·Δt/Δz² of the layer (dimensionless; one step after the load)",
-            "max p/q₀ − 1 in the layer (relative; 0 drawn at 1e-16)",
+            "c·Δt/Δz² of the layer (–; one step after the load)",
+            "max p/q₀ − 1 in the layer (–; 0 drawn at 1e-16)",
             &stability_points,
             crate::charts::Cost::Other(&|p| p.step),
             crate::charts::Extras {
                 notes: vec![
                     "One backward-Euler step after the step load q₀ on the file's mesh; a pressure above q₀ is the node-to-node oscillation of equal-order u–p elements.".into(),
+                    format!(
+                        "The check rows count a layer as oscillating when max p/q₀ − 1 > {OSCILLATION:e}; the last oscillating and first monotone ratio bracket 1/4."
+                    ),
                     format!(
                         "At the same Δt layer 2's ratio is {:.3} times layer 1's (c_v and Δz of each layer).",
                         (cv[1] / (dz[1] * dz[1])) / (cv[0] / (dz[0] * dz[0]))
@@ -741,7 +744,16 @@ fn study(
         let svg = out.join(format!("{id}-{name}.svg"));
         if let Err(e) = crate::charts::work_precision_full(
             &svg,
-            &format!("{}: {}", f.title, name.replace('-', " ")),
+            &format!(
+                "{}: {}",
+                f.title,
+                match name {
+                    "error-vs-dt" => "error against the time increment Δt",
+                    "error-vs-elements" => "error against the element count",
+                    "error-vs-time" => "error against wall time",
+                    _ => "first-step overshoot against c·Δt/Δz²",
+                }
+            ),
             x_label,
             y_label,
             points,

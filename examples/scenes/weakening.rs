@@ -237,7 +237,7 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
         .map(|(i, (x, f, _))| {
             (
                 Swatch::Line(colors[i % colors.len()], Marker::Dot, false),
-                format!("{}, d_c·v = {x}", f.name()),
+                format!("d_c·v = {x}: {}", f.name()),
             )
         })
         .collect();
@@ -262,11 +262,11 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
         title: "F7: error of the mean friction against the increment r",
         x: Axis {
             range: (0.008, 1.25),
-            title: "increment r = Δγ/γ_crit (dimensionless)".into(),
+            title: "increment r = Δγ/γ_crit (–)".into(),
         },
         y: Axis {
             range: (1e-17, 10.0),
-            title: "|mean τ − μ(v)p| / μ(v)p (relative)".into(),
+            title: "|mean τ − μ(v)p| / μ(v)p (–)".into(),
         },
         top: None,
         legend,
@@ -430,11 +430,11 @@ fn map_chart(
         title: &format!("F7: steady sliding under weakening, {}", f.name()),
         x: Axis {
             range: (x0, x1),
-            title: "increment r = Δγ/γ_crit (dimensionless)".into(),
+            title: "increment r = Δγ/γ_crit (–)".into(),
         },
         y: Axis {
             range: (y0, y1),
-            title: "x = d_c·v (dimensionless)".into(),
+            title: "x = d_c·v (–)".into(),
         },
         top: None,
         legend,
