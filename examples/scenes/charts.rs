@@ -609,11 +609,13 @@ pub fn work_precision_full(
     for (_, text) in &extras.verticals {
         legend.push((Swatch::Line(BLACK, Marker::None, true), text.clone()));
     }
-    if !failed.is_empty() {
+    if failed.iter().any(|p| p.error.is_finite()) {
         legend.push((
             Swatch::Mark(RGBColor(60, 60, 60), Marker::Cross),
             "run not ok, error measurable (verdict in the CSV)".into(),
         ));
+    }
+    if failed.iter().any(|p| !p.error.is_finite()) {
         legend.push((
             Swatch::Mark(RGBColor(60, 60, 60), Marker::Triangle),
             "on the top edge: no error to show (diverged, Newton failed, cut-back)".into(),
