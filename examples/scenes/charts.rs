@@ -369,15 +369,12 @@ fn draw_legend(side: &Area<'_>, legend: &[(Swatch, String)]) -> Result<(), Strin
             Swatch::Mark(c, m) => draw_pixel_marker(side, *m, ((x0 + x1) / 2, ym), *c)?,
         }
         for (i, line) in wrap(text, 36).iter().enumerate() {
-            side.draw(&Text::new(
-                line.clone(),
-                (x1 + 8, y + LINE * i as i32),
-                font.clone(),
-            ))
-            .map_err(err)?;
+            // Each further line one line below the last (y carries the entry's height).
             if i > 0 {
                 y += LINE;
             }
+            side.draw(&Text::new(line.clone(), (x1 + 8, y), font.clone()))
+                .map_err(err)?;
         }
         y += LINE + 6;
     }
