@@ -260,10 +260,85 @@ pub fn frame(
         ))
         .map_err(err)?;
     }
-    // The legend, right of the plot.
+    draw_legend(&side, &f.legend)?;
+    draw_notes(&notes, &note_lines)?;
+    root.present().map_err(err)
+}
+
+/// A chart with linear axes (a time trace): the same title, legend panel and notes as [`frame`].
+pub struct LinearFrame<'a> {
+    /// Caption.
+    pub title: &'a str,
+    /// x range and title with the unit.
+    pub x: ((f64, f64), String),
+    /// y range and title with the unit.
+    pub y: ((f64, f64), String),
+    /// Legend panel entries.
+    pub legend: Vec<(Swatch, String)>,
+    /// Notes under the plot, one line each.
+    pub notes: Vec<String>,
+    /// Pixel size of the plot.
+    pub size: (u32, u32),
+}
+
+/// The plotting context of a [`LinearFrame`].
+pub type LinearChart<'a, 'b> = ChartContext<
+    'a,
+    SVGBackend<'b>,
+    Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+>;
+
+/// Draws a [`LinearFrame`] and calls `body` to draw the data.
+pub fn frame_linear(
+    path: &Path,
+    f: &LinearFrame,
+    body: impl FnOnce(&mut LinearChart<'_, '_>) -> Result<(), String>,
+) -> Result<(), String> {
+    const LEGEND_W: u32 = 300;
+    let note_lines: Vec<String> = f.notes.iter().flat_map(|n| wrap(n, 120)).collect();
+    let notes_h = 10 + 15 * note_lines.len() as u32;
+    let root = SVGBackend::new(path, (f.size.0 + LEGEND_W, f.size.1 + notes_h)).into_drawing_area();
+    root.fill(&WHITE).map_err(err)?;
+    let (upper, notes) = root.split_vertically(f.size.1);
+    let (plot, side) = upper.split_horizontally(f.size.0);
+    let w = 9 * f.title.chars().count() as i32;
+    root.draw(&Text::new(
+        f.title.to_string(),
+        ((f.size.0 as i32 / 2 - w / 2).max(4), 10),
+        ("sans-serif", 18).into_font(),
+    ))
+    .map_err(err)?;
+    let mut chart = ChartBuilder::on(&plot)
+        .margin(12)
+        .margin_top(40)
+        .x_label_area_size(48)
+        .y_label_area_size(78)
+        .build_cartesian_2d(f.x.0.0..f.x.0.1, f.y.0.0..f.y.0.1)
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc(f.x.1.as_str())
+        .y_desc(f.y.1.as_str())
+        .light_line_style(RGBColor(235, 235, 235))
+        .bold_line_style(RGBColor(200, 200, 200))
+        .label_style(("sans-serif", 13))
+        .axis_desc_style(("sans-serif", 14))
+        .draw()
+        .map_err(err)?;
+    body(&mut chart)?;
+    draw_legend(&side, &f.legend)?;
+    draw_notes(&notes, &note_lines)?;
+    root.present().map_err(err)
+}
+
+type Area<'b> = DrawingArea<SVGBackend<'b>, plotters::coord::Shift>;
+
+/// The legend panel right of the plot.
+fn draw_legend(side: &Area<'_>, legend: &[(Swatch, String)]) -> Result<(), String> {
+    const LINE: i32 = 15;
     let font = ("sans-serif", 12).into_font();
     let mut y = 40;
-    for (swatch, text) in &f.legend {
+    for (swatch, text) in legend {
         let (x0, x1, ym) = (8, 34, y + 6);
         match swatch {
             Swatch::Line(c, m, dashed) => {
@@ -285,28 +360,31 @@ pub fn frame(
                     ))
                     .map_err(err)?;
                 }
-                draw_pixel_marker(&side, *m, ((x0 + x1) / 2, ym), *c)?;
+                draw_pixel_marker(side, *m, ((x0 + x1) / 2, ym), *c)?;
             }
             Swatch::Box(c) => {
                 side.draw(&Rectangle::new([(x0, ym - 6), (x1, ym + 6)], c.filled()))
                     .map_err(err)?;
             }
-            Swatch::Mark(c, m) => draw_pixel_marker(&side, *m, ((x0 + x1) / 2, ym), *c)?,
+            Swatch::Mark(c, m) => draw_pixel_marker(side, *m, ((x0 + x1) / 2, ym), *c)?,
         }
         for (i, line) in wrap(text, 36).iter().enumerate() {
-            side.draw(&Text::new(
-                line.clone(),
-                (x1 + 8, y + LINE * i as i32),
-                font.clone(),
-            ))
-            .map_err(err)?;
+            // Each further line one line below the last (y carries the entry's height).
             if i > 0 {
                 y += LINE;
             }
+            side.draw(&Text::new(line.clone(), (x1 + 8, y), font.clone()))
+                .map_err(err)?;
         }
         y += LINE + 6;
     }
-    for (i, line) in note_lines.iter().enumerate() {
+    Ok(())
+}
+
+/// Notes under the plot, one wrapped line each.
+fn draw_notes(notes: &Area<'_>, lines: &[String]) -> Result<(), String> {
+    const LINE: i32 = 15;
+    for (i, line) in lines.iter().enumerate() {
         notes
             .draw(&Text::new(
                 line.clone(),
@@ -315,7 +393,7 @@ pub fn frame(
             ))
             .map_err(err)?;
     }
-    root.present().map_err(err)
+    Ok(())
 }
 
 fn draw_pixel_marker(
@@ -389,32 +467,20 @@ pub enum Cost<'a> {
     Wall,
     /// `fric_` calls per run.
     Calls,
+    /// Median wall time of this many single runs (no inner repetition), with the range of the
+    /// runs as an error bar.
+    Runs(usize),
     /// Any other cost of a point (no bars).
     Other(&'a dyn Fn(&Point) -> f64),
 }
 
-/// The earlier signature (x from a closure; the legend goes to the side panel whatever
-/// `_legend` says; no highlights), kept for callers written against it.
-#[allow(dead_code)]
-pub fn work_precision(
-    path: &Path,
-    title: &str,
-    x_title: &str,
-    y_title: &str,
-    points: &[Point],
-    _legend: SeriesLabelPosition,
-    cost: impl Fn(&Point) -> f64,
-) -> Result<(), String> {
-    work_precision_chart(
-        path,
-        title,
-        x_title,
-        y_title,
-        points,
-        Cost::Other(&cost),
-        &[],
-        "",
-    )
+/// What a scene adds to a work-precision chart beyond its points.
+#[derive(Default)]
+pub struct Extras {
+    /// Notes under the chart.
+    pub notes: Vec<String>,
+    /// Vertical reference lines (dashed, black): x value and legend text.
+    pub verticals: Vec<(f64, String)>,
 }
 
 /// Error against cost, one curve per method. Points whose run did not end "ok" are left out of
@@ -434,8 +500,35 @@ pub fn work_precision_chart(
     highlights: &[Highlight],
     machine: &str,
 ) -> Result<(), String> {
+    work_precision_full(
+        path,
+        title,
+        x_title,
+        y_title,
+        points,
+        cost,
+        highlights,
+        machine,
+        &Extras::default(),
+    )
+}
+
+/// [`work_precision_chart`] with a scene's own notes and reference lines.
+#[allow(clippy::too_many_arguments)]
+pub fn work_precision_full(
+    path: &Path,
+    title: &str,
+    x_title: &str,
+    y_title: &str,
+    points: &[Point],
+    cost: Cost,
+    highlights: &[Highlight],
+    machine: &str,
+    extras: &Extras,
+) -> Result<(), String> {
+    let timed = matches!(cost, Cost::Wall | Cost::Runs(_));
     let x_of = |p: &Point| match cost {
-        Cost::Wall => p.wall,
+        Cost::Wall | Cost::Runs(_) => p.wall,
         Cost::Calls => p.calls as f64,
         Cost::Other(f) => f(p),
     };
@@ -445,7 +538,7 @@ pub fn work_precision_chart(
         .collect();
     let failed: Vec<&Point> = points.iter().filter(|p| p.verdict != "ok").collect();
     let (x0, x1) = decades(usable.iter().chain(&failed).flat_map(|p| match cost {
-        Cost::Wall => vec![p.wall_range[0], p.wall_range[1], p.wall],
+        Cost::Wall | Cost::Runs(_) => vec![p.wall_range[0], p.wall_range[1], p.wall],
         Cost::Calls => vec![p.calls as f64],
         Cost::Other(f) => vec![f(p)],
     }));
@@ -491,21 +584,35 @@ pub fn work_precision_chart(
         let mk = twin_marker(i);
         legend.push((Swatch::Line(color, mk, false), (*m).to_string()));
         if let Some(j) = twin {
-            notes.push(format!(
-                "'{m}' coincides with '{}' (every error within 5 % at the same step): drawn as rings, no line.",
-                methods[j]
-            ));
+            notes.push(if timed {
+                format!(
+                    "'{m}' has the errors of '{}' (every error within 5 % at the same step; its times differ): drawn as rings on a thin line.",
+                    methods[j]
+                )
+            } else {
+                format!(
+                    "'{m}' coincides with '{}' (every error within 5 % at the same step): drawn as rings, no line.",
+                    methods[j]
+                )
+            });
         }
     }
-    legend.push((
-        Swatch::Line(RGBColor(60, 60, 60), Marker::None, true),
-        "dashed, same colour: the bound the scene file claims (checked)".into(),
-    ));
-    if !failed.is_empty() {
+    if usable.iter().any(|p| p.claim.is_finite()) {
+        legend.push((
+            Swatch::Line(RGBColor(60, 60, 60), Marker::None, true),
+            "dashed, same colour: the bound the scene file claims (checked)".into(),
+        ));
+    }
+    for (_, text) in &extras.verticals {
+        legend.push((Swatch::Line(BLACK, Marker::None, true), text.clone()));
+    }
+    if failed.iter().any(|p| p.error.is_finite()) {
         legend.push((
             Swatch::Mark(RGBColor(60, 60, 60), Marker::Cross),
             "run not ok, error measurable (verdict in the CSV)".into(),
         ));
+    }
+    if failed.iter().any(|p| !p.error.is_finite()) {
         legend.push((
             Swatch::Mark(RGBColor(60, 60, 60), Marker::Triangle),
             "on the top edge: no error to show (diverged, Newton failed, cut-back)".into(),
@@ -525,6 +632,12 @@ pub fn work_precision_chart(
             "Times: median of 5 timed repeats per point, each repeat ≥ 1 ms (the run repeated inside it); bars: fastest to slowest repeat. Machine: {machine}."
         ));
     }
+    if let Cost::Runs(n) = cost {
+        notes.push(format!(
+            "Times: median of {n} single runs per point; bars: fastest to slowest run. Machine: {machine}."
+        ));
+    }
+    notes.extend(extras.notes.iter().cloned());
     let f = Frame {
         title,
         x: Axis {
@@ -559,7 +672,7 @@ pub fn work_precision_chart(
                 .map(|p| (x_of(p), top))
                 .collect();
             draw_markers(chart, Marker::Triangle, &tops, color)?;
-            if matches!(cost, Cost::Wall) {
+            if timed {
                 chart
                     .draw_series(mine.iter().map(|p| {
                         let y = p.error.max(1e-16);
@@ -578,6 +691,11 @@ pub fn work_precision_chart(
                 chart
                     .draw_series(LineSeries::new(series.clone(), color.stroke_width(2)))
                     .map_err(err)?;
+            } else if timed {
+                // Same errors, other times: a thin line so the curve can be followed.
+                chart
+                    .draw_series(LineSeries::new(series.clone(), color.stroke_width(1)))
+                    .map_err(err)?;
             }
             draw_markers(chart, twin_marker(i), &series, color)?;
             let mut claims: Vec<(f64, f64)> = mine
@@ -591,6 +709,16 @@ pub fn work_precision_chart(
                     .draw_series(DashedLineSeries::new(claims, 6, 4, color.stroke_width(1)))
                     .map_err(err)?;
             }
+        }
+        for (x, _) in &extras.verticals {
+            chart
+                .draw_series(DashedLineSeries::new(
+                    [(*x, y0), (*x, y1)],
+                    8,
+                    5,
+                    BLACK.stroke_width(2),
+                ))
+                .map_err(err)?;
         }
         for h in highlights {
             if let Some(p) = usable

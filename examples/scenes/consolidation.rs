@@ -419,13 +419,14 @@ pub fn run(f: &P1File, quick: bool, out: &Path) -> Result<Outcome, String> {
 /// below 1e-15).
 const OSCILLATION: f64 = 1e-12;
 
-/// A chart: file name, x label, y label, points, x value of a point.
+/// A chart: file name, x label, y label, points, x value of a point, notes and reference lines.
 type Chart<'a> = (
     &'a str,
     &'a str,
     &'a str,
     &'a [Point],
-    &'a dyn Fn(&Point) -> f64,
+    crate::charts::Cost<'a>,
+    crate::charts::Extras,
 );
 
 /// Observed order log(e_a/e_b)/log(s_a/s_b).
@@ -488,7 +489,7 @@ fn study(
     for &r in refines {
         for join in [Join::Interface, Join::Shared] {
             let label = format!(
-                "element sweep, Δt {:e}, {}",
+                "element sweep, Δt {:e} s, {}",
                 s.refine_sweep_dt,
                 if join == Join::Interface {
                     "interface kernel"
@@ -674,47 +675,92 @@ fn study(
     let path = out.join(format!("{id}-work-precision.csv"));
     std::fs::write(&path, csv).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     outputs.push(path);
-    let label = "max(|u − u_series|/q₀, |U − U_series|)";
+    let label = "error max(|u − u_series|/q₀, |U − U_series|) (–)";
+    let units = "Units: the scene file's consistent units (p1.toml: m, kPa, s; c_v in m²/s).";
+    let error_note = format!(
+        "Error: the larger of the pore-pressure error over q₀ and the error in the degree of consolidation U, at the file's depths and output times (earliest t = {} s), against the series solution.",
+        c.times.iter().copied().fold(f64::INFINITY, f64::min)
+    );
+    let machine = crate::machine();
     let charts: [Chart; 4] = [
         (
             "error-vs-dt",
-            "time increment Δt",
+            "time increment Δt (s)",
             label,
             &dt_points,
-            &|p| p.step,
+            crate::charts::Cost::Other(&|p| p.step),
+            crate::charts::Extras {
+                notes: vec![error_note.clone(), units.into()],
+                verticals: Vec::new(),
+            },
         ),
         (
             "error-vs-elements",
-            "elements in the column",
+            "elements in the column (count)",
             label,
             &mesh_points,
-            &|p| p.step,
+            crate::charts::Cost::Other(&|p| p.step),
+            crate::charts::Extras {
+                notes: vec![error_note.clone(), units.into()],
+                verticals: Vec::new(),
+            },
         ),
         (
             "error-vs-time",
             "wall time per run, median (s)",
             label,
             &all,
-            &|p| p.wall,
+            crate::charts::Cost::Runs(s.repeats.max(1)),
+            crate::charts::Extras {
+                notes: vec![error_note, units.into()],
+                verticals: Vec::new(),
+            },
         ),
         (
             "stability",
-            "c·Δt/Δz² of the layer (one step after the load; monotone from 1/4)",
-            "max p/q₀ − 1 in the layer (0 drawn at 1e-16)",
+            "c·Δt/Δz² of the layer (–; one step after the load)",
+            "max p/q₀ − 1 in the layer (–; 0 drawn at 1e-16)",
             &stability_points,
-            &|p| p.step,
+            crate::charts::Cost::Other(&|p| p.step),
+            crate::charts::Extras {
+                notes: vec![
+                    "One backward-Euler step after the step load q₀ on the file's mesh; a pressure above q₀ is the node-to-node oscillation of equal-order u–p elements.".into(),
+                    format!(
+                        "The check rows count a layer as oscillating when max p/q₀ − 1 > {OSCILLATION:e}; the last oscillating and first monotone ratio bracket 1/4."
+                    ),
+                    format!(
+                        "At the same Δt layer 2's ratio is {:.3} times layer 1's (c_v and Δz of each layer).",
+                        (cv[1] / (dz[1] * dz[1])) / (cv[0] / (dz[0] * dz[0]))
+                    ),
+                ],
+                verticals: vec![(
+                    0.25,
+                    "closed form: the first step is monotone from c·Δt/Δz² = 1/4".into(),
+                )],
+            },
         ),
     ];
-    for (name, x_label, y_label, points, cost) in charts {
+    for (name, x_label, y_label, points, cost, extras) in charts {
         let svg = out.join(format!("{id}-{name}.svg"));
-        if let Err(e) = crate::charts::work_precision(
+        if let Err(e) = crate::charts::work_precision_full(
             &svg,
-            &format!("{}: {}", f.title, name.replace('-', " ")),
+            &format!(
+                "{}: {}",
+                f.title,
+                match name {
+                    "error-vs-dt" => "error against the time increment Δt",
+                    "error-vs-elements" => "error against the element count",
+                    "error-vs-time" => "error against wall time",
+                    _ => "first-step overshoot against c·Δt/Δz²",
+                }
+            ),
             x_label,
             y_label,
             points,
-            plotters::prelude::SeriesLabelPosition::LowerRight,
             cost,
+            &[],
+            &machine,
+            &extras,
         ) {
             eprintln!("scenes: {e}");
             failures += 1;

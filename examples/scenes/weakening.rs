@@ -28,6 +28,7 @@ use interfacial::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedS
 use interfacial::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
 use plotters::prelude::*;
 
+use crate::charts::{Axis, Frame, LinearFrame, Marker, Swatch, frame as frame_chart, frame_linear};
 use crate::checks::Row;
 
 const MU_S: f64 = 0.5;
@@ -224,42 +225,62 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
     let csv_path = out.join("F7-mean-error.csv");
     std::fs::write(&csv_path, csv).map_err(|e| format!("{}: {e}", csv_path.display()))?;
     let svg = out.join("F7-mean-error.svg");
-    {
-        let root = SVGBackend::new(&svg, (820, 560)).into_drawing_area();
-        root.fill(&WHITE).map_err(err)?;
-        let mut chart = ChartBuilder::on(&root)
-            .caption(
-                "F7: error of the mean friction against the increment r·γ_crit",
-                ("sans-serif", 18),
+    let colors = [
+        RGBColor(31, 119, 180),
+        RGBColor(255, 127, 14),
+        RGBColor(44, 160, 44),
+        RGBColor(214, 39, 40),
+    ];
+    let mut legend: Vec<(Swatch, String)> = series
+        .iter()
+        .enumerate()
+        .map(|(i, (x, f, _))| {
+            (
+                Swatch::Line(colors[i % colors.len()], Marker::Dot, false),
+                format!("d_c·v = {x}: {}", f.name()),
             )
-            .margin(12)
-            .x_label_area_size(44)
-            .y_label_area_size(70)
-            .build_cartesian_2d((0.008..1.25).log_scale(), (1e-17..10.0).log_scale())
-            .map_err(err)?;
-        chart
-            .configure_mesh()
-            .x_desc("increment r = Δγ/γ_crit")
-            .y_desc("|mean τ − μ(v)p| / μ(v)p")
-            .x_label_formatter(&|v| format!("{v:.0e}"))
-            .y_label_formatter(&|v| format!("{v:.0e}"))
-            .draw()
-            .map_err(err)?;
-        let colors = [
-            RGBColor(31, 119, 180),
-            RGBColor(255, 127, 14),
-            RGBColor(44, 160, 44),
-            RGBColor(214, 39, 40),
-        ];
-        for (i, (x, f, pts)) in series.iter().enumerate() {
+        })
+        .collect();
+    legend.push((
+        Swatch::Line(BLACK, Marker::None, true),
+        "the issue's 1 %".into(),
+    ));
+    let zeros = series
+        .iter()
+        .flat_map(|(_, _, pts)| pts.iter())
+        .filter(|(_, e)| *e < 1e-17)
+        .count();
+    let mut notes = vec![format!(
+        "One point sliding at constant v (d_c·v = x) in increments Δγ = r·γ_crit, p = {P}, μ_s = {MU_S}, μ_k = {MU_K}, γ_crit = {GAMMA_CRIT}; error of the mean τ over the last 200 increments against μ(v)p."
+    )];
+    if zeros > 0 {
+        notes.push(format!(
+            "Errors below 1e-17 ({zeros} points, round-off exact) are drawn on the bottom edge at 1e-17."
+        ));
+    }
+    let frame = Frame {
+        title: "F7: error of the mean friction against the increment r",
+        x: Axis {
+            range: (0.008, 1.25),
+            title: "increment r = Δγ/γ_crit (–)".into(),
+        },
+        y: Axis {
+            range: (1e-17, 10.0),
+            title: "|mean τ − μ(v)p| / μ(v)p (–)".into(),
+        },
+        top: None,
+        legend,
+        notes,
+        size: (760, 560),
+    };
+    frame_chart(&svg, &frame, |chart| {
+        for (i, (_, _, pts)) in series.iter().enumerate() {
             let color = colors[i % colors.len()];
             // An exact zero is drawn at the bottom of the chart.
             let pts: Vec<(f64, f64)> = pts.iter().map(|(r, e)| (*r, e.max(1e-17))).collect();
             chart
                 .draw_series(LineSeries::new(pts.clone(), color.stroke_width(2)))
-                .map_err(err)?
-                .label(format!("{}, d_c·v = {x}", f.name()))
-                .legend(move |(a, b)| PathElement::new(vec![(a, b), (a + 18, b)], color));
+                .map_err(err)?;
             chart
                 .draw_series(pts.iter().map(|p| Circle::new(*p, 3, color.filled())))
                 .map_err(err)?;
@@ -271,19 +292,9 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
                 4,
                 BLACK.stroke_width(1),
             ))
-            .map_err(err)?
-            .label("the issue's 1 %")
-            .legend(|(a, b)| PathElement::new(vec![(a, b), (a + 18, b)], BLACK));
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::MiddleMiddle)
-            .background_style(WHITE.mix(0.9))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 12))
-            .draw()
             .map_err(err)?;
-        root.present().map_err(err)?;
-    }
+        Ok(())
+    })?;
     Ok(vec![csv_path, svg])
 }
 
@@ -392,77 +403,81 @@ fn map_chart(
     };
     let (x0, x1) = (half(rs, 0, false), half(rs, rs.len() - 1, true));
     let (y0, y1) = (half(xs, 0, false), half(xs, xs.len() - 1, true));
-    let root = SVGBackend::new(path, (820, 600)).into_drawing_area();
-    root.fill(&WHITE).map_err(err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            format!("F7: steady sliding under weakening, {}", f.name()),
-            ("sans-serif", 18),
-        )
-        .margin(12)
-        .x_label_area_size(44)
-        .y_label_area_size(70)
-        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
-        .map_err(err)?;
-    chart
-        .configure_mesh()
-        .disable_mesh()
-        .x_desc("increment r = Δγ/γ_crit")
-        .y_desc("d_c·v")
-        .x_label_formatter(&|v| format!("{v:.0e}"))
-        .y_label_formatter(&|v| format!("{v:.1}"))
-        .draw()
-        .map_err(err)?;
     let (settle, cycle) = (RGBColor(44, 160, 44), RGBColor(214, 39, 40));
-    for (j, row) in cells.iter().enumerate() {
-        chart
-            .draw_series(row.iter().enumerate().map(|(i, ok)| {
-                Rectangle::new(
-                    [
-                        (half(rs, i, false), half(xs, j, false)),
-                        (half(rs, i, true), half(xs, j, true)),
-                    ],
-                    if *ok { settle } else { cycle }.mix(0.6).filled(),
-                )
-            }))
-            .map_err(err)?;
-    }
-    for (label, color) in [("settles at μ(v)p", settle), ("cycles", cycle)] {
-        chart
-            .draw_series(std::iter::empty::<Rectangle<(f64, f64)>>())
-            .map_err(err)?
-            .label(label)
-            .legend(move |(a, b)| Rectangle::new([(a, b - 5), (a + 14, b + 5)], color.filled()));
-    }
-    let fine = log_space(y0, y1, 200);
-    let curve = |k: usize| -> Vec<(f64, f64)> {
-        fine.iter()
-            .map(|&x| {
-                let b = rate_free_bounds(x);
-                (if k == 0 { b.0 } else { b.1 }, x)
-            })
-            .filter(|(r, _)| *r >= x0 && *r <= x1)
-            .collect()
+    // The cells' colours at 60 % over white, as drawn.
+    let pale = |c: RGBColor| {
+        let m = |v: u8| (0.6 * f64::from(v) + 0.4 * 255.0).round() as u8;
+        RGBColor(m(c.0), m(c.1), m(c.2))
     };
-    chart
-        .draw_series(LineSeries::new(curve(0), BLACK.stroke_width(3)))
-        .map_err(err)?
-        .label("earlier slip equation stable: r > 2c·x·e^(−x)")
-        .legend(|(a, b)| PathElement::new(vec![(a, b), (a + 18, b)], BLACK.stroke_width(3)));
-    chart
-        .draw_series(DashedLineSeries::new(curve(1), 6, 4, BLUE.stroke_width(2)))
-        .map_err(err)?
-        .label("earlier memoryless stick test: r > c·(1 − e^(−x))")
-        .legend(|(a, b)| PathElement::new(vec![(a, b), (a + 18, b)], BLUE.stroke_width(2)));
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 12))
-        .draw()
-        .map_err(err)?;
-    root.present().map_err(err)
+    let mut legend: Vec<(Swatch, String)> = Vec::new();
+    for (label, color, ok) in [
+        ("settles at μ(v)p", settle, true),
+        ("cycles (does not settle)", cycle, false),
+    ] {
+        if cells.iter().flatten().any(|c| *c == ok) {
+            legend.push((Swatch::Box(pale(color)), label.into()));
+        }
+    }
+    legend.push((
+        Swatch::Line(BLACK, Marker::None, false),
+        "earlier slip equation stable: r > 2c·x·e^(−x)".into(),
+    ));
+    legend.push((
+        Swatch::Line(BLUE, Marker::None, true),
+        "earlier memoryless stick test: r > c·(1 − e^(−x))".into(),
+    ));
+    let frame = Frame {
+        title: &format!("F7: steady sliding under weakening, {}", f.name()),
+        x: Axis {
+            range: (x0, x1),
+            title: "increment r = Δγ/γ_crit (–)".into(),
+        },
+        y: Axis {
+            range: (y0, y1),
+            title: "x = d_c·v (–)".into(),
+        },
+        top: None,
+        legend,
+        notes: vec![
+            format!(
+                "Each cell: one point sliding at v = x/d_c in increments r·γ_crit (p = {P}, μ_s = {MU_S}, μ_k = {MU_K}, c = 1 − μ_k/μ_s = {C:.1}); it settles when each of the last 100 increments is within 1e-6 of μ(v)p."
+            ),
+            "The curves are the earlier (rate-free) formulation's closed-form bounds (docs/props.md), drawn on both maps for comparison.".into(),
+        ],
+        size: (760, 560),
+    };
+    frame_chart(path, &frame, |chart| {
+        for (j, row) in cells.iter().enumerate() {
+            chart
+                .draw_series(row.iter().enumerate().map(|(i, ok)| {
+                    Rectangle::new(
+                        [
+                            (half(rs, i, false), half(xs, j, false)),
+                            (half(rs, i, true), half(xs, j, true)),
+                        ],
+                        pale(if *ok { settle } else { cycle }).filled(),
+                    )
+                }))
+                .map_err(err)?;
+        }
+        let fine = log_space(y0, y1, 200);
+        let curve = |k: usize| -> Vec<(f64, f64)> {
+            fine.iter()
+                .map(|&x| {
+                    let b = rate_free_bounds(x);
+                    (if k == 0 { b.0 } else { b.1 }, x)
+                })
+                .filter(|(r, _)| *r >= x0 && *r <= x1)
+                .collect()
+        };
+        chart
+            .draw_series(LineSeries::new(curve(0), BLACK.stroke_width(3)))
+            .map_err(err)?;
+        chart
+            .draw_series(DashedLineSeries::new(curve(1), 6, 4, BLUE.stroke_width(2)))
+            .map_err(err)?;
+        Ok(())
+    })
 }
 
 /// F6 with the decay law: block m on a belt at v₀, spring k to a wall, normal force N.
@@ -732,32 +747,42 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
     let csv_path = out.join("F7-belt.csv");
     std::fs::write(&csv_path, csv).map_err(|e| format!("{}: {e}", csv_path.display()))?;
     let svg = out.join("F7-belt.svg");
-    {
-        let root = SVGBackend::new(&svg, (900, 500)).into_drawing_area();
-        root.fill(&WHITE).map_err(err)?;
-        let mut chart = ChartBuilder::on(&root)
-            .caption(
-                "F7: F6 with velocity-weakening μ (decay law), implicit steps against a fine reference",
-                ("sans-serif", 16),
+    let colors = [
+        BLACK,
+        RGBColor(31, 119, 180),
+        RGBColor(255, 127, 14),
+        RGBColor(44, 160, 44),
+    ];
+    let legend = traces
+        .iter()
+        .enumerate()
+        .map(|(k, (label, _, _))| {
+            (
+                Swatch::Line(colors[k % colors.len()], Marker::None, false),
+                if k == 0 {
+                    format!("{label} s (thick)")
+                } else {
+                    format!("{label} s, exact tangent")
+                },
             )
-            .margin(12)
-            .x_label_area_size(40)
-            .y_label_area_size(60)
-            .build_cartesian_2d(0.0..t_end, 0.0..0.75)
-            .map_err(err)?;
-        chart
-            .configure_mesh()
-            .x_desc("time t")
-            .y_desc("block position x")
-            .draw()
-            .map_err(err)?;
-        let colors = [
-            BLACK,
-            RGBColor(31, 119, 180),
-            RGBColor(255, 127, 14),
-            RGBColor(44, 160, 44),
-        ];
-        for (k, (label, dt, xs)) in traces.iter().enumerate() {
+        })
+        .collect();
+    let frame = LinearFrame {
+        title: "F7: F6 with velocity-weakening μ (decay law), implicit steps",
+        x: ((0.0, t_end), "time t (s)".into()),
+        y: ((0.0, 0.75), "block position x (m)".into()),
+        legend,
+        notes: vec![
+            format!(
+                "Block m = {} kg on a belt at v₀ = {} m/s, spring k = {} N/m to a wall, N = {} N, μ_s = {}, μ_k = {}, d_c = {} s/m, γ_crit = {} m; backward Euler with Newton iterations on fric_'s stress and tangent.",
+                b.mass, b.belt, b.spring, b.normal, b.mu_s, b.mu_k, b.decay, b.gamma_crit
+            ),
+            "Coarse steps against the fine reference: for Δt ≤ 0.02 s the cycle's x_max, x_min and period are check rows (F7 in checks.csv).".into(),
+        ],
+        size: (860, 500),
+    };
+    frame_linear(&svg, &frame, |chart| {
+        for (k, (_, dt, xs)) in traces.iter().enumerate() {
             let color = colors[k % colors.len()];
             let stride = (xs.len() / 4000).max(1);
             let pts: Vec<(f64, f64)> = xs
@@ -771,20 +796,10 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
                     pts,
                     color.stroke_width(if k == 0 { 3 } else { 1 }),
                 ))
-                .map_err(err)?
-                .label(label.clone())
-                .legend(move |(a, b)| PathElement::new(vec![(a, b), (a + 18, b)], color));
+                .map_err(err)?;
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::LowerMiddle)
-            .background_style(WHITE.mix(0.9))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 12))
-            .draw()
-            .map_err(err)?;
-        root.present().map_err(err)?;
-    }
+        Ok(())
+    })?;
     // The same belt with the adhesive law and a small v_½ (issue 16, item 3: a steep onset
     // drop, strongly negative tangent): Newton iterations only.
     let _ = writeln!(
