@@ -15,6 +15,13 @@ const CONFIG: &str = r#"
 law = "constant"
 k = 2.0
 
+[interactions.Spots.conductance]
+law = "cmy"
+k_s = 20.0
+m = 0.1
+sigma = 2e-6
+H_c = 2e9
+
 [interactions.Hot.conductance]
 law = "pressure-table"
 table = [[0.0, 100.0, 300.0], [50.0, 600.0, 300.0], [0.0, 200.0, 500.0], [50.0, 900.0, 500.0]]
@@ -353,4 +360,26 @@ fn a_bad_file_is_reported_once_for_all_interactions() {
     let _ = std::fs::remove_file(&log);
     assert_eq!(text.lines().count(), 1, "{text}");
     assert!(text.contains(":3: interactions.A.conductance.k"), "{text}");
+}
+
+/// docs/config.md and bad-input row 27a through `gapcon_`: the CMY correlation answers up to
+/// P/H_c = 1 (closed form 1.25·(k_s·m/σ)·(P/H_c)^0.95) and refuses beyond it with AK(1) = 0,
+/// nothing else written, and a message naming the routine, the interaction and H_c.
+#[test]
+fn cmy_answers_up_to_the_microhardness_and_refuses_beyond_it() {
+    setup();
+    let scale = 1.25 * (20.0 * 0.1 / 2e-6);
+    for p in [2e6, 2e8, 2e9] {
+        let mut c = GapconCall::new("Spots", 0.0, p, 320.0, 300.0);
+        let k = c.call();
+        let expected = scale * (p / 2e9f64).powf(0.95);
+        assert!((k - expected).abs() <= 1e-12 * expected, "p = {p}: {k} vs {expected}");
+    }
+    let mut c = GapconCall::new("Spots", 0.0, 2.2e9, 320.0, 300.0);
+    assert_eq!(c.call(), 0.0, "AK(1) = 0 on refusal");
+    assert_eq!(&c.ak[1..], &[GUARD; 4], "AK(2..5) untouched");
+    let m = FricCall::last_error();
+    for word in ["GAPCON", "Spots", "H_c", "P/H_c"] {
+        assert!(m.contains(word), "'{word}' missing from: {m}");
+    }
 }
