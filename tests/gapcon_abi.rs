@@ -373,7 +373,10 @@ fn cmy_answers_up_to_the_microhardness_and_refuses_beyond_it() {
         let mut c = GapconCall::new("Spots", 0.0, p, 320.0, 300.0);
         let k = c.call();
         let expected = scale * (p / 2e9f64).powf(0.95);
-        assert!((k - expected).abs() <= 1e-12 * expected, "p = {p}: {k} vs {expected}");
+        assert!(
+            (k - expected).abs() <= 1e-12 * expected,
+            "p = {p}: {k} vs {expected}"
+        );
     }
     let mut c = GapconCall::new("Spots", 0.0, 2.2e9, 320.0, 300.0);
     assert_eq!(c.call(), 0.0, "AK(1) = 0 on refusal");
