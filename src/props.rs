@@ -11,12 +11,14 @@ use crate::laws::friction_coefficient::CoefficientLaw;
 use crate::laws::friction_table::FrictionTable;
 
 mod adhesive;
+mod coulomb;
 pub mod schema;
 pub(crate) use adhesive::adhesive_props;
 pub use adhesive::{
     ADHESIVE, ADHESIVE_NPROPS, AdhesiveBuilder, AdhesiveProps, COULOMB_SPECIAL_CASE, HeatExchange,
     LAW_ADHESIVE,
 };
+pub use coulomb::{COULOMB, CoulombBuilder, STEADY_TRANSPORT};
 
 /// `PROPS(1)` code of the Coulomb family.
 pub const LAW_COULOMB: i32 = 1;
@@ -26,7 +28,7 @@ pub const LAW_COULOMB: i32 = 1;
 pub const COULOMB_NPROPS: usize = 7;
 
 /// Number of `PROPS` entries the extended Coulomb law reads (`PROPS(1..20)`, docs/props.md).
-pub const COULOMB_EXTENDED_NPROPS: usize = 20;
+pub const COULOMB_EXTENDED_NPROPS: usize = COULOMB.entries.len();
 
 /// A law selected and parametrised by `PROPS`.
 #[derive(Clone, Copy, Debug, PartialEq)]

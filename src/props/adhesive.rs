@@ -60,6 +60,7 @@ pub const ADHESIVE: Layout = Layout {
         floor: 2,
         why: "the static coefficient μ_s must be ≥ the dynamic one (or ≤ 0 for none)",
     }],
+    variants: &[],
 };
 
 /// The Coulomb special case (seed 004: "the simple Coulomb friction contact law is a special

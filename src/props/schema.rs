@@ -23,7 +23,7 @@ use std::fmt;
 use crate::LawError;
 
 /// Which values one `PROPS` entry accepts.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Class {
     /// The law code, exactly this value (`PROPS(1)`).
     Code(i32),
@@ -45,6 +45,21 @@ pub enum Class {
     UnitInterval,
     /// 0 (take the default) or in (0, 1]: as a range [0, 1].
     OffOrFraction,
+    /// Finite and > 0 (no default: 0 is refused).
+    Positive,
+    /// Finite; 0 means "none".
+    Finite,
+    /// In [lo, hi], or [lo, hi) when `open_hi`.
+    Interval {
+        /// Lowest value.
+        lo: f64,
+        /// Highest value (excluded when `open_hi`).
+        hi: f64,
+        /// True for [lo, hi).
+        open_hi: bool,
+    },
+    /// One of the listed integer codes, with what each means.
+    Choice(&'static [(i32, &'static str)]),
 }
 
 impl Class {
@@ -57,6 +72,10 @@ impl Class {
             Class::FiniteOrNone => v.is_finite(),
             Class::Switch { .. } => v == 0.0 || v == 1.0,
             Class::UnitInterval | Class::OffOrFraction => (0.0..=1.0).contains(&v),
+            Class::Positive => v.is_finite() && v > 0.0,
+            Class::Finite => v.is_finite(),
+            Class::Interval { lo, hi, open_hi } => v >= lo && (v < hi || (!open_hi && v == hi)),
+            Class::Choice(options) => options.iter().any(|&(c, _)| v == f64::from(c)),
         }
     }
 
@@ -65,7 +84,7 @@ impl Class {
     pub fn is_off(self, v: f64) -> bool {
         match self {
             Class::FiniteOrNone => v <= 0.0,
-            Class::OffOrPositive | Class::OffOrFraction => v == 0.0,
+            Class::OffOrPositive | Class::OffOrFraction | Class::Finite => v == 0.0,
             _ => false,
         }
     }
@@ -80,6 +99,20 @@ impl Class {
             Class::Switch { off, on } => format!("0 ({off}) or 1 ({on})"),
             Class::UnitInterval => "in [0, 1]".into(),
             Class::OffOrFraction => "in (0, 1]".into(),
+            Class::Positive => "finite and > 0".into(),
+            Class::Finite => "finite".into(),
+            Class::Interval { lo, hi, open_hi } => {
+                format!(
+                    "in [{}, {}{}",
+                    number(lo),
+                    number(hi),
+                    if open_hi { ")" } else { "]" }
+                )
+            }
+            Class::Choice(options) => {
+                let each: Vec<String> = options.iter().map(|(c, m)| format!("{c} ({m})")).collect();
+                one_of(&each)
+            }
         }
     }
 
@@ -88,8 +121,30 @@ impl Class {
     fn valid_text(self) -> String {
         match self {
             Class::Switch { .. } => "0 or 1".into(),
+            Class::Choice(options) => {
+                let each: Vec<String> = options.iter().map(|(c, _)| c.to_string()).collect();
+                one_of(&each)
+            }
             other => other.requirement(),
         }
+    }
+}
+
+/// "a", "a or b", "a, b or c".
+fn one_of(each: &[String]) -> String {
+    match each {
+        [] => String::new(),
+        [one] => one.clone(),
+        [init @ .., last] => format!("{} or {last}", init.join(", ")),
+    }
+}
+
+/// A bound as the docs write it: −1/2 for −0.5, else the shortest decimal.
+fn number(v: f64) -> String {
+    if v == -0.5 {
+        "−1/2".into()
+    } else {
+        format!("{v}")
     }
 }
 
@@ -210,6 +265,74 @@ pub enum Rule {
         /// Why, for the message.
         why: &'static str,
     },
+    /// `PROPS(entry)` must be 0 when `PROPS(on) = value` (it is not read then).
+    ZeroWhen {
+        /// The entry the rule is about.
+        entry: usize,
+        /// The entry that switches it off.
+        on: usize,
+        /// The value of `PROPS(on)` that does.
+        value: i32,
+        /// Why, for the message.
+        why: &'static str,
+    },
+    /// `PROPS(entry)` must be > 0 when `PROPS(on) = value` (that mode needs it).
+    PositiveWhen {
+        /// The entry the rule is about.
+        entry: usize,
+        /// The entry that selects the mode.
+        on: usize,
+        /// The value of `PROPS(on)` that does.
+        value: i32,
+        /// Why, for the message.
+        why: &'static str,
+    },
+}
+
+impl Rule {
+    /// The entry the rule is about.
+    #[must_use]
+    pub const fn entry(&self) -> usize {
+        match *self {
+            Rule::AtLeastWhenGiven { entry, .. }
+            | Rule::ZeroWhen { entry, .. }
+            | Rule::PositiveWhen { entry, .. } => entry,
+        }
+    }
+
+    /// The other entry the rule looks at.
+    #[must_use]
+    pub const fn other(&self) -> usize {
+        match *self {
+            Rule::AtLeastWhenGiven { floor, .. } => floor,
+            Rule::ZeroWhen { on, .. } | Rule::PositiveWhen { on, .. } => on,
+        }
+    }
+
+    /// True when the rule holds for `v = PROPS(entry)` and `w = PROPS(other)`.
+    #[inline(always)]
+    #[must_use]
+    pub fn holds(&self, v: f64, w: f64) -> bool {
+        match *self {
+            Rule::AtLeastWhenGiven { .. } => v <= 0.0 || v >= w,
+            Rule::ZeroWhen { value, .. } => w != f64::from(value) || v == 0.0,
+            Rule::PositiveWhen { value, .. } => w != f64::from(value) || v > 0.0,
+        }
+    }
+}
+
+/// Other meanings of some entries, taken when `PROPS(on) = value` (law 1's steady transport
+/// reads `PROPS(14..16)` as ω, the axis and the γ̇_crit variant instead of HHT).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Variant {
+    /// Its name in the docs.
+    pub name: &'static str,
+    /// The entry that selects it.
+    pub on: usize,
+    /// The value of `PROPS(on)` that does.
+    pub value: i32,
+    /// The entries it gives another meaning, by their index.
+    pub entries: &'static [Entry],
 }
 
 /// What a named fixed layout requires of one entry.
@@ -241,6 +364,8 @@ pub struct Layout {
     pub entries: &'static [Entry],
     /// The rules between entries.
     pub rules: &'static [Rule],
+    /// Other meanings of some entries, selected by another entry's value.
+    pub variants: &'static [Variant],
 }
 
 /// What is wrong with a `PROPS` array, with the index of the entry where there is one.
@@ -291,6 +416,8 @@ pub enum Cause {
 pub struct PropsError {
     layout: &'static Layout,
     cause: Cause,
+    /// The description of the offending entry in force (a [`Variant`]'s, or the layout's).
+    entry: Option<&'static Entry>,
 }
 
 impl PropsError {
@@ -300,6 +427,7 @@ impl PropsError {
         PropsError {
             layout,
             cause: Cause::Law { index, error },
+            entry: None,
         }
     }
 
@@ -350,7 +478,7 @@ impl fmt::Display for PropsError {
                 layout.entries.len()
             ),
             Cause::OutOfClass { index, value } => {
-                let e = layout.entry(*index);
+                let e = self.entry.unwrap_or_else(|| layout.entry(*index));
                 write!(f, "PROPS({index}): {} = {value} must be ", e.name())?;
                 write!(f, "{}", e.class.requirement())?;
                 match (e.class, e.default) {
@@ -370,6 +498,31 @@ impl fmt::Display for PropsError {
                 "PROPS({index}): {} = {value} is below {} = {other}: {why}",
                 layout.entry(*index).key,
                 layout.entry(*floor).key
+            ),
+            Cause::Broken {
+                index,
+                rule: Rule::ZeroWhen {
+                    on, value: w, why, ..
+                },
+                value,
+                ..
+            } => write!(
+                f,
+                "PROPS({index}) = {value} is not read when PROPS({on}) = {w} ({why}); refusing \
+                 to ignore it"
+            ),
+            Cause::Broken {
+                index,
+                rule:
+                    Rule::PositiveWhen {
+                        on, value: w, why, ..
+                    },
+                value,
+                ..
+            } => write!(
+                f,
+                "PROPS({index}): {} = {value} must be > 0 when PROPS({on}) = {w} ({why})",
+                self.entry.unwrap_or_else(|| layout.entry(*index)).name()
             ),
             Cause::Law {
                 index,
@@ -417,7 +570,22 @@ impl Layout {
         &self.entries[index - 1]
     }
 
-    /// The index of the entry called `key`; a compile-time error when used in a `const` with
+    /// `PROPS(index)`'s description in force for the entries `e` (`e[i - 1] = PROPS(i)`): a
+    /// [`Variant`]'s when `e` selects one that redefines it, else the layout's.
+    #[must_use]
+    pub fn entry_in(&'static self, e: &[f64], index: usize) -> &'static Entry {
+        for variant in self.variants {
+            if e.get(variant.on - 1) != Some(&f64::from(variant.value)) {
+                continue;
+            }
+            if let Some(entry) = variant.entries.iter().find(|x| x.index == index) {
+                return entry;
+            }
+        }
+        &self.entries[index - 1]
+    }
+
+    /// The index of the entry called `key` (also a variant's entry); a compile-time error when used in a `const` with
     /// a key the layout does not have.
     #[must_use]
     pub const fn index_of(&self, key: &str) -> usize {
@@ -427,6 +595,18 @@ impl Layout {
                 return self.entries[i].index;
             }
             i += 1;
+        }
+        let mut v = 0;
+        while v < self.variants.len() {
+            let entries = self.variants[v].entries;
+            let mut i = 0;
+            while i < entries.len() {
+                if const_str_eq(entries[i].key, key) {
+                    return entries[i].index;
+                }
+                i += 1;
+            }
+            v += 1;
         }
         panic!("no PROPS entry of that name in the layout");
     }
@@ -486,6 +666,10 @@ impl Layout {
                         Class::UnitInterval | Class::OffOrFraction => {
                             ok &= (0.0..=1.0).contains(&v);
                         }
+                        class @ (Class::Positive
+                        | Class::Finite
+                        | Class::Interval { .. }
+                        | Class::Choice(_)) => ok &= class.admits(v),
                     },
                 }
             }
@@ -493,59 +677,60 @@ impl Layout {
         debug_assert!(self.entries.len() <= 20, "unrolled! covers 20 entries");
         let mut r = 0;
         while r < self.rules.len() {
-            match self.rules[r] {
-                Rule::AtLeastWhenGiven { entry, floor, .. } => {
-                    let pinned = fixed.is_some_and(|f| f.pin(entry).is_some());
-                    if entry <= N && floor <= N && !pinned {
-                        let (v, w) = (e[entry - 1], e[floor - 1]);
-                        ok &= v <= 0.0 || v >= w;
-                    }
-                }
+            let rule = self.rules[r];
+            let (entry, other) = (rule.entry(), rule.other());
+            let pinned = fixed.is_some_and(|f| f.pin(entry).is_some());
+            if entry <= N && other <= N && !pinned {
+                ok &= rule.holds(e[entry - 1], e[other - 1]);
             }
             r += 1;
         }
-        ok && flags >> 63 == 0 && zeros << 1 == 0
+        // A layout with variants is not read here (its entries' classes depend on another
+        // entry): declined, so the checked path decides. Folds away for the others.
+        ok && self.variants.is_empty() && flags >> 63 == 0 && zeros << 1 == 0
     }
 
     /// The checked parser: the entries padded with zeros to the layout's length, or the first
     /// thing wrong, in entry order (each entry's class, then the rules about it).
     pub fn check<const N: usize>(&'static self, props: &[f64]) -> Result<[f64; N], PropsError> {
         debug_assert_eq!(N, self.entries.len());
-        let refuse = |cause| {
+        let refuse = |cause, entry| {
             Err(PropsError {
                 layout: self,
                 cause,
+                entry,
             })
         };
         if props.len() < self.required_len() {
-            return refuse(Cause::TooFew { given: props.len() });
+            return refuse(Cause::TooFew { given: props.len() }, None);
         }
         if let Some((i, &value)) = props.iter().enumerate().skip(N).find(|(_, v)| **v != 0.0) {
-            return refuse(Cause::Unused {
-                index: i + 1,
-                value,
-            });
+            return refuse(
+                Cause::Unused {
+                    index: i + 1,
+                    value,
+                },
+                None,
+            );
         }
         let e: [f64; N] = std::array::from_fn(|i| props.get(i).copied().unwrap_or(0.0));
-        for (entry, &value) in self.entries.iter().zip(&e) {
+        for (index, &value) in (1..).zip(&e) {
+            let entry = self.entry_in(&e, index);
             if !entry.class.admits(value) {
-                return refuse(Cause::OutOfClass {
-                    index: entry.index,
-                    value,
-                });
+                return refuse(Cause::OutOfClass { index, value }, Some(entry));
             }
             for &rule in self.rules {
-                let Rule::AtLeastWhenGiven {
-                    entry: at, floor, ..
-                } = rule;
-                let (v, w) = (e[at - 1], e[floor - 1]);
-                if at == entry.index && !(v <= 0.0 || v >= w) {
-                    return refuse(Cause::Broken {
-                        index: at,
-                        rule,
-                        value: v,
-                        other: w,
-                    });
+                let (v, w) = (e[rule.entry() - 1], e[rule.other() - 1]);
+                if rule.entry() == index && !rule.holds(v, w) {
+                    return refuse(
+                        Cause::Broken {
+                            index,
+                            rule,
+                            value: v,
+                            other: w,
+                        },
+                        Some(entry),
+                    );
                 }
             }
         }
@@ -580,6 +765,33 @@ impl Layout {
             "| entry | seed name | symbol | meaning | units | default (0 or absent) | valid |\n\
              |---|---|---|---|---|---|---|\n",
         );
+        for base in self.entries {
+            // A variant's meaning of this entry first, then the layout's, each row saying
+            // when it holds.
+            let mut rows: Vec<(String, &Entry)> = Vec::new();
+            for variant in self.variants {
+                if let Some(e) = variant.entries.iter().find(|x| x.index == base.index) {
+                    rows.push((format!(" (`PROPS({}) = {}`)", variant.on, variant.value), e));
+                }
+            }
+            let otherwise: Vec<String> = self
+                .variants
+                .iter()
+                .filter(|v| v.entries.iter().any(|x| x.index == base.index))
+                .map(|v| format!(" (`PROPS({})` ≠ {})", v.on, v.value))
+                .collect();
+            rows.push((otherwise.concat(), base));
+            for (when, e) in rows {
+                out += &self.markdown_row(e, &when);
+            }
+        }
+        out
+    }
+}
+
+impl Layout {
+    /// One row of [`Layout::markdown_table`]: entry `e`, `when` after its name.
+    fn markdown_row(&self, e: &Entry, when: &str) -> String {
         let dash = |s: &str| {
             if s.is_empty() {
                 "—".to_string()
@@ -587,46 +799,53 @@ impl Layout {
                 s.to_string()
             }
         };
-        for e in self.entries {
-            let default = match e.default {
-                Default::Required if matches!(e.class, Class::Code(_)) => "—".to_string(),
-                Default::Required => "— (required)".to_string(),
-                Default::Value(d) => format!("{d}"),
-                Default::Entry(j) => {
-                    format!("none: {} = {}", e.symbol, self.entry(j).symbol)
+        let default = match e.default {
+            Default::Required if matches!(e.class, Class::Code(_)) => "—".to_string(),
+            Default::Required => "— (required)".to_string(),
+            Default::Value(d) => format!("{d}"),
+            Default::Entry(j) => {
+                format!("none: {} = {}", e.symbol, self.entry(j).symbol)
+            }
+            Default::Described(text) => text.to_string(),
+        };
+        let mut valid = e.class.valid_text();
+        for rule in self.rules.iter().filter(|r| r.entry() == e.index) {
+            valid += &match *rule {
+                Rule::AtLeastWhenGiven { floor, .. } => {
+                    format!("; when > 0, ≥ `{}`", self.entry(floor).key)
                 }
-                Default::Described(text) => text.to_string(),
+                Rule::ZeroWhen { on, value, .. } => format!("; 0 when `PROPS({on}) = {value}`"),
+                Rule::PositiveWhen { on, value, .. } => {
+                    format!("; > 0 when `PROPS({on}) = {value}`")
+                }
             };
-            let mut valid = e.class.valid_text();
-            for rule in self.rules {
-                let Rule::AtLeastWhenGiven { entry, floor, .. } = *rule;
-                if entry == e.index {
-                    valid += &format!("; when > 0, ≥ `{}`", self.entry(floor).key);
-                }
-            }
-            let mut meaning = e.meaning.to_string();
-            if let Class::Switch { off, on } = e.class {
-                meaning += &format!(": 0 {off}, 1 {on}");
-            }
-            if !e.note.is_empty() {
-                meaning += &format!(" ({})", e.note);
-            }
-            out += &format!(
-                "| `PROPS({})` | {} | {} | {} | {} | {} | {} |\n",
-                e.index,
-                if e.seed_name {
-                    format!("`{}`", e.key)
-                } else {
-                    "—".into()
-                },
-                dash(e.symbol),
-                meaning,
-                dash(e.unit),
-                default,
-                valid
-            );
         }
-        out
+        let mut meaning = e.meaning.to_string();
+        match e.class {
+            Class::Switch { off, on } => meaning += &format!(": 0 {off}, 1 {on}"),
+            Class::Choice(options) => {
+                let each: Vec<String> = options.iter().map(|(c, m)| format!("{c} {m}")).collect();
+                meaning += &format!(": {}", each.join(", "));
+            }
+            _ => {}
+        }
+        if !e.note.is_empty() {
+            meaning += &format!(" ({})", e.note);
+        }
+        format!(
+            "| `PROPS({})`{when} | {} | {} | {} | {} | {} | {} |\n",
+            e.index,
+            if e.seed_name {
+                format!("`{}`", e.key)
+            } else {
+                "—".into()
+            },
+            dash(e.symbol),
+            meaning,
+            dash(e.unit),
+            default,
+            valid
+        )
     }
 }
 

@@ -1,0 +1,519 @@
+//! `PROPS` layout of law 1, Coulomb friction, plain and extended (`PROPS(1) = 1`, seeds 000 and
+//! 003, section 5.2.3), described once in [`COULOMB`]: the docs/props.md table,
+//! [`CoulombBuilder`] and the layout-level validity ([`COULOMB`]`.check`) come from it.
+//!
+//! Not yet derived from it (issue 19, left for the next step): the fast readers of `fric_`
+//! (`fast_plain_coulomb`, `fast_extended_coulomb`, `fast_decay_lean`) and the checked parser
+//! `coulomb_extended_with_table` (src/props.rs), whose messages tests pin. A property test
+//! below checks that the checked parser and the schema accept the same arrays, but for the two
+//! refusals that need more than the layout (listed there).
+
+use crate::laws::coulomb::DEFAULT_SLIP_TOLERANCE;
+
+use super::LAW_COULOMB;
+use super::schema::Default::{Described, Required, Value};
+use super::schema::{Class, Entry, Layout, PropsBuilder, Rule, Variant};
+
+/// `PROPS(7)`: the stick modes.
+const STICK: Class = Class::Choice(&[
+    (0, "elastic stick (penalty)"),
+    (1, "exact stick (`LM = 1`)"),
+    (2, "rough"),
+    (3, "viscous stick for steady-state transport"),
+]);
+
+/// `PROPS(8)`: the μ laws.
+const MU_LAW: Class = Class::Choice(&[
+    (0, "constant"),
+    (
+        1,
+        "exponential decay μ = μ_k + (μ_s − μ_k)·exp(−d_c·γ̇_eq) with μ_s = `PROPS(2)`",
+    ),
+    (
+        2,
+        "table μ(γ̇_eq, p, θ̄) of the interaction (`CINAME`) from `INTERFACIAL_CONFIG` \
+         ([config.md](config.md#friction-tables-interactionsnamefriction)); `PROPS(2)` > 0 is \
+         then only the reference of the anisotropy ratio μ₂/μ₁ = `PROPS(3)`/`PROPS(2)`",
+    ),
+]);
+
+/// `PROPS(7) = 3`, steady-state transport.
+const VISCOUS: i32 = 3;
+
+/// The whole law-1 layout: the plain entries `PROPS(1..7)`, then anisotropy (`PROPS(3)`), the
+/// μ law (`PROPS(8..13)`), HHT (`PROPS(14..16)`, or steady transport's ω, axis and γ̇_crit
+/// variant when `PROPS(7) = 3`), damping (`PROPS(17..19)`) and frozen μ (`PROPS(20)`).
+#[rustfmt::skip]
+pub const COULOMB: Layout = Layout {
+    law: "Coulomb law",
+    code: LAW_COULOMB,
+    entries: &[
+        Entry::new(1, "code", "law code", Class::Code(LAW_COULOMB)).when_absent(Required),
+        Entry::new(2, "mu", "friction coefficient", Class::NonNegative)
+            .symbol("μ").when_absent(Required),
+        Entry::new(3, "mu2", "second-direction coefficient", Class::OffOrPositive)
+            .symbol("μ₂").when_absent(Described("isotropic"))
+            .note("anisotropy; μ = `PROPS(2)` is μ₁, which must then be > 0 unless μ₂ = μ₁"),
+        Entry::new(4, "tau_max", "shear stress limit, τ_crit = min(μp, τ_max)", Class::OffOrPositive)
+            .symbol("τ_max").unit("stress").when_absent(Described("no limit")),
+        Entry::new(5, "gamma_crit", "allowable elastic slip", Class::OffOrPositive)
+            .symbol("γ_crit").unit("length").when_absent(Described("`PROPS(6)` × `CHRLNGTH`"))
+            .note("absolute; wins over `PROPS(6)`"),
+        Entry::new(6, "slip_tolerance", "slip tolerance", Class::OffOrPositive)
+            .when_absent(Value(DEFAULT_SLIP_TOLERANCE))
+            .note("γ_crit = tolerance × `CHRLNGTH`; F_f of steady transport"),
+        Entry::new(7, "stick", "stick", STICK),
+        Entry::new(8, "mu_law", "μ law", MU_LAW),
+        Entry::new(9, "mu_k", "kinetic coefficient (direction 1) of the decay law", Class::NonNegative)
+            .symbol("μ_k").note("0 is a valid μ_k"),
+        Entry::new(10, "decay", "decay coefficient", Class::OffOrPositive)
+            .symbol("d_c").unit("time/length").when_absent(Described("— (required by the decay law)")),
+        Entry::new(11, "p_ref", "pressure dependence μ ← μ/(1 + p/p_ref)", Class::OffOrPositive)
+            .symbol("p_ref").unit("stress").when_absent(Described("none"))
+            .note("μp saturates at μ·p_ref"),
+        Entry::new(12, "b_theta", "temperature dependence μ ← μ·exp(−b_θ(θ̄ − θ_ref))", Class::Finite)
+            .symbol("b_θ").unit("1/temperature").when_absent(Described("none (`TEMP` not read)"))
+            .note("θ̄ = (`TEMP(1)`+`TEMP(2)`)/2"),
+        Entry::new(13, "theta_ref", "reference temperature of `PROPS(12)`", Class::Finite)
+            .symbol("θ_ref").unit("temperature"),
+        Entry::new(14, "hht_alpha", "HHT α: dynamics; slip rates use Δt_rate = β·Δt/γ", HHT_ALPHA)
+            .symbol("α").when_absent(Described("static (Δt_rate = Δt)"))
+            .note("HHT is on when any of `PROPS(14..16)` is non-zero"),
+        Entry::new(15, "hht_beta", "HHT β", Class::OffOrPositive)
+            .symbol("β").when_absent(Described("(1 − α)²/4")),
+        Entry::new(16, "hht_gamma", "HHT γ", Class::OffOrPositive)
+            .symbol("γ").when_absent(Described("1/2 − α")),
+        Entry::new(17, "damping", "tangential damping coefficient at zero overclosure", Class::OffOrPositive)
+            .symbol("c₀").unit("stress·time/length").when_absent(Described("no damping"))
+            .note("τ_v = c·γ̇ added to the friction stress"),
+        Entry::new(18, "damping_clearance", "clearance at which the damping coefficient vanishes", Class::NonNegative)
+            .symbol("g₀").unit("length"),
+        Entry::new(19, "damping_fraction", "fraction of [0, g₀] over which c = c₀", FRACTION_BELOW_ONE)
+            .symbol("f"),
+        Entry::new(20, "frozen", "μ's slip rate", FROZEN),
+    ],
+    rules: &[
+        Rule::ZeroWhen { entry: 5, on: 7, value: VISCOUS,
+            why: "viscous stick uses the slip tolerance F_f = PROPS(6), not γ_crit" },
+        Rule::PositiveWhen { entry: 2, on: 8, value: 1, why: "the exponential decay law" },
+        Rule::PositiveWhen { entry: 2, on: 8, value: 2, why: "the reference of a μ table" },
+        Rule::ZeroWhen { entry: 9, on: 8, value: 0, why: "constant μ" },
+        Rule::ZeroWhen { entry: 9, on: 8, value: 2, why: "the μ table carries the rate dependence" },
+        Rule::ZeroWhen { entry: 10, on: 8, value: 0, why: "constant μ" },
+        Rule::PositiveWhen { entry: 10, on: 8, value: 1, why: "the exponential decay law" },
+        Rule::ZeroWhen { entry: 10, on: 8, value: 2, why: "the μ table carries the rate dependence" },
+        Rule::ZeroWhen { entry: 11, on: 8, value: 2, why: "the μ table carries the pressure dependence" },
+        Rule::ZeroWhen { entry: 12, on: 8, value: 2, why: "the μ table carries the temperature dependence" },
+        Rule::ZeroWhen { entry: 13, on: 8, value: 2, why: "the μ table carries the temperature dependence" },
+        Rule::ZeroWhen { entry: 13, on: 12, value: 0, why: "no temperature law" },
+        Rule::ZeroWhen { entry: 18, on: 17, value: 0, why: "no damping" },
+        Rule::ZeroWhen { entry: 19, on: 17, value: 0, why: "no damping" },
+        Rule::ZeroWhen { entry: 20, on: 8, value: 0, why: "μ does not depend on the slip rate" },
+    ],
+    variants: &[STEADY_TRANSPORT],
+};
+
+/// `PROPS(14)`: HHT α.
+const HHT_ALPHA: Class = Class::Interval {
+    lo: -0.5,
+    hi: 0.0,
+    open_hi: false,
+};
+
+/// `PROPS(19)`: [0, 1).
+const FRACTION_BELOW_ONE: Class = Class::Interval {
+    lo: 0.0,
+    hi: 1.0,
+    open_hi: true,
+};
+
+/// `PROPS(20)`.
+const FROZEN: Class = Class::Switch {
+    off: "end-of-increment rate (implicit)",
+    on: "frozen at its start-of-increment rate (`STATEV(2)`), explicit in the rate; needs a rate law",
+};
+
+/// Steady-state transport (`PROPS(7) = 3`, seed 000): `PROPS(14..16)` are ω, the spinning axis
+/// and the allowable viscous slip rate's variant instead of HHT (off then).
+#[rustfmt::skip]
+pub const STEADY_TRANSPORT: Variant = Variant {
+    name: "steady-state transport",
+    on: 7,
+    value: VISCOUS,
+    entries: &[
+        Entry::new(14, "omega", "angular spinning velocity of steady-state transport", Class::Positive)
+            .symbol("ω").unit("1/time").when_absent(Described("— (required)"))
+            .note("HHT is then off"),
+        Entry::new(15, "axis", "spinning axis through the origin", AXIS)
+            .when_absent(Described("3 (z)")),
+        Entry::new(16, "viscous_reference", "allowable viscous slip rate", VISCOUS_REFERENCE),
+    ],
+};
+
+/// `PROPS(15)` under steady transport.
+const AXIS: Class = Class::Choice(&[(0, "the default, z"), (1, "x"), (2, "y"), (3, "z")]);
+
+/// `PROPS(16)` under steady transport.
+const VISCOUS_REFERENCE: Class = Class::Switch {
+    off: "γ̇_crit = 2·F_f·ω·R (seed 000)",
+    on: "γ̇_crit = F_f·ω·R (seed 003, \"a fraction of the relative tangential velocity\")",
+};
+
+/// A law-1 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
+/// starts at its "0 / absent" value, `PROPS(1) = 1`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CoulombBuilder(PropsBuilder);
+
+impl Default for CoulombBuilder {
+    fn default() -> Self {
+        CoulombBuilder(PropsBuilder::new(&COULOMB))
+    }
+}
+
+/// One setter per entry, each by the entry's key in [`COULOMB`] (an unknown key does not
+/// compile).
+macro_rules! setters {
+    ($($method:ident => $key:literal),* $(,)?) => {
+        $(
+            #[doc = concat!("Sets `", $key, "` (docs/props.md, law 1).")]
+            #[must_use]
+            pub fn $method(self, v: f64) -> Self {
+                const INDEX: usize = COULOMB.index_of($key);
+                CoulombBuilder(self.0.set(INDEX, v))
+            }
+        )*
+    };
+}
+
+impl CoulombBuilder {
+    /// Every entry at its "0 / absent" value, `PROPS(1) = 1`.
+    #[must_use]
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    setters! {
+        mu => "mu",
+        mu2 => "mu2",
+        tau_max => "tau_max",
+        gamma_crit => "gamma_crit",
+        slip_tolerance => "slip_tolerance",
+        stick => "stick",
+        mu_law => "mu_law",
+        mu_k => "mu_k",
+        decay => "decay",
+        p_ref => "p_ref",
+        b_theta => "b_theta",
+        theta_ref => "theta_ref",
+        hht_alpha => "hht_alpha",
+        hht_beta => "hht_beta",
+        hht_gamma => "hht_gamma",
+        omega => "omega",
+        axis => "axis",
+        viscous_reference => "viscous_reference",
+        damping => "damping",
+        damping_clearance => "damping_clearance",
+        damping_fraction => "damping_fraction",
+        frozen => "frozen",
+    }
+
+    /// All 20 entries.
+    #[must_use]
+    pub fn build(&self) -> Vec<f64> {
+        self.0.build()
+    }
+
+    /// The first `nprops` entries (a host that leaves out trailing ones, e.g. 7 for the plain
+    /// law).
+    #[must_use]
+    pub fn build_first(&self, nprops: usize) -> Vec<f64> {
+        self.0.build_first(nprops)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::props::schema::{Cause, Default};
+    use crate::props::{COULOMB_EXTENDED_NPROPS, FrictionLaw, coulomb_extended};
+    use proptest::prelude::*;
+
+    /// `PROPS` values around the classes' edges, mostly 0 so that many arrays are valid.
+    fn entry() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            8 => Just(0.0),
+            1 => Just(-0.0),
+            2 => Just(1.0),
+            1 => Just(2.0),
+            1 => Just(3.0),
+            1 => Just(4.0),
+            1 => Just(0.5),
+            1 => Just(-0.5),
+            1 => Just(-0.2),
+            1 => Just(-1.0),
+            1 => Just(f64::NAN),
+            1 => Just(f64::INFINITY),
+            1 => Just(f64::NEG_INFINITY),
+            1 => 0.0..3.0f64,
+        ]
+    }
+
+    /// What the checked parser refuses beyond the layout (the law's own conditions, not a
+    /// single entry's class or a rule between two entries): anisotropy needs μ₁ > 0, and the
+    /// μ table (`PROPS(8) = 2`) needs the interaction's table, which only `fric_` and
+    /// `fric_coef_` look up (never passed here); and the decay law's ratio μ_k/μ_s must be
+    /// finite (both entries valid, their ratio overflowing).
+    fn refused_beyond_the_layout(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> bool {
+        let (mu, mu2) = (e[1], e[2]);
+        (mu2 != 0.0 && mu2 != mu && mu == 0.0)
+            || e[7] == 2.0
+            || (e[7] == 1.0 && !(e[8] / mu).is_finite())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 20000, failure_persistence: None, ..ProptestConfig::default() })]
+
+        /// The schema and the checked parser `coulomb_extended` accept the same law-1 arrays
+        /// (0 to 22 entries), but for [`refused_beyond_the_layout`]; and what the schema
+        /// refuses by an entry's class or a rule, the parser refuses too.
+        #[test]
+        fn schema_and_checked_parser_accept_the_same_arrays(
+            mut props in prop::collection::vec(entry(), 0..23),
+            live in prop::collection::vec(0usize..20, 0..4),
+            stick in prop::sample::select(vec![0.0, 0.0, 1.0, 2.0, 3.0, 3.0]),
+            mu_law in prop::sample::select(vec![0.0, 0.0, 1.0, 1.0, 2.0]),
+        ) {
+            // Most entries 0 but a few live ones, and the mode switches mostly valid, so that
+            // both outcomes are common.
+            for (i, v) in props.iter_mut().enumerate() {
+                if i >= 2 && !live.contains(&i) && i != 6 && i != 7 {
+                    *v = 0.0;
+                }
+            }
+            if let Some(v) = props.first_mut() {
+                *v = 1.0;
+            }
+            if props.len() > 6 && !live.contains(&6) {
+                props[6] = stick;
+            }
+            if props.len() > 7 && !live.contains(&7) {
+                props[7] = mu_law;
+            }
+            let old = coulomb_extended(&props);
+            let new = COULOMB.check::<COULOMB_EXTENDED_NPROPS>(&props);
+            match (&old, &new) {
+                (Ok(_), Ok(_)) | (Err(_), Err(_)) => {}
+                (Ok(law), Err(e)) => prop_assert!(false, "{props:?}: parser {law:?}, schema {e}"),
+                (Err(m), Ok(e)) => prop_assert!(
+                    refused_beyond_the_layout(e),
+                    "{props:?}: parser {m}, schema accepts"
+                ),
+            }
+        }
+    }
+
+    /// The classes' edges, one entry at a time on a valid base: both readers draw the line
+    /// at the same value.
+    #[test]
+    fn edges_agree_entry_by_entry() {
+        let edges = [
+            0.0,
+            -0.0,
+            1e-300,
+            -1e-300,
+            0.5,
+            -0.5,
+            -0.5000001,
+            0.9999999,
+            1.0,
+            2.0,
+            3.0,
+            4.0,
+            -1.0,
+            f64::MAX,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ];
+        let bases = [
+            CoulombBuilder::new().mu(0.3).build(),
+            CoulombBuilder::new()
+                .mu(0.3)
+                .mu_law(1.0)
+                .mu_k(0.1)
+                .decay(2.0)
+                .damping(1.0)
+                .build(),
+            CoulombBuilder::new().mu(0.3).stick(3.0).omega(10.0).build(),
+            CoulombBuilder::new()
+                .mu(0.3)
+                .b_theta(0.01)
+                .hht_alpha(-0.1)
+                .build(),
+        ];
+        let (mut refused, mut accepted) = (0, 0);
+        for base in &bases {
+            assert!(
+                COULOMB.check::<COULOMB_EXTENDED_NPROPS>(base).is_ok(),
+                "{base:?}"
+            );
+            for i in 1..COULOMB_EXTENDED_NPROPS {
+                for v in edges {
+                    let mut props = base.clone();
+                    props[i] = v;
+                    let old = coulomb_extended(&props);
+                    let new = COULOMB.check::<COULOMB_EXTENDED_NPROPS>(&props);
+                    let beyond = new.as_ref().is_ok_and(refused_beyond_the_layout);
+                    assert_eq!(
+                        old.is_ok(),
+                        new.is_ok() && !beyond,
+                        "{props:?}: {old:?} / {new:?}"
+                    );
+                    refused += usize::from(new.is_err());
+                    accepted += usize::from(old.is_ok());
+                }
+            }
+        }
+        // The sweep reaches both answers (it is not comparing two "yes" or two "no").
+        assert!(refused > 100 && accepted > 100, "{refused} {accepted}");
+    }
+
+    /// The entries' positions are those of docs/props.md's law-1 table, written out by hand
+    /// here; distinct values catch a setter wired to a neighbour.
+    #[test]
+    fn builder_setters_reach_their_entries() {
+        let props = CoulombBuilder::new()
+            .mu(0.3)
+            .mu2(0.4)
+            .tau_max(5.0)
+            .gamma_crit(1e-3)
+            .slip_tolerance(0.02)
+            .stick(1.0)
+            .mu_law(1.0)
+            .mu_k(0.1)
+            .decay(7.0)
+            .p_ref(8.0)
+            .b_theta(0.009)
+            .theta_ref(300.0)
+            .hht_alpha(-0.1)
+            .hht_beta(0.3)
+            .hht_gamma(0.6)
+            .damping(11.0)
+            .damping_clearance(0.12)
+            .damping_fraction(0.13)
+            .frozen(1.0)
+            .build();
+        let by_hand = [
+            1.0, 0.3, 0.4, 5.0, 1e-3, 0.02, 1.0, 1.0, 0.1, 7.0, 8.0, 0.009, 300.0, -0.1, 0.3, 0.6,
+            11.0, 0.12, 0.13, 1.0,
+        ];
+        assert_eq!(props, by_hand);
+        assert!(matches!(
+            coulomb_extended(&props),
+            Ok(FrictionLaw::CoulombExtended(_))
+        ));
+        let viscous = CoulombBuilder::new()
+            .mu(0.3)
+            .stick(3.0)
+            .omega(14.0)
+            .axis(1.0)
+            .viscous_reference(1.0)
+            .build_first(16);
+        assert_eq!(
+            viscous,
+            [
+                1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 3.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 14.0, 1.0, 1.0
+            ]
+        );
+        assert!(coulomb_extended(&viscous).is_ok());
+        assert_eq!(CoulombBuilder::new().mu(0.3).build_first(2), [1.0, 0.3]);
+    }
+
+    #[test]
+    fn the_schema_is_consistent() {
+        let mut optional_seen = false;
+        for (i, e) in COULOMB.entries.iter().enumerate() {
+            assert_eq!(e.index, i + 1, "{e:?}");
+            let required = matches!(e.default, Default::Required);
+            assert!(!(required && optional_seen), "{e:?}");
+            optional_seen |= !required;
+            if !required {
+                assert!(e.class.admits(0.0) && e.class.admits(-0.0), "{e:?}");
+            }
+        }
+        assert_eq!(COULOMB.required_len(), 2);
+        assert_eq!(COULOMB.entries.len(), 20);
+        for rule in COULOMB.rules {
+            assert!(rule.entry() <= 20 && rule.other() <= 20, "{rule:?}");
+        }
+        // A variant redefines entries of the layout, and its switch is a value its entry
+        // accepts.
+        for variant in COULOMB.variants {
+            assert!(
+                COULOMB
+                    .entry(variant.on)
+                    .class
+                    .admits(f64::from(variant.value))
+            );
+            for e in variant.entries {
+                assert!(e.index <= COULOMB.entries.len(), "{e:?}");
+            }
+        }
+        // The fast validator declines a layout with variants (the checked path decides).
+        assert!(!COULOMB.admits(&[1.0, 0.3], None));
+    }
+
+    /// The refusals name the entry in force: HHT α or steady transport's ω for `PROPS(14)`,
+    /// and the rule that ties an entry to a switch.
+    #[test]
+    fn refusals_name_the_entry_in_force() {
+        let hht = CoulombBuilder::new().mu(0.3).hht_alpha(0.5).build();
+        let e = COULOMB.check::<20>(&hht).unwrap_err();
+        assert_eq!(
+            e.cause(),
+            &Cause::OutOfClass {
+                index: 14,
+                value: 0.5
+            }
+        );
+        assert_eq!(
+            e.to_string(),
+            "PROPS(14): HHT α: dynamics; slip rates use Δt_rate = β·Δt/γ α = 0.5 must be in \
+             [−1/2, 0]"
+        );
+        let viscous = CoulombBuilder::new().mu(0.3).stick(3.0).build();
+        let e = COULOMB.check::<20>(&viscous).unwrap_err();
+        assert_eq!(
+            e.cause(),
+            &Cause::OutOfClass {
+                index: 14,
+                value: 0.0
+            }
+        );
+        assert!(
+            e.to_string().contains("ω = 0 must be finite and > 0"),
+            "{e}"
+        );
+        let unread = CoulombBuilder::new().mu(0.3).mu_k(0.1).build();
+        let e = COULOMB.check::<20>(&unread).unwrap_err();
+        assert_eq!(e.index(), Some(9));
+        assert_eq!(
+            e.to_string(),
+            "PROPS(9) = 0.1 is not read when PROPS(8) = 0 (constant μ); refusing to ignore it"
+        );
+        let decay = CoulombBuilder::new().mu(0.3).mu_law(1.0).mu_k(0.1).build();
+        let e = COULOMB.check::<20>(&decay).unwrap_err();
+        assert_eq!(e.index(), Some(10));
+        assert!(
+            e.to_string().contains("must be > 0 when PROPS(8) = 1"),
+            "{e}"
+        );
+        let stick = CoulombBuilder::new().mu(0.3).stick(4.0).build();
+        let e = COULOMB.check::<20>(&stick).unwrap_err();
+        assert!(
+            e.to_string()
+                .ends_with("must be 0 (elastic stick (penalty)), 1 (exact stick (`LM = 1`)), 2 (rough) or 3 (viscous stick for steady-state transport)"),
+            "{e}"
+        );
+    }
+}
