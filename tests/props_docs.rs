@@ -4,8 +4,8 @@
 
 use std::path::Path;
 
-use interfacial::props::ADHESIVE;
 use interfacial::props::schema::Layout;
+use interfacial::props::{ADHESIVE, COULOMB};
 
 /// The marker pair around the table of `law` in docs/props.md.
 fn markers(law: &str) -> (String, String) {
@@ -52,7 +52,7 @@ fn check(layouts: &[(&str, &Layout)]) {
 
 #[test]
 fn props_tables_are_up_to_date() {
-    check(&[("law 2", &ADHESIVE)]);
+    check(&[("law 1", &COULOMB), ("law 2", &ADHESIVE)]);
 }
 
 /// The check itself can fail: a table that differs from the schema by one character is caught,
@@ -90,4 +90,27 @@ fn the_table_says_what_the_schema_means() {
     );
     assert!(row(9).contains("| 0.005 |"), "{}", row(9));
     assert!(row(13).contains("| 0.5 | in (0, 1] |"), "{}", row(13));
+}
+
+/// Law 1's table against the layout's meaning: one row per entry plus one per entry that
+/// steady transport (`PROPS(7) = 3`) redefines, each saying when it holds; the switches' codes
+/// and the rules between entries are in the "valid" column.
+#[test]
+fn the_law_1_table_says_what_the_schema_means() {
+    let table = COULOMB.markdown_table();
+    let row = |start: &str| {
+        table
+            .lines()
+            .find(|l| l.starts_with(start))
+            .unwrap_or_else(|| panic!("no row starting {start}"))
+            .to_string()
+    };
+    assert_eq!(table.lines().count(), 2 + 20 + 3);
+    assert!(row("| `PROPS(1)` |").ends_with("| exactly 1 |"));
+    assert!(row("| `PROPS(6)` |").contains("| 0.005 |"));
+    assert!(row("| `PROPS(7)` |").ends_with("| 0, 1, 2 or 3 |"));
+    assert!(row("| `PROPS(14)` (`PROPS(7) = 3`) |").contains("| ω |"));
+    assert!(row("| `PROPS(14)` (`PROPS(7)` ≠ 3) |").ends_with("| in [−1/2, 0] |"));
+    assert!(row("| `PROPS(19)` |").contains("in [0, 1); 0 when `PROPS(17) = 0`"));
+    assert!(row("| `PROPS(9)` |").contains("0 when `PROPS(8) = 0`"));
 }

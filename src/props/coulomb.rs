@@ -151,7 +151,7 @@ pub const STEADY_TRANSPORT: Variant = Variant {
 };
 
 /// `PROPS(15)` under steady transport.
-const AXIS: Class = Class::Choice(&[(0, "the default, z"), (1, "x"), (2, "y"), (3, "z")]);
+const AXIS: Class = Class::Choice(&[(0, "z (the default)"), (1, "x"), (2, "y"), (3, "z")]);
 
 /// `PROPS(16)` under steady transport.
 const VISCOUS_REFERENCE: Class = Class::Switch {
