@@ -530,18 +530,16 @@ pub fn coulomb_extended_with_table(
             "the Coulomb law reads PROPS(1..20)",
         ));
     }
+    // The entries padded with zeros (absent = 0), for the rules of the schema (COULOMB), which
+    // say which entry is read when; this parser keeps its own order of checks.
+    let e: [f64; COULOMB_EXTENDED_NPROPS] = std::array::from_fn(|i| get(i + 1));
+    let rules_of = |index| COULOMB.rules_of(&e, index).map_err(LawError::from);
     // PROPS(7) = 3: viscous stick for steady-state transport; the base law is read with an
     // elastic-stick placeholder, and PROPS(14..16) are ω, the axis and the γ̇_crit variant
-    // instead of HHT.
+    // instead of HHT. γ_crit (PROPS(5)) is not read then.
+    rules_of(5)?;
     let viscous = get(7) == 3.0;
     let base = if viscous {
-        if get(5) != 0.0 {
-            return Err(unused_entry(
-                5,
-                get(5),
-                "viscous stick uses the slip tolerance F_f = PROPS(6), not γ_crit",
-            ));
-        }
         let mut elastic = props.to_vec();
         elastic[6] = 0.0;
         coulomb(&elastic)?
@@ -566,20 +564,13 @@ pub fn coulomb_extended_with_table(
     let mut coefficient = CoefficientLaw::default();
     match get(8) {
         0.0 => {
-            for i in [9, 10] {
-                if get(i) != 0.0 {
-                    return Err(unused_entry(i, get(i), "PROPS(8) = 0 (constant μ)"));
-                }
-            }
+            rules_of(9)?;
+            rules_of(10)?;
         }
         1.0 => {
             let (mu_k, decay) = (get(9), get(10));
-            if mu.is_nan() || mu <= 0.0 {
-                return Err(LawError::Parameter(format!(
-                    "PROPS(2) = μ_s = {mu} must be > 0 with the exponential decay law \
-                     (PROPS(8) = 1)"
-                )));
-            }
+            // μ_s = PROPS(2) > 0 (and μ_s is finite, by the base law).
+            rules_of(2)?;
             if !(mu_k.is_finite() && mu_k >= 0.0) {
                 return Err(LawError::Parameter(format!(
                     "PROPS(9) = μ_k = {mu_k} must be finite and ≥ 0"
@@ -598,14 +589,7 @@ pub fn coulomb_extended_with_table(
                 ));
             };
             for i in 9..=13 {
-                if get(i) != 0.0 {
-                    return Err(unused_entry(
-                        i,
-                        get(i),
-                        "PROPS(8) = 2: the μ table carries the rate, pressure and temperature \
-                         dependence",
-                    ));
-                }
+                rules_of(i)?;
             }
             coefficient = coefficient
                 .with_table(table, mu)
@@ -627,12 +611,8 @@ pub fn coulomb_extended_with_table(
         coefficient = coefficient
             .with_temperature(get(12), get(13))
             .map_err(|e| in_props(12, e))?;
-    } else if get(13) != 0.0 {
-        return Err(unused_entry(
-            13,
-            get(13),
-            "PROPS(12) = 0 (no temperature law)",
-        ));
+    } else {
+        rules_of(13)?;
     }
     law = law.with_coefficient_law(coefficient);
     if viscous {
@@ -676,16 +656,17 @@ pub fn coulomb_extended_with_table(
         let d = Damping::new(get(17), get(18), get(19)).map_err(|e| in_props(17, e))?;
         law = law.with_damping(Some(d));
     } else {
-        for i in [18, 19] {
-            if get(i) != 0.0 {
-                return Err(unused_entry(i, get(i), "PROPS(17) = 0 (no damping)"));
-            }
-        }
+        rules_of(18)?;
+        rules_of(19)?;
     }
     match get(20) {
         0.0 => {}
         1.0 if coefficient.is_rate_dependent() => law = law.with_frozen_coefficient(true),
-        1.0 => return Err(unused_entry(20, 1.0, "μ does not depend on the slip rate")),
+        1.0 => {
+            // PROPS(8) = 0 (the schema's rule), or a μ table without a rate column.
+            rules_of(20)?;
+            return Err(unused_entry(20, 1.0, "μ does not depend on the slip rate"));
+        }
         other => {
             return Err(LawError::Parameter(format!(
                 "PROPS(20) = {other} must be 0 (μ at the end-of-increment rate) or 1 (μ frozen \

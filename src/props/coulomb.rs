@@ -516,4 +516,43 @@ mod tests {
             "{e}"
         );
     }
+
+    /// The checked parser takes its "not read" and "needed" refusals from the schema's rules:
+    /// each names the entry, the switch and why (the texts written out here).
+    #[test]
+    fn the_checked_parser_refuses_by_the_schema_rules() {
+        let refusal = |b: CoulombBuilder| match coulomb_extended(&b.build()) {
+            Err(crate::LawError::Parameter(m)) => m,
+            other => panic!("{other:?}"),
+        };
+        let base = || CoulombBuilder::new().mu(0.3);
+        assert_eq!(
+            refusal(base().mu_k(0.1)),
+            "PROPS(9) = 0.1 is not read when PROPS(8) = 0 (constant μ); refusing to ignore it"
+        );
+        assert_eq!(
+            refusal(base().stick(3.0).omega(1.0).gamma_crit(1e-3)),
+            "PROPS(5) = 0.001 is not read when PROPS(7) = 3 (viscous stick uses the slip \
+             tolerance F_f = PROPS(6), not γ_crit); refusing to ignore it"
+        );
+        assert_eq!(
+            refusal(base().theta_ref(300.0)),
+            "PROPS(13) = 300 is not read when PROPS(12) = 0 (no temperature law); refusing to \
+             ignore it"
+        );
+        assert_eq!(
+            refusal(base().damping_fraction(0.5)),
+            "PROPS(19) = 0.5 is not read when PROPS(17) = 0 (no damping); refusing to ignore it"
+        );
+        assert_eq!(
+            refusal(base().frozen(1.0)),
+            "PROPS(20) = 1 is not read when PROPS(8) = 0 (μ does not depend on the slip rate); \
+             refusing to ignore it"
+        );
+        assert_eq!(
+            refusal(CoulombBuilder::new().mu_law(1.0).decay(2.0)),
+            "PROPS(2): friction coefficient μ = 0 must be > 0 when PROPS(8) = 1 (the \
+             exponential decay law)"
+        );
+    }
 }
