@@ -25,6 +25,8 @@ C     8-character name must match (good) or be reported (bad) without
 C     a byte read past the hidden length.  Each call has its own
 C     element number, so a stale message cannot pass.
 C
+C     CHECK, CHKNR and GETMSG come from harness_f77.f.
+C
 C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
       PROGRAM TGBAD
@@ -474,53 +476,4 @@ C-----------------------------------------------------------------------
       END IF
       GO TO 10
    20 CLOSE (11)
-      END
-
-C-----------------------------------------------------------------------
-C     The calling thread's last error message, through the library's
-C     native C API (size_t ifl_last_error_copy(char *buf, size_t len):
-C     copies at most len-1 bytes and a NUL, returns the full length).
-C-----------------------------------------------------------------------
-      SUBROUTINE GETMSG(MSG, L)
-      USE, INTRINSIC :: ISO_C_BINDING, ONLY: C_SIZE_T
-      CHARACTER*(*) MSG
-      INTERFACE
-        FUNCTION IFLCPY(BUF, NBUF) BIND(C, NAME='ifl_last_error_copy')
-          USE, INTRINSIC :: ISO_C_BINDING, ONLY: C_CHAR, C_SIZE_T
-          INTEGER(C_SIZE_T) :: IFLCPY
-          CHARACTER(KIND=C_CHAR), DIMENSION(*) :: BUF
-          INTEGER(C_SIZE_T), VALUE :: NBUF
-        END FUNCTION IFLCPY
-      END INTERFACE
-      INTEGER(C_SIZE_T) :: NFULL
-      MSG = ' '
-      NFULL = IFLCPY(MSG, INT(LEN(MSG), C_SIZE_T))
-      L = INT(MIN(NFULL, INT(LEN(MSG) - 1, C_SIZE_T)))
-      END
-
-C-----------------------------------------------------------------------
-C     Tally; a failure prints the case and the check (first 40 only).
-C-----------------------------------------------------------------------
-      SUBROUTINE CHECK(OK, WHAT, K)
-      LOGICAL OK
-      CHARACTER*(*) WHAT
-      CHARACTER*48 CASE
-      COMMON /CTX/ CASE
-      COMMON /TALLY/ NPASS,NFAIL
-      IF (OK) THEN
-        NPASS = NPASS + 1
-      ELSE
-        NFAIL = NFAIL + 1
-        IF (NFAIL .LE. 40) WRITE (*,'(A,A,A,I0,A,A)') 'FAIL [',
-     1   TRIM(CASE), '] check ', K, ': ', WHAT
-      END IF
-      END
-
-      SUBROUTINE CHKNR(A, B, TOL, WHAT, K)
-      INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*(*) WHAT
-      COMMON /TALLY/ NPASS,NFAIL
-      CALL CHECK(ABS(A - B) .LE. TOL, WHAT, K)
-      IF (.NOT. (ABS(A - B) .LE. TOL) .AND. NFAIL .LE. 40)
-     1 WRITE (*,'(A,1P,3E24.15)') '   got, expected, tol:', A, B, TOL
       END

@@ -21,6 +21,8 @@ C     converged mean temperature; the flux is also the root of the
 C     quadratic that follows from h linear in the mean temperature.
 C
 C     The configuration file comes from CTest (INTERFACIAL_CONFIG).
+C     CHECK and CHKNR come from harness_f77.f.
+C
 C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
       PROGRAM TGAPT1
@@ -244,31 +246,4 @@ C     The quadratic for q (independent of the iteration).
       WRITE (*,'(A,I0,A,F11.6,A,F10.4,A,1P,E22.15)')
      1 '  T1 T1TEMP p = 50: fixed-point updates ', NIT,
      2 ', mean temperature', TM, ', h* =', HSTAR, ', q =', Q
-      END
-
-C-----------------------------------------------------------------------
-C     Tally; a failure prints the case and the check (first 40 only).
-C-----------------------------------------------------------------------
-      SUBROUTINE CHECK(OK, WHAT, K)
-      LOGICAL OK
-      CHARACTER*(*) WHAT
-      CHARACTER*48 CASE
-      COMMON /CTX/ CASE
-      COMMON /TALLY/ NPASS,NFAIL
-      IF (OK) THEN
-        NPASS = NPASS + 1
-      ELSE
-        NFAIL = NFAIL + 1
-        IF (NFAIL .LE. 40) WRITE (*,'(A,A,A,I0,A,A)') 'FAIL [',
-     1   TRIM(CASE), '] check ', K, ': ', WHAT
-      END IF
-      END
-
-      SUBROUTINE CHKNR(A, B, TOL, WHAT, K)
-      INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*(*) WHAT
-      COMMON /TALLY/ NPASS,NFAIL
-      CALL CHECK(ABS(A - B) .LE. TOL, WHAT, K)
-      IF (.NOT. (ABS(A - B) .LE. TOL) .AND. NFAIL .LE. 40)
-     1 WRITE (*,'(A,1P,3E24.15)') '   got, expected, tol:', A, B, TOL
       END

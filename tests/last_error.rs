@@ -3,6 +3,9 @@
 //! `ifl_clear_error` empties it. Checked for every entry point: a failure is recorded, then a
 //! successful call of each entry point in turn must leave that text untouched.
 
+#[path = "common/fric_coef.rs"]
+mod fric_coef_common;
+use fric_coef_common::fric_coef_call;
 use std::ffi::{CStr, c_char, c_int};
 use std::sync::Once;
 
@@ -10,7 +13,7 @@ use interfacial::abi::host::{FricCall, GapconCall};
 use interfacial::abi::uinter_host::UinterCall;
 use interfacial::abi::vfric::{IflReal, vfric_};
 use interfacial::abi::{
-    IflConductance, IflStatus, fric_coef_, ifl_clear_error, ifl_forced_sliding, ifl_fric_batch,
+    IflConductance, IflStatus, ifl_clear_error, ifl_forced_sliding, ifl_fric_batch,
     ifl_gap_conductance, ifl_gap_conductance_n, ifl_last_error, ifl_last_error_copy,
 };
 
@@ -76,36 +79,8 @@ fn uinter_ok() {
 fn fric_coef_ok() {
     let (mut coef, mut deriv) = ([0.0f64; 2], [0.0f64; 40]);
     let props = [1.0, 0.3, 0.0, 0.0, 1e-3];
-    let (nb, np, nt, nf) = (1 as c_int, props.len() as c_int, 1 as c_int, 0 as c_int);
-    let idata = [1 as c_int; 6];
-    let rdata = [0.0f64; 8];
-    let slip = [0.0f64; 6];
-    let (p, t, field) = ([100.0f64], [20.0f64], [0.0f64]);
-    let name = [b' '; 80];
-    // SAFETY: arrays sized for nBlock = 1 per the FRIC_COEF contract, names of length 80.
-    unsafe {
-        fric_coef_(
-            coef.as_mut_ptr(),
-            deriv.as_mut_ptr(),
-            &nb,
-            &np,
-            &nt,
-            &nf,
-            idata.as_ptr(),
-            rdata.as_ptr(),
-            name.as_ptr().cast(),
-            name.as_ptr().cast(),
-            name.as_ptr().cast(),
-            props.as_ptr(),
-            slip.as_ptr(),
-            p.as_ptr(),
-            t.as_ptr(),
-            field.as_ptr(),
-            80,
-            80,
-            80,
-        );
-    }
+    let (slip, p, t) = ([0.0f64; 6], [100.0f64], [20.0f64]);
+    fric_coef_call(&mut coef, &mut deriv, &props, &slip, &p, &t, &[b' '; 80]);
     assert_eq!(coef, [0.3, 0.3], "fric_coef_ succeeded");
 }
 
