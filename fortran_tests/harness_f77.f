@@ -3,7 +3,8 @@ C     harness_f77.f -- the routines the fixed-form harnesses share
 C     (test_fric_f1.f, test_fric_bad_input.f, test_gapcon_t1.f,
 C     test_gapcon_bad_input.f): the tally CHECK / CHKNR, the sentinel
 C     guard GUARD1, the host arguments a Coulomb call does not use
-C     (HOSTIN) and the thread's last library message (GETMSG).
+C     (HOSTIN), the thread's last library message (GETMSG) and one
+C     checked GAPCON call (GAPONE, with SAMEB).
 C     Fixed-form Fortran 77 like its callers, which share with it
 C       COMMON /TALLY/ NPASS,NFAIL   (zeroed by the program)
 C       COMMON /CTX/ CASE            (CHARACTER*48, the current case).
@@ -119,4 +120,68 @@ C-----------------------------------------------------------------------
       MSG = ' '
       NFULL = IFLCPY(MSG, INT(LEN(MSG), C_SIZE_T))
       L = INT(MIN(NFULL, INT(LEN(MSG) - 1, C_SIZE_T)))
+      END
+
+C-----------------------------------------------------------------------
+C     One GAPCON call as Abaqus makes it, CHARACTER*80 names: AK(1..5)
+C     preset to a sentinel, D = (CLR, P), TEMP = (TA, TB), element
+C     NOEL, node 7; the arguments GAPCON does not read hold harmless
+C     values.  Checks AK(1) written (a failure writes 0), AK(2..5)
+C     untouched and the inputs unchanged bit for bit (a NaN input must
+C     still be that NaN).  Returns AK(1).
+C-----------------------------------------------------------------------
+      SUBROUTINE GAPONE(NAME, CLR, P, TA, TB, NOEL, AK1)
+      INCLUDE 'ABA_PARAM.INC'
+      CHARACTER*(*) NAME
+      CHARACTER*80 CINAME,SLNAME,MSNAME
+      PARAMETER (SENT=-999.25D0)
+      DIMENSION AK(5),D(2),FLOWM(2),TEMP(2),PREDEF(2,1),TIME(2),
+     1 COORDS(3)
+      LOGICAL OK, SAMEB
+      CINAME = NAME
+      SLNAME = 'SLAVE'
+      MSNAME = 'MASTER'
+      DO 10 I = 1, 5
+        AK(I) = SENT
+   10 CONTINUE
+      D(1) = CLR
+      D(2) = P
+      FLOWM(1) = 0.0D0
+      FLOWM(2) = 0.0D0
+      TEMP(1) = TA
+      TEMP(2) = TB
+      PREDEF(1,1) = 0.0D0
+      PREDEF(2,1) = 0.0D0
+      TIME(1) = 1.0D0
+      TIME(2) = 1.0D0
+      COORDS(1) = 0.0D0
+      COORDS(2) = 0.0D0
+      COORDS(3) = 0.0D0
+      NODE = 7
+      NPRED = 1
+      KSTEP = 1
+      KINC = 1
+      NOELIN = NOEL
+      CALL GAPCON(AK,D,FLOWM,TEMP,PREDEF,TIME,CINAME,SLNAME,MSNAME,
+     1 COORDS,NOELIN,NODE,NPRED,KSTEP,KINC)
+      AK1 = AK(1)
+      OK = .TRUE.
+      DO 20 I = 2, 5
+        IF (AK(I) .NE. SENT) OK = .FALSE.
+   20 CONTINUE
+      CALL CHECK(OK, 'AK(2..5) untouched', NOEL)
+      CALL CHECK(SAMEB(D(1), CLR) .AND. SAMEB(D(2), P) .AND.
+     1 SAMEB(TEMP(1), TA) .AND. SAMEB(TEMP(2), TB) .AND.
+     2 CINAME .EQ. NAME .AND. NOELIN .EQ. NOEL .AND. NODE .EQ. 7,
+     3 'inputs not written', NOEL)
+      CALL CHECK(AK1 .NE. SENT, 'AK(1) written', NOEL)
+      END
+
+C     A and B the same bit for bit (a NaN equals that same NaN).
+      LOGICAL FUNCTION SAMEB(A, B)
+      INCLUDE 'ABA_PARAM.INC'
+      INTEGER*8 IA, IB
+      IA = TRANSFER(A, IA)
+      IB = TRANSFER(B, IB)
+      SAMEB = IA .EQ. IB
       END

@@ -25,7 +25,8 @@ C     8-character name must match (good) or be reported (bad) without
 C     a byte read past the hidden length.  Each call has its own
 C     element number, so a stale message cannot pass.
 C
-C     CHECK, CHKNR and GETMSG come from harness_f77.f.
+C     GAPONE (one checked GAPCON call), CHECK, CHKNR and GETMSG come
+C     from harness_f77.f.
 C
 C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
@@ -303,66 +304,6 @@ C
       END
 
 C-----------------------------------------------------------------------
-C     One GAPCON call with CHARACTER*80 names: AK(1..5) preset to a
-C     sentinel, D = (CLR, P), TEMP = (TA, TB), element NOEL, node 7.
-C     Checks AK(2..5) untouched and the inputs unchanged bit for bit
-C     (a NaN input must still be that NaN).  Returns AK(1).
-C-----------------------------------------------------------------------
-      SUBROUTINE GAPONE(NAME, CLR, P, TA, TB, NOEL, AK1)
-      INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*(*) NAME
-      CHARACTER*80 CINAME,SLNAME,MSNAME
-      PARAMETER (SENT=-999.25D0)
-      DIMENSION AK(5),D(2),FLOWM(2),TEMP(2),PREDEF(2,1),TIME(2),
-     1 COORDS(3)
-      LOGICAL OK, SAMEB
-      CINAME = NAME
-      SLNAME = 'SLAVE'
-      MSNAME = 'MASTER'
-      DO 10 I = 1, 5
-        AK(I) = SENT
-   10 CONTINUE
-      D(1) = CLR
-      D(2) = P
-      FLOWM(1) = 0.0D0
-      FLOWM(2) = 0.0D0
-      TEMP(1) = TA
-      TEMP(2) = TB
-      PREDEF(1,1) = 0.0D0
-      PREDEF(2,1) = 0.0D0
-      TIME(1) = 1.0D0
-      TIME(2) = 1.0D0
-      COORDS(1) = 0.0D0
-      COORDS(2) = 0.0D0
-      COORDS(3) = 0.0D0
-      NODE = 7
-      NPRED = 1
-      KSTEP = 1
-      KINC = 1
-      NOELIN = NOEL
-      CALL GAPCON(AK,D,FLOWM,TEMP,PREDEF,TIME,CINAME,SLNAME,MSNAME,
-     1 COORDS,NOELIN,NODE,NPRED,KSTEP,KINC)
-      AK1 = AK(1)
-      OK = .TRUE.
-      DO 20 I = 2, 5
-        IF (AK(I) .NE. SENT) OK = .FALSE.
-   20 CONTINUE
-      CALL CHECK(OK, 'AK(2..5) untouched', NOEL)
-      CALL CHECK(SAMEB(D(1), CLR) .AND. SAMEB(D(2), P) .AND.
-     1 SAMEB(TEMP(1), TA) .AND. SAMEB(TEMP(2), TB) .AND.
-     2 CINAME .EQ. NAME .AND. NOELIN .EQ. NOEL .AND. NODE .EQ. 7,
-     3 'inputs not written', NOEL)
-      END
-
-      LOGICAL FUNCTION SAMEB(A, B)
-      INCLUDE 'ABA_PARAM.INC'
-      INTEGER*8 IA, IB
-      IA = TRANSFER(A, IA)
-      IB = TRANSFER(B, IB)
-      SAMEB = IA .EQ. IB
-      END
-
-C-----------------------------------------------------------------------
 C     The last message must be "interfacial: ROUT: interaction 'NAME'
 C     (element NOEL, node 7): KIND: " (NOEL < 0: "(native call)") then
 C     CAUSE (IAT = 1: right after; IAT = 0: somewhere after).  KIND is
@@ -477,3 +418,4 @@ C-----------------------------------------------------------------------
       GO TO 10
    20 CLOSE (11)
       END
+
