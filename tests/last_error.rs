@@ -6,12 +6,14 @@
 #[path = "common/fric_coef.rs"]
 mod fric_coef_common;
 use fric_coef_common::fric_coef_call;
+#[path = "common/vfric.rs"]
+mod vfric_common;
 use std::ffi::{CStr, c_char, c_int};
 use std::sync::Once;
+use vfric_common::{Block as VfricBlock, call as vfric_call};
 
 use interfacial::abi::host::{FricCall, GapconCall};
 use interfacial::abi::uinter_host::UinterCall;
-use interfacial::abi::vfric::{IflReal, vfric_};
 use interfacial::abi::{
     IflConductance, IflStatus, ifl_clear_error, ifl_forced_sliding, ifl_fric_batch,
     ifl_gap_conductance, ifl_gap_conductance_n, ifl_last_error, ifl_last_error_copy,
@@ -162,67 +164,14 @@ fn fric_batch_ok() {
 
 fn vfric_ok() {
     // One sliding contact point: fTangential = -min(mu F_N, F_stick) = -min(0.3 * 10, 5) = -3.
-    let props: [IflReal; 2] = [1.0, 0.3];
-    let (f_normal, f_stick, area): ([IflReal; 1], [IflReal; 1], [IflReal; 1]) =
-        ([10.0], [5.0], [1.0]);
-    let mut ftan: [IflReal; 1] = [0.0];
-    let mut statev: [IflReal; 2] = [0.0; 2];
-    let jcon = [1 as c_int];
-    let idummy = [1 as c_int; 8];
-    let dummy: [IflReal; 32] = [0.0; 32];
-    let (one, zero, two, nprops) = (1 as c_int, 0 as c_int, 2 as c_int, 2 as c_int);
-    let r0: IflReal = 0.0;
-    let name = [b' '; 80];
-    // SAFETY: every array is at least as long as the VFRIC dimensions given (one point).
-    unsafe {
-        vfric_(
-            ftan.as_mut_ptr(),
-            statev.as_mut_ptr(),
-            &one,
-            &one,
-            &one,
-            &one,
-            &one,
-            &one,
-            &one,
-            &two,
-            &one,
-            &nprops,
-            &zero,
-            &zero,
-            &one,
-            idummy.as_ptr(),
-            idummy.as_ptr(),
-            jcon.as_ptr(),
-            idummy.as_ptr(),
-            &r0,
-            &r0,
-            &r0,
-            name.as_ptr().cast(),
-            name.as_ptr().cast(),
-            name.as_ptr().cast(),
-            &one,
-            dummy.as_ptr(),
-            f_stick.as_ptr(),
-            dummy.as_ptr(),
-            f_normal.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            props.as_ptr(),
-            area.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            80,
-            80,
-            80,
-        );
-    }
+    let ftan = vfric_call(&VfricBlock {
+        nfricdir: 1,
+        props: vec![1.0, 0.3],
+        f_normal: vec![10.0],
+        f_stick: vec![5.0],
+        area: vec![1.0],
+        jconslvid: vec![1],
+    });
     assert!((ftan[0] + 3.0).abs() < 1e-6, "vfric_ succeeded: {ftan:?}");
 }
 
