@@ -1,5 +1,6 @@
 ! harness_tally.f90 -- the pass/fail tally shared by the free-form Fortran harnesses that use it
 ! (the Fortran side of c_tests/harness.h): check, check_near (|got - want| <= rtol |want| + atol),
+! check_abs (|got - want| <= tol),
 ! the calling thread's last library message (ifl_last_error_copy) and check_contains. The
 ! current scene's name goes in `scene`; the first 40 failures are printed with it.
 module harness_tally
@@ -42,6 +43,15 @@ contains
     call check(ok, what)
     if (.not. ok .and. nfail <= 40) write (*, '(a,1p,2e25.16)') '   got, expected:', got, want
   end subroutine check_near
+
+  ! |got - want| <= tol (an absolute tolerance); a failure also prints got, expected and tol.
+  subroutine check_abs(got, want, tol, what)
+    real(dp), intent(in) :: got, want, tol
+    character(len=*), intent(in) :: what
+    call check(abs(got - want) <= tol, what)
+    if (.not. abs(got - want) <= tol .and. nfail <= 40) &
+      write (*, '(a,1p,3e24.15)') '   got, expected, tol:', got, want, tol
+  end subroutine check_abs
 
   ! The calling thread's last message (ifl_last_error_copy), '' when there is none.
   function last_error() result(msg)
