@@ -327,4 +327,32 @@ static inline double fh_ddtddg(const fh_fric *h, int a, int b)
     return h->ddtddg[(a - 1) + (b - 1) * h->nfdir];
 }
 
+/*
+ * The slip tangent along the unit direction d (NFDIR entries) against a central difference of
+ * fric_'s own TAU: d . DDTDDG . d at the increment h against
+ * d . (TAU(DGAM + hg d) - TAU(DGAM - hg d)) / (2 hg), hg = 1e-9, to the absolute tolerance atol.
+ * Three calls that must succeed, on copies of h.
+ */
+static inline void fh_check_tangent_along(const fh_fric *h, const double *d, double atol)
+{
+    fh_fric base = *h, plus = *h, minus = *h;
+    const double hg = 1e-9;
+    double an = 0.0, fd = 0.0;
+    int a, b;
+    fh_call_ok(&base);
+    for (a = 0; a < h->nfdir; a++) {
+        plus.dgam[a] += hg * d[a];
+        minus.dgam[a] -= hg * d[a];
+    }
+    fh_call_ok(&plus);
+    fh_call_ok(&minus);
+    for (a = 0; a < h->nfdir; a++) {
+        fd += d[a] * (plus.tau[a] - minus.tau[a]) / (2.0 * hg);
+        for (b = 0; b < h->nfdir; b++) {
+            an += d[a] * fh_ddtddg(&base, a + 1, b + 1) * d[b];
+        }
+    }
+    FH_NEAR(an, fd, 0.0, atol);
+}
+
 #endif /* FRIC_HARNESS_H */

@@ -94,26 +94,7 @@ static void steps(int nfdir, int exact, int frozen)
         FH_NEAR(mu, mu_of(v), 1e-15, 0.0);
         FH_NEAR(dmu, -DECAY * (MU_S - MU_K) * exp(-DECAY * v), 1e-14, 0.0);
         /* d tau/d DGAM along d against a central difference (not for frozen: same check). */
-        {
-            fh_fric base = h, plus = h, minus = h;
-            const double hg = 1e-9;
-            double an = 0.0, fd = 0.0;
-            int b;
-            fh_call_ok(&base);
-            for (a = 0; a < nfdir; a++) {
-                plus.dgam[a] += hg * d[a];
-                minus.dgam[a] -= hg * d[a];
-            }
-            fh_call_ok(&plus);
-            fh_call_ok(&minus);
-            for (a = 0; a < nfdir; a++) {
-                fd += d[a] * (plus.tau[a] - minus.tau[a]) / (2.0 * hg);
-                for (b = 0; b < nfdir; b++) {
-                    an += d[a] * fh_ddtddg(&base, a + 1, b + 1) * d[b];
-                }
-            }
-            FH_NEAR(an, fd, 0.0, 1e-5 * MU_S * P / GAMMA_CRIT);
-        }
+        fh_check_tangent_along(&h, d, 1e-5 * MU_S * P / GAMMA_CRIT);
     }
 }
 

@@ -79,24 +79,7 @@ static void steps(int nfdir, int exact, int frozen)
         FH_NEAR(sqrt(tau_eq), mu_tab(v) * P, 1e-11, 0.0);
         FH_NEAR(h.statev[1], v, 1e-11, 0.0);
         if (!exact) {
-            fh_fric base = h, plus = h, minus = h;
-            const double hg = 1e-9;
-            double an = 0.0, fd = 0.0;
-            int b;
-            fh_call_ok(&base);
-            for (a = 0; a < nfdir; a++) {
-                plus.dgam[a] += hg * d[a];
-                minus.dgam[a] -= hg * d[a];
-            }
-            fh_call_ok(&plus);
-            fh_call_ok(&minus);
-            for (a = 0; a < nfdir; a++) {
-                fd += d[a] * (plus.tau[a] - minus.tau[a]) / (2.0 * hg);
-                for (b = 0; b < nfdir; b++) {
-                    an += d[a] * fh_ddtddg(&base, a + 1, b + 1) * d[b];
-                }
-            }
-            FH_NEAR(an, fd, 0.0, 1e-5 * 0.6 * P / GAMMA_CRIT);
+            fh_check_tangent_along(&h, d, 1e-5 * 0.6 * P / GAMMA_CRIT);
         }
     }
 }
