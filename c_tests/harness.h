@@ -355,4 +355,28 @@ static inline void fh_check_tangent_along(const fh_fric *h, const double *d, dou
     FH_NEAR(an, fd, 0.0, atol);
 }
 
+/*
+ * A call that must be refused: PNEWDT < 1, the message names FRIC and contains n1 and (unless
+ * NULL) n2, TAU(1..NFDIR) and STATEV(1..3) unchanged. The caller sets the state first.
+ */
+static inline void fh_check_refused(fh_fric *h, const char *n1, const char *n2)
+{
+    fh_fric before = *h;
+    int i;
+    ifl_clear_error();
+    fh_call(h);
+    FH_CHECK(h->pnewdt < 1.0);
+    FH_CONTAINS(ifl_last_error(), "FRIC");
+    FH_CONTAINS(ifl_last_error(), n1);
+    if (n2 != NULL) {
+        FH_CONTAINS(ifl_last_error(), n2);
+    }
+    for (i = 0; i < h->nfdir; i++) {
+        FH_EXACT(h->tau[i], before.tau[i]);
+    }
+    for (i = 0; i < 3; i++) {
+        FH_EXACT(h->statev[i], before.statev[i]);
+    }
+}
+
 #endif /* FRIC_HARNESS_H */

@@ -113,8 +113,6 @@ static void coef_brake(void)
 /* A call that must be refused: PNEWDT < 1, the needles in the message, state unchanged. */
 static void refused(fh_fric *h, const char *n1, const char *n2)
 {
-    fh_fric before;
-    int i;
     h->statev[0] = 0.5;
     h->statev[1] = 0.1;
     h->statev[2] = 1.0;
@@ -122,17 +120,7 @@ static void refused(fh_fric *h, const char *n1, const char *n2)
     h->press = 100.0;
     h->dgam[0] = 1e-2;
     h->dtime = DT;
-    before = *h;
-    ifl_clear_error();
-    fh_call(h);
-    FH_CHECK(h->pnewdt < 1.0);
-    FH_CONTAINS(ifl_last_error(), "FRIC");
-    FH_CONTAINS(ifl_last_error(), n1);
-    FH_CONTAINS(ifl_last_error(), n2);
-    FH_EXACT(h->tau[0], before.tau[0]);
-    for (i = 0; i < 3; i++) {
-        FH_EXACT(h->statev[i], before.statev[i]);
-    }
+    fh_check_refused(h, n1, n2);
 }
 
 int main(int argc, char **argv)
