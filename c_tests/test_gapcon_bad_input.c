@@ -202,7 +202,7 @@ static void names_that_match(void)
         double want = cases[i].k;
         fh_context("name '%s' (CHARACTER*%zu) matches", cases[i].text, cases[i].len);
         gh_init(&g, cases[i].text, 1e-4, 50.0, 300.0, 290.0);
-        gh_set_name(g.ciname, &g.ciname_len, cases[i].len, cases[i].text);
+        fh_set_name(g.ciname, &g.ciname_len, cases[i].len, cases[i].text);
         if (cases[i].len < 40) {
             /* What follows the hidden length is not part of the name. */
             memcpy(g.ciname + cases[i].len, "XYZ_NOT_PART_OF_IT", 18);
@@ -305,7 +305,7 @@ static void names_that_do_not_match(const char *path)
         gh_gapcon g;
         fh_context("name '%s' (CHARACTER*%zu) is not configured", cases[i].text, cases[i].len);
         gh_init(&g, cases[i].text, 1e-4, 50.0, 300.0, 290.0);
-        gh_set_name(g.ciname, &g.ciname_len, cases[i].len, cases[i].text);
+        fh_set_name(g.ciname, &g.ciname_len, cases[i].len, cases[i].text);
         if (cases[i].len < 40) {
             memcpy(g.ciname + cases[i].len, "XYZ_NOT_PART_OF_IT", 18);
         }
@@ -474,7 +474,7 @@ static void fallback_names(void)
         gh_gapcon g;
         fh_context("fallback file: '%s' (CHARACTER*%zu)", cases[i].text, cases[i].len);
         gh_init(&g, cases[i].text, 1e-4, 50.0, 300.0, 290.0);
-        gh_set_name(g.ciname, &g.ciname_len, cases[i].len, cases[i].text);
+        fh_set_name(g.ciname, &g.ciname_len, cases[i].len, cases[i].text);
         FH_EXACT(gh_call_ok(&g), cases[i].k);
         if (cases[i].len >= strlen(cases[i].text)) {
             FH_EXACT(gh_native_ok(cases[i].text, 1e-4, 50.0, 300.0, 290.0).k, cases[i].k);
