@@ -328,6 +328,29 @@ static inline double fh_ddtddg(const fh_fric *h, int a, int b)
 }
 
 /*
+ * Steady sliding: n increments at the slip rate v along the unit direction d (DGAM = v DTIME d),
+ * each a call that must succeed with LM = 0; DPRESS is set to 0 after the first. Returns the
+ * magnitude of TAU after the last.
+ */
+static inline double fh_slide(fh_fric *h, const double *d, double v, int n)
+{
+    double tau_eq = 0.0;
+    int k, a;
+    for (k = 0; k < n; k++) {
+        for (a = 0; a < h->nfdir; a++) {
+            h->dgam[a] = v * h->dtime * d[a];
+        }
+        fh_call_ok(h);
+        FH_CHECK(h->lm == 0);
+        h->dpress = 0.0;
+    }
+    for (a = 0; a < h->nfdir; a++) {
+        tau_eq += h->tau[a] * h->tau[a];
+    }
+    return sqrt(tau_eq);
+}
+
+/*
  * The slip tangent along the unit direction d (NFDIR entries) against a central difference of
  * fric_'s own TAU: d . DDTDDG . d at the increment h against
  * d . (TAU(DGAM + hg d) - TAU(DGAM - hg d)) / (2 hg), hg = 1e-9, to the absolute tolerance atol.

@@ -66,7 +66,7 @@ static void steps(int nfdir, int exact, int frozen)
     const double d[2] = {nfdir == 1 ? 1.0 : 0.6, nfdir == 1 ? 0.0 : 0.8};
     double props[20];
     fh_fric h;
-    int s, k, a;
+    int s;
     props_decay(props, exact, frozen);
     fh_init(&h, nfdir, props, 20);
     h.press = P;
@@ -74,20 +74,9 @@ static void steps(int nfdir, int exact, int frozen)
     h.dtime = DT;
     for (s = 0; s < 4; s++) {
         const double v = rates[s];
-        double tau_eq = 0.0, mu, dmu;
+        double tau_eq, mu, dmu;
         fh_context("F4 NFDIR=%d exact=%d frozen=%d v=%g", nfdir, exact, frozen, v);
-        for (k = 0; k < 40; k++) {
-            for (a = 0; a < nfdir; a++) {
-                h.dgam[a] = v * DT * d[a];
-            }
-            fh_call_ok(&h);
-            FH_CHECK(h.lm == 0);
-            h.dpress = 0.0;
-        }
-        for (a = 0; a < nfdir; a++) {
-            tau_eq += h.tau[a] * h.tau[a];
-        }
-        tau_eq = sqrt(tau_eq);
+        tau_eq = fh_slide(&h, d, v, 40);
         FH_NEAR(tau_eq, mu_of(v) * P, 1e-12, 0.0);
         FH_NEAR(h.statev[1], v, 1e-12, 0.0);
         coef(props, v, P, &mu, &dmu);
