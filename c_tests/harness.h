@@ -20,6 +20,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "interfacial.h"
@@ -165,6 +166,37 @@ static inline int fh_finish(void)
     fflush(stdout);
     /* A harness that checked nothing proves nothing. */
     return (fh_failed == 0 && fh_passed > 0) ? 0 : 1;
+}
+
+/*
+ * The library's log file (INTERFACIAL_LOG, which must name `path`) holds exactly the n distinct
+ * messages seen (rows of `stride` bytes, each NUL-terminated), once each, in order of first
+ * appearance. A line past the n-th is printed to stderr.
+ */
+static inline void fh_check_log(const char *path, const char *seen, size_t stride, int n)
+{
+    char line[2048];
+    int lines = 0, in_order = 1;
+    FILE *f = fopen(path, "r");
+    const char *env = getenv("INTERFACIAL_LOG");
+    fh_context("INTERFACIAL_LOG %s", path);
+    FH_CHECK(env != NULL && strcmp(env, path) == 0);
+    if (!FH_CHECK(f != NULL)) {
+        return;
+    }
+    while (fgets(line, sizeof line, f) != NULL) {
+        line[strcspn(line, "\n")] = '\0';
+        if (lines < n) {
+            in_order &= strcmp(line, seen + (size_t)lines * stride) == 0;
+        } else {
+            fprintf(stderr, "  extra log line: %s\n", line);
+        }
+        lines++;
+    }
+    fclose(f);
+    FH_CHECK(in_order);
+    FH_CHECK(lines == n);
+    printf("%d distinct messages, %d lines in the log\n", n, lines);
 }
 
 /* ---------------------------------------------------------------------------------------- */

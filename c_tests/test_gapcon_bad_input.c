@@ -490,31 +490,6 @@ static void fallback_names(void)
     }
 }
 
-/* The log must hold exactly the distinct messages, once each, in order of first appearance. */
-static void check_log(const char *path)
-{
-    char line[MESSAGE_LEN + 2];
-    int lines = 0, in_order = 1;
-    FILE *f = fopen(path, "r");
-    fh_context("INTERFACIAL_LOG %s", path);
-    if (!FH_CHECK(f != NULL)) {
-        return;
-    }
-    while (fgets(line, sizeof line, f) != NULL) {
-        line[strcspn(line, "\n")] = '\0';
-        if (lines < n_seen) {
-            in_order &= strcmp(line, seen[lines]) == 0;
-        } else {
-            fprintf(stderr, "  extra log line: %s\n", line);
-        }
-        lines++;
-    }
-    fclose(f);
-    FH_CHECK(in_order);
-    FH_CHECK(lines == n_seen);
-    printf("%d distinct messages, %d lines in the log\n", n_seen, lines);
-}
-
 static int usage(void)
 {
     fprintf(stderr, "usage: test_gapcon_bad_input config-error keep|unset|blank NEEDLE...\n"
@@ -557,7 +532,7 @@ int main(int argc, char **argv)
         return usage();
     }
     if (log != NULL && log[0] != '\0') {
-        check_log(log);
+        fh_check_log(log, &seen[0][0], MESSAGE_LEN, n_seen);
     }
     return fh_finish();
 }
