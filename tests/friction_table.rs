@@ -9,13 +9,14 @@
 
 #[path = "common/central.rs"]
 mod central;
+#[path = "common/config_file.rs"]
+mod config_file;
 #[path = "common/fric_coef.rs"]
 mod fric_coef_common;
 use central::{Shift, along_dgam, along_press, along_temp, central_tau};
 use fric_coef_common::fric_coef_call;
 
 use std::process::Command;
-use std::sync::Once;
 
 use interfacial::abi::host::FricCall;
 use proptest::prelude::*;
@@ -42,17 +43,7 @@ k = 1.0
 "#;
 
 fn setup() {
-    static ONCE: Once = Once::new();
-    ONCE.call_once(|| {
-        let path = std::env::temp_dir().join(format!(
-            "interfacial-fric-table-{}.toml",
-            std::process::id()
-        ));
-        std::fs::write(&path, CONFIG).unwrap();
-        // SAFETY: set once, before any thread of this binary calls into the library (every
-        // test calls setup() first, and Once blocks the others until it is done).
-        unsafe { std::env::set_var("INTERFACIAL_CONFIG", &path) };
-    });
+    config_file::config_once("fric-table", CONFIG);
 }
 
 /// μ of "RATE", written independently of the library: linear through (0, 0.6), (0.3, 0.45),

@@ -3,13 +3,14 @@
 //! `ifl_clear_error` empties it. Checked for every entry point: a failure is recorded, then a
 //! successful call of each entry point in turn must leave that text untouched.
 
+#[path = "common/config_file.rs"]
+mod config_file;
 #[path = "common/fric_coef.rs"]
 mod fric_coef_common;
 use fric_coef_common::fric_coef_call;
 #[path = "common/vfric.rs"]
 mod vfric_common;
 use std::ffi::{CStr, c_char, c_int};
-use std::sync::Once;
 use vfric_common::{Block as VfricBlock, call as vfric_call};
 
 use interfacial::abi::host::{FricCall, GapconCall};
@@ -20,20 +21,10 @@ use interfacial::abi::{
 };
 
 fn setup() {
-    static ONCE: Once = Once::new();
-    ONCE.call_once(|| {
-        let path = std::env::temp_dir().join(format!(
-            "interfacial-last-error-{}.toml",
-            std::process::id()
-        ));
-        std::fs::write(
-            &path,
-            "[interactions.SI1.conductance]\nlaw = \"constant\"\nk = 2.0\n",
-        )
-        .unwrap();
-        // SAFETY: set once, before any call into the library in this binary.
-        unsafe { std::env::set_var("INTERFACIAL_CONFIG", &path) };
-    });
+    config_file::config_once(
+        "last-error",
+        "[interactions.SI1.conductance]\nlaw = \"constant\"\nk = 2.0\n",
+    );
 }
 
 fn last() -> String {
