@@ -1,7 +1,8 @@
 C=======================================================================
 C     harness_f77.f -- the routines the fixed-form harnesses share
-C     (test_fric_f1.f, test_fric_bad_input.f, test_gapcon_t1.f,
-C     test_gapcon_bad_input.f): the tally CHECK / CHKNR, the sentinel
+C     (test_fric_f1.f, test_fric_bad_input.f, test_fric_rate.f,
+C     test_gapcon_t1.f, test_gapcon_bad_input.f): the tally CHECK /
+C     CHKNR, the sentinel
 C     guard GUARD1, the host arguments a Coulomb call does not use
 C     (HOSTIN), the thread's last library message (GETMSG) and one
 C     checked GAPCON call (GAPONE, with SAMEB).
