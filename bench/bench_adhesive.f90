@@ -28,13 +28,10 @@ module adh_data
   real(dp) :: props(nlaw, 10)
   integer :: nprops(nlaw) = [7, 7, 8, 8, 10]
   real(dp) :: tau0(2, npoints, nlaw), dgam(2, npoints, nlaw), press(npoints), dpress(npoints)
-  integer(int64) :: rng = 7
+  integer(int64) :: rng_state = 7
 contains
-  function urand() result(u)
-    real(dp) :: u
-    rng = mod(16807_int64 * rng, 2147483647_int64)
-    u = real(rng, dp) / 2147483647.0_dp
-  end function urand
+  ! urand (the generator) and median.
+  include 'bench_common.inc'
 
   subroutine setup()
     props = 0
@@ -60,7 +57,7 @@ contains
     logical, intent(in) :: slipping
     integer :: i, l
     real(dp) :: p0, a1, a2, g, f, dir(2), tdir(2)
-    rng = 7
+    rng_state = 7
     do i = 1, npoints
       press(i) = 50.0_dp + 100.0_dp * urand()
       dpress(i) = -10.0_dp + 20.0_dp * urand()

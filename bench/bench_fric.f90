@@ -50,12 +50,8 @@ module bench_data
 
 contains
 
-  ! Park-Miller minimal standard generator: reproducible on any compiler, no overflow in int64.
-  function urand() result(u)
-    real(dp) :: u
-    rng_state = mod(16807_int64 * rng_state, 2147483647_int64)
-    u = real(rng_state, dp) / 2147483647.0_dp
-  end function urand
+  ! urand (the generator) and median.
+  include 'bench_common.inc'
 
   ! Standard PROPS of the timed cases: Coulomb, mu, isotropic, no cap, gamma_crit absolute,
   ! default tolerance, elastic stick.
@@ -243,30 +239,6 @@ contains
       error stop 3
     end if
   end subroutine run_loop
-
-  ! Median of a short array (sorted copy).
-  real(dp) function median(a)
-    real(dp), intent(in) :: a(:)
-    real(dp) :: b(size(a)), t
-    integer :: i, j, n
-    n = size(a)
-    b = a
-    do i = 2, n
-      t = b(i)
-      j = i - 1
-      do while (j >= 1)
-        if (b(j) <= t) exit
-        b(j + 1) = b(j)
-        j = j - 1
-      end do
-      b(j + 1) = t
-    end do
-    if (mod(n, 2) == 1) then
-      median = b((n + 1) / 2)
-    else
-      median = 0.5_dp * (b(n / 2) + b(n / 2 + 1))
-    end if
-  end function median
 
 end module bench_data
 

@@ -36,7 +36,8 @@
 /* Stefan-Boltzmann constant in SI units, W/(m^2 K^4) (CODATA 2018, exact by definition). */
 #define GH_SIGMA_SI 5.670374419e-8
 
-enum { GH_AK = 6, GH_NAME = 96 };
+/* Names are set with harness.h's fh_set_name, so their buffers have its size. */
+enum { GH_AK = 6, GH_NAME = FH_NAMEBUF };
 
 typedef struct {
     double ak[GH_AK];      /* AK(5) + one guard */
@@ -52,18 +53,6 @@ typedef struct {
     double area;           /* CalculiX only */
 } gh_gapcon;
 
-/* A Fortran CHARACTER*len actual argument: `text` blank-padded to `len` bytes, no NUL. */
-static inline void gh_set_name(char *buf, size_t *buf_len, size_t len, const char *text)
-{
-    size_t n = strlen(text);
-    if (len > GH_NAME) {
-        len = GH_NAME;
-    }
-    memset(buf, ' ', GH_NAME);
-    memcpy(buf, text, n < len ? n : len);
-    *buf_len = len;
-}
-
 /*
  * A point of interaction `name` (CHARACTER*80), element 17, node 42, clearance d, pressure p,
  * surface temperatures theta_a, theta_b; the unread arguments hold plausible host values.
@@ -72,9 +61,9 @@ static inline void gh_init(gh_gapcon *g, const char *name, double d, double p, d
                            double theta_b)
 {
     memset(g, 0, sizeof *g);
-    gh_set_name(g->ciname, &g->ciname_len, 80, name);
-    gh_set_name(g->slname, &g->slname_len, 80, "SLAVE_SURF");
-    gh_set_name(g->msname, &g->msname_len, 80, "MASTER_SURF");
+    fh_set_name(g->ciname, &g->ciname_len, 80, name);
+    fh_set_name(g->slname, &g->slname_len, 80, "SLAVE_SURF");
+    fh_set_name(g->msname, &g->msname_len, 80, "MASTER_SURF");
     g->d[0] = d;
     g->d[1] = p;
     g->temp[0] = theta_a;

@@ -20,6 +20,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "interfacial.h"
@@ -165,6 +166,37 @@ static inline int fh_finish(void)
     fflush(stdout);
     /* A harness that checked nothing proves nothing. */
     return (fh_failed == 0 && fh_passed > 0) ? 0 : 1;
+}
+
+/*
+ * The library's log file (INTERFACIAL_LOG, which must name `path`) holds exactly the n distinct
+ * messages seen (rows of `stride` bytes, each NUL-terminated), once each, in order of first
+ * appearance. A line past the n-th is printed to stderr.
+ */
+static inline void fh_check_log(const char *path, const char *seen, size_t stride, int n)
+{
+    char line[2048];
+    int lines = 0, in_order = 1;
+    FILE *f = fopen(path, "r");
+    const char *env = getenv("INTERFACIAL_LOG");
+    fh_context("INTERFACIAL_LOG %s", path);
+    FH_CHECK(env != NULL && strcmp(env, path) == 0);
+    if (!FH_CHECK(f != NULL)) {
+        return;
+    }
+    while (fgets(line, sizeof line, f) != NULL) {
+        line[strcspn(line, "\n")] = '\0';
+        if (lines < n) {
+            in_order &= strcmp(line, seen + (size_t)lines * stride) == 0;
+        } else {
+            fprintf(stderr, "  extra log line: %s\n", line);
+        }
+        lines++;
+    }
+    fclose(f);
+    FH_CHECK(in_order);
+    FH_CHECK(lines == n);
+    printf("%d distinct messages, %d lines in the log\n", n, lines);
 }
 
 /* ---------------------------------------------------------------------------------------- */
@@ -325,6 +357,81 @@ static inline void fh_call_ok(fh_fric *h)
 static inline double fh_ddtddg(const fh_fric *h, int a, int b)
 {
     return h->ddtddg[(a - 1) + (b - 1) * h->nfdir];
+}
+
+/*
+ * Steady sliding: n increments at the slip rate v along the unit direction d (DGAM = v DTIME d),
+ * each a call that must succeed with LM = 0; DPRESS is set to 0 after the first. Returns the
+ * magnitude of TAU after the last.
+ */
+static inline double fh_slide(fh_fric *h, const double *d, double v, int n)
+{
+    double tau_eq = 0.0;
+    int k, a;
+    for (k = 0; k < n; k++) {
+        for (a = 0; a < h->nfdir; a++) {
+            h->dgam[a] = v * h->dtime * d[a];
+        }
+        fh_call_ok(h);
+        FH_CHECK(h->lm == 0);
+        h->dpress = 0.0;
+    }
+    for (a = 0; a < h->nfdir; a++) {
+        tau_eq += h->tau[a] * h->tau[a];
+    }
+    return sqrt(tau_eq);
+}
+
+/*
+ * The slip tangent along the unit direction d (NFDIR entries) against a central difference of
+ * fric_'s own TAU: d . DDTDDG . d at the increment h against
+ * d . (TAU(DGAM + hg d) - TAU(DGAM - hg d)) / (2 hg), hg = 1e-9, to the absolute tolerance atol.
+ * Three calls that must succeed, on copies of h.
+ */
+static inline void fh_check_tangent_along(const fh_fric *h, const double *d, double atol)
+{
+    fh_fric base = *h, plus = *h, minus = *h;
+    const double hg = 1e-9;
+    double an = 0.0, fd = 0.0;
+    int a, b;
+    fh_call_ok(&base);
+    for (a = 0; a < h->nfdir; a++) {
+        plus.dgam[a] += hg * d[a];
+        minus.dgam[a] -= hg * d[a];
+    }
+    fh_call_ok(&plus);
+    fh_call_ok(&minus);
+    for (a = 0; a < h->nfdir; a++) {
+        fd += d[a] * (plus.tau[a] - minus.tau[a]) / (2.0 * hg);
+        for (b = 0; b < h->nfdir; b++) {
+            an += d[a] * fh_ddtddg(&base, a + 1, b + 1) * d[b];
+        }
+    }
+    FH_NEAR(an, fd, 0.0, atol);
+}
+
+/*
+ * A call that must be refused: PNEWDT < 1, the message names FRIC and contains n1 and (unless
+ * NULL) n2, TAU(1..NFDIR) and STATEV(1..3) unchanged. The caller sets the state first.
+ */
+static inline void fh_check_refused(fh_fric *h, const char *n1, const char *n2)
+{
+    fh_fric before = *h;
+    int i;
+    ifl_clear_error();
+    fh_call(h);
+    FH_CHECK(h->pnewdt < 1.0);
+    FH_CONTAINS(ifl_last_error(), "FRIC");
+    FH_CONTAINS(ifl_last_error(), n1);
+    if (n2 != NULL) {
+        FH_CONTAINS(ifl_last_error(), n2);
+    }
+    for (i = 0; i < h->nfdir; i++) {
+        FH_EXACT(h->tau[i], before.tau[i]);
+    }
+    for (i = 0; i < 3; i++) {
+        FH_EXACT(h->statev[i], before.statev[i]);
+    }
 }
 
 #endif /* FRIC_HARNESS_H */

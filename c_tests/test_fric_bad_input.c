@@ -349,32 +349,6 @@ static void native_api(void)
     ifl_clear_error();
 }
 
-/* The log must hold exactly the distinct messages, once each, in order of first appearance. */
-static void check_log(const char *path)
-{
-    char line[MESSAGE_LEN + 2];
-    int lines = 0, in_order = 1;
-    FILE *f = fopen(path, "r");
-    const char *env = getenv("INTERFACIAL_LOG");
-    fh_context("INTERFACIAL_LOG %s", path);
-    /* The file named on the command line must be the one the library writes to. */
-    FH_CHECK(env != NULL && strcmp(env, path) == 0);
-    if (!FH_CHECK(f != NULL)) {
-        return;
-    }
-    while (fgets(line, sizeof line, f) != NULL) {
-        line[strcspn(line, "\n")] = '\0';
-        if (lines < n_seen) {
-            in_order &= strcmp(line, seen[lines]) == 0;
-        }
-        lines++;
-    }
-    fclose(f);
-    FH_CHECK(in_order);
-    FH_CHECK(lines == n_seen);
-    printf("%d distinct messages, %d lines in the log\n", n_seen, lines);
-}
-
 int main(int argc, char **argv)
 {
     size_t c;
@@ -395,7 +369,7 @@ int main(int argc, char **argv)
     name_cases();
     native_api();
     if (argc > 1) {
-        check_log(argv[1]);
+        fh_check_log(argv[1], &seen[0][0], MESSAGE_LEN, n_seen);
     }
     return fh_finish();
 }

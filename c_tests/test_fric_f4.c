@@ -66,7 +66,7 @@ static void steps(int nfdir, int exact, int frozen)
     const double d[2] = {nfdir == 1 ? 1.0 : 0.6, nfdir == 1 ? 0.0 : 0.8};
     double props[20];
     fh_fric h;
-    int s, k, a;
+    int s;
     props_decay(props, exact, frozen);
     fh_init(&h, nfdir, props, 20);
     h.press = P;
@@ -74,46 +74,16 @@ static void steps(int nfdir, int exact, int frozen)
     h.dtime = DT;
     for (s = 0; s < 4; s++) {
         const double v = rates[s];
-        double tau_eq = 0.0, mu, dmu;
+        double tau_eq, mu, dmu;
         fh_context("F4 NFDIR=%d exact=%d frozen=%d v=%g", nfdir, exact, frozen, v);
-        for (k = 0; k < 40; k++) {
-            for (a = 0; a < nfdir; a++) {
-                h.dgam[a] = v * DT * d[a];
-            }
-            fh_call_ok(&h);
-            FH_CHECK(h.lm == 0);
-            h.dpress = 0.0;
-        }
-        for (a = 0; a < nfdir; a++) {
-            tau_eq += h.tau[a] * h.tau[a];
-        }
-        tau_eq = sqrt(tau_eq);
+        tau_eq = fh_slide(&h, d, v, 40);
         FH_NEAR(tau_eq, mu_of(v) * P, 1e-12, 0.0);
         FH_NEAR(h.statev[1], v, 1e-12, 0.0);
         coef(props, v, P, &mu, &dmu);
         FH_NEAR(mu, mu_of(v), 1e-15, 0.0);
         FH_NEAR(dmu, -DECAY * (MU_S - MU_K) * exp(-DECAY * v), 1e-14, 0.0);
         /* d tau/d DGAM along d against a central difference (not for frozen: same check). */
-        {
-            fh_fric base = h, plus = h, minus = h;
-            const double hg = 1e-9;
-            double an = 0.0, fd = 0.0;
-            int b;
-            fh_call_ok(&base);
-            for (a = 0; a < nfdir; a++) {
-                plus.dgam[a] += hg * d[a];
-                minus.dgam[a] -= hg * d[a];
-            }
-            fh_call_ok(&plus);
-            fh_call_ok(&minus);
-            for (a = 0; a < nfdir; a++) {
-                fd += d[a] * (plus.tau[a] - minus.tau[a]) / (2.0 * hg);
-                for (b = 0; b < nfdir; b++) {
-                    an += d[a] * fh_ddtddg(&base, a + 1, b + 1) * d[b];
-                }
-            }
-            FH_NEAR(an, fd, 0.0, 1e-5 * MU_S * P / GAMMA_CRIT);
-        }
+        fh_check_tangent_along(&h, d, 1e-5 * MU_S * P / GAMMA_CRIT);
     }
 }
 

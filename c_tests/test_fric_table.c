@@ -55,7 +55,7 @@ static void steps(int nfdir, int exact, int frozen)
     const double d[2] = {nfdir == 1 ? 1.0 : 0.6, nfdir == 1 ? 0.0 : 0.8};
     double props[20];
     fh_fric h;
-    int s, k, a;
+    int s;
     props_table(props, exact, frozen);
     fh_init(&h, nfdir, props, 20);
     h.press = P;
@@ -63,40 +63,11 @@ static void steps(int nfdir, int exact, int frozen)
     h.dtime = DT;
     for (s = 0; s < 5; s++) {
         const double v = rates[s];
-        double tau_eq = 0.0;
         fh_context("F4 table NFDIR=%d exact=%d frozen=%d v=%g", nfdir, exact, frozen, v);
-        for (k = 0; k < 40; k++) {
-            for (a = 0; a < nfdir; a++) {
-                h.dgam[a] = v * DT * d[a];
-            }
-            fh_call_ok(&h);
-            FH_CHECK(h.lm == 0);
-            h.dpress = 0.0;
-        }
-        for (a = 0; a < nfdir; a++) {
-            tau_eq += h.tau[a] * h.tau[a];
-        }
-        FH_NEAR(sqrt(tau_eq), mu_tab(v) * P, 1e-11, 0.0);
+        FH_NEAR(fh_slide(&h, d, v, 40), mu_tab(v) * P, 1e-11, 0.0);
         FH_NEAR(h.statev[1], v, 1e-11, 0.0);
         if (!exact) {
-            fh_fric base = h, plus = h, minus = h;
-            const double hg = 1e-9;
-            double an = 0.0, fd = 0.0;
-            int b;
-            fh_call_ok(&base);
-            for (a = 0; a < nfdir; a++) {
-                plus.dgam[a] += hg * d[a];
-                minus.dgam[a] -= hg * d[a];
-            }
-            fh_call_ok(&plus);
-            fh_call_ok(&minus);
-            for (a = 0; a < nfdir; a++) {
-                fd += d[a] * (plus.tau[a] - minus.tau[a]) / (2.0 * hg);
-                for (b = 0; b < nfdir; b++) {
-                    an += d[a] * fh_ddtddg(&base, a + 1, b + 1) * d[b];
-                }
-            }
-            FH_NEAR(an, fd, 0.0, 1e-5 * 0.6 * P / GAMMA_CRIT);
+            fh_check_tangent_along(&h, d, 1e-5 * 0.6 * P / GAMMA_CRIT);
         }
     }
 }
@@ -130,8 +101,6 @@ static void coef_brake(void)
 /* A call that must be refused: PNEWDT < 1, the needles in the message, state unchanged. */
 static void refused(fh_fric *h, const char *n1, const char *n2)
 {
-    fh_fric before;
-    int i;
     h->statev[0] = 0.5;
     h->statev[1] = 0.1;
     h->statev[2] = 1.0;
@@ -139,17 +108,7 @@ static void refused(fh_fric *h, const char *n1, const char *n2)
     h->press = 100.0;
     h->dgam[0] = 1e-2;
     h->dtime = DT;
-    before = *h;
-    ifl_clear_error();
-    fh_call(h);
-    FH_CHECK(h->pnewdt < 1.0);
-    FH_CONTAINS(ifl_last_error(), "FRIC");
-    FH_CONTAINS(ifl_last_error(), n1);
-    FH_CONTAINS(ifl_last_error(), n2);
-    FH_EXACT(h->tau[0], before.tau[0]);
-    for (i = 0; i < 3; i++) {
-        FH_EXACT(h->statev[i], before.statev[i]);
-    }
+    fh_check_refused(h, n1, n2);
 }
 
 int main(int argc, char **argv)

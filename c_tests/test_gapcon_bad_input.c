@@ -202,7 +202,7 @@ static void names_that_match(void)
         double want = cases[i].k;
         fh_context("name '%s' (CHARACTER*%zu) matches", cases[i].text, cases[i].len);
         gh_init(&g, cases[i].text, 1e-4, 50.0, 300.0, 290.0);
-        gh_set_name(g.ciname, &g.ciname_len, cases[i].len, cases[i].text);
+        fh_set_name(g.ciname, &g.ciname_len, cases[i].len, cases[i].text);
         if (cases[i].len < 40) {
             /* What follows the hidden length is not part of the name. */
             memcpy(g.ciname + cases[i].len, "XYZ_NOT_PART_OF_IT", 18);
@@ -305,7 +305,7 @@ static void names_that_do_not_match(const char *path)
         gh_gapcon g;
         fh_context("name '%s' (CHARACTER*%zu) is not configured", cases[i].text, cases[i].len);
         gh_init(&g, cases[i].text, 1e-4, 50.0, 300.0, 290.0);
-        gh_set_name(g.ciname, &g.ciname_len, cases[i].len, cases[i].text);
+        fh_set_name(g.ciname, &g.ciname_len, cases[i].len, cases[i].text);
         if (cases[i].len < 40) {
             memcpy(g.ciname + cases[i].len, "XYZ_NOT_PART_OF_IT", 18);
         }
@@ -474,7 +474,7 @@ static void fallback_names(void)
         gh_gapcon g;
         fh_context("fallback file: '%s' (CHARACTER*%zu)", cases[i].text, cases[i].len);
         gh_init(&g, cases[i].text, 1e-4, 50.0, 300.0, 290.0);
-        gh_set_name(g.ciname, &g.ciname_len, cases[i].len, cases[i].text);
+        fh_set_name(g.ciname, &g.ciname_len, cases[i].len, cases[i].text);
         FH_EXACT(gh_call_ok(&g), cases[i].k);
         if (cases[i].len >= strlen(cases[i].text)) {
             FH_EXACT(gh_native_ok(cases[i].text, 1e-4, 50.0, 300.0, 290.0).k, cases[i].k);
@@ -488,31 +488,6 @@ static void fallback_names(void)
         gh_init(&g, "OTHER", 1e-4, 50.0, NAN, 290.0);
         expect_gapcon_refused(&g, "OTHER", needles);
     }
-}
-
-/* The log must hold exactly the distinct messages, once each, in order of first appearance. */
-static void check_log(const char *path)
-{
-    char line[MESSAGE_LEN + 2];
-    int lines = 0, in_order = 1;
-    FILE *f = fopen(path, "r");
-    fh_context("INTERFACIAL_LOG %s", path);
-    if (!FH_CHECK(f != NULL)) {
-        return;
-    }
-    while (fgets(line, sizeof line, f) != NULL) {
-        line[strcspn(line, "\n")] = '\0';
-        if (lines < n_seen) {
-            in_order &= strcmp(line, seen[lines]) == 0;
-        } else {
-            fprintf(stderr, "  extra log line: %s\n", line);
-        }
-        lines++;
-    }
-    fclose(f);
-    FH_CHECK(in_order);
-    FH_CHECK(lines == n_seen);
-    printf("%d distinct messages, %d lines in the log\n", n_seen, lines);
 }
 
 static int usage(void)
@@ -557,7 +532,7 @@ int main(int argc, char **argv)
         return usage();
     }
     if (log != NULL && log[0] != '\0') {
-        check_log(log);
+        fh_check_log(log, &seen[0][0], MESSAGE_LEN, n_seen);
     }
     return fh_finish();
 }

@@ -25,7 +25,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "harness.h"
+#include "uinter_harness.h"
 
 /* UINTER as abi.md documents it, redeclared by hand: a mismatch with interfacial.h is a
  * compile error. */
@@ -59,39 +59,11 @@ static double g(double v, double p, double mu_s, double vhalf, double kmu)
     return ((mu_s * vhalf + MU_D * v) / (vhalf + v) + kmu * v) * p + SA;
 }
 
-/* All UINTER arguments of one point, NDIR <= 3, with guard slots. */
-typedef struct {
-    double stress[4], ddsddr[10], dvisc[10], dstruct[10], flux[3], ddfddt[5], ddsddt[7];
-    double ddfddr[7], statev[6], sed, sfd, spd, svd, scd, pnewdt;
-    double rdisp[3], drdisp[3], temp[2], dtemp[2], predef[2], dpred[2], time[2], dtime, freqr;
-    char ciname[80], slname[80], msname[80];
-    double props[13], coords[3], alocaldir[9], drot[4], area, chrlngth;
-    int node, ndir, nstatv, npred, nprops, mcrd, kstep, kinc, kit, linper;
-    int lopenclose, lstate, lsdi, lprint;
-} ui_point;
-
 static void ui_init(ui_point *u, int ndir, const double *props, int nprops)
 {
     int i;
-    memset(u, 0, sizeof *u);
-    memset(u->ciname, ' ', 80);
-    memset(u->slname, ' ', 80);
-    memset(u->msname, ' ', 80);
-    memcpy(u->ciname, "ADHESIVE", 8);
-    for (i = 0; i < nprops; i++) {
-        u->props[i] = props[i];
-    }
-    u->nprops = nprops;
-    u->ndir = ndir;
-    u->nstatv = 3;
-    u->npred = 1;
-    u->mcrd = 3;
-    u->kstep = u->kinc = u->kit = 1;
+    ui_set(u, "ADHESIVE", ndir, props, nprops, DT);
     u->node = 7;
-    u->dtime = DT;
-    u->chrlngth = 1.0;
-    u->area = 1.0;
-    u->lopenclose = u->lstate = -1;
     u->temp[0] = u->temp[1] = 20.0;
     for (i = 3; i < 6; i++) {
         u->statev[i] = FH_GUARD;
@@ -108,13 +80,7 @@ static void ui_call(ui_point *u)
         u->ddsddr[i] = FH_GUARD;
     }
     u->pnewdt = FH_PNEWDT_IN;
-    uinter_(u->stress, u->ddsddr, u->dvisc, u->dstruct, u->flux, u->ddfddt, u->ddsddt, u->ddfddr,
-            u->statev, &u->sed, &u->sfd, &u->spd, &u->svd, &u->scd, &u->pnewdt, u->rdisp,
-            u->drdisp, u->temp, u->dtemp, u->predef, u->dpred, u->time, &u->dtime, &u->freqr,
-            u->ciname, u->slname, u->msname, u->props, u->coords, u->alocaldir, u->drot,
-            &u->area, &u->chrlngth, &u->node, &u->ndir, &u->nstatv, &u->npred, &u->nprops,
-            &u->mcrd, &u->kstep, &u->kinc, &u->kit, &u->linper, &u->lopenclose, &u->lstate,
-            &u->lsdi, &u->lprint, 80, 80, 80);
+    ui_call_raw(u);
     for (i = n; i < 4; i++) {
         FH_CHECK(u->stress[i] == FH_GUARD);
     }

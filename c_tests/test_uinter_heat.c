@@ -25,7 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "harness.h"
+#include "uinter_harness.h"
 
 #define THETA_H 400.0
 #define THETA_C 20.0
@@ -34,48 +34,17 @@
 #define KN 1e4
 #define DT 0.5
 
-typedef struct {
-    double stress[3], ddsddr[4], dvisc[4], dstruct[4], flux[2], ddfddt[4], ddsddt[4];
-    double ddfddr[4], statev[3], sed, sfd, spd, svd, scd, pnewdt;
-    double rdisp[2], drdisp[2], temp[2], dtemp[2], predef[2], dpred[2], time[2], dtime, freqr;
-    char ciname[80], slname[80], msname[80];
-    double props[13], coords[3], alocaldir[9], drot[4], area, chrlngth;
-    int node, ndir, nstatv, npred, nprops, mcrd, kstep, kinc, kit, linper;
-    int lopenclose, lstate, lsdi, lprint;
-} ui_point;
-
 static void ui_init(ui_point *u, const char *name, double eta)
 {
     const double props[13] = {2.0, 0.4, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-3, 0.0, KN, 1.0, eta, 0.25};
-    memset(u, 0, sizeof *u);
-    memset(u->ciname, ' ', 80);
-    memset(u->slname, ' ', 80);
-    memset(u->msname, ' ', 80);
-    memcpy(u->ciname, name, strlen(name));
-    memcpy(u->props, props, sizeof props);
-    u->nprops = 13;
-    u->ndir = 2;
-    u->nstatv = 3;
-    u->npred = 1;
-    u->mcrd = 3;
-    u->kstep = u->kinc = u->kit = 1;
-    u->dtime = DT;
-    u->chrlngth = 1.0;
-    u->area = 1.0;
-    u->lopenclose = u->lstate = -1;
+    ui_set(u, name, 2, props, 13, DT);
 }
 
 static void ui_call(ui_point *u)
 {
     u->pnewdt = FH_PNEWDT_IN;
     ifl_clear_error();
-    uinter_(u->stress, u->ddsddr, u->dvisc, u->dstruct, u->flux, u->ddfddt, u->ddsddt, u->ddfddr,
-            u->statev, &u->sed, &u->sfd, &u->spd, &u->svd, &u->scd, &u->pnewdt, u->rdisp,
-            u->drdisp, u->temp, u->dtemp, u->predef, u->dpred, u->time, &u->dtime, &u->freqr,
-            u->ciname, u->slname, u->msname, u->props, u->coords, u->alocaldir, u->drot,
-            &u->area, &u->chrlngth, &u->node, &u->ndir, &u->nstatv, &u->npred, &u->nprops,
-            &u->mcrd, &u->kstep, &u->kinc, &u->kit, &u->linper, &u->lopenclose, &u->lstate,
-            &u->lsdi, &u->lprint, 80, 80, 80);
+    ui_call_raw(u);
     FH_CHECK(u->pnewdt == FH_PNEWDT_IN);
     FH_CHECK(ifl_last_error()[0] == '\0');
 }

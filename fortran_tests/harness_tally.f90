@@ -1,5 +1,6 @@
 ! harness_tally.f90 -- the pass/fail tally shared by the free-form Fortran harnesses that use it
 ! (the Fortran side of c_tests/harness.h): check, check_near (|got - want| <= rtol |want| + atol),
+! check_abs (|got - want| <= tol), check_at / check_abs_at (the same for a numbered step),
 ! the calling thread's last library message (ifl_last_error_copy) and check_contains. The
 ! current scene's name goes in `scene`; the first 40 failures are printed with it.
 module harness_tally
@@ -42,6 +43,34 @@ contains
     call check(ok, what)
     if (.not. ok .and. nfail <= 40) write (*, '(a,1p,2e25.16)') '   got, expected:', got, want
   end subroutine check_near
+
+  ! |got - want| <= tol (an absolute tolerance); a failure also prints got, expected and tol.
+  subroutine check_abs(got, want, tol, what)
+    real(dp), intent(in) :: got, want, tol
+    character(len=*), intent(in) :: what
+    call check(abs(got - want) <= tol, what)
+    if (.not. abs(got - want) <= tol .and. nfail <= 40) &
+      write (*, '(a,1p,3e24.15)') '   got, expected, tol:', got, want, tol
+  end subroutine check_abs
+
+  ! check and check_abs for a numbered step (an increment, a point): a failure prints K too.
+  subroutine check_at(ok, what, k)
+    logical, intent(in) :: ok
+    character(len=*), intent(in) :: what
+    integer, intent(in) :: k
+    character(len=24) :: at
+    write (at, '(a,i0,a)') ' (at ', k, ')'
+    call check(ok, what//trim(at))
+  end subroutine check_at
+
+  subroutine check_abs_at(got, want, tol, what, k)
+    real(dp), intent(in) :: got, want, tol
+    character(len=*), intent(in) :: what
+    integer, intent(in) :: k
+    call check_at(abs(got - want) <= tol, what, k)
+    if (.not. abs(got - want) <= tol .and. nfail <= 40) &
+      write (*, '(a,1p,3e24.15)') '   got, expected, tol:', got, want, tol
+  end subroutine check_abs_at
 
   ! The calling thread's last message (ifl_last_error_copy), '' when there is none.
   function last_error() result(msg)

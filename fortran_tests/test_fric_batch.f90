@@ -39,26 +39,8 @@ module batch_api
   end interface
 end module batch_api
 
-module batch_tally
-  implicit none
-  integer, parameter :: dp = kind(1.0d0)
-  integer :: npass = 0, nfail = 0
-  character(len=64) :: context = ''
-contains
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (ok) then
-      npass = npass + 1
-    else
-      nfail = nfail + 1
-      if (nfail <= 40) write (*, '(a,a,a,a)') 'FAIL [', trim(context), '] ', what
-    end if
-  end subroutine check
-end module batch_tally
-
 module batch_points
-  use batch_tally
+  use harness_tally, only: dp, npass, nfail, scene, check
   implicit none
   integer, parameter :: np = 33, ld = 37, nsv = 3
   real(dp), parameter :: unset = 12345.678_dp, big = 1.0e36_dp
@@ -218,7 +200,7 @@ program test_fric_batch
   ! Bit for bit against FRIC per point.
   do v = 1, 3
     do nfdir = 1, 2
-      write (context, '(a,i0,a,i0)') 'PROPS variant ', v, ', NFDIR = ', nfdir
+      write (scene, '(a,i0,a,i0)') 'PROPS variant ', v, ', NFDIR = ', nfdir
       call random_batch(in, nfdir, 2.0e-3_dp)
       want = in
       got = in
@@ -233,7 +215,7 @@ program test_fric_batch
   end do
 
   ! Closed forms at first contact (tau = 0, STATEV = 0), NFDIR = 2, p = 100, mu p = 30.
-  context = 'closed forms'
+  scene = 'closed forms'
   call random_batch(got, 2, gc)
   got%lm = 0
   got%tau = 0
@@ -264,7 +246,7 @@ program test_fric_batch
   end do
 
   ! A NaN input in point 5: FRIC's failure outputs there, the others computed.
-  context = 'NaN in point 5'
+  scene = 'NaN in point 5'
   call random_batch(in, 2, 2.0e-3_dp)
   in%lm(1:np) = 0
   want = in
@@ -293,7 +275,7 @@ program test_fric_batch
   call check(same(want, got), 'other points equal FRIC per point')
 
   ! A fault of the whole batch: nothing written but PNEWDT.
-  context = 'NFDIR = 3'
+  scene = 'NFDIR = 3'
   call random_batch(in, 2, 2.0e-3_dp)
   got = in
   pb = big

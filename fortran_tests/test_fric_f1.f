@@ -13,6 +13,8 @@ C       stick: tau = k_s gamma_el,  slip: |tau| = tau_crit.
 C     Output arrays are declared longer than NFDIR (STATEV longer than
 C     NSTATV); their tails hold a sentinel that must survive each call.
 C
+C     CHECK, CHKNR, GUARD1 and HOSTIN come from harness_f77.f.
+C
 C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
       PROGRAM TFRIC1
@@ -450,44 +452,6 @@ C       LMIN = 1: next iteration with a Lagrange stress 1e3 mu p.
       END
 
 C-----------------------------------------------------------------------
-C     The arguments the Coulomb law does not use, filled as a host would
-C     (step 1, Delta t = 0.1, identity DROT, contact at node 7).
-C-----------------------------------------------------------------------
-      SUBROUTINE HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,
-     1 COORDS,RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
-      INCLUDE 'ABA_PARAM.INC'
-      DIMENSION TIME(2),COORDS(3),RCOORD(3),DROT(2,2),TEMP(2),
-     1 PREDEF(2,1),SLIP(MG)
-      KSTEP = 1
-      KINC = 1
-      TIME(1) = 0.0D0
-      TIME(2) = 0.0D0
-      DTIME = 0.1D0
-      NOEL = 0
-      NPT = 1
-      NODE = 7
-      NPATCH = 1
-      MCRD = 3
-      NPRED = 1
-      DO 10 I = 1, 3
-        COORDS(I) = 0.0D0
-        RCOORD(I) = 0.0D0
-   10 CONTINUE
-      DROT(1,1) = 1.0D0
-      DROT(2,1) = 0.0D0
-      DROT(1,2) = 0.0D0
-      DROT(2,2) = 1.0D0
-      TEMP(1) = 20.0D0
-      TEMP(2) = 20.0D0
-      PREDEF(1,1) = 0.0D0
-      PREDEF(2,1) = 0.0D0
-      DDPDDH = 1.0D6
-      DO 20 I = 1, MG
-        SLIP(I) = 0.0D0
-   20 CONTINUE
-      END
-
-C-----------------------------------------------------------------------
 C     Output arrays past NFDIR (NFDIR**2 for DDTDDG, 2*NFDIR for DDTDDT)
 C     and STATEV past NSTATV still hold the sentinel.
 C-----------------------------------------------------------------------
@@ -502,45 +466,4 @@ C-----------------------------------------------------------------------
       CALL GUARD1(DSLIP, NFDIR+1, MG, 'DSLIP past NFDIR', K)
       CALL GUARD1(DDTDDT, 2*NFDIR+1, MG, 'DDTDDT past 2*NFDIR', K)
       CALL GUARD1(STATEV, NSTATV+1, MSV, 'STATEV past NSTATV', K)
-      END
-
-      SUBROUTINE GUARD1(A, IFROM, ITO, WHAT, K)
-      INCLUDE 'ABA_PARAM.INC'
-      PARAMETER (SENT=-999.25D0)
-      DIMENSION A(*)
-      CHARACTER*(*) WHAT
-      LOGICAL OK
-      OK = .TRUE.
-      DO 10 I = IFROM, ITO
-        IF (A(I) .NE. SENT) OK = .FALSE.
-   10 CONTINUE
-      CALL CHECK(OK, WHAT, K)
-      END
-
-C-----------------------------------------------------------------------
-C     Tally.  A failure prints the case, the increment and the check
-C     (the first 40 only, to keep a broken build readable).
-C-----------------------------------------------------------------------
-      SUBROUTINE CHECK(OK, WHAT, K)
-      LOGICAL OK
-      CHARACTER*(*) WHAT
-      CHARACTER*48 CASE
-      COMMON /CTX/ CASE
-      COMMON /TALLY/ NPASS,NFAIL
-      IF (OK) THEN
-        NPASS = NPASS + 1
-      ELSE
-        NFAIL = NFAIL + 1
-        IF (NFAIL .LE. 40) WRITE (*,'(A,A,A,I0,A,A)') 'FAIL [',
-     1   TRIM(CASE), '] increment ', K, ': ', WHAT
-      END IF
-      END
-
-      SUBROUTINE CHKNR(A, B, TOL, WHAT, K)
-      INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*(*) WHAT
-      COMMON /TALLY/ NPASS,NFAIL
-      CALL CHECK(ABS(A - B) .LE. TOL, WHAT, K)
-      IF (.NOT. (ABS(A - B) .LE. TOL) .AND. NFAIL .LE. 40)
-     1 WRITE (*,'(A,1P,3E24.15)') '   got, expected, tol:', A, B, TOL
       END

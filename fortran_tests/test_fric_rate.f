@@ -13,6 +13,8 @@ C     steady |tau| = mu(v) p and STATEV(2) = v; FRIC_COEF returns
 C     fCoef(1,1) = mu(v), fCoefDeriv(1,1,1) = -d_c (mu_s-mu_k)
 C     exp(-d_c v).  NFDIR = 1 and 2, elastic and exact stick.
 C
+C     CHECK (K = the velocity step) and HOSTIN come from harness_f77.f.
+C
 C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
       PROGRAM TFRATE
@@ -32,6 +34,8 @@ C=======================================================================
       SUBROUTINE STEPS(NDIR, LMODE)
       INCLUDE 'ABA_PARAM.INC'
       CHARACTER*80 CINAME,SLNAME,MSNAME
+      CHARACTER*48 CASE
+      COMMON /CTX/ CASE
       PARAMETER (MG=4, MSV=6, SENT=-999.25D0, BIG=1.0D36)
       DIMENSION TAU(MG),DDTDDG(MG*MG),DDTDDP(MG),DSLIP(MG),
      1 DDTDDT(2*MG),STATEV(MSV),DGAM(MG),TAULM(MG),SLIP(MG),TIME(2),
@@ -40,6 +44,8 @@ C=======================================================================
      4 FAVG(1,1),IDATA(6),RDATA(8)
       DATA V /0.05D0, 0.5D0, 0.2D0, 1.5D0/
 C
+      WRITE (CASE,'(A,I1,A,I1)') 'F4 rate NFDIR=', NDIR,
+     1 ' exact stick=', LMODE
       XMUS = 0.6D0
       XMUK = 0.3D0
       DC = 4.0D0
@@ -75,32 +81,16 @@ C
       STATEV(1) = 0.0D0
       STATEV(2) = 0.0D0
       STATEV(3) = 0.0D0
-      DROT(1,1) = 1.0D0
-      DROT(2,1) = 0.0D0
-      DROT(1,2) = 0.0D0
-      DROT(2,2) = 1.0D0
-      TEMP(1) = 20.0D0
-      TEMP(2) = 20.0D0
-      PREDEF(1,1) = 0.0D0
-      PREDEF(2,1) = 0.0D0
+      CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
+     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
       CINAME = 'F4-RATE'
       SLNAME = 'SLAVE'
       MSNAME = 'MASTER'
       DTIME = 0.01D0
-      TIME(1) = 0.0D0
-      TIME(2) = 0.0D0
       PRESS = P
       DPRESS = P
-      DDPDDH = 1.0D6
       CHRLNGTH = 1.0D0
-      KSTEP = 1
-      KINC = 1
-      NOEL = 0
-      NPT = 1
       NODE = 1
-      NPATCH = 1
-      MCRD = 3
-      NPRED = 1
       LM = 0
 C
       DO 40 IS = 1, 4
@@ -114,8 +104,8 @@ C
      2     DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,NPATCH,COORDS,
      3     RCOORD,DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,NSTATV,CHRLNGTH,
      4     PROPS,NPROPS)
-          CALL CHECK(PNEWDT .EQ. BIG, 'PNEWDT not lowered')
-          CALL CHECK(LM .EQ. 0, 'LM = 0 while sliding')
+          CALL CHECK(PNEWDT .EQ. BIG, 'PNEWDT not lowered', IS)
+          CALL CHECK(LM .EQ. 0, 'LM = 0 while sliding', IS)
           DPRESS = 0.0D0
    30   CONTINUE
         TEQ = 0.0D0
@@ -125,10 +115,10 @@ C
         TEQ = SQRT(TEQ)
         XMU = XMUK + (XMUS - XMUK) * EXP(-DC * V(IS))
         CALL CHECK(ABS(TEQ - XMU*P) .LE. 1.0D-12*XMU*P,
-     1   'steady |tau| = mu(v) p')
+     1   'steady |tau| = mu(v) p', IS)
         CALL CHECK(ABS(STATEV(2) - V(IS)) .LE. 1.0D-12*V(IS),
-     1   'STATEV(2) = v')
-        CALL CHECK(STATEV(4) .EQ. SENT, 'STATEV(4) untouched')
+     1   'STATEV(2) = v', IS)
+        CALL CHECK(STATEV(4) .EQ. SENT, 'STATEV(4) untouched', IS)
 C       FRIC_COEF for the same rate and pressure.
         NBLOCK = 1
         NTEMP = 1
@@ -139,24 +129,12 @@ C       FRIC_COEF for the same rate and pressure.
         CALL FRIC_COEF(FCOEF,FDERIV,NBLOCK,NPROPS,NTEMP,NFIELD,
      1   IDATA,RDATA,CINAME,SLNAME,MSNAME,PROPS,SDATA,PRS,TAVG,FAVG)
         CALL CHECK(ABS(FCOEF(1,1) - XMU) .LE. 1.0D-15,
-     1   'FRIC_COEF mu(v)')
+     1   'FRIC_COEF mu(v)', IS)
         CALL CHECK(ABS(FCOEF(1,2) - XMU) .LE. 1.0D-15,
-     1   'FRIC_COEF mu2 = mu1 (isotropic)')
+     1   'FRIC_COEF mu2 = mu1 (isotropic)', IS)
         DMU = -DC * (XMUS - XMUK) * EXP(-DC * V(IS))
         CALL CHECK(ABS(FDERIV(1,1,1) - DMU) .LE. 1.0D-14,
-     1   'FRIC_COEF d mu/d rate')
-        CALL CHECK(FDERIV(1,2,1) .EQ. 0.0D0, 'd mu/d p = 0')
+     1   'FRIC_COEF d mu/d rate', IS)
+        CALL CHECK(FDERIV(1,2,1) .EQ. 0.0D0, 'd mu/d p = 0', IS)
    40 CONTINUE
-      END
-
-      SUBROUTINE CHECK(OK, WHAT)
-      LOGICAL OK
-      CHARACTER*(*) WHAT
-      COMMON /TALLY/ NPASS,NFAIL
-      IF (OK) THEN
-        NPASS = NPASS + 1
-      ELSE
-        NFAIL = NFAIL + 1
-        WRITE (*,'(A,A)') 'FAIL: ', WHAT
-      END IF
       END

@@ -10,39 +10,11 @@
 !
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 
-module tally
-  implicit none
-  integer, parameter :: dp = kind(1.0d0)
-  integer :: npass = 0, nfail = 0
-  character(len=64) :: scene = ''
-contains
-  subroutine check(ok, what, k)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    integer, intent(in) :: k
-    if (ok) then
-      npass = npass + 1
-    else
-      nfail = nfail + 1
-      if (nfail <= 40) write (*, '(a,a,a,i0,a,a)') 'FAIL [', trim(scene), '] increment ', k, &
-        ': ', what
-    end if
-  end subroutine check
-
-  subroutine check_near(a, b, tol, what, k)
-    real(dp), intent(in) :: a, b, tol
-    character(len=*), intent(in) :: what
-    integer, intent(in) :: k
-    call check(abs(a - b) <= tol, what, k)
-    if (.not. abs(a - b) <= tol .and. nfail <= 40) &
-      write (*, '(a,1p,3e24.15)') '   got, expected, tol:', a, b, tol
-  end subroutine check_near
-end module tally
-
 ! The host side of one contact point: every FRIC argument, output arrays longer than NFDIR and
 ! STATEV longer than NSTATV, their tails filled with a sentinel.
 module fric_host
-  use tally
+  ! The tally: check and check_near here take the increment or point number K.
+  use harness_tally, only: dp, npass, nfail, scene, check => check_at, check_near => check_abs_at
   implicit none
   real(dp), parameter :: sentinel = -999.25_dp, big = 1.0e36_dp
   real(dp), parameter :: pi = 3.14159265358979323846_dp

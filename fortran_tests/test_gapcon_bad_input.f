@@ -25,6 +25,9 @@ C     8-character name must match (good) or be reported (bad) without
 C     a byte read past the hidden length.  Each call has its own
 C     element number, so a stale message cannot pass.
 C
+C     GAPONE (one checked GAPCON call), CHECK, CHKNR and GETMSG come
+C     from harness_f77.f.
+C
 C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
       PROGRAM TGBAD
@@ -301,66 +304,6 @@ C
       END
 
 C-----------------------------------------------------------------------
-C     One GAPCON call with CHARACTER*80 names: AK(1..5) preset to a
-C     sentinel, D = (CLR, P), TEMP = (TA, TB), element NOEL, node 7.
-C     Checks AK(2..5) untouched and the inputs unchanged bit for bit
-C     (a NaN input must still be that NaN).  Returns AK(1).
-C-----------------------------------------------------------------------
-      SUBROUTINE GAPONE(NAME, CLR, P, TA, TB, NOEL, AK1)
-      INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*(*) NAME
-      CHARACTER*80 CINAME,SLNAME,MSNAME
-      PARAMETER (SENT=-999.25D0)
-      DIMENSION AK(5),D(2),FLOWM(2),TEMP(2),PREDEF(2,1),TIME(2),
-     1 COORDS(3)
-      LOGICAL OK, SAMEB
-      CINAME = NAME
-      SLNAME = 'SLAVE'
-      MSNAME = 'MASTER'
-      DO 10 I = 1, 5
-        AK(I) = SENT
-   10 CONTINUE
-      D(1) = CLR
-      D(2) = P
-      FLOWM(1) = 0.0D0
-      FLOWM(2) = 0.0D0
-      TEMP(1) = TA
-      TEMP(2) = TB
-      PREDEF(1,1) = 0.0D0
-      PREDEF(2,1) = 0.0D0
-      TIME(1) = 1.0D0
-      TIME(2) = 1.0D0
-      COORDS(1) = 0.0D0
-      COORDS(2) = 0.0D0
-      COORDS(3) = 0.0D0
-      NODE = 7
-      NPRED = 1
-      KSTEP = 1
-      KINC = 1
-      NOELIN = NOEL
-      CALL GAPCON(AK,D,FLOWM,TEMP,PREDEF,TIME,CINAME,SLNAME,MSNAME,
-     1 COORDS,NOELIN,NODE,NPRED,KSTEP,KINC)
-      AK1 = AK(1)
-      OK = .TRUE.
-      DO 20 I = 2, 5
-        IF (AK(I) .NE. SENT) OK = .FALSE.
-   20 CONTINUE
-      CALL CHECK(OK, 'AK(2..5) untouched', NOEL)
-      CALL CHECK(SAMEB(D(1), CLR) .AND. SAMEB(D(2), P) .AND.
-     1 SAMEB(TEMP(1), TA) .AND. SAMEB(TEMP(2), TB) .AND.
-     2 CINAME .EQ. NAME .AND. NOELIN .EQ. NOEL .AND. NODE .EQ. 7,
-     3 'inputs not written', NOEL)
-      END
-
-      LOGICAL FUNCTION SAMEB(A, B)
-      INCLUDE 'ABA_PARAM.INC'
-      INTEGER*8 IA, IB
-      IA = TRANSFER(A, IA)
-      IB = TRANSFER(B, IB)
-      SAMEB = IA .EQ. IB
-      END
-
-C-----------------------------------------------------------------------
 C     The last message must be "interfacial: ROUT: interaction 'NAME'
 C     (element NOEL, node 7): KIND: " (NOEL < 0: "(native call)") then
 C     CAUSE (IAT = 1: right after; IAT = 0: somewhere after).  KIND is
@@ -476,51 +419,3 @@ C-----------------------------------------------------------------------
    20 CLOSE (11)
       END
 
-C-----------------------------------------------------------------------
-C     The calling thread's last error message, through the library's
-C     native C API (size_t ifl_last_error_copy(char *buf, size_t len):
-C     copies at most len-1 bytes and a NUL, returns the full length).
-C-----------------------------------------------------------------------
-      SUBROUTINE GETMSG(MSG, L)
-      USE, INTRINSIC :: ISO_C_BINDING, ONLY: C_SIZE_T
-      CHARACTER*(*) MSG
-      INTERFACE
-        FUNCTION IFLCPY(BUF, NBUF) BIND(C, NAME='ifl_last_error_copy')
-          USE, INTRINSIC :: ISO_C_BINDING, ONLY: C_CHAR, C_SIZE_T
-          INTEGER(C_SIZE_T) :: IFLCPY
-          CHARACTER(KIND=C_CHAR), DIMENSION(*) :: BUF
-          INTEGER(C_SIZE_T), VALUE :: NBUF
-        END FUNCTION IFLCPY
-      END INTERFACE
-      INTEGER(C_SIZE_T) :: NFULL
-      MSG = ' '
-      NFULL = IFLCPY(MSG, INT(LEN(MSG), C_SIZE_T))
-      L = INT(MIN(NFULL, INT(LEN(MSG) - 1, C_SIZE_T)))
-      END
-
-C-----------------------------------------------------------------------
-C     Tally; a failure prints the case and the check (first 40 only).
-C-----------------------------------------------------------------------
-      SUBROUTINE CHECK(OK, WHAT, K)
-      LOGICAL OK
-      CHARACTER*(*) WHAT
-      CHARACTER*48 CASE
-      COMMON /CTX/ CASE
-      COMMON /TALLY/ NPASS,NFAIL
-      IF (OK) THEN
-        NPASS = NPASS + 1
-      ELSE
-        NFAIL = NFAIL + 1
-        IF (NFAIL .LE. 40) WRITE (*,'(A,A,A,I0,A,A)') 'FAIL [',
-     1   TRIM(CASE), '] check ', K, ': ', WHAT
-      END IF
-      END
-
-      SUBROUTINE CHKNR(A, B, TOL, WHAT, K)
-      INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*(*) WHAT
-      COMMON /TALLY/ NPASS,NFAIL
-      CALL CHECK(ABS(A - B) .LE. TOL, WHAT, K)
-      IF (.NOT. (ABS(A - B) .LE. TOL) .AND. NFAIL .LE. 40)
-     1 WRITE (*,'(A,1P,3E24.15)') '   got, expected, tol:', A, B, TOL
-      END

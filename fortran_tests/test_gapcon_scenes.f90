@@ -14,35 +14,6 @@
 !
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 
-module gapcon_tally
-  implicit none
-  integer, parameter :: dp = kind(1.0d0)
-  integer :: npass = 0, nfail = 0
-  character(len=64) :: scene = ''
-contains
-  subroutine check(ok, what, k)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    integer, intent(in) :: k
-    if (ok) then
-      npass = npass + 1
-    else
-      nfail = nfail + 1
-      if (nfail <= 40) write (*, '(a,a,a,i0,a,a)') 'FAIL [', trim(scene), '] point ', k, ': ', &
-        what
-    end if
-  end subroutine check
-
-  subroutine check_near(a, b, tol, what, k)
-    real(dp), intent(in) :: a, b, tol
-    character(len=*), intent(in) :: what
-    integer, intent(in) :: k
-    call check(abs(a - b) <= tol, what, k)
-    if (.not. abs(a - b) <= tol .and. nfail <= 40) &
-      write (*, '(a,1p,3e24.15)') '   got, expected, tol:', a, b, tol
-  end subroutine check_near
-end module gapcon_tally
-
 ! The library's native C API, as declared in include/interfacial.h.
 module ifl_native
   use, intrinsic :: iso_c_binding, only: c_char, c_double, c_int, c_null_char, c_size_t
@@ -74,7 +45,8 @@ end module ifl_native
 
 ! The host side: scene constants, one GAPCON call as Abaqus makes it, one native call.
 module gapcon_host
-  use gapcon_tally
+  ! The tally: check and check_near here take the increment or point number K.
+  use harness_tally, only: dp, npass, nfail, scene, check => check_at, check_near => check_abs_at
   use ifl_native
   implicit none
   real(dp), parameter :: l_a = 0.1_dp, k_a = 50.0_dp, l_b = 0.2_dp, k_b = 15.0_dp

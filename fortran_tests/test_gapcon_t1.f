@@ -21,6 +21,9 @@ C     converged mean temperature; the flux is also the root of the
 C     quadratic that follows from h linear in the mean temperature.
 C
 C     The configuration file comes from CTest (INTERFACIAL_CONFIG).
+C     GAPONE (one checked GAPCON call), CHECK and CHKNR come from
+C     harness_f77.f.
+C
 C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
       PROGRAM TGAPT1
@@ -63,59 +66,6 @@ C     Bar conductances k/L and the series resistance of both bars.
       END
 
 C-----------------------------------------------------------------------
-C     One GAPCON call as Abaqus makes it: AK(1..5) preset to a sentinel
-C     (so AK(1) has to be written and AK(2..5) must survive), D =
-C     (clearance, pressure), TEMP = (theta_A, theta_B); the arguments
-C     GAPCON does not read hold harmless values.  Returns AK(1) and
-C     checks that nothing but AK(1) was written.
-C-----------------------------------------------------------------------
-      SUBROUTINE GAPK(NAME, CLR, P, TA, TB, NOEL, AK1)
-      INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*(*) NAME
-      CHARACTER*80 CINAME,SLNAME,MSNAME
-      PARAMETER (SENT=-999.25D0)
-      DIMENSION AK(5),D(2),FLOWM(2),TEMP(2),PREDEF(2,1),TIME(2),
-     1 COORDS(3)
-      LOGICAL OK
-      CINAME = NAME
-      SLNAME = 'BAR-A-END'
-      MSNAME = 'BAR-B-END'
-      DO 10 I = 1, 5
-        AK(I) = SENT
-   10 CONTINUE
-      D(1) = CLR
-      D(2) = P
-      FLOWM(1) = 0.0D0
-      FLOWM(2) = 0.0D0
-      TEMP(1) = TA
-      TEMP(2) = TB
-      PREDEF(1,1) = 0.0D0
-      PREDEF(2,1) = 0.0D0
-      TIME(1) = 1.0D0
-      TIME(2) = 1.0D0
-      COORDS(1) = 0.1D0
-      COORDS(2) = 0.0D0
-      COORDS(3) = 0.0D0
-      NODE = 7
-      NPRED = 1
-      KSTEP = 1
-      KINC = 1
-      CALL GAPCON(AK,D,FLOWM,TEMP,PREDEF,TIME,CINAME,SLNAME,MSNAME,
-     1 COORDS,NOEL,NODE,NPRED,KSTEP,KINC)
-      AK1 = AK(1)
-      OK = .TRUE.
-      DO 20 I = 2, 5
-        IF (AK(I) .NE. SENT) OK = .FALSE.
-   20 CONTINUE
-      CALL CHECK(OK, 'AK(2..5) untouched', NOEL)
-      CALL CHECK(D(1) .EQ. CLR .AND. D(2) .EQ. P .AND.
-     1 TEMP(1) .EQ. TA .AND. TEMP(2) .EQ. TB .AND.
-     2 CINAME .EQ. NAME .AND. NODE .EQ. 7,
-     3 'inputs not written', NOEL)
-      CALL CHECK(AK1 .NE. SENT, 'AK(1) written', NOEL)
-      END
-
-C-----------------------------------------------------------------------
 C     The host's Newton on the interface temperatures, with the tangent
 C     a GAPCON host has: dq/dtheta_A = AK(1), dq/dtheta_B = -AK(1).
 C       R1 = G_A (theta_H - theta_A) - q,
@@ -133,7 +83,7 @@ C-----------------------------------------------------------------------
       TB = TC
       NIT = 0
       DO 10 IT = 1, MAXIT
-        CALL GAPK(NAME, 0.0D0, P, TA, TB, 1000 + IT, AK1)
+        CALL GAPONE(NAME, 0.0D0, P, TA, TB, 1000 + IT, AK1)
         Q = AK1*(TA - TB)
         R1 = GA*(TH - TA) - Q
         R2 = Q - GB*(TB - TC)
@@ -151,7 +101,7 @@ C-----------------------------------------------------------------------
           GO TO 20
         END IF
    10 CONTINUE
-   20 CALL GAPK(NAME, 0.0D0, P, TA, TB, 2000, AK1)
+   20 CALL GAPONE(NAME, 0.0D0, P, TA, TB, 2000, AK1)
       END
 
 C-----------------------------------------------------------------------
@@ -244,31 +194,4 @@ C     The quadratic for q (independent of the iteration).
       WRITE (*,'(A,I0,A,F11.6,A,F10.4,A,1P,E22.15)')
      1 '  T1 T1TEMP p = 50: fixed-point updates ', NIT,
      2 ', mean temperature', TM, ', h* =', HSTAR, ', q =', Q
-      END
-
-C-----------------------------------------------------------------------
-C     Tally; a failure prints the case and the check (first 40 only).
-C-----------------------------------------------------------------------
-      SUBROUTINE CHECK(OK, WHAT, K)
-      LOGICAL OK
-      CHARACTER*(*) WHAT
-      CHARACTER*48 CASE
-      COMMON /CTX/ CASE
-      COMMON /TALLY/ NPASS,NFAIL
-      IF (OK) THEN
-        NPASS = NPASS + 1
-      ELSE
-        NFAIL = NFAIL + 1
-        IF (NFAIL .LE. 40) WRITE (*,'(A,A,A,I0,A,A)') 'FAIL [',
-     1   TRIM(CASE), '] check ', K, ': ', WHAT
-      END IF
-      END
-
-      SUBROUTINE CHKNR(A, B, TOL, WHAT, K)
-      INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*(*) WHAT
-      COMMON /TALLY/ NPASS,NFAIL
-      CALL CHECK(ABS(A - B) .LE. TOL, WHAT, K)
-      IF (.NOT. (ABS(A - B) .LE. TOL) .AND. NFAIL .LE. 40)
-     1 WRITE (*,'(A,1P,3E24.15)') '   got, expected, tol:', A, B, TOL
       END

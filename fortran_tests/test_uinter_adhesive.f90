@@ -15,15 +15,13 @@
 !
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 program test_uinter_adhesive
+  use harness_tally, only: dp, npass, nfail, scene, check, check_abs
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   implicit none
-  integer, parameter :: dp = kind(1.0d0)
   real(dp), parameter :: mud = 0.3_dp, mus = 0.5_dp, sa = 4.0_dp, na = 10.0_dp
   real(dp), parameter :: kmu = 0.2_dp, vhalf = 0.1_dp, gc = 1.0e-3_dp, kn = 1.0e4_dp
   real(dp), parameter :: p = 100.0_dp, dt = 0.1_dp, big = 1.0e36_dp, guard = -999.25_dp
   real(dp), parameter :: rates(4) = [0.01_dp, 0.1_dp, 1.0_dp, 0.3_dp]
-  integer :: npass = 0, nfail = 0
-  character(len=64) :: scene = ''
 
   ! One UINTER point (NDIR <= 3), guard slots past NDIR / NSTATV.
   real(dp) :: stress(4), ddsddr(10), dvisc(9), dstruct(9), flux(2), ddfddt(2, 2), ddsddt(3, 2)
@@ -44,25 +42,6 @@ program test_uinter_adhesive
   if (nfail > 0) error stop 1
 
 contains
-
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (ok) then
-      npass = npass + 1
-    else
-      nfail = nfail + 1
-      if (nfail <= 40) write (*, '(a,a,a,a)') 'FAIL [', trim(scene), '] ', what
-    end if
-  end subroutine check
-
-  subroutine near(a, b, tol, what)
-    real(dp), intent(in) :: a, b, tol
-    character(len=*), intent(in) :: what
-    call check(abs(a - b) <= tol, what)
-    if (.not. abs(a - b) <= tol .and. nfail <= 40) &
-      write (*, '(a,1p,3e24.15)') '   got, expected, tol:', a, b, tol
-  end subroutine near
 
   real(dp) function g(v, mu_s, vh)
     real(dp), intent(in) :: v, mu_s, vh
@@ -106,9 +85,9 @@ contains
         call call_uinter()
         call check(pnewdt == big, 'PNEWDT not lowered')
       end do
-      call near(stress(1), p, 1.0e-12_dp*p, 'normal stress K_n h')
-      call near(stress(2), g(rates(r), mus, vhalf), 1.0e-12_dp*stress(2), 'steady tau = g(v)')
-      call near(statev(2), rates(r), 1.0e-10_dp, 'slip rate')
+      call check_abs(stress(1), p, 1.0e-12_dp*p, 'normal stress K_n h')
+      call check_abs(stress(2), g(rates(r), mus, vhalf), 1.0e-12_dp*stress(2), 'steady tau = g(v)')
+      call check_abs(statev(2), rates(r), 1.0e-10_dp, 'slip rate')
       call check(lopenclose == 1 .and. lstate == 1, 'closed and sliding')
     end do
   end subroutine f4_uinter
@@ -144,7 +123,7 @@ contains
         dpress = 0
         call check(pn == big, 'PNEWDT not lowered')
       end do
-      call near(tau(1), g(rates(r), mus, vhalf), 1.0e-12_dp*tau(1), 'steady tau = g(v)')
+      call check_abs(tau(1), g(rates(r), mus, vhalf), 1.0e-12_dp*tau(1), 'steady tau = g(v)')
       call check(lm == 0 .and. st(3) == 1.0_dp, 'LM = 0, sliding')
     end do
   end subroutine f4_fric
@@ -161,18 +140,18 @@ contains
                      [2.0_dp, mud, mus, sa, na, kmu, 0.0_dp, gc], pn)
       dpress = 0
       if (st(3) == 0.0_dp) then
-        call near(tau(1), ks*step*k, 1.0e-9_dp*tau(1), 'stick: tau = k_s gamma')
+        call check_abs(tau(1), ks*step*k, 1.0e-9_dp*tau(1), 'stick: tau = k_s gamma')
         call check(tau(1) <= mus*p + sa, 'stick below mu_s p + S_a')
         last = tau(1)
       else
         slipped = .true.
         call check(last + ks*step > mus*p + sa, 'slides once the trial exceeds mu_s p + S_a')
-        call near(tau(1), (mud + kmu*st(2))*p + sa, 1.0e-12_dp*tau(1), 'drop to dynamic')
+        call check_abs(tau(1), (mud + kmu*st(2))*p + sa, 1.0e-12_dp*tau(1), 'drop to dynamic')
         exit
       end if
     end do
     call check(slipped, 'slid')
-    call near(last, mus*p + sa, ks*step, 'onset stress')
+    call check_abs(last, mus*p + sa, ks*step, 'onset stress')
   end subroutine onset
 
   ! One A1 increment (NDIR = 3) to the overclosure h with the tangential motion dg along
@@ -194,7 +173,7 @@ contains
     if (lopenclose == 1) work = work + sum(0.5_dp*(s_start + stress(1:3))*du)
     call check(spd >= 0, 'SPD >= 0')
     spdsum = spdsum + spd
-    call near(work, sed + spdsum, 1.0e-12_dp*abs(sed + spdsum), 'W = SED + sum SPD')
+    call check_abs(work, sed + spdsum, 1.0e-12_dp*abs(sed + spdsum), 'W = SED + sum SPD')
   end subroutine a1_step
 
   subroutine pull_off()
@@ -205,9 +184,9 @@ contains
     s0 = 3.0_dp; ks = sa/gc; work = 0; spdsum = 0
     call init(3, [2.0_dp, mud, mus, sa, na, 0.0_dp, 0.0_dp, gc, 0.0_dp, kn])
     call a1_step(0.0_dp, s0/ks, work, spdsum)
-    call near(stress(3), s0, 1.0e-12_dp, 'bonded shear S0')
+    call check_abs(stress(3), s0, 1.0e-12_dp, 'bonded shear S0')
     call check(spd == 0, 'SPD = 0 while bonding')
-    call near(work, 0.5_dp*s0**2/ks, 1.0e-12_dp*work, 'work of the shear ramp')
+    call check_abs(work, 0.5_dp*s0**2/ks, 1.0e-12_dp*work, 'work of the shear ramp')
     nbreak = na*sqrt(1.0_dp - (s0/sa)**2)
     broke = .false.; lastn = 0
     do k = 1, 1000
@@ -215,8 +194,8 @@ contains
       call a1_step(-n/kn, 0.0_dp, work, spdsum)
       if (lopenclose == 1) then
         call check(n < nbreak, 'holds below the ellipse')
-        call near(stress(1), -n, 1.0e-9_dp, 'tension -N')
-        call near(stress(3), s0, 1.0e-12_dp, 'shear held')
+        call check_abs(stress(1), -n, 1.0e-9_dp, 'tension -N')
+        call check_abs(stress(3), s0, 1.0e-12_dp, 'shear held')
         call check(spd == 0, 'SPD = 0 while bonded')
         lastn = n
       else
@@ -225,7 +204,7 @@ contains
         call check(stress(1) == 0 .and. stress(3) == 0 .and. lstate == 4, 'free after break')
         call check(sed == 0, 'SED = 0 once broken')
         ! The energy held at the last bonded increment, from K_n, k_s and the imposed stresses.
-        call near(spd, 0.5_dp*s0**2/ks + 0.5_dp*lastn**2/kn, 1.0e-12_dp*spd, 'SPD at the break')
+        call check_abs(spd, 0.5_dp*s0**2/ks + 0.5_dp*lastn**2/kn, 1.0e-12_dp*spd, 'SPD at the break')
         exit
       end if
     end do
@@ -242,7 +221,7 @@ contains
                're-bonded with the full strength')
     call a1_step(-1.01_dp*na/kn, 0.0_dp, work, spdsum)
     call check(lopenclose == 0, 'breaks past N_a')
-    call near(spd, 0.5_dp*(0.99_dp*na)**2/kn, 1.0e-12_dp*spd, 'SPD at the second break')
+    call check_abs(spd, 0.5_dp*(0.99_dp*na)**2/kn, 1.0e-12_dp*spd, 'SPD at the second break')
   end subroutine pull_off
 
   subroutine bad_input()

@@ -10,11 +10,11 @@
 !       eta SFD/DTIME, SFD = mu p (|dgam| - gamma_crit), FLUX(1) = k(50)(T2 - T1) + f eta SFD/DTIME.
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 program test_uinter_heat
+  use harness_tally, only: dp, npass, nfail, check, check_abs
   implicit none
-  integer, parameter :: dp = kind(1.0d0)
   real(dp), parameter :: th = 400.0_dp, tc = 20.0_dp, ra = 2.0e-4_dp, rb = 1.0e-3_dp
   real(dp), parameter :: kn = 1.0e4_dp, dt = 0.5_dp, big = 1.0e36_dp
-  integer :: npass = 0, nfail = 0, it
+  integer :: it
   real(dp) :: stress(2), ddsddr(4), dvisc(4), dstruct(4), flux(2), ddfddt(2, 2), ddsddt(2, 2)
   real(dp) :: ddfddr(2, 2), statev(3), sed, sfd, spd, svd, scd, pnewdt
   real(dp) :: rdisp(2), drdisp(2), temp(2), dtemp(2), predef(2, 1), dpred(2, 1), time(2), freqr
@@ -40,8 +40,8 @@ program test_uinter_heat
     temp(2) = temp(2) - (j11*r2 - j21*r1)/det
   end do
   q = (th - temp(1))/ra
-  call near(q, (th - tc)/(ra + 1.0_dp/1300.0_dp + rb), 1.0e-10_dp*q, 'T1 flux, closed form')
-  call near(q, 1300.0_dp*(temp(1) - temp(2)), 1.0e-10_dp*q, 'T1 flux = k (T1 - T2)')
+  call check_abs(q, (th - tc)/(ra + 1.0_dp/1300.0_dp + rb), 1.0e-10_dp*q, 'T1 flux, closed form')
+  call check_abs(q, 1300.0_dp*(temp(1) - temp(2)), 1.0e-10_dp*q, 'T1 flux = k (T1 - T2)')
   call check(it == 2, 'one Newton iteration (then the converged check)')
 
   ! Frictional heat
@@ -51,34 +51,16 @@ program test_uinter_heat
   temp = [60.0_dp, 40.0_dp]
   call call_uinter()
   qin = flux
-  call near(sfd, 0.4_dp*50.0_dp*(0.05_dp - 1.0e-3_dp), 1.0e-12_dp*sfd, 'SFD = mu p slip')
-  call near(qin(1) + qin(2), 0.8_dp*sfd/dt, 1.0e-12_dp*sfd/dt, 'heat balance')
+  call check_abs(sfd, 0.4_dp*50.0_dp*(0.05_dp - 1.0e-3_dp), 1.0e-12_dp*sfd, 'SFD = mu p slip')
+  call check_abs(qin(1) + qin(2), 0.8_dp*sfd/dt, 1.0e-12_dp*sfd/dt, 'heat balance')
   ! k(50) = 1000 + 600 (50 - 20)/40 = 1450.
-  call near(qin(1) - 1450.0_dp*(40.0_dp - 60.0_dp), 0.25_dp*0.8_dp*sfd/dt, 1.0e-9_dp*sfd/dt, &
+  call check_abs(qin(1) - 1450.0_dp*(40.0_dp - 60.0_dp), 0.25_dp*0.8_dp*sfd/dt, 1.0e-9_dp*sfd/dt, &
             'slave share f')
 
   write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
   if (nfail > 0) error stop 1
 
 contains
-
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (ok) then
-      npass = npass + 1
-    else
-      nfail = nfail + 1
-      write (*, '(a,a)') 'FAIL ', what
-    end if
-  end subroutine check
-
-  subroutine near(a, b, tol, what)
-    real(dp), intent(in) :: a, b, tol
-    character(len=*), intent(in) :: what
-    call check(abs(a - b) <= tol, what)
-    if (.not. abs(a - b) <= tol) write (*, '(a,1p,3e24.15)') '   got, expected, tol:', a, b, tol
-  end subroutine near
 
   subroutine init(eta)
     real(dp), intent(in) :: eta

@@ -8,22 +8,8 @@
 # Usage: scripts/bench-batch.sh [NREP [NRUN]]   (defaults 200, 15)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-build="${BENCH_BUILD_DIR:-/tmp/build-bench-batch}"
-cc="${CC:-cc}"
-cflags=(-O2 -std=c11 -Wall -Wextra -Wpedantic -Werror)
-native_libs=(-lgcc_s -lutil -lrt -lpthread -lm -ldl -lc)
-
-command -v cargo >/dev/null 2>&1 || { echo "bench-batch.sh: cargo is not installed" >&2; exit 1; }
-command -v "$cc" >/dev/null 2>&1 || { echo "bench-batch.sh: no C compiler ($cc)" >&2; exit 1; }
-
-echo "== cargo build --release --locked --lib"
-(cd "$root" && cargo build --release --locked --lib)
-lib="${CARGO_TARGET_DIR:-$root/target}/release/libinterfacial.a"
-[ -f "$lib" ] || { echo "bench-batch.sh: $lib was not built" >&2; exit 1; }
-
-mkdir -p "$build"
-cd "$build"
-echo "== $cc ${cflags[*]} (in $build)"
+# shellcheck source=scripts/bench-c-setup.sh
+. "$root/scripts/bench-c-setup.sh" bench-batch.sh /tmp/build-bench-batch
 "$cc" "${cflags[@]}" -D_POSIX_C_SOURCE=199309L -I"$root/include" "$root/bench/bench_batch.c" \
   -o bench_batch "$lib" "${native_libs[@]}"
 echo "== bench_batch ${*:-}"

@@ -8,18 +8,8 @@
 # Usage: scripts/bench-pore-pressure.sh [NREP [NRUN]]   (defaults 2000, 15)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-build="${BENCH_BUILD_DIR:-/tmp/build-bench-pore-pressure}"
-cc="${CC:-cc}"
-cflags=(-O2 -std=c11 -Wall -Wextra -Wpedantic -Werror)
-native_libs=(-lgcc_s -lutil -lrt -lpthread -lm -ldl -lc)
-
-command -v cargo >/dev/null 2>&1 || { echo "bench-pore-pressure.sh: cargo is not installed" >&2; exit 1; }
-echo "== cargo build --release --locked --lib"
-(cd "$root" && cargo build --release --locked --lib)
-lib="${CARGO_TARGET_DIR:-$root/target}/release/libinterfacial.a"
-mkdir -p "$build"
-cd "$build"
-echo "== $cc ${cflags[*]} (in $build)"
+# shellcheck source=scripts/bench-c-setup.sh
+. "$root/scripts/bench-c-setup.sh" bench-pore-pressure.sh /tmp/build-bench-pore-pressure
 "$cc" "${cflags[@]}" -c "$root/bench/pore_pressure_ref.c" -o pore_pressure_ref.o
 "$cc" "${cflags[@]}" -D_POSIX_C_SOURCE=199309L -I"$root/include" \
   "$root/bench/bench_pore_pressure.c" pore_pressure_ref.o -o bench_pore_pressure "$lib" \

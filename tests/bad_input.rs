@@ -3,8 +3,9 @@
 //! the law reads it, without effect where it does not), DTIME ≤ 0, negative pressure, names
 //! that are not blank-padded, and NULL pointers in the native API.
 
+#[path = "common/config_file.rs"]
+mod config_file;
 use std::ffi::{CString, c_char};
-use std::sync::Once;
 
 use interfacial::CUTBACK_RATIO;
 use interfacial::abi::host::{FricCall, GUARD};
@@ -185,15 +186,7 @@ table = [[0.0, 1.0], [100.0, 3.0]]
 "#;
 
 fn setup() {
-    static ONCE: Once = Once::new();
-    ONCE.call_once(|| {
-        let path =
-            std::env::temp_dir().join(format!("interfacial-badinput-{}.toml", std::process::id()));
-        std::fs::write(&path, CONFIG).unwrap();
-        // SAFETY: set once, before any thread of this binary calls gapcon_ (Once blocks the
-        // others until it is done).
-        unsafe { std::env::set_var("INTERFACIAL_CONFIG", &path) };
-    });
+    config_file::config_once("badinput", CONFIG);
 }
 
 /// Every argument of `gapcon_` set explicitly, so the unread ones can carry NaN.

@@ -2,6 +2,9 @@
 //! every μ law of PROPS law 1, its derivatives against central differences, agreement with the
 //! steady sliding stress of `fric_`, and bad input.
 
+#[path = "common/fric_coef.rs"]
+mod fric_coef_common;
+use fric_coef_common::fric_coef_call;
 use interfacial::abi::fric_coef_;
 use interfacial::abi::host::FricCall;
 use proptest::prelude::*;
@@ -65,35 +68,8 @@ fn fric_coef(props: &[f64], rate: &[f64], p: &[f64], temp: &[f64]) -> Block {
     let mut deriv = vec![GUARD; 40 * n + 3];
     let mut slip = vec![0.0; 6 * n];
     slip[..n].copy_from_slice(rate);
-    let (nb, np, nt, nf) = (n as c_int, props.len() as c_int, 1 as c_int, 0 as c_int);
-    let idata = [1 as c_int; 6];
-    let rdata = [0.0f64; 8];
     let name = *b"SI1                                                                             ";
-    let field = [0.0f64; 1];
-    // SAFETY: arrays sized per the FRIC_COEF contract (plus guards), names of length 80.
-    unsafe {
-        fric_coef_(
-            coef.as_mut_ptr(),
-            deriv.as_mut_ptr(),
-            &nb,
-            &np,
-            &nt,
-            &nf,
-            idata.as_ptr(),
-            rdata.as_ptr(),
-            name.as_ptr().cast(),
-            name.as_ptr().cast(),
-            name.as_ptr().cast(),
-            props.as_ptr(),
-            slip.as_ptr(),
-            p.as_ptr(),
-            temp.as_ptr(),
-            field.as_ptr(),
-            80,
-            80,
-            80,
-        );
-    }
+    fric_coef_call(&mut coef, &mut deriv, props, &slip, p, temp, &name);
     Block { coef, deriv, n }
 }
 

@@ -9,13 +9,15 @@
 
 #[path = "common/central.rs"]
 mod central;
+#[path = "common/config_file.rs"]
+mod config_file;
+#[path = "common/fric_coef.rs"]
+mod fric_coef_common;
 use central::{Shift, along_dgam, along_press, along_temp, central_tau};
+use fric_coef_common::fric_coef_call;
 
-use std::ffi::c_int;
 use std::process::Command;
-use std::sync::Once;
 
-use interfacial::abi::fric_coef_;
 use interfacial::abi::host::FricCall;
 use proptest::prelude::*;
 
@@ -41,17 +43,7 @@ k = 1.0
 "#;
 
 fn setup() {
-    static ONCE: Once = Once::new();
-    ONCE.call_once(|| {
-        let path = std::env::temp_dir().join(format!(
-            "interfacial-fric-table-{}.toml",
-            std::process::id()
-        ));
-        std::fs::write(&path, CONFIG).unwrap();
-        // SAFETY: set once, before any thread of this binary calls into the library (every
-        // test calls setup() first, and Once blocks the others until it is done).
-        unsafe { std::env::set_var("INTERFACIAL_CONFIG", &path) };
-    });
+    config_file::config_once("fric-table", CONFIG);
 }
 
 /// μ of "RATE", written independently of the library: linear through (0, 0.6), (0.3, 0.45),
@@ -294,35 +286,16 @@ fn fric_coef_reads_the_table() {
     let mut coef = vec![0.0; 2 * n];
     let mut deriv = vec![0.0; 40 * n];
     let slip = [0.25, 0.0, 0.0, 0.0, 0.0, 0.0];
-    let (nb, np, nt, nf) = (1 as c_int, 20 as c_int, 1 as c_int, 0 as c_int);
-    let idata = [1 as c_int; 6];
-    let rdata = [0.0f64; 8];
-    let name = b"FULL    ";
-    let (p, theta, field) = ([50.0f64], [25.0f64], [0.0f64]);
-    // SAFETY: arrays sized per the FRIC_COEF contract, names of length 8.
-    unsafe {
-        fric_coef_(
-            coef.as_mut_ptr(),
-            deriv.as_mut_ptr(),
-            &nb,
-            &np,
-            &nt,
-            &nf,
-            idata.as_ptr(),
-            rdata.as_ptr(),
-            name.as_ptr().cast(),
-            name.as_ptr().cast(),
-            name.as_ptr().cast(),
-            props.as_ptr(),
-            slip.as_ptr(),
-            p.as_ptr(),
-            theta.as_ptr(),
-            field.as_ptr(),
-            8,
-            8,
-            8,
-        );
-    }
+    let (p, theta) = ([50.0f64], [25.0f64]);
+    fric_coef_call(
+        &mut coef,
+        &mut deriv,
+        &props,
+        &slip,
+        &p,
+        &theta,
+        b"FULL    ",
+    );
     let mu = 0.44671875;
     assert!(
         (coef[0] - mu).abs() < 1e-14,

@@ -3,9 +3,10 @@
 //! binary sets `INTERFACIAL_CONFIG` before its first call; bad files are tried in child
 //! processes (see `config_errors`).
 
+#[path = "common/config_file.rs"]
+mod config_file;
 use std::ffi::CString;
 use std::process::Command;
-use std::sync::Once;
 
 use interfacial::abi::host::{FricCall, GUARD, GapconCall};
 use interfacial::abi::{IflConductance, IflStatus, ifl_gap_conductance};
@@ -37,15 +38,7 @@ table = [[0.0, 1.0], [100.0, 3.0]]
 "#;
 
 fn setup() {
-    static ONCE: Once = Once::new();
-    ONCE.call_once(|| {
-        let path =
-            std::env::temp_dir().join(format!("interfacial-gapcon-{}.toml", std::process::id()));
-        std::fs::write(&path, CONFIG).unwrap();
-        // SAFETY: set once, before any thread of this binary calls into the library (every
-        // test calls setup() first, and Once blocks the others until it is done).
-        unsafe { std::env::set_var("INTERFACIAL_CONFIG", &path) };
-    });
+    config_file::config_once("gapcon", CONFIG);
 }
 
 #[test]

@@ -3,32 +3,28 @@
 //! `ifl_clear_error` empties it. Checked for every entry point: a failure is recorded, then a
 //! successful call of each entry point in turn must leave that text untouched.
 
+#[path = "common/config_file.rs"]
+mod config_file;
+#[path = "common/fric_coef.rs"]
+mod fric_coef_common;
+use fric_coef_common::fric_coef_call;
+#[path = "common/vfric.rs"]
+mod vfric_common;
 use std::ffi::{CStr, c_char, c_int};
-use std::sync::Once;
+use vfric_common::{Block as VfricBlock, call as vfric_call};
 
 use interfacial::abi::host::{FricCall, GapconCall};
 use interfacial::abi::uinter_host::UinterCall;
-use interfacial::abi::vfric::{IflReal, vfric_};
 use interfacial::abi::{
-    IflConductance, IflStatus, fric_coef_, ifl_clear_error, ifl_forced_sliding, ifl_fric_batch,
+    IflConductance, IflStatus, ifl_clear_error, ifl_forced_sliding, ifl_fric_batch,
     ifl_gap_conductance, ifl_gap_conductance_n, ifl_last_error, ifl_last_error_copy,
 };
 
 fn setup() {
-    static ONCE: Once = Once::new();
-    ONCE.call_once(|| {
-        let path = std::env::temp_dir().join(format!(
-            "interfacial-last-error-{}.toml",
-            std::process::id()
-        ));
-        std::fs::write(
-            &path,
-            "[interactions.SI1.conductance]\nlaw = \"constant\"\nk = 2.0\n",
-        )
-        .unwrap();
-        // SAFETY: set once, before any call into the library in this binary.
-        unsafe { std::env::set_var("INTERFACIAL_CONFIG", &path) };
-    });
+    config_file::config_once(
+        "last-error",
+        "[interactions.SI1.conductance]\nlaw = \"constant\"\nk = 2.0\n",
+    );
 }
 
 fn last() -> String {
@@ -76,36 +72,8 @@ fn uinter_ok() {
 fn fric_coef_ok() {
     let (mut coef, mut deriv) = ([0.0f64; 2], [0.0f64; 40]);
     let props = [1.0, 0.3, 0.0, 0.0, 1e-3];
-    let (nb, np, nt, nf) = (1 as c_int, props.len() as c_int, 1 as c_int, 0 as c_int);
-    let idata = [1 as c_int; 6];
-    let rdata = [0.0f64; 8];
-    let slip = [0.0f64; 6];
-    let (p, t, field) = ([100.0f64], [20.0f64], [0.0f64]);
-    let name = [b' '; 80];
-    // SAFETY: arrays sized for nBlock = 1 per the FRIC_COEF contract, names of length 80.
-    unsafe {
-        fric_coef_(
-            coef.as_mut_ptr(),
-            deriv.as_mut_ptr(),
-            &nb,
-            &np,
-            &nt,
-            &nf,
-            idata.as_ptr(),
-            rdata.as_ptr(),
-            name.as_ptr().cast(),
-            name.as_ptr().cast(),
-            name.as_ptr().cast(),
-            props.as_ptr(),
-            slip.as_ptr(),
-            p.as_ptr(),
-            t.as_ptr(),
-            field.as_ptr(),
-            80,
-            80,
-            80,
-        );
-    }
+    let (slip, p, t) = ([0.0f64; 6], [100.0f64], [20.0f64]);
+    fric_coef_call(&mut coef, &mut deriv, &props, &slip, &p, &t, &[b' '; 80]);
     assert_eq!(coef, [0.3, 0.3], "fric_coef_ succeeded");
 }
 
@@ -187,67 +155,14 @@ fn fric_batch_ok() {
 
 fn vfric_ok() {
     // One sliding contact point: fTangential = -min(mu F_N, F_stick) = -min(0.3 * 10, 5) = -3.
-    let props: [IflReal; 2] = [1.0, 0.3];
-    let (f_normal, f_stick, area): ([IflReal; 1], [IflReal; 1], [IflReal; 1]) =
-        ([10.0], [5.0], [1.0]);
-    let mut ftan: [IflReal; 1] = [0.0];
-    let mut statev: [IflReal; 2] = [0.0; 2];
-    let jcon = [1 as c_int];
-    let idummy = [1 as c_int; 8];
-    let dummy: [IflReal; 32] = [0.0; 32];
-    let (one, zero, two, nprops) = (1 as c_int, 0 as c_int, 2 as c_int, 2 as c_int);
-    let r0: IflReal = 0.0;
-    let name = [b' '; 80];
-    // SAFETY: every array is at least as long as the VFRIC dimensions given (one point).
-    unsafe {
-        vfric_(
-            ftan.as_mut_ptr(),
-            statev.as_mut_ptr(),
-            &one,
-            &one,
-            &one,
-            &one,
-            &one,
-            &one,
-            &one,
-            &two,
-            &one,
-            &nprops,
-            &zero,
-            &zero,
-            &one,
-            idummy.as_ptr(),
-            idummy.as_ptr(),
-            jcon.as_ptr(),
-            idummy.as_ptr(),
-            &r0,
-            &r0,
-            &r0,
-            name.as_ptr().cast(),
-            name.as_ptr().cast(),
-            name.as_ptr().cast(),
-            &one,
-            dummy.as_ptr(),
-            f_stick.as_ptr(),
-            dummy.as_ptr(),
-            f_normal.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            props.as_ptr(),
-            area.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            dummy.as_ptr(),
-            80,
-            80,
-            80,
-        );
-    }
+    let ftan = vfric_call(&VfricBlock {
+        nfricdir: 1,
+        props: vec![1.0, 0.3],
+        f_normal: vec![10.0],
+        f_stick: vec![5.0],
+        area: vec![1.0],
+        jconslvid: vec![1],
+    });
     assert!((ftan[0] + 3.0).abs() < 1e-6, "vfric_ succeeded: {ftan:?}");
 }
 

@@ -3,28 +3,21 @@
 //! and DDFDDR = ∂FLUX/∂RDISP against central differences, and the energy balance
 //! FLUX(1) + FLUX(2) = η·SFD/Δt. One process, one configuration file (read once).
 
-use std::sync::Once;
-
+#[path = "common/config_file.rs"]
+mod config_file;
 use interfacial::abi::host::FricCall;
 use interfacial::abi::uinter_host::UinterCall;
 
 const K_N: f64 = 1e4;
 
 fn configure() {
-    static ONCE: Once = Once::new();
-    ONCE.call_once(|| {
-        let path = std::env::temp_dir().join(format!("uinter_thermal_{}.toml", std::process::id()));
-        // HOT: k(p, θ̄) from a table; GAP: gas conduction across the clearance.
-        std::fs::write(
-            &path,
-            "[interactions.HOT.conductance]\nlaw = \"pressure-table\"\n\
+    // HOT: k(p, θ̄) from a table; GAP: gas conduction across the clearance.
+    config_file::config_once(
+        "uinter-thermal",
+        "[interactions.HOT.conductance]\nlaw = \"pressure-table\"\n\
              table = [[0.0, 100.0, 0.0], [200.0, 500.0, 0.0], [0.0, 300.0, 100.0], [200.0, 900.0, 100.0]]\n\
              [interactions.GAP.conductance]\nlaw = \"gas-gap\"\nk_gas = 0.025\ng0 = 1e-4\n",
-        )
-        .unwrap();
-        // SAFETY: set once, before any call in this process reads the environment.
-        unsafe { std::env::set_var("INTERFACIAL_CONFIG", &path) };
-    });
+    );
 }
 
 /// μ = 0.4, S_a = 2, N_a = 5, γ_crit = 1e-3, K_n, conductance on, η, f = 0.3.

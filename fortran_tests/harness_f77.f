@@ -1,0 +1,188 @@
+C=======================================================================
+C     harness_f77.f -- the routines the fixed-form harnesses share
+C     (test_fric_f1.f, test_fric_bad_input.f, test_fric_rate.f,
+C     test_gapcon_t1.f, test_gapcon_bad_input.f): the tally CHECK /
+C     CHKNR, the sentinel
+C     guard GUARD1, the host arguments a Coulomb call does not use
+C     (HOSTIN), the thread's last library message (GETMSG) and one
+C     checked GAPCON call (GAPONE, with SAMEB).
+C     Fixed-form Fortran 77 like its callers, which share with it
+C       COMMON /TALLY/ NPASS,NFAIL   (zeroed by the program)
+C       COMMON /CTX/ CASE            (CHARACTER*48, the current case).
+C     Linked into a harness by interfacial_fortran_harness's extra
+C     source argument (fortran_tests/CMakeLists.txt).
+C=======================================================================
+
+C-----------------------------------------------------------------------
+C     Tally.  A failure prints the case, K (the check or increment
+C     number the caller passes) and the check; the first 40 only, to
+C     keep a broken build readable.
+C-----------------------------------------------------------------------
+      SUBROUTINE CHECK(OK, WHAT, K)
+      LOGICAL OK
+      CHARACTER*(*) WHAT
+      CHARACTER*48 CASE
+      COMMON /CTX/ CASE
+      COMMON /TALLY/ NPASS,NFAIL
+      IF (OK) THEN
+        NPASS = NPASS + 1
+      ELSE
+        NFAIL = NFAIL + 1
+        IF (NFAIL .LE. 40) WRITE (*,'(A,A,A,I0,A,A)') 'FAIL [',
+     1   TRIM(CASE), '] check ', K, ': ', WHAT
+      END IF
+      END
+
+C     |A - B| <= TOL; a failure also prints got, expected and TOL.
+      SUBROUTINE CHKNR(A, B, TOL, WHAT, K)
+      INCLUDE 'ABA_PARAM.INC'
+      CHARACTER*(*) WHAT
+      COMMON /TALLY/ NPASS,NFAIL
+      CALL CHECK(ABS(A - B) .LE. TOL, WHAT, K)
+      IF (.NOT. (ABS(A - B) .LE. TOL) .AND. NFAIL .LE. 40)
+     1 WRITE (*,'(A,1P,3E24.15)') '   got, expected, tol:', A, B, TOL
+      END
+
+C-----------------------------------------------------------------------
+C     A(IFROM..ITO) all still hold the sentinel -999.25 (one check); an
+C     empty range (ITO < IFROM) is no check at all.
+C-----------------------------------------------------------------------
+      SUBROUTINE GUARD1(A, IFROM, ITO, WHAT, K)
+      INCLUDE 'ABA_PARAM.INC'
+      PARAMETER (SENT=-999.25D0)
+      DIMENSION A(*)
+      CHARACTER*(*) WHAT
+      LOGICAL OK
+      IF (ITO .LT. IFROM) RETURN
+      OK = .TRUE.
+      DO 10 I = IFROM, ITO
+        IF (A(I) .NE. SENT) OK = .FALSE.
+   10 CONTINUE
+      CALL CHECK(OK, WHAT, K)
+      END
+
+C-----------------------------------------------------------------------
+C     The host arguments the Coulomb law does not use, filled as a host
+C     would (step 1 at time 0, Delta t = 0.1, identity DROT, contact at
+C     node 7, point 1, element 0, SLIP(1..MG) = 0).
+C-----------------------------------------------------------------------
+      SUBROUTINE HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,
+     1 COORDS,RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
+      INCLUDE 'ABA_PARAM.INC'
+      DIMENSION TIME(2),COORDS(3),RCOORD(3),DROT(2,2),TEMP(2),
+     1 PREDEF(2,1),SLIP(MG)
+      KSTEP = 1
+      KINC = 1
+      TIME(1) = 0.0D0
+      TIME(2) = 0.0D0
+      DTIME = 0.1D0
+      NOEL = 0
+      NPT = 1
+      NODE = 7
+      NPATCH = 1
+      MCRD = 3
+      NPRED = 1
+      DO 10 I = 1, 3
+        COORDS(I) = 0.0D0
+        RCOORD(I) = 0.0D0
+   10 CONTINUE
+      DROT(1,1) = 1.0D0
+      DROT(2,1) = 0.0D0
+      DROT(1,2) = 0.0D0
+      DROT(2,2) = 1.0D0
+      TEMP(1) = 20.0D0
+      TEMP(2) = 20.0D0
+      PREDEF(1,1) = 0.0D0
+      PREDEF(2,1) = 0.0D0
+      DDPDDH = 1.0D6
+      DO 20 I = 1, MG
+        SLIP(I) = 0.0D0
+   20 CONTINUE
+      END
+
+C-----------------------------------------------------------------------
+C     The calling thread's last error message, through the library's
+C     native C API (size_t ifl_last_error_copy(char *buf, size_t len):
+C     copies at most len-1 bytes and a NUL, returns the full length).
+C     L: the length of the message in MSG.
+C-----------------------------------------------------------------------
+      SUBROUTINE GETMSG(MSG, L)
+      USE, INTRINSIC :: ISO_C_BINDING, ONLY: C_SIZE_T
+      CHARACTER*(*) MSG
+      INTERFACE
+        FUNCTION IFLCPY(BUF, NBUF) BIND(C, NAME='ifl_last_error_copy')
+          USE, INTRINSIC :: ISO_C_BINDING, ONLY: C_CHAR, C_SIZE_T
+          INTEGER(C_SIZE_T) :: IFLCPY
+          CHARACTER(KIND=C_CHAR), DIMENSION(*) :: BUF
+          INTEGER(C_SIZE_T), VALUE :: NBUF
+        END FUNCTION IFLCPY
+      END INTERFACE
+      INTEGER(C_SIZE_T) :: NFULL
+      MSG = ' '
+      NFULL = IFLCPY(MSG, INT(LEN(MSG), C_SIZE_T))
+      L = INT(MIN(NFULL, INT(LEN(MSG) - 1, C_SIZE_T)))
+      END
+
+C-----------------------------------------------------------------------
+C     One GAPCON call as Abaqus makes it, CHARACTER*80 names: AK(1..5)
+C     preset to a sentinel, D = (CLR, P), TEMP = (TA, TB), element
+C     NOEL, node 7; the arguments GAPCON does not read hold harmless
+C     values.  Checks AK(1) written (a failure writes 0), AK(2..5)
+C     untouched and the inputs unchanged bit for bit (a NaN input must
+C     still be that NaN).  Returns AK(1).
+C-----------------------------------------------------------------------
+      SUBROUTINE GAPONE(NAME, CLR, P, TA, TB, NOEL, AK1)
+      INCLUDE 'ABA_PARAM.INC'
+      CHARACTER*(*) NAME
+      CHARACTER*80 CINAME,SLNAME,MSNAME
+      PARAMETER (SENT=-999.25D0)
+      DIMENSION AK(5),D(2),FLOWM(2),TEMP(2),PREDEF(2,1),TIME(2),
+     1 COORDS(3)
+      LOGICAL OK, SAMEB
+      CINAME = NAME
+      SLNAME = 'SLAVE'
+      MSNAME = 'MASTER'
+      DO 10 I = 1, 5
+        AK(I) = SENT
+   10 CONTINUE
+      D(1) = CLR
+      D(2) = P
+      FLOWM(1) = 0.0D0
+      FLOWM(2) = 0.0D0
+      TEMP(1) = TA
+      TEMP(2) = TB
+      PREDEF(1,1) = 0.0D0
+      PREDEF(2,1) = 0.0D0
+      TIME(1) = 1.0D0
+      TIME(2) = 1.0D0
+      COORDS(1) = 0.0D0
+      COORDS(2) = 0.0D0
+      COORDS(3) = 0.0D0
+      NODE = 7
+      NPRED = 1
+      KSTEP = 1
+      KINC = 1
+      NOELIN = NOEL
+      CALL GAPCON(AK,D,FLOWM,TEMP,PREDEF,TIME,CINAME,SLNAME,MSNAME,
+     1 COORDS,NOELIN,NODE,NPRED,KSTEP,KINC)
+      AK1 = AK(1)
+      OK = .TRUE.
+      DO 20 I = 2, 5
+        IF (AK(I) .NE. SENT) OK = .FALSE.
+   20 CONTINUE
+      CALL CHECK(OK, 'AK(2..5) untouched', NOEL)
+      CALL CHECK(SAMEB(D(1), CLR) .AND. SAMEB(D(2), P) .AND.
+     1 SAMEB(TEMP(1), TA) .AND. SAMEB(TEMP(2), TB) .AND.
+     2 CINAME .EQ. NAME .AND. NOELIN .EQ. NOEL .AND. NODE .EQ. 7,
+     3 'inputs not written', NOEL)
+      CALL CHECK(AK1 .NE. SENT, 'AK(1) written', NOEL)
+      END
+
+C     A and B the same bit for bit (a NaN equals that same NaN).
+      LOGICAL FUNCTION SAMEB(A, B)
+      INCLUDE 'ABA_PARAM.INC'
+      INTEGER*8 IA, IB
+      IA = TRANSFER(A, IA)
+      IB = TRANSFER(B, IB)
+      SAMEB = IA .EQ. IB
+      END
