@@ -10,7 +10,7 @@ use crate::laws::coulomb::{Coulomb, DEFAULT_SLIP_TOLERANCE, StickMode};
 
 use super::FrictionLaw;
 use super::schema::Default::{self, Described, Required};
-use super::schema::{Class, Entry, Fix, Fixed, Layout, PropsBuilder, PropsError, Rule};
+use super::schema::{Class, Entry, Fix, Fixed, Layout, PropsError, Rule, props_builder};
 
 /// `PROPS(1)` code of the adhesive friction law.
 pub const LAW_ADHESIVE: i32 = 2;
@@ -244,40 +244,11 @@ pub(crate) fn adhesive(props: &[f64]) -> Result<AdhesiveProps, LawError> {
     Ok(AdhesiveProps::from_entries(&e))
 }
 
-/// A law-2 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
-/// starts at its "0 / absent" value.
-#[derive(Clone, Debug, PartialEq)]
-pub struct AdhesiveBuilder(PropsBuilder);
-
-impl std::default::Default for AdhesiveBuilder {
-    fn default() -> Self {
-        AdhesiveBuilder(PropsBuilder::new(&ADHESIVE))
-    }
-}
-
-/// One setter per entry, each by the entry's key in [`ADHESIVE`] (an unknown key does not
-/// compile).
-macro_rules! setters {
-    ($($method:ident => $key:literal),* $(,)?) => {
-        $(
-            #[doc = concat!("Sets `", $key, "` (docs/props.md, law 2).")]
-            #[must_use]
-            pub fn $method(self, v: f64) -> Self {
-                const INDEX: usize = ADHESIVE.index_of($key);
-                AdhesiveBuilder(self.0.set(INDEX, v))
-            }
-        )*
-    };
-}
-
-impl AdhesiveBuilder {
-    /// Every entry at its "0 / absent" value, `PROPS(1) = 2`.
-    #[must_use]
-    pub fn new() -> Self {
-        Self::default()
-    }
-
-    setters! {
+props_builder! {
+    /// A law-2 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
+    /// starts at its "0 / absent" value, `PROPS(1) = 2`.
+    AdhesiveBuilder, ADHESIVE, "law 2",
+    {
         coeff => "coeff",
         coeff_static => "coeffStatic",
         sa => "Sa",
@@ -290,24 +261,14 @@ impl AdhesiveBuilder {
         heat_fraction => "heat_fraction",
         slave_fraction => "slave_fraction",
     }
+}
 
+impl AdhesiveBuilder {
     /// Sets the conductance switch (`PROPS(11)`).
     #[must_use]
     pub fn conductance(self, on: bool) -> Self {
         const INDEX: usize = ADHESIVE.index_of("conductance");
         AdhesiveBuilder(self.0.set(INDEX, if on { 1.0 } else { 0.0 }))
-    }
-
-    /// All 13 entries.
-    #[must_use]
-    pub fn build(&self) -> Vec<f64> {
-        self.0.build()
-    }
-
-    /// The first `nprops` entries (a host that leaves out trailing ones).
-    #[must_use]
-    pub fn build_first(&self, nprops: usize) -> Vec<f64> {
-        self.0.build_first(nprops)
     }
 }
 

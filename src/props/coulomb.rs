@@ -12,7 +12,7 @@ use crate::laws::coulomb::DEFAULT_SLIP_TOLERANCE;
 
 use super::LAW_COULOMB;
 use super::schema::Default::{Described, Required, Value};
-use super::schema::{Class, Entry, Layout, PropsBuilder, Rule, Variant};
+use super::schema::{Class, Entry, Layout, Rule, Variant, props_builder};
 
 /// `PROPS(7)`: the stick modes.
 const STICK: Class = Class::Choice(&[
@@ -159,40 +159,11 @@ const VISCOUS_REFERENCE: Class = Class::Switch {
     on: "γ̇_crit = F_f·ω·R (seed 003, \"a fraction of the relative tangential velocity\")",
 };
 
-/// A law-1 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
-/// starts at its "0 / absent" value, `PROPS(1) = 1`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct CoulombBuilder(PropsBuilder);
-
-impl Default for CoulombBuilder {
-    fn default() -> Self {
-        CoulombBuilder(PropsBuilder::new(&COULOMB))
-    }
-}
-
-/// One setter per entry, each by the entry's key in [`COULOMB`] (an unknown key does not
-/// compile).
-macro_rules! setters {
-    ($($method:ident => $key:literal),* $(,)?) => {
-        $(
-            #[doc = concat!("Sets `", $key, "` (docs/props.md, law 1).")]
-            #[must_use]
-            pub fn $method(self, v: f64) -> Self {
-                const INDEX: usize = COULOMB.index_of($key);
-                CoulombBuilder(self.0.set(INDEX, v))
-            }
-        )*
-    };
-}
-
-impl CoulombBuilder {
-    /// Every entry at its "0 / absent" value, `PROPS(1) = 1`.
-    #[must_use]
-    pub fn new() -> Self {
-        Self::default()
-    }
-
-    setters! {
+props_builder! {
+    /// A law-1 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
+    /// starts at its "0 / absent" value, `PROPS(1) = 1`.
+    CoulombBuilder, COULOMB, "law 1",
+    {
         mu => "mu",
         mu2 => "mu2",
         tau_max => "tau_max",
@@ -215,19 +186,6 @@ impl CoulombBuilder {
         damping_clearance => "damping_clearance",
         damping_fraction => "damping_fraction",
         frozen => "frozen",
-    }
-
-    /// All 20 entries.
-    #[must_use]
-    pub fn build(&self) -> Vec<f64> {
-        self.0.build()
-    }
-
-    /// The first `nprops` entries (a host that leaves out trailing ones, e.g. 7 for the plain
-    /// law).
-    #[must_use]
-    pub fn build_first(&self, nprops: usize) -> Vec<f64> {
-        self.0.build_first(nprops)
     }
 }
 
