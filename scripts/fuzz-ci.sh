@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # CI fuzzing stage (run by scripts/test.sh): every cargo-fuzz target in fuzz/ for FUZZ_SECONDS
 # (default 45) each, with AddressSanitizer, from its seeds and a fresh corpus; fails on any crash,
-# sanitizer report or property violation. About 6 minutes for the five targets with a cold build, 45 s of it for
-# installing cargo-fuzz when missing. Longer runs: scripts/fuzz.sh TARGET SECONDS.
+# sanitizer report or property violation. Eight targets, at most 45 s of fuzzing each (docs/fuzzing.md has the measured time), plus
+# installing cargo-fuzz when missing (45 s). Longer runs: scripts/fuzz.sh TARGET SECONDS.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 seconds="${FUZZ_SECONDS:-45}"
