@@ -33,7 +33,7 @@ use super::coulomb::{
     Coulomb, CoulombState, CriticalSlip, FrictionStatus, Increment, Traction, Update,
 };
 use super::friction_coefficient::{RateFormulation, STICK_TEST_ROUNDING};
-use super::small_vec::{add, all_finite, diagonal, norm, scale, unit};
+use super::small_vec::{add, all_finite, diagonal, norm, radial_transverse, scale, unit};
 use crate::{LawError, Outcome};
 
 /// The seed's parameters by name (seed 004, "Properties"), before validation.
@@ -517,13 +517,7 @@ impl Adhesive {
         };
         let n = unit(predictor, predictor_eq);
         let transverse = tau_eq / predictor_eq;
-        let mut ddtddg = [[0.0; N]; N];
-        for (i, row) in ddtddg.iter_mut().enumerate() {
-            for (j, x) in row.iter_mut().enumerate() {
-                let delta = if i == j { 1.0 } else { 0.0 };
-                *x = g_s * n[i] * n[j] + transverse * (delta - n[i] * n[j]);
-            }
-        }
+        let ddtddg = radial_transverse(&n, g_s, transverse);
         Slide {
             traction: Traction {
                 tau: scale(&n, tau_eq),
@@ -639,15 +633,8 @@ impl Adhesive {
         let dtau_dgamma_eq = g_s * k_s / stiffness_sum;
         let dtau_dp = g_s * dslip_dp + g_p;
         let n = unit(predictor, predictor_eq);
-        let mut ddtddg = [[0.0; N]; N];
-        let transverse = tau_eq / predictor_eq;
-        for (i, row) in ddtddg.iter_mut().enumerate() {
-            for (j, x) in row.iter_mut().enumerate() {
-                let delta = if i == j { 1.0 } else { 0.0 };
-                // d(τ n)/dγ^pr = τ'(n⊗n) + (τ/|γ^pr|)(I − n⊗n).
-                *x = dtau_dgamma_eq * n[i] * n[j] + transverse * (delta - n[i] * n[j]);
-            }
-        }
+        // d(τ n)/dγ^pr = τ'(n⊗n) + (τ/|γ^pr|)(I − n⊗n).
+        let ddtddg = radial_transverse(&n, dtau_dgamma_eq, tau_eq / predictor_eq);
         Slide {
             traction: Traction {
                 tau: scale(&n, tau_eq),

@@ -188,6 +188,26 @@ pub(crate) fn transverse_projection<const N: usize>(n: &[f64; N], s: f64) -> [[f
     m
 }
 
+/// `r·n nᵀ + t·(I − n nᵀ)`: the tangent of τ = τ_eq(|γ|)·n with respect to γ along a unit
+/// vector `n` (seed 000, Eq. 5.2.3-3: r = ∂τ_eq/∂|γ|, t = τ_eq/|γ|). Evaluated as written for
+/// every N (for N = 1, n = ±1 and the projection is exactly 0).
+#[inline(always)]
+#[must_use]
+pub(crate) fn radial_transverse<const N: usize>(
+    n: &[f64; N],
+    radial: f64,
+    transverse: f64,
+) -> [[f64; N]; N] {
+    let mut m = [[0.0; N]; N];
+    for (i, row) in m.iter_mut().enumerate() {
+        for (j, x) in row.iter_mut().enumerate() {
+            let delta = if i == j { 1.0 } else { 0.0 };
+            *x = radial * n[i] * n[j] + transverse * (delta - n[i] * n[j]);
+        }
+    }
+    m
+}
+
 /// True when every entry is finite.
 #[inline]
 #[must_use]
