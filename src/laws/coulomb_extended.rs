@@ -993,19 +993,9 @@ impl ExtendedCoulomb {
             ddtdtheta[i] = transverse * proj_v + n[i] * dt_dtheta;
         }
         Ok(ScaledTraction {
-            traction: Traction {
-                tau: scale(&n, t),
-                ddtddg,
-                ddtddp: scale(&n, dtau_dp),
-                dslip: scale(&n, slip_eq),
-                // |τ̄|²/(2k̄_s), with k̄_s = τ̄_crit/γ_crit at the end when rate-following.
-                sed: if following {
-                    0.5 * t * gamma_crit
-                } else {
-                    0.5 * t * t / stiffness
-                },
-                sfd: t * slip_eq,
-            },
+            traction: slip_traction(
+                &n, t, ddtddg, dtau_dp, slip_eq, following, gamma_crit, stiffness,
+            ),
             ddtdtheta,
             slip_eq,
             iterations,
@@ -1088,6 +1078,35 @@ impl ExtendedCoulomb {
             slip_eq,
             iterations: 0,
         })
+    }
+}
+
+/// The slip answer τ̄ = t·n (Eq. 5.2.3-2) with its tangents `ddtddg` and ∂t/∂p, the slip
+/// increment and the energies: `SED` = |τ̄|²/(2k̄_s), with k̄_s = t/γ_crit at the end when
+/// rate-following (the elastic slip stays γ_crit), the start stiffness otherwise.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(super) fn slip_traction<const N: usize>(
+    n: &[f64; N],
+    t: f64,
+    ddtddg: [[f64; N]; N],
+    dtau_dp: f64,
+    slip_eq: f64,
+    following: bool,
+    gamma_crit: f64,
+    stiffness: f64,
+) -> Traction<N> {
+    Traction {
+        tau: scale(n, t),
+        ddtddg,
+        ddtddp: scale(n, dtau_dp),
+        dslip: scale(n, slip_eq),
+        sed: if following {
+            0.5 * t * gamma_crit
+        } else {
+            0.5 * t * t / stiffness
+        },
+        sfd: t * slip_eq,
     }
 }
 

@@ -254,19 +254,9 @@ impl ExtendedCoulomb {
                 }
             }
             (
-                Traction {
-                    tau: scale(&n, t),
-                    ddtddg,
-                    ddtddp: scale(&n, dtau_dp),
-                    dslip: scale(&n, slip_eq),
-                    // |τ|²/(2k_s), k_s = τ_crit/γ_crit at the end when rate-following.
-                    sed: if following {
-                        0.5 * t * gamma_crit
-                    } else {
-                        0.5 * t * t / stiffness
-                    },
-                    sfd: t * slip_eq,
-                },
+                slip_traction(
+                    &n, t, ddtddg, dtau_dp, slip_eq, following, gamma_crit, stiffness,
+                ),
                 ddtdtheta,
                 slip_eq,
                 iterations,
