@@ -521,6 +521,9 @@ mod tests {
             match fix {
                 Fix::Zero => assert!(class.admits(0.0)),
                 Fix::NoneOrEqual(_) => assert!(class.admits(-1.0) && class.is_off(-1.0)),
+                Fix::ZeroOrEqual(_) | Fix::Is(_) | Fix::MappedBy(_) => {
+                    panic!("not a pin of the special case: {fix:?}")
+                }
             }
         }
         // Absent entries past NPROPS = 2 are valid: the smallest valid layout.

@@ -9,10 +9,13 @@
 //! refusals that need more than the layout (listed there).
 
 use crate::laws::coulomb::DEFAULT_SLIP_TOLERANCE;
+use crate::laws::coulomb_extended::Hht;
 
-use super::LAW_COULOMB;
-use super::schema::Default::{Described, Required, Value};
-use super::schema::{Class, Entry, Layout, Rule, Variant, props_builder};
+use super::{COULOMB_NPROPS, LAW_COULOMB};
+use super::schema::Default::{Derived, Described, Entry as SameAs, Required, Value};
+use super::schema::{
+    Class, Entry, FastLayout, Fix, Fixed, LawFn, Layout, Plan, Rule, Variant, props_builder,
+};
 
 /// `PROPS(7)`: the stick modes.
 const STICK: Class = Class::Choice(&[
@@ -52,7 +55,7 @@ pub const COULOMB: Layout = Layout {
         Entry::new(2, "mu", "friction coefficient", Class::NonNegative)
             .symbol("μ").when_absent(Required),
         Entry::new(3, "mu2", "second-direction coefficient", Class::OffOrPositive)
-            .symbol("μ₂").when_absent(Described("isotropic"))
+            .symbol("μ₂").when_absent(SameAs(2))
             .note("anisotropy; μ = `PROPS(2)` is μ₁, which must then be > 0 unless μ₂ = μ₁"),
         Entry::new(4, "tau_max", "shear stress limit, τ_crit = min(μp, τ_max)", Class::OffOrPositive)
             .symbol("τ_max").unit("stress").when_absent(Described("no limit")),
@@ -80,9 +83,9 @@ pub const COULOMB: Layout = Layout {
             .symbol("α").when_absent(Described("static (Δt_rate = Δt)"))
             .note("HHT is on when any of `PROPS(14..16)` is non-zero"),
         Entry::new(15, "hht_beta", "HHT β", Class::OffOrPositive)
-            .symbol("β").when_absent(Described("(1 − α)²/4")),
+            .symbol("β").when_absent(Derived { of: 14, value: LawFn(Hht::default_beta), text: "(1 − α)²/4" }),
         Entry::new(16, "hht_gamma", "HHT γ", Class::OffOrPositive)
-            .symbol("γ").when_absent(Described("1/2 − α")),
+            .symbol("γ").when_absent(Derived { of: 14, value: LawFn(Hht::default_gamma), text: "1/2 − α" }),
         Entry::new(17, "damping", "tangential damping coefficient at zero overclosure", Class::OffOrPositive)
             .symbol("c₀").unit("stress·time/length").when_absent(Described("no damping"))
             .note("τ_v = c·γ̇ added to the friction stress"),
@@ -158,6 +161,46 @@ const VISCOUS_REFERENCE: Class = Class::Switch {
     off: "γ̇_crit = 2·F_f·ω·R (seed 000)",
     on: "γ̇_crit = F_f·ω·R (seed 003, \"a fraction of the relative tangential velocity\")",
 };
+
+/// `fric_`'s plain layout, the hot path: `NPROPS = 7`, isotropic (μ₂ absent or equal to μ),
+/// the stick mode 0, 1 or 2 (tested by [`fast_plain_coulomb`](super::fast_plain_coulomb)'s
+/// match that maps it); constant μ, as `PROPS(8..20)` are absent.
+pub const PLAIN: Fixed = Fixed {
+    name: "plain Coulomb (NPROPS = 7)",
+    fixed: &[(3, Fix::ZeroOrEqual(2)), (7, Fix::MappedBy(&[0, 1, 2]))],
+};
+
+/// The validator of [`PLAIN`], worked out when the crate compiles.
+pub(crate) struct Plain;
+
+impl FastLayout for Plain {
+    const PLAN: Plan = Plan::of(&COULOMB, &PLAIN, COULOMB_NPROPS);
+}
+
+/// The decay law's lean layout, the rate law's fast path in `fric_`: `NPROPS = 20`,
+/// isotropic, elastic stick, exponential decay, `PROPS(14..19)` all ±0 (no HHT, damping or
+/// steady transport); τ_max, p_ref, b_θ, θ_ref and frozen μ as they come.
+pub const DECAY_LEAN: Fixed = Fixed {
+    name: "decay law, lean (NPROPS = 20)",
+    fixed: &[
+        (3, Fix::ZeroOrEqual(2)),
+        (7, Fix::Is(0)),
+        (8, Fix::Is(1)),
+        (14, Fix::Zero),
+        (15, Fix::Zero),
+        (16, Fix::Zero),
+        (17, Fix::Zero),
+        (18, Fix::Zero),
+        (19, Fix::Zero),
+    ],
+};
+
+/// The validator of [`DECAY_LEAN`], worked out when the crate compiles.
+pub(crate) struct DecayLean;
+
+impl FastLayout for DecayLean {
+    const PLAN: Plan = Plan::of(&COULOMB, &DECAY_LEAN, COULOMB.entries.len());
+}
 
 props_builder! {
     /// A law-1 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry

@@ -157,8 +157,30 @@ pub enum Default {
     Value(f64),
     /// The value of another entry (`PROPS(index)`).
     Entry(usize),
+    /// A function of another entry, written once in the law (`Hht::default_beta`) and named
+    /// here, so that every reader and the law's constructor take the same default:
+    /// `value(PROPS(of))` with `PROPS(of)` as given (itself 0 when absent).
+    Derived {
+        /// The entry it is a function of.
+        of: usize,
+        /// The law's function.
+        value: LawFn,
+        /// The formula, for the docs table.
+        text: &'static str,
+    },
     /// Worked out by the law from other inputs, as described.
     Described(&'static str),
+}
+
+/// A law's function of one entry, for [`Default::Derived`](enum@Default) (equal when it is the
+/// same function).
+#[derive(Clone, Copy, Debug)]
+pub struct LawFn(pub fn(f64) -> f64);
+
+impl PartialEq for LawFn {
+    fn eq(&self, other: &Self) -> bool {
+        std::ptr::fn_addr_eq(self.0, other.0)
+    }
 }
 
 /// One `PROPS` entry.
@@ -342,6 +364,14 @@ pub enum Fix {
     Zero,
     /// "None" (≤ 0, finite) or equal to `PROPS(index)`.
     NoneOrEqual(usize),
+    /// 0 or equal to `PROPS(index)` (law 1's isotropy: μ₂ absent or μ₂ = μ).
+    ZeroOrEqual(usize),
+    /// Exactly this value (the mode a fast path is written for).
+    Is(i32),
+    /// One of these values, tested by the fast reader's own `match` that maps them to the
+    /// law's type (the stick mode), so it is tested once: the validator leaves it alone, and
+    /// only uses the list to know which rules and variants cannot apply.
+    MappedBy(&'static [i32]),
 }
 
 /// A named fixed layout: entries pinned to one meaning, the others as the layout allows.
@@ -562,6 +592,9 @@ fn range_flag(v: f64) -> u64 {
     super::range_flag(v)
 }
 
+mod plan;
+pub(crate) use plan::{FastLayout, Plan, admits_fixed};
+
 impl Layout {
     /// `PROPS(index)`'s description. Panics on an index outside the layout (a programming
     /// error in a schema, caught by the schema's tests).
@@ -658,6 +691,9 @@ impl Layout {
                     Some(Fix::NoneOrEqual(j)) => {
                         flags |= if v == e[j - 1] { 0 } else { range_flag(-v) };
                     }
+                    Some(Fix::ZeroOrEqual(j)) => ok &= v == 0.0 || v == e[j - 1],
+                    Some(Fix::Is(c)) => ok &= v == f64::from(c),
+                    Some(Fix::MappedBy(_)) => {}
                     None => match entry.class {
                         Class::Code(c) => ok &= v == f64::from(c),
                         Class::NonNegative | Class::OffOrPositive => flags |= range_flag(v),
@@ -764,18 +800,22 @@ impl Layout {
     #[inline(always)]
     #[must_use]
     pub fn resolved<const N: usize>(&self, e: &[f64; N], index: usize) -> f64 {
+        self.resolved_in(e, index)
+    }
+
+    /// [`Layout::resolved`] for entries given as a slice (`e[i - 1] = PROPS(i)`, entries past
+    /// its end absent).
+    #[inline(always)]
+    #[must_use]
+    pub fn resolved_in(&self, e: &[f64], index: usize) -> f64 {
         let entry = self.entry(index);
-        // Past N: absent, i.e. 0.
-        let v = if index <= N { e[index - 1] } else { 0.0 };
+        // Past the end: absent, i.e. 0.
+        let get = |i: usize| if i <= e.len() { e[i - 1] } else { 0.0 };
+        let v = get(index);
         match entry.default {
             Default::Value(d) if entry.class.is_off(v) => d,
-            Default::Entry(j) if entry.class.is_off(v) => {
-                if j <= N {
-                    e[j - 1]
-                } else {
-                    0.0
-                }
-            }
+            Default::Entry(j) if entry.class.is_off(v) => get(j),
+            Default::Derived { of, value, .. } if entry.class.is_off(v) => (value.0)(get(of)),
             _ => v,
         }
     }
@@ -828,7 +868,7 @@ impl Layout {
             Default::Entry(j) => {
                 format!("none: {} = {}", e.symbol, self.entry(j).symbol)
             }
-            Default::Described(text) => text.to_string(),
+            Default::Derived { text, .. } | Default::Described(text) => text.to_string(),
         };
         let mut valid = e.class.valid_text();
         for rule in self.rules.iter().filter(|r| r.entry() == e.index) {
