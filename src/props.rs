@@ -13,13 +13,13 @@ use crate::laws::friction_table::FrictionTable;
 mod adhesive;
 mod coulomb;
 pub mod schema;
-use schema::admits_fixed;
 pub(crate) use adhesive::adhesive_props;
 pub use adhesive::{
     ADHESIVE, ADHESIVE_NPROPS, AdhesiveBuilder, AdhesiveProps, COULOMB_SPECIAL_CASE, HeatExchange,
     LAW_ADHESIVE,
 };
 pub use coulomb::{COULOMB, CoulombBuilder, STEADY_TRANSPORT};
+use schema::admits_fixed;
 
 /// `PROPS(1)` code of the Coulomb family.
 pub const LAW_COULOMB: i32 = 1;

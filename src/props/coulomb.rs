@@ -11,11 +11,11 @@
 use crate::laws::coulomb::DEFAULT_SLIP_TOLERANCE;
 use crate::laws::coulomb_extended::Hht;
 
-use super::{COULOMB_NPROPS, LAW_COULOMB};
 use super::schema::Default::{Derived, Described, Entry as SameAs, Required, Value};
 use super::schema::{
     Class, Entry, FastLayout, Fix, Fixed, LawFn, Layout, Plan, Rule, Variant, props_builder,
 };
+use super::{COULOMB_NPROPS, LAW_COULOMB};
 
 /// `PROPS(7)`: the stick modes.
 const STICK: Class = Class::Choice(&[
@@ -235,6 +235,7 @@ props_builder! {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::laws::coulomb_extended::Damping;
     use crate::props::schema::{Cause, Default};
     use crate::props::{COULOMB_EXTENDED_NPROPS, FrictionLaw, coulomb_extended};
     use proptest::prelude::*;
@@ -462,6 +463,96 @@ mod tests {
         }
         // The fast validator declines a layout with variants (the checked path decides).
         assert!(!COULOMB.admits(&[1.0, 0.3], None));
+    }
+
+    /// Each law-1 default is written once and every reader takes it from there: the HHT β(α)
+    /// and γ(α) (`Hht::default_beta` / `default_gamma`, named by the schema), μ₂ = μ and the
+    /// slip tolerance, through the extended fast reader, the checked parser and the law
+    /// constructors, against the closed forms written out here. Changing the default in any
+    /// one place fails this test: the fast reader's (`coulomb_extended_fast`), the checked
+    /// path's (`Hht::new`), the schema's entry, or the law's function (the closed form).
+    #[test]
+    fn the_defaults_are_said_once() {
+        use crate::laws::coulomb::{Coulomb, CriticalSlip};
+        use crate::laws::coulomb_extended::ExtendedCoulomb;
+        use crate::props::coulomb_extended_fast;
+        for alpha in [-0.5f64, -0.3, -0.1, -1e-300, -0.0, 0.0] {
+            // The closed forms of Abaqus's HHT relations.
+            let (beta, gamma) = (0.25 * (1.0 - alpha).powi(2), 0.5 - alpha);
+            let hht = Hht::new(alpha, 0.0, 0.0).unwrap();
+            assert_eq!((hht.alpha, hht.beta, hht.gamma), (alpha, beta, gamma));
+            let props = CoulombBuilder::new()
+                .mu(0.3)
+                .hht_alpha(alpha)
+                .damping(if alpha == 0.0 { 1.0 } else { 0.0 })
+                .build();
+            assert_eq!(COULOMB.resolved_in(&props, 15), beta);
+            assert_eq!(COULOMB.resolved_in(&props, 16), gamma);
+            let by_hand = ExtendedCoulomb::new(Coulomb::new(0.3).unwrap());
+            let by_hand = if alpha == 0.0 {
+                // α = ±0 with β = γ = 0: HHT is off; damping makes the law extended.
+                by_hand.with_damping(Some(Damping::new(1.0, 0.0, 0.0).unwrap()))
+            } else {
+                by_hand.with_hht(Some(Hht { alpha, beta, gamma }))
+            };
+            let expected = Some(FrictionLaw::CoulombExtended(by_hand));
+            assert_eq!(coulomb_extended_fast(&props), expected, "α = {alpha}");
+            assert_eq!(coulomb_extended(&props).ok(), expected, "α = {alpha}");
+        }
+        // μ₂ absent is μ₂ = μ (isotropic), with any extended entry on.
+        let props = CoulombBuilder::new().mu(0.3).hht_alpha(-0.1).build();
+        assert_eq!(COULOMB.resolved_in(&props, 3), 0.3);
+        for law in [coulomb_extended_fast(&props), coulomb_extended(&props).ok()] {
+            let Some(FrictionLaw::CoulombExtended(law)) = law else {
+                panic!("{law:?}")
+            };
+            assert_eq!(law.mu2(), 0.3);
+        }
+        // The slip tolerance 0.005 (seed 000, "0.5%"): the schema, the constructor, the plain
+        // and the steady-transport readers.
+        let props = CoulombBuilder::new().mu(0.3).build_first(7);
+        assert_eq!(COULOMB.resolved_in(&props, 6), 0.005);
+        assert_eq!(
+            Coulomb::new(0.3).unwrap().critical_slip(),
+            CriticalSlip::Tolerance(0.005)
+        );
+        assert_eq!(
+            crate::props::fast_plain_coulomb(&props).map(|c| c.critical_slip()),
+            Some(CriticalSlip::Tolerance(0.005))
+        );
+        let props = CoulombBuilder::new().mu(0.3).stick(3.0).omega(2.0).build();
+        for law in [coulomb_extended_fast(&props), coulomb_extended(&props).ok()] {
+            let Some(FrictionLaw::CoulombExtended(law)) = law else {
+                panic!("{law:?}")
+            };
+            assert_eq!(law.steady_transport().map(|t| t.tolerance), Some(0.005));
+        }
+    }
+
+    /// The fast validators' plans drop at compile time every rule their fixed layout
+    /// satisfies: none is left for the plain layout, only "θ_ref needs b_θ" (the one rule
+    /// between two free entries) for the decay law's lean layout.
+    #[test]
+    fn the_plans_keep_only_the_rules_that_can_fail() {
+        assert!(Plain::PLAN.live_rules().is_empty());
+        assert_eq!(
+            DecayLean::PLAN.live_rules(),
+            [&Rule::ZeroWhen {
+                entry: 13,
+                on: 12,
+                value: 0,
+                why: "no temperature law"
+            }]
+        );
+        // A fixed layout that leaves steady transport (PROPS(7) = 3) possible has no plan:
+        // the variant's entries mean something else.
+        let open = Fixed {
+            name: "open",
+            fixed: &[(3, Fix::ZeroOrEqual(2))],
+        };
+        assert!(std::panic::catch_unwind(|| Plan::of(&COULOMB, &open, 7)).is_err());
+        // Nor one pinning an entry past its NPROPS.
+        assert!(std::panic::catch_unwind(|| Plan::of(&COULOMB, &DECAY_LEAN, 7)).is_err());
     }
 
     /// The refusals name the entry in force: HHT α or steady transport's ω for `PROPS(14)`,

@@ -866,7 +866,13 @@ impl Layout {
             Default::Required => "— (required)".to_string(),
             Default::Value(d) => format!("{d}"),
             Default::Entry(j) => {
-                format!("none: {} = {}", e.symbol, self.entry(j).symbol)
+                // "None" is any value ≤ 0 for FiniteOrNone, only 0 otherwise.
+                let none = if matches!(e.class, Class::FiniteOrNone) {
+                    "none: "
+                } else {
+                    ""
+                };
+                format!("{none}{} = {}", e.symbol, self.entry(j).symbol)
             }
             Default::Derived { text, .. } | Default::Described(text) => text.to_string(),
         };
