@@ -5,10 +5,13 @@
 //! [`Fixed`] layouts that a fast path recognises (the adhesive law's Coulomb special case).
 //! From that one table come:
 //!
-//! - the branch-light validator of the per-call fast paths (`Layout::admits`): one copy of its
-//!   body per entry (`unrolled!`), each folding to that entry's class test, so it compiles to
-//!   the straight-line code that used to be written by hand (`fric_`'s and `bench_adhesive`'s
-//!   instruction counts are the check, docs/architecture.md);
+//! - the branch-light validators of the per-call fast paths, one per named fixed layout
+//!   ([`Fixed`]: law 1's plain and decay-lean layouts, law 2's Coulomb special case, or
+//!   [`Fixed::NONE`]): a [`Plan`] worked out at compile time (which one test each entry
+//!   needs, which rules can still fail), read by `admits_fixed` with one copy of its body
+//!   per entry (`unrolled!`), so it compiles to the straight-line code that used to be
+//!   written by hand (`fric_`'s, `bench_rate`'s and `bench_adhesive`'s instruction counts are
+//!   the check, docs/architecture.md);
 //! - the checked parser ([`Layout::check`]), whose [`PropsError`] names the entry, its value
 //!   and the requirement, with a typed [`Cause`] carrying the `PROPS` index;
 //! - the defaults the laws are built with ([`Layout::resolved`]);
@@ -664,68 +667,6 @@ impl Layout {
         n
     }
 
-    /// Fast, branch-light validity of the first `N` entries `e` (`e[i - 1] = PROPS(i)`; the
-    /// entries past `N` are absent, i.e. 0, which every layout admits: a schema test checks
-    /// it), with the entries of `fixed` pinned. Straight-line after inlining: the loop runs
-    /// over a constant table, so the compiler unrolls it and keeps, per entry, only its
-    /// class's test. Ranges 0 ≤ v < ∞ are OR-ed into one test of the top bit
-    /// ([`range_flag`]), ±0 pins into one test of the bits without their signs.
-    ///
-    /// Does not look at `NPROPS` (the caller's array length is `N`) nor at `PROPS(1)`
-    /// beyond its class.
-    #[inline(always)]
-    pub(crate) fn admits<const N: usize>(&self, e: &[f64; N], fixed: Option<&Fixed>) -> bool {
-        let mut flags = 0u64;
-        let mut zeros = 0u64;
-        let mut ok = true;
-        // One copy of the body per index, so that each copy's entry (and so its class and
-        // pin) is a constant once inlined: the compiler keeps only that class's test. (A plain
-        // loop was not unrolled: +90 instructions per call on the adhesive path.)
-        unrolled!(I in [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19] {
-            if I < N && I < self.entries.len() {
-                let entry = &self.entries[I];
-                let v = e[I];
-                match fixed.and_then(|f| f.pin(entry.index)) {
-                    Some(Fix::Zero) => zeros |= v.to_bits(),
-                    // "None" is −∞ < v ≤ 0, i.e. 0 ≤ −v < ∞: the same top-bit test.
-                    Some(Fix::NoneOrEqual(j)) => {
-                        flags |= if v == e[j - 1] { 0 } else { range_flag(-v) };
-                    }
-                    Some(Fix::ZeroOrEqual(j)) => ok &= v == 0.0 || v == e[j - 1],
-                    Some(Fix::Is(c)) => ok &= v == f64::from(c),
-                    Some(Fix::MappedBy(_)) => {}
-                    None => match entry.class {
-                        Class::Code(c) => ok &= v == f64::from(c),
-                        Class::NonNegative | Class::OffOrPositive => flags |= range_flag(v),
-                        Class::FiniteOrNone => ok &= v.is_finite(),
-                        Class::Switch { .. } => ok &= v == 0.0 || v == 1.0,
-                        Class::UnitInterval | Class::OffOrFraction => {
-                            ok &= (0.0..=1.0).contains(&v);
-                        }
-                        class @ (Class::Positive
-                        | Class::Finite
-                        | Class::Interval { .. }
-                        | Class::Choice(_)) => ok &= class.admits(v),
-                    },
-                }
-            }
-        });
-        debug_assert!(self.entries.len() <= 20, "unrolled! covers 20 entries");
-        let mut r = 0;
-        while r < self.rules.len() {
-            let rule = self.rules[r];
-            let (entry, other) = (rule.entry(), rule.other());
-            let pinned = fixed.is_some_and(|f| f.pin(entry).is_some());
-            if entry <= N && other <= N && !pinned {
-                ok &= rule.holds(e[entry - 1], e[other - 1]);
-            }
-            r += 1;
-        }
-        // A layout with variants is not read here (its entries' classes depend on another
-        // entry): declined, so the checked path decides. Folds away for the others.
-        ok && self.variants.is_empty() && flags >> 63 == 0 && zeros << 1 == 0
-    }
-
     /// The checked parser: the entries padded with zeros to the layout's length, or the first
     /// thing wrong, in entry order (each entry's class, then the rules about it).
     pub fn check<const N: usize>(&'static self, props: &[f64]) -> Result<[f64; N], PropsError> {
@@ -918,6 +859,13 @@ impl Layout {
 }
 
 impl Fixed {
+    /// No entry pinned: the whole layout as it comes (a fast path that only decides valid or
+    /// not).
+    pub const NONE: Fixed = Fixed {
+        name: "as given",
+        fixed: &[],
+    };
+
     /// What this fixed layout pins `PROPS(index)` to, if anything.
     #[inline(always)]
     #[must_use]

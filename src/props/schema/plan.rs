@@ -157,7 +157,12 @@ impl Plan {
                         true
                     }
                 }
-                Rule::AtLeastWhenGiven { .. } => !always_zero(fixed, nprops, a),
+                // Pinned to "none" (or 0) or to the floor itself: holds.
+                Rule::AtLeastWhenGiven { floor, .. } => {
+                    !(always_zero(fixed, nprops, a)
+                        || matches!(fixed.pin(a),
+                        Some(Fix::NoneOrEqual(j) | Fix::ZeroOrEqual(j)) if j == floor))
+                }
             };
             if live {
                 assert!(a <= nprops && b <= nprops, "a rule about an absent entry");
