@@ -1,12 +1,16 @@
 //! `PROPS` layout of law 1, Coulomb friction, plain and extended (`PROPS(1) = 1`, seeds 000 and
 //! 003, section 5.2.3), described once in [`COULOMB`]: the docs/props.md table,
-//! [`CoulombBuilder`] and the layout-level validity ([`COULOMB`]`.check`) come from it.
+//! [`CoulombBuilder`], the layout-level validity ([`COULOMB`]`.check`), the defaults (μ₂ = μ,
+//! HHT β(α) and γ(α) as the law's own functions, the slip tolerance) and the validators of
+//! `fric_`'s two fixed layouts ([`PLAIN`], [`DECAY_LEAN`], worked out at compile time) come
+//! from it.
 //!
-//! Not yet derived from it (issue 19, left for the next step): the fast readers of `fric_`
-//! (`fast_plain_coulomb`, `fast_extended_coulomb`, `fast_decay_lean`) and the checked parser
-//! `coulomb_extended_with_table` (src/props.rs), whose messages tests pin. A property test
-//! below checks that the checked parser and the schema accept the same arrays, but for the two
-//! refusals that need more than the layout (listed there).
+//! Not derived from it (docs/architecture.md says why): the extended fast reader
+//! `coulomb_extended_fast` (any valid extended layout, not a fixed one) and the checked
+//! parser's class tests in `coulomb_extended_with_table` (src/props.rs), which go through the
+//! law constructors and their messages, which tests pin. Property tests below check that the
+//! checked parser and the schema accept the same arrays, but for the refusals that need more
+//! than the layout (listed there).
 
 use crate::laws::coulomb::DEFAULT_SLIP_TOLERANCE;
 use crate::laws::coulomb_extended::Hht;
