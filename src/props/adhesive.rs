@@ -548,6 +548,15 @@ mod tests {
         assert!(admits_fixed::<Whole, ADHESIVE_NPROPS>(&smallest));
     }
 
+    /// The special case pins μ_s to "none or μ_d", which satisfies the layout's one rule
+    /// (μ_s ≥ μ_d when given): its plans test no rule per call; the whole layout's tests it.
+    #[test]
+    fn the_plans_keep_only_the_rules_that_can_fail() {
+        assert!(SpecialCase::<8>::PLAN.live_rules().is_empty());
+        assert!(SpecialCase::<ADHESIVE_NPROPS>::PLAN.live_rules().is_empty());
+        assert_eq!(Whole::PLAN.live_rules(), [&ADHESIVE.rules[0]]);
+    }
+
     /// Each named setter writes its own entry: the parsed law reports the value set.
     #[test]
     fn builder_setters_reach_their_entries() {

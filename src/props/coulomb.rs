@@ -557,6 +557,32 @@ mod tests {
         assert!(std::panic::catch_unwind(|| Plan::of(&COULOMB, &DECAY_LEAN, 7)).is_err());
     }
 
+    /// `PLAIN` leaves the stick mode to the plain reader's match: the match accepts exactly
+    /// the modes the pin lists, each as the checked parser reads it, and refuses the others
+    /// (steady transport's 3 included, which the plan ruled out).
+    #[test]
+    fn the_plain_readers_match_takes_the_modes_the_pin_lists() {
+        let Some(&(7, Fix::MappedBy(listed))) = PLAIN.fixed.iter().find(|(i, _)| *i == 7) else {
+            panic!("PROPS(7) is not MappedBy in PLAIN")
+        };
+        let mut accepted = Vec::new();
+        for stick in [-1.0, -0.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0, f64::NAN] {
+            let props = CoulombBuilder::new().mu(0.3).stick(stick).build_first(7);
+            let fast = crate::props::fast_plain_coulomb(&props);
+            if let Some(law) = fast {
+                assert_eq!(
+                    coulomb_extended(&props),
+                    Ok(FrictionLaw::Coulomb(law)),
+                    "{stick}"
+                );
+                accepted.push(stick);
+            }
+        }
+        let listed: Vec<f64> = listed.iter().map(|&c| f64::from(c)).collect();
+        // −0 is 0 to the match, as to the checked parser.
+        assert_eq!(accepted, [&[-0.0][..], &listed].concat());
+    }
+
     /// The refusals name the entry in force: HHT α or steady transport's ω for `PROPS(14)`,
     /// and the rule that ties an entry to a switch.
     #[test]
