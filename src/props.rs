@@ -18,7 +18,7 @@ pub use adhesive::{
     ADHESIVE, ADHESIVE_NPROPS, AdhesiveBuilder, AdhesiveProps, COULOMB_SPECIAL_CASE, HeatExchange,
     LAW_ADHESIVE,
 };
-pub use coulomb::{COULOMB, CoulombBuilder, STEADY_TRANSPORT};
+pub use coulomb::{COULOMB, CoulombBuilder, DECAY_LEAN, PLAIN, STEADY_TRANSPORT};
 use schema::admits_fixed;
 
 /// `PROPS(1)` code of the Coulomb family.
@@ -167,7 +167,7 @@ pub(crate) fn range_flag(v: f64) -> u64 {
 }
 
 /// The plain Coulomb law of the seven `PROPS` entries (absent ones already zero), or `None`.
-/// Validity is the schema's: [`PLAIN`](coulomb::PLAIN) over [`COULOMB`], worked out at compile
+/// Validity is the schema's: [`PLAIN`] over [`COULOMB`], worked out at compile
 /// time (one top-bit test for μ, τ_max, γ_crit and the tolerance, μ₂ = 0 or μ); the stick
 /// mode is tested once, by the match that maps it.
 #[inline(always)]

@@ -7,7 +7,7 @@
 //!
 //! - the branch-light validators of the per-call fast paths, one per named fixed layout
 //!   ([`Fixed`]: law 1's plain and decay-lean layouts, law 2's Coulomb special case, or
-//!   [`Fixed::NONE`]): a [`Plan`] worked out at compile time (which one test each entry
+//!   [`Fixed::NONE`]): a `Plan` worked out at compile time (which one test each entry
 //!   needs, which rules can still fail), read by `admits_fixed` with one copy of its body
 //!   per entry (`unrolled!`), so it compiles to the straight-line code that used to be
 //!   written by hand (`fric_`'s, `bench_rate`'s and `bench_adhesive`'s instruction counts are
