@@ -3,7 +3,7 @@
 //! parameters; the table in `docs/props.md` documents the same layout for users.
 
 use crate::LawError;
-use crate::laws::coulomb::{Coulomb, CriticalSlip, DEFAULT_SLIP_TOLERANCE, StickMode};
+use crate::laws::coulomb::{Coulomb, StickMode};
 use crate::laws::coulomb_extended::{
     Damping, ExtendedCoulomb, Hht, SteadyTransport, ViscousSlipReference,
 };
@@ -584,10 +584,8 @@ pub fn coulomb_extended_with_table(
     }
     law = law.with_coefficient_law(coefficient);
     if viscous {
-        let tolerance = match base.critical_slip() {
-            CriticalSlip::Tolerance(t) => t,
-            CriticalSlip::Absolute(_) => DEFAULT_SLIP_TOLERANCE,
-        };
+        // F_f = PROPS(6) or the schema's default (γ_crit is not read: the rule above).
+        let tolerance = COULOMB.resolved_in(&e, 6);
         let axis = match get(15) {
             0.0 | 3.0 => 2,
             1.0 => 0,
