@@ -3,7 +3,7 @@
 //! parameters; the table in `docs/props.md` documents the same layout for users.
 
 use crate::LawError;
-use crate::laws::coulomb::{Coulomb, CriticalSlip, DEFAULT_SLIP_TOLERANCE, StickMode};
+use crate::laws::coulomb::{Coulomb, StickMode};
 use crate::laws::coulomb_extended::{
     Damping, ExtendedCoulomb, Hht, SteadyTransport, ViscousSlipReference,
 };
@@ -18,7 +18,8 @@ pub use adhesive::{
     ADHESIVE, ADHESIVE_NPROPS, AdhesiveBuilder, AdhesiveProps, COULOMB_SPECIAL_CASE, HeatExchange,
     LAW_ADHESIVE,
 };
-pub use coulomb::{COULOMB, CoulombBuilder, STEADY_TRANSPORT};
+pub use coulomb::{COULOMB, CoulombBuilder, DECAY_LEAN, PLAIN, STEADY_TRANSPORT};
+use schema::admits_fixed;
 
 /// `PROPS(1)` code of the Coulomb family.
 pub const LAW_COULOMB: i32 = 1;
@@ -166,17 +167,15 @@ pub(crate) fn range_flag(v: f64) -> u64 {
 }
 
 /// The plain Coulomb law of the seven `PROPS` entries (absent ones already zero), or `None`.
+/// Validity is the schema's: [`PLAIN`] over [`COULOMB`], worked out at compile
+/// time (one top-bit test for μ, τ_max, γ_crit and the tolerance, μ₂ = 0 or μ); the stick
+/// mode is tested once, by the match that maps it.
 #[inline(always)]
 fn coulomb_from_entries(e: [f64; COULOMB_NPROPS]) -> Option<Coulomb> {
-    let [code, mu, mu2, tau_max, gamma_crit, tolerance, stick] = e;
-    // μ finite and ≥ 0; τ_max, γ_crit and the tolerance "0 (off / default) or finite and > 0":
-    // all four are 0 ≤ v < ∞, one test of the top bit of their `range_flag`s.
-    let flags =
-        range_flag(mu) | range_flag(tau_max) | range_flag(gamma_crit) | range_flag(tolerance);
-    let valid = code == f64::from(LAW_COULOMB) && flags >> 63 == 0 && (mu2 == 0.0 || mu2 == mu);
-    if !valid {
+    if !admits_fixed::<coulomb::Plain, COULOMB_NPROPS>(&e) {
         return None;
     }
+    let [_, mu, _, tau_max, gamma_crit, tolerance, stick] = e;
     let stick = match stick {
         0.0 => StickMode::Elastic,
         1.0 => StickMode::Exact,
@@ -294,7 +293,10 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
         return None;
     }
     let base = Coulomb::from_validated(mu, e[4], e[5], e[6], stick);
-    let mu2 = if mu2 == 0.0 { mu } else { mu2 };
+    // The defaults from the schema (μ₂ = μ, β(α), γ(α), the slip tolerance), as the checked
+    // path and the law constructors take them.
+    let given = &e[1..];
+    let mu2 = COULOMB.resolved_in(given, 3);
     if !viscous && mu2 == mu && e[8..].iter().all(|v| *v == 0.0) {
         return Some(FrictionLaw::Coulomb(base));
     }
@@ -302,12 +304,8 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
         let alpha = e[14];
         Hht {
             alpha,
-            beta: if e[15] == 0.0 {
-                0.25 * (1.0 - alpha) * (1.0 - alpha)
-            } else {
-                e[15]
-            },
-            gamma: if e[16] == 0.0 { 0.5 - alpha } else { e[16] },
+            beta: COULOMB.resolved_in(given, 15),
+            gamma: COULOMB.resolved_in(given, 16),
         }
     });
     let damping = (e[17] != 0.0).then_some(Damping {
@@ -316,11 +314,7 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
         fraction: e[19],
     });
     let transport = viscous.then(|| SteadyTransport {
-        tolerance: if e[6] > 0.0 {
-            e[6]
-        } else {
-            DEFAULT_SLIP_TOLERANCE
-        },
+        tolerance: COULOMB.resolved_in(given, 6),
         omega: e[14],
         axis: match e[15] {
             1.0 => 0,
@@ -373,54 +367,28 @@ pub(crate) fn fast_decay_lean(props: &[f64; COULOMB_EXTENDED_NPROPS]) -> Option<
     if props[7] != 1.0 || careful_path_only() {
         return None;
     }
+    // The rest of the layout's tests, from the schema: DECAY_LEAN over COULOMB, worked out at
+    // compile time (the rules of other modes dropped, μ_s and d_c "> 0 with the decay law").
+    if !admits_fixed::<coulomb::DecayLean, COULOMB_EXTENDED_NPROPS>(props) {
+        return None;
+    }
     let [
-        code,
+        _,
         mu,
-        mu2,
+        _,
         tau_max,
         gamma_crit,
         tolerance,
-        stick,
-        rate_law,
+        _,
+        _,
         mu_k,
         d_c,
         p_ref,
         b_theta,
         theta_ref,
-        t14,
-        t15,
-        t16,
-        t17,
-        t18,
-        t19,
+        ..,
         frozen,
     ] = *props;
-    // 0 ≤ v < ∞ (μ, τ_max, γ_crit, tolerance, μ_k, p_ref) and |v| < ∞ (b_θ, θ_ref) in one test
-    // of the top bit, as in `coulomb_from_entries`; 0 < v < ∞ (μ_s, d_c) as one unsigned
-    // comparison each; PROPS(14..19) all ±0 as one test of the bits without their signs.
-    let flags = range_flag(mu)
-        | range_flag(tau_max)
-        | range_flag(gamma_crit)
-        | range_flag(tolerance)
-        | range_flag(mu_k)
-        | range_flag(p_ref)
-        | range_flag(b_theta.abs())
-        | range_flag(theta_ref.abs());
-    let positive = |v: f64| v.to_bits().wrapping_sub(1) < f64::INFINITY.to_bits().wrapping_sub(1);
-    let tail = (t14.to_bits() | t15.to_bits() | t16.to_bits() | t17.to_bits() | t18.to_bits())
-        | t19.to_bits();
-    let valid = code == f64::from(LAW_COULOMB)
-        && rate_law == 1.0
-        && stick == 0.0
-        && ((flags >> 63) | (tail << 1)) == 0
-        && positive(mu)
-        && positive(d_c)
-        && (mu2 == 0.0 || mu2 == mu)
-        && (b_theta != 0.0 || theta_ref == 0.0)
-        && (frozen == 0.0 || frozen == 1.0);
-    if !valid {
-        return None;
-    }
     // μ_k/μ_s must stay finite (a subnormal μ_s overflows it; the checked path refuses).
     let ratio = mu_k / mu;
     if ratio == f64::INFINITY {
@@ -616,10 +584,8 @@ pub fn coulomb_extended_with_table(
     }
     law = law.with_coefficient_law(coefficient);
     if viscous {
-        let tolerance = match base.critical_slip() {
-            CriticalSlip::Tolerance(t) => t,
-            CriticalSlip::Absolute(_) => DEFAULT_SLIP_TOLERANCE,
-        };
+        // F_f = PROPS(6) or the schema's default (γ_crit is not read: the rule above).
+        let tolerance = COULOMB.resolved_in(&e, 6);
         let axis = match get(15) {
             0.0 | 3.0 => 2,
             1.0 => 0,

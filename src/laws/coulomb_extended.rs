@@ -70,17 +70,36 @@ impl Hht {
             )));
         }
         let beta = if beta == 0.0 {
-            0.25 * (1.0 - alpha) * (1.0 - alpha)
+            Hht::default_beta(alpha)
         } else {
             beta
         };
-        let gamma = if gamma == 0.0 { 0.5 - alpha } else { gamma };
+        let gamma = if gamma == 0.0 {
+            Hht::default_gamma(alpha)
+        } else {
+            gamma
+        };
         if !(beta.is_finite() && beta > 0.0 && gamma.is_finite() && gamma > 0.0) {
             return Err(LawError::Parameter(format!(
                 "HHT β = {beta} and γ = {gamma} must be finite and > 0"
             )));
         }
         Ok(Hht { alpha, beta, gamma })
+    }
+
+    /// β when none is given: Abaqus's β = (1 − α)²/4, the one place this default is written
+    /// (the `PROPS` schema's entry for `PROPS(15)` names this function).
+    #[inline]
+    #[must_use]
+    pub const fn default_beta(alpha: f64) -> f64 {
+        0.25 * (1.0 - alpha) * (1.0 - alpha)
+    }
+
+    /// γ when none is given: Abaqus's γ = 1/2 − α (named by the schema's `PROPS(16)`).
+    #[inline]
+    #[must_use]
+    pub const fn default_gamma(alpha: f64) -> f64 {
+        0.5 - alpha
     }
 
     /// The time increment that turns a displacement increment into a velocity: with Newmark's

@@ -10,7 +10,10 @@ use crate::laws::coulomb::{Coulomb, DEFAULT_SLIP_TOLERANCE, StickMode};
 
 use super::FrictionLaw;
 use super::schema::Default::{self, Described, Required};
-use super::schema::{Class, Entry, Fix, Fixed, Layout, PropsError, Rule, props_builder};
+use super::schema::{
+    Class, Entry, FastLayout, Fix, Fixed, Layout, Plan, PropsError, Rule, admits_fixed,
+    props_builder,
+};
 
 /// `PROPS(1)` code of the adhesive friction law.
 pub const LAW_ADHESIVE: i32 = 2;
@@ -75,6 +78,21 @@ pub const COULOMB_SPECIAL_CASE: Fixed = Fixed {
         (7, Fix::Zero),
     ],
 };
+
+/// The validator of [`COULOMB_SPECIAL_CASE`] for the first `N` entries (a host that leaves
+/// out trailing ones), worked out when the crate compiles.
+struct SpecialCase<const N: usize>;
+
+impl<const N: usize> FastLayout for SpecialCase<N> {
+    const PLAN: Plan = Plan::of(&ADHESIVE, &COULOMB_SPECIAL_CASE, N);
+}
+
+/// The validator of the whole layout, nothing pinned.
+pub(crate) struct Whole;
+
+impl FastLayout for Whole {
+    const PLAN: Plan = Plan::of(&ADHESIVE, &Fixed::NONE, ADHESIVE_NPROPS);
+}
 
 /// `PROPS(11)`: 0 or 1.
 const CONDUCTANCE: Class = Class::Switch {
@@ -164,7 +182,7 @@ impl AdhesiveProps {
 }
 
 /// The common case of the adhesive layout: valid `PROPS`, or `None` (then the checked path
-/// [`adhesive`] says what is wrong). Branch-light (`Layout::admits`); a property test checks
+/// [`adhesive`] says what is wrong). Branch-light (`admits_fixed`); a property test checks
 /// that it agrees with the checked path.
 #[inline(always)]
 pub(crate) fn adhesive_fast(props: &[f64]) -> Option<FrictionLaw> {
@@ -199,7 +217,7 @@ pub(crate) fn adhesive_coulomb_special_case(props: &[f64]) -> Option<Coulomb> {
 /// [`adhesive_coulomb_special_case`] of the first `N` entries.
 #[inline(always)]
 fn special_case<const N: usize>(e: &[f64; N]) -> Option<Coulomb> {
-    ADHESIVE.admits(e, Some(&COULOMB_SPECIAL_CASE)).then(|| {
+    admits_fixed::<SpecialCase<N>, N>(e).then(|| {
         let get = |i| ADHESIVE.resolved(e, i);
         Coulomb::from_validated(get(2), 0.0, get(8), get(9), StickMode::Elastic)
     })
@@ -217,9 +235,7 @@ fn adhesive_props_fast(props: &[f64]) -> Option<AdhesiveProps> {
     // Zero-padded copy: absent trailing entries read as 0 without a branch per entry.
     let mut e = [0.0; ADHESIVE_NPROPS];
     e[..props.len()].copy_from_slice(props);
-    ADHESIVE
-        .admits(&e, None)
-        .then(|| AdhesiveProps::from_entries(&e))
+    admits_fixed::<Whole, ADHESIVE_NPROPS>(&e).then(|| AdhesiveProps::from_entries(&e))
 }
 
 /// The adhesive `PROPS` as `uinter_` needs them (also in the Coulomb special case): the fast
@@ -521,10 +537,24 @@ mod tests {
             match fix {
                 Fix::Zero => assert!(class.admits(0.0)),
                 Fix::NoneOrEqual(_) => assert!(class.admits(-1.0) && class.is_off(-1.0)),
+                Fix::ZeroOrEqual(_) | Fix::Is(_) | Fix::MappedBy(_) => {
+                    panic!("not a pin of the special case: {fix:?}")
+                }
             }
         }
         // Absent entries past NPROPS = 2 are valid: the smallest valid layout.
-        assert!(ADHESIVE.admits(&[2.0, 0.3], None));
+        let mut smallest = [0.0; ADHESIVE_NPROPS];
+        smallest[..2].copy_from_slice(&[2.0, 0.3]);
+        assert!(admits_fixed::<Whole, ADHESIVE_NPROPS>(&smallest));
+    }
+
+    /// The special case pins μ_s to "none or μ_d", which satisfies the layout's one rule
+    /// (μ_s ≥ μ_d when given): its plans test no rule per call; the whole layout's tests it.
+    #[test]
+    fn the_plans_keep_only_the_rules_that_can_fail() {
+        assert!(SpecialCase::<8>::PLAN.live_rules().is_empty());
+        assert!(SpecialCase::<ADHESIVE_NPROPS>::PLAN.live_rules().is_empty());
+        assert_eq!(Whole::PLAN.live_rules(), [&ADHESIVE.rules[0]]);
     }
 
     /// Each named setter writes its own entry: the parsed law reports the value set.

@@ -1,18 +1,25 @@
 //! `PROPS` layout of law 1, Coulomb friction, plain and extended (`PROPS(1) = 1`, seeds 000 and
 //! 003, section 5.2.3), described once in [`COULOMB`]: the docs/props.md table,
-//! [`CoulombBuilder`] and the layout-level validity ([`COULOMB`]`.check`) come from it.
+//! [`CoulombBuilder`], the layout-level validity ([`COULOMB`]`.check`), the defaults (μ₂ = μ,
+//! HHT β(α) and γ(α) as the law's own functions, the slip tolerance) and the validators of
+//! `fric_`'s two fixed layouts ([`PLAIN`], [`DECAY_LEAN`], worked out at compile time) come
+//! from it.
 //!
-//! Not yet derived from it (issue 19, left for the next step): the fast readers of `fric_`
-//! (`fast_plain_coulomb`, `fast_extended_coulomb`, `fast_decay_lean`) and the checked parser
-//! `coulomb_extended_with_table` (src/props.rs), whose messages tests pin. A property test
-//! below checks that the checked parser and the schema accept the same arrays, but for the two
-//! refusals that need more than the layout (listed there).
+//! Not derived from it (docs/architecture.md says why): the extended fast reader
+//! `coulomb_extended_fast` (any valid extended layout, not a fixed one) and the checked
+//! parser's class tests in `coulomb_extended_with_table` (src/props.rs), which go through the
+//! law constructors and their messages, which tests pin. Property tests below check that the
+//! checked parser and the schema accept the same arrays, but for the refusals that need more
+//! than the layout (listed there).
 
 use crate::laws::coulomb::DEFAULT_SLIP_TOLERANCE;
+use crate::laws::coulomb_extended::Hht;
 
-use super::LAW_COULOMB;
-use super::schema::Default::{Described, Required, Value};
-use super::schema::{Class, Entry, Layout, Rule, Variant, props_builder};
+use super::schema::Default::{Derived, Described, Entry as SameAs, Required, Value};
+use super::schema::{
+    Class, Entry, FastLayout, Fix, Fixed, LawFn, Layout, Plan, Rule, Variant, props_builder,
+};
+use super::{COULOMB_NPROPS, LAW_COULOMB};
 
 /// `PROPS(7)`: the stick modes.
 const STICK: Class = Class::Choice(&[
@@ -52,7 +59,7 @@ pub const COULOMB: Layout = Layout {
         Entry::new(2, "mu", "friction coefficient", Class::NonNegative)
             .symbol("μ").when_absent(Required),
         Entry::new(3, "mu2", "second-direction coefficient", Class::OffOrPositive)
-            .symbol("μ₂").when_absent(Described("isotropic"))
+            .symbol("μ₂").when_absent(SameAs(2))
             .note("anisotropy; μ = `PROPS(2)` is μ₁, which must then be > 0 unless μ₂ = μ₁"),
         Entry::new(4, "tau_max", "shear stress limit, τ_crit = min(μp, τ_max)", Class::OffOrPositive)
             .symbol("τ_max").unit("stress").when_absent(Described("no limit")),
@@ -80,9 +87,9 @@ pub const COULOMB: Layout = Layout {
             .symbol("α").when_absent(Described("static (Δt_rate = Δt)"))
             .note("HHT is on when any of `PROPS(14..16)` is non-zero"),
         Entry::new(15, "hht_beta", "HHT β", Class::OffOrPositive)
-            .symbol("β").when_absent(Described("(1 − α)²/4")),
+            .symbol("β").when_absent(Derived { of: 14, value: LawFn(Hht::default_beta), text: "(1 − α)²/4" }),
         Entry::new(16, "hht_gamma", "HHT γ", Class::OffOrPositive)
-            .symbol("γ").when_absent(Described("1/2 − α")),
+            .symbol("γ").when_absent(Derived { of: 14, value: LawFn(Hht::default_gamma), text: "1/2 − α" }),
         Entry::new(17, "damping", "tangential damping coefficient at zero overclosure", Class::OffOrPositive)
             .symbol("c₀").unit("stress·time/length").when_absent(Described("no damping"))
             .note("τ_v = c·γ̇ added to the friction stress"),
@@ -159,6 +166,46 @@ const VISCOUS_REFERENCE: Class = Class::Switch {
     on: "γ̇_crit = F_f·ω·R (seed 003, \"a fraction of the relative tangential velocity\")",
 };
 
+/// `fric_`'s plain layout, the hot path: `NPROPS = 7`, isotropic (μ₂ absent or equal to μ),
+/// the stick mode 0, 1 or 2 (tested by [`fast_plain_coulomb`](super::fast_plain_coulomb)'s
+/// match that maps it); constant μ, as `PROPS(8..20)` are absent.
+pub const PLAIN: Fixed = Fixed {
+    name: "plain Coulomb (NPROPS = 7)",
+    fixed: &[(3, Fix::ZeroOrEqual(2)), (7, Fix::MappedBy(&[0, 1, 2]))],
+};
+
+/// The validator of [`PLAIN`], worked out when the crate compiles.
+pub(crate) struct Plain;
+
+impl FastLayout for Plain {
+    const PLAN: Plan = Plan::of(&COULOMB, &PLAIN, COULOMB_NPROPS);
+}
+
+/// The decay law's lean layout, the rate law's fast path in `fric_`: `NPROPS = 20`,
+/// isotropic, elastic stick, exponential decay, `PROPS(14..19)` all ±0 (no HHT, damping or
+/// steady transport); τ_max, p_ref, b_θ, θ_ref and frozen μ as they come.
+pub const DECAY_LEAN: Fixed = Fixed {
+    name: "decay law, lean (NPROPS = 20)",
+    fixed: &[
+        (3, Fix::ZeroOrEqual(2)),
+        (7, Fix::Is(0)),
+        (8, Fix::Is(1)),
+        (14, Fix::Zero),
+        (15, Fix::Zero),
+        (16, Fix::Zero),
+        (17, Fix::Zero),
+        (18, Fix::Zero),
+        (19, Fix::Zero),
+    ],
+};
+
+/// The validator of [`DECAY_LEAN`], worked out when the crate compiles.
+pub(crate) struct DecayLean;
+
+impl FastLayout for DecayLean {
+    const PLAN: Plan = Plan::of(&COULOMB, &DECAY_LEAN, COULOMB.entries.len());
+}
+
 props_builder! {
     /// A law-1 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
     /// starts at its "0 / absent" value, `PROPS(1) = 1`.
@@ -192,6 +239,7 @@ props_builder! {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::laws::coulomb_extended::Damping;
     use crate::props::schema::{Cause, Default};
     use crate::props::{COULOMB_EXTENDED_NPROPS, FrictionLaw, coulomb_extended};
     use proptest::prelude::*;
@@ -417,8 +465,122 @@ mod tests {
                 assert!(e.index <= COULOMB.entries.len(), "{e:?}");
             }
         }
-        // The fast validator declines a layout with variants (the checked path decides).
-        assert!(!COULOMB.admits(&[1.0, 0.3], None));
+    }
+
+    /// Each law-1 default is written once and every reader takes it from there: the HHT β(α)
+    /// and γ(α) (`Hht::default_beta` / `default_gamma`, named by the schema), μ₂ = μ and the
+    /// slip tolerance, through the extended fast reader, the checked parser and the law
+    /// constructors, against the closed forms written out here. Changing the default in any
+    /// one place fails this test: the fast reader's (`coulomb_extended_fast`), the checked
+    /// path's (`Hht::new`), the schema's entry, or the law's function (the closed form).
+    #[test]
+    fn the_defaults_are_said_once() {
+        use crate::laws::coulomb::{Coulomb, CriticalSlip};
+        use crate::laws::coulomb_extended::ExtendedCoulomb;
+        use crate::props::coulomb_extended_fast;
+        for alpha in [-0.5f64, -0.3, -0.1, -1e-300, -0.0, 0.0] {
+            // The closed forms of Abaqus's HHT relations.
+            let (beta, gamma) = (0.25 * (1.0 - alpha).powi(2), 0.5 - alpha);
+            let hht = Hht::new(alpha, 0.0, 0.0).unwrap();
+            assert_eq!((hht.alpha, hht.beta, hht.gamma), (alpha, beta, gamma));
+            let props = CoulombBuilder::new()
+                .mu(0.3)
+                .hht_alpha(alpha)
+                .damping(if alpha == 0.0 { 1.0 } else { 0.0 })
+                .build();
+            assert_eq!(COULOMB.resolved_in(&props, 15), beta);
+            assert_eq!(COULOMB.resolved_in(&props, 16), gamma);
+            let by_hand = ExtendedCoulomb::new(Coulomb::new(0.3).unwrap());
+            let by_hand = if alpha == 0.0 {
+                // α = ±0 with β = γ = 0: HHT is off; damping makes the law extended.
+                by_hand.with_damping(Some(Damping::new(1.0, 0.0, 0.0).unwrap()))
+            } else {
+                by_hand.with_hht(Some(Hht { alpha, beta, gamma }))
+            };
+            let expected = Some(FrictionLaw::CoulombExtended(by_hand));
+            assert_eq!(coulomb_extended_fast(&props), expected, "α = {alpha}");
+            assert_eq!(coulomb_extended(&props).ok(), expected, "α = {alpha}");
+        }
+        // μ₂ absent is μ₂ = μ (isotropic), with any extended entry on.
+        let props = CoulombBuilder::new().mu(0.3).hht_alpha(-0.1).build();
+        assert_eq!(COULOMB.resolved_in(&props, 3), 0.3);
+        for law in [coulomb_extended_fast(&props), coulomb_extended(&props).ok()] {
+            let Some(FrictionLaw::CoulombExtended(law)) = law else {
+                panic!("{law:?}")
+            };
+            assert_eq!(law.mu2(), 0.3);
+        }
+        // The slip tolerance 0.005 (seed 000, "0.5%"): the schema, the constructor, the plain
+        // and the steady-transport readers.
+        let props = CoulombBuilder::new().mu(0.3).build_first(7);
+        assert_eq!(COULOMB.resolved_in(&props, 6), 0.005);
+        assert_eq!(
+            Coulomb::new(0.3).unwrap().critical_slip(),
+            CriticalSlip::Tolerance(0.005)
+        );
+        assert_eq!(
+            crate::props::fast_plain_coulomb(&props).map(|c| c.critical_slip()),
+            Some(CriticalSlip::Tolerance(0.005))
+        );
+        let props = CoulombBuilder::new().mu(0.3).stick(3.0).omega(2.0).build();
+        for law in [coulomb_extended_fast(&props), coulomb_extended(&props).ok()] {
+            let Some(FrictionLaw::CoulombExtended(law)) = law else {
+                panic!("{law:?}")
+            };
+            assert_eq!(law.steady_transport().map(|t| t.tolerance), Some(0.005));
+        }
+    }
+
+    /// The fast validators' plans drop at compile time every rule their fixed layout
+    /// satisfies: none is left for the plain layout, only "θ_ref needs b_θ" (the one rule
+    /// between two free entries) for the decay law's lean layout.
+    #[test]
+    fn the_plans_keep_only_the_rules_that_can_fail() {
+        assert!(Plain::PLAN.live_rules().is_empty());
+        assert_eq!(
+            DecayLean::PLAN.live_rules(),
+            [&Rule::ZeroWhen {
+                entry: 13,
+                on: 12,
+                value: 0,
+                why: "no temperature law"
+            }]
+        );
+        // A fixed layout that leaves steady transport (PROPS(7) = 3) possible has no plan:
+        // the variant's entries mean something else.
+        let open = Fixed {
+            name: "open",
+            fixed: &[(3, Fix::ZeroOrEqual(2))],
+        };
+        assert!(std::panic::catch_unwind(|| Plan::of(&COULOMB, &open, 7)).is_err());
+        // Nor one pinning an entry past its NPROPS.
+        assert!(std::panic::catch_unwind(|| Plan::of(&COULOMB, &DECAY_LEAN, 7)).is_err());
+    }
+
+    /// `PLAIN` leaves the stick mode to the plain reader's match: the match accepts exactly
+    /// the modes the pin lists, each as the checked parser reads it, and refuses the others
+    /// (steady transport's 3 included, which the plan ruled out).
+    #[test]
+    fn the_plain_readers_match_takes_the_modes_the_pin_lists() {
+        let Some(&(7, Fix::MappedBy(listed))) = PLAIN.fixed.iter().find(|(i, _)| *i == 7) else {
+            panic!("PROPS(7) is not MappedBy in PLAIN")
+        };
+        let mut accepted = Vec::new();
+        for stick in [-1.0, -0.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0, f64::NAN] {
+            let props = CoulombBuilder::new().mu(0.3).stick(stick).build_first(7);
+            let fast = crate::props::fast_plain_coulomb(&props);
+            if let Some(law) = fast {
+                assert_eq!(
+                    coulomb_extended(&props),
+                    Ok(FrictionLaw::Coulomb(law)),
+                    "{stick}"
+                );
+                accepted.push(stick);
+            }
+        }
+        let listed: Vec<f64> = listed.iter().map(|&c| f64::from(c)).collect();
+        // −0 is 0 to the match, as to the checked parser.
+        assert_eq!(accepted, [&[-0.0][..], &listed].concat());
     }
 
     /// The refusals name the entry in force: HHT α or steady transport's ω for `PROPS(14)`,

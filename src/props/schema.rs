@@ -5,10 +5,13 @@
 //! [`Fixed`] layouts that a fast path recognises (the adhesive law's Coulomb special case).
 //! From that one table come:
 //!
-//! - the branch-light validator of the per-call fast paths (`Layout::admits`): one copy of its
-//!   body per entry (`unrolled!`), each folding to that entry's class test, so it compiles to
-//!   the straight-line code that used to be written by hand (`fric_`'s and `bench_adhesive`'s
-//!   instruction counts are the check, docs/architecture.md);
+//! - the branch-light validators of the per-call fast paths, one per named fixed layout
+//!   ([`Fixed`]: law 1's plain and decay-lean layouts, law 2's Coulomb special case, or
+//!   [`Fixed::NONE`]): a `Plan` worked out at compile time (which one test each entry
+//!   needs, which rules can still fail), read by `admits_fixed` with one copy of its body
+//!   per entry (`unrolled!`), so it compiles to the straight-line code that used to be
+//!   written by hand (`fric_`'s, `bench_rate`'s and `bench_adhesive`'s instruction counts are
+//!   the check, docs/architecture.md);
 //! - the checked parser ([`Layout::check`]), whose [`PropsError`] names the entry, its value
 //!   and the requirement, with a typed [`Cause`] carrying the `PROPS` index;
 //! - the defaults the laws are built with ([`Layout::resolved`]);
@@ -157,8 +160,30 @@ pub enum Default {
     Value(f64),
     /// The value of another entry (`PROPS(index)`).
     Entry(usize),
+    /// A function of another entry, written once in the law (`Hht::default_beta`) and named
+    /// here, so that every reader and the law's constructor take the same default:
+    /// `value(PROPS(of))` with `PROPS(of)` as given (itself 0 when absent).
+    Derived {
+        /// The entry it is a function of.
+        of: usize,
+        /// The law's function.
+        value: LawFn,
+        /// The formula, for the docs table.
+        text: &'static str,
+    },
     /// Worked out by the law from other inputs, as described.
     Described(&'static str),
+}
+
+/// A law's function of one entry, for [`Default::Derived`](enum@Default) (equal when it is the
+/// same function).
+#[derive(Clone, Copy, Debug)]
+pub struct LawFn(pub fn(f64) -> f64);
+
+impl PartialEq for LawFn {
+    fn eq(&self, other: &Self) -> bool {
+        std::ptr::fn_addr_eq(self.0, other.0)
+    }
 }
 
 /// One `PROPS` entry.
@@ -342,6 +367,14 @@ pub enum Fix {
     Zero,
     /// "None" (≤ 0, finite) or equal to `PROPS(index)`.
     NoneOrEqual(usize),
+    /// 0 or equal to `PROPS(index)` (law 1's isotropy: μ₂ absent or μ₂ = μ).
+    ZeroOrEqual(usize),
+    /// Exactly this value (the mode a fast path is written for).
+    Is(i32),
+    /// One of these values, tested by the fast reader's own `match` that maps them to the
+    /// law's type (the stick mode), so it is tested once: the validator leaves it alone, and
+    /// only uses the list to know which rules and variants cannot apply.
+    MappedBy(&'static [i32]),
 }
 
 /// A named fixed layout: entries pinned to one meaning, the others as the layout allows.
@@ -562,6 +595,9 @@ fn range_flag(v: f64) -> u64 {
     super::range_flag(v)
 }
 
+mod plan;
+pub(crate) use plan::{FastLayout, Plan, admits_fixed};
+
 impl Layout {
     /// `PROPS(index)`'s description. Panics on an index outside the layout (a programming
     /// error in a schema, caught by the schema's tests).
@@ -629,65 +665,6 @@ impl Layout {
             i += 1;
         }
         n
-    }
-
-    /// Fast, branch-light validity of the first `N` entries `e` (`e[i - 1] = PROPS(i)`; the
-    /// entries past `N` are absent, i.e. 0, which every layout admits: a schema test checks
-    /// it), with the entries of `fixed` pinned. Straight-line after inlining: the loop runs
-    /// over a constant table, so the compiler unrolls it and keeps, per entry, only its
-    /// class's test. Ranges 0 ≤ v < ∞ are OR-ed into one test of the top bit
-    /// ([`range_flag`]), ±0 pins into one test of the bits without their signs.
-    ///
-    /// Does not look at `NPROPS` (the caller's array length is `N`) nor at `PROPS(1)`
-    /// beyond its class.
-    #[inline(always)]
-    pub(crate) fn admits<const N: usize>(&self, e: &[f64; N], fixed: Option<&Fixed>) -> bool {
-        let mut flags = 0u64;
-        let mut zeros = 0u64;
-        let mut ok = true;
-        // One copy of the body per index, so that each copy's entry (and so its class and
-        // pin) is a constant once inlined: the compiler keeps only that class's test. (A plain
-        // loop was not unrolled: +90 instructions per call on the adhesive path.)
-        unrolled!(I in [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19] {
-            if I < N && I < self.entries.len() {
-                let entry = &self.entries[I];
-                let v = e[I];
-                match fixed.and_then(|f| f.pin(entry.index)) {
-                    Some(Fix::Zero) => zeros |= v.to_bits(),
-                    // "None" is −∞ < v ≤ 0, i.e. 0 ≤ −v < ∞: the same top-bit test.
-                    Some(Fix::NoneOrEqual(j)) => {
-                        flags |= if v == e[j - 1] { 0 } else { range_flag(-v) };
-                    }
-                    None => match entry.class {
-                        Class::Code(c) => ok &= v == f64::from(c),
-                        Class::NonNegative | Class::OffOrPositive => flags |= range_flag(v),
-                        Class::FiniteOrNone => ok &= v.is_finite(),
-                        Class::Switch { .. } => ok &= v == 0.0 || v == 1.0,
-                        Class::UnitInterval | Class::OffOrFraction => {
-                            ok &= (0.0..=1.0).contains(&v);
-                        }
-                        class @ (Class::Positive
-                        | Class::Finite
-                        | Class::Interval { .. }
-                        | Class::Choice(_)) => ok &= class.admits(v),
-                    },
-                }
-            }
-        });
-        debug_assert!(self.entries.len() <= 20, "unrolled! covers 20 entries");
-        let mut r = 0;
-        while r < self.rules.len() {
-            let rule = self.rules[r];
-            let (entry, other) = (rule.entry(), rule.other());
-            let pinned = fixed.is_some_and(|f| f.pin(entry).is_some());
-            if entry <= N && other <= N && !pinned {
-                ok &= rule.holds(e[entry - 1], e[other - 1]);
-            }
-            r += 1;
-        }
-        // A layout with variants is not read here (its entries' classes depend on another
-        // entry): declined, so the checked path decides. Folds away for the others.
-        ok && self.variants.is_empty() && flags >> 63 == 0 && zeros << 1 == 0
     }
 
     /// The checked parser: the entries padded with zeros to the layout's length, or the first
@@ -764,18 +741,22 @@ impl Layout {
     #[inline(always)]
     #[must_use]
     pub fn resolved<const N: usize>(&self, e: &[f64; N], index: usize) -> f64 {
+        self.resolved_in(e, index)
+    }
+
+    /// [`Layout::resolved`] for entries given as a slice (`e[i - 1] = PROPS(i)`, entries past
+    /// its end absent).
+    #[inline(always)]
+    #[must_use]
+    pub fn resolved_in(&self, e: &[f64], index: usize) -> f64 {
         let entry = self.entry(index);
-        // Past N: absent, i.e. 0.
-        let v = if index <= N { e[index - 1] } else { 0.0 };
+        // Past the end: absent, i.e. 0.
+        let get = |i: usize| if i <= e.len() { e[i - 1] } else { 0.0 };
+        let v = get(index);
         match entry.default {
             Default::Value(d) if entry.class.is_off(v) => d,
-            Default::Entry(j) if entry.class.is_off(v) => {
-                if j <= N {
-                    e[j - 1]
-                } else {
-                    0.0
-                }
-            }
+            Default::Entry(j) if entry.class.is_off(v) => get(j),
+            Default::Derived { of, value, .. } if entry.class.is_off(v) => (value.0)(get(of)),
             _ => v,
         }
     }
@@ -826,9 +807,15 @@ impl Layout {
             Default::Required => "— (required)".to_string(),
             Default::Value(d) => format!("{d}"),
             Default::Entry(j) => {
-                format!("none: {} = {}", e.symbol, self.entry(j).symbol)
+                // "None" is any value ≤ 0 for FiniteOrNone, only 0 otherwise.
+                let none = if matches!(e.class, Class::FiniteOrNone) {
+                    "none: "
+                } else {
+                    ""
+                };
+                format!("{none}{} = {}", e.symbol, self.entry(j).symbol)
             }
-            Default::Described(text) => text.to_string(),
+            Default::Derived { text, .. } | Default::Described(text) => text.to_string(),
         };
         let mut valid = e.class.valid_text();
         for rule in self.rules.iter().filter(|r| r.entry() == e.index) {
@@ -872,6 +859,13 @@ impl Layout {
 }
 
 impl Fixed {
+    /// No entry pinned: the whole layout as it comes (a fast path that only decides valid or
+    /// not).
+    pub const NONE: Fixed = Fixed {
+        name: "as given",
+        fixed: &[],
+    };
+
     /// What this fixed layout pins `PROPS(index)` to, if anything.
     #[inline(always)]
     #[must_use]
