@@ -307,12 +307,7 @@ fn run<const N: usize>(
     // Elastic stick: whole chunks through the SIMD-friendly kernel; a chunk it declines (a
     // point not on the common path, LM ≠ 0) and the tail go point by point.
     if let Some(kernel) = ElasticStickKernel::new(law) {
-        let pass = ChunkPass {
-            kernel: &kernel,
-            law,
-            dtime,
-        };
-        i = chunks_dispatch::<N>(&pass, &mut v, &mut tally);
+        i = chunks_dispatch::<N>(&kernel, law, dtime, &mut v, &mut tally);
     }
     for j in i..n {
         tally.one::<N>(law, dtime, &mut v, j);
@@ -338,16 +333,18 @@ fn run<const N: usize>(
 /// [`chunks`] compiled for AVX2 when the processor has it (same IEEE operations, so the same
 /// bits; wider registers and three-operand instructions), else for the baseline.
 fn chunks_dispatch<const N: usize>(
-    pass: &ChunkPass<'_>,
+    kernel: &ElasticStickKernel,
+    law: &Coulomb,
+    dtime: f64,
     v: &mut Views<'_>,
-    t: &mut Tally,
+    tally: &mut Tally,
 ) -> usize {
     #[cfg(target_arch = "x86_64")]
     if !baseline_only() && std::arch::is_x86_feature_detected!("avx2") {
         // SAFETY: the processor supports AVX2 (checked just above).
-        return unsafe { chunks_avx2::<N>(pass, v, t) };
+        return unsafe { chunks_avx2::<N>(kernel, law, dtime, v, tally) };
     }
-    chunks::<N>(pass, v, t)
+    chunks::<N>(kernel, law, dtime, v, tally)
 }
 
 #[cfg(test)]
@@ -370,22 +367,25 @@ fn baseline_only() -> bool {
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn chunks_avx2<const N: usize>(pass: &ChunkPass<'_>, v: &mut Views<'_>, t: &mut Tally) -> usize {
-    chunks::<N>(pass, v, t)
-}
-
-/// What the chunked pass over one batch runs with: the elastic-stick kernel, and the law and
-/// time increment of the points it declines (one argument for the three functions below).
-struct ChunkPass<'a> {
-    kernel: &'a ElasticStickKernel,
-    law: &'a Coulomb,
+fn chunks_avx2<const N: usize>(
+    kernel: &ElasticStickKernel,
+    law: &Coulomb,
     dtime: f64,
+    v: &mut Views<'_>,
+    tally: &mut Tally,
+) -> usize {
+    chunks::<N>(kernel, law, dtime, v, tally)
 }
 
 /// The whole chunks of the batch through the kernel; returns where the tail starts.
 #[inline(always)]
-fn chunks<const N: usize>(pass: &ChunkPass<'_>, v: &mut Views<'_>, tally: &mut Tally) -> usize {
-    let ChunkPass { kernel, law, dtime } = *pass;
+fn chunks<const N: usize>(
+    kernel: &ElasticStickKernel,
+    law: &Coulomb,
+    dtime: f64,
+    v: &mut Views<'_>,
+    tally: &mut Tally,
+) -> usize {
     let n = v.lm.len();
     let has_taulm = v.taulm.is_some();
     let mut i = 0;

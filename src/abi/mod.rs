@@ -329,8 +329,48 @@ pub(crate) fn shown_name(bytes: &[u8]) -> String {
 #[cfg(test)]
 mod tests {
     use super::host::FricCall;
-    use crate::CUTBACK_RATIO;
+    use super::{count, host_number, host_site, shown_name};
     use crate::testing::{force_panic, forced_panics};
+    use crate::{CUTBACK_RATIO, LawError};
+
+    #[test]
+    fn a_count_is_a_length_or_the_one_negative_message() {
+        assert_eq!(count("NPROPS", 0).ok(), Some(0));
+        assert_eq!(count("NPROPS", i32::MAX).ok(), Some(i32::MAX as usize));
+        for (name, v) in [("nBlock", -1), ("NPROPS", i32::MIN)] {
+            match count(name, v) {
+                Err(LawError::Parameter(m)) => assert_eq!(m, format!("{name} = {v} is negative")),
+                other => panic!("{name} = {v}: {other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn sites_show_numbers_and_trimmed_names_without_reading_past_them() {
+        assert_eq!(unsafe { host_number(std::ptr::null()) }, "?");
+        // An INTEGER at an odd address (a packed host array) reads as its value.
+        let mut bytes = [0u8; 8];
+        bytes[1..5].copy_from_slice(&(-12i32).to_ne_bytes());
+        let odd = bytes[1..].as_ptr().cast::<std::ffi::c_int>();
+        assert_eq!(unsafe { host_number(odd) }, "-12");
+        assert_eq!(shown_name(b"SI1  \0\0"), "SI1");
+        assert_eq!(shown_name(b" A B "), " A B");
+        assert_eq!(shown_name(b"\0 "), "");
+        assert_eq!(shown_name(b"X\xff"), "X\u{fffd}");
+        let name = b"CONTACT-1   ";
+        let site = unsafe { host_site("GAPCON", name.as_ptr().cast(), 9, "node 3".into()) };
+        assert_eq!(
+            (site.routine, site.interaction.as_str(), site.place.as_str()),
+            ("GAPCON", "CONTACT-1", "node 3")
+        );
+        // A hidden length that is an address (a caller with another argument list) is shown,
+        // not used: the dangling pointer is never read.
+        let site = unsafe { host_site("GAPCON", std::ptr::dangling(), 1 << 40, String::new()) };
+        assert_eq!(
+            site.interaction,
+            format!("? (hidden length {})", 1u64 << 40)
+        );
+    }
 
     #[test]
     fn a_panic_in_the_core_becomes_a_cut_back() {
