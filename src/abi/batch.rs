@@ -19,7 +19,7 @@
 
 use std::ffi::c_int;
 
-use super::{Fault, IflStatus, boundary, cut_back};
+use super::{Fault, IflStatus, bad_lm, boundary, count, cut_back};
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
 use crate::laws::coulomb_batch::{ChunkInput, ElasticStickKernel};
 use crate::props::{FrictionLaw, friction_law};
@@ -583,12 +583,6 @@ fn point<const N: usize>(
 
 #[cold]
 #[inline(never)]
-fn bad_lm(lm: c_int) -> LawError {
-    LawError::Input(format!("LM = {lm} on entry; expected 0, 1 or 2"))
-}
-
-#[cold]
-#[inline(never)]
 fn no_taulm() -> LawError {
     LawError::Input("LM = 1 on entry but no TAULM array was given".into())
 }
@@ -723,8 +717,7 @@ pub unsafe extern "C" fn ifl_fric_batch(
                     "leading dimension ld = {ld} is less than npoints = {npoints}"
                 )));
             }
-            let nprops = usize::try_from(nprops)
-                .map_err(|_| LawError::Parameter(format!("NPROPS = {nprops} is negative")))?;
+            let nprops = count("NPROPS", nprops)?;
             let len = |components: usize| -> Result<usize, LawError> {
                 if npoints == 0 {
                     return Ok(0);

@@ -5,7 +5,7 @@
 use std::ffi::c_int;
 
 use super::native::IflStatus;
-use super::{boundary, read_array, slice, write_array, write_matrix};
+use super::{boundary, count, read_array, slice, write_array, write_matrix};
 use crate::LawError;
 use crate::laws::coulomb_extended::ExtendedCoulomb;
 use crate::props::{FrictionLaw, friction_law};
@@ -38,15 +38,16 @@ pub unsafe extern "C" fn ifl_forced_sliding(
     damping: *mut f64,
     stiffness: *mut f64,
 ) -> IflStatus {
+    let out = Outputs {
+        tau,
+        damping,
+        stiffness,
+    };
     let run = || -> Result<(), LawError> {
         if tau.is_null() || damping.is_null() || stiffness.is_null() {
             return Err(LawError::Input("an output pointer is NULL".into()));
         }
-        let Ok(nprops) = usize::try_from(nprops) else {
-            return Err(LawError::Parameter(format!(
-                "nprops = {nprops} is negative"
-            )));
-        };
+        let nprops = count("nprops", nprops)?;
         // SAFETY: `props` holds `nprops` reals by contract.
         let law = match friction_law(unsafe { slice(props, nprops, "props") }?)? {
             FrictionLaw::Coulomb(base) => ExtendedCoulomb::new(base),
@@ -60,43 +61,20 @@ pub unsafe extern "C" fn ifl_forced_sliding(
         // SAFETY (both arms): arrays of nfdir and nfdir² entries by contract.
         unsafe {
             match nfdir {
-                1 => {
-                    let v = read_array::<1>(velocity, "velocity")?;
-                    let f = law.forced_sliding(&v, pressure, temperature)?;
-                    write_array(tau, &f.tau);
-                    write_matrix(damping, &f.damping);
-                    write_array(stiffness, &f.stiffness_pressure);
-                }
-                2 => {
-                    let v = read_array::<2>(velocity, "velocity")?;
-                    let f = law.forced_sliding(&v, pressure, temperature)?;
-                    write_array(tau, &f.tau);
-                    write_matrix(damping, &f.damping);
-                    write_array(stiffness, &f.stiffness_pressure);
-                }
-                other => {
-                    return Err(LawError::Parameter(format!(
-                        "nfdir = {other}; expected 1 or 2"
-                    )));
-                }
+                1 => out.slide::<1>(&law, velocity, pressure, temperature),
+                2 => out.slide::<2>(&law, velocity, pressure, temperature),
+                other => Err(LawError::Parameter(format!(
+                    "nfdir = {other}; expected 1 or 2"
+                ))),
             }
         }
-        Ok(())
     };
     let on_fault = || {
         // SAFETY: as above; only for a valid nfdir.
         unsafe {
             match nfdir {
-                1 => {
-                    write_array::<1>(tau, &[0.0]);
-                    write_matrix::<1>(damping, &[[0.0]]);
-                    write_array::<1>(stiffness, &[0.0]);
-                }
-                2 => {
-                    write_array::<2>(tau, &[0.0; 2]);
-                    write_matrix::<2>(damping, &[[0.0; 2]; 2]);
-                    write_array::<2>(stiffness, &[0.0; 2]);
-                }
+                1 => out.write::<1>(&[0.0], &[[0.0]], &[0.0]),
+                2 => out.write::<2>(&[0.0; 2], &[[0.0; 2]; 2], &[0.0; 2]),
                 _ => {}
             }
         }
@@ -111,4 +89,51 @@ pub unsafe extern "C" fn ifl_forced_sliding(
         on_fault,
     )
     .into()
+}
+
+/// The outputs of [`ifl_forced_sliding`].
+struct Outputs {
+    tau: *mut f64,
+    damping: *mut f64,
+    stiffness: *mut f64,
+}
+
+impl Outputs {
+    /// Forced sliding with N = `nfdir` directions: reads `velocity[N]`, writes the answer.
+    ///
+    /// # Safety
+    /// As [`ifl_forced_sliding`], N = `nfdir`.
+    unsafe fn slide<const N: usize>(
+        &self,
+        law: &ExtendedCoulomb,
+        velocity: *const f64,
+        pressure: f64,
+        temperature: f64,
+    ) -> Result<(), LawError> {
+        // SAFETY: `velocity` holds N reals by contract; the outputs as `write`.
+        unsafe {
+            let v = read_array::<N>(velocity, "velocity")?;
+            let f = law.forced_sliding(&v, pressure, temperature)?;
+            self.write(&f.tau, &f.damping, &f.stiffness_pressure);
+        }
+        Ok(())
+    }
+
+    /// The one writer: `tau[N]`, `damping[N·N]` (column-major), `stiffness[N]`; NULL skipped.
+    ///
+    /// # Safety
+    /// Each pointer is NULL or holds N, N·N and N writable reals.
+    unsafe fn write<const N: usize>(
+        &self,
+        tau: &[f64; N],
+        damping: &[[f64; N]; N],
+        stiffness: &[f64; N],
+    ) {
+        // SAFETY: as documented.
+        unsafe {
+            write_array(self.tau, tau);
+            write_matrix(self.damping, damping);
+            write_array(self.stiffness, stiffness);
+        }
+    }
 }

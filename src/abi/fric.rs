@@ -6,8 +6,8 @@ use std::ffi::{c_char, c_int};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::{
-    boundary, cut_back, fortran_name_bytes, fortran_string, null_pointer, read, read_array, slice,
-    write, write_array, write_matrix, write_zeros,
+    bad_lm, boundary, count, cut_back, fortran_name_bytes, host_number, host_site, null_pointer,
+    read, read_array, slice, write, write_array, write_matrix, write_zeros,
 };
 use crate::LawError;
 use crate::config::friction_table_for;
@@ -563,10 +563,7 @@ impl FricArgs {
                 1 => EntryFlag::ExactStick,
                 other => return Err(bad_lm(other)),
             };
-            let nprops = read(self.nprops, "NPROPS")?;
-            let Ok(nprops) = usize::try_from(nprops) else {
-                return Err(negative_nprops(nprops));
-            };
+            let nprops = count("NPROPS", read(self.nprops, "NPROPS")?)?;
             let props = slice(self.props, nprops, "PROPS")?;
             // The extended law's own fast reader (no FrictionLaw built and moved).
             if let Some(law) = fast_extended_coulomb(props) {
@@ -734,18 +731,15 @@ impl FricArgs {
     /// # Safety
     /// As `fric_`.
     unsafe fn site(&self) -> Site {
-        // SAFETY: the host's pointers; NULL reads as "?".
-        let num = |p: *const c_int| unsafe { get(p) }.map_or("?".to_string(), |v| v.to_string());
-        Site {
-            routine: "FRIC",
-            // SAFETY: CINAME has the hidden length the host passed.
-            interaction: unsafe { fortran_string(self.ciname, self.ciname_len) },
-            place: format!(
+        // SAFETY: the host's pointers: CINAME of its hidden length, NOEL, NODE, NPT or NULL.
+        unsafe {
+            let place = format!(
                 "element {}, node {}, point {}",
-                num(self.noel),
-                num(self.node),
-                num(self.npt)
-            ),
+                host_number(self.noel),
+                host_number(self.node),
+                host_number(self.npt)
+            );
+            host_site("FRIC", self.ciname, self.ciname_len, place)
         }
     }
 }
@@ -756,18 +750,6 @@ fn coulomb_statev(state: &CoulombState) -> [f64; CoulombState::NSTATV] {
     let mut out = [0.0; CoulombState::NSTATV];
     state.write_statev(&mut out);
     out
-}
-
-#[cold]
-#[inline(never)]
-fn bad_lm(lm: c_int) -> LawError {
-    LawError::Input(format!("LM = {lm} on entry; expected 0, 1 or 2"))
-}
-
-#[cold]
-#[inline(never)]
-fn negative_nprops(nprops: c_int) -> LawError {
-    LawError::Parameter(format!("NPROPS = {nprops} is negative"))
 }
 
 #[cold]

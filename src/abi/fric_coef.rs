@@ -3,12 +3,11 @@
 
 use std::ffi::{c_char, c_int};
 
-use super::{boundary, fortran_name_bytes, fortran_string, null_pointer, read, slice};
+use super::{boundary, count, fortran_name_bytes, host_site, null_pointer, read, slice};
 use crate::LawError;
 use crate::config::friction_table_for;
 use crate::laws::coulomb_extended::ExtendedCoulomb;
 use crate::props::{FrictionLaw, coulomb_extended_with_table, friction_law};
-use crate::report::Site;
 
 /// Number of derivative slots per point and direction in `fCoefDeriv(nBlock,20,2)`.
 pub const FRIC_COEF_NDERIV: usize = 20;
@@ -76,11 +75,7 @@ pub unsafe extern "C" fn fric_coef_(
     };
     let _ = boundary(
         // SAFETY (all three closures): the host's pointers, valid per the contract above.
-        || Site {
-            routine: "FRIC_COEF",
-            interaction: unsafe { fortran_string(surf_int, surf_int_len) },
-            place: "block".into(),
-        },
+        || unsafe { host_site("FRIC_COEF", surf_int, surf_int_len, "block".into()) },
         || unsafe { args.run() },
         || unsafe { args.fail() },
     );
@@ -107,18 +102,8 @@ impl CoefArgs {
         // SAFETY (whole body): arrays of the sizes the FRIC_COEF contract gives, read after
         // their sizes were checked; outputs written only after every point was computed.
         unsafe {
-            let nblock = read(self.nblock, "nBlock")?;
-            let Ok(n) = usize::try_from(nblock) else {
-                return Err(LawError::Parameter(format!(
-                    "nBlock = {nblock} is negative"
-                )));
-            };
-            let nprops = read(self.nprops, "nProps")?;
-            let Ok(nprops) = usize::try_from(nprops) else {
-                return Err(LawError::Parameter(format!(
-                    "nProps = {nprops} is negative"
-                )));
-            };
+            let n = count("nBlock", read(self.nblock, "nBlock")?)?;
+            let nprops = count("nProps", read(self.nprops, "nProps")?)?;
             let props = slice(self.props, nprops, "props")?;
             let law = if props.get(7) == Some(&2.0) {
                 // μ table (PROPS(8) = 2): the interaction's, from the configuration file.

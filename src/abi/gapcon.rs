@@ -3,7 +3,7 @@
 
 use std::ffi::{c_char, c_int};
 
-use super::{boundary, fortran_name_bytes, fortran_string, read, read_array, write};
+use super::{boundary, fortran_name_bytes, host_number, host_site, read_array, write};
 use crate::LawError;
 use crate::config;
 use crate::report::Site;
@@ -181,18 +181,16 @@ unsafe fn gap_conductance(
     );
 }
 
+/// Where a GAPCON message comes from, read only on the error path.
 unsafe fn site(
     ciname: *const c_char,
     ciname_len: usize,
     noel: *const c_int,
     node: *const c_int,
 ) -> Site {
-    // SAFETY: the host's pointers; NULL reads as "?".
-    let num = |p: *const c_int| unsafe { read(p, "") }.map_or("?".to_string(), |v| v.to_string());
-    Site {
-        routine: "GAPCON",
-        // SAFETY: CINAME has the hidden length the host passed.
-        interaction: unsafe { fortran_string(ciname, ciname_len) },
-        place: format!("element {}, node {}", num(noel), num(node)),
+    // SAFETY: the host's pointers: CINAME of its hidden length, NOEL, NODE or NULL.
+    unsafe {
+        let place = format!("element {}, node {}", host_number(noel), host_number(node));
+        host_site("GAPCON", ciname, ciname_len, place)
     }
 }

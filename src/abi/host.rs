@@ -10,6 +10,26 @@ use super::fric_;
 /// Sentinel written past the end of every output array, to prove nothing is written there.
 pub const GUARD: f64 = -7.77e77;
 
+/// `STATEV` of `n` zeros followed by four [`GUARD`] slots.
+pub(crate) fn state_with_guards(n: usize) -> Vec<f64> {
+    let mut statev = vec![0.0; n];
+    statev.extend([GUARD; 4]);
+    statev
+}
+
+/// True when every entry of `slots` still holds [`GUARD`].
+pub(crate) fn all_guards(slots: &[f64]) -> bool {
+    slots.iter().all(|x| *x == GUARD)
+}
+
+/// A `CHARACTER` argument as the host passes it: `name` blank-padded to `len` bytes (longer
+/// names are kept whole; the hidden length says how much is read).
+pub(crate) fn blank_padded(name: &str, len: usize) -> Vec<u8> {
+    let mut bytes = name.as_bytes().to_vec();
+    bytes.resize(len.max(bytes.len()), b' ');
+    bytes
+}
+
 /// All FRIC arguments of one contact point. Arrays are sized for NFDIR ≤ 3 plus guard slots, so
 /// even a bad `nfdir` stays inside them; `statev` and `props` are sized by their vectors.
 #[derive(Clone, Debug)]
@@ -99,8 +119,7 @@ impl FricCall {
     /// four guard slots), pressure 0, identity `DROT`, interaction name `"SI1"`.
     #[must_use]
     pub fn new(nfdir: i32, props: &[f64]) -> Self {
-        let mut statev = vec![0.0; 3];
-        statev.extend([GUARD; 4]);
+        let statev = state_with_guards(3);
         let mut call = FricCall {
             lm: 0,
             tau: [0.0; 4],
@@ -163,7 +182,7 @@ impl FricCall {
     pub fn guards_intact(&self) -> bool {
         let n = self.nfdir.clamp(0, 3) as usize;
         let ns = self.nstatv.clamp(0, i32::MAX) as usize;
-        let g = |s: &[f64]| s.iter().all(|x| *x == GUARD);
+        let g = all_guards;
         g(&self.tau[n..])
             && g(&self.ddtddg[n * n..])
             && g(&self.ddtddp[n..])
@@ -187,9 +206,8 @@ impl FricCall {
         assert!(self.statev.len() >= self.nstatv.max(0) as usize);
         assert!(self.props.len() >= self.nprops.max(0) as usize);
         assert!((-1..=3).contains(&self.nfdir));
-        let mut name = self.ciname.clone().into_bytes();
         let len = self.name_len;
-        name.resize(len.max(name.len()), b' ');
+        let name = blank_padded(&self.ciname, len);
         let sl = [b' '; 80];
         let ms = [b' '; 80];
         // SAFETY: every pointer refers to a field of `self` or a local that outlives the call,
@@ -289,9 +307,8 @@ impl GapconCall {
 
     /// Calls `gapcon_` (the variant this crate was built with) and returns `AK(1)`.
     pub fn call(&mut self) -> f64 {
-        let mut name = self.ciname.clone().into_bytes();
         let len = self.name_len;
-        name.resize(len.max(name.len()), b' ');
+        let name = blank_padded(&self.ciname, len);
         let blank = [b' '; 80];
         let zeros = [0.0f64; 4];
         let (one, zero) = (1i32, 0i32);

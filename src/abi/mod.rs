@@ -5,7 +5,7 @@
 //! Every exported body runs inside `boundary`, which catches unwinding, turns an error or a
 //! panic into the routine's documented failure output, and reports it.
 
-use std::ffi::c_char;
+use std::ffi::{c_char, c_int};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use crate::LawError;
@@ -95,6 +95,58 @@ pub(crate) fn boundary(
 #[inline(never)]
 pub(crate) fn null_pointer(name: &str) -> LawError {
     LawError::Input(format!("{name} is a NULL pointer"))
+}
+
+/// A count the host passed (`NPROPS`, `nBlock`, …) as a length; a negative one is refused with
+/// the message every entry point gives, "`name` = … is negative".
+#[inline]
+pub(crate) fn count(name: &str, value: c_int) -> Result<usize, LawError> {
+    usize::try_from(value).map_err(|_| negative(name, value))
+}
+
+#[cold]
+#[inline(never)]
+fn negative(name: &str, value: c_int) -> LawError {
+    LawError::Parameter(format!("{name} = {value} is negative"))
+}
+
+/// The refusal of an `LM` on entry other than 0, 1 or 2 (`fric_` and the batch).
+#[cold]
+#[inline(never)]
+pub(crate) fn bad_lm(lm: c_int) -> LawError {
+    LawError::Input(format!("LM = {lm} on entry; expected 0, 1 or 2"))
+}
+
+/// Where a message of a Fortran entry point comes from: `routine`, the interaction's
+/// `CHARACTER` name (`name`, `name_len`) and `place`. Built on the error path only.
+///
+/// # Safety
+/// `name` is NULL or points to `name_len` readable bytes.
+pub(crate) unsafe fn host_site(
+    routine: &'static str,
+    name: *const c_char,
+    name_len: usize,
+    place: String,
+) -> Site {
+    Site {
+        routine,
+        // SAFETY: the hidden length the host passed (never exceeded; implausible ones not read).
+        interaction: unsafe { fortran_string(name, name_len) },
+        place,
+    }
+}
+
+/// An `INTEGER` argument as shown in a message: its value, or "?" for NULL.
+///
+/// # Safety
+/// `p` is NULL or points to a readable `c_int` (unaligned reads are fine).
+pub(crate) unsafe fn host_number(p: *const c_int) -> String {
+    if p.is_null() {
+        "?".to_string()
+    } else {
+        // SAFETY: non-NULL and readable by contract.
+        unsafe { p.read_unaligned() }.to_string()
+    }
 }
 
 /// Reads a scalar argument passed by reference.
@@ -261,7 +313,12 @@ pub(crate) unsafe fn fortran_string(p: *const c_char, len: usize) -> String {
         return format!("? (hidden length {len})");
     }
     // SAFETY: `len` readable bytes by contract (the hidden length is trusted, never exceeded).
-    let bytes = unsafe { std::slice::from_raw_parts(p.cast::<u8>(), len) };
+    shown_name(unsafe { std::slice::from_raw_parts(p.cast::<u8>(), len) })
+}
+
+/// A name's bytes as shown in messages: trailing blanks and NULs dropped, invalid UTF-8
+/// replaced.
+pub(crate) fn shown_name(bytes: &[u8]) -> String {
     let end = bytes
         .iter()
         .rposition(|b| *b != b' ' && *b != 0)
@@ -272,8 +329,48 @@ pub(crate) unsafe fn fortran_string(p: *const c_char, len: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::host::FricCall;
-    use crate::CUTBACK_RATIO;
+    use super::{count, host_number, host_site, shown_name};
     use crate::testing::{force_panic, forced_panics};
+    use crate::{CUTBACK_RATIO, LawError};
+
+    #[test]
+    fn a_count_is_a_length_or_the_one_negative_message() {
+        assert_eq!(count("NPROPS", 0).ok(), Some(0));
+        assert_eq!(count("NPROPS", i32::MAX).ok(), Some(i32::MAX as usize));
+        for (name, v) in [("nBlock", -1), ("NPROPS", i32::MIN)] {
+            match count(name, v) {
+                Err(LawError::Parameter(m)) => assert_eq!(m, format!("{name} = {v} is negative")),
+                other => panic!("{name} = {v}: {other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn sites_show_numbers_and_trimmed_names_without_reading_past_them() {
+        assert_eq!(unsafe { host_number(std::ptr::null()) }, "?");
+        // An INTEGER at an odd address (a packed host array) reads as its value.
+        let mut bytes = [0u8; 8];
+        bytes[1..5].copy_from_slice(&(-12i32).to_ne_bytes());
+        let odd = bytes[1..].as_ptr().cast::<std::ffi::c_int>();
+        assert_eq!(unsafe { host_number(odd) }, "-12");
+        assert_eq!(shown_name(b"SI1  \0\0"), "SI1");
+        assert_eq!(shown_name(b" A B "), " A B");
+        assert_eq!(shown_name(b"\0 "), "");
+        assert_eq!(shown_name(b"X\xff"), "X\u{fffd}");
+        let name = b"CONTACT-1   ";
+        let site = unsafe { host_site("GAPCON", name.as_ptr().cast(), 9, "node 3".into()) };
+        assert_eq!(
+            (site.routine, site.interaction.as_str(), site.place.as_str()),
+            ("GAPCON", "CONTACT-1", "node 3")
+        );
+        // A hidden length that is an address (a caller with another argument list) is shown,
+        // not used: the dangling pointer is never read.
+        let site = unsafe { host_site("GAPCON", std::ptr::dangling(), 1 << 40, String::new()) };
+        assert_eq!(
+            site.interaction,
+            format!("? (hidden length {})", 1u64 << 40)
+        );
+    }
 
     #[test]
     fn a_panic_in_the_core_becomes_a_cut_back() {

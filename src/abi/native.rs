@@ -176,18 +176,10 @@ fn gap_conductance(
     theta_b: f64,
     out: *mut IflConductance,
 ) -> IflStatus {
-    let shown = |name: Option<&[u8]>| {
-        let bytes = name.unwrap_or_default();
-        let end = bytes
-            .iter()
-            .rposition(|b| *b != b' ' && *b != 0)
-            .map_or(0, |i| i + 1);
-        String::from_utf8_lossy(&bytes[..end]).into_owned()
-    };
     super::boundary(
         || crate::report::Site {
             routine,
-            interaction: shown(name),
+            interaction: super::shown_name(name.unwrap_or_default()),
             place: "native call".into(),
         },
         || {

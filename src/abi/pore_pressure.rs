@@ -35,10 +35,10 @@ pub struct IflPorePressureVariant {
     pub per_side: c_int,
 }
 
-fn flag(name: &str, v: c_int) -> Result<bool, LawError> {
+/// A flag of the variant: 0 or 1, anything else refused by name.
+fn flag(name: &str, v: c_int) -> Result<(), LawError> {
     match v {
-        0 => Ok(false),
-        1 => Ok(true),
+        0 | 1 => Ok(()),
         other => Err(LawError::Parameter(format!(
             "variant.{name} = {other}; expected 0 or 1"
         ))),
@@ -80,56 +80,58 @@ fn decode_lean(v: IflPorePressureVariant) -> Option<(Variant, Basis)> {
     if (v.open | v.steady | v.finite_sliding | v.per_side) & !1 != 0 {
         return None;
     }
-    Some((
-        Variant {
-            contact: if v.open == 1 {
-                Contact::Open
-            } else {
-                Contact::Closed
-            },
-            regime: if v.steady == 1 {
-                Regime::Steady
-            } else {
-                Regime::Transient
-            },
-            sliding: if v.finite_sliding == 1 {
-                Sliding::Finite
-            } else {
-                Sliding::Small
-            },
-        },
-        if v.per_side == 1 {
-            Basis::PerSide
-        } else {
-            Basis::MeanJump
-        },
-    ))
+    Some(variant_of(v))
 }
 
+/// The flags, each 0 or 1, read as the kernel's variant and basis, or the first flag (in the
+/// order of the fields) that is neither, named.
 fn decode(v: IflPorePressureVariant) -> Result<(Variant, Basis), LawError> {
+    flag("open", v.open)?;
+    flag("steady", v.steady)?;
+    flag("finite_sliding", v.finite_sliding)?;
+    flag("per_side", v.per_side)?;
+    Ok(variant_of(v))
+}
+
+/// The variant and basis of flags already checked to be 0 or 1 (1 selects the named choice).
+#[inline(always)]
+fn variant_of(v: IflPorePressureVariant) -> (Variant, Basis) {
     let variant = Variant {
-        contact: if flag("open", v.open)? {
+        contact: if v.open == 1 {
             Contact::Open
         } else {
             Contact::Closed
         },
-        regime: if flag("steady", v.steady)? {
+        regime: if v.steady == 1 {
             Regime::Steady
         } else {
             Regime::Transient
         },
-        sliding: if flag("finite_sliding", v.finite_sliding)? {
+        sliding: if v.finite_sliding == 1 {
             Sliding::Finite
         } else {
             Sliding::Small
         },
     };
-    let basis = if flag("per_side", v.per_side)? {
+    let basis = if v.per_side == 1 {
         Basis::PerSide
     } else {
         Basis::MeanJump
     };
-    Ok((variant, basis))
+    (variant, basis)
+}
+
+/// The kernel's point from the entry points' scalar arguments (end of increment).
+#[inline(always)]
+fn interface_point(p1: f64, p2: f64, q_hat: f64, h: f64, dh: f64, dt: f64) -> InterfacePoint {
+    InterfacePoint {
+        p1,
+        p2,
+        q_hat,
+        h,
+        dh,
+        dt,
+    }
 }
 
 /// The interface pore-pressure terms of one integration point (seed 000):
@@ -176,14 +178,7 @@ pub unsafe extern "C" fn ifl_pore_pressure(
     tangent: *mut f64,
     geometric: *mut f64,
 ) -> IflStatus {
-    let point = InterfacePoint {
-        p1,
-        p2,
-        q_hat,
-        h,
-        dh,
-        dt,
-    };
+    let point = interface_point(p1, p2, q_hat, h, dh, dt);
     // SAFETY: forwarded from the caller.
     if unsafe { lean(variant, &point, residual, tangent, geometric) } {
         return IflStatus::Ok;
@@ -234,14 +229,7 @@ pub unsafe extern "C" fn ifl_pore_pressure_n(
     tangent: *mut f64,
     geometric: *mut f64,
 ) -> IflStatus {
-    let point = InterfacePoint {
-        p1,
-        p2,
-        q_hat,
-        h,
-        dh,
-        dt,
-    };
+    let point = interface_point(p1, p2, q_hat, h, dh, dt);
     // SAFETY: forwarded from the caller.
     if unsafe { lean(variant, &point, residual, tangent, geometric) } {
         return IflStatus::Ok;
@@ -388,14 +376,7 @@ unsafe extern "C" fn careful_terminated(
         finite_sliding: hi as u32 as c_int,
         per_side: (hi >> 32) as u32 as c_int,
     };
-    let point = InterfacePoint {
-        p1,
-        p2,
-        q_hat,
-        h,
-        dh,
-        dt,
-    };
+    let point = interface_point(p1, p2, q_hat, h, dh, dt);
     // SAFETY: forwarded from the caller.
     unsafe {
         careful(

@@ -8,8 +8,8 @@
 use std::ffi::{c_char, c_int};
 
 use super::{
-    boundary, cut_back, fortran_name_bytes, fortran_string, read, read_array, slice, write,
-    write_zeros,
+    boundary, count, cut_back, fortran_name_bytes, host_number, host_site, read, read_array, slice,
+    write, write_zeros,
 };
 use crate::LawError;
 use crate::config;
@@ -208,12 +208,7 @@ impl UinterArgs {
     unsafe fn run(&self) -> Result<(), LawError> {
         // SAFETY (whole body): pointers valid per the UINTER contract; sizes checked first.
         unsafe {
-            let nprops = read(self.nprops, "NPROPS")?;
-            let Ok(nprops) = usize::try_from(nprops) else {
-                return Err(LawError::Parameter(format!(
-                    "NPROPS = {nprops} is negative"
-                )));
-            };
+            let nprops = count("NPROPS", read(self.nprops, "NPROPS")?)?;
             let props = slice(self.props, nprops, "PROPS")?;
             // One arm per UINTER law, on the law code PROPS(1): a new law is one arm here
             // and its `*_point` function below (docs/architecture.md, "add a law").
@@ -436,12 +431,13 @@ fn bad_ndir(ndir: c_int) -> LawError {
 
 /// Where a UINTER message comes from, read only on the error path.
 unsafe fn site(ciname: *const c_char, ciname_len: usize, node: *const c_int) -> Site {
-    // SAFETY: the host's pointers; NULL reads as "?".
-    let num = |p: *const c_int| unsafe { read(p, "") }.map_or("?".to_string(), |v| v.to_string());
-    Site {
-        routine: "UINTER",
-        // SAFETY: CINAME has the hidden length the host passed.
-        interaction: unsafe { fortran_string(ciname, ciname_len) },
-        place: format!("node {}", num(node)),
+    // SAFETY: the host's pointers: CINAME of its hidden length, NODE or NULL.
+    unsafe {
+        host_site(
+            "UINTER",
+            ciname,
+            ciname_len,
+            format!("node {}", host_number(node)),
+        )
     }
 }

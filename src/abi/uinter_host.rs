@@ -4,7 +4,7 @@
 
 use std::ffi::c_char;
 
-use super::host::GUARD;
+use super::host::{GUARD, all_guards, blank_padded, state_with_guards};
 use super::uinter_;
 
 /// All UINTER arguments of one interface point. Arrays are sized for NDIR ≤ 3 plus guard slots.
@@ -65,8 +65,7 @@ impl UinterCall {
     /// `LOPENCLOSE = LSTATE = −1` as at the start of an analysis, interaction `"SI1"`.
     #[must_use]
     pub fn new(ndir: i32, props: &[f64]) -> Self {
-        let mut statev = vec![0.0; 3];
-        statev.extend([GUARD; 4]);
+        let statev = state_with_guards(3);
         let mut c = UinterCall {
             stress: [0.0; 4],
             ddsddr: [0.0; 10],
@@ -117,7 +116,7 @@ impl UinterCall {
     pub fn guards_intact(&self) -> bool {
         let n = self.ndir.clamp(0, 3) as usize;
         let ns = self.nstatv.clamp(0, i32::MAX) as usize;
-        let g = |s: &[f64]| s.iter().all(|x| *x == GUARD);
+        let g = all_guards;
         g(&self.stress[n..])
             && g(&self.ddsddr[n * n..])
             && g(&self.dviscous[n * n..])
@@ -149,8 +148,7 @@ impl UinterCall {
         assert!(self.statev.len() >= self.nstatv.max(0) as usize);
         assert!(self.props.len() >= self.nprops.max(0) as usize);
         assert!((-1..=3).contains(&self.ndir));
-        let mut name = self.ciname.clone().into_bytes();
-        name.resize(80.max(name.len()), b' ');
+        let name = blank_padded(&self.ciname, 80);
         let blank = [b' '; 80];
         let zeros = [0.0f64; 9];
         let (one, zero) = (1i32, 0i32);

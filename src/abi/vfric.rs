@@ -4,11 +4,11 @@
 
 use std::ffi::{c_char, c_int};
 
-use super::{boundary, fortran_string, read};
+use super::{boundary, count, host_site, read};
 use crate::LawError;
 use crate::laws::coulomb_kinematic::KinematicCoulomb;
 use crate::props::{FrictionLaw, LAW_ADHESIVE, friction_law};
-use crate::report::{Site, report};
+use crate::report::report;
 
 /// The Fortran `REAL` of the Abaqus/Explicit build `vfric_` is compiled for: `f64` for the
 /// double-precision executable (the default), `f32` with the cargo feature `explicit-single`
@@ -156,11 +156,7 @@ pub unsafe extern "C" fn vfric_(
     };
     let _ = boundary(
         // SAFETY (all three closures): the host's pointers, valid per the contract above.
-        || Site {
-            routine: "VFRIC",
-            interaction: unsafe { fortran_string(surf_int, surf_int_len) },
-            place: "block".into(),
-        },
+        || unsafe { host_site("VFRIC", surf_int, surf_int_len, "block".into()) },
         || unsafe { args.run() },
         || unsafe { args.fail() },
     );
@@ -194,8 +190,7 @@ impl VfricArgs {
                 read(self.n_fric_dir, "nFricDir")?,
             )
         };
-        let n = usize::try_from(nc)
-            .map_err(|_| LawError::Parameter(format!("nContact = {nc} is negative")))?;
+        let n = count("nContact", nc)?;
         let nf = match nf {
             1 | 2 => nf as usize,
             _ => {
@@ -215,9 +210,7 @@ impl VfricArgs {
         // nContact).
         unsafe {
             let (n, nf) = self.sizes()?;
-            let nprops = read(self.n_props, "nProps")?;
-            let nprops = usize::try_from(nprops)
-                .map_err(|_| LawError::Parameter(format!("nProps = {nprops} is negative")))?;
+            let nprops = count("nProps", read(self.n_props, "nProps")?)?;
             let props = reals(self.props, nprops, "props")?;
             let props: Vec<f64> = props.iter().copied().map(to_f64).collect();
             // The adhesive layout in its Coulomb special case (μ_s = μ_d, no adhesion) parses
@@ -245,9 +238,7 @@ impl VfricArgs {
             let normal = reals(self.f_normal, n, "fNormal")?;
             let stick = reals(self.f_stick_force, n, "fStickForce")?;
             let area = if law.needs_area() {
-                let nodes = read(self.n_slv_nod, "nSlvNod")?;
-                let nodes = usize::try_from(nodes)
-                    .map_err(|_| LawError::Parameter(format!("nSlvNod = {nodes} is negative")))?;
+                let nodes = count("nSlvNod", read(self.n_slv_nod, "nSlvNod")?)?;
                 if self.j_con_slvid.is_null() {
                     return Err(LawError::Input("jConSlvid is a NULL pointer".into()));
                 }
@@ -278,11 +269,8 @@ impl VfricArgs {
                 let f = match force {
                     Ok(f) => f,
                     Err(e) => {
-                        let site = Site {
-                            routine: "VFRIC",
-                            interaction: fortran_string(self.surf_int, self.surf_int_len),
-                            place: format!("contact point {}", k + 1),
-                        };
+                        let place = format!("contact point {}", k + 1);
+                        let site = host_site("VFRIC", self.surf_int, self.surf_int_len, place);
                         report(&site, &e.to_string(), true);
                         0.0
                     }
