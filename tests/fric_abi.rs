@@ -3,13 +3,30 @@
 
 use interfacial::CUTBACK_RATIO;
 use interfacial::abi::host::{FricCall, GUARD};
+use interfacial::props::CoulombBuilder;
 
 const MU: f64 = 0.3;
 const P: f64 = 100.0;
 const GAMMA_CRIT: f64 = 1e-3;
 
+/// μ = [`MU`], γ_crit = [`GAMMA_CRIT`], elastic stick.
+fn coulomb() -> CoulombBuilder {
+    CoulombBuilder::new().mu(MU).gamma_crit(GAMMA_CRIT)
+}
+
+/// `PROPS(1..5)` of [`coulomb`] (`NPROPS` = 5).
+fn props() -> Vec<f64> {
+    coulomb().build_first(5)
+}
+
+/// `c` with these `PROPS` (and `NPROPS`).
+fn with_props(c: &mut FricCall, props: Vec<f64>) {
+    c.nprops = props.len() as i32;
+    c.props = props;
+}
+
 fn good(nfdir: i32) -> FricCall {
-    let mut c = FricCall::new(nfdir, &[1.0, MU, 0.0, 0.0, GAMMA_CRIT]);
+    let mut c = FricCall::new(nfdir, &props());
     c.press = P;
     c.dpress = 0.0;
     c.tau[0] = 10.0;
@@ -21,7 +38,7 @@ fn good(nfdir: i32) -> FricCall {
 #[test]
 fn first_contact_is_stick_stiffness_times_slip() {
     for nfdir in [1, 2] {
-        let mut c = FricCall::new(nfdir, &[1.0, MU, 0.0, 0.0, GAMMA_CRIT]);
+        let mut c = FricCall::new(nfdir, &props());
         c.press = P;
         c.dpress = P;
         c.dgam[0] = 4e-4;
@@ -296,9 +313,7 @@ fn non_finite_inputs_are_refused_cleanly() {
 fn taulm_is_checked_only_when_used() {
     // Exact stick, stuck on entry: a NaN Lagrange stress is refused…
     let mut c = good(2);
-    c.props.resize(7, 0.0);
-    c.props[6] = 1.0;
-    c.nprops = 7;
+    with_props(&mut c, coulomb().stick(1.0).build_first(7));
     c.lm = 1;
     c.taulm = [f64::NAN, 0.0, 0.0];
     check_refused(c.clone(), "TAULM NaN", "TAULM");
@@ -316,9 +331,7 @@ fn a_null_taulm_is_refused_only_when_entering_stuck() {
     for stick in [0.0, 1.0] {
         for nfdir in [1, 2] {
             let mut c = good(nfdir);
-            c.props.resize(7, 0.0);
-            c.props[6] = stick;
-            c.nprops = 7;
+            with_props(&mut c, coulomb().stick(stick).build_first(7));
             c.null_taulm = true;
             c.lm = 1;
             check_refused(c.clone(), &format!("PROPS(7) = {stick}, LM = 1"), "TAULM");
@@ -350,10 +363,10 @@ fn short_names_are_read_only_up_to_their_hidden_length() {
 #[test]
 fn a_good_call_after_a_bad_one_works() {
     let mut c = good(2);
-    c.props[1] = -1.0;
+    with_props(&mut c, coulomb().mu(-1.0).build_first(5));
     c.call();
     assert_eq!(c.pnewdt, CUTBACK_RATIO);
-    c.props[1] = MU;
+    with_props(&mut c, props());
     c.pnewdt = 1e36;
     c.call();
     assert_eq!(c.pnewdt, 1e36);

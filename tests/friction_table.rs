@@ -19,6 +19,7 @@ use fric_coef_common::fric_coef_call;
 use std::process::Command;
 
 use interfacial::abi::host::FricCall;
+use interfacial::props::CoulombBuilder;
 use proptest::prelude::*;
 
 /// "RATE": μ(γ̇) falling from 0.6 to 0.3 over two segments (and a conductance, to show both
@@ -59,15 +60,14 @@ fn rate_mu(v: f64) -> f64 {
 }
 
 fn table_props(mu_ref: f64, mu2: f64, gc: f64, exact: bool, frozen: bool) -> Vec<f64> {
-    let mut p = vec![0.0; 20];
-    p[0] = 1.0;
-    p[1] = mu_ref;
-    p[2] = mu2;
-    p[4] = gc;
-    p[6] = if exact { 1.0 } else { 0.0 };
-    p[7] = 2.0;
-    p[19] = if frozen { 1.0 } else { 0.0 };
-    p
+    CoulombBuilder::new()
+        .mu(mu_ref)
+        .mu2(mu2)
+        .gamma_crit(gc)
+        .stick(if exact { 1.0 } else { 0.0 })
+        .mu_law(2.0)
+        .frozen(if frozen { 1.0 } else { 0.0 })
+        .build()
 }
 
 /// Scene F4 with a table: after a few increments at slip velocity v, τ = μ_tab(v)·p (elastic
@@ -518,7 +518,11 @@ fn bad_tables() {
 /// the plain law's, never ∞.
 #[test]
 fn extended_slip_rate_saturates_over_a_subnormal_dtime() {
-    let mut c = FricCall::new(2, &[1.0, 2524902.34375, 49.881744384765625, 0.0, 0.0]);
+    let props = CoulombBuilder::new()
+        .mu(2524902.34375)
+        .mu2(49.881744384765625)
+        .build_first(5);
+    let mut c = FricCall::new(2, &props);
     c.tau[..2].copy_from_slice(&[49.88, 49.88]);
     c.dgam[..2].copy_from_slice(&[49.88, 49.88]);
     c.press = 0.0;

@@ -26,6 +26,7 @@ use interfacial::abi::host::FricCall;
 use interfacial::laws::coulomb::{Contact, Coulomb, Increment};
 use interfacial::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
 use interfacial::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use plotters::prelude::*;
 
 use crate::charts::{Axis, Frame, LinearFrame, Marker, Swatch, frame as frame_chart, frame_linear};
@@ -68,7 +69,13 @@ pub fn rate_free_bounds(x: f64) -> (f64, f64) {
 }
 
 fn decay_props() -> Vec<f64> {
-    vec![1.0, MU_S, 0.0, 0.0, GAMMA_CRIT, 0.0, 0.0, 1.0, MU_K, D_C]
+    CoulombBuilder::new()
+        .mu(MU_S)
+        .gamma_crit(GAMMA_CRIT)
+        .mu_law(1.0)
+        .mu_k(MU_K)
+        .decay(D_C)
+        .build_first(10)
 }
 
 /// τ of `n` increments of r·γ_crit at the slip velocity v = x/d_c, from rest.
@@ -519,29 +526,20 @@ const MAX_NEWTON: u32 = 50;
 impl Belt {
     fn props(&self) -> Vec<f64> {
         if let Some(vhalf) = self.adhesive_vhalf {
-            return vec![
-                2.0,
-                self.mu_k,
-                self.mu_s,
-                0.0,
-                0.0,
-                0.0,
-                vhalf,
-                self.gamma_crit,
-            ];
+            return AdhesiveBuilder::new()
+                .coeff(self.mu_k)
+                .coeff_static(self.mu_s)
+                .vhalf(vhalf)
+                .gamma_crit(self.gamma_crit)
+                .build_first(8);
         }
-        vec![
-            1.0,
-            self.mu_s,
-            0.0,
-            0.0,
-            self.gamma_crit,
-            0.0,
-            0.0,
-            1.0,
-            self.mu_k,
-            self.decay,
-        ]
+        CoulombBuilder::new()
+            .mu(self.mu_s)
+            .gamma_crit(self.gamma_crit)
+            .mu_law(1.0)
+            .mu_k(self.mu_k)
+            .decay(self.decay)
+            .build_first(10)
     }
 
     /// Backward Euler in x and v for `t_end`, Newton on the end position with `fric_`'s

@@ -7,8 +7,8 @@
 
 use std::ffi::{CStr, c_int};
 
-use crate::bytes::{Bytes, bits};
-use crate::fric_case::{FricCase, FricOutputs};
+use super::bytes::{Bytes, bits};
+use super::fric_case::{FricCase, FricOutputs};
 use interfacial::abi::{IflStatus, ifl_clear_error, ifl_fric_batch, ifl_last_error};
 
 /// Written into every output before the call, to see what the call wrote.

@@ -6,7 +6,7 @@
 
 use std::ffi::{CStr, c_char};
 
-use crate::bytes::{Bytes, bits, len};
+use super::bytes::{Bytes, bits, len};
 use interfacial::abi::{fric_, ifl_clear_error, ifl_last_error};
 
 /// Written into every output before the call, to see what the call wrote.

@@ -7,7 +7,7 @@
 
 use std::ffi::{CStr, c_char, c_int};
 
-use crate::bytes::{Bytes, bits, len};
+use super::bytes::{Bytes, bits, len};
 use interfacial::abi::{
     IflStatus, fric_coef_, ifl_clear_error, ifl_forced_sliding, ifl_last_error,
 };

@@ -6,7 +6,7 @@
 use std::ffi::{CStr, CString, c_char};
 use std::sync::Once;
 
-use crate::bytes::Bytes;
+use super::bytes::Bytes;
 use interfacial::abi::{
     IflConductance, IflStatus, gapcon_, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
 };

@@ -2,14 +2,14 @@
 //! every array allocated with exactly the length the call declares (so AddressSanitizer reports
 //! any access past it), and the properties every call must have.
 //!
-//! Runs against the configuration of [`crate::gapcon_case`] (its `setup` must be called first),
+//! Runs against the configuration of [`super::gapcon_case`] (its `setup` must be called first),
 //! so `PROPS(11) = 1` reaches every conductance law as well as the "no thermal law" refusal.
 //! Shared by the `uinter` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
 
 use std::ffi::{CStr, c_char, c_int};
 
-use crate::bytes::{Bytes, bits, len};
-use crate::gapcon_case::NAMES;
+use super::bytes::{Bytes, bits, len};
+use super::gapcon_case::NAMES;
 use interfacial::abi::{ifl_clear_error, ifl_last_error, uinter_};
 
 /// Written into every output before the call, to see what the call wrote.

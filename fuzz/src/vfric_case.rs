@@ -7,7 +7,7 @@
 
 use std::ffi::{CStr, c_char, c_int};
 
-use crate::bytes::{Bytes, bits, len};
+use super::bytes::{Bytes, bits, len};
 use interfacial::abi::{ifl_clear_error, ifl_last_error, vfric_};
 
 /// Written into every output entry and guard before the call, to see what the call wrote.
