@@ -107,157 +107,65 @@ fn inputs_are_never_written() {
     assert_eq!(c.drot, before.drot);
 }
 
-/// One bad input: how to break a good call, and a word the message must contain.
-struct Case {
-    what: &'static str,
-    nfdir: i32,
-    spoil: fn(&mut FricCall),
-    word: &'static str,
+/// One bad input: what it is, NFDIR, how to break a good call, and a word the message must
+/// contain.
+type Case = (&'static str, i32, fn(&mut FricCall), &'static str);
+
+/// Sets `PROPS(index)` (from 1) to `v`, lengthening `PROPS` (and `NPROPS`) to reach it.
+fn set_entry(c: &mut FricCall, index: usize, v: f64) {
+    if c.props.len() < index {
+        c.props.resize(index, 0.0);
+        c.nprops = index as i32;
+    }
+    c.props[index - 1] = v;
 }
 
 fn cases() -> Vec<Case> {
-    vec![
-        Case {
-            what: "NFDIR 0",
-            nfdir: 0,
-            spoil: |_| {},
-            word: "NFDIR = 0",
-        },
-        Case {
-            what: "NFDIR 3",
-            nfdir: 3,
-            spoil: |_| {},
-            word: "NFDIR = 3",
-        },
-        Case {
-            what: "NPROPS 0",
-            nfdir: 2,
-            spoil: |c| c.nprops = 0,
-            word: "NPROPS = 0",
-        },
-        Case {
-            what: "NPROPS 1",
-            nfdir: 2,
-            spoil: |c| c.nprops = 1,
-            word: "NPROPS = 1",
-        },
-        Case {
-            what: "NPROPS < 0",
-            nfdir: 2,
-            spoil: |c| c.nprops = -4,
-            word: "NPROPS = -4",
-        },
-        Case {
-            what: "unknown law",
-            nfdir: 2,
-            spoil: |c| c.props[0] = 3.0,
-            word: "PROPS(1) = 3",
-        },
-        Case {
-            what: "non-integer law",
-            nfdir: 2,
-            spoil: |c| c.props[0] = 1.5,
-            word: "integer",
-        },
-        Case {
-            what: "NaN law",
-            nfdir: 2,
-            spoil: |c| c.props[0] = f64::NAN,
-            word: "PROPS(1)",
-        },
-        Case {
-            what: "μ < 0",
-            nfdir: 2,
-            spoil: |c| c.props[1] = -0.1,
-            word: "PROPS(2)",
-        },
-        Case {
-            what: "μ NaN",
-            nfdir: 1,
-            spoil: |c| c.props[1] = f64::NAN,
-            word: "PROPS(2)",
-        },
-        Case {
-            what: "μ₂ < 0",
-            nfdir: 2,
-            spoil: |c| c.props[2] = -0.5,
-            word: "PROPS(3)",
-        },
-        Case {
-            what: "τ_max < 0",
-            nfdir: 2,
-            spoil: |c| c.props[3] = -1.0,
-            word: "PROPS(4)",
-        },
-        Case {
-            what: "γ_crit < 0",
-            nfdir: 2,
-            spoil: |c| c.props[4] = -1.0,
-            word: "PROPS(5)",
-        },
-        Case {
-            what: "stick mode 5",
-            nfdir: 2,
-            spoil: |c| {
-                c.props.resize(7, 0.0);
-                c.props[6] = 5.0;
-                c.nprops = 7;
-            },
-            word: "PROPS(7)",
-        },
-        Case {
-            what: "PROPS(8) not a μ law",
-            nfdir: 2,
-            spoil: |c| {
-                c.props.resize(8, 0.0);
-                c.props[7] = 5.0;
-                c.nprops = 8;
-            },
-            word: "PROPS(8)",
-        },
-        Case {
-            what: "NSTATV 2",
-            nfdir: 2,
-            spoil: |c| c.nstatv = 2,
-            word: "NSTATV = 2",
-        },
-        Case {
-            what: "NSTATV < 0",
-            nfdir: 1,
-            spoil: |c| c.nstatv = -1,
-            word: "NSTATV = -1",
-        },
-        Case {
-            what: "CHRLNGTH 0",
-            nfdir: 2,
-            spoil: |c| {
-                c.props[4] = 0.0;
+    let cases: &[Case] = &[
+        ("NFDIR 0", 0, |_| {}, "NFDIR = 0"),
+        ("NFDIR 3", 3, |_| {}, "NFDIR = 3"),
+        ("NPROPS 0", 2, |c| c.nprops = 0, "NPROPS = 0"),
+        ("NPROPS 1", 2, |c| c.nprops = 1, "NPROPS = 1"),
+        ("NPROPS < 0", 2, |c| c.nprops = -4, "NPROPS = -4"),
+        ("unknown law", 2, |c| set_entry(c, 1, 3.0), "PROPS(1) = 3"),
+        ("non-integer law", 2, |c| set_entry(c, 1, 1.5), "integer"),
+        ("NaN law", 2, |c| set_entry(c, 1, f64::NAN), "PROPS(1)"),
+        ("μ < 0", 2, |c| set_entry(c, 2, -0.1), "PROPS(2)"),
+        ("μ NaN", 1, |c| set_entry(c, 2, f64::NAN), "PROPS(2)"),
+        ("μ₂ < 0", 2, |c| set_entry(c, 3, -0.5), "PROPS(3)"),
+        ("τ_max < 0", 2, |c| set_entry(c, 4, -1.0), "PROPS(4)"),
+        ("γ_crit < 0", 2, |c| set_entry(c, 5, -1.0), "PROPS(5)"),
+        ("stick mode 5", 2, |c| set_entry(c, 7, 5.0), "PROPS(7)"),
+        (
+            "PROPS(8) not a μ law",
+            2,
+            |c| set_entry(c, 8, 5.0),
+            "PROPS(8)",
+        ),
+        ("NSTATV 2", 2, |c| c.nstatv = 2, "NSTATV = 2"),
+        ("NSTATV < 0", 1, |c| c.nstatv = -1, "NSTATV = -1"),
+        (
+            "CHRLNGTH 0",
+            2,
+            |c| {
+                set_entry(c, 5, 0.0);
                 c.chrlngth = 0.0;
             },
-            word: "CHRLNGTH",
-        },
-        Case {
-            what: "LM 7",
-            nfdir: 2,
-            spoil: |c| c.lm = 7,
-            word: "LM = 7",
-        },
-        Case {
-            what: "STATEV NaN",
-            nfdir: 2,
-            spoil: |c| c.statev[0] = f64::NAN,
-            word: "STATEV",
-        },
-        Case {
-            what: "overflow",
-            nfdir: 2,
-            spoil: |c| {
+            "CHRLNGTH",
+        ),
+        ("LM 7", 2, |c| c.lm = 7, "LM = 7"),
+        ("STATEV NaN", 2, |c| c.statev[0] = f64::NAN, "STATEV"),
+        (
+            "overflow",
+            2,
+            |c| {
                 c.press = 1e308;
-                c.props[1] = 10.0;
+                set_entry(c, 2, 10.0);
             },
-            word: "overflow",
-        },
-    ]
+            "overflow",
+        ),
+    ];
+    cases.to_vec()
 }
 
 /// Runs a bad call and checks the documented safe outputs.
@@ -283,11 +191,11 @@ fn check_refused(mut c: FricCall, what: &str, word: &str) {
 
 #[test]
 fn every_bad_input_is_refused_cleanly() {
-    for case in cases() {
-        let mut c = good(case.nfdir);
-        c.nfdir = case.nfdir;
-        (case.spoil)(&mut c);
-        check_refused(c, case.what, case.word);
+    for (what, nfdir, spoil, word) in cases() {
+        let mut c = good(nfdir);
+        c.nfdir = nfdir;
+        spoil(&mut c);
+        check_refused(c, what, word);
     }
 }
 

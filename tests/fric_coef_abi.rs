@@ -74,14 +74,14 @@ fn fric_coef(props: &[f64], rate: &[f64], p: &[f64], temp: &[f64]) -> Block {
     Block { coef, deriv, n }
 }
 
-/// Law 1 with γ_crit = 10⁻³ and these μ-law entries.
-fn law(
+/// Law 1 with γ_crit = 10⁻³ and these μ-law entries, `PROPS(1..13)` (what `fric_coef_` reads).
+fn props(
     mu: f64,
     mu2: f64,
     decay: Option<(f64, f64)>,
     p_ref: f64,
     temp: Option<(f64, f64)>,
-) -> CoulombBuilder {
+) -> Vec<f64> {
     let mut v = CoulombBuilder::new()
         .mu(mu)
         .mu2(mu2)
@@ -93,18 +93,7 @@ fn law(
     if let Some((b, t)) = temp {
         v = v.b_theta(b).theta_ref(t);
     }
-    v
-}
-
-/// `PROPS(1..13)` of [`law`] (what `fric_coef_` reads).
-fn props(
-    mu: f64,
-    mu2: f64,
-    decay: Option<(f64, f64)>,
-    p_ref: f64,
-    temp: Option<(f64, f64)>,
-) -> Vec<f64> {
-    law(mu, mu2, decay, p_ref, temp).build_first(13)
+    v.build_first(13)
 }
 
 #[test]
@@ -192,7 +181,9 @@ proptest! {
 /// μ that `fric_coef_` returns for that rate and pressure.
 #[test]
 fn agrees_with_steady_sliding_through_fric() {
-    let pr = law(0.5, 0.0, Some((0.25, 3.0)), 200.0, None).build();
+    // NPROPS = 20: the whole law-1 layout, as fric_ reads it.
+    let mut pr = props(0.5, 0.0, Some((0.25, 3.0)), 200.0, None);
+    pr.resize(20, 0.0);
     let (p, v, dt) = (80.0, 0.7, 0.01);
     let mut c = FricCall::new(1, &pr);
     c.press = p;

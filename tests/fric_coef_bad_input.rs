@@ -6,7 +6,10 @@
 
 #[path = "common/fuzz_cases.rs"]
 mod fuzz_cases;
+#[path = "common/laws.rs"]
+mod laws;
 use fuzz_cases::fric_coef_case;
+use laws::every_mu_law;
 
 use fric_coef_case::{
     CoefNull, CoefOutputs, ForcedSlidingCase, FricCoefCase, SlideNull, SlideOutputs,
@@ -19,16 +22,7 @@ const BAD: [f64; 3] = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
 /// Law 1 with every μ law on: μ_s = 0.5, μ₂ = 0.25, decay to μ_k = 0.2 at d_c = 2,
 /// p_ref = 100, b_θ = 0.01 about θ_ref = 20.
 fn all_laws() -> Vec<f64> {
-    CoulombBuilder::new()
-        .mu(0.5)
-        .mu2(0.25)
-        .mu_law(1.0)
-        .mu_k(0.2)
-        .decay(2.0)
-        .p_ref(100.0)
-        .b_theta(0.01)
-        .theta_ref(20.0)
-        .build_first(13)
+    every_mu_law(0.5, 0.25).build_first(13)
 }
 
 /// The adhesive law with adhesion (S_a = `PROPS(4)` = 1): not a μ law.

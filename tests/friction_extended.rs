@@ -7,7 +7,10 @@
 
 #[path = "common/central.rs"]
 mod central;
+#[path = "common/laws.rs"]
+mod laws;
 use central::{Shift, along_dgam, along_press, along_temp, central_tau};
+use laws::every_mu_law;
 
 use interfacial::abi::host::FricCall;
 use interfacial::laws::coulomb::{Contact, Coulomb, EntryFlag, Increment};
@@ -729,18 +732,7 @@ fn local_solve_iterations_over_a_sweep() {
 /// LM, TAU and STATEV unchanged, nothing written past the arrays.
 #[test]
 fn bad_extended_input_is_refused_cleanly() {
-    let good = CoulombBuilder::new()
-        .mu(0.4)
-        .mu2(0.2)
-        .gamma_crit(1e-3)
-        .mu_law(1.0)
-        .mu_k(0.2)
-        .decay(2.0)
-        .p_ref(100.0)
-        .b_theta(0.01)
-        .theta_ref(20.0)
-        .damping(1.0)
-        .build();
+    let good = every_mu_law(0.4, 0.2).gamma_crit(1e-3).damping(1.0).build();
     type Spoil = fn(&mut FricCall);
     let cases: &[(&str, Spoil, &str)] = &[
         ("μ₂ < 0", |c| c.props[2] = -0.2, "PROPS(3)"),

@@ -275,24 +275,24 @@ fn drive_at_least(nfdir: usize, stick_mode: f64, seed: u64, min_calls: usize) {
     );
 }
 
-#[test]
-fn elastic_stick_nfdir_1() {
-    drive_at_least(1, 0.0, 1, 100_000);
+/// One test per law mode and NFDIR (separate, so they run in parallel): `name: (NFDIR,
+/// PROPS(7), seed, at least this many calls)`.
+macro_rules! drive_tests {
+    ($($name:ident: ($nfdir:expr, $stick:expr, $seed:expr, $min:expr);)*) => {
+        $(
+            #[test]
+            fn $name() {
+                drive_at_least($nfdir, $stick, $seed, $min);
+            }
+        )*
+    };
 }
 
-#[test]
-fn elastic_stick_nfdir_2() {
-    drive_at_least(2, 0.0, 2, 100_000);
-}
-
-#[test]
-fn exact_stick_nfdir_1() {
-    drive_at_least(1, 1.0, 3, 50_000);
-}
-
-#[test]
-fn exact_stick_nfdir_2() {
-    drive_at_least(2, 1.0, 4, 50_000);
+drive_tests! {
+    elastic_stick_nfdir_1: (1, 0.0, 1, 100_000);
+    elastic_stick_nfdir_2: (2, 0.0, 2, 100_000);
+    exact_stick_nfdir_1: (1, 1.0, 3, 50_000);
+    exact_stick_nfdir_2: (2, 1.0, 4, 50_000);
 }
 
 #[test]

@@ -6,6 +6,7 @@
 pub mod batch_case;
 pub mod bytes;
 pub mod config_case;
+pub mod contract;
 pub mod fric_case;
 pub mod fric_coef_case;
 pub mod gapcon_case;

@@ -9,6 +9,8 @@
 pub mod batch_case;
 #[path = "../../fuzz/src/bytes.rs"]
 pub mod bytes;
+#[path = "../../fuzz/src/contract.rs"]
+pub mod contract;
 #[path = "../../fuzz/src/fric_case.rs"]
 pub mod fric_case;
 #[path = "../../fuzz/src/fric_coef_case.rs"]
