@@ -29,7 +29,9 @@ use interfacial::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use plotters::prelude::*;
 
-use crate::charts::{Axis, Frame, LinearFrame, Marker, Swatch, frame as frame_chart, frame_linear};
+use crate::charts::{
+    Axis, Frame, LinearFrame, Marker, Swatch, draw_cells, edge, frame as frame_chart, frame_linear,
+};
 use crate::checks::Row;
 
 const MU_S: f64 = 0.5;
@@ -404,12 +406,8 @@ fn map_chart(
     xs: &[f64],
     cells: &[Vec<bool>],
 ) -> Result<(), String> {
-    let half = |v: &[f64], i: usize, up: bool| -> f64 {
-        let ratio = (v[1] / v[0]).sqrt();
-        if up { v[i] * ratio } else { v[i] / ratio }
-    };
-    let (x0, x1) = (half(rs, 0, false), half(rs, rs.len() - 1, true));
-    let (y0, y1) = (half(xs, 0, false), half(xs, xs.len() - 1, true));
+    let (x0, x1) = (edge(rs, 0, false), edge(rs, rs.len() - 1, true));
+    let (y0, y1) = (edge(xs, 0, false), edge(xs, xs.len() - 1, true));
     let (settle, cycle) = (RGBColor(44, 160, 44), RGBColor(214, 39, 40));
     // The cells' colours at 60 % over white, as drawn.
     let pale = |c: RGBColor| {
@@ -454,19 +452,9 @@ fn map_chart(
         size: (760, 560),
     };
     frame_chart(path, &frame, |chart| {
-        for (j, row) in cells.iter().enumerate() {
-            chart
-                .draw_series(row.iter().enumerate().map(|(i, ok)| {
-                    Rectangle::new(
-                        [
-                            (half(rs, i, false), half(xs, j, false)),
-                            (half(rs, i, true), half(xs, j, true)),
-                        ],
-                        pale(if *ok { settle } else { cycle }).filled(),
-                    )
-                }))
-                .map_err(err)?;
-        }
+        draw_cells(chart, cells, rs, xs, |ok| {
+            pale(if ok { settle } else { cycle })
+        })?;
         let fine = log_space(y0, y1, 200);
         let curve = |k: usize| -> Vec<(f64, f64)> {
             fine.iter()
@@ -519,6 +507,22 @@ struct BeltRun {
     iterations: Vec<u32>,
     onset: Vec<bool>,
     failed: usize,
+}
+
+impl BeltRun {
+    /// Mean and largest number of Newton iterations per step, over every step or over the
+    /// slip-onset steps only (`onset`).
+    fn newton(&self, onset: bool) -> (f64, u32) {
+        let sel: Vec<u32> = self
+            .iterations
+            .iter()
+            .zip(&self.onset)
+            .filter(|(_, o)| !onset || **o)
+            .map(|(i, _)| *i)
+            .collect();
+        let mean = sel.iter().map(|&i| f64::from(i)).sum::<f64>() / sel.len().max(1) as f64;
+        (mean, sel.iter().copied().max().unwrap_or(0))
+    }
 }
 
 const MAX_NEWTON: u32 = 50;
@@ -679,18 +683,7 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
         for tangent in [Tangent::Exact, Tangent::Bounded] {
             let run = b.run(dt, t_end, tangent);
             let (xmax, xmin, period, stuck) = cycle_measures(&run, dt);
-            let it = |onset: bool| -> (f64, u32) {
-                let sel: Vec<u32> = run
-                    .iterations
-                    .iter()
-                    .zip(&run.onset)
-                    .filter(|(_, o)| !onset || **o)
-                    .map(|(i, _)| *i)
-                    .collect();
-                let mean = sel.iter().map(|&i| f64::from(i)).sum::<f64>() / sel.len().max(1) as f64;
-                (mean, sel.iter().copied().max().unwrap_or(0))
-            };
-            let ((mean, max), (omean, omax)) = (it(false), it(true));
+            let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
             onset_means.push((dt, tangent, omean));
             let _ = writeln!(
                 csv,
@@ -811,18 +804,7 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
     for dt in [0.05, 0.02, 0.01] {
         for tangent in [Tangent::Exact, Tangent::Bounded] {
             let run = a.run(dt, t_end, tangent);
-            let stats = |onset: bool| -> (f64, u32) {
-                let sel: Vec<u32> = run
-                    .iterations
-                    .iter()
-                    .zip(&run.onset)
-                    .filter(|(_, o)| !onset || **o)
-                    .map(|(i, _)| *i)
-                    .collect();
-                let mean = sel.iter().map(|&i| f64::from(i)).sum::<f64>() / sel.len().max(1) as f64;
-                (mean, sel.iter().copied().max().unwrap_or(0))
-            };
-            let ((mean, max), (omean, omax)) = (stats(false), stats(true));
+            let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
             adhesive_means.push((dt, tangent, omean));
             let _ = writeln!(
                 table,
