@@ -572,7 +572,7 @@ fn uinter_bad_input_cuts_back() {
         ),
         (good.clone().coeff(f64::NAN).build_first(10), "PROPS(2)"),
         (good.clone().build_first(8), "PROPS(10) = 0"),
-        (vec![1.0, 0.3], "PROPS(1) = 2"),
+        (CoulombBuilder::new().mu(0.3).build_first(2), "PROPS(1) = 2"),
     ] {
         let mut c = UinterCall::new(3, &props);
         c.stress = [5.0, 1.0, 2.0, c.stress[3]];

@@ -348,7 +348,12 @@ fn f3(rows: &mut Vec<Row>) {
     for k in 0..12 {
         let angle = f64::from(k) * std::f64::consts::PI / 6.0 + 0.1;
         let d = [angle.cos(), angle.sin()];
-        let mut c = FricCall::new(2, &[1.0, mu1, mu2, 0.0, GAMMA_CRIT]);
+        let props = CoulombBuilder::new()
+            .mu(mu1)
+            .mu2(mu2)
+            .gamma_crit(GAMMA_CRIT)
+            .build_first(5);
+        let mut c = FricCall::new(2, &props);
         let mut p_prev = 0.0;
         for _ in 0..60 {
             step(
