@@ -5,6 +5,10 @@ use interfacial::CUTBACK_RATIO;
 use interfacial::abi::host::{FricCall, GUARD};
 use interfacial::props::CoulombBuilder;
 
+#[path = "common/laws.rs"]
+mod laws;
+use laws::set_entry;
+
 const MU: f64 = 0.3;
 const P: f64 = 100.0;
 const GAMMA_CRIT: f64 = 1e-3;
@@ -110,15 +114,6 @@ fn inputs_are_never_written() {
 /// One bad input: what it is, NFDIR, how to break a good call, and a word the message must
 /// contain.
 type Case = (&'static str, i32, fn(&mut FricCall), &'static str);
-
-/// Sets `PROPS(index)` (from 1) to `v`, lengthening `PROPS` (and `NPROPS`) to reach it.
-fn set_entry(c: &mut FricCall, index: usize, v: f64) {
-    if c.props.len() < index {
-        c.props.resize(index, 0.0);
-        c.nprops = index as i32;
-    }
-    c.props[index - 1] = v;
-}
 
 fn cases() -> Vec<Case> {
     let cases: &[Case] = &[

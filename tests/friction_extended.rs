@@ -10,7 +10,7 @@ mod central;
 #[path = "common/laws.rs"]
 mod laws;
 use central::{Shift, along_dgam, along_press, along_temp, central_tau};
-use laws::every_mu_law;
+use laws::{every_mu_law, set_entry};
 
 use interfacial::abi::host::FricCall;
 use interfacial::laws::coulomb::{Contact, Coulomb, EntryFlag, Increment};
@@ -735,27 +735,31 @@ fn bad_extended_input_is_refused_cleanly() {
     let good = every_mu_law(0.4, 0.2).gamma_crit(1e-3).damping(1.0).build();
     type Spoil = fn(&mut FricCall);
     let cases: &[(&str, Spoil, &str)] = &[
-        ("μ₂ < 0", |c| c.props[2] = -0.2, "PROPS(3)"),
-        ("μ law 3", |c| c.props[7] = 3.0, "PROPS(8)"),
-        ("μ_k < 0", |c| c.props[8] = -0.1, "PROPS(9)"),
-        ("μ_k NaN", |c| c.props[8] = f64::NAN, "PROPS(9)"),
-        ("d_c < 0", |c| c.props[9] = -2.0, "PROPS(10)"),
-        ("d_c = 0", |c| c.props[9] = 0.0, "PROPS(10)"),
+        ("μ₂ < 0", |c| set_entry(c, 3, -0.2), "PROPS(3)"),
+        ("μ law 3", |c| set_entry(c, 8, 3.0), "PROPS(8)"),
+        ("μ_k < 0", |c| set_entry(c, 9, -0.1), "PROPS(9)"),
+        ("μ_k NaN", |c| set_entry(c, 9, f64::NAN), "PROPS(9)"),
+        ("d_c < 0", |c| set_entry(c, 10, -2.0), "PROPS(10)"),
+        ("d_c = 0", |c| set_entry(c, 10, 0.0), "PROPS(10)"),
         (
             "μ_s = 0 with decay",
             |c| {
-                c.props[1] = 0.0;
-                c.props[2] = 0.0;
+                set_entry(c, 2, 0.0);
+                set_entry(c, 3, 0.0);
             },
             "PROPS(2)",
         ),
-        ("p_ref < 0", |c| c.props[10] = -1.0, "PROPS(11)"),
-        ("b_θ = Inf", |c| c.props[11] = f64::INFINITY, "PROPS(12)"),
-        ("HHT α > 0", |c| c.props[13] = 0.2, "PROPS(14)"),
-        ("HHT β < 0", |c| c.props[14] = -0.2, "PROPS(14)"),
-        ("c₀ < 0", |c| c.props[16] = -1.0, "PROPS(17)"),
-        ("f ≥ 1", |c| c.props[18] = 1.0, "PROPS(17)"),
-        ("freeze 2", |c| c.props[19] = 2.0, "PROPS(20)"),
+        ("p_ref < 0", |c| set_entry(c, 11, -1.0), "PROPS(11)"),
+        (
+            "b_θ = Inf",
+            |c| set_entry(c, 12, f64::INFINITY),
+            "PROPS(12)",
+        ),
+        ("HHT α > 0", |c| set_entry(c, 14, 0.2), "PROPS(14)"),
+        ("HHT β < 0", |c| set_entry(c, 15, -0.2), "PROPS(14)"),
+        ("c₀ < 0", |c| set_entry(c, 17, -1.0), "PROPS(17)"),
+        ("f ≥ 1", |c| set_entry(c, 19, 1.0), "PROPS(17)"),
+        ("freeze 2", |c| set_entry(c, 20, 2.0), "PROPS(20)"),
         (
             "PROPS(21)",
             |c| {
@@ -918,34 +922,34 @@ fn steady_transport_bad_input() {
         .build_first(16);
     type Spoil = fn(&mut FricCall);
     let cases: &[(&str, Spoil, &str)] = &[
-        ("ω = 0", |c| c.props[13] = 0.0, "PROPS(14)"),
-        ("ω < 0", |c| c.props[13] = -1.0, "PROPS(14)"),
-        ("axis 4", |c| c.props[14] = 4.0, "PROPS(15)"),
-        ("γ_crit given", |c| c.props[4] = 1e-3, "PROPS(5)"),
+        ("ω = 0", |c| set_entry(c, 14, 0.0), "PROPS(14)"),
+        ("ω < 0", |c| set_entry(c, 14, -1.0), "PROPS(14)"),
+        ("axis 4", |c| set_entry(c, 15, 4.0), "PROPS(15)"),
+        ("γ_crit given", |c| set_entry(c, 5, 1e-3), "PROPS(5)"),
         (
             "PROPS(16) = 0.5",
-            |c| c.props[15] = 0.5,
+            |c| set_entry(c, 16, 0.5),
             "PROPS(16) = 0.5 must select",
         ),
         (
             "PROPS(16) = 2",
-            |c| c.props[15] = 2.0,
+            |c| set_entry(c, 16, 2.0),
             "PROPS(16) = 2 must select",
         ),
         (
             "PROPS(16) = -1",
-            |c| c.props[15] = -1.0,
+            |c| set_entry(c, 16, -1.0),
             "PROPS(16) = -1 must select",
         ),
         (
             "PROPS(16) NaN",
-            |c| c.props[15] = f64::NAN,
+            |c| set_entry(c, 16, f64::NAN),
             "PROPS(16) = NaN must select",
         ),
         (
             "on the axis, seed 003",
             |c| {
-                c.props[15] = 1.0;
+                set_entry(c, 16, 1.0);
                 c.coords = [0.0, 0.0, 3.0];
             },
             "F_f·ω·R must be > 0",

@@ -1,5 +1,9 @@
-//! Law-1 `PROPS` fixtures shared by several tests (included by path), built by entry name.
+//! `PROPS` fixtures shared by several tests (included by path): law-1 arrays built by entry
+//! name, and one entry set by its index, as a bad-input test names it.
+// Each test uses its own subset.
+#![allow(dead_code)]
 
+use interfacial::abi::host::FricCall;
 use interfacial::props::CoulombBuilder;
 
 /// Law 1 with every μ law of `fric_coef_` on: μ₁ = `mu`, μ₂ = `mu2`, the exponential decay to
@@ -14,4 +18,14 @@ pub fn every_mu_law(mu: f64, mu2: f64) -> CoulombBuilder {
         .p_ref(100.0)
         .b_theta(0.01)
         .theta_ref(20.0)
+}
+
+/// Sets `PROPS(index)` (numbered from 1, as messages and docs/props.md name it) to `v`,
+/// lengthening `PROPS` (and `NPROPS`) to reach it.
+pub fn set_entry(c: &mut FricCall, index: usize, v: f64) {
+    if c.props.len() < index {
+        c.props.resize(index, 0.0);
+        c.nprops = i32::try_from(index).expect("a PROPS index fits NPROPS");
+    }
+    c.props[index - 1] = v;
 }
