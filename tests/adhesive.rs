@@ -16,6 +16,10 @@ use interfacial::laws::coulomb::{Contact, Coulomb, CoulombState, Increment};
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use proptest::prelude::*;
 
+#[path = "common/threads.rs"]
+mod threads;
+use threads::map_on_threads;
+
 const GAMMA_CRIT: f64 = 1e-3;
 
 /// Option combination `mask`: bit 0 μ_s > μ_d, bit 1 S_a, bit 2 k_μ, bit 3 v_½.
@@ -693,16 +697,7 @@ fn uinter_results_do_not_depend_on_the_number_of_threads() {
         bits
     };
     let serial: Vec<Vec<u64>> = points.iter().map(run).collect();
-    let parallel: Vec<Vec<u64>> = std::thread::scope(|scope| {
-        let handles: Vec<_> = points
-            .chunks(250)
-            .map(|chunk| scope.spawn(move || chunk.iter().map(run).collect::<Vec<_>>()))
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().unwrap())
-            .collect()
-    });
+    let parallel = map_on_threads(&points, 250, run);
     assert_eq!(serial, parallel);
 }
 

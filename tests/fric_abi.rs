@@ -8,6 +8,9 @@ use interfacial::props::CoulombBuilder;
 #[path = "common/laws.rs"]
 mod laws;
 use laws::set_entry;
+#[path = "common/threads.rs"]
+mod threads;
+use threads::map_on_threads;
 
 const MU: f64 = 0.3;
 const P: f64 = 100.0;
@@ -289,35 +292,13 @@ fn results_do_not_depend_on_the_number_of_threads() {
             c
         })
         .collect();
-    let serial: Vec<FricCall> = points
-        .iter()
-        .map(|p| {
-            let mut c = p.clone();
-            c.call();
-            c
-        })
-        .collect();
-    let parallel: Vec<FricCall> = std::thread::scope(|s| {
-        let handles: Vec<_> = points
-            .chunks(50)
-            .map(|chunk| {
-                s.spawn(move || {
-                    chunk
-                        .iter()
-                        .map(|p| {
-                            let mut c = p.clone();
-                            c.call();
-                            c
-                        })
-                        .collect::<Vec<_>>()
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().unwrap())
-            .collect()
-    });
+    let run = |p: &FricCall| {
+        let mut c = p.clone();
+        c.call();
+        c
+    };
+    let serial: Vec<FricCall> = points.iter().map(run).collect();
+    let parallel = map_on_threads(&points, 50, run);
     for (a, b) in serial.iter().zip(&parallel) {
         assert_eq!(a.tau.map(f64::to_bits), b.tau.map(f64::to_bits));
         assert_eq!(a.ddtddg.map(f64::to_bits), b.ddtddg.map(f64::to_bits));

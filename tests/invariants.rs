@@ -12,7 +12,7 @@
 //! The inputs come from a fixed-seed generator, so a failure names a reproducible path.
 
 use interfacial::abi::host::FricCall;
-use interfacial::laws::gap_conductance::{Conduction, GapLaw};
+use interfacial::laws::gap_conductance::{ConductanceResponse, Conduction, GapLaw};
 use interfacial::laws::gap_radiation::Radiation;
 use interfacial::laws::table::TemperatureTable;
 use interfacial::props::CoulombBuilder;
@@ -369,14 +369,7 @@ fn gap_conductance_is_finite_non_negative_and_inside_its_table() {
             let (ta, tb) = (rng.range(-100.0, 800.0), rng.range(-100.0, 800.0));
             let r = gap.evaluate(d, p, ta, tb).expect("finite input");
             calls += 1;
-            let all = [
-                r.k,
-                r.dk_dd,
-                r.dk_dp,
-                r.dk_dtheta_mean,
-                r.dq_dtheta_a,
-                r.dq_dtheta_b,
-            ];
+            let all = outputs(&r);
             assert!(all.iter().all(|v| v.is_finite()), "law {law}: {r:?}");
             assert!(
                 r.k >= lo * (1.0 - 1e-12) && r.k <= hi * (1.0 + 1e-12),
@@ -434,17 +427,22 @@ fn analytic_gap_laws_and_radiation_are_finite_and_non_negative() {
             }
             Err(e) => panic!("case {i}: finite input refused: {e}"),
         };
-        let all = [
-            r.k,
-            r.dk_dd,
-            r.dk_dp,
-            r.dk_dtheta_mean,
-            r.dq_dtheta_a,
-            r.dq_dtheta_b,
-        ];
+        let all = outputs(&r);
         assert!(
             all.iter().all(|v| v.is_finite()) && r.k >= 0.0,
             "case {i}: {r:?}"
         );
     }
+}
+
+/// Every output of a gap law: k and its partial derivatives.
+fn outputs(r: &ConductanceResponse) -> [f64; 6] {
+    [
+        r.k,
+        r.dk_dd,
+        r.dk_dp,
+        r.dk_dtheta_mean,
+        r.dq_dtheta_a,
+        r.dq_dtheta_b,
+    ]
 }
