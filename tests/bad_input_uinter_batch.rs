@@ -468,23 +468,22 @@ fn batch_sizes_out_of_range() {
     assert_eq!(out.pnewdt, 1e36);
 }
 
-/// Row 60: ld × components overflowing usize is refused before any array is touched.
-#[test]
-fn batch_leading_dimension_overflow() {
-    let good = CoulombBuilder::new()
-        .mu(0.3)
-        .gamma_crit(1e-3)
-        .build_first(5);
-    let mut pnewdt = 1e36;
+/// One point through `ifl_fric_batch` on scratch arrays of 4 entries (`NPROPS` 5, `NSTATV` 3,
+/// Δt 0.5, the optional outputs and TAULM NULL): leading dimension `ld`, `nfdir`, these `props`
+/// and `pnewdt` (either may be NULL).
+fn one_point_batch(ld: usize, nfdir: i32, props: *const f64, pnewdt: *mut f64) -> IflStatus {
     let mut lm = [0i32; 1];
     let mut x = [0.0f64; 4];
-    // SAFETY: the call must refuse on the sizes before it forms any slice.
-    let st = unsafe {
+    let chrlngth = [1.0f64; 4];
+    // SAFETY: every array holds 4 entries, enough for one point with ld = 1 and NFDIR ≤ 2; with
+    // a larger ld the call must refuse on the sizes before it forms any slice. NULLs as
+    // documented.
+    unsafe {
         interfacial::abi::ifl_fric_batch(
             1,
-            usize::MAX / 2,
-            2,
-            good.as_ptr(),
+            ld,
+            nfdir,
+            props,
             5,
             3,
             0.5,
@@ -500,10 +499,21 @@ fn batch_leading_dimension_overflow() {
             std::ptr::null(),
             x.as_ptr(),
             x.as_ptr(),
-            x.as_ptr(),
-            &mut pnewdt,
+            chrlngth.as_ptr(),
+            pnewdt,
         )
-    };
+    }
+}
+
+/// Row 60: ld × components overflowing usize is refused before any array is touched.
+#[test]
+fn batch_leading_dimension_overflow() {
+    let good = CoulombBuilder::new()
+        .mu(0.3)
+        .gamma_crit(1e-3)
+        .build_first(5);
+    let mut pnewdt = 1e36;
+    let st = one_point_batch(usize::MAX / 2, 2, good.as_ptr(), &mut pnewdt);
     assert_eq!((st, pnewdt), (IflStatus::BadParameter, 0.25));
 }
 
@@ -536,8 +546,6 @@ fn batch_null_pointers() {
     assert_eq!(out.status, IflStatus::BadInput as i32);
     assert!(out.message.contains("batch point 3") && out.message.contains("TAULM"));
     // PNEWDT NULL and PROPS NULL with NPROPS > 0.
-    let mut lm = [0i32; 1];
-    let mut x = [0.0f64; 4];
     let good = CoulombBuilder::new()
         .mu(0.3)
         .gamma_crit(1e-3)
@@ -552,32 +560,7 @@ fn batch_null_pointers() {
         } else {
             &mut pnewdt
         };
-        // SAFETY: one point, NFDIR 1, arrays of 4 entries; NULLs as documented.
-        let st = unsafe {
-            interfacial::abi::ifl_fric_batch(
-                1,
-                1,
-                1,
-                props,
-                5,
-                3,
-                0.5,
-                lm.as_mut_ptr(),
-                x.as_mut_ptr(),
-                x.as_mut_ptr(),
-                x.as_mut_ptr(),
-                std::ptr::null_mut(),
-                std::ptr::null_mut(),
-                std::ptr::null_mut(),
-                x.as_mut_ptr(),
-                x.as_ptr(),
-                std::ptr::null(),
-                x.as_ptr(),
-                x.as_ptr(),
-                [1.0].as_ptr(),
-                p,
-            )
-        };
+        let st = one_point_batch(1, 1, props, p);
         assert_eq!(st, expect);
     }
 }

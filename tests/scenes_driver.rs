@@ -45,6 +45,20 @@ fn f6() -> Scene {
     Scene::parse(SCENES[0].1, SCENES[0].0).expect("f6.toml")
 }
 
+/// F6's oscillator and its quick stability map for `integrator` ("explicit", "hht").
+fn f6_map(integrator: &str) -> (Oscillator, stability::Map) {
+    let scene = f6();
+    let o = scene.file.oscillator.expect("F6");
+    let spec = scene
+        .file
+        .maps
+        .iter()
+        .find(|m| m.integrator == integrator)
+        .unwrap_or_else(|| panic!("{integrator} map"));
+    let map = run_map(&o, spec, true, |_, _| {}).expect("map");
+    (o, map)
+}
+
 #[test]
 fn every_scene_meets_the_accuracy_its_chart_claims() {
     let mut checked = 0;
@@ -107,15 +121,7 @@ fn closed_form_of_the_oscillator_is_self_consistent() {
 
 #[test]
 fn measured_explicit_boundary_is_the_theoretical_limit_within_one_cell() {
-    let scene = f6();
-    let o = scene.file.oscillator.expect("F6");
-    let spec = scene
-        .file
-        .maps
-        .iter()
-        .find(|m| m.integrator == "explicit")
-        .expect("explicit map");
-    let map = run_map(&o, spec, true, |_, _| {}).expect("map");
+    let (o, map) = f6_map("explicit");
     assert!(map.gammas.len() >= 5);
     for r in 0..map.gammas.len() {
         let measured = measured_boundary(&map, r);
@@ -145,15 +151,7 @@ fn measured_explicit_boundary_is_the_theoretical_limit_within_one_cell() {
 
 #[test]
 fn implicit_stepping_never_diverges() {
-    let scene = f6();
-    let o = scene.file.oscillator.expect("F6");
-    let spec = scene
-        .file
-        .maps
-        .iter()
-        .find(|m| m.integrator == "hht")
-        .expect("implicit map");
-    let map = run_map(&o, spec, true, |_, _| {}).expect("map");
+    let (_, map) = f6_map("hht");
     assert!(map.cells.iter().flatten().all(|c| *c != Cell::Diverged));
     assert!(map.errors.iter().flatten().all(|e| !e.is_nan()));
 }
