@@ -172,7 +172,8 @@ fn vfric_ok() {
     // One sliding contact point: fTangential = -min(mu F_N, F_stick) = -min(0.3 * 10, 5) = -3.
     let ftan = vfric_call(&VfricBlock {
         nfricdir: 1,
-        props: CoulombBuilder::new().mu(0.3).build_first(2),
+        // VFRIC's PROPS are in the build's precision (IflReal), the builders' in f64.
+        props: vec![1.0, 0.3],
         f_normal: vec![10.0],
         f_stick: vec![5.0],
         area: vec![1.0],
