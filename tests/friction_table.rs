@@ -59,7 +59,8 @@ fn rate_mu(v: f64) -> f64 {
     }
 }
 
-fn table_props(mu_ref: f64, mu2: f64, gc: f64, exact: bool, frozen: bool) -> Vec<f64> {
+/// Law 1 with the μ table (`PROPS(8) = 2`) of the interaction, μ_ref = `mu_ref`.
+fn table_law(mu_ref: f64, mu2: f64, gc: f64, exact: bool, frozen: bool) -> CoulombBuilder {
     CoulombBuilder::new()
         .mu(mu_ref)
         .mu2(mu2)
@@ -67,7 +68,11 @@ fn table_props(mu_ref: f64, mu2: f64, gc: f64, exact: bool, frozen: bool) -> Vec
         .stick(if exact { 1.0 } else { 0.0 })
         .mu_law(2.0)
         .frozen(if frozen { 1.0 } else { 0.0 })
-        .build()
+}
+
+/// [`table_law`], all 20 entries.
+fn table_props(mu_ref: f64, mu2: f64, gc: f64, exact: bool, frozen: bool) -> Vec<f64> {
+    table_law(mu_ref, mu2, gc, exact, frozen).build()
 }
 
 /// Scene F4 with a table: after a few increments at slip velocity v, τ = μ_tab(v)·p (elastic
@@ -325,44 +330,27 @@ fn fric_coef_reads_the_table() {
 #[test]
 fn bad_props_and_missing_interaction_are_refused() {
     setup();
-    let good = table_props(1.0, 0.0, GC, false, false);
+    let good = || table_law(1.0, 0.0, GC, false, false);
     let cases: Vec<(&str, Vec<f64>, &str, &str)> = vec![
         (
             "missing interaction",
-            good.clone(),
+            good().build(),
             "NOPE",
             "[interactions.NOPE.friction]",
         ),
         (
             "PROPS(9) with table",
-            {
-                let mut p = good.clone();
-                p[8] = 0.2;
-                p
-            },
+            good().mu_k(0.2).build(),
             "RATE",
             "PROPS(9)",
         ),
         (
             "PROPS(12) with table",
-            {
-                let mut p = good.clone();
-                p[11] = 0.01;
-                p
-            },
+            good().b_theta(0.01).build(),
             "RATE",
             "PROPS(12)",
         ),
-        (
-            "μ_ref = 0",
-            {
-                let mut p = good.clone();
-                p[1] = 0.0;
-                p
-            },
-            "RATE",
-            "PROPS(2)",
-        ),
+        ("μ_ref = 0", good().mu(0.0).build(), "RATE", "PROPS(2)"),
     ];
     for (what, props, name, word) in cases {
         let mut c = FricCall::new(2, &props);
