@@ -9,7 +9,7 @@
 mod central;
 #[path = "common/laws.rs"]
 mod laws;
-use central::{Shift, along_dgam, along_press, along_temp, central_tau};
+use central::{Shift, along_dgam, along_press, along_temp, central_tau, slide_steadily};
 use laws::{every_mu_law, set_entry};
 
 use interfacial::abi::host::FricCall;
@@ -446,16 +446,7 @@ fn f4_velocity_steps() {
                 c.dtime = dt;
                 let dir = if nfdir == 1 { [1.0, 0.0] } else { [0.6, 0.8] };
                 for v in [0.05, 0.5, 0.2, 1.5] {
-                    for _ in 0..40 {
-                        for i in 0..nfdir {
-                            c.dgam[i] = dir[i] * v * dt;
-                        }
-                        c.call();
-                        assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
-                        assert_eq!(c.lm, 0);
-                        c.dpress = 0.0;
-                    }
-                    let tau_eq = (0..nfdir).map(|i| c.tau[i].powi(2)).sum::<f64>().sqrt();
+                    let tau_eq = slide_steadily(&mut c, nfdir, dir, v, 40);
                     let expected = (mu_k + (mu_s - mu_k) * (-dc * v).exp()) * p;
                     assert!(
                         (tau_eq - expected).abs() < 1e-12 * expected,

@@ -13,7 +13,7 @@ mod central;
 mod config_file;
 #[path = "common/fric_coef.rs"]
 mod fric_coef_common;
-use central::{Shift, along_dgam, along_press, along_temp, central_tau};
+use central::{Shift, along_dgam, along_press, along_temp, central_tau, slide_steadily};
 use fric_coef_common::fric_coef_call;
 
 use std::process::Command;
@@ -90,15 +90,7 @@ fn f4_velocity_steps_follow_the_table() {
                 c.dtime = dt;
                 let dir = if nfdir == 1 { [1.0, 0.0] } else { [0.6, 0.8] };
                 for v in [0.05, 0.5, 0.2, 1.5, 0.8] {
-                    for _ in 0..40 {
-                        for i in 0..nfdir {
-                            c.dgam[i] = dir[i] * v * dt;
-                        }
-                        c.call();
-                        assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
-                        assert_eq!(c.lm, 0);
-                    }
-                    let tau_eq = (0..nfdir).map(|i| c.tau[i].powi(2)).sum::<f64>().sqrt();
+                    let tau_eq = slide_steadily(&mut c, nfdir, dir, v, 40);
                     let expected = rate_mu(v) * p;
                     assert!(
                         (tau_eq - expected).abs() < 1e-11 * expected,
