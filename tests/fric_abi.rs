@@ -306,11 +306,9 @@ fn results_do_not_depend_on_the_number_of_threads() {
     }
 }
 
-#[test]
-fn null_pointers_are_refused_without_a_crash() {
+/// `fric_` with every pointer NULL but `pnewdt` (NULL too if so given) and zero hidden lengths.
+fn fric_all_null(pnewdt: *mut f64) {
     use std::ptr::{null, null_mut};
-    let mut pnewdt = 1e36;
-    // A host that passes nothing but PNEWDT: refused, cut-back, message names the argument.
     // SAFETY: every pointer is NULL or valid; the function must check before reading.
     unsafe {
         interfacial::abi::fric_(
@@ -322,7 +320,7 @@ fn null_pointers_are_refused_without_a_crash() {
             null_mut(),
             null_mut(),
             null_mut(),
-            &mut pnewdt,
+            pnewdt,
             null_mut(),
             null(),
             null(),
@@ -358,56 +356,18 @@ fn null_pointers_are_refused_without_a_crash() {
             0,
         );
     }
+}
+
+#[test]
+fn null_pointers_are_refused_without_a_crash() {
+    use std::ptr::{null, null_mut};
+    let mut pnewdt = 1e36;
+    // A host that passes nothing but PNEWDT: refused, cut-back, message names the argument.
+    fric_all_null(&mut pnewdt);
     assert_eq!(pnewdt, CUTBACK_RATIO);
     assert!(FricCall::last_error().contains("LM is a NULL pointer"));
     // Everything NULL, PNEWDT too: still no crash.
-    // SAFETY: as above.
-    unsafe {
-        interfacial::abi::fric_(
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            0,
-            0,
-            0,
-        );
-    }
+    fric_all_null(null_mut());
     // A good point whose PRESS pointer is missing.
     let mut c = good(1);
     let mut lm = 0;
