@@ -207,64 +207,12 @@ fn whole_batch_faults_write_only_pnewdt() {
         (2, 9, 4, IflStatus::BadParameter),
         (2, 10, 2, IflStatus::BadParameter),
     ] {
-        let mut pnewdt = 1e36;
-        // SAFETY: arrays as sized for the valid case; the call must refuse before reading.
-        let st = unsafe {
-            ifl_fric_batch(
-                10,
-                ld,
-                nfdir,
-                good.as_ptr(),
-                7,
-                nstatv,
-                0.5,
-                p.lm.as_mut_ptr(),
-                p.tau.as_mut_ptr(),
-                p.ddtddg.as_mut_ptr(),
-                p.ddtddp.as_mut_ptr(),
-                std::ptr::null_mut(),
-                std::ptr::null_mut(),
-                std::ptr::null_mut(),
-                p.statev.as_mut_ptr(),
-                input.dgam.as_ptr(),
-                std::ptr::null(),
-                input.press.as_ptr(),
-                input.dpress.as_ptr(),
-                std::ptr::null(),
-                &mut pnewdt,
-            )
-        };
+        let (st, pnewdt) = refused_ten_points(&good, &input, &mut p, (ld, nfdir, nstatv), false);
         assert_eq!((st, pnewdt), (expect, 0.25));
         assert_identical("refused batch", &input, &p);
     }
     // A required array NULL: refused with BadInput, naming it.
-    let mut pnewdt = 1e36;
-    // SAFETY: as above; chrlngth NULL must be refused.
-    let st = unsafe {
-        ifl_fric_batch(
-            10,
-            10,
-            2,
-            good.as_ptr(),
-            7,
-            4,
-            0.5,
-            p.lm.as_mut_ptr(),
-            p.tau.as_mut_ptr(),
-            p.ddtddg.as_mut_ptr(),
-            p.ddtddp.as_mut_ptr(),
-            std::ptr::null_mut(),
-            std::ptr::null_mut(),
-            std::ptr::null_mut(),
-            p.statev.as_mut_ptr(),
-            input.dgam.as_ptr(),
-            input.taulm.as_ptr(),
-            input.press.as_ptr(),
-            input.dpress.as_ptr(),
-            std::ptr::null(),
-            &mut pnewdt,
-        )
-    };
+    let (st, pnewdt) = refused_ten_points(&good, &input, &mut p, (10, 2, 4), true);
     assert_eq!((st, pnewdt), (IflStatus::BadInput, 0.25));
     assert!(FricCall::last_error().contains("chrlngth"));
     assert_identical("NULL chrlngth", &input, &p);
@@ -296,4 +244,50 @@ fn whole_batch_faults_write_only_pnewdt() {
         )
     };
     assert_eq!(st, IflStatus::Ok);
+}
+
+/// A batch of the 10 points of `input` (outputs into `p`; `NPROPS` 7, Δt 0.5; DSLIP, SED, SFD
+/// and CHRLNGTH NULL, TAULM too unless `taulm`) that must be refused before any array is read:
+/// `shape` = (ld, NFDIR, NSTATV). The status and PNEWDT.
+fn refused_ten_points(
+    props: &[f64],
+    input: &Points,
+    p: &mut Points,
+    shape: (usize, i32, i32),
+    taulm: bool,
+) -> (IflStatus, f64) {
+    let (ld, nfdir, nstatv) = shape;
+    let mut pnewdt = 1e36;
+    // SAFETY: the arrays are sized for 10 points with ld = 10, NFDIR 2 and NSTATV 4; the call
+    // must refuse (a bad shape, or the NULL CHRLNGTH) before it reads or writes any of them.
+    let st = unsafe {
+        ifl_fric_batch(
+            10,
+            ld,
+            nfdir,
+            props.as_ptr(),
+            7,
+            nstatv,
+            0.5,
+            p.lm.as_mut_ptr(),
+            p.tau.as_mut_ptr(),
+            p.ddtddg.as_mut_ptr(),
+            p.ddtddp.as_mut_ptr(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            p.statev.as_mut_ptr(),
+            input.dgam.as_ptr(),
+            if taulm {
+                input.taulm.as_ptr()
+            } else {
+                std::ptr::null()
+            },
+            input.press.as_ptr(),
+            input.dpress.as_ptr(),
+            std::ptr::null(),
+            &mut pnewdt,
+        )
+    };
+    (st, pnewdt)
 }
