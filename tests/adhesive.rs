@@ -13,7 +13,12 @@ use interfacial::abi::host::FricCall;
 use interfacial::abi::uinter_host::UinterCall;
 use interfacial::laws::adhesive::{Adhesive, AdhesiveParameters, SlideBranch};
 use interfacial::laws::coulomb::{Contact, Coulomb, CoulombState, Increment};
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use proptest::prelude::*;
+
+#[path = "common/threads.rs"]
+mod threads;
+use threads::map_on_threads;
 
 const GAMMA_CRIT: f64 = 1e-3;
 
@@ -29,17 +34,20 @@ fn params(mask: u32, mu: f64) -> AdhesiveParameters {
     }
 }
 
+/// The law `p` with γ_crit = [`GAMMA_CRIT`] as `PROPS`; `fric_` reads `PROPS(1..8)`.
+fn adhesive(p: &AdhesiveParameters) -> AdhesiveBuilder {
+    AdhesiveBuilder::new()
+        .coeff(p.coeff)
+        .coeff_static(p.coeff_static)
+        .sa(p.sa)
+        .na(p.na)
+        .kmu(p.kmu)
+        .vhalf(p.vhalf)
+        .gamma_crit(GAMMA_CRIT)
+}
+
 fn fric_props(p: &AdhesiveParameters) -> Vec<f64> {
-    vec![
-        2.0,
-        p.coeff,
-        p.coeff_static,
-        p.sa,
-        p.na,
-        p.kmu,
-        p.vhalf,
-        GAMMA_CRIT,
-    ]
+    adhesive(p).build_first(8)
 }
 
 #[derive(Clone, Debug)]
@@ -219,8 +227,9 @@ proptest! {
     #[test]
     fn coulomb_special_case_is_identical(s in sample(), na in prop_oneof![Just(0.0), 1.0..10.0f64],
                                          static_entry in prop_oneof![Just(-1.0), Just(0.0)]) {
-        let adhesive = [2.0, s.mu, static_entry, 0.0, na, 0.0, 0.0, GAMMA_CRIT];
-        let coulomb = [1.0, s.mu, 0.0, 0.0, GAMMA_CRIT];
+        let adhesive = AdhesiveBuilder::new().coeff(s.mu).coeff_static(static_entry).na(na)
+            .gamma_crit(GAMMA_CRIT).build_first(8);
+        let coulomb = CoulombBuilder::new().mu(s.mu).gamma_crit(GAMMA_CRIT).build_first(5);
         let run = |props: &[f64]| {
             let mut c = FricCall::new(s.nfdir, props);
             for a in 0..s.nfdir as usize {
@@ -272,10 +281,15 @@ proptest! {
 
 const K_N: f64 = 1e5;
 
+fn uinter(p: &AdhesiveParameters, heat_fraction: f64) -> AdhesiveBuilder {
+    adhesive(p)
+        .normal_stiffness(K_N)
+        .heat_fraction(heat_fraction)
+        .slave_fraction(0.3)
+}
+
 fn uinter_props(p: &AdhesiveParameters, heat_fraction: f64) -> Vec<f64> {
-    let mut v = fric_props(p);
-    v.extend([0.0, K_N, 0.0, heat_fraction, 0.3]);
-    v
+    uinter(p, heat_fraction).build()
 }
 
 #[derive(Clone, Debug)]
@@ -479,7 +493,7 @@ fn uinter_tangents_in_every_named_branch() {
     }
 }
 
-fn interface_props() -> Vec<f64> {
+fn interface() -> AdhesiveBuilder {
     // μ_d = 0.3, μ_s = 0.5, S_a = 4, N_a = 10.
     let p = AdhesiveParameters {
         coeff: 0.3,
@@ -488,7 +502,11 @@ fn interface_props() -> Vec<f64> {
         na: 10.0,
         ..AdhesiveParameters::default()
     };
-    uinter_props(&p, 0.0)
+    uinter(&p, 0.0)
+}
+
+fn interface_props() -> Vec<f64> {
+    interface().build()
 }
 
 #[test]
@@ -544,28 +562,21 @@ fn uinter_pull_off_and_rebond() {
 
 #[test]
 fn uinter_bad_input_cuts_back() {
+    // A valid interface (μ_d = 0.3, γ_crit, K_n) but for the one entry each needle names.
+    let good = AdhesiveBuilder::new()
+        .coeff(0.3)
+        .gamma_crit(1e-3)
+        .normal_stiffness(1e5);
     for (props, needle) in [
+        (good.clone().sa(-1.0).build_first(10), "PROPS(4): Sa"),
+        (good.clone().na(-2.0).build_first(10), "PROPS(5): Na"),
         (
-            vec![2.0, 0.3, 0.0, -1.0, 0.0, 0.0, 0.0, 1e-3, 0.0, 1e5],
-            "PROPS(4): Sa",
-        ),
-        (
-            vec![2.0, 0.3, 0.0, 0.0, -2.0, 0.0, 0.0, 1e-3, 0.0, 1e5],
-            "PROPS(5): Na",
-        ),
-        (
-            vec![2.0, 0.5, 0.3, 0.0, 0.0, 0.0, 0.0, 1e-3, 0.0, 1e5],
+            good.clone().coeff(0.5).coeff_static(0.3).build_first(10),
             "PROPS(3): coeffStatic",
         ),
-        (
-            vec![2.0, f64::NAN, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-3, 0.0, 1e5],
-            "PROPS(2)",
-        ),
-        (
-            vec![2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-3],
-            "PROPS(10) = 0",
-        ),
-        (vec![1.0, 0.3], "PROPS(1) = 2"),
+        (good.clone().coeff(f64::NAN).build_first(10), "PROPS(2)"),
+        (good.clone().build_first(8), "PROPS(10) = 0"),
+        (CoulombBuilder::new().mu(0.3).build_first(2), "PROPS(1) = 2"),
     ] {
         let mut c = UinterCall::new(3, &props);
         c.stress = [5.0, 1.0, 2.0, c.stress[3]];
@@ -585,8 +596,7 @@ fn uinter_bad_input_cuts_back() {
     assert_eq!(c.pnewdt, 0.25);
     assert!(FricCall::last_error().contains("RDISP(1) is NaN"));
     // Rate-dependent law with DTIME = 0.
-    let mut props = interface_props();
-    props[6] = 0.1;
+    let props = interface().vhalf(0.1).build();
     let mut c = UinterCall::new(2, &props);
     c.rdisp[0] = 1e-4;
     c.dtime = 0.0;
@@ -622,12 +632,24 @@ fn uinter_bad_input_cuts_back() {
 #[test]
 fn fric_bad_input_cuts_back() {
     for (props, needle) in [
-        (vec![2.0, 0.3, 0.0, -1.0], "PROPS(4): Sa"),
         (
-            vec![2.0, 0.5, 0.3],
+            AdhesiveBuilder::new().coeff(0.3).sa(-1.0).build_first(4),
+            "PROPS(4): Sa",
+        ),
+        (
+            AdhesiveBuilder::new()
+                .coeff(0.5)
+                .coeff_static(0.3)
+                .build_first(3),
             "PROPS(3): coeffStatic = 0.3 is below coeff = 0.5",
         ),
-        (vec![2.0, 0.3, 0.0, 0.0, 0.0, f64::NAN], "PROPS(6): kmu"),
+        (
+            AdhesiveBuilder::new()
+                .coeff(0.3)
+                .kmu(f64::NAN)
+                .build_first(6),
+            "PROPS(6): kmu",
+        ),
     ] {
         let mut c = FricCall::new(2, &props);
         c.press = 10.0;
@@ -675,16 +697,7 @@ fn uinter_results_do_not_depend_on_the_number_of_threads() {
         bits
     };
     let serial: Vec<Vec<u64>> = points.iter().map(run).collect();
-    let parallel: Vec<Vec<u64>> = std::thread::scope(|scope| {
-        let handles: Vec<_> = points
-            .chunks(250)
-            .map(|chunk| scope.spawn(move || chunk.iter().map(run).collect::<Vec<_>>()))
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().unwrap())
-            .collect()
-    });
+    let parallel = map_on_threads(&points, 250, run);
     assert_eq!(serial, parallel);
 }
 

@@ -13,9 +13,20 @@ use interfacial::abi::{
     IflConductance, IflStatus, gapcon_, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
     ifl_last_error_copy,
 };
+use interfacial::props::CoulombBuilder;
 
 const MU: f64 = 0.3;
 const GAMMA_CRIT: f64 = 1e-3;
+
+/// Law 1 with μ = [`MU`] and γ_crit = [`GAMMA_CRIT`] (elastic stick).
+fn coulomb() -> CoulombBuilder {
+    CoulombBuilder::new().mu(MU).gamma_crit(GAMMA_CRIT)
+}
+
+/// μ = [`MU`] alone, `NPROPS` = 2 (every other entry absent).
+fn mu_only() -> Vec<f64> {
+    CoulombBuilder::new().mu(MU).build_first(2)
+}
 
 /// A good call: NFDIR = 2, p = 100, sliding (|γ_pr| = 1.5·γ_crit) unless said otherwise.
 fn good(props: &[f64]) -> FricCall {
@@ -79,7 +90,7 @@ fn fric_unread_real_arguments_have_no_effect() {
         ("CHRLNGTH with PROPS(5) > 0", |c, x| c.chrlngth = x),
     ];
     for stick in [0.0, 1.0] {
-        let props = [1.0, MU, 0.0, 0.0, GAMMA_CRIT, 0.0, stick];
+        let props = coulomb().stick(stick).build_first(7);
         let mut clean = good(&props);
         clean.call();
         assert_eq!(clean.pnewdt, 1e36, "{}", FricCall::last_error());
@@ -103,19 +114,20 @@ fn fric_unread_real_arguments_have_no_effect() {
 #[test]
 fn fric_non_finite_read_arguments_are_refused() {
     for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
-        let mut c = good(&[1.0, MU, 0.0, 0.0, GAMMA_CRIT]);
+        let mut c = good(&coulomb().build_first(5));
         c.dtime = bad;
         refused(c, &format!("DTIME = {bad}"), "DTIME");
         // γ_crit from the slip tolerance: CHRLNGTH is read.
-        let mut c = good(&[1.0, MU, 0.0, 0.0, 0.0, 0.01]);
+        let tolerance = CoulombBuilder::new().mu(MU).slip_tolerance(0.01);
+        let mut c = good(&tolerance.build_first(6));
         c.chrlngth = bad;
         refused(c, &format!("CHRLNGTH = {bad}"), "CHRLNGTH");
-        let mut c = good(&[1.0, MU]);
+        let mut c = good(&mu_only());
         c.statev[1] = bad;
         refused(c, &format!("STATEV(2) = {bad}"), "STATEV");
         // Every PROPS entry of law 1.
         for k in 1..7 {
-            let mut props = vec![1.0, MU, 0.0, 0.0, GAMMA_CRIT, 0.0, 0.0];
+            let mut props = coulomb().build_first(7);
             props[k] = bad;
             refused(
                 good(&props),
@@ -130,7 +142,7 @@ fn fric_non_finite_read_arguments_are_refused() {
 /// the answer is that of any other time increment (the Coulomb law does not depend on rate).
 #[test]
 fn fric_zero_or_negative_dtime_gives_zero_slip_rate() {
-    let props = [1.0, MU, 0.0, 0.0, GAMMA_CRIT];
+    let props = coulomb().build_first(5);
     let mut reference = good(&props);
     reference.call();
     assert!(reference.statev[1] > 0.0, "the reference increment slips");
@@ -151,7 +163,7 @@ fn fric_zero_or_negative_dtime_gives_zero_slip_rate() {
 fn fric_negative_pressure_gives_zero_stress() {
     for stick in [0.0, 1.0] {
         for p in [-1e-12, -5.0, -1e200] {
-            let mut c = good(&[1.0, MU, 0.0, 0.0, GAMMA_CRIT, 0.0, stick]);
+            let mut c = good(&coulomb().stick(stick).build_first(7));
             c.press = p;
             c.dpress = p - 100.0;
             c.call();
@@ -168,7 +180,7 @@ fn fric_negative_pressure_gives_zero_stress() {
 /// the same interaction; the message never shows bytes past the hidden length.
 #[test]
 fn fric_names_not_blank_padded() {
-    let mut c = good(&[1.0, MU]);
+    let mut c = good(&mu_only());
     c.nstatv = 2;
     c.ciname = "SI1\0\0\0\0\0".into();
     c.name_len = 8;

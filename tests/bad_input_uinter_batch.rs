@@ -5,24 +5,13 @@
 //! `PNEWDT` is lowered with one message naming the routine, state kept on refusal, finite
 //! outputs on success, a batch bit for bit `fric_` per point.
 
-#[allow(dead_code)]
-#[path = "../fuzz/src/batch_case.rs"]
-mod batch_case;
-#[allow(dead_code)]
-#[path = "../fuzz/src/bytes.rs"]
-mod bytes;
-#[allow(dead_code)]
-#[path = "../fuzz/src/fric_case.rs"]
-mod fric_case;
-#[allow(dead_code)]
-#[path = "../fuzz/src/gapcon_case.rs"]
-mod gapcon_case;
-#[allow(dead_code)]
-#[path = "../fuzz/src/uinter_case.rs"]
-mod uinter_case;
+#[path = "common/fuzz_cases.rs"]
+mod fuzz_cases;
+use fuzz_cases::{batch_case, gapcon_case, uinter_case};
 
 use batch_case::{BatchCase, BatchOutputs};
 use interfacial::abi::IflStatus;
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use uinter_case::{UinterCase, UinterOutputs};
 
 const BAD: [f64; 3] = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
@@ -30,15 +19,29 @@ const BAD: [f64; 3] = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
 /// A closed, sliding 3-D point of the PTAB interaction (pressure table in the fuzz
 /// configuration) with conduction, frictional heat and a rate-dependent law, γ_crit from the
 /// slip tolerance × CHRLNGTH, so every argument the documentation lists as read is read.
+fn uinter_law() -> AdhesiveBuilder {
+    AdhesiveBuilder::new()
+        .coeff(0.3)
+        .coeff_static(0.5)
+        .sa(4.0)
+        .na(10.0)
+        .kmu(0.01)
+        .vhalf(0.1)
+        .slip_tolerance(0.005)
+        .normal_stiffness(1e4)
+        .conductance(true)
+        .heat_fraction(0.8)
+        .slave_fraction(0.25)
+}
+
+/// A point of [`uinter_law`] (see there).
 fn uinter_base() -> UinterCase {
     gapcon_case::setup();
     let mut c = UinterCase::decode(&[]);
     c.ndir = 3;
     c.nstatv = 5;
     c.nprops = 13;
-    c.props = vec![
-        2.0, 0.3, 0.5, 4.0, 10.0, 0.01, 0.1, 0.0, 0.005, 1e4, 1.0, 0.8, 0.25,
-    ];
+    c.props = uinter_law().build();
     c.stress = vec![20.0, 1.0, 2.0];
     c.statev = vec![0.1, 0.01, 1.0, 7.0, 8.0];
     c.rdisp = vec![2e-3, 0.5, 0.5];
@@ -150,7 +153,7 @@ fn uinter_non_finite_in_every_real_argument() {
     }
     // TEMP is not read without conduction.
     let mut c = base.clone();
-    c.props[10] = 0.0;
+    c.props = uinter_law().conductance(false).build();
     let plain = run(&c);
     c.temp = vec![f64::NAN, f64::INFINITY];
     assert_eq!(format!("{:?}", run(&c)), format!("{plain:?}"));
@@ -221,9 +224,8 @@ fn uinter_zero_or_negative_dtime() {
         let mut c = uinter_base();
         c.dtime = dt;
         refused(&c, "DTIME");
-        c.props[5] = 0.0;
-        c.props[6] = 0.0;
-        c.props[11] = 0.0;
+        // No rate law and no frictional heat: nothing reads DTIME.
+        c.props = uinter_law().kmu(0.0).vhalf(0.0).heat_fraction(0.0).build();
         let out = run(&c);
         assert!(out.message.is_empty(), "{}", out.message);
         assert_eq!(out.statev[1], 0.0);
@@ -279,13 +281,18 @@ fn uinter_apart_is_not_an_error() {
 
 /// Four points, NFDIR 2, ld = 6, Coulomb μ = 0.3 with γ_crit from the tolerance × CHRLNGTH;
 /// point 3 enters exact stick (LM = 1) so TAULM is read.
+fn batch_law() -> CoulombBuilder {
+    CoulombBuilder::new().mu(0.3).slip_tolerance(0.005)
+}
+
+/// Points of [`batch_law`] (see there).
 fn batch_base() -> BatchCase {
     let mut c = BatchCase::decode(&[]);
     c.npoints = 4;
     c.ld = 6;
     c.nfdir = 2;
     c.nstatv = 4;
-    c.props = vec![1.0, 0.3, 0.0, 0.0, 0.0, 0.005, 0.0];
+    c.props = batch_law().build_first(7);
     c.dtime = 0.5;
     c.pnewdt = 1e36;
     c.null_optional = false;
@@ -341,7 +348,7 @@ fn batch_non_finite_in_every_real_argument() {
                 let mut c = base.clone();
                 let clean = if needle == "TAULM" {
                     // TAULM is read only by exact stick (PROPS(7) = 1) with LM = 1 on entry.
-                    c.props[6] = 1.0;
+                    c.props = batch_law().stick(1.0).build_first(7);
                     run_batch(&c)
                 } else {
                     clean.clone()
@@ -429,7 +436,7 @@ fn batch_sizes_out_of_range() {
     }
     // The adhesive law has no batch kernel.
     let mut c = base.clone();
-    c.props = vec![2.0, 0.3, 0.0, 1.0];
+    c.props = AdhesiveBuilder::new().coeff(0.3).sa(1.0).build_first(4);
     let out = run_batch(&c);
     assert_eq!(out.status, IflStatus::BadParameter as i32);
     // LM out of range: that point fails.
@@ -461,20 +468,22 @@ fn batch_sizes_out_of_range() {
     assert_eq!(out.pnewdt, 1e36);
 }
 
-/// Row 60: ld × components overflowing usize is refused before any array is touched.
-#[test]
-fn batch_leading_dimension_overflow() {
-    let good = [1.0, 0.3, 0.0, 0.0, 1e-3];
-    let mut pnewdt = 1e36;
+/// One point through `ifl_fric_batch` on scratch arrays of 4 entries (`NPROPS` 5, `NSTATV` 3,
+/// Δt 0.5, the optional outputs and TAULM NULL): leading dimension `ld`, `nfdir`, these `props`
+/// and `pnewdt` (either may be NULL).
+fn one_point_batch(ld: usize, nfdir: i32, props: *const f64, pnewdt: *mut f64) -> IflStatus {
     let mut lm = [0i32; 1];
     let mut x = [0.0f64; 4];
-    // SAFETY: the call must refuse on the sizes before it forms any slice.
-    let st = unsafe {
+    let chrlngth = [1.0f64; 4];
+    // SAFETY: every array holds 4 entries, enough for one point with ld = 1 and NFDIR ≤ 2; with
+    // a larger ld the call must refuse on the sizes before it forms any slice. NULLs as
+    // documented.
+    unsafe {
         interfacial::abi::ifl_fric_batch(
             1,
-            usize::MAX / 2,
-            2,
-            good.as_ptr(),
+            ld,
+            nfdir,
+            props,
             5,
             3,
             0.5,
@@ -490,10 +499,21 @@ fn batch_leading_dimension_overflow() {
             std::ptr::null(),
             x.as_ptr(),
             x.as_ptr(),
-            x.as_ptr(),
-            &mut pnewdt,
+            chrlngth.as_ptr(),
+            pnewdt,
         )
-    };
+    }
+}
+
+/// Row 60: ld × components overflowing usize is refused before any array is touched.
+#[test]
+fn batch_leading_dimension_overflow() {
+    let good = CoulombBuilder::new()
+        .mu(0.3)
+        .gamma_crit(1e-3)
+        .build_first(5);
+    let mut pnewdt = 1e36;
+    let st = one_point_batch(usize::MAX / 2, 2, good.as_ptr(), &mut pnewdt);
     assert_eq!((st, pnewdt), (IflStatus::BadParameter, 0.25));
 }
 
@@ -526,9 +546,10 @@ fn batch_null_pointers() {
     assert_eq!(out.status, IflStatus::BadInput as i32);
     assert!(out.message.contains("batch point 3") && out.message.contains("TAULM"));
     // PNEWDT NULL and PROPS NULL with NPROPS > 0.
-    let mut lm = [0i32; 1];
-    let mut x = [0.0f64; 4];
-    let good = [1.0, 0.3, 0.0, 0.0, 1e-3];
+    let good = CoulombBuilder::new()
+        .mu(0.3)
+        .gamma_crit(1e-3)
+        .build_first(5);
     for (props, pnewdt_null, expect) in [
         (good.as_ptr(), true, IflStatus::Ok),
         (std::ptr::null(), false, IflStatus::BadInput),
@@ -539,32 +560,7 @@ fn batch_null_pointers() {
         } else {
             &mut pnewdt
         };
-        // SAFETY: one point, NFDIR 1, arrays of 4 entries; NULLs as documented.
-        let st = unsafe {
-            interfacial::abi::ifl_fric_batch(
-                1,
-                1,
-                1,
-                props,
-                5,
-                3,
-                0.5,
-                lm.as_mut_ptr(),
-                x.as_mut_ptr(),
-                x.as_mut_ptr(),
-                x.as_mut_ptr(),
-                std::ptr::null_mut(),
-                std::ptr::null_mut(),
-                std::ptr::null_mut(),
-                x.as_mut_ptr(),
-                x.as_ptr(),
-                std::ptr::null(),
-                x.as_ptr(),
-                x.as_ptr(),
-                [1.0].as_ptr(),
-                p,
-            )
-        };
+        let st = one_point_batch(1, 1, props, p);
         assert_eq!(st, expect);
     }
 }

@@ -8,6 +8,7 @@ mod common;
 use common::{Points, Rng, UNSET, first_difference, per_point, via_c};
 use interfacial::abi::host::FricCall;
 use interfacial::abi::{FricBatch, IflStatus, fric_batch, ifl_fric_batch};
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 
 fn random_points(rng: &mut Rng, n: usize, ld: usize, nfdir: usize, gamma_crit: f64) -> Points {
     // Inputs of the padding (between n and ld) stay UNSET: the batch must not read them.
@@ -67,13 +68,19 @@ fn assert_identical(what: &str, a: &Points, b: &Points) {
 
 /// PROPS variants: elastic stick (absolute γ_crit, from CHRLNGTH, with τ_max) and exact stick.
 fn props_variants() -> Vec<(Vec<f64>, f64)> {
+    let law = |mu: f64| CoulombBuilder::new().mu(mu);
     vec![
-        (vec![1.0, 0.3, 0.0, 0.0, 1e-3, 0.0, 0.0], 1e-3),
-        (vec![1.0, 0.45, 0.0, 0.0, 0.0, 0.01, 0.0], 5e-3),
-        (vec![1.0, 0.3, 0.0, 25.0, 2e-3, 0.0, 0.0], 2e-3),
-        (vec![1.0, 0.3, 0.0, 0.0, 1e-3, 0.0, 1.0], 1e-3),
-        (vec![1.0, 0.3], 5e-3),
+        (first_variant().build_first(7), 1e-3),
+        (law(0.45).slip_tolerance(0.01).build_first(7), 5e-3),
+        (law(0.3).tau_max(25.0).gamma_crit(2e-3).build_first(7), 2e-3),
+        (first_variant().stick(1.0).build_first(7), 1e-3),
+        (law(0.3).build_first(2), 5e-3),
     ]
+}
+
+/// The first of [`props_variants`]: μ = 0.3, γ_crit = 10⁻³, elastic stick.
+fn first_variant() -> CoulombBuilder {
+    CoulombBuilder::new().mu(0.3).gamma_crit(1e-3)
 }
 
 #[test]
@@ -169,24 +176,27 @@ fn a_bad_point_gets_fric_failure_outputs_and_the_rest_are_computed() {
 fn whole_batch_faults_write_only_pnewdt() {
     let mut rng = Rng(7);
     let input = random_points(&mut rng, 10, 10, 2, 1e-3);
-    let good = props_variants()[0].0.clone();
+    let good = first_variant().build_first(7);
     // Bad PROPS (μ < 0), bad NFDIR, ld < npoints, short NSTATV, NULL arrays.
-    let mut bad_mu = good.clone();
-    bad_mu[1] = -1.0;
+    let bad_mu = first_variant().mu(-1.0).build_first(7);
     let (c, pc, st) = via_c(&bad_mu, 0.5, &input);
     assert_eq!((st, pc), (IflStatus::BadParameter, 0.25));
     assert_identical("bad PROPS", &input, &c);
     assert!(FricCall::last_error().contains("ifl_fric_batch"));
     // The adhesive law (PROPS(1) = 2, here with S_a > 0 so it is not the Coulomb special case)
     // has no batch kernel: refused as a whole, naming the law.
-    let adhesive = [2.0, 0.3, -1.0, 1.0, 0.0, 0.0, 0.0, 1e-3];
+    let adhesive = AdhesiveBuilder::new()
+        .coeff(0.3)
+        .coeff_static(-1.0)
+        .sa(1.0)
+        .gamma_crit(1e-3)
+        .build_first(8);
     let (c, pc, st) = via_c(&adhesive, 0.5, &input);
     assert_eq!((st, pc), (IflStatus::BadParameter, 0.25));
     assert_identical("adhesive PROPS", &input, &c);
     assert!(FricCall::last_error().contains("runs law 1 (Coulomb) only"));
     // Anisotropy (PROPS(3) != PROPS(2)) is the extended law 1: refused as a whole too.
-    let mut anisotropic = good.clone();
-    anisotropic[2] = 0.5 * anisotropic[1];
+    let anisotropic = first_variant().mu2(0.5 * 0.3).build_first(7);
     let (c, pc, st) = via_c(&anisotropic, 0.5, &input);
     assert_eq!((st, pc), (IflStatus::BadParameter, 0.25));
     assert_identical("anisotropic PROPS", &input, &c);
@@ -197,64 +207,12 @@ fn whole_batch_faults_write_only_pnewdt() {
         (2, 9, 4, IflStatus::BadParameter),
         (2, 10, 2, IflStatus::BadParameter),
     ] {
-        let mut pnewdt = 1e36;
-        // SAFETY: arrays as sized for the valid case; the call must refuse before reading.
-        let st = unsafe {
-            ifl_fric_batch(
-                10,
-                ld,
-                nfdir,
-                good.as_ptr(),
-                7,
-                nstatv,
-                0.5,
-                p.lm.as_mut_ptr(),
-                p.tau.as_mut_ptr(),
-                p.ddtddg.as_mut_ptr(),
-                p.ddtddp.as_mut_ptr(),
-                std::ptr::null_mut(),
-                std::ptr::null_mut(),
-                std::ptr::null_mut(),
-                p.statev.as_mut_ptr(),
-                input.dgam.as_ptr(),
-                std::ptr::null(),
-                input.press.as_ptr(),
-                input.dpress.as_ptr(),
-                std::ptr::null(),
-                &mut pnewdt,
-            )
-        };
+        let (st, pnewdt) = refused_ten_points(&good, &input, &mut p, (ld, nfdir, nstatv), false);
         assert_eq!((st, pnewdt), (expect, 0.25));
         assert_identical("refused batch", &input, &p);
     }
     // A required array NULL: refused with BadInput, naming it.
-    let mut pnewdt = 1e36;
-    // SAFETY: as above; chrlngth NULL must be refused.
-    let st = unsafe {
-        ifl_fric_batch(
-            10,
-            10,
-            2,
-            good.as_ptr(),
-            7,
-            4,
-            0.5,
-            p.lm.as_mut_ptr(),
-            p.tau.as_mut_ptr(),
-            p.ddtddg.as_mut_ptr(),
-            p.ddtddp.as_mut_ptr(),
-            std::ptr::null_mut(),
-            std::ptr::null_mut(),
-            std::ptr::null_mut(),
-            p.statev.as_mut_ptr(),
-            input.dgam.as_ptr(),
-            input.taulm.as_ptr(),
-            input.press.as_ptr(),
-            input.dpress.as_ptr(),
-            std::ptr::null(),
-            &mut pnewdt,
-        )
-    };
+    let (st, pnewdt) = refused_ten_points(&good, &input, &mut p, (10, 2, 4), true);
     assert_eq!((st, pnewdt), (IflStatus::BadInput, 0.25));
     assert!(FricCall::last_error().contains("chrlngth"));
     assert_identical("NULL chrlngth", &input, &p);
@@ -286,4 +244,50 @@ fn whole_batch_faults_write_only_pnewdt() {
         )
     };
     assert_eq!(st, IflStatus::Ok);
+}
+
+/// A batch of the 10 points of `input` (outputs into `p`; `NPROPS` 7, Δt 0.5; DSLIP, SED, SFD
+/// and CHRLNGTH NULL, TAULM too unless `taulm`) that must be refused before any array is read:
+/// `shape` = (ld, NFDIR, NSTATV). The status and PNEWDT.
+fn refused_ten_points(
+    props: &[f64],
+    input: &Points,
+    p: &mut Points,
+    shape: (usize, i32, i32),
+    taulm: bool,
+) -> (IflStatus, f64) {
+    let (ld, nfdir, nstatv) = shape;
+    let mut pnewdt = 1e36;
+    // SAFETY: the arrays are sized for 10 points with ld = 10, NFDIR 2 and NSTATV 4; the call
+    // must refuse (a bad shape, or the NULL CHRLNGTH) before it reads or writes any of them.
+    let st = unsafe {
+        ifl_fric_batch(
+            10,
+            ld,
+            nfdir,
+            props.as_ptr(),
+            7,
+            nstatv,
+            0.5,
+            p.lm.as_mut_ptr(),
+            p.tau.as_mut_ptr(),
+            p.ddtddg.as_mut_ptr(),
+            p.ddtddp.as_mut_ptr(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            p.statev.as_mut_ptr(),
+            input.dgam.as_ptr(),
+            if taulm {
+                input.taulm.as_ptr()
+            } else {
+                std::ptr::null()
+            },
+            input.press.as_ptr(),
+            input.dpress.as_ptr(),
+            std::ptr::null(),
+            &mut pnewdt,
+        )
+    };
+    (st, pnewdt)
 }

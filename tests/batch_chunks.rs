@@ -16,6 +16,7 @@ use interfacial::abi::IflStatus;
 use interfacial::abi::host::FricCall;
 use interfacial::laws::coulomb::{Contact, Coulomb, CoulombState, FrictionStatus, Increment};
 use interfacial::laws::coulomb_batch::{ChunkInput, ElasticStickKernel};
+use interfacial::props::CoulombBuilder;
 use proptest::prelude::*;
 
 /// Law-1 PROPS with elastic stick: μ = 0.3; γ_crit absolute (10⁻³) or 1 % of CHRLNGTH; with or
@@ -27,7 +28,12 @@ fn props(variant: usize) -> Vec<f64> {
     } else {
         (0.0, 0.01)
     };
-    vec![1.0, 0.3, 0.0, tau_max, gc, tol, 0.0]
+    CoulombBuilder::new()
+        .mu(0.3)
+        .tau_max(tau_max)
+        .gamma_crit(gc)
+        .slip_tolerance(tol)
+        .build_first(7)
 }
 
 const NSTATV: usize = 4;

@@ -3,13 +3,37 @@
 
 use interfacial::CUTBACK_RATIO;
 use interfacial::abi::host::{FricCall, GUARD};
+use interfacial::props::CoulombBuilder;
+
+#[path = "common/laws.rs"]
+mod laws;
+use laws::set_entry;
+#[path = "common/threads.rs"]
+mod threads;
+use threads::map_on_threads;
 
 const MU: f64 = 0.3;
 const P: f64 = 100.0;
 const GAMMA_CRIT: f64 = 1e-3;
 
+/// μ = [`MU`], γ_crit = [`GAMMA_CRIT`], elastic stick.
+fn coulomb() -> CoulombBuilder {
+    CoulombBuilder::new().mu(MU).gamma_crit(GAMMA_CRIT)
+}
+
+/// `PROPS(1..5)` of [`coulomb`] (`NPROPS` = 5).
+fn props() -> Vec<f64> {
+    coulomb().build_first(5)
+}
+
+/// `c` with these `PROPS` (and `NPROPS`).
+fn with_props(c: &mut FricCall, props: Vec<f64>) {
+    c.nprops = props.len() as i32;
+    c.props = props;
+}
+
 fn good(nfdir: i32) -> FricCall {
-    let mut c = FricCall::new(nfdir, &[1.0, MU, 0.0, 0.0, GAMMA_CRIT]);
+    let mut c = FricCall::new(nfdir, &props());
     c.press = P;
     c.dpress = 0.0;
     c.tau[0] = 10.0;
@@ -21,7 +45,7 @@ fn good(nfdir: i32) -> FricCall {
 #[test]
 fn first_contact_is_stick_stiffness_times_slip() {
     for nfdir in [1, 2] {
-        let mut c = FricCall::new(nfdir, &[1.0, MU, 0.0, 0.0, GAMMA_CRIT]);
+        let mut c = FricCall::new(nfdir, &props());
         c.press = P;
         c.dpress = P;
         c.dgam[0] = 4e-4;
@@ -90,157 +114,56 @@ fn inputs_are_never_written() {
     assert_eq!(c.drot, before.drot);
 }
 
-/// One bad input: how to break a good call, and a word the message must contain.
-struct Case {
-    what: &'static str,
-    nfdir: i32,
-    spoil: fn(&mut FricCall),
-    word: &'static str,
-}
+/// One bad input: what it is, NFDIR, how to break a good call, and a word the message must
+/// contain.
+type Case = (&'static str, i32, fn(&mut FricCall), &'static str);
 
 fn cases() -> Vec<Case> {
-    vec![
-        Case {
-            what: "NFDIR 0",
-            nfdir: 0,
-            spoil: |_| {},
-            word: "NFDIR = 0",
-        },
-        Case {
-            what: "NFDIR 3",
-            nfdir: 3,
-            spoil: |_| {},
-            word: "NFDIR = 3",
-        },
-        Case {
-            what: "NPROPS 0",
-            nfdir: 2,
-            spoil: |c| c.nprops = 0,
-            word: "NPROPS = 0",
-        },
-        Case {
-            what: "NPROPS 1",
-            nfdir: 2,
-            spoil: |c| c.nprops = 1,
-            word: "NPROPS = 1",
-        },
-        Case {
-            what: "NPROPS < 0",
-            nfdir: 2,
-            spoil: |c| c.nprops = -4,
-            word: "NPROPS = -4",
-        },
-        Case {
-            what: "unknown law",
-            nfdir: 2,
-            spoil: |c| c.props[0] = 3.0,
-            word: "PROPS(1) = 3",
-        },
-        Case {
-            what: "non-integer law",
-            nfdir: 2,
-            spoil: |c| c.props[0] = 1.5,
-            word: "integer",
-        },
-        Case {
-            what: "NaN law",
-            nfdir: 2,
-            spoil: |c| c.props[0] = f64::NAN,
-            word: "PROPS(1)",
-        },
-        Case {
-            what: "μ < 0",
-            nfdir: 2,
-            spoil: |c| c.props[1] = -0.1,
-            word: "PROPS(2)",
-        },
-        Case {
-            what: "μ NaN",
-            nfdir: 1,
-            spoil: |c| c.props[1] = f64::NAN,
-            word: "PROPS(2)",
-        },
-        Case {
-            what: "μ₂ < 0",
-            nfdir: 2,
-            spoil: |c| c.props[2] = -0.5,
-            word: "PROPS(3)",
-        },
-        Case {
-            what: "τ_max < 0",
-            nfdir: 2,
-            spoil: |c| c.props[3] = -1.0,
-            word: "PROPS(4)",
-        },
-        Case {
-            what: "γ_crit < 0",
-            nfdir: 2,
-            spoil: |c| c.props[4] = -1.0,
-            word: "PROPS(5)",
-        },
-        Case {
-            what: "stick mode 5",
-            nfdir: 2,
-            spoil: |c| {
-                c.props.resize(7, 0.0);
-                c.props[6] = 5.0;
-                c.nprops = 7;
-            },
-            word: "PROPS(7)",
-        },
-        Case {
-            what: "PROPS(8) not a μ law",
-            nfdir: 2,
-            spoil: |c| {
-                c.props.resize(8, 0.0);
-                c.props[7] = 5.0;
-                c.nprops = 8;
-            },
-            word: "PROPS(8)",
-        },
-        Case {
-            what: "NSTATV 2",
-            nfdir: 2,
-            spoil: |c| c.nstatv = 2,
-            word: "NSTATV = 2",
-        },
-        Case {
-            what: "NSTATV < 0",
-            nfdir: 1,
-            spoil: |c| c.nstatv = -1,
-            word: "NSTATV = -1",
-        },
-        Case {
-            what: "CHRLNGTH 0",
-            nfdir: 2,
-            spoil: |c| {
-                c.props[4] = 0.0;
+    let cases: &[Case] = &[
+        ("NFDIR 0", 0, |_| {}, "NFDIR = 0"),
+        ("NFDIR 3", 3, |_| {}, "NFDIR = 3"),
+        ("NPROPS 0", 2, |c| c.nprops = 0, "NPROPS = 0"),
+        ("NPROPS 1", 2, |c| c.nprops = 1, "NPROPS = 1"),
+        ("NPROPS < 0", 2, |c| c.nprops = -4, "NPROPS = -4"),
+        ("unknown law", 2, |c| set_entry(c, 1, 3.0), "PROPS(1) = 3"),
+        ("non-integer law", 2, |c| set_entry(c, 1, 1.5), "integer"),
+        ("NaN law", 2, |c| set_entry(c, 1, f64::NAN), "PROPS(1)"),
+        ("μ < 0", 2, |c| set_entry(c, 2, -0.1), "PROPS(2)"),
+        ("μ NaN", 1, |c| set_entry(c, 2, f64::NAN), "PROPS(2)"),
+        ("μ₂ < 0", 2, |c| set_entry(c, 3, -0.5), "PROPS(3)"),
+        ("τ_max < 0", 2, |c| set_entry(c, 4, -1.0), "PROPS(4)"),
+        ("γ_crit < 0", 2, |c| set_entry(c, 5, -1.0), "PROPS(5)"),
+        ("stick mode 5", 2, |c| set_entry(c, 7, 5.0), "PROPS(7)"),
+        (
+            "PROPS(8) not a μ law",
+            2,
+            |c| set_entry(c, 8, 5.0),
+            "PROPS(8)",
+        ),
+        ("NSTATV 2", 2, |c| c.nstatv = 2, "NSTATV = 2"),
+        ("NSTATV < 0", 1, |c| c.nstatv = -1, "NSTATV = -1"),
+        (
+            "CHRLNGTH 0",
+            2,
+            |c| {
+                set_entry(c, 5, 0.0);
                 c.chrlngth = 0.0;
             },
-            word: "CHRLNGTH",
-        },
-        Case {
-            what: "LM 7",
-            nfdir: 2,
-            spoil: |c| c.lm = 7,
-            word: "LM = 7",
-        },
-        Case {
-            what: "STATEV NaN",
-            nfdir: 2,
-            spoil: |c| c.statev[0] = f64::NAN,
-            word: "STATEV",
-        },
-        Case {
-            what: "overflow",
-            nfdir: 2,
-            spoil: |c| {
+            "CHRLNGTH",
+        ),
+        ("LM 7", 2, |c| c.lm = 7, "LM = 7"),
+        ("STATEV NaN", 2, |c| c.statev[0] = f64::NAN, "STATEV"),
+        (
+            "overflow",
+            2,
+            |c| {
                 c.press = 1e308;
-                c.props[1] = 10.0;
+                set_entry(c, 2, 10.0);
             },
-            word: "overflow",
-        },
-    ]
+            "overflow",
+        ),
+    ];
+    cases.to_vec()
 }
 
 /// Runs a bad call and checks the documented safe outputs.
@@ -266,11 +189,11 @@ fn check_refused(mut c: FricCall, what: &str, word: &str) {
 
 #[test]
 fn every_bad_input_is_refused_cleanly() {
-    for case in cases() {
-        let mut c = good(case.nfdir);
-        c.nfdir = case.nfdir;
-        (case.spoil)(&mut c);
-        check_refused(c, case.what, case.word);
+    for (what, nfdir, spoil, word) in cases() {
+        let mut c = good(nfdir);
+        c.nfdir = nfdir;
+        spoil(&mut c);
+        check_refused(c, what, word);
     }
 }
 
@@ -296,9 +219,7 @@ fn non_finite_inputs_are_refused_cleanly() {
 fn taulm_is_checked_only_when_used() {
     // Exact stick, stuck on entry: a NaN Lagrange stress is refused…
     let mut c = good(2);
-    c.props.resize(7, 0.0);
-    c.props[6] = 1.0;
-    c.nprops = 7;
+    with_props(&mut c, coulomb().stick(1.0).build_first(7));
     c.lm = 1;
     c.taulm = [f64::NAN, 0.0, 0.0];
     check_refused(c.clone(), "TAULM NaN", "TAULM");
@@ -316,9 +237,7 @@ fn a_null_taulm_is_refused_only_when_entering_stuck() {
     for stick in [0.0, 1.0] {
         for nfdir in [1, 2] {
             let mut c = good(nfdir);
-            c.props.resize(7, 0.0);
-            c.props[6] = stick;
-            c.nprops = 7;
+            with_props(&mut c, coulomb().stick(stick).build_first(7));
             c.null_taulm = true;
             c.lm = 1;
             check_refused(c.clone(), &format!("PROPS(7) = {stick}, LM = 1"), "TAULM");
@@ -350,10 +269,10 @@ fn short_names_are_read_only_up_to_their_hidden_length() {
 #[test]
 fn a_good_call_after_a_bad_one_works() {
     let mut c = good(2);
-    c.props[1] = -1.0;
+    with_props(&mut c, coulomb().mu(-1.0).build_first(5));
     c.call();
     assert_eq!(c.pnewdt, CUTBACK_RATIO);
-    c.props[1] = MU;
+    with_props(&mut c, props());
     c.pnewdt = 1e36;
     c.call();
     assert_eq!(c.pnewdt, 1e36);
@@ -373,35 +292,13 @@ fn results_do_not_depend_on_the_number_of_threads() {
             c
         })
         .collect();
-    let serial: Vec<FricCall> = points
-        .iter()
-        .map(|p| {
-            let mut c = p.clone();
-            c.call();
-            c
-        })
-        .collect();
-    let parallel: Vec<FricCall> = std::thread::scope(|s| {
-        let handles: Vec<_> = points
-            .chunks(50)
-            .map(|chunk| {
-                s.spawn(move || {
-                    chunk
-                        .iter()
-                        .map(|p| {
-                            let mut c = p.clone();
-                            c.call();
-                            c
-                        })
-                        .collect::<Vec<_>>()
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().unwrap())
-            .collect()
-    });
+    let run = |p: &FricCall| {
+        let mut c = p.clone();
+        c.call();
+        c
+    };
+    let serial: Vec<FricCall> = points.iter().map(run).collect();
+    let parallel = map_on_threads(&points, 50, run);
     for (a, b) in serial.iter().zip(&parallel) {
         assert_eq!(a.tau.map(f64::to_bits), b.tau.map(f64::to_bits));
         assert_eq!(a.ddtddg.map(f64::to_bits), b.ddtddg.map(f64::to_bits));
@@ -409,11 +306,9 @@ fn results_do_not_depend_on_the_number_of_threads() {
     }
 }
 
-#[test]
-fn null_pointers_are_refused_without_a_crash() {
+/// `fric_` with every pointer NULL but `pnewdt` (NULL too if so given) and zero hidden lengths.
+fn fric_all_null(pnewdt: *mut f64) {
     use std::ptr::{null, null_mut};
-    let mut pnewdt = 1e36;
-    // A host that passes nothing but PNEWDT: refused, cut-back, message names the argument.
     // SAFETY: every pointer is NULL or valid; the function must check before reading.
     unsafe {
         interfacial::abi::fric_(
@@ -425,7 +320,7 @@ fn null_pointers_are_refused_without_a_crash() {
             null_mut(),
             null_mut(),
             null_mut(),
-            &mut pnewdt,
+            pnewdt,
             null_mut(),
             null(),
             null(),
@@ -461,56 +356,18 @@ fn null_pointers_are_refused_without_a_crash() {
             0,
         );
     }
+}
+
+#[test]
+fn null_pointers_are_refused_without_a_crash() {
+    use std::ptr::{null, null_mut};
+    let mut pnewdt = 1e36;
+    // A host that passes nothing but PNEWDT: refused, cut-back, message names the argument.
+    fric_all_null(&mut pnewdt);
     assert_eq!(pnewdt, CUTBACK_RATIO);
     assert!(FricCall::last_error().contains("LM is a NULL pointer"));
     // Everything NULL, PNEWDT too: still no crash.
-    // SAFETY: as above.
-    unsafe {
-        interfacial::abi::fric_(
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            null(),
-            0,
-            0,
-            0,
-        );
-    }
+    fric_all_null(null_mut());
     // A good point whose PRESS pointer is missing.
     let mut c = good(1);
     let mut lm = 0;

@@ -7,6 +7,7 @@ mod fric_coef_common;
 use fric_coef_common::fric_coef_call;
 use interfacial::abi::fric_coef_;
 use interfacial::abi::host::FricCall;
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use proptest::prelude::*;
 use std::ffi::{c_char, c_int};
 
@@ -73,6 +74,7 @@ fn fric_coef(props: &[f64], rate: &[f64], p: &[f64], temp: &[f64]) -> Block {
     Block { coef, deriv, n }
 }
 
+/// Law 1 with γ_crit = 10⁻³ and these μ-law entries, `PROPS(1..13)` (what `fric_coef_` reads).
 fn props(
     mu: f64,
     mu2: f64,
@@ -80,22 +82,18 @@ fn props(
     p_ref: f64,
     temp: Option<(f64, f64)>,
 ) -> Vec<f64> {
-    let mut v = vec![0.0; 13];
-    v[0] = 1.0;
-    v[1] = mu;
-    v[2] = mu2;
-    v[4] = 1e-3;
+    let mut v = CoulombBuilder::new()
+        .mu(mu)
+        .mu2(mu2)
+        .gamma_crit(1e-3)
+        .p_ref(p_ref);
     if let Some((mk, dc)) = decay {
-        v[7] = 1.0;
-        v[8] = mk;
-        v[9] = dc;
+        v = v.mu_law(1.0).mu_k(mk).decay(dc);
     }
-    v[10] = p_ref;
     if let Some((b, t)) = temp {
-        v[11] = b;
-        v[12] = t;
+        v = v.b_theta(b).theta_ref(t);
     }
-    v
+    v.build_first(13)
 }
 
 #[test]
@@ -125,7 +123,12 @@ fn closed_form_values_both_directions() {
         }
     }
     // Isotropic, constant: μ in both columns, zero derivatives.
-    let b = fric_coef(&[1.0, 0.4], &[1.0], &[10.0], &[0.0]);
+    let b = fric_coef(
+        &CoulombBuilder::new().mu(0.4).build_first(2),
+        &[1.0],
+        &[10.0],
+        &[0.0],
+    );
     assert_eq!((b.mu(0, 0), b.mu(0, 1)), (0.4, 0.4));
     assert!((0..40).all(|i| b.deriv[i] == 0.0));
 }
@@ -178,6 +181,7 @@ proptest! {
 /// μ that `fric_coef_` returns for that rate and pressure.
 #[test]
 fn agrees_with_steady_sliding_through_fric() {
+    // NPROPS = 20: the whole law-1 layout, as fric_ reads it.
     let mut pr = props(0.5, 0.0, Some((0.25, 3.0)), 200.0, None);
     pr.resize(20, 0.0);
     let (p, v, dt) = (80.0, 0.7, 0.01);
@@ -242,7 +246,13 @@ fn bad_input_is_refused_cleanly() {
         ),
         (
             "adhesive law",
-            vec![2.0, 0.3, 0.5, 1.0, 0.0, 0.0, 0.1, 1e-3],
+            AdhesiveBuilder::new()
+                .coeff(0.3)
+                .coeff_static(0.5)
+                .sa(1.0)
+                .vhalf(0.1)
+                .gamma_crit(1e-3)
+                .build_first(8),
             [0.1; 2],
             [1.0; 2],
             [0.0; 2],

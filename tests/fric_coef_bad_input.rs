@@ -4,26 +4,30 @@
 //! inputs unchanged, a refusal zeroes the block / the outputs and names the routine, a success
 //! writes only finite values.
 
-#[allow(dead_code)]
-#[path = "../fuzz/src/bytes.rs"]
-mod bytes;
-#[allow(dead_code)]
-#[path = "../fuzz/src/fric_coef_case.rs"]
-mod fric_coef_case;
+#[path = "common/fuzz_cases.rs"]
+mod fuzz_cases;
+#[path = "common/laws.rs"]
+mod laws;
+use fuzz_cases::fric_coef_case;
+use laws::every_mu_law;
 
 use fric_coef_case::{
     CoefNull, CoefOutputs, ForcedSlidingCase, FricCoefCase, SlideNull, SlideOutputs,
 };
 use interfacial::abi::IflStatus;
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 
 const BAD: [f64; 3] = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
 
 /// Law 1 with every μ law on: μ_s = 0.5, μ₂ = 0.25, decay to μ_k = 0.2 at d_c = 2,
 /// p_ref = 100, b_θ = 0.01 about θ_ref = 20.
 fn all_laws() -> Vec<f64> {
-    vec![
-        1.0, 0.5, 0.25, 0.0, 0.0, 0.0, 0.0, 1.0, 0.2, 2.0, 100.0, 0.01, 20.0,
-    ]
+    every_mu_law(0.5, 0.25).build_first(13)
+}
+
+/// The adhesive law with adhesion (S_a = `PROPS(4)` = 1): not a μ law.
+fn adhesive_with_adhesion() -> Vec<f64> {
+    AdhesiveBuilder::new().coeff(0.3).sa(1.0).build_first(4)
 }
 
 /// What the message of a non-finite `PROPS(i+1)` names: the entry, except θ_ref (`PROPS(13)`),
@@ -244,7 +248,7 @@ fn fric_coef_bad_props() {
     p[11] = 0.0;
     refused(&block(&p), "PROPS(13)");
     // The adhesive law with adhesion (S_a = PROPS(4)) is not a μ law FRIC_COEF can give.
-    refused(&block(&[2.0, 0.3, 0.0, 1.0]), "PROPS(1) = 2");
+    refused(&block(&adhesive_with_adhesion()), "PROPS(1) = 2");
 }
 
 /// Row 76: μ overflowing (Θ = exp(−b_θ(θ̄ − θ_ref)) past f64::MAX) is a numerical failure.
@@ -363,7 +367,7 @@ fn forced_sliding_bad_props() {
     slide_refused(&slide(&p, 2), IflStatus::BadParameter, "PROPS(2)");
     slide_refused(&slide(&[1.0], 2), IflStatus::BadParameter, "NPROPS");
     slide_refused(
-        &slide(&[2.0, 0.3, 0.0, 1.0], 2),
+        &slide(&adhesive_with_adhesion(), 2),
         IflStatus::BadParameter,
         "PROPS(1) = 2",
     );
@@ -390,7 +394,7 @@ fn forced_sliding_edge_values() {
     assert_eq!(out.status, IflStatus::Ok);
     assert!(out.tau.iter().all(|x| *x == 0.0));
     // μ = 10 at p = 1e308 overflows τ = μp.
-    let mut c = slide(&[1.0, 10.0], 2);
+    let mut c = slide(&CoulombBuilder::new().mu(10.0).build_first(2), 2);
     c.pressure = 1e308;
     slide_refused(&c, IflStatus::NumericalFailure, "overflowed");
 }

@@ -4,6 +4,7 @@
 //! the test fails when either side changes without the other.
 
 use interfacial::abi::host::FricCall;
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 
 /// The text with comment markers removed and whitespace collapsed, so sentences that wrap
 /// across lines compare as one.
@@ -43,14 +44,9 @@ fn documented(comment: &str, page: &str) {
     }
 }
 
-/// Law 1 with the extended entries given by index (0-based into PROPS).
-fn extended(entries: &[(usize, f64)]) -> Vec<f64> {
-    let mut p = vec![0.0; 20];
-    p[..5].copy_from_slice(&[1.0, 0.4, 0.0, 0.0, 1e-3]);
-    for &(i, v) in entries {
-        p[i] = v;
-    }
-    p
+/// Law 1 with μ = 0.4, γ_crit = 10⁻³: add the extended entries, then `build()` all 20.
+fn extended() -> CoulombBuilder {
+    CoulombBuilder::new().mu(0.4).gamma_crit(1e-3)
 }
 
 /// A slipping NFDIR = 2 call at pressure 50, temperature `temp`, with the given DROT.
@@ -91,7 +87,7 @@ fn ddtddt_is_the_temperature_derivative_and_non_zero_exactly_when_mu_depends_on_
          table in θ̄; zeros otherwise",
     );
     // μ·exp(−b_θ(θ̄ − θ_ref)), b_θ = 2e-3, θ_ref = 20: DDTDDT against central differences.
-    let props = extended(&[(11, 2e-3), (12, 20.0)]);
+    let props = extended().b_theta(2e-3).theta_ref(20.0).build();
     let base = [150.0, 90.0];
     let c = slipping(&props, 3, base, IDENTITY);
     assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
@@ -119,7 +115,7 @@ fn ddtddt_is_the_temperature_derivative_and_non_zero_exactly_when_mu_depends_on_
         }
     }
     // Without a temperature law: exactly zero, and TEMP changes nothing.
-    let plain = extended(&[(2, 0.3)]);
+    let plain = extended().mu2(0.3).build();
     let (c1, c2) = (
         slipping(&plain, 3, base, IDENTITY),
         slipping(&plain, 3, [400.0, -30.0], IDENTITY),
@@ -138,7 +134,7 @@ fn drot_is_read_with_damping_only() {
          is taken out of `TAU`",
     );
     // Damping c₀ = 2: the kept viscous stress (0.7, −0.2) is rotated, so DROT changes TAU.
-    let damped = extended(&[(16, 2.0)]);
+    let damped = extended().damping(2.0).build();
     let (a, b) = (
         slipping(&damped, 5, [0.0; 2], IDENTITY),
         slipping(&damped, 5, [0.0; 2], rotation()),
@@ -152,10 +148,7 @@ fn drot_is_read_with_damping_only() {
         &b.tau[..2]
     );
     // Without damping (anisotropic extended law and the plain law): bit for bit the same.
-    for props in [
-        extended(&[(2, 0.3)]),
-        vec![1.0, 0.4, 0.0, 0.0, 1e-3, 0.0, 0.0],
-    ] {
+    for props in [extended().mu2(0.3).build(), extended().build_first(7)] {
         let (a, b) = (
             slipping(&props, 3, [0.0; 2], IDENTITY),
             slipping(&props, 3, [0.0; 2], rotation()),
@@ -174,7 +167,7 @@ fn damping_needs_nstatv_of_three_plus_nfdir() {
          `STATEV(4..3+NFDIR)` and needs `NSTATV ≥ 3 + NFDIR`",
         "with damping (`PROPS(17)` > 0) `NSTATV ≥ 3 + NFDIR`",
     );
-    let damped = extended(&[(16, 2.0)]);
+    let damped = extended().damping(2.0).build();
     let short = slipping(&damped, 3, [0.0; 2], IDENTITY);
     assert!(short.pnewdt < 1.0, "NSTATV = 3 with damping was accepted");
     assert!(FricCall::last_error().contains("NSTATV"));
@@ -201,7 +194,11 @@ fn negative_pressure_carries_the_shear_adhesion_under_law_2_only() {
         assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
         c
     };
-    let law2 = [2.0, 0.3, 0.0, s_a, 0.0, 0.0, 0.0, gamma_crit];
+    let law2 = AdhesiveBuilder::new()
+        .coeff(0.3)
+        .sa(s_a)
+        .gamma_crit(gamma_crit)
+        .build_first(8);
     // Stick: τ = (S_a/γ_crit)·Δγ; far beyond γ_crit: τ = S_a.
     let stick = run(&law2, 0.4 * gamma_crit);
     assert!(
@@ -211,7 +208,10 @@ fn negative_pressure_carries_the_shear_adhesion_under_law_2_only() {
     );
     let slide = run(&law2, 10.0 * gamma_crit);
     assert!((slide.tau[0] - s_a).abs() < 1e-12 * s_a, "{}", slide.tau[0]);
-    let law1 = [1.0, 0.3, 0.0, 0.0, gamma_crit, 0.0, 0.0];
+    let law1 = CoulombBuilder::new()
+        .mu(0.3)
+        .gamma_crit(gamma_crit)
+        .build_first(7);
     let none = run(&law1, 10.0 * gamma_crit);
     assert_eq!(none.tau[0], 0.0);
 }
@@ -223,8 +223,12 @@ fn the_damping_ramp_entries_do_not_act_through_fric() {
     assert!(text.contains(&normalised(
         "are range-checked but never act through `fric_`"
     )));
-    let without = extended(&[(16, 2.0)]);
-    let with = extended(&[(16, 2.0), (17, 0.05), (18, 0.5)]);
+    let without = extended().damping(2.0).build();
+    let with = extended()
+        .damping(2.0)
+        .damping_clearance(0.05)
+        .damping_fraction(0.5)
+        .build();
     let (a, b) = (
         slipping(&without, 5, [0.0; 2], rotation()),
         slipping(&with, 5, [0.0; 2], rotation()),
@@ -246,7 +250,7 @@ fn hht_slip_rate_in_statev_uses_the_scaled_increment() {
     )));
     let alpha = -0.2;
     // HHT α only: β = (1 − α)²/4, γ = 1/2 − α.
-    let props = extended(&[(13, alpha)]);
+    let props = extended().hht_alpha(alpha).build();
     let c = slipping(&props, 3, [0.0; 2], IDENTITY);
     assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
     assert_eq!(c.statev[2], 1.0);
@@ -270,7 +274,7 @@ fn anisotropic_sed_and_accumulated_slip_are_as_documented() {
          the actual slip increment |Δγ^sl| (not the scaled one)"
     )));
     let (mu1, mu2, p, gamma_crit) = (0.4, 0.2, 50.0, 1e-3);
-    let props = extended(&[(2, mu2)]);
+    let props = extended().mu2(mu2).build();
     let mbar = ((mu1 * mu1 + mu2 * mu2) / 2.0f64).sqrt();
     let kbar = mbar * p / gamma_crit;
     let k = [(mu1 / mbar).powi(2) * kbar, (mu2 / mbar).powi(2) * kbar];

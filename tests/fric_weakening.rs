@@ -12,6 +12,7 @@ use interfacial::abi::uinter_host::UinterCall;
 use interfacial::laws::coulomb::{Coulomb, Increment};
 use interfacial::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
 use interfacial::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 
 const GAMMA_CRIT: f64 = 1e-3;
 const P: f64 = 100.0;
@@ -19,8 +20,18 @@ const MU_S: f64 = 0.5;
 const MU_K: f64 = 0.2;
 
 /// Law 1 with the decay law: μ_s, μ_k, d_c (γ_crit absolute).
+fn decay_law(d_c: f64) -> CoulombBuilder {
+    CoulombBuilder::new()
+        .mu(MU_S)
+        .gamma_crit(GAMMA_CRIT)
+        .mu_law(1.0)
+        .mu_k(MU_K)
+        .decay(d_c)
+}
+
+/// [`decay_law`], `PROPS(1..10)`.
 fn decay_props(d_c: f64) -> Vec<f64> {
-    vec![1.0, MU_S, 0.0, 0.0, GAMMA_CRIT, 0.0, 0.0, 1.0, MU_K, d_c]
+    decay_law(d_c).build_first(10)
 }
 
 fn decay_mu(d_c: f64, v: f64) -> f64 {
@@ -38,12 +49,41 @@ struct Adhesive {
 }
 
 impl Adhesive {
-    fn props(&self) -> Vec<f64> {
-        vec![
-            2.0, self.mu_d, self.mu_s, self.sa, 0.0, self.kmu, self.vhalf, GAMMA_CRIT,
-        ]
+    fn law(&self) -> AdhesiveBuilder {
+        AdhesiveBuilder::new()
+            .coeff(self.mu_d)
+            .coeff_static(self.mu_s)
+            .sa(self.sa)
+            .kmu(self.kmu)
+            .vhalf(self.vhalf)
+            .gamma_crit(GAMMA_CRIT)
     }
 
+    /// `PROPS(1..8)`, what `fric_` reads.
+    fn props(&self) -> Vec<f64> {
+        self.law().build_first(8)
+    }
+
+    /// With K_n = 10⁶ for `uinter_`, `PROPS(1..10)`.
+    fn interface(&self) -> Vec<f64> {
+        self.law().normal_stiffness(1e6).build_first(10)
+    }
+}
+
+/// An adhesive interface with separation adhesion: μ_d 0.2, μ_s 0.5, S_a 3, N_a 5, K_n 10⁶,
+/// `PROPS(1..10)`.
+fn bonding_interface() -> Vec<f64> {
+    AdhesiveBuilder::new()
+        .coeff(0.2)
+        .coeff_static(0.5)
+        .sa(3.0)
+        .na(5.0)
+        .gamma_crit(GAMMA_CRIT)
+        .normal_stiffness(1e6)
+        .build_first(10)
+}
+
+impl Adhesive {
     /// Seed 004: S_slide = ((μ_s v_½ + μ_d v)/(v_½ + v) + k_μ v)·p + S_a.
     fn sliding(&self, v: f64, p: f64) -> f64 {
         ((self.mu_s * self.vhalf + self.mu_d * v) / (self.vhalf + v) + self.kmu * v) * p + self.sa
@@ -561,7 +601,7 @@ fn tangents_match_central_differences_in_every_branch() {
 #[test]
 fn a_fresh_open_point_is_not_bonded() {
     // Adhesive interface with separation adhesion; K_n = 1e6.
-    let props = [2.0, 0.2, 0.5, 3.0, 5.0, 0.0, 0.0, GAMMA_CRIT, 0.0, 1e6];
+    let props = bonding_interface();
     for ndir in [2, 3] {
         let mut c = UinterCall::new(ndir, &props);
         // Never touched, a small gap: h = −1 µm (tension K_n·|h| = 1 < N_a would hold a bond).
@@ -608,8 +648,7 @@ fn a_fresh_open_point_is_not_bonded() {
 fn uinter_slides_steadily_and_keeps_the_stress_at_a_stop() {
     // The same steady-sliding answer through uinter_ (closed at constant overclosure).
     for law in ADHESIVE {
-        let mut props = law.props();
-        props.extend([0.0, 1e6]);
+        let props = law.interface();
         let (v, r) = (1e-2, 0.1);
         let mut c = UinterCall::new(2, &props);
         c.rdisp[0] = P / 1e6;
@@ -666,8 +705,7 @@ fn a_negative_start_rate_after_a_slip_is_refused() {
         c.call();
         assert_eq!(c.pnewdt, 1e36);
     }
-    let mut props = law.props();
-    props.extend([0.0, 1e6]);
+    let props = law.interface();
     let mut u = UinterCall::new(2, &props);
     u.rdisp[0] = 1e-4;
     u.stress[..2].copy_from_slice(&[P, 30.0]);
@@ -694,8 +732,7 @@ fn a_negative_start_rate_after_a_slip_is_refused() {
 fn tau_max_between_the_kinetic_and_static_strength() {
     let d_c = 200.0;
     let tau_max = 35.0;
-    let mut props = decay_props(d_c);
-    props[3] = tau_max;
+    let props = decay_law(d_c).tau_max(tau_max).build_first(10);
     for nfdir in [1, 2] {
         for x in [0.2, 1.0, 3.0, 10.0] {
             let v = x / d_c;
@@ -719,7 +756,7 @@ fn tau_max_between_the_kinetic_and_static_strength() {
 #[test]
 fn a_sliding_point_separates_freely_a_stuck_one_bonds() {
     // μ_d 0.2, μ_s 0.5, S_a 3, N_a 5, K_n 1e6; closed at p = 100.
-    let props = [2.0, 0.2, 0.5, 3.0, 5.0, 0.0, 0.0, GAMMA_CRIT, 0.0, 1e6];
+    let props = bonding_interface();
     for stop_first in [false, true] {
         let mut c = UinterCall::new(2, &props);
         c.rdisp[0] = P / 1e6;

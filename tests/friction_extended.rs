@@ -7,7 +7,10 @@
 
 #[path = "common/central.rs"]
 mod central;
-use central::{Shift, along_dgam, along_press, along_temp, central_tau};
+#[path = "common/laws.rs"]
+mod laws;
+use central::{Shift, along_dgam, along_press, along_temp, central_tau, slide_steadily};
+use laws::{every_mu_law, set_entry};
 
 use interfacial::abi::host::FricCall;
 use interfacial::laws::coulomb::{Contact, Coulomb, EntryFlag, Increment};
@@ -15,6 +18,7 @@ use interfacial::laws::coulomb_extended::{
     Conditions, Damping, ExtendedCoulomb, ExtendedState, Hht, MAX_LOCAL_ITERATIONS,
 };
 use interfacial::laws::friction_coefficient::CoefficientLaw;
+use interfacial::props::CoulombBuilder;
 use proptest::prelude::*;
 use std::cell::Cell;
 
@@ -40,31 +44,26 @@ struct Params {
 
 impl Params {
     fn props(&self) -> Vec<f64> {
-        let mut p = vec![0.0; 20];
-        p[0] = 1.0;
-        p[1] = self.mu1;
-        p[2] = self.mu2;
-        p[3] = self.tau_max;
-        p[4] = self.gamma_crit;
-        p[6] = if self.exact { 1.0 } else { 0.0 };
+        let mut p = CoulombBuilder::new()
+            .mu(self.mu1)
+            .mu2(self.mu2)
+            .tau_max(self.tau_max)
+            .gamma_crit(self.gamma_crit)
+            .stick(if self.exact { 1.0 } else { 0.0 })
+            .p_ref(self.p_ref)
+            .damping(self.c0)
+            .frozen(if self.frozen { 1.0 } else { 0.0 });
         if let Some((mu_k, dc)) = self.decay {
-            p[7] = 1.0;
-            p[8] = mu_k;
-            p[9] = dc;
+            p = p.mu_law(1.0).mu_k(mu_k).decay(dc);
         }
-        p[10] = self.p_ref;
         if let Some((b, t)) = self.temperature {
-            p[11] = b;
-            p[12] = t;
+            p = p.b_theta(b).theta_ref(t);
         }
         if let Some(a) = self.hht_alpha {
-            p[13] = a;
             // β and γ from α (Abaqus's relations), γ given to switch HHT on even for α = 0.
-            p[15] = 0.5 - a;
+            p = p.hht_alpha(a).hht_gamma(0.5 - a);
         }
-        p[16] = self.c0;
-        p[19] = if self.frozen { 1.0 } else { 0.0 };
-        p
+        p.build()
     }
 
     fn mbar(&self, nfdir: usize) -> f64 {
@@ -383,10 +382,15 @@ fn traction<const N: usize>(c: Contact<N>) -> interfacial::laws::coulomb::Tracti
 #[test]
 fn f3_ellipse() {
     let (mu1, mu2, p, gc) = (0.5, 0.2, 100.0, 1e-3);
+    let ellipse = CoulombBuilder::new()
+        .mu(mu1)
+        .mu2(mu2)
+        .gamma_crit(gc)
+        .build_first(5);
     for k in 0..12 {
         let angle = f64::from(k) * std::f64::consts::PI / 6.0 + 0.1;
         let d = [angle.cos(), angle.sin()];
-        let mut c = FricCall::new(2, &[1.0, mu1, mu2, 0.0, gc]);
+        let mut c = FricCall::new(2, &ellipse);
         c.press = p;
         for _ in 0..60 {
             c.dgam = [d[0] * 0.3 * gc, d[1] * 0.3 * gc, 0.0];
@@ -407,7 +411,7 @@ fn f3_ellipse() {
         assert!(t[0] * w[0] + t[1] * w[1] > 0.0);
     }
     // Stick stiffnesses k_i = (μ_i/μ̄)² k̄_s.
-    let mut c = FricCall::new(2, &[1.0, mu1, mu2, 0.0, gc]);
+    let mut c = FricCall::new(2, &ellipse);
     c.press = p;
     c.dpress = p;
     c.dgam = [1e-6, 1e-6, 0.0];
@@ -428,35 +432,21 @@ fn f4_velocity_steps() {
     for nfdir in [1usize, 2] {
         for exact in [false, true] {
             for frozen in [false, true] {
-                let mut props = vec![0.0; 20];
-                props[..10].copy_from_slice(&[
-                    1.0,
-                    mu_s,
-                    0.0,
-                    0.0,
-                    gc,
-                    0.0,
-                    if exact { 1.0 } else { 0.0 },
-                    1.0,
-                    mu_k,
-                    dc,
-                ]);
-                props[19] = if frozen { 1.0 } else { 0.0 };
+                let props = CoulombBuilder::new()
+                    .mu(mu_s)
+                    .gamma_crit(gc)
+                    .stick(if exact { 1.0 } else { 0.0 })
+                    .mu_law(1.0)
+                    .mu_k(mu_k)
+                    .decay(dc)
+                    .frozen(if frozen { 1.0 } else { 0.0 })
+                    .build();
                 let mut c = FricCall::new(nfdir as i32, &props);
                 c.press = p;
                 c.dtime = dt;
                 let dir = if nfdir == 1 { [1.0, 0.0] } else { [0.6, 0.8] };
                 for v in [0.05, 0.5, 0.2, 1.5] {
-                    for _ in 0..40 {
-                        for i in 0..nfdir {
-                            c.dgam[i] = dir[i] * v * dt;
-                        }
-                        c.call();
-                        assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
-                        assert_eq!(c.lm, 0);
-                        c.dpress = 0.0;
-                    }
-                    let tau_eq = (0..nfdir).map(|i| c.tau[i].powi(2)).sum::<f64>().sqrt();
+                    let tau_eq = slide_steadily(&mut c, nfdir, dir, v, 40);
                     let expected = (mu_k + (mu_s - mu_k) * (-dc * v).exp()) * p;
                     assert!(
                         (tau_eq - expected).abs() < 1e-12 * expected,
@@ -474,9 +464,12 @@ fn f4_velocity_steps() {
 #[test]
 fn f5_pressure_dependent_mu_with_cap() {
     let (mu0, p_ref, tau_max, gc) = (0.5, 100.0, 30.0, 1e-3);
-    let mut props = vec![0.0; 11];
-    props[..5].copy_from_slice(&[1.0, mu0, 0.0, tau_max, gc]);
-    props[10] = p_ref;
+    let props = CoulombBuilder::new()
+        .mu(mu0)
+        .tau_max(tau_max)
+        .gamma_crit(gc)
+        .p_ref(p_ref)
+        .build_first(11);
     let mut c = FricCall::new(1, &props);
     let mut p_before = 0.0;
     for k in 1..=200 {
@@ -513,15 +506,14 @@ fn f5_pressure_dependent_mu_with_cap() {
 fn damping_closed_forms() {
     let (mu, p, gc, c0, dt, v) = (0.3, 100.0, 1e-3, 2.0, 0.05, 0.4);
     for hht in [None, Some(-0.1)] {
-        let mut props = vec![0.0; 17];
-        props[..5].copy_from_slice(&[1.0, mu, 0.0, 0.0, gc]);
-        props[16] = c0;
+        let mut props = CoulombBuilder::new().mu(mu).gamma_crit(gc).damping(c0);
         let rate_dt = if let Some(a) = hht {
-            props[13] = a;
+            props = props.hht_alpha(a);
             0.25 * (1.0 - a) * (1.0 - a) * dt / (0.5 - a)
         } else {
             dt
         };
+        let props = props.build_first(17);
         let mut c = FricCall::new(2, &props);
         c.statev = vec![0.0; 5 + 2];
         c.nstatv = 5;
@@ -567,9 +559,11 @@ fn damping_closed_forms() {
 /// stress, so with DGAM = 0 the answer is zero (identity DROT would leave a residual stress).
 #[test]
 fn damping_state_is_rotated_by_drot() {
-    let mut props = vec![0.0; 17];
-    props[..5].copy_from_slice(&[1.0, 0.3, 0.0, 0.0, 1e-3]);
-    props[16] = 2.0;
+    let props = CoulombBuilder::new()
+        .mu(0.3)
+        .gamma_crit(1e-3)
+        .damping(2.0)
+        .build_first(17);
     let setup = |drot: [f64; 4]| {
         let mut c = FricCall::new(2, &props);
         c.statev = vec![0.0, 0.0, 1.0, 1.5, -0.5, 0.0, 0.0];
@@ -617,11 +611,16 @@ fn hht_scales_the_rate_increment() {
     let beta = 0.25 * (1.2f64).powi(2);
     let gamma = 0.7;
     assert!((hht.rate_increment(dt) - beta * dt / gamma).abs() < 1e-18);
-    let mut props = vec![0.0; 16];
-    props[..10].copy_from_slice(&[1.0, 0.5, 0.0, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.2, 3.0]);
-    props[13] = alpha;
-    props[14] = beta;
-    props[15] = gamma;
+    let props = CoulombBuilder::new()
+        .mu(0.5)
+        .gamma_crit(1e-3)
+        .mu_law(1.0)
+        .mu_k(0.2)
+        .decay(3.0)
+        .hht_alpha(alpha)
+        .hht_beta(beta)
+        .hht_gamma(gamma)
+        .build_first(16);
     let mut c = FricCall::new(1, &props);
     c.press = 10.0;
     c.dtime = dt;
@@ -724,38 +723,34 @@ fn local_solve_iterations_over_a_sweep() {
 /// LM, TAU and STATEV unchanged, nothing written past the arrays.
 #[test]
 fn bad_extended_input_is_refused_cleanly() {
-    let good = {
-        let mut p = vec![0.0; 20];
-        p[..10].copy_from_slice(&[1.0, 0.4, 0.2, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.2, 2.0]);
-        p[10] = 100.0;
-        p[11] = 0.01;
-        p[12] = 20.0;
-        p[16] = 1.0;
-        p
-    };
+    let good = every_mu_law(0.4, 0.2).gamma_crit(1e-3).damping(1.0).build();
     type Spoil = fn(&mut FricCall);
     let cases: &[(&str, Spoil, &str)] = &[
-        ("μ₂ < 0", |c| c.props[2] = -0.2, "PROPS(3)"),
-        ("μ law 3", |c| c.props[7] = 3.0, "PROPS(8)"),
-        ("μ_k < 0", |c| c.props[8] = -0.1, "PROPS(9)"),
-        ("μ_k NaN", |c| c.props[8] = f64::NAN, "PROPS(9)"),
-        ("d_c < 0", |c| c.props[9] = -2.0, "PROPS(10)"),
-        ("d_c = 0", |c| c.props[9] = 0.0, "PROPS(10)"),
+        ("μ₂ < 0", |c| set_entry(c, 3, -0.2), "PROPS(3)"),
+        ("μ law 3", |c| set_entry(c, 8, 3.0), "PROPS(8)"),
+        ("μ_k < 0", |c| set_entry(c, 9, -0.1), "PROPS(9)"),
+        ("μ_k NaN", |c| set_entry(c, 9, f64::NAN), "PROPS(9)"),
+        ("d_c < 0", |c| set_entry(c, 10, -2.0), "PROPS(10)"),
+        ("d_c = 0", |c| set_entry(c, 10, 0.0), "PROPS(10)"),
         (
             "μ_s = 0 with decay",
             |c| {
-                c.props[1] = 0.0;
-                c.props[2] = 0.0;
+                set_entry(c, 2, 0.0);
+                set_entry(c, 3, 0.0);
             },
             "PROPS(2)",
         ),
-        ("p_ref < 0", |c| c.props[10] = -1.0, "PROPS(11)"),
-        ("b_θ = Inf", |c| c.props[11] = f64::INFINITY, "PROPS(12)"),
-        ("HHT α > 0", |c| c.props[13] = 0.2, "PROPS(14)"),
-        ("HHT β < 0", |c| c.props[14] = -0.2, "PROPS(14)"),
-        ("c₀ < 0", |c| c.props[16] = -1.0, "PROPS(17)"),
-        ("f ≥ 1", |c| c.props[18] = 1.0, "PROPS(17)"),
-        ("freeze 2", |c| c.props[19] = 2.0, "PROPS(20)"),
+        ("p_ref < 0", |c| set_entry(c, 11, -1.0), "PROPS(11)"),
+        (
+            "b_θ = Inf",
+            |c| set_entry(c, 12, f64::INFINITY),
+            "PROPS(12)",
+        ),
+        ("HHT α > 0", |c| set_entry(c, 14, 0.2), "PROPS(14)"),
+        ("HHT β < 0", |c| set_entry(c, 15, -0.2), "PROPS(14)"),
+        ("c₀ < 0", |c| set_entry(c, 17, -1.0), "PROPS(17)"),
+        ("f ≥ 1", |c| set_entry(c, 19, 1.0), "PROPS(17)"),
+        ("freeze 2", |c| set_entry(c, 20, 2.0), "PROPS(20)"),
         (
             "PROPS(21)",
             |c| {
@@ -822,16 +817,17 @@ fn steady_transport_viscous_stick() {
         .flat_map(|(v, f)| decays.map(|d| (v, f, d)))
     {
         for nfdir in [1usize, 2] {
-            let mut props = vec![0.0; 16];
-            props[15] = variant;
-            props[..7].copy_from_slice(&[1.0, mu, 0.0, 0.0, 0.0, ff, 3.0]);
+            let mut props = CoulombBuilder::new()
+                .mu(mu)
+                .slip_tolerance(ff)
+                .stick(3.0)
+                .omega(omega)
+                .axis(3.0) // z
+                .viscous_reference(variant);
             if let Some((mk, dc)) = decay {
-                props[7] = 1.0;
-                props[8] = mk;
-                props[9] = dc;
+                props = props.mu_law(1.0).mu_k(mk).decay(dc);
             }
-            props[13] = omega;
-            props[14] = 3.0; // z axis
+            let props = props.build_first(16);
             let at = |dgam: [f64; 2], press: f64| {
                 let mut c = FricCall::new(nfdir as i32, &props);
                 c.coords = [0.3, 0.4, 7.0]; // R = 0.5 about z
@@ -909,39 +905,42 @@ fn steady_transport_viscous_stick() {
 /// Steady transport bad input: ω ≤ 0, a bad axis, γ_crit given, a point on the axis, DTIME ≤ 0.
 #[test]
 fn steady_transport_bad_input() {
-    let mut good = vec![0.0; 16];
-    good[..7].copy_from_slice(&[1.0, 0.4, 0.0, 0.0, 0.0, 0.01, 3.0]);
-    good[13] = 20.0;
+    let good = CoulombBuilder::new()
+        .mu(0.4)
+        .slip_tolerance(0.01)
+        .stick(3.0)
+        .omega(20.0)
+        .build_first(16);
     type Spoil = fn(&mut FricCall);
     let cases: &[(&str, Spoil, &str)] = &[
-        ("ω = 0", |c| c.props[13] = 0.0, "PROPS(14)"),
-        ("ω < 0", |c| c.props[13] = -1.0, "PROPS(14)"),
-        ("axis 4", |c| c.props[14] = 4.0, "PROPS(15)"),
-        ("γ_crit given", |c| c.props[4] = 1e-3, "PROPS(5)"),
+        ("ω = 0", |c| set_entry(c, 14, 0.0), "PROPS(14)"),
+        ("ω < 0", |c| set_entry(c, 14, -1.0), "PROPS(14)"),
+        ("axis 4", |c| set_entry(c, 15, 4.0), "PROPS(15)"),
+        ("γ_crit given", |c| set_entry(c, 5, 1e-3), "PROPS(5)"),
         (
             "PROPS(16) = 0.5",
-            |c| c.props[15] = 0.5,
+            |c| set_entry(c, 16, 0.5),
             "PROPS(16) = 0.5 must select",
         ),
         (
             "PROPS(16) = 2",
-            |c| c.props[15] = 2.0,
+            |c| set_entry(c, 16, 2.0),
             "PROPS(16) = 2 must select",
         ),
         (
             "PROPS(16) = -1",
-            |c| c.props[15] = -1.0,
+            |c| set_entry(c, 16, -1.0),
             "PROPS(16) = -1 must select",
         ),
         (
             "PROPS(16) NaN",
-            |c| c.props[15] = f64::NAN,
+            |c| set_entry(c, 16, f64::NAN),
             "PROPS(16) = NaN must select",
         ),
         (
             "on the axis, seed 003",
             |c| {
-                c.props[15] = 1.0;
+                set_entry(c, 16, 1.0);
                 c.coords = [0.0, 0.0, 3.0];
             },
             "F_f·ω·R must be > 0",
@@ -986,16 +985,18 @@ fn steady_transport_anisotropic_seed_003() {
     let a = [mu1 / mbar, mu2 / mbar];
     let rate_crit = ff * omega * 2.0; // R = 2 about y
     for decay in [None, Some((0.1, 2.0))] {
-        let mut props = vec![0.0; 16];
-        props[..7].copy_from_slice(&[1.0, mu1, mu2, 0.0, 0.0, ff, 3.0]);
+        let mut props = CoulombBuilder::new()
+            .mu(mu1)
+            .mu2(mu2)
+            .slip_tolerance(ff)
+            .stick(3.0)
+            .omega(omega)
+            .axis(2.0) // y
+            .viscous_reference(1.0); // seed 003
         if let Some((mk, dc)) = decay {
-            props[7] = 1.0;
-            props[8] = mk;
-            props[9] = dc;
+            props = props.mu_law(1.0).mu_k(mk).decay(dc);
         }
-        props[13] = omega;
-        props[14] = 2.0; // y axis
-        props[15] = 1.0; // seed 003
+        let props = props.build_first(16);
         // μ̄(r): every μ law multiplies μ₁ and μ₂ by the same factor.
         let mbar_of = |r: f64| match decay {
             None => mbar,
@@ -1076,11 +1077,15 @@ fn steady_transport_anisotropic_seed_003() {
 fn steady_transport_seed_003_is_seed_000_with_twice_the_tolerance() {
     let (f, omega, dt, p) = (0.004, 30.0, 0.05, 80.0);
     let call = |mu2: f64, tolerance: f64, variant: f64, dgam: [f64; 2]| {
-        let mut props = vec![0.0; 16];
-        props[..7].copy_from_slice(&[1.0, 0.3, mu2, 0.0, 0.0, tolerance, 3.0]);
-        props[13] = omega;
-        props[14] = 1.0; // x axis
-        props[15] = variant;
+        let props = CoulombBuilder::new()
+            .mu(0.3)
+            .mu2(mu2)
+            .slip_tolerance(tolerance)
+            .stick(3.0)
+            .omega(omega)
+            .axis(1.0) // x
+            .viscous_reference(variant)
+            .build_first(16);
         let mut c = FricCall::new(2, &props);
         c.coords = [5.0, 0.6, -0.8]; // R = 1 about x
         c.press = p;
@@ -1137,12 +1142,17 @@ fn forced_sliding_split() {
         };
         (status, tau, damping, stiffness)
     };
-    let mut decay = vec![0.0; 10];
-    decay[..10].copy_from_slice(&[1.0, 0.5, 0.0, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.2, 3.0]);
-    let mut aniso = decay.clone();
-    aniso[2] = 0.25;
-    let capped = [1.0, 0.5, 0.0, 30.0];
-    for props in [&[1.0, 0.5][..], &decay[..], &aniso[..], &capped[..]] {
+    let plain = CoulombBuilder::new().mu(0.5);
+    let decay = plain
+        .clone()
+        .gamma_crit(1e-3)
+        .mu_law(1.0)
+        .mu_k(0.2)
+        .decay(3.0);
+    let aniso = decay.clone().mu2(0.25).build_first(10);
+    let capped = plain.clone().tau_max(30.0).build_first(4);
+    let (plain, decay) = (plain.build_first(2), decay.build_first(10));
+    for props in [&plain[..], &decay[..], &aniso[..], &capped[..]] {
         for nfdir in [1, 2] {
             let n = nfdir as usize;
             let v = [0.3, -0.4];
@@ -1187,13 +1197,13 @@ fn forced_sliding_split() {
             }
         }
     }
-    let (status, tau, damping, stiffness) = call(&[1.0, 0.5], 2, [0.0, 0.0], 10.0);
+    let (status, tau, damping, stiffness) = call(&plain, 2, [0.0, 0.0], 10.0);
     assert_eq!(status, IflStatus::Ok);
     assert!(tau == [0.0; 2] && damping == [0.0; 4] && stiffness == [0.0; 2]);
     for (props, nfdir, v, word) in [
         (&[1.0, -0.5][..], 2, [0.1, 0.0], "PROPS(2)"),
-        (&[1.0, 0.5][..], 3, [0.1, 0.0], "nfdir = 3"),
-        (&[1.0, 0.5][..], 2, [f64::NAN, 0.0], "NaN"),
+        (&plain[..], 3, [0.1, 0.0], "nfdir = 3"),
+        (&plain[..], 2, [f64::NAN, 0.0], "NaN"),
     ] {
         let (status, tau, _, _) = call(props, nfdir, v, 10.0);
         assert_ne!(status, IflStatus::Ok);
@@ -1215,11 +1225,16 @@ fn forced_sliding_split() {
 /// number, while f = 10⁻¹⁵³·Θ alone underflows to 0.
 #[test]
 fn friction_stress_of_a_huge_coefficient_times_a_tiny_factor_is_kept() {
-    let mut props = vec![0.0; 20];
-    props[..13].copy_from_slice(&[
-        1.0, 1e150, 0.5e150, 0.0, 1e-3, 0.0, 0.0, 1.0, 1e-3, 1.0, 0.0, 1.0, 0.0,
-    ]);
-    props[19] = 1.0;
+    let props = CoulombBuilder::new()
+        .mu(1e150)
+        .mu2(0.5e150)
+        .gamma_crit(1e-3)
+        .mu_law(1.0)
+        .mu_k(1e-3)
+        .decay(1.0)
+        .b_theta(1.0)
+        .frozen(1.0)
+        .build();
     let mut c = FricCall::new(2, &props);
     c.press = 1.0;
     c.dpress = 0.0;
@@ -1250,26 +1265,21 @@ fn a_vanishing_start_pressure_is_answered() {
     const THETA_REF: f64 = 20.0;
     const P_REF: f64 = 1e6;
     let (mu, gc) = (0.3, 1e-3);
-    let mut props = vec![0.0; 20];
-    props[..5].copy_from_slice(&[1.0, mu, 0.0, 0.0, gc]);
-    // (name, PROPS(8..13) changes by 0-based index, μ at θ̄ = 25 and p → 0)
-    type Law = (&'static str, &'static [(usize, f64)], f64);
-    let laws: [Law; 3] = [
+    let props = CoulombBuilder::new().mu(mu).gamma_crit(gc);
+    // (name, the μ law's PROPS(8..13), μ at θ̄ = 25 and p → 0)
+    let laws = [
         (
             "temperature",
-            &[(11, B_THETA), (12, THETA_REF)],
+            props.clone().b_theta(B_THETA).theta_ref(THETA_REF),
             mu * (-B_THETA * (25.0 - THETA_REF)).exp(),
         ),
-        ("pressure", &[(10, P_REF)], mu),
+        ("pressure", props.clone().p_ref(P_REF), mu),
         // Decay law at rest (first contact, γ̇ = 0 in stick): μ = μ_s.
-        ("decay", &[(7, 1.0), (8, 0.1), (9, 4.0)], mu),
+        ("decay", props.mu_law(1.0).mu_k(0.1).decay(4.0), mu),
     ];
-    for (name, entries, mu_eff) in laws {
+    for (name, law, mu_eff) in laws {
+        let law = law.build();
         for p in [1e-200, 1e-312] {
-            let mut law = props.clone();
-            for &(i, v) in entries {
-                law[i] = v;
-            }
             let run = |temp: f64| {
                 let mut c = FricCall::new(1, &law);
                 c.press = p;

@@ -13,12 +13,13 @@ mod central;
 mod config_file;
 #[path = "common/fric_coef.rs"]
 mod fric_coef_common;
-use central::{Shift, along_dgam, along_press, along_temp, central_tau};
+use central::{Shift, along_dgam, along_press, along_temp, central_tau, slide_steadily};
 use fric_coef_common::fric_coef_call;
 
 use std::process::Command;
 
 use interfacial::abi::host::FricCall;
+use interfacial::props::CoulombBuilder;
 use proptest::prelude::*;
 
 /// "RATE": μ(γ̇) falling from 0.6 to 0.3 over two segments (and a conductance, to show both
@@ -58,16 +59,20 @@ fn rate_mu(v: f64) -> f64 {
     }
 }
 
+/// Law 1 with the μ table (`PROPS(8) = 2`) of the interaction, μ_ref = `mu_ref`.
+fn table_law(mu_ref: f64, mu2: f64, gc: f64, exact: bool, frozen: bool) -> CoulombBuilder {
+    CoulombBuilder::new()
+        .mu(mu_ref)
+        .mu2(mu2)
+        .gamma_crit(gc)
+        .stick(if exact { 1.0 } else { 0.0 })
+        .mu_law(2.0)
+        .frozen(if frozen { 1.0 } else { 0.0 })
+}
+
+/// [`table_law`], all 20 entries.
 fn table_props(mu_ref: f64, mu2: f64, gc: f64, exact: bool, frozen: bool) -> Vec<f64> {
-    let mut p = vec![0.0; 20];
-    p[0] = 1.0;
-    p[1] = mu_ref;
-    p[2] = mu2;
-    p[4] = gc;
-    p[6] = if exact { 1.0 } else { 0.0 };
-    p[7] = 2.0;
-    p[19] = if frozen { 1.0 } else { 0.0 };
-    p
+    table_law(mu_ref, mu2, gc, exact, frozen).build()
 }
 
 /// Scene F4 with a table: after a few increments at slip velocity v, τ = μ_tab(v)·p (elastic
@@ -85,15 +90,7 @@ fn f4_velocity_steps_follow_the_table() {
                 c.dtime = dt;
                 let dir = if nfdir == 1 { [1.0, 0.0] } else { [0.6, 0.8] };
                 for v in [0.05, 0.5, 0.2, 1.5, 0.8] {
-                    for _ in 0..40 {
-                        for i in 0..nfdir {
-                            c.dgam[i] = dir[i] * v * dt;
-                        }
-                        c.call();
-                        assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
-                        assert_eq!(c.lm, 0);
-                    }
-                    let tau_eq = (0..nfdir).map(|i| c.tau[i].powi(2)).sum::<f64>().sqrt();
+                    let tau_eq = slide_steadily(&mut c, nfdir, dir, v, 40);
                     let expected = rate_mu(v) * p;
                     assert!(
                         (tau_eq - expected).abs() < 1e-11 * expected,
@@ -325,44 +322,27 @@ fn fric_coef_reads_the_table() {
 #[test]
 fn bad_props_and_missing_interaction_are_refused() {
     setup();
-    let good = table_props(1.0, 0.0, GC, false, false);
+    let good = || table_law(1.0, 0.0, GC, false, false);
     let cases: Vec<(&str, Vec<f64>, &str, &str)> = vec![
         (
             "missing interaction",
-            good.clone(),
+            good().build(),
             "NOPE",
             "[interactions.NOPE.friction]",
         ),
         (
             "PROPS(9) with table",
-            {
-                let mut p = good.clone();
-                p[8] = 0.2;
-                p
-            },
+            good().mu_k(0.2).build(),
             "RATE",
             "PROPS(9)",
         ),
         (
             "PROPS(12) with table",
-            {
-                let mut p = good.clone();
-                p[11] = 0.01;
-                p
-            },
+            good().b_theta(0.01).build(),
             "RATE",
             "PROPS(12)",
         ),
-        (
-            "μ_ref = 0",
-            {
-                let mut p = good.clone();
-                p[1] = 0.0;
-                p
-            },
-            "RATE",
-            "PROPS(2)",
-        ),
+        ("μ_ref = 0", good().mu(0.0).build(), "RATE", "PROPS(2)"),
     ];
     for (what, props, name, word) in cases {
         let mut c = FricCall::new(2, &props);
@@ -518,7 +498,11 @@ fn bad_tables() {
 /// the plain law's, never ∞.
 #[test]
 fn extended_slip_rate_saturates_over_a_subnormal_dtime() {
-    let mut c = FricCall::new(2, &[1.0, 2524902.34375, 49.881744384765625, 0.0, 0.0]);
+    let props = CoulombBuilder::new()
+        .mu(2524902.34375)
+        .mu2(49.881744384765625)
+        .build_first(5);
+    let mut c = FricCall::new(2, &props);
     c.tau[..2].copy_from_slice(&[49.88, 49.88]);
     c.dgam[..2].copy_from_slice(&[49.88, 49.88]);
     c.press = 0.0;

@@ -5,23 +5,12 @@
 //! a replayed input is checked for exactly the properties the fuzzer checked. The explicit
 //! cases below do not depend on the byte encoding and stay meaningful if it changes.
 
-#[allow(dead_code)]
-#[path = "../fuzz/src/batch_case.rs"]
-mod batch_case;
-#[allow(dead_code)]
-#[path = "../fuzz/src/bytes.rs"]
-mod bytes;
-#[allow(dead_code)]
-#[path = "../fuzz/src/fric_case.rs"]
-mod fric_case;
-#[allow(dead_code)]
-#[path = "../fuzz/src/gapcon_case.rs"]
-mod gapcon_case;
-#[allow(dead_code)]
-#[path = "../fuzz/src/uinter_case.rs"]
-mod uinter_case;
+#[path = "common/fuzz_cases.rs"]
+mod fuzz_cases;
+use fuzz_cases::{batch_case, fric_case, gapcon_case, uinter_case};
 
 use fric_case::{FricCase, FricOutputs};
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 
 /// Runs the fuzzer's property check and returns the outputs; fails the test with the property
 /// that was violated.
@@ -63,7 +52,8 @@ fn crash_1_replays_clean() {
 #[test]
 fn slip_rate_over_a_subnormal_dtime_saturates_and_the_state_stays_usable() {
     // μ = 0.3, γ_crit = 1e-3, p = 10: slip of 1 − 1e-3 in 2-D over Δt = 5e-324.
-    let mut c = FricCase::coulomb(2, &[1.0, 0.3, 0.0, 0.0, 1e-3, 0.0, 0.0]);
+    let props = CoulombBuilder::new().mu(0.3).gamma_crit(1e-3);
+    let mut c = FricCase::coulomb(2, &props.build_first(7));
     c.press = 10.0;
     c.dgam = vec![0.6, 0.8];
     c.dtime = 5e-324;
@@ -81,7 +71,8 @@ fn slip_rate_over_a_subnormal_dtime_saturates_and_the_state_stays_usable() {
 
 #[test]
 fn accumulated_slip_near_f64_max_saturates() {
-    let mut c = FricCase::coulomb(1, &[1.0, 0.3, 0.0, 0.0, 1e-3]);
+    let props = CoulombBuilder::new().mu(0.3).gamma_crit(1e-3);
+    let mut c = FricCase::coulomb(1, &props.build_first(5));
     c.press = 10.0;
     c.dgam = vec![1e300];
     c.statev = vec![f64::MAX, 0.0, 1.0];
@@ -118,7 +109,8 @@ fn crash_2_replays_clean() {
 
 /// 2-D slip at 45° with τ_crit = μp = p/2: the expected answer at every scale of Δγ.
 fn slip_at_45_degrees(dgam: f64, gamma_crit: f64, p: f64) -> FricOutputs {
-    let mut c = FricCase::coulomb(2, &[1.0, 0.5, 0.0, 0.0, gamma_crit]);
+    let props = CoulombBuilder::new().mu(0.5).gamma_crit(gamma_crit);
+    let mut c = FricCase::coulomb(2, &props.build_first(5));
     c.press = p;
     c.dgam = vec![dgam, dgam];
     let out = checked(&c);
@@ -298,7 +290,7 @@ fn crash_4_replays_clean() {
 fn uinter_shear_far_past_the_stick_limit_is_the_strength() {
     for ratio in [1e6, 1e12] {
         // μ_d = 0.5, S_a = 2, K_n = 1000, γ_crit = 1e-6 (absolute), h = 0.01: p = 10.
-        let props = [2.0, 0.5, 0.0, 2.0, 0.0, 0.0, 0.0, 1e-6, 0.0, 1000.0];
+        let props = sliding_uinter_law(0.5).sa(2.0).build_first(10);
         let mut c = uinter_case::UinterCase::decode(&[]);
         c.ndir = 3;
         c.nstatv = 3;
@@ -349,13 +341,21 @@ fn crashes_5_and_6_replay_clean() {
     }
 }
 
+/// The adhesive law of [`sliding_uinter`]: μ_d = `mu`, K_n = 1000, γ_crit = 1e-6.
+fn sliding_uinter_law(mu: f64) -> AdhesiveBuilder {
+    AdhesiveBuilder::new()
+        .coeff(mu)
+        .gamma_crit(1e-6)
+        .normal_stiffness(1000.0)
+}
+
 /// A closed, sliding `uinter_` point: μ_d = 0.5, K_n = 1000, h = 0.01 (p = 10), γ_crit = 1e-6.
 fn sliding_uinter(mu: f64) -> uinter_case::UinterCase {
     let mut c = uinter_case::UinterCase::decode(&[]);
     c.ndir = 2;
     c.nstatv = 3;
     c.nprops = 10;
-    c.props = vec![2.0, mu, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-6, 0.0, 1000.0];
+    c.props = sliding_uinter_law(mu).build_first(10);
     c.stress = vec![10.0, 0.0];
     c.statev = vec![0.0; 3];
     c.rdisp = vec![0.01, 0.0];
@@ -492,7 +492,13 @@ fn uinter_breaking_bond_passes_the_spd_property() {
     c.ndir = 2;
     c.nstatv = 3;
     c.nprops = 10;
-    c.props = vec![2.0, 0.3, 0.0, 4.0, 10.0, 0.0, 0.0, 1e-3, 0.0, 1e4];
+    c.props = AdhesiveBuilder::new()
+        .coeff(0.3)
+        .sa(4.0)
+        .na(10.0)
+        .gamma_crit(1e-3)
+        .normal_stiffness(1e4)
+        .build_first(10);
     c.stress = vec![-8.0, 3.0];
     c.statev = vec![0.0, 0.0, 3.0];
     c.rdisp = vec![-9.0 / 1e4, 0.0];
@@ -535,7 +541,13 @@ fn uinter_tangent_overflow_is_refused() {
 #[test]
 fn uinter_tangent_overflow_of_the_pressure_column_is_a_cut_back() {
     let mut c = sliding_uinter(0.5);
-    c.props = vec![2.0, 0.5, 0.0, 1.0, 0.0, 1.0, 0.0, 1e-3, 0.0, 1e10];
+    c.props = AdhesiveBuilder::new()
+        .coeff(0.5)
+        .sa(1.0)
+        .kmu(1.0)
+        .gamma_crit(1e-3)
+        .normal_stiffness(1e10)
+        .build_first(10);
     c.rdisp = vec![1e-310, 0.0];
     c.stress = vec![1e-300, 1000.0];
     c.drdisp = vec![0.0, 0.0];

@@ -6,14 +6,12 @@
 //! replayed input is checked for exactly the properties the fuzzer checked. The explicit cases
 //! do not depend on the byte encoding and stay meaningful if it changes.
 
-#[allow(dead_code)]
-#[path = "../fuzz/src/bytes.rs"]
-mod bytes;
-#[allow(dead_code)]
-#[path = "../fuzz/src/fric_coef_case.rs"]
-mod fric_coef_case;
+#[path = "common/fuzz_cases.rs"]
+mod fuzz_cases;
+use fuzz_cases::fric_coef_case;
 
 use fric_coef_case::{CoefCall, CoefNull, FricCoefCase};
+use interfacial::props::CoulombBuilder;
 
 /// Crash C1 (first seconds of fuzzing): a valid block of 2 points with `fCoef` NULL. The call
 /// computed μ and wrote it through the NULL pointer: SIGSEGV inside the library (no panic to
@@ -62,7 +60,7 @@ fn crash_c1_replays_clean() {
 
 #[test]
 fn null_output_arrays_are_refused_and_the_other_array_zeroed() {
-    let props = [1.0, 0.3];
+    let props = CoulombBuilder::new().mu(0.3).build_first(2);
     for null in [CoefNull::FCoef, CoefNull::FCoefDeriv] {
         let mut case = FricCoefCase::block(&props, &[0.1, 0.2], &[1.0, 2.0], &[0.0, 0.0]);
         case.null = null;
@@ -102,9 +100,12 @@ fn crash_c2_replays_clean() {
 fn decay_law_with_a_kinetic_coefficient_far_above_the_static_one() {
     // μ = μ_s·e + μ_k·(1 − e), e = exp(−d_c·γ̇) (docs/props.md, PROPS(8) = 1).
     // μ_s = 1e-3, μ_k = 1e20, d_c = 1.
-    let props = [
-        1.0, 1e-3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1e20, 1.0, 0.0, 0.0, 0.0,
-    ];
+    let props = CoulombBuilder::new()
+        .mu(1e-3)
+        .mu_law(1.0)
+        .mu_k(1e20)
+        .decay(1.0)
+        .build_first(13);
     let rates = [0.0, 1e-30, 1e-20, 50.0];
     let case = FricCoefCase::block(&props, &rates, &[1.0; 4], &[0.0; 4]);
     let out = case.check().unwrap_or_else(|e| panic!("{e}"));
@@ -150,9 +151,13 @@ fn crash_c3_replays_clean() {
 fn kinetic_coefficient_far_below_a_huge_static_one_with_a_small_temperature_factor() {
     // μ = (μ_s·e + μ_k·(1 − e))·Θ (docs/props.md), μ_s = 1e272, μ_k = 3e-3, d_c = 1, γ̇ = 1e3:
     // e = exp(−1000) = 0 in f64, so μ = μ_k·Θ; Θ = exp(−b_θ(θ̄ − θ_ref)) = exp(−427).
-    let props = [
-        1.0, 1e272, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 3e-3, 1.0, 0.0, 1.0, 0.0,
-    ];
+    let props = CoulombBuilder::new()
+        .mu(1e272)
+        .mu_law(1.0)
+        .mu_k(3e-3)
+        .decay(1.0)
+        .b_theta(1.0)
+        .build_first(13);
     let case = FricCoefCase::block(&props, &[1e3], &[1.0], &[427.0]);
     let out = case.check().unwrap_or_else(|e| panic!("{e}"));
     assert!(out.message.is_empty(), "{}", out.message);

@@ -10,13 +10,11 @@
 //! single-precision build (`--features explicit-single`, covered by `tests/vfric.rs`).
 #![cfg(not(feature = "explicit-single"))]
 
-#[allow(dead_code)]
-#[path = "../fuzz/src/bytes.rs"]
-mod bytes;
-#[allow(dead_code)]
-#[path = "../fuzz/src/vfric_case.rs"]
-mod vfric_case;
+#[path = "common/fuzz_cases.rs"]
+mod fuzz_cases;
+use fuzz_cases::vfric_case;
 
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use vfric_case::{VfricCase, VfricNull, VfricOutputs};
 
 fn replay(data: &[u8]) -> (VfricCase, VfricOutputs) {
@@ -146,7 +144,12 @@ fn adhesive_props_refused() {
 /// Closed forms: tension gives 0, the cap τ_max·A, a huge μ·F_N (∞) capped by F_stick.
 #[test]
 fn closed_forms_on_a_block() {
-    let props = [1.0, 4.0, 0.0, 2.0, 0.0, 0.0, 1.0];
+    // μ = 4, τ_max = 2, stick mode 1 (exact).
+    let props = CoulombBuilder::new()
+        .mu(4.0)
+        .tau_max(2.0)
+        .stick(1.0)
+        .build_first(7);
     let normal = [-1.0, 10.0, f64::MAX, 1.0];
     let stick = [5.0, 50.0, 7.0, 50.0];
     let case = VfricCase::block(&props, 2, &normal, &stick, &[1, 2, 1, 2], &[3.0, 0.25]);
@@ -163,7 +166,12 @@ fn closed_forms_on_a_block() {
 /// The extended law (PROPS(8) = 1, decay) is refused with a message saying so.
 #[test]
 fn extended_props_refused() {
-    let props = [1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.1, 1.0];
+    let props = CoulombBuilder::new()
+        .mu(0.3)
+        .mu_law(1.0)
+        .mu_k(0.1)
+        .decay(1.0)
+        .build_first(10);
     let case = VfricCase::block(&props, 1, &[1.0], &[1.0], &[1], &[1.0]);
     let out = case.check().unwrap_or_else(|e| panic!("{e}"));
     assert!(out.message.contains("extended"), "{}", out.message);
@@ -176,12 +184,11 @@ fn extended_props_refused() {
 /// row V4) say law 2 is refused in VFRIC. Now refused like every other adhesive `PROPS`.
 #[test]
 fn adhesive_coulomb_special_case_is_refused() {
+    let special = AdhesiveBuilder::new().coeff(0.4);
     for props in [
-        vec![2.0, 0.4],
-        vec![2.0, 0.4, 0.4, 0.0, 0.0, 0.0, 0.0],
-        vec![
-            2.0, 0.4, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
-        ],
+        special.build_first(2),
+        special.clone().coeff_static(0.4).build_first(7),
+        special.build(),
     ] {
         let case = VfricCase::block(&props, 2, &[10.0, 1.0], &[50.0, 50.0], &[1, 1], &[1.0]);
         let out = case.check().unwrap_or_else(|e| panic!("{e}"));

@@ -5,8 +5,11 @@
 
 #[path = "common/config_file.rs"]
 mod config_file;
+#[path = "common/threads.rs"]
+mod threads;
 use std::ffi::CString;
 use std::process::Command;
+use threads::map_on_threads;
 
 use interfacial::abi::host::{FricCall, GUARD, GapconCall};
 use interfacial::abi::{IflConductance, IflStatus, ifl_gap_conductance};
@@ -152,23 +155,7 @@ fn results_do_not_depend_on_the_number_of_threads() {
         })
         .collect();
     let serial: Vec<u64> = points.iter().map(|p| p.clone().call().to_bits()).collect();
-    let parallel: Vec<u64> = std::thread::scope(|s| {
-        let handles: Vec<_> = points
-            .chunks(250)
-            .map(|chunk| {
-                s.spawn(move || {
-                    chunk
-                        .iter()
-                        .map(|p| p.clone().call().to_bits())
-                        .collect::<Vec<_>>()
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().unwrap())
-            .collect()
-    });
+    let parallel = map_on_threads(&points, 250, |p| p.clone().call().to_bits());
     assert_eq!(serial, parallel);
 }
 

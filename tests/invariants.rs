@@ -12,9 +12,10 @@
 //! The inputs come from a fixed-seed generator, so a failure names a reproducible path.
 
 use interfacial::abi::host::FricCall;
-use interfacial::laws::gap_conductance::{Conduction, GapLaw};
+use interfacial::laws::gap_conductance::{ConductanceResponse, Conduction, GapLaw};
 use interfacial::laws::gap_radiation::Radiation;
 use interfacial::laws::table::TemperatureTable;
+use interfacial::props::CoulombBuilder;
 
 /// SplitMix64: small, fast and good enough to spread test inputs.
 struct Rng(u64);
@@ -78,7 +79,13 @@ fn random_params(rng: &mut Rng, stick_mode: f64) -> Params {
         mu,
         tau_max,
         gamma_crit,
-        props: vec![1.0, mu, 0.0, tau_max, p5, p6, stick_mode],
+        props: CoulombBuilder::new()
+            .mu(mu)
+            .tau_max(tau_max)
+            .gamma_crit(p5)
+            .slip_tolerance(p6)
+            .stick(stick_mode)
+            .build_first(7),
         chrlngth,
     }
 }
@@ -259,40 +266,33 @@ fn drive(nfdir: usize, stick_mode: f64, seed: u64) -> (usize, usize) {
     (calls, slipping)
 }
 
-#[test]
-fn elastic_stick_nfdir_1() {
-    let (calls, slipping) = drive(1, 0.0, 1);
+/// [`drive`], then: at least `min_calls` calls, more than a tenth of them slipping.
+fn drive_at_least(nfdir: usize, stick_mode: f64, seed: u64, min_calls: usize) {
+    let (calls, slipping) = drive(nfdir, stick_mode, seed);
     assert!(
-        calls >= 100_000 && slipping > calls / 10,
+        calls >= min_calls && slipping > calls / 10,
         "{calls} {slipping}"
     );
 }
 
-#[test]
-fn elastic_stick_nfdir_2() {
-    let (calls, slipping) = drive(2, 0.0, 2);
-    assert!(
-        calls >= 100_000 && slipping > calls / 10,
-        "{calls} {slipping}"
-    );
+/// One test per law mode and NFDIR (separate, so they run in parallel): `name: (NFDIR,
+/// PROPS(7), seed, at least this many calls)`.
+macro_rules! drive_tests {
+    ($($name:ident: ($nfdir:expr, $stick:expr, $seed:expr, $min:expr);)*) => {
+        $(
+            #[test]
+            fn $name() {
+                drive_at_least($nfdir, $stick, $seed, $min);
+            }
+        )*
+    };
 }
 
-#[test]
-fn exact_stick_nfdir_1() {
-    let (calls, slipping) = drive(1, 1.0, 3);
-    assert!(
-        calls >= 50_000 && slipping > calls / 10,
-        "{calls} {slipping}"
-    );
-}
-
-#[test]
-fn exact_stick_nfdir_2() {
-    let (calls, slipping) = drive(2, 1.0, 4);
-    assert!(
-        calls >= 50_000 && slipping > calls / 10,
-        "{calls} {slipping}"
-    );
+drive_tests! {
+    elastic_stick_nfdir_1: (1, 0.0, 1, 100_000);
+    elastic_stick_nfdir_2: (2, 0.0, 2, 100_000);
+    exact_stick_nfdir_1: (1, 1.0, 3, 50_000);
+    exact_stick_nfdir_2: (2, 1.0, 4, 50_000);
 }
 
 #[test]
@@ -369,14 +369,7 @@ fn gap_conductance_is_finite_non_negative_and_inside_its_table() {
             let (ta, tb) = (rng.range(-100.0, 800.0), rng.range(-100.0, 800.0));
             let r = gap.evaluate(d, p, ta, tb).expect("finite input");
             calls += 1;
-            let all = [
-                r.k,
-                r.dk_dd,
-                r.dk_dp,
-                r.dk_dtheta_mean,
-                r.dq_dtheta_a,
-                r.dq_dtheta_b,
-            ];
+            let all = outputs(&r);
             assert!(all.iter().all(|v| v.is_finite()), "law {law}: {r:?}");
             assert!(
                 r.k >= lo * (1.0 - 1e-12) && r.k <= hi * (1.0 + 1e-12),
@@ -434,17 +427,22 @@ fn analytic_gap_laws_and_radiation_are_finite_and_non_negative() {
             }
             Err(e) => panic!("case {i}: finite input refused: {e}"),
         };
-        let all = [
-            r.k,
-            r.dk_dd,
-            r.dk_dp,
-            r.dk_dtheta_mean,
-            r.dq_dtheta_a,
-            r.dq_dtheta_b,
-        ];
+        let all = outputs(&r);
         assert!(
             all.iter().all(|v| v.is_finite()) && r.k >= 0.0,
             "case {i}: {r:?}"
         );
     }
+}
+
+/// Every output of a gap law: k and its partial derivatives.
+fn outputs(r: &ConductanceResponse) -> [f64; 6] {
+    [
+        r.k,
+        r.dk_dd,
+        r.dk_dp,
+        r.dk_dtheta_mean,
+        r.dq_dtheta_a,
+        r.dq_dtheta_b,
+    ]
 }

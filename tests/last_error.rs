@@ -19,6 +19,15 @@ use interfacial::abi::{
     IflConductance, IflStatus, ifl_clear_error, ifl_forced_sliding, ifl_fric_batch,
     ifl_gap_conductance, ifl_gap_conductance_n, ifl_last_error, ifl_last_error_copy,
 };
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
+
+/// Law 1, μ = 0.3, γ_crit = 10⁻³, `PROPS(1..5)`: the good call of every law-1 entry point.
+fn coulomb() -> Vec<f64> {
+    CoulombBuilder::new()
+        .mu(0.3)
+        .gamma_crit(1e-3)
+        .build_first(5)
+}
 
 fn setup() {
     config_file::config_once(
@@ -44,7 +53,7 @@ fn fail() -> String {
 }
 
 fn fric_ok() {
-    let mut c = FricCall::new(2, &[1.0, 0.3, 0.0, 0.0, 1e-3]);
+    let mut c = FricCall::new(2, &coulomb());
     c.press = 100.0;
     c.dgam[0] = 1e-4;
     c.call();
@@ -58,7 +67,13 @@ fn gapcon_ok() {
 
 fn uinter_ok() {
     // The adhesive law with S_a = N_a = 0 (Coulomb), K_n = 1e5, closed by h = 1e-4.
-    let mut c = UinterCall::new(3, &[2.0, 0.3, 0.5, 0.0, 0.0, 0.0, 0.0, 1e-3, 0.0, 1e5]);
+    let props = AdhesiveBuilder::new()
+        .coeff(0.3)
+        .coeff_static(0.5)
+        .gamma_crit(1e-3)
+        .normal_stiffness(1e5)
+        .build_first(10);
+    let mut c = UinterCall::new(3, &props);
     c.rdisp[0] = 1e-4;
     c.call();
     assert_eq!(c.pnewdt, 1e36, "uinter_ succeeded");
@@ -71,14 +86,14 @@ fn uinter_ok() {
 
 fn fric_coef_ok() {
     let (mut coef, mut deriv) = ([0.0f64; 2], [0.0f64; 40]);
-    let props = [1.0, 0.3, 0.0, 0.0, 1e-3];
+    let props = coulomb();
     let (slip, p, t) = ([0.0f64; 6], [100.0f64], [20.0f64]);
     fric_coef_call(&mut coef, &mut deriv, &props, &slip, &p, &t, &[b' '; 80]);
     assert_eq!(coef, [0.3, 0.3], "fric_coef_ succeeded");
 }
 
 fn forced_sliding_ok() {
-    let props = [1.0, 0.3, 0.0, 0.0, 1e-3];
+    let props = coulomb();
     let v = [1.0f64, 0.0];
     let (mut tau, mut damping, mut stiffness) = ([0.0f64; 2], [0.0f64; 4], [0.0f64; 2]);
     // SAFETY: props holds nprops reals, the outputs nfdir and nfdir² reals.
@@ -117,7 +132,7 @@ fn native_conductance_ok() {
 
 fn fric_batch_ok() {
     // One point, NFDIR = 1, the stick increment of fric_ok: tau = k_s dgam = 3e4 * 1e-4 = 3.
-    let props = [1.0, 0.3, 0.0, 0.0, 1e-3];
+    let props = coulomb();
     let mut lm = [0 as c_int];
     let (mut tau, mut ddtddg, mut ddtddp) = ([0.0f64], [0.0f64], [0.0f64]);
     let (mut dslip, mut sed, mut sfd, mut statev) = ([0.0f64], [0.0f64], [0.0f64], [0.0f64; 3]);
@@ -157,6 +172,7 @@ fn vfric_ok() {
     // One sliding contact point: fTangential = -min(mu F_N, F_stick) = -min(0.3 * 10, 5) = -3.
     let ftan = vfric_call(&VfricBlock {
         nfricdir: 1,
+        // VFRIC's PROPS are in the build's precision (IflReal), the builders' in f64.
         props: vec![1.0, 0.3],
         f_normal: vec![10.0],
         f_stick: vec![5.0],

@@ -45,6 +45,21 @@ fn f6() -> Scene {
     Scene::parse(SCENES[0].1, SCENES[0].0).expect("f6.toml")
 }
 
+/// F6's oscillator and the quick run of its first stability map that `pick` accepts (`what`
+/// names it in a failure).
+fn f6_map(what: &str, pick: impl Fn(&scene::MapSpec) -> bool) -> (Oscillator, stability::Map) {
+    let scene = f6();
+    let o = scene.file.oscillator.expect("F6");
+    let spec = scene
+        .file
+        .maps
+        .iter()
+        .find(|m| pick(m))
+        .unwrap_or_else(|| panic!("no {what} in f6.toml"));
+    let map = run_map(&o, spec, true, |_, _| {}).expect("map");
+    (o, map)
+}
+
 #[test]
 fn every_scene_meets_the_accuracy_its_chart_claims() {
     let mut checked = 0;
@@ -107,15 +122,7 @@ fn closed_form_of_the_oscillator_is_self_consistent() {
 
 #[test]
 fn measured_explicit_boundary_is_the_theoretical_limit_within_one_cell() {
-    let scene = f6();
-    let o = scene.file.oscillator.expect("F6");
-    let spec = scene
-        .file
-        .maps
-        .iter()
-        .find(|m| m.integrator == "explicit")
-        .expect("explicit map");
-    let map = run_map(&o, spec, true, |_, _| {}).expect("map");
+    let (o, map) = f6_map("explicit map", |m| m.integrator == "explicit");
     assert!(map.gammas.len() >= 5);
     for r in 0..map.gammas.len() {
         let measured = measured_boundary(&map, r);
@@ -145,15 +152,7 @@ fn measured_explicit_boundary_is_the_theoretical_limit_within_one_cell() {
 
 #[test]
 fn implicit_stepping_never_diverges() {
-    let scene = f6();
-    let o = scene.file.oscillator.expect("F6");
-    let spec = scene
-        .file
-        .maps
-        .iter()
-        .find(|m| m.integrator == "hht")
-        .expect("implicit map");
-    let map = run_map(&o, spec, true, |_, _| {}).expect("map");
+    let (_, map) = f6_map("implicit map", |m| m.integrator == "hht");
     assert!(map.cells.iter().flatten().all(|c| *c != Cell::Diverged));
     assert!(map.errors.iter().flatten().all(|e| !e.is_nan()));
 }
@@ -447,15 +446,7 @@ fn an_unguarded_host_gets_a_refusal_and_cuts_back_beyond_the_spring_limit() {
     // F6 map 3 (reduced grid): a host with no divergence check of its own. Beyond 2·sqrt(m/k)
     // the motion overflows, fric_ refuses the non-finite DGAM (PNEWDT = 0.25) and the host cuts
     // back; below 1.6 s nothing is refused; no cell holds a NaN.
-    let scene = f6();
-    let o = scene.file.oscillator.expect("F6");
-    let spec = scene
-        .file
-        .maps
-        .iter()
-        .find(|m| m.host.as_deref() == Some("unguarded"))
-        .expect("the cut-back map");
-    let map = run_map(&o, spec, true, |_, _| {}).expect("map");
+    let (o, map) = f6_map("cut-back map", |m| m.host.as_deref() == Some("unguarded"));
     let spring_limit = 2.0 * (o.mass / o.spring).sqrt();
     let mut beyond = 0;
     for row in &map.cells {

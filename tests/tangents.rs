@@ -4,6 +4,7 @@
 #![allow(clippy::needless_range_loop)] // index loops mirror the a, b indices of the equations
 
 use interfacial::abi::host::FricCall;
+use interfacial::props::CoulombBuilder;
 use proptest::prelude::*;
 
 /// Which branch a sample is meant to exercise; samples too close to a kink are discarded.
@@ -73,10 +74,13 @@ fn call_at(s: &Sample, dgam: [f64; 2], dp_shift: f64) -> FricCall {
     } else {
         0.0
     };
-    let mut c = FricCall::new(
-        s.nfdir,
-        &[1.0, s.mu, 0.0, s.tau_max, s.gamma_crit, 0.0, stick_mode],
-    );
+    let props = CoulombBuilder::new()
+        .mu(s.mu)
+        .tau_max(s.tau_max)
+        .gamma_crit(s.gamma_crit)
+        .stick(stick_mode)
+        .build_first(7);
+    let mut c = FricCall::new(s.nfdir, &props);
     let n = s.nfdir as usize;
     let tc0 = tau_crit(s, s.p0);
     for i in 0..n {

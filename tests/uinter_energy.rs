@@ -13,6 +13,7 @@
 //! - a refused call zeroes SPD; inputs near the f64 range saturate SPD at f64::MAX.
 
 use interfacial::abi::uinter_host::UinterCall;
+use interfacial::props::AdhesiveBuilder;
 
 const K_N: f64 = 1e5;
 const GAMMA_CRIT: f64 = 1e-3;
@@ -22,7 +23,14 @@ const N_A: f64 = 10.0;
 
 /// μ_d = 0.3, μ_s = 0.5, strengths S_a, N_a, γ_crit = 1e-3 (absolute), K_n = 1e5.
 fn props(sa: f64, na: f64) -> Vec<f64> {
-    vec![2.0, 0.3, MU_S, sa, na, 0.0, 0.0, GAMMA_CRIT, 0.0, K_N]
+    AdhesiveBuilder::new()
+        .coeff(0.3)
+        .coeff_static(MU_S)
+        .sa(sa)
+        .na(na)
+        .gamma_crit(GAMMA_CRIT)
+        .normal_stiffness(K_N)
+        .build_first(10)
 }
 
 /// One increment from a given start (`STRESS`, `STATEV(3)`) to the overclosure `h` with the

@@ -7,6 +7,7 @@
 mod config_file;
 use interfacial::abi::host::FricCall;
 use interfacial::abi::uinter_host::UinterCall;
+use interfacial::props::AdhesiveBuilder;
 
 const K_N: f64 = 1e4;
 
@@ -22,9 +23,16 @@ fn configure() {
 
 /// μ = 0.4, S_a = 2, N_a = 5, γ_crit = 1e-3, K_n, conductance on, η, f = 0.3.
 fn props(eta: f64) -> Vec<f64> {
-    vec![
-        2.0, 0.4, 0.0, 2.0, 5.0, 0.0, 0.0, 1e-3, 0.0, K_N, 1.0, eta, 0.3,
-    ]
+    AdhesiveBuilder::new()
+        .coeff(0.4)
+        .sa(2.0)
+        .na(5.0)
+        .gamma_crit(1e-3)
+        .normal_stiffness(K_N)
+        .conductance(true)
+        .heat_fraction(eta)
+        .slave_fraction(0.3)
+        .build()
 }
 
 fn point(name: &str, h: f64, dgam: f64, temp: [f64; 2], eta: f64) -> UinterCall {

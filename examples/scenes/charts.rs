@@ -749,8 +749,33 @@ fn cell_color(c: Cell) -> RGBColor {
     }
 }
 
+/// A map's cells as filled boxes: row `r`, column `c` spans the edges ([`edge`]) of `xs[c]`
+/// and `ys[r]`, in the colour `color` gives its cell.
+pub fn draw_cells<T: Copy>(
+    chart: &mut Chart<'_, '_>,
+    cells: &[Vec<T>],
+    xs: &[f64],
+    ys: &[f64],
+    color: impl Fn(T) -> RGBColor,
+) -> Result<(), String> {
+    for (r, row) in cells.iter().enumerate() {
+        chart
+            .draw_series(row.iter().enumerate().map(|(c, cell)| {
+                Rectangle::new(
+                    [
+                        (edge(xs, c, false), edge(ys, r, false)),
+                        (edge(xs, c, true), edge(ys, r, true)),
+                    ],
+                    color(*cell).filled(),
+                )
+            }))
+            .map_err(err)?;
+    }
+    Ok(())
+}
+
 /// Cell edges halfway (geometrically) between grid values.
-fn edge(v: &[f64], i: usize, up: bool) -> f64 {
+pub fn edge(v: &[f64], i: usize, up: bool) -> f64 {
     let ratio = if v.len() > 1 {
         (v[1] / v[0]).sqrt()
     } else {
@@ -827,19 +852,7 @@ pub fn stability_map(
         size: (760, 560),
     };
     frame(path, &f, |chart| {
-        for (r, row) in map.cells.iter().enumerate() {
-            chart
-                .draw_series(row.iter().enumerate().map(|(c, cell)| {
-                    Rectangle::new(
-                        [
-                            (edge(&map.dts, c, false), edge(&map.gammas, r, false)),
-                            (edge(&map.dts, c, true), edge(&map.gammas, r, true)),
-                        ],
-                        cell_color(*cell).filled(),
-                    )
-                }))
-                .map_err(err)?;
-        }
+        draw_cells(chart, &map.cells, &map.dts, &map.gammas, cell_color)?;
         let limit: Vec<(f64, f64)> = crate::stability::log_space(y0, y1, 200)
             .into_iter()
             .map(|g| (o.explicit_limit(g), g))
@@ -926,19 +939,7 @@ pub fn rate_map(path: &Path, map: &RateMap) -> Result<(), String> {
         size: (760, 560),
     };
     frame(path, &f, |chart| {
-        for (r, row) in map.cells.iter().enumerate() {
-            chart
-                .draw_series(row.iter().enumerate().map(|(c, cell)| {
-                    Rectangle::new(
-                        [
-                            (edge(&map.dts, c, false), edge(&map.decays, r, false)),
-                            (edge(&map.dts, c, true), edge(&map.decays, r, true)),
-                        ],
-                        rate_cell_color(*cell).filled(),
-                    )
-                }))
-                .map_err(err)?;
-        }
+        draw_cells(chart, &map.cells, &map.dts, &map.decays, rate_cell_color)?;
         let mut fine = map.scene.clone();
         let limit: Vec<(f64, f64)> = crate::stability::log_space(y0, y1, 200)
             .into_iter()

@@ -5,6 +5,7 @@
 use interfacial::abi::host::{FricCall, GapconCall};
 use interfacial::abi::uinter_host::UinterCall;
 use interfacial::abi::{IflConductance, IflStatus, ifl_gap_conductance};
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 
 const MU: f64 = 0.3;
 const P: f64 = 100.0;
@@ -41,7 +42,12 @@ impl Row {
 /// PROPS for the Coulomb law: γ_crit absolute or from the default tolerance × CHRLNGTH.
 fn props(gamma_from_chrlngth: bool, tau_max: f64, stick: f64) -> Vec<f64> {
     let gc = if gamma_from_chrlngth { 0.0 } else { GAMMA_CRIT };
-    vec![1.0, MU, 0.0, tau_max, gc, 0.0, stick]
+    CoulombBuilder::new()
+        .mu(MU)
+        .tau_max(tau_max)
+        .gamma_crit(gc)
+        .stick(stick)
+        .build_first(7)
 }
 
 /// A quasi-static host increment: pass the converged stress and state, the motion and pressure
@@ -342,7 +348,12 @@ fn f3(rows: &mut Vec<Row>) {
     for k in 0..12 {
         let angle = f64::from(k) * std::f64::consts::PI / 6.0 + 0.1;
         let d = [angle.cos(), angle.sin()];
-        let mut c = FricCall::new(2, &[1.0, mu1, mu2, 0.0, GAMMA_CRIT]);
+        let props = CoulombBuilder::new()
+            .mu(mu1)
+            .mu2(mu2)
+            .gamma_crit(GAMMA_CRIT)
+            .build_first(5);
+        let mut c = FricCall::new(2, &props);
         let mut p_prev = 0.0;
         for _ in 0..60 {
             step(
@@ -381,9 +392,14 @@ fn f3(rows: &mut Vec<Row>) {
 fn f4(rows: &mut Vec<Row>) {
     let (mu_s, mu_k, dc, dt) = (0.6, 0.3, 4.0, 0.01);
     for frozen in [false, true] {
-        let mut props = vec![0.0; 20];
-        props[..10].copy_from_slice(&[1.0, mu_s, 0.0, 0.0, GAMMA_CRIT, 0.0, 0.0, 1.0, mu_k, dc]);
-        props[19] = if frozen { 1.0 } else { 0.0 };
+        let props = CoulombBuilder::new()
+            .mu(mu_s)
+            .gamma_crit(GAMMA_CRIT)
+            .mu_law(1.0)
+            .mu_k(mu_k)
+            .decay(dc)
+            .frozen(if frozen { 1.0 } else { 0.0 })
+            .build();
         let mut c = FricCall::new(1, &props);
         c.dtime = dt;
         let mut p_prev = 0.0;
@@ -629,7 +645,16 @@ fn t2_plates(rows: &mut Vec<Row>) {
 
 /// The adhesive law of A1 (seed 004) through `uinter_`: μ_d = 0.3, μ_s = 0.5, S_a = 4, N_a = 10,
 /// γ_crit = 10⁻³, K_n = 10⁴ (`PROPS` layout of docs/props.md, law 2).
-const A1_PROPS: [f64; 10] = [2.0, 0.3, 0.5, 4.0, 10.0, 0.0, 0.0, 1e-3, 0.0, 1e4];
+fn a1_props() -> Vec<f64> {
+    AdhesiveBuilder::new()
+        .coeff(0.3)
+        .coeff_static(0.5)
+        .sa(4.0)
+        .na(10.0)
+        .gamma_crit(1e-3)
+        .normal_stiffness(1e4)
+        .build_first(10)
+}
 
 /// One quasi-static `uinter_` increment (NDIR = 3) to the normal position `h` (overclosure,
 /// positive in contact) with the tangential motion `dg` along direction 2.
@@ -651,7 +676,7 @@ fn a1(rows: &mut Vec<Row>) {
     let s0: f64 = 3.0;
     let k_s = s_a / gc;
     let n_break = n_a * (1.0 - (s0 / s_a) * (s0 / s_a)).sqrt();
-    let mut u = UinterCall::new(3, &A1_PROPS);
+    let mut u = UinterCall::new(3, &a1_props());
     // Touching (p = 0) and sheared by S₀ along direction 2: bonded, k_s = S_a/γ_crit.
     a1_step(&mut u, 0.0, s0 / k_s);
     rows.push(Row {
@@ -718,7 +743,7 @@ fn a1(rows: &mut Vec<Row>) {
     // divisor of the onset slip, so the last stick is strictly inside one step) sticks with
     // τ = k_s·γ up to μ_s·p + S_a.
     let p = 100.0;
-    let mut u = UinterCall::new(3, &A1_PROPS);
+    let mut u = UinterCall::new(3, &a1_props());
     let step = 1.23e-2 * gc;
     let k_stick = (mu_s * p + s_a) / gc;
     let mut last_stick = 0.0;

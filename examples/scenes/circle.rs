@@ -6,6 +6,7 @@
 use std::time::Instant;
 
 use interfacial::abi::host::FricCall;
+use interfacial::props::CoulombBuilder;
 use serde::Deserialize;
 
 /// The parameters of F2.
@@ -61,7 +62,11 @@ impl Circle {
     pub fn run(&self, gamma_crit: f64, per_turn: usize) -> CircleRun {
         let start = Instant::now();
         let exact = (gamma_crit / self.radius).asin();
-        let mut c = FricCall::new(2, &[1.0, self.mu, 0.0, 0.0, gamma_crit, 0.0, 0.0]);
+        let props = CoulombBuilder::new()
+            .mu(self.mu)
+            .gamma_crit(gamma_crit)
+            .build_first(7);
+        let mut c = FricCall::new(2, &props);
         c.press = self.pressure;
         let dtheta = 2.0 * std::f64::consts::PI / per_turn as f64;
         let mut prev = [self.radius, 0.0];

@@ -11,6 +11,7 @@
 use std::time::Instant;
 
 use interfacial::abi::host::FricCall;
+use interfacial::props::CoulombBuilder;
 use serde::Deserialize;
 
 /// The physical parameters of F6.
@@ -249,15 +250,11 @@ pub fn simulate_host(
         Stick::Exact => (1e-6 * o.x_slip_start(), 1.0),
     };
     let props = |mu: f64| {
-        vec![
-            1.0,
-            mu,
-            0.0,
-            0.0,
-            gamma_crit * mu / o.mu_static,
-            0.0,
-            stick_code,
-        ]
+        CoulombBuilder::new()
+            .mu(mu)
+            .gamma_crit(gamma_crit * mu / o.mu_static)
+            .stick(stick_code)
+            .build_first(7)
     };
     let (props_s, props_k) = (props(o.mu_static), props(o.mu_kinetic));
     let mut c = FricCall::new(1, &props_s);

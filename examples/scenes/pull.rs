@@ -11,6 +11,7 @@
 use std::time::Instant;
 
 use interfacial::abi::host::FricCall;
+use interfacial::props::CoulombBuilder;
 use serde::Deserialize;
 
 use crate::oscillator::Stick;
@@ -78,7 +79,12 @@ impl Pull {
             Stick::Elastic { gamma_crit } => (gamma_crit, 0.0),
             Stick::Exact => (1e-6 * self.stretch(), 1.0),
         };
-        let mut c = FricCall::new(1, &[1.0, self.mu, 0.0, 0.0, gamma_crit, 0.0, code]);
+        let props = CoulombBuilder::new()
+            .mu(self.mu)
+            .gamma_crit(gamma_crit)
+            .stick(code)
+            .build_first(7);
+        let mut c = FricCall::new(1, &props);
         c.press = self.pressure;
         if stick == Stick::Exact {
             // Start held by the multiplier.

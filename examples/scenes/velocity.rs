@@ -14,6 +14,7 @@
 use std::time::Instant;
 
 use interfacial::abi::host::FricCall;
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use serde::Deserialize;
 
 /// The parameters of F4.
@@ -186,26 +187,28 @@ impl VelocitySteps {
         let (s, k) = (self.mu_static, self.mu_kinetic);
         match law {
             RateLaw::Decay | RateLaw::DecayFrozen => {
-                let mut props = vec![0.0; 20];
-                props[..10]
-                    .copy_from_slice(&[1.0, s, 0.0, 0.0, gamma_crit, 0.0, 0.0, 1.0, k, self.decay]);
-                props[19] = if law == RateLaw::DecayFrozen {
+                let frozen = if law == RateLaw::DecayFrozen {
                     1.0
                 } else {
                     0.0
                 };
-                props
+                CoulombBuilder::new()
+                    .mu(s)
+                    .gamma_crit(gamma_crit)
+                    .mu_law(1.0)
+                    .mu_k(k)
+                    .decay(self.decay)
+                    .frozen(frozen)
+                    .build()
             }
-            RateLaw::Adhesive => vec![
-                2.0,
-                k,
-                s,
-                self.shear_adhesion,
-                0.0,
-                self.k_mu,
-                self.v_half,
-                gamma_crit,
-            ],
+            RateLaw::Adhesive => AdhesiveBuilder::new()
+                .coeff(k)
+                .coeff_static(s)
+                .sa(self.shear_adhesion)
+                .kmu(self.k_mu)
+                .vhalf(self.v_half)
+                .gamma_crit(gamma_crit)
+                .build_first(8),
         }
     }
 

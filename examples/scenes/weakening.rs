@@ -26,9 +26,12 @@ use interfacial::abi::host::FricCall;
 use interfacial::laws::coulomb::{Contact, Coulomb, Increment};
 use interfacial::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
 use interfacial::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
+use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use plotters::prelude::*;
 
-use crate::charts::{Axis, Frame, LinearFrame, Marker, Swatch, frame as frame_chart, frame_linear};
+use crate::charts::{
+    Axis, Frame, LinearFrame, Marker, Swatch, draw_cells, edge, frame as frame_chart, frame_linear,
+};
 use crate::checks::Row;
 
 const MU_S: f64 = 0.5;
@@ -68,7 +71,13 @@ pub fn rate_free_bounds(x: f64) -> (f64, f64) {
 }
 
 fn decay_props() -> Vec<f64> {
-    vec![1.0, MU_S, 0.0, 0.0, GAMMA_CRIT, 0.0, 0.0, 1.0, MU_K, D_C]
+    CoulombBuilder::new()
+        .mu(MU_S)
+        .gamma_crit(GAMMA_CRIT)
+        .mu_law(1.0)
+        .mu_k(MU_K)
+        .decay(D_C)
+        .build_first(10)
 }
 
 /// τ of `n` increments of r·γ_crit at the slip velocity v = x/d_c, from rest.
@@ -397,12 +406,8 @@ fn map_chart(
     xs: &[f64],
     cells: &[Vec<bool>],
 ) -> Result<(), String> {
-    let half = |v: &[f64], i: usize, up: bool| -> f64 {
-        let ratio = (v[1] / v[0]).sqrt();
-        if up { v[i] * ratio } else { v[i] / ratio }
-    };
-    let (x0, x1) = (half(rs, 0, false), half(rs, rs.len() - 1, true));
-    let (y0, y1) = (half(xs, 0, false), half(xs, xs.len() - 1, true));
+    let (x0, x1) = (edge(rs, 0, false), edge(rs, rs.len() - 1, true));
+    let (y0, y1) = (edge(xs, 0, false), edge(xs, xs.len() - 1, true));
     let (settle, cycle) = (RGBColor(44, 160, 44), RGBColor(214, 39, 40));
     // The cells' colours at 60 % over white, as drawn.
     let pale = |c: RGBColor| {
@@ -447,19 +452,9 @@ fn map_chart(
         size: (760, 560),
     };
     frame_chart(path, &frame, |chart| {
-        for (j, row) in cells.iter().enumerate() {
-            chart
-                .draw_series(row.iter().enumerate().map(|(i, ok)| {
-                    Rectangle::new(
-                        [
-                            (half(rs, i, false), half(xs, j, false)),
-                            (half(rs, i, true), half(xs, j, true)),
-                        ],
-                        pale(if *ok { settle } else { cycle }).filled(),
-                    )
-                }))
-                .map_err(err)?;
-        }
+        draw_cells(chart, cells, rs, xs, |ok| {
+            pale(if ok { settle } else { cycle })
+        })?;
         let fine = log_space(y0, y1, 200);
         let curve = |k: usize| -> Vec<(f64, f64)> {
             fine.iter()
@@ -514,34 +509,41 @@ struct BeltRun {
     failed: usize,
 }
 
+impl BeltRun {
+    /// Mean and largest number of Newton iterations per step, over every step or over the
+    /// slip-onset steps only (`onset`).
+    fn newton(&self, onset: bool) -> (f64, u32) {
+        let sel: Vec<u32> = self
+            .iterations
+            .iter()
+            .zip(&self.onset)
+            .filter(|(_, o)| !onset || **o)
+            .map(|(i, _)| *i)
+            .collect();
+        let mean = sel.iter().map(|&i| f64::from(i)).sum::<f64>() / sel.len().max(1) as f64;
+        (mean, sel.iter().copied().max().unwrap_or(0))
+    }
+}
+
 const MAX_NEWTON: u32 = 50;
 
 impl Belt {
     fn props(&self) -> Vec<f64> {
         if let Some(vhalf) = self.adhesive_vhalf {
-            return vec![
-                2.0,
-                self.mu_k,
-                self.mu_s,
-                0.0,
-                0.0,
-                0.0,
-                vhalf,
-                self.gamma_crit,
-            ];
+            return AdhesiveBuilder::new()
+                .coeff(self.mu_k)
+                .coeff_static(self.mu_s)
+                .vhalf(vhalf)
+                .gamma_crit(self.gamma_crit)
+                .build_first(8);
         }
-        vec![
-            1.0,
-            self.mu_s,
-            0.0,
-            0.0,
-            self.gamma_crit,
-            0.0,
-            0.0,
-            1.0,
-            self.mu_k,
-            self.decay,
-        ]
+        CoulombBuilder::new()
+            .mu(self.mu_s)
+            .gamma_crit(self.gamma_crit)
+            .mu_law(1.0)
+            .mu_k(self.mu_k)
+            .decay(self.decay)
+            .build_first(10)
     }
 
     /// Backward Euler in x and v for `t_end`, Newton on the end position with `fric_`'s
@@ -681,18 +683,7 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
         for tangent in [Tangent::Exact, Tangent::Bounded] {
             let run = b.run(dt, t_end, tangent);
             let (xmax, xmin, period, stuck) = cycle_measures(&run, dt);
-            let it = |onset: bool| -> (f64, u32) {
-                let sel: Vec<u32> = run
-                    .iterations
-                    .iter()
-                    .zip(&run.onset)
-                    .filter(|(_, o)| !onset || **o)
-                    .map(|(i, _)| *i)
-                    .collect();
-                let mean = sel.iter().map(|&i| f64::from(i)).sum::<f64>() / sel.len().max(1) as f64;
-                (mean, sel.iter().copied().max().unwrap_or(0))
-            };
-            let ((mean, max), (omean, omax)) = (it(false), it(true));
+            let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
             onset_means.push((dt, tangent, omean));
             let _ = writeln!(
                 csv,
@@ -813,18 +804,7 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
     for dt in [0.05, 0.02, 0.01] {
         for tangent in [Tangent::Exact, Tangent::Bounded] {
             let run = a.run(dt, t_end, tangent);
-            let stats = |onset: bool| -> (f64, u32) {
-                let sel: Vec<u32> = run
-                    .iterations
-                    .iter()
-                    .zip(&run.onset)
-                    .filter(|(_, o)| !onset || **o)
-                    .map(|(i, _)| *i)
-                    .collect();
-                let mean = sel.iter().map(|&i| f64::from(i)).sum::<f64>() / sel.len().max(1) as f64;
-                (mean, sel.iter().copied().max().unwrap_or(0))
-            };
-            let ((mean, max), (omean, omax)) = (stats(false), stats(true));
+            let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
             adhesive_means.push((dt, tangent, omean));
             let _ = writeln!(
                 table,

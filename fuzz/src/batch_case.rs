@@ -5,11 +5,12 @@
 //!
 //! Shared by the `batch` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
 
-use std::ffi::{CStr, c_int};
+use std::ffi::c_int;
 
-use crate::bytes::{Bytes, bits};
-use crate::fric_case::{FricCase, FricOutputs};
-use interfacial::abi::{IflStatus, ifl_clear_error, ifl_fric_batch, ifl_last_error};
+use super::bytes::{Bytes, bits};
+use super::contract::last_error;
+use super::fric_case::{FricCase, FricOutputs};
+use interfacial::abi::{IflStatus, ifl_clear_error, ifl_fric_batch};
 
 /// Written into every output before the call, to see what the call wrote.
 pub const UNWRITTEN: f64 = -7.77e77;
@@ -219,10 +220,7 @@ impl BatchCase {
             )
         };
         out.status = status as i32;
-        // SAFETY: ifl_last_error never returns NULL.
-        out.message = unsafe { CStr::from_ptr(ifl_last_error()) }
-            .to_string_lossy()
-            .into_owned();
+        out.message = last_error();
         out
     }
 

@@ -4,10 +4,11 @@
 //!
 //! Shared by the `fric` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
 
-use std::ffi::{CStr, c_char};
+use std::ffi::c_char;
 
-use crate::bytes::{Bytes, bits, len};
-use interfacial::abi::{fric_, ifl_clear_error, ifl_last_error};
+use super::bytes::{Bytes, bits, len};
+use super::contract::{input_bits, last_error, pnewdt_refusal};
+use interfacial::abi::{fric_, ifl_clear_error};
 
 /// Written into every output before the call, to see what the call wrote.
 pub const UNWRITTEN: f64 = -7.77e77;
@@ -266,9 +267,7 @@ impl FricCase {
                 c.slname.len(),
                 c.msname.len(),
             );
-            out.message = CStr::from_ptr(ifl_last_error())
-                .to_string_lossy()
-                .into_owned();
+            out.message = last_error();
         }
         // The input arguments are never written (LM, TAU, PNEWDT, STATEV are in `out`).
         if !same(&c, &before) {
@@ -279,20 +278,7 @@ impl FricCase {
     }
 
     fn check_outputs(&self, out: &FricOutputs) -> Result<(), String> {
-        let refused = out.pnewdt.to_bits() != self.pnewdt.to_bits();
-        if refused == out.message.is_empty() {
-            return Err(format!(
-                "PNEWDT {} -> {} but message {:?}: a refusal must lower PNEWDT and report",
-                self.pnewdt, out.pnewdt, out.message
-            ));
-        }
-        if refused {
-            if out.pnewdt.is_nan() || out.pnewdt >= 1.0 {
-                return Err(format!("refused with PNEWDT = {}", out.pnewdt));
-            }
-            if !out.message.starts_with("interfacial: FRIC: interaction '") {
-                return Err(format!("message does not name routine: {:?}", out.message));
-            }
+        if pnewdt_refusal(self.pnewdt, out.pnewdt, &out.message, "FRIC")? {
             if out.lm != self.lm || bits(&out.tau) != bits(&self.tau) {
                 return Err("refused but LM or TAU changed".into());
             }
@@ -466,16 +452,13 @@ impl FricOutputs {
 /// Bitwise equality of every input.
 fn same(a: &FricCase, b: &FricCase) -> bool {
     let reals = |c: &FricCase| {
-        let scalars = [c.press, c.dpress, c.ddpddh, c.dtime, c.chrlngth];
-        let arrays = [
-            &c.dgam, &c.taulm, &c.slip, &c.props, &c.time, &c.coords, &c.rcoord, &c.drot, &c.temp,
-            &c.predef,
-        ];
-        let mut v = bits(&scalars);
-        for a in arrays {
-            v.extend(bits(a));
-        }
-        v
+        input_bits(
+            &[c.press, c.dpress, c.ddpddh, c.dtime, c.chrlngth],
+            &[
+                &c.dgam, &c.taulm, &c.slip, &c.props, &c.time, &c.coords, &c.rcoord, &c.drot,
+                &c.temp, &c.predef,
+            ],
+        )
     };
     let ints = |c: &FricCase| {
         [

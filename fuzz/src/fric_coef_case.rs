@@ -5,12 +5,11 @@
 //! Shared by the `fric_coef` fuzz target and `tests/fuzz_regressions_coef.rs` (included there by
 //! path).
 
-use std::ffi::{CStr, c_char, c_int};
+use std::ffi::{c_char, c_int};
 
-use crate::bytes::{Bytes, bits, len};
-use interfacial::abi::{
-    IflStatus, fric_coef_, ifl_clear_error, ifl_forced_sliding, ifl_last_error,
-};
+use super::bytes::{Bytes, bits, len};
+use super::contract::{input_bits, last_error};
+use interfacial::abi::{IflStatus, fric_coef_, ifl_clear_error, ifl_forced_sliding};
 
 /// Written into every output before the call, to see what the call wrote.
 pub const UNWRITTEN: f64 = -7.77e77;
@@ -238,9 +237,7 @@ impl FricCoefCase {
                 c.surf_sec.len(),
                 c.surf_main.len(),
             );
-            out.message = CStr::from_ptr(ifl_last_error())
-                .to_string_lossy()
-                .into_owned();
+            out.message = last_error();
         }
         if !same_coef(&c, &before) {
             return Err("an input argument was written".into());
@@ -401,11 +398,10 @@ impl FricCoefCase {
 
 fn same_coef(a: &FricCoefCase, b: &FricCoefCase) -> bool {
     let reals = |c: &FricCoefCase| {
-        let mut v = bits(&c.rdata);
-        for x in [&c.props, &c.slip, &c.pressure, &c.temp, &c.field] {
-            v.extend(bits(x));
-        }
-        v
+        input_bits(
+            &c.rdata,
+            &[&c.props, &c.slip, &c.pressure, &c.temp, &c.field],
+        )
     };
     reals(a) == reals(b)
         && [a.nblock, a.nprops, a.ntemp, a.nfields] == [b.nblock, b.nprops, b.ntemp, b.nfields]
@@ -505,9 +501,7 @@ impl ForcedSlidingCase {
                 mo(out.damping.as_mut_ptr(), SlideNull::Damping),
                 mo(out.stiffness.as_mut_ptr(), SlideNull::Stiffness),
             );
-            out.message = CStr::from_ptr(ifl_last_error())
-                .to_string_lossy()
-                .into_owned();
+            out.message = last_error();
         }
         let unchanged = bits(&self.props) == bits(&before.props)
             && bits(&self.velocity) == bits(&before.velocity);

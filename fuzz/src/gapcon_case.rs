@@ -3,13 +3,12 @@
 //!
 //! Shared by the `gapcon` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
 
-use std::ffi::{CStr, CString, c_char};
+use std::ffi::{CString, c_char};
 use std::sync::Once;
 
-use crate::bytes::Bytes;
-use interfacial::abi::{
-    IflConductance, IflStatus, gapcon_, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
-};
+use super::bytes::Bytes;
+use super::contract::last_error;
+use interfacial::abi::{IflConductance, IflStatus, gapcon_, ifl_clear_error, ifl_gap_conductance};
 
 /// The configuration every `gapcon_` case runs against: one interaction per law, radiation in
 /// kelvin and in °C, and no `"*"` entry, so unknown names take the error path.
@@ -174,9 +173,7 @@ impl GapconCase {
                 c.slname.len(),
                 c.msname.len(),
             );
-            CStr::from_ptr(ifl_last_error())
-                .to_string_lossy()
-                .into_owned()
+            last_error()
         };
         let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
         if bits(&c.d) != bits(&self.d)

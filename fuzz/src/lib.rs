@@ -1,9 +1,12 @@
-//! Decoders and property checks of the fuzz targets. The modules are also compiled into
-//! `tests/fuzz_regressions.rs` by path, so a crash input replays as a plain `cargo test`.
+//! Decoders and property checks of the fuzz targets. The modules are also compiled into the
+//! tests by path (`tests/common/fuzz_cases.rs`), so a crash input replays as a plain `cargo
+//! test`; they name each other by `super::`, which is this crate's root here and that module
+//! there.
 
 pub mod batch_case;
 pub mod bytes;
 pub mod config_case;
+pub mod contract;
 pub mod fric_case;
 pub mod fric_coef_case;
 pub mod gapcon_case;

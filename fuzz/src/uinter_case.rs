@@ -2,15 +2,16 @@
 //! every array allocated with exactly the length the call declares (so AddressSanitizer reports
 //! any access past it), and the properties every call must have.
 //!
-//! Runs against the configuration of [`crate::gapcon_case`] (its `setup` must be called first),
+//! Runs against the configuration of [`super::gapcon_case`] (its `setup` must be called first),
 //! so `PROPS(11) = 1` reaches every conductance law as well as the "no thermal law" refusal.
 //! Shared by the `uinter` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
 
-use std::ffi::{CStr, c_char, c_int};
+use std::ffi::{c_char, c_int};
 
-use crate::bytes::{Bytes, bits, len};
-use crate::gapcon_case::NAMES;
-use interfacial::abi::{ifl_clear_error, ifl_last_error, uinter_};
+use super::bytes::{Bytes, bits, len};
+use super::contract::{input_bits, last_error, pnewdt_refusal};
+use super::gapcon_case::NAMES;
+use interfacial::abi::{ifl_clear_error, uinter_};
 
 /// Written into every output before the call, to see what the call wrote.
 pub const UNWRITTEN: f64 = -7.77e77;
@@ -279,9 +280,7 @@ impl UinterCase {
                 c.slname.len(),
                 c.msname.len(),
             );
-            out.message = CStr::from_ptr(ifl_last_error())
-                .to_string_lossy()
-                .into_owned();
+            out.message = last_error();
         }
         if !same(&c, &before) {
             return Err("an input argument was written".into());
@@ -294,27 +293,12 @@ impl UinterCase {
         if out.lsdi != self.lsdi {
             return Err("LSDI was written".into());
         }
-        let refused = out.pnewdt.to_bits() != self.pnewdt.to_bits();
-        if refused == out.message.is_empty() {
-            return Err(format!(
-                "PNEWDT {} -> {} but message {:?}: a refusal must lower PNEWDT and report",
-                self.pnewdt, out.pnewdt, out.message
-            ));
-        }
+        let refused = pnewdt_refusal(self.pnewdt, out.pnewdt, &out.message, "UINTER")?;
         let state_kept = bits(&out.stress) == bits(&self.stress)
             && bits(&out.statev) == bits(&self.statev)
             && out.lopenclose == self.lopenclose
             && out.lstate == self.lstate;
         if refused {
-            if out.pnewdt.is_nan() || out.pnewdt >= 1.0 {
-                return Err(format!("refused with PNEWDT = {}", out.pnewdt));
-            }
-            if !out
-                .message
-                .starts_with("interfacial: UINTER: interaction '")
-            {
-                return Err(format!("message does not name routine: {:?}", out.message));
-            }
             if !state_kept {
                 return Err("refused but STRESS, STATEV, LOPENCLOSE or LSTATE changed".into());
             }
@@ -504,27 +488,24 @@ impl UinterOutputs {
 /// Bitwise equality of every input.
 fn same(a: &UinterCase, b: &UinterCase) -> bool {
     let reals = |c: &UinterCase| {
-        let scalars = [c.pnewdt, c.dtime, c.freqr, c.area, c.chrlngth];
-        let arrays = [
-            &c.stress,
-            &c.statev,
-            &c.rdisp,
-            &c.drdisp,
-            &c.temp,
-            &c.dtemp,
-            &c.predef,
-            &c.dpred,
-            &c.time,
-            &c.props,
-            &c.coords,
-            &c.alocaldir,
-            &c.drot,
-        ];
-        let mut v = bits(&scalars);
-        for a in arrays {
-            v.extend(bits(a));
-        }
-        v
+        input_bits(
+            &[c.pnewdt, c.dtime, c.freqr, c.area, c.chrlngth],
+            &[
+                &c.stress,
+                &c.statev,
+                &c.rdisp,
+                &c.drdisp,
+                &c.temp,
+                &c.dtemp,
+                &c.predef,
+                &c.dpred,
+                &c.time,
+                &c.props,
+                &c.coords,
+                &c.alocaldir,
+                &c.drot,
+            ],
+        )
     };
     let ints = |c: &UinterCase| {
         [

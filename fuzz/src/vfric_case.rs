@@ -5,10 +5,11 @@
 //! Shared by the `vfric` fuzz target and `tests/fuzz_regressions_vfric.rs` (included there by
 //! path).
 
-use std::ffi::{CStr, c_char, c_int};
+use std::ffi::{c_char, c_int};
 
-use crate::bytes::{Bytes, bits, len};
-use interfacial::abi::{ifl_clear_error, ifl_last_error, vfric_};
+use super::bytes::{Bytes, bits, len};
+use super::contract::last_error;
+use interfacial::abi::{ifl_clear_error, vfric_};
 
 /// Written into every output entry and guard before the call, to see what the call wrote.
 pub const UNWRITTEN: f64 = -7.77e77;
@@ -348,9 +349,7 @@ impl VfricCase {
                 blank.len(),
                 blank.len(),
             );
-            out.message = CStr::from_ptr(ifl_last_error())
-                .to_string_lossy()
-                .into_owned();
+            out.message = last_error();
         }
         let unchanged = bits(&c.normal) == bits(&before.normal)
             && bits(&c.stick) == bits(&before.stick)

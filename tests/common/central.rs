@@ -1,5 +1,6 @@
-//! The central differences that the tangent tests compare `fric_`'s derivatives with, shared by
-//! tests/friction_extended.rs and tests/friction_table.rs (included there by path).
+//! The central differences that the tangent tests compare `fric_`'s derivatives with, and the
+//! steady sliding of scene F4, shared by tests/friction_extended.rs and tests/friction_table.rs
+//! (included there by path).
 
 use interfacial::abi::host::FricCall;
 
@@ -53,4 +54,18 @@ pub fn central_tau(
     };
     let (f1, f2) = (fd(h)?, fd(2.0 * h)?);
     ((f1 - f2).abs() <= 1e-7 * scale).then_some(f1)
+}
+
+/// Slides the point `c` (`nfdir` directions) along `dir` at the slip velocity `v` for `n`
+/// increments of `c.dtime`, each one answered in slip (`LM` = 0, no cut-back); |τ| at the end.
+pub fn slide_steadily(c: &mut FricCall, nfdir: usize, dir: [f64; 2], v: f64, n: usize) -> f64 {
+    for _ in 0..n {
+        for i in 0..nfdir {
+            c.dgam[i] = dir[i] * v * c.dtime;
+        }
+        c.call();
+        assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+        assert_eq!(c.lm, 0);
+    }
+    (0..nfdir).map(|i| c.tau[i].powi(2)).sum::<f64>().sqrt()
 }

@@ -1,0 +1,57 @@
+//! What every entry point owes its host, checked the same way by every case: the message of a
+//! call ([`last_error`]), the input arguments left alone ([`input_bits`]), and for the Abaqus
+//! routines that refuse by lowering `PNEWDT` (FRIC, UINTER) the refusal itself
+//! ([`pnewdt_refusal`]).
+
+use std::ffi::CStr;
+
+use interfacial::abi::ifl_last_error;
+
+use super::bytes::bits;
+
+/// The library's last message on this thread ("" when the last call succeeded).
+pub fn last_error() -> String {
+    // SAFETY: `ifl_last_error` never returns NULL; it points at this thread's NUL-terminated
+    // buffer, left alone until the next call on this thread.
+    unsafe { CStr::from_ptr(ifl_last_error()) }
+        .to_string_lossy()
+        .into_owned()
+}
+
+/// The bit patterns of a call's real inputs, scalars then arrays, to see that none was
+/// written (NaN payloads and signed zeros included).
+pub fn input_bits(scalars: &[f64], arrays: &[&[f64]]) -> Vec<u64> {
+    let mut v = bits(scalars);
+    for a in arrays {
+        v.extend(bits(a));
+    }
+    v
+}
+
+/// Whether a call of `routine` (FRIC, UINTER) refused, `PNEWDT` having gone from `before` to
+/// `after` with `message`; an error when the answer breaks the contract: a refusal (and only a
+/// refusal) changes `PNEWDT`, to below 1, and reports one message naming the routine and the
+/// interaction.
+pub fn pnewdt_refusal(
+    before: f64,
+    after: f64,
+    message: &str,
+    routine: &str,
+) -> Result<bool, String> {
+    let refused = after.to_bits() != before.to_bits();
+    if refused == message.is_empty() {
+        return Err(format!(
+            "PNEWDT {before} -> {after} but message {message:?}: a refusal must lower PNEWDT and \
+             report"
+        ));
+    }
+    if refused {
+        if after.is_nan() || after >= 1.0 {
+            return Err(format!("refused with PNEWDT = {after}"));
+        }
+        if !message.starts_with(&format!("interfacial: {routine}: interaction '")) {
+            return Err(format!("message does not name routine: {message:?}"));
+        }
+    }
+    Ok(refused)
+}
