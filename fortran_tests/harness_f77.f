@@ -3,8 +3,9 @@ C     harness_f77.f -- the routines the fixed-form harnesses share
 C     (test_fric_f1.f, test_fric_bad_input.f, test_fric_rate.f,
 C     test_gapcon_t1.f, test_gapcon_bad_input.f): the tally CHECK /
 C     CHKNR, the sentinel
-C     guard GUARD1, the host arguments a Coulomb call does not use
-C     (HOSTIN), the thread's last library message (GETMSG) and one
+C     guard GUARD1, the FRIC arguments preset to the sentinel before a
+C     call (SENTAL, SENTOU), the host arguments a Coulomb call does not
+C     use (HOSTIN), the thread's last library message (GETMSG) and one
 C     checked GAPCON call (GAPONE, with SAMEB).
 C     Fixed-form Fortran 77 like its callers, which share with it
 C       COMMON /TALLY/ NPASS,NFAIL   (zeroed by the program)
@@ -59,6 +60,47 @@ C-----------------------------------------------------------------------
         IF (A(I) .NE. SENT) OK = .FALSE.
    10 CONTINUE
       CALL CHECK(OK, WHAT, K)
+      END
+
+C-----------------------------------------------------------------------
+C     The FRIC arguments in the order of the call, preset as the host
+C     does before one: every entry of TAU, DDTDDG, DDTDDP, DSLIP,
+C     DDTDDT, DGAM, TAULM (MG) and STATEV (MSV) and SED, SFD to the
+C     sentinel -999.25, PNEWDT to 1e36 as Abaqus passes it.  The
+C     caller then sets the entries it means (up to NFDIR, NSTATV).
+C-----------------------------------------------------------------------
+      SUBROUTINE SENTAL(TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,
+     1 STATEV,DGAM,TAULM,MG,MSV)
+      INCLUDE 'ABA_PARAM.INC'
+      PARAMETER (SENT=-999.25D0)
+      DIMENSION TAU(MG),DDTDDG(MG),DDTDDP(MG),DSLIP(MG),DDTDDT(MG),
+     1 STATEV(MSV),DGAM(MG),TAULM(MG)
+      CALL SENTOU(DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,MG)
+      DO 10 I = 1, MG
+        TAU(I) = SENT
+        DGAM(I) = SENT
+        TAULM(I) = SENT
+   10 CONTINUE
+      DO 20 I = 1, MSV
+        STATEV(I) = SENT
+   20 CONTINUE
+      END
+
+C     Only the outputs that are not also inputs (before each increment
+C     of a history: TAU and STATEV carry the state).
+      SUBROUTINE SENTOU(DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,MG)
+      INCLUDE 'ABA_PARAM.INC'
+      PARAMETER (SENT=-999.25D0, BIG=1.0D36)
+      DIMENSION DDTDDG(MG),DDTDDP(MG),DSLIP(MG),DDTDDT(MG)
+      DO 10 I = 1, MG
+        DDTDDG(I) = SENT
+        DDTDDP(I) = SENT
+        DSLIP(I) = SENT
+        DDTDDT(I) = SENT
+   10 CONTINUE
+      SED = SENT
+      SFD = SENT
+      PNEWDT = BIG
       END
 
 C-----------------------------------------------------------------------
