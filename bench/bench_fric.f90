@@ -248,26 +248,14 @@ program bench_fric
   integer :: nrep, nrun, only, icase, nfdir, r, k, j, nmissed
   integer :: order(3, 6)
   logical :: slipping
-  character(len=32) :: arg, label
+  character(len=32) :: label
   real(dp), allocatable :: t(:, :)
   real(dp) :: chk(3), ns(3), nsmed(3), sec, percall, ratio, net
   character(len=12) :: verdict
 
-  nrep = 200
-  nrun = 15
-  only = 0
-  if (command_argument_count() >= 1) then
-    call get_command_argument(1, arg)
-    read (arg, *) nrep
-  end if
-  if (command_argument_count() >= 2) then
-    call get_command_argument(2, arg)
-    read (arg, *) nrun
-  end if
-  if (command_argument_count() >= 3) then
-    call get_command_argument(3, arg)
-    read (arg, *) only
-  end if
+  nrep = int_arg(1, 200)
+  nrun = int_arg(2, 15)
+  only = int_arg(3, 0)
   allocate (t(nrun, 3))
   ! The six orders of (ours, reference, empty), used in turn: each routine runs first, second
   ! and third equally often, so drift in machine load hits all three alike.

@@ -228,7 +228,7 @@ program bench_gapcon
     'INT-99 (not listed: "*")']
   real(dp), parameter :: look_k(nlook) = [101.0_dp, 101.0_dp, 120.0_dp, 99.0_dp]
   integer :: nrep, nrun, only, icase, first, last
-  character(len=32) :: arg, mode
+  character(len=32) :: mode
   real(dp) :: ns(3), nsmed(3), chk(3), ak_ptab(npoints), ak_case(npoints)
   real(dp) :: ratio, net
   integer :: i, nbad
@@ -238,21 +238,9 @@ program bench_gapcon
     error stop 2
   end if
   call get_command_argument(1, mode)
-  nrep = 200
-  nrun = 15
-  only = 0
-  if (command_argument_count() >= 2) then
-    call get_command_argument(2, arg)
-    read (arg, *) nrep
-  end if
-  if (command_argument_count() >= 3) then
-    call get_command_argument(3, arg)
-    read (arg, *) nrun
-  end if
-  if (command_argument_count() >= 4) then
-    call get_command_argument(4, arg)
-    read (arg, *) only
-  end if
+  nrep = int_arg(2, 200)
+  nrun = int_arg(3, 15)
+  only = int_arg(4, 0)
   call prepare(7)
 
   select case (trim(mode))

@@ -2,11 +2,11 @@ C=======================================================================
 C     harness_f77.f -- the routines the fixed-form harnesses share
 C     (test_fric_f1.f, test_fric_bad_input.f, test_fric_rate.f,
 C     test_gapcon_t1.f, test_gapcon_bad_input.f): the tally CHECK /
-C     CHKNR, the sentinel
-C     guard GUARD1, the FRIC arguments preset to the sentinel before a
-C     call (SENTAL, SENTOU), the host arguments a Coulomb call does not
-C     use (HOSTIN), the thread's last library message (GETMSG) and one
-C     checked GAPCON call (GAPONE, with SAMEB).
+C     CHKNR, the sentinel guard GUARD1, the FRIC arguments preset to
+C     the sentinel before a call (SENTAL, SENTOU), the host arguments a
+C     Coulomb call does not use (HOSTIN), a NaN and an Inf made at run
+C     time (NANINF), the thread's last library message (GETMSG) and
+C     one checked GAPCON call (GAPONE, with SAMEB).
 C     Fixed-form Fortran 77 like its callers, which share with it
 C       COMMON /TALLY/ NPASS,NFAIL   (zeroed by the program)
 C       COMMON /CTX/ CASE            (CHARACTER*48, the current case).
@@ -140,6 +140,25 @@ C-----------------------------------------------------------------------
       DO 20 I = 1, MG
         SLIP(I) = 0.0D0
    20 CONTINUE
+      END
+
+C-----------------------------------------------------------------------
+C     A quiet NaN and +Inf made at run time from text, so that neither
+C     constant folding nor -fcheck sees them; checked to be what they
+C     claim (case 'run-time NaN and Inf', check 0).
+C-----------------------------------------------------------------------
+      SUBROUTINE NANINF(XNAN, XINF)
+      INCLUDE 'ABA_PARAM.INC'
+      CHARACTER*48 CASE
+      COMMON /CTX/ CASE
+      CHARACTER*8 SNAN,SINF
+      CASE = 'run-time NaN and Inf'
+      SNAN = 'NaN'
+      SINF = 'Inf'
+      READ (SNAN,*) XNAN
+      READ (SINF,*) XINF
+      CALL CHECK(XNAN .NE. XNAN, 'NaN from text is a NaN', 0)
+      CALL CHECK(XINF .GT. HUGE(XINF), 'Inf from text is +Inf', 0)
       END
 
 C-----------------------------------------------------------------------
