@@ -15,6 +15,7 @@
 program test_fric_weakening
   use harness_tally
   use harness_fric_host
+  use harness_uinter_host
   implicit none
   real(dp), parameter :: gcrit = 1.0e-3_dp, p = 100.0_dp, mu_s = 0.5_dp, mu_k = 0.2_dp
   real(dp), parameter :: dc = 200.0_dp, sa = 3.0_dp, kmu = 0.5_dp, vhalf = 1.0e-3_dp
@@ -149,51 +150,33 @@ contains
 
   subroutine fresh_gap(ndir)
     integer, intent(in) :: ndir
-    real(dp) :: stress(4), ddsddr(10), dvisc(10), dstruct(10), flux(3), ddfddt(5), ddsddt(7)
-    real(dp) :: ddfddr(7), sv(4), ssed, ssfd, spd, svd, scd, pnew, rdisp(3), drdisp(3)
-    real(dp) :: utemp(2), dtemp(2), upredef(2), dpred(2), utime(2), udtime, freqr
-    real(dp) :: uprops(10), ucoords(3), alocaldir(9), udrot(2, 2), area, uchr
-    character(len=80) :: cin, sln, msn
-    integer :: unode, unstatv, unpred, unprops, umcrd, ukstep, ukinc, kit, linper
-    integer :: lopenclose, lstate, lsdi, lprint, pass
-    uprops = [2.0_dp, mu_k, mu_s, sa, 5.0_dp, 0.0_dp, 0.0_dp, gcrit, 0.0_dp, 1.0e6_dp]
-    stress = 0
-    stress(4) = sentinel
-    sv = 0
-    sv(4) = sentinel
-    ssed = 0; ssfd = 0; spd = 0; svd = 0; scd = 0
-    rdisp = 0; drdisp = [-1.0e-6_dp, 1.0e-5_dp, 0.0_dp]
-    utemp = 20; dtemp = 0; upredef = 0; dpred = 0; utime = 0; udtime = 1; freqr = 0
-    ucoords = 0; alocaldir = 0; udrot = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
-    area = 1; uchr = 1
-    cin = 'FRESH'; sln = 'SLAVE'; msn = 'MASTER'
-    unode = 1; unstatv = 3; unpred = 1; unprops = 10; umcrd = 3; ukstep = 1; ukinc = 1
-    kit = 1; linper = 0; lopenclose = -1; lstate = -1; lsdi = 0; lprint = 0
+    type(uinter_args) :: u
+    integer :: pass
+    u = new_uinter(ndir, [2.0_dp, mu_k, mu_s, sa, 5.0_dp, 0.0_dp, 0.0_dp, gcrit, 0.0_dp, &
+                          1.0e6_dp], 'FRESH')
+    u%drdisp = [-1.0e-6_dp, 1.0e-5_dp, 0.0_dp]
+    u%drot = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+    u%node = 1
     do pass = 0, 2
       write (scene, '(a,i0,a,i0)') 'fresh gap NDIR ', ndir, ' pass ', pass
-      rdisp(1) = -1.0e-6_dp
-      if (pass == 1) rdisp(1) = 1.0e-6_dp
-      pnew = big
-      call uinter(stress, ddsddr, dvisc, dstruct, flux, ddfddt, ddsddt, ddfddr, sv, ssed, &
-                  ssfd, spd, svd, scd, pnew, rdisp, drdisp, utemp, dtemp, upredef, dpred, &
-                  utime, udtime, freqr, cin, sln, msn, uprops, ucoords, alocaldir, udrot, &
-                  area, uchr, unode, ndir, unstatv, unpred, unprops, umcrd, ukstep, ukinc, kit, &
-                  linper, lopenclose, lstate, lsdi, lprint)
-      call check(pnew == big, 'no cut-back')
-      call check(sv(4) == sentinel .and. stress(4) == sentinel, 'guards untouched')
-      drdisp(2) = 0
+      u%rdisp(1) = -1.0e-6_dp
+      if (pass == 1) u%rdisp(1) = 1.0e-6_dp
+      call uinter_call(u)
+      call check(u%pnewdt == big, 'no cut-back')
+      call check_uinter_tails(u)
+      u%drdisp(2) = 0
       select case (pass)
       case (0)
-        call check(all(stress(1:ndir) == 0), 'a fresh point with a gap carries nothing')
-        call check(sv(3) == 4, 'status open')
-        call check(lopenclose == 0, 'LOPENCLOSE = 0')
+        call check(all(u%stress(1:ndir) == 0), 'a fresh point with a gap carries nothing')
+        call check(u%statev(3) == 4, 'status open')
+        call check(u%lopenclose == 0, 'LOPENCLOSE = 0')
       case (1)
-        call check_near(stress(1), 1.0_dp, 1.0e-12_dp, 0.0_dp, 'closed: p = K_n h')
-        call check(sv(3) == 0, 'status stick')
+        call check_near(u%stress(1), 1.0_dp, 1.0e-12_dp, 0.0_dp, 'closed: p = K_n h')
+        call check(u%statev(3) == 0, 'status stick')
       case default
-        call check_near(stress(1), -1.0_dp, 1.0e-12_dp, 0.0_dp, 'bonded: tension K_n |h|')
-        call check(sv(3) == 3, 'status bonded')
-        call check(lopenclose == 1, 'LOPENCLOSE = 1')
+        call check_near(u%stress(1), -1.0_dp, 1.0e-12_dp, 0.0_dp, 'bonded: tension K_n |h|')
+        call check(u%statev(3) == 3, 'status bonded')
+        call check(u%lopenclose == 1, 'LOPENCLOSE = 1')
       end select
     end do
   end subroutine fresh_gap
