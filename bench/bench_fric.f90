@@ -169,21 +169,12 @@ contains
         if (svo(3) /= real(expect_status, dp) .or. svr(3) /= real(expect_status, dp)) &
           what = trim(what) // ' STATEV(3)-vs-case'
       end if
-      if (len_trim(what) > 0) then
-        nbad = nbad + 1
-        if (nbad <= 5) then
-          write (*, '(a,a,a,i0,a,a)') 'bench_fric: ', label, ': point ', i, ' disagrees on', &
-            trim(what)
-          write (*, '(a,4es24.16)') '  ours TAU, SED, SFD: ', tauo(1:nfdir), sedo, sfdo
-          write (*, '(a,4es24.16)') '  ref  TAU, SED, SFD: ', taur(1:nfdir), sedr, sfdr
-        end if
+      if (disagrees('bench_fric', label, i, what, nbad)) then
+        write (*, '(a,4es24.16)') '  ours TAU, SED, SFD: ', tauo(1:nfdir), sedo, sfdo
+        write (*, '(a,4es24.16)') '  ref  TAU, SED, SFD: ', taur(1:nfdir), sedr, sfdr
       end if
     end do
-    if (nbad > 0) then
-      write (*, '(a,a,a,i0,a,i0,a)') 'bench_fric: ', label, ': ', nbad, ' of ', npoints, &
-        ' points disagree; no timing'
-      error stop 1
-    end if
+    call stop_if_disagreed('bench_fric', label, nbad, npoints, '')
   end subroutine check_points
 
   ! One timed run: NREP sweeps over the points through routine WHICH. The loop body is the same

@@ -123,21 +123,13 @@ contains
         what = trim(what) // ' AK(1)'
       if (.not. (want > 0.0_dp)) what = trim(what) // ' AK(1)-of-reference-not-positive'
       if (any(ako(2:5) /= sentinel)) what = trim(what) // ' AK(2..5)-written'
-      if (len_trim(what) > 0) then
-        nbad = nbad + 1
-        if (nbad <= 5) then
-          write (*, '(a,a,a,i0,a,a)') 'bench_gapcon: ', label, ': point ', i, ' disagrees on', &
-            trim(what)
-          write (*, '(a,4es24.16)') '  D(1), D(2), TEMP: ', d, temp
-          write (*, '(a,2es24.16)') '  ours AK(1), expected: ', ako(1), want
-        end if
+      if (disagrees('bench_gapcon', label, i, what, nbad)) then
+        write (*, '(a,4es24.16)') '  D(1), D(2), TEMP: ', d, temp
+        write (*, '(a,2es24.16)') '  ours AK(1), expected: ', ako(1), want
       end if
     end do
-    if (nbad > 0) then
-      write (*, '(a,a,a,i0,a,i0,a)') 'bench_gapcon: ', label, ': ', nbad, ' of ', npoints, &
-        ' points disagree; no timing (is INTERFACIAL_CONFIG the file of this mode?)'
-      error stop 1
-    end if
+    call stop_if_disagreed('bench_gapcon', label, nbad, npoints, &
+                           ' (is INTERFACIAL_CONFIG the file of this mode?)')
   end subroutine check_points
 
   ! One timed run: NREP sweeps over the points through routine WHICH.
