@@ -4,9 +4,10 @@ C     (test_fric_f1.f, test_fric_bad_input.f, test_fric_rate.f,
 C     test_gapcon_t1.f, test_gapcon_bad_input.f): the tally CHECK /
 C     CHKNR, the sentinel guard GUARD1, the FRIC arguments preset to
 C     the sentinel before a call (SENTAL, SENTOU), the host arguments a
-C     Coulomb call does not use (HOSTIN), a NaN and an Inf made at run
-C     time (NANINF), the thread's last library message (GETMSG) and
-C     one checked GAPCON call (GAPONE, with SAMEB).
+C     Coulomb call does not use (HOSTIN), the Coulomb point of scene
+C     F1 (F1PT), a NaN and an Inf made at run time (NANINF), the
+C     thread's last library message (GETMSG) and one checked GAPCON
+C     call (GAPONE, with SAMEB).
 C     Fixed-form Fortran 77 like its callers, which share with it
 C       COMMON /TALLY/ NPASS,NFAIL   (zeroed by the program)
 C       COMMON /CTX/ CASE            (CHARACTER*48, the current case).
@@ -140,6 +141,26 @@ C-----------------------------------------------------------------------
       DO 20 I = 1, MG
         SLIP(I) = 0.0D0
    20 CONTINUE
+      END
+
+C-----------------------------------------------------------------------
+C     The Coulomb point the fixed-form FRIC harnesses start from (scene
+C     F1): PROPS(1..5) = (1, mu = 0.3, 0, tau_max = 0, gc = 1e-3),
+C     NPROPS = 5, CHRLNGTH = 0.2, NSTATV = 3, p = 100, DPRESS = 0.
+C-----------------------------------------------------------------------
+      SUBROUTINE F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
+      INCLUDE 'ABA_PARAM.INC'
+      DIMENSION PROPS(5)
+      PROPS(1) = 1.0D0
+      PROPS(2) = 0.3D0
+      PROPS(3) = 0.0D0
+      PROPS(4) = 0.0D0
+      PROPS(5) = 1.0D-3
+      NPROPS = 5
+      CHRLNGTH = 0.2D0
+      NSTATV = 3
+      PRESS = 100.0D0
+      DPRESS = 0.0D0
       END
 
 C-----------------------------------------------------------------------

@@ -15,8 +15,8 @@ C     Each case gets its own interaction name, so a stale message from
 C     an earlier case cannot pass.  A caller that declares CHARACTER*8
 C     names (old user code) checks that the hidden length is trusted.
 C
-C     CHECK, CHKNR, GUARD1, SENTAL, HOSTIN, NANINF and GETMSG come from
-C     harness_f77.f.
+C     CHECK, CHKNR, GUARD1, SENTAL, HOSTIN, F1PT, NANINF and GETMSG come
+C     from harness_f77.f.
 C
 C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
@@ -82,18 +82,9 @@ C
       CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
      1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
       NFDIR = NDIR
-      PROPS(1) = 1.0D0
-      PROPS(2) = 0.3D0
-      PROPS(3) = 0.0D0
-      PROPS(4) = 0.0D0
-      PROPS(5) = 1.0D-3
+      CALL F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
       PROPS(6) = SENT
       PROPS(7) = SENT
-      NPROPS = 5
-      NSTATV = 3
-      CHRLNGTH = 0.2D0
-      PRESS = 100.0D0
-      DPRESS = 0.0D0
       LM = 0
       CALL SENTAL(TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,
      1 STATEV,DGAM,TAULM,MG,MSV)
@@ -246,10 +237,7 @@ C
       CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
      1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
       NFDIR = 2
-      NSTATV = 3
-      NPROPS = 5
-      CHRLNGTH = 0.2D0
-      PRESS = 100.0D0
+      CALL F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
       DPRESS = 100.0D0
       DO 40 IBAD = 0, 1
         IF (IBAD .EQ. 0) THEN
@@ -257,12 +245,7 @@ C
         ELSE
           CASE = 'CHARACTER*8 caller, mu < 0'
         END IF
-        PROPS(1) = 1.0D0
-        PROPS(2) = 0.3D0
         IF (IBAD .EQ. 1) PROPS(2) = -0.3D0
-        PROPS(3) = 0.0D0
-        PROPS(4) = 0.0D0
-        PROPS(5) = 1.0D-3
         CALL SENTAL(TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,
      1   STATEV,DGAM,TAULM,MG,MSV)
         STATEV(1) = 0.0D0

@@ -13,7 +13,7 @@ C       stick: tau = k_s gamma_el,  slip: |tau| = tau_crit.
 C     Output arrays are declared longer than NFDIR (STATEV longer than
 C     NSTATV); their tails hold a sentinel that must survive each call.
 C
-C     CHECK, CHKNR, GUARD1, SENTAL, SENTOU and HOSTIN come from
+C     CHECK, CHKNR, GUARD1, SENTAL, SENTOU, HOSTIN and F1PT come from
 C     harness_f77.f.
 C
 C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
@@ -303,16 +303,7 @@ C
       CINAME = 'F1-LM2'
       SLNAME = 'SLAVE'
       MSNAME = 'MASTER'
-      PROPS(1) = 1.0D0
-      PROPS(2) = 0.3D0
-      PROPS(3) = 0.0D0
-      PROPS(4) = 0.0D0
-      PROPS(5) = 1.0D-3
-      NPROPS = 5
-      CHRLNGTH = 0.2D0
-      NSTATV = 3
-      PRESS = 100.0D0
-      DPRESS = 0.0D0
+      CALL F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
       DO 50 NFDIR = 1, 2
         WRITE (CASE,'(A,I1)') 'F1 LM=2 on entry NFDIR=', NFDIR
         CALL SENTAL(TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,
@@ -361,18 +352,10 @@ C
       CINAME = 'F1-ROUGH'
       SLNAME = 'SLAVE'
       MSNAME = 'MASTER'
-      PROPS(1) = 1.0D0
-      PROPS(2) = 0.3D0
-      PROPS(3) = 0.0D0
-      PROPS(4) = 0.0D0
-      PROPS(5) = 1.0D-3
+      CALL F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
       PROPS(6) = 0.0D0
       PROPS(7) = 2.0D0
       NPROPS = 7
-      CHRLNGTH = 0.2D0
-      NSTATV = 3
-      PRESS = 100.0D0
-      DPRESS = 0.0D0
       DO 50 NFDIR = 1, 2
 C       LMIN = 0: first call of an increment with a large motion;
 C       LMIN = 1: next iteration with a Lagrange stress 1e3 mu p.
