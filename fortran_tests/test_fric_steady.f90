@@ -25,6 +25,9 @@ program test_fric_steady
   real(dp), parameter :: mu = 0.4_dp, mu_k = 0.2_dp, dc = 3.0_dp, p = 50.0_dp, ff = 0.01_dp
   real(dp), parameter :: omega = 20.0_dp, radius = 0.5_dp, dt = 0.1_dp
 
+  ! PROPS entries by name (generated from the schema).
+  include 'props_index.inc'
+
   ! The FRIC arguments of one contact point (module harness_fric_host).
   type(fric_args) :: h
   integer :: nd, variant, decay
@@ -58,20 +61,20 @@ contains
 
   subroutine point(n, var, dec)
     integer, intent(in) :: n, var, dec
-    real(dp) :: props(20)
+    real(dp) :: props(kpc_n)
     props = 0
-    props(1) = 1
-    props(2) = mu
-    props(6) = ff
-    props(7) = 3 ! viscous stick, steady-state transport
+    props(kpc_code) = law_coulomb
+    props(kpc_mu) = mu
+    props(kpc_slip_tolerance) = ff
+    props(kpc_stick) = 3 ! viscous stick, steady-state transport
     if (dec == 1) then
-      props(8) = 1
-      props(9) = mu_k
-      props(10) = dc
+      props(kpc_mu_law) = 1 ! exponential decay
+      props(kpc_mu_k) = mu_k
+      props(kpc_decay) = dc
     end if
-    props(14) = omega
-    props(15) = 3 ! z axis
-    props(16) = real(var, dp)
+    props(kpc_omega) = omega
+    props(kpc_axis) = 3 ! z axis
+    props(kpc_viscous_reference) = real(var, dp)
     h = new_point(n, props, 'DISC_PAD')
     h%press = p
     h%dtime = dt
@@ -188,7 +191,7 @@ contains
     call refused('PROPS(16) = 2 must select')
     scene = 'steady transport: omega = 0'
     call point(2, 1, 0)
-    h%props(14) = 0
+    h%props(kpc_omega) = 0
     call refused('PROPS(14)')
   end subroutine bad_input
 end program test_fric_steady

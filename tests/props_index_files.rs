@@ -42,9 +42,15 @@ fn c_header() -> String {
          #ifndef INTERFACIAL_PROPS_INDEX_H\n#define INTERFACIAL_PROPS_INDEX_H\n",
     );
     for (law, layout) in layouts() {
-        s.push_str(&format!("\n/* law {}: the {} */\n", layout.code, layout.law));
+        s.push_str(&format!(
+            "\n/* law {}: the {} */\n",
+            layout.code, layout.law
+        ));
         s.push_str(&format!("#define IFLP_LAW_{law} {}\n", layout.code));
-        s.push_str(&format!("#define IFLP_{law}_NPROPS {}\n", layout.entries.len()));
+        s.push_str(&format!(
+            "#define IFLP_{law}_NPROPS {}\n",
+            layout.entries.len()
+        ));
         for e in named_entries(layout) {
             s.push_str(&format!(
                 "#define IFLP_{law}_{} {} /* PROPS({}): {} */\n",
@@ -72,8 +78,14 @@ fn fortran_include() -> String {
     for (law, layout) in layouts() {
         let short = law_letter(law);
         s.push_str(&format!("! law {}: the {}\n", layout.code, layout.law));
-        s.push_str(&format!("      INTEGER, PARAMETER :: LAW_{law} = {}\n", layout.code));
-        s.push_str(&format!("      INTEGER, PARAMETER :: KP{short}_N = {}\n", layout.entries.len()));
+        s.push_str(&format!(
+            "      INTEGER, PARAMETER :: LAW_{law} = {}\n",
+            layout.code
+        ));
+        s.push_str(&format!(
+            "      INTEGER, PARAMETER :: KP{short}_N = {}\n",
+            layout.entries.len()
+        ));
         for e in named_entries(layout) {
             s.push_str(&format!(
                 "      INTEGER, PARAMETER :: KP{short}_{} = {}\n",
@@ -128,7 +140,10 @@ fn a_stale_index_file_is_caught() {
     let rendered = c_header().replacen("IFLP_COULOMB_MU 1", "IFLP_COULOMB_MU 2", 1);
     assert_ne!(rendered, c_header(), "the mutation must change the text");
     let err = check("c_tests/props_index.h", &rendered).unwrap_err();
-    assert!(err.contains("INTERFACIAL_BLESS=1 cargo test --test props_index_files"), "{err}");
+    assert!(
+        err.contains("INTERFACIAL_BLESS=1 cargo test --test props_index_files"),
+        "{err}"
+    );
 }
 
 /// The names are unique per language, valid identifiers, and the Fortran lines fit fixed form
@@ -140,7 +155,10 @@ fn generated_names_are_unique_and_fit_both_languages() {
     for line in c.lines().filter(|l| l.starts_with("#define IFLP")) {
         let name = line.split_whitespace().nth(1).unwrap();
         assert!(seen.insert(name.to_string()), "C name {name} twice");
-        assert!(name.chars().all(|ch| ch.is_ascii_uppercase() || ch.is_ascii_digit() || ch == '_'));
+        assert!(
+            name.chars()
+                .all(|ch| ch.is_ascii_uppercase() || ch.is_ascii_digit() || ch == '_')
+        );
     }
     let f = fortran_include();
     let mut seen = HashSet::new();
