@@ -30,7 +30,7 @@ module adh_data
   real(dp) :: tau0(2, npoints, nlaw), dgam(2, npoints, nlaw), press(npoints), dpress(npoints)
   integer(int64) :: rng_state = 7
 contains
-  ! urand (the generator) and median.
+  ! urand (the generator), median and int_arg.
   include 'bench_common.inc'
 
   subroutine setup()
@@ -84,23 +84,13 @@ end module adh_data
 program bench_adhesive
   use adh_data
   implicit none
-  integer :: nrep, nrun, c, l, r, k, i, nargs, only
-  character(len=32) :: arg
+  integer :: nrep, nrun, c, l, r, k, i, only
   real(dp) :: best(nlaw, 2), t, chk
   logical :: slipping
 
-  nrep = 200; nrun = 15
-  nargs = command_argument_count()
-  if (nargs >= 1) then
-    call get_command_argument(1, arg); read (arg, *) nrep
-  end if
-  if (nargs >= 2) then
-    call get_command_argument(2, arg); read (arg, *) nrun
-  end if
-  only = 0
-  if (nargs >= 3) then
-    call get_command_argument(3, arg); read (arg, *) only
-  end if
+  nrep = int_arg(1, 200)
+  nrun = int_arg(2, 15)
+  only = int_arg(3, 0)
   call setup()
   best = huge(1.0_dp)
   do c = 1, 2

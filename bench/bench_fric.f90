@@ -169,21 +169,12 @@ contains
         if (svo(3) /= real(expect_status, dp) .or. svr(3) /= real(expect_status, dp)) &
           what = trim(what) // ' STATEV(3)-vs-case'
       end if
-      if (len_trim(what) > 0) then
-        nbad = nbad + 1
-        if (nbad <= 5) then
-          write (*, '(a,a,a,i0,a,a)') 'bench_fric: ', label, ': point ', i, ' disagrees on', &
-            trim(what)
-          write (*, '(a,4es24.16)') '  ours TAU, SED, SFD: ', tauo(1:nfdir), sedo, sfdo
-          write (*, '(a,4es24.16)') '  ref  TAU, SED, SFD: ', taur(1:nfdir), sedr, sfdr
-        end if
+      if (disagrees('bench_fric', label, i, what, nbad)) then
+        write (*, '(a,4es24.16)') '  ours TAU, SED, SFD: ', tauo(1:nfdir), sedo, sfdo
+        write (*, '(a,4es24.16)') '  ref  TAU, SED, SFD: ', taur(1:nfdir), sedr, sfdr
       end if
     end do
-    if (nbad > 0) then
-      write (*, '(a,a,a,i0,a,i0,a)') 'bench_fric: ', label, ': ', nbad, ' of ', npoints, &
-        ' points disagree; no timing'
-      error stop 1
-    end if
+    call stop_if_disagreed('bench_fric', label, nbad, npoints, '')
   end subroutine check_points
 
   ! One timed run: NREP sweeps over the points through routine WHICH. The loop body is the same
@@ -248,26 +239,14 @@ program bench_fric
   integer :: nrep, nrun, only, icase, nfdir, r, k, j, nmissed
   integer :: order(3, 6)
   logical :: slipping
-  character(len=32) :: arg, label
+  character(len=32) :: label
   real(dp), allocatable :: t(:, :)
   real(dp) :: chk(3), ns(3), nsmed(3), sec, percall, ratio, net
   character(len=12) :: verdict
 
-  nrep = 200
-  nrun = 15
-  only = 0
-  if (command_argument_count() >= 1) then
-    call get_command_argument(1, arg)
-    read (arg, *) nrep
-  end if
-  if (command_argument_count() >= 2) then
-    call get_command_argument(2, arg)
-    read (arg, *) nrun
-  end if
-  if (command_argument_count() >= 3) then
-    call get_command_argument(3, arg)
-    read (arg, *) only
-  end if
+  nrep = int_arg(1, 200)
+  nrun = int_arg(2, 15)
+  only = int_arg(3, 0)
   allocate (t(nrun, 3))
   ! The six orders of (ours, reference, empty), used in turn: each routine runs first, second
   ! and third equally often, so drift in machine load hits all three alike.

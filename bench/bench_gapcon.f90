@@ -123,21 +123,13 @@ contains
         what = trim(what) // ' AK(1)'
       if (.not. (want > 0.0_dp)) what = trim(what) // ' AK(1)-of-reference-not-positive'
       if (any(ako(2:5) /= sentinel)) what = trim(what) // ' AK(2..5)-written'
-      if (len_trim(what) > 0) then
-        nbad = nbad + 1
-        if (nbad <= 5) then
-          write (*, '(a,a,a,i0,a,a)') 'bench_gapcon: ', label, ': point ', i, ' disagrees on', &
-            trim(what)
-          write (*, '(a,4es24.16)') '  D(1), D(2), TEMP: ', d, temp
-          write (*, '(a,2es24.16)') '  ours AK(1), expected: ', ako(1), want
-        end if
+      if (disagrees('bench_gapcon', label, i, what, nbad)) then
+        write (*, '(a,4es24.16)') '  D(1), D(2), TEMP: ', d, temp
+        write (*, '(a,2es24.16)') '  ours AK(1), expected: ', ako(1), want
       end if
     end do
-    if (nbad > 0) then
-      write (*, '(a,a,a,i0,a,i0,a)') 'bench_gapcon: ', label, ': ', nbad, ' of ', npoints, &
-        ' points disagree; no timing (is INTERFACIAL_CONFIG the file of this mode?)'
-      error stop 1
-    end if
+    call stop_if_disagreed('bench_gapcon', label, nbad, npoints, &
+                           ' (is INTERFACIAL_CONFIG the file of this mode?)')
   end subroutine check_points
 
   ! One timed run: NREP sweeps over the points through routine WHICH.
@@ -228,7 +220,7 @@ program bench_gapcon
     'INT-99 (not listed: "*")']
   real(dp), parameter :: look_k(nlook) = [101.0_dp, 101.0_dp, 120.0_dp, 99.0_dp]
   integer :: nrep, nrun, only, icase, first, last
-  character(len=32) :: arg, mode
+  character(len=32) :: mode
   real(dp) :: ns(3), nsmed(3), chk(3), ak_ptab(npoints), ak_case(npoints)
   real(dp) :: ratio, net
   integer :: i, nbad
@@ -238,21 +230,9 @@ program bench_gapcon
     error stop 2
   end if
   call get_command_argument(1, mode)
-  nrep = 200
-  nrun = 15
-  only = 0
-  if (command_argument_count() >= 2) then
-    call get_command_argument(2, arg)
-    read (arg, *) nrep
-  end if
-  if (command_argument_count() >= 3) then
-    call get_command_argument(3, arg)
-    read (arg, *) nrun
-  end if
-  if (command_argument_count() >= 4) then
-    call get_command_argument(4, arg)
-    read (arg, *) only
-  end if
+  nrep = int_arg(2, 200)
+  nrun = int_arg(3, 15)
+  only = int_arg(4, 0)
   call prepare(7)
 
   select case (trim(mode))

@@ -29,7 +29,12 @@ module bench_rate_data
   integer :: nprops(5)
   ! The PROPS set of each row: constant, decay (cold), frozen, decay (warm), general, aniso.
   integer, parameter :: pset(nrow) = [1, 2, 3, 2, 4, 5]
+  ! The state of bench_common.inc's urand (this program draws with uniform(state) instead).
+  integer(int64) :: rng_state = 1
 contains
+  ! int_arg (the command line); also urand and median.
+  include 'bench_common.inc'
+
   real(dp) function uniform(state)
     integer(int64), intent(inout) :: state
     ! Park-Miller: the product stays below 2**46, no overflow.
@@ -115,25 +120,14 @@ program bench_rate
   use bench_rate_data
   implicit none
   integer :: nrep, nrun, r, w, only
-  character(len=32) :: arg
   real(dp) :: best(nrow), t, chk(nrow)
   character(len=*), parameter :: names(nrow) = [character(len=34) :: 'constant', &
     'decay (cold start)', 'frozen', 'decay (warm start)', 'constant, general path (HHT on)', &
     'constant, anisotropic']
-  nrep = 200
-  nrun = 15
-  if (command_argument_count() >= 1) then
-    call get_command_argument(1, arg)
-    read (arg, *) nrep
-  end if
-  if (command_argument_count() >= 2) then
-    call get_command_argument(2, arg)
-    read (arg, *) nrun
-  end if
-  only = 0
+  nrep = int_arg(1, 200)
+  nrun = int_arg(2, 15)
+  only = int_arg(3, 0)
   if (command_argument_count() >= 3) then
-    call get_command_argument(3, arg)
-    read (arg, *) only
     if (only < 1 .or. only > nrow) then
       write (*, '(a,i0)') 'bench_rate: ROW must be 1 to ', nrow
       error stop 2

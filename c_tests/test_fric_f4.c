@@ -20,6 +20,7 @@
 #include <stdio.h>
 
 #include "harness.h"
+#include "props_index.h"
 
 #define MU_S 0.6
 #define MU_K 0.3
@@ -30,20 +31,26 @@
 
 static double mu_of(double v) { return MU_K + (MU_S - MU_K) * exp(-DECAY * v); }
 
-static void props_decay(double *props, int exact, int frozen)
+/* Law 1 with mu and gamma_crit, every other entry 0. */
+static void props_coulomb(double *props, double mu)
 {
     int i;
-    for (i = 0; i < 20; i++) {
+    for (i = 0; i < IFLP_COULOMB_NPROPS; i++) {
         props[i] = 0.0;
     }
-    props[0] = 1;
-    props[1] = MU_S;
-    props[4] = GAMMA_CRIT;
-    props[6] = exact ? 1 : 0;
-    props[7] = 1;
-    props[8] = MU_K;
-    props[9] = DECAY;
-    props[19] = frozen ? 1 : 0;
+    props[IFLP_COULOMB_CODE] = IFLP_LAW_COULOMB;
+    props[IFLP_COULOMB_MU] = mu;
+    props[IFLP_COULOMB_GAMMA_CRIT] = GAMMA_CRIT;
+}
+
+static void props_decay(double *props, int exact, int frozen)
+{
+    props_coulomb(props, MU_S);
+    props[IFLP_COULOMB_STICK] = exact ? 1 : 0;
+    props[IFLP_COULOMB_MU_LAW] = 1; /* exponential decay from mu_s to mu_k */
+    props[IFLP_COULOMB_MU_K] = MU_K;
+    props[IFLP_COULOMB_DECAY] = DECAY;
+    props[IFLP_COULOMB_FROZEN] = frozen ? 1 : 0;
 }
 
 /* fric_coef_ for one point: mu and d mu/d rate in direction 1. */
@@ -64,11 +71,11 @@ static void steps(int nfdir, int exact, int frozen)
 {
     static const double rates[4] = {0.05, 0.5, 0.2, 1.5};
     const double d[2] = {nfdir == 1 ? 1.0 : 0.6, nfdir == 1 ? 0.0 : 0.8};
-    double props[20];
+    double props[IFLP_COULOMB_NPROPS];
     fh_fric h;
     int s;
     props_decay(props, exact, frozen);
-    fh_init(&h, nfdir, props, 20);
+    fh_init(&h, nfdir, props, IFLP_COULOMB_NPROPS);
     h.press = P;
     h.dpress = P;
     h.dtime = DT;
@@ -90,20 +97,15 @@ static void steps(int nfdir, int exact, int frozen)
 static void damping(int nfdir)
 {
     const double c0 = 2.0, v = 0.4;
-    double props[20];
+    double props[IFLP_COULOMB_NPROPS];
     const double d[2] = {nfdir == 1 ? 1.0 : 0.6, nfdir == 1 ? 0.0 : 0.8};
     const double ks = MU_S * P / GAMMA_CRIT;
     double tau_eq = 0.0;
     fh_fric h;
     int k, a;
-    for (k = 0; k < 20; k++) {
-        props[k] = 0.0;
-    }
-    props[0] = 1;
-    props[1] = MU_S;
-    props[4] = GAMMA_CRIT;
-    props[16] = c0;
-    fh_init(&h, nfdir, props, 20);
+    props_coulomb(props, MU_S);
+    props[IFLP_COULOMB_DAMPING] = c0;
+    fh_init(&h, nfdir, props, IFLP_COULOMB_NPROPS);
     h.nstatv = 3 + nfdir;
     fh_set_guards(&h);
     h.press = P;
@@ -134,18 +136,13 @@ static void f5_pressure_mu(int nfdir)
 {
     const double mu0 = 0.5, p_ref = 100.0, tau_max = 30.0;
     const double d[2] = {nfdir == 1 ? 1.0 : 0.8, nfdir == 1 ? 0.0 : -0.6};
-    double props[20], p_before = 0.0;
+    double props[IFLP_COULOMB_NPROPS], p_before = 0.0;
     fh_fric h;
     int k, a;
-    for (k = 0; k < 20; k++) {
-        props[k] = 0.0;
-    }
-    props[0] = 1;
-    props[1] = mu0;
-    props[3] = tau_max;
-    props[4] = GAMMA_CRIT;
-    props[10] = p_ref;
-    fh_init(&h, nfdir, props, 11);
+    props_coulomb(props, mu0);
+    props[IFLP_COULOMB_TAU_MAX] = tau_max;
+    props[IFLP_COULOMB_P_REF] = p_ref;
+    fh_init(&h, nfdir, props, IFLP_COULOMB_P_REF + 1);
     for (k = 1; k <= 200; k++) {
         /* 2, 4, ..., 400, never exactly on the cap mu(p) p = 30 (p = 150). */
         const double p = 2.0 * k + 0.5;
@@ -171,10 +168,10 @@ static void f5_pressure_mu(int nfdir)
 
 static void bad_dtime(void)
 {
-    double props[20];
+    double props[IFLP_COULOMB_NPROPS];
     fh_fric h, before;
     props_decay(props, 0, 0);
-    fh_init(&h, 2, props, 20);
+    fh_init(&h, 2, props, IFLP_COULOMB_NPROPS);
     fh_context("rate law with DTIME = 0");
     h.press = P;
     h.dtime = 0.0;

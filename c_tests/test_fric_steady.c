@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "harness.h"
+#include "props_index.h"
 
 #define MU 0.4
 #define MU_K 0.2
@@ -36,21 +37,21 @@
 static void props_steady(double *props, int variant, int decay)
 {
     int i;
-    for (i = 0; i < 20; i++) {
+    for (i = 0; i < IFLP_COULOMB_NPROPS; i++) {
         props[i] = 0.0;
     }
-    props[0] = 1;
-    props[1] = MU;
-    props[5] = FF;
-    props[6] = 3; /* viscous stick, steady-state transport */
+    props[IFLP_COULOMB_CODE] = IFLP_LAW_COULOMB;
+    props[IFLP_COULOMB_MU] = MU;
+    props[IFLP_COULOMB_SLIP_TOLERANCE] = FF;
+    props[IFLP_COULOMB_STICK] = 3; /* viscous stick, steady-state transport */
     if (decay) {
-        props[7] = 1;
-        props[8] = MU_K;
-        props[9] = DC;
+        props[IFLP_COULOMB_MU_LAW] = 1; /* exponential decay */
+        props[IFLP_COULOMB_MU_K] = MU_K;
+        props[IFLP_COULOMB_DECAY] = DC;
     }
-    props[13] = OMEGA;
-    props[14] = 3; /* z axis */
-    props[15] = variant;
+    props[IFLP_COULOMB_OMEGA] = OMEGA;
+    props[IFLP_COULOMB_AXIS] = 3; /* z axis */
+    props[IFLP_COULOMB_VISCOUS_REFERENCE] = variant;
 }
 
 static double mu_of(int decay, double rate)
@@ -65,9 +66,9 @@ static double dmu_of(int decay, double rate)
 
 static void point(fh_fric *h, int nfdir, int variant, int decay)
 {
-    double props[20];
+    double props[IFLP_COULOMB_NPROPS];
     props_steady(props, variant, decay);
-    fh_init(h, nfdir, props, 20);
+    fh_init(h, nfdir, props, IFLP_COULOMB_NPROPS);
     h->coords[0] = 0.3;
     h->coords[1] = 0.4;
     h->coords[2] = 2.0;
@@ -160,11 +161,11 @@ static void bad_input(void)
     refused(&h, "PROPS(16) = 2 must select");
     fh_context("steady transport: PROPS(16) = 0.5");
     point(&h, 2, 0, 0);
-    h.props[15] = 0.5;
+    h.props[IFLP_COULOMB_VISCOUS_REFERENCE] = 0.5;
     refused(&h, "PROPS(16) = 0.5 must select");
     fh_context("steady transport: omega = 0");
     point(&h, 2, 1, 0);
-    h.props[13] = 0.0;
+    h.props[IFLP_COULOMB_OMEGA] = 0.0;
     refused(&h, "PROPS(14)");
     fh_context("steady transport: a point on the axis, seed 003");
     point(&h, 2, 1, 0);

@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "harness.h"
+#include "props_index.h"
 
 #define P 50.0
 #define GAMMA_CRIT 1e-3
@@ -38,26 +39,26 @@ static double mu_tab(double v)
 static void props_table(double *props, int exact, int frozen)
 {
     int i;
-    for (i = 0; i < 20; i++) {
+    for (i = 0; i < IFLP_COULOMB_NPROPS; i++) {
         props[i] = 0.0;
     }
-    props[0] = 1;
-    props[1] = 1.0; /* reference of the anisotropy ratio only */
-    props[4] = GAMMA_CRIT;
-    props[6] = exact ? 1 : 0;
-    props[7] = 2;
-    props[19] = frozen ? 1 : 0;
+    props[IFLP_COULOMB_CODE] = IFLP_LAW_COULOMB;
+    props[IFLP_COULOMB_MU] = 1.0; /* reference of the anisotropy ratio only */
+    props[IFLP_COULOMB_GAMMA_CRIT] = GAMMA_CRIT;
+    props[IFLP_COULOMB_STICK] = exact ? 1 : 0;
+    props[IFLP_COULOMB_MU_LAW] = 2; /* the table of the configuration file */
+    props[IFLP_COULOMB_FROZEN] = frozen ? 1 : 0;
 }
 
 static void steps(int nfdir, int exact, int frozen)
 {
     static const double rates[5] = {0.05, 0.5, 0.2, 1.5, 0.8};
     const double d[2] = {nfdir == 1 ? 1.0 : 0.6, nfdir == 1 ? 0.0 : 0.8};
-    double props[20];
+    double props[IFLP_COULOMB_NPROPS];
     fh_fric h;
     int s;
     props_table(props, exact, frozen);
-    fh_init(&h, nfdir, props, 20);
+    fh_init(&h, nfdir, props, IFLP_COULOMB_NPROPS);
     h.press = P;
     h.dpress = P;
     h.dtime = DT;
@@ -113,7 +114,7 @@ static void refused(fh_fric *h, const char *n1, const char *n2)
 
 int main(int argc, char **argv)
 {
-    double props[20];
+    double props[IFLP_COULOMB_NPROPS];
     fh_fric h;
     const char *mode = argc > 1 ? argv[1] : "good";
     const char *config = getenv("INTERFACIAL_CONFIG");
@@ -122,7 +123,7 @@ int main(int argc, char **argv)
         snprintf(where, sizeof where, "%s:7: interactions.SI_PAD.friction.table",
                  config ? config : "?");
         props_table(props, 0, 0);
-        fh_init(&h, 2, props, 20);
+        fh_init(&h, 2, props, IFLP_COULOMB_NPROPS);
         fh_context("bad table");
         refused(&h, where, "slip rates must be strictly increasing");
         return fh_finish();
@@ -139,7 +140,7 @@ int main(int argc, char **argv)
     }
     coef_brake();
     props_table(props, 0, 0);
-    fh_init(&h, 2, props, 20);
+    fh_init(&h, 2, props, IFLP_COULOMB_NPROPS);
     fh_set_name(h.ciname, &h.ciname_len, 80, "NO_TABLE");
     fh_context("interaction without a table");
     refused(&h, "'NO_TABLE'", "[interactions.NO_TABLE.friction]");

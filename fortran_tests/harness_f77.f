@@ -2,10 +2,12 @@ C=======================================================================
 C     harness_f77.f -- the routines the fixed-form harnesses share
 C     (test_fric_f1.f, test_fric_bad_input.f, test_fric_rate.f,
 C     test_gapcon_t1.f, test_gapcon_bad_input.f): the tally CHECK /
-C     CHKNR, the sentinel
-C     guard GUARD1, the host arguments a Coulomb call does not use
-C     (HOSTIN), the thread's last library message (GETMSG) and one
-C     checked GAPCON call (GAPONE, with SAMEB).
+C     CHKNR, the sentinel guard GUARD1, the FRIC arguments preset to
+C     the sentinel before a call (SENTAL, SENTOU), the host arguments a
+C     Coulomb call does not use (HOSTIN), the Coulomb point of scene
+C     F1 (F1PT), a NaN and an Inf made at run time (NANINF), the
+C     thread's last library message (GETMSG) and one checked GAPCON
+C     call (GAPONE, with SAMEB).
 C     Fixed-form Fortran 77 like its callers, which share with it
 C       COMMON /TALLY/ NPASS,NFAIL   (zeroed by the program)
 C       COMMON /CTX/ CASE            (CHARACTER*48, the current case).
@@ -62,6 +64,47 @@ C-----------------------------------------------------------------------
       END
 
 C-----------------------------------------------------------------------
+C     The FRIC arguments in the order of the call, preset as the host
+C     does before one: every entry of TAU, DDTDDG, DDTDDP, DSLIP,
+C     DDTDDT, DGAM, TAULM (MG) and STATEV (MSV) and SED, SFD to the
+C     sentinel -999.25, PNEWDT to 1e36 as Abaqus passes it.  The
+C     caller then sets the entries it means (up to NFDIR, NSTATV).
+C-----------------------------------------------------------------------
+      SUBROUTINE SENTAL(TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,
+     1 STATEV,DGAM,TAULM,MG,MSV)
+      INCLUDE 'ABA_PARAM.INC'
+      PARAMETER (SENT=-999.25D0)
+      DIMENSION TAU(MG),DDTDDG(MG),DDTDDP(MG),DSLIP(MG),DDTDDT(MG),
+     1 STATEV(MSV),DGAM(MG),TAULM(MG)
+      CALL SENTOU(DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,MG)
+      DO 10 I = 1, MG
+        TAU(I) = SENT
+        DGAM(I) = SENT
+        TAULM(I) = SENT
+   10 CONTINUE
+      DO 20 I = 1, MSV
+        STATEV(I) = SENT
+   20 CONTINUE
+      END
+
+C     Only the outputs that are not also inputs (before each increment
+C     of a history: TAU and STATEV carry the state).
+      SUBROUTINE SENTOU(DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,MG)
+      INCLUDE 'ABA_PARAM.INC'
+      PARAMETER (SENT=-999.25D0, BIG=1.0D36)
+      DIMENSION DDTDDG(MG),DDTDDP(MG),DSLIP(MG),DDTDDT(MG)
+      DO 10 I = 1, MG
+        DDTDDG(I) = SENT
+        DDTDDP(I) = SENT
+        DSLIP(I) = SENT
+        DDTDDT(I) = SENT
+   10 CONTINUE
+      SED = SENT
+      SFD = SENT
+      PNEWDT = BIG
+      END
+
+C-----------------------------------------------------------------------
 C     The host arguments the Coulomb law does not use, filled as a host
 C     would (step 1 at time 0, Delta t = 0.1, identity DROT, contact at
 C     node 7, point 1, element 0, SLIP(1..MG) = 0).
@@ -98,6 +141,45 @@ C-----------------------------------------------------------------------
       DO 20 I = 1, MG
         SLIP(I) = 0.0D0
    20 CONTINUE
+      END
+
+C-----------------------------------------------------------------------
+C     The Coulomb point the fixed-form FRIC harnesses start from (scene
+C     F1): PROPS(1..5) = (1, mu = 0.3, 0, tau_max = 0, gc = 1e-3),
+C     NPROPS = 5, CHRLNGTH = 0.2, NSTATV = 3, p = 100, DPRESS = 0.
+C-----------------------------------------------------------------------
+      SUBROUTINE F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
+      INCLUDE 'ABA_PARAM.INC'
+      DIMENSION PROPS(5)
+      PROPS(1) = 1.0D0
+      PROPS(2) = 0.3D0
+      PROPS(3) = 0.0D0
+      PROPS(4) = 0.0D0
+      PROPS(5) = 1.0D-3
+      NPROPS = 5
+      CHRLNGTH = 0.2D0
+      NSTATV = 3
+      PRESS = 100.0D0
+      DPRESS = 0.0D0
+      END
+
+C-----------------------------------------------------------------------
+C     A quiet NaN and +Inf made at run time from text, so that neither
+C     constant folding nor -fcheck sees them; checked to be what they
+C     claim (case 'run-time NaN and Inf', check 0).
+C-----------------------------------------------------------------------
+      SUBROUTINE NANINF(XNAN, XINF)
+      INCLUDE 'ABA_PARAM.INC'
+      CHARACTER*48 CASE
+      COMMON /CTX/ CASE
+      CHARACTER*8 SNAN,SINF
+      CASE = 'run-time NaN and Inf'
+      SNAN = 'NaN'
+      SINF = 'Inf'
+      READ (SNAN,*) XNAN
+      READ (SINF,*) XINF
+      CALL CHECK(XNAN .NE. XNAN, 'NaN from text is a NaN', 0)
+      CALL CHECK(XINF .GT. HUGE(XINF), 'Inf from text is +Inf', 0)
       END
 
 C-----------------------------------------------------------------------

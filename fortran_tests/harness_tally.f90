@@ -3,14 +3,29 @@
 ! check_abs (|got - want| <= tol), check_at / check_abs_at (the same for a numbered step),
 ! the calling thread's last library message (ifl_last_error_copy) and check_contains. The
 ! current scene's name goes in `scene`; the first 40 failures are printed with it.
+! Also the native C functions the harnesses call besides the Abaqus entries, as declared in
+! include/interfacial.h: ifl_last_error_copy, ifl_clear_error, ifl_gap_conductance (names the
+! library's own module `interfacial` also has: a harness that uses both takes them with only:).
 module harness_tally
-  use, intrinsic :: iso_c_binding, only: c_char, c_size_t
+  use, intrinsic :: iso_c_binding, only: c_char, c_double, c_int, c_size_t
   implicit none
   integer, parameter :: dp = kind(1.0d0)
   integer :: npass = 0, nfail = 0
   character(len=96) :: scene = ''
 
+  type, bind(c) :: ifl_conductance
+    real(c_double) :: k, dk_dd, dk_dp, dk_dtheta_mean, dq_dtheta_a, dq_dtheta_b
+  end type ifl_conductance
+
   interface
+    function ifl_gap_conductance(interaction, d, p, theta_a, theta_b, out) &
+      bind(c, name='ifl_gap_conductance') result(status)
+      import :: c_char, c_double, c_int, ifl_conductance
+      character(kind=c_char), dimension(*), intent(in) :: interaction
+      real(c_double), value :: d, p, theta_a, theta_b
+      type(ifl_conductance), intent(out) :: out
+      integer(c_int) :: status
+    end function ifl_gap_conductance
     function ifl_last_error_copy(buf, len) bind(c, name='ifl_last_error_copy') result(n)
       import :: c_char, c_size_t
       character(kind=c_char), dimension(*), intent(out) :: buf

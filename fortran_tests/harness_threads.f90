@@ -16,8 +16,9 @@
 !     every kind of call well represented, the same counts, every call's digest and every
 !     point's final record bit for bit; compare_block_runs: the same for a harness of blocks
 !     (FRIC_COEF, VFRIC); finish: the last line and the exit status.
-! No OpenMP directive lives here (this module is built without -fopenmp): the parallel loop and
-! the critical section around a harness's first violation stay in the harness. The procedures
+! No OpenMP directive lives here (this module is built without -fopenmp): the parallel loop is
+! in harness_omp.f90 (compiled with OpenMP into each OpenMP harness), the critical section around
+! a harness's first violation stays in the harness. The procedures
 ! the threads call are RECURSIVE, so their locals live on each thread's stack even without
 ! -fopenmp (and -fcheck=recursion does not take two threads in one for a recursion).
 module harness_threads

@@ -38,10 +38,11 @@ module fric_coef_omp_support
 contains
 
   ! Calls FRIC_COEF for block ib, checks it, returns its digest and law.
-  subroutine run_block(ib, dig, law, npts, bad, first_bad)
+  ! nbad_pts: always 0 (FRIC_COEF refuses a block as a whole, law_bad).
+  subroutine run_block(ib, dig, law, npts, nbad_pts, bad, first_bad)
     integer, intent(in) :: ib
     integer(int64), intent(out) :: dig(2)
-    integer, intent(out) :: law, npts
+    integer, intent(out) :: law, npts, nbad_pts
     integer, intent(inout) :: bad
     character(len=256), intent(inout) :: first_bad
     integer(int64) :: x
@@ -59,6 +60,7 @@ contains
     law = int(mod(lehmer(x), int(n_laws, int64))) + 1
     n = 1 + mod(ib - 1, max_nblock)
     npts = n
+    nbad_pts = 0
     props = 0
     props(1) = 1
     props(2) = uniform(x, 0.05_dp, 0.9_dp)
@@ -190,46 +192,12 @@ end module fric_coef_omp_support
 
 program test_fric_coef_omp
   use fric_coef_omp_support
-  use omp_lib, only: omp_get_thread_num, omp_get_max_threads
+  use harness_omp
   implicit none
-  integer :: nblocks, ib, bad_par, bad_ser, nworkers, shrink
-  integer(int64), allocatable :: dig_par(:, :), dig_ser(:, :)
-  integer, allocatable :: law_par(:), law_ser(:), n_par(:), n_ser(:)
-  logical, allocatable :: worked(:)
-  character(len=256) :: first_par, first_ser
+  integer :: shrink
 
   shrink = shrink_factor(full_blocks/min_blocks)
-  nblocks = full_blocks/shrink
-  allocate (dig_par(2, nblocks), dig_ser(2, nblocks), law_par(nblocks), law_ser(nblocks), &
-            n_par(nblocks), n_ser(nblocks), worked(0:max(omp_get_max_threads(), 1) - 1))
-  worked = .false.
-  bad_par = 0
-  bad_ser = 0
-  first_par = ' '
-  first_ser = ' '
-  call check(omp_get_max_threads() >= nthreads_min, 'OpenMP offers at least 8 threads '// &
-             '(OMP_NUM_THREADS)')
-
-  !$omp parallel do schedule(static) default(shared) private(ib)
-  do ib = 1, nblocks
-    worked(omp_get_thread_num()) = .true.
-    call run_block(ib, dig_par(:, ib), law_par(ib), n_par(ib), bad_par, first_par)
-  end do
-  !$omp end parallel do
-  nworkers = count(worked)
-  call check(nworkers >= nthreads_min, 'at least 8 OpenMP threads did work')
-  call report_violations('OpenMP', bad_par, first_par)
-  call check(bad_par == 0, 'every OpenMP block matches the closed form')
-
-  do ib = 1, nblocks
-    call run_block(ib, dig_ser(:, ib), law_ser(ib), n_ser(ib), bad_ser, first_ser)
-  end do
-  call report_violations('serial', bad_ser, first_ser)
-  call check(bad_ser == 0, 'every serial block matches the closed form')
-
-  call compare_block_runs('FRIC_COEF', nworkers, shrink, law_names, law_par, law_ser, n_par, &
-                          n_ser, dig_par, dig_ser)
-
-  deallocate (dig_par, dig_ser, law_par, law_ser, n_par, n_ser, worked)
+  call omp_block_runs('FRIC_COEF', 'the closed form', law_names, full_blocks/shrink, shrink, &
+                      run_block)
   call finish()
 end program test_fric_coef_omp

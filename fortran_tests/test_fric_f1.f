@@ -13,7 +13,8 @@ C       stick: tau = k_s gamma_el,  slip: |tau| = tau_crit.
 C     Output arrays are declared longer than NFDIR (STATEV longer than
 C     NSTATV); their tails hold a sentinel that must survive each call.
 C
-C     CHECK, CHKNR, GUARD1 and HOSTIN come from harness_f77.f.
+C     CHECK, CHKNR, GUARD1, SENTAL, SENTOU, HOSTIN and F1PT come from
+C     harness_f77.f.
 C
 C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
@@ -121,20 +122,14 @@ C
         E(1) = COS(ATAN(1.0D0)*4.0D0/6.0D0)
         E(2) = SIN(ATAN(1.0D0)*4.0D0/6.0D0)
       END IF
-      DO 5 I = 1, MG
-        TAU(I) = SENT
-        DGAM(I) = SENT
-        TAULM(I) = SENT
-    5 CONTINUE
+      CALL SENTAL(TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,
+     1 STATEV,DGAM,TAULM,MG,MSV)
       DO 6 I = 1, NFDIR
         TAU(I) = 0.0D0
     6 CONTINUE
 C     NSTATV = 4: STATEV(4) is the user's own and must be left alone;
 C     STATEV(5..8) lie past NSTATV.
       NSTATV = 4
-      DO 7 I = 1, MSV
-        STATEV(I) = SENT
-    7 CONTINUE
       STATEV(1) = 0.0D0
       STATEV(2) = 0.0D0
       STATEV(3) = 0.0D0
@@ -181,15 +176,7 @@ C
           DGAM(I) = (G - GOLD)*E(I)
           DGIN(I) = DGAM(I)
    10   CONTINUE
-        DO 11 I = 1, MG
-          DDTDDG(I) = SENT
-          DDTDDP(I) = SENT
-          DSLIP(I) = SENT
-          DDTDDT(I) = SENT
-   11   CONTINUE
-        SED = SENT
-        SFD = SENT
-        PNEWDT = BIG
+        CALL SENTOU(DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,MG)
 C
         CALL FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,
      1   DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,
@@ -316,33 +303,15 @@ C
       CINAME = 'F1-LM2'
       SLNAME = 'SLAVE'
       MSNAME = 'MASTER'
-      PROPS(1) = 1.0D0
-      PROPS(2) = 0.3D0
-      PROPS(3) = 0.0D0
-      PROPS(4) = 0.0D0
-      PROPS(5) = 1.0D-3
-      NPROPS = 5
-      CHRLNGTH = 0.2D0
-      NSTATV = 3
-      PRESS = 100.0D0
-      DPRESS = 0.0D0
+      CALL F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
       DO 50 NFDIR = 1, 2
         WRITE (CASE,'(A,I1)') 'F1 LM=2 on entry NFDIR=', NFDIR
+        CALL SENTAL(TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,
+     1   STATEV,DGAM,TAULM,MG,MSV)
         DO 10 I = 1, MG
-          TAU(I) = SENT
-          DDTDDG(I) = SENT
-          DDTDDP(I) = SENT
-          DSLIP(I) = SENT
-          DDTDDT(I) = SENT
           DGAM(I) = 5.0D-3
           TAULM(I) = 50.0D0
    10   CONTINUE
-        DO 11 I = 1, MSV
-          STATEV(I) = SENT
-   11   CONTINUE
-        SED = SENT
-        SFD = SENT
-        PNEWDT = BIG
         LM = 2
         CALL FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,
      1   DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,
@@ -383,47 +352,26 @@ C
       CINAME = 'F1-ROUGH'
       SLNAME = 'SLAVE'
       MSNAME = 'MASTER'
-      PROPS(1) = 1.0D0
-      PROPS(2) = 0.3D0
-      PROPS(3) = 0.0D0
-      PROPS(4) = 0.0D0
-      PROPS(5) = 1.0D-3
+      CALL F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
       PROPS(6) = 0.0D0
       PROPS(7) = 2.0D0
       NPROPS = 7
-      CHRLNGTH = 0.2D0
-      NSTATV = 3
-      PRESS = 100.0D0
-      DPRESS = 0.0D0
       DO 50 NFDIR = 1, 2
 C       LMIN = 0: first call of an increment with a large motion;
 C       LMIN = 1: next iteration with a Lagrange stress 1e3 mu p.
         DO 40 LMIN = 0, 1
           WRITE (CASE,'(A,I1,A,I1)') 'F1 rough NFDIR=', NFDIR,
      1     ' LM in=', LMIN
-          DO 10 I = 1, MG
-            TAU(I) = SENT
-            DDTDDG(I) = SENT
-            DDTDDP(I) = SENT
-            DSLIP(I) = SENT
-            DDTDDT(I) = SENT
-            DGAM(I) = SENT
-            TAULM(I) = SENT
-   10     CONTINUE
+          CALL SENTAL(TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,
+     1     STATEV,DGAM,TAULM,MG,MSV)
           DO 11 I = 1, NFDIR
             TAU(I) = 7.0D0
             DGAM(I) = 1.0D-1
             TAULM(I) = 3.0D4
    11     CONTINUE
-          DO 12 I = 1, MSV
-            STATEV(I) = SENT
-   12     CONTINUE
           STATEV(1) = 0.5D0
           STATEV(2) = 0.1D0
           STATEV(3) = 1.0D0
-          SED = SENT
-          SFD = SENT
-          PNEWDT = BIG
           LM = LMIN
           CALL FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,
      1     DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,

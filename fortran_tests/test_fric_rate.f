@@ -33,6 +33,7 @@ C=======================================================================
 
       SUBROUTINE STEPS(NDIR, LMODE)
       INCLUDE 'ABA_PARAM.INC'
+      INCLUDE 'props_index.inc'
       CHARACTER*80 CINAME,SLNAME,MSNAME
       CHARACTER*48 CASE
       COMMON /CTX/ CASE
@@ -51,17 +52,18 @@ C
       DC = 4.0D0
       P = 50.0D0
       GC = 1.0D-3
-      DO 5 I = 1, 20
+      DO 5 I = 1, KPC_N
         PROPS(I) = 0.0D0
     5 CONTINUE
-      PROPS(1) = 1.0D0
-      PROPS(2) = XMUS
-      PROPS(5) = GC
-      PROPS(7) = DBLE(LMODE)
-      PROPS(8) = 1.0D0
-      PROPS(9) = XMUK
-      PROPS(10) = DC
-      NPROPS = 20
+      PROPS(KPC_CODE) = DBLE(LAW_COULOMB)
+      PROPS(KPC_MU) = XMUS
+      PROPS(KPC_GAMMA_CRIT) = GC
+      PROPS(KPC_STICK) = DBLE(LMODE)
+C     Exponential decay from mu_s = PROPS(2) to mu_k.
+      PROPS(KPC_MU_LAW) = 1.0D0
+      PROPS(KPC_MU_K) = XMUK
+      PROPS(KPC_DECAY) = DC
+      NPROPS = KPC_N
       NFDIR = NDIR
       NSTATV = 3
       E(1) = 1.0D0

@@ -10,71 +10,16 @@
 !
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 
-! The host side of one contact point: every FRIC argument, output arrays longer than NFDIR and
-! STATEV longer than NSTATV, their tails filled with a sentinel.
+! The host side of one contact point (module harness_fric_host) with the checks these scenes make
+! after every call and their central finite differences.
 module fric_host
+  use harness_fric_host
   ! The tally: check and check_near here take the increment or point number K.
   use harness_tally, only: dp, npass, nfail, scene, check => check_at, check_near => check_abs_at
   implicit none
-  real(dp), parameter :: sentinel = -999.25_dp, big = 1.0e36_dp
   real(dp), parameter :: pi = 3.14159265358979323846_dp
-  integer, parameter :: mg = 8, msv = 8
-
-  type :: fric_args
-    integer :: lm = 0
-    real(dp) :: tau(mg) = sentinel, ddtddg(mg) = sentinel, ddtddp(mg) = sentinel
-    real(dp) :: dslip(mg) = sentinel, sed = sentinel, sfd = sentinel, ddtddt(mg) = sentinel
-    real(dp) :: pnewdt = big, statev(msv) = sentinel
-    real(dp) :: dgam(mg) = sentinel, taulm(mg) = sentinel
-    real(dp) :: press = 0, dpress = 0, ddpddh = 1.0e6_dp, slip(mg) = 0
-    integer :: kstep = 1, kinc = 1
-    real(dp) :: time(2) = 0, dtime = 0.1_dp
-    integer :: noel = 0
-    character(len=80) :: ciname = ' ', slname = 'SLAVE', msname = 'MASTER'
-    integer :: npt = 1, node = 7, npatch = 1
-    real(dp) :: coords(3) = 0, rcoord(3) = 0
-    real(dp) :: drot(2, 2) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
-    real(dp) :: temp(2) = 20.0_dp, predef(2, 1) = 0
-    integer :: nfdir = 2, mcrd = 3, npred = 1, nstatv = 3
-    real(dp) :: chrlngth = 0.2_dp, props(8) = sentinel
-    integer :: nprops = 0
-  end type fric_args
 
 contains
-
-  function new_point(nfdir, props, chrlngth, name) result(a)
-    integer, intent(in) :: nfdir
-    real(dp), intent(in) :: props(:), chrlngth
-    character(len=*), intent(in) :: name
-    type(fric_args) :: a
-    a%nfdir = nfdir
-    a%props(1:size(props)) = props
-    a%nprops = size(props)
-    a%chrlngth = chrlngth
-    a%tau(1:nfdir) = 0
-    a%dgam(1:nfdir) = 0
-    a%statev(1:3) = 0
-    a%nstatv = 3
-    a%ciname = name
-  end function new_point
-
-  ! One FRIC call as the host makes it: outputs preset to the sentinel (so an entry that should
-  ! have been written cannot pass by accident), PNEWDT = 1e36 as Abaqus passes it.
-  subroutine fric_call(a)
-    type(fric_args), intent(inout) :: a
-    a%ddtddg = sentinel
-    a%ddtddp = sentinel
-    a%dslip = sentinel
-    a%ddtddt = sentinel
-    a%sed = sentinel
-    a%sfd = sentinel
-    a%pnewdt = big
-    call fric(a%lm, a%tau, a%ddtddg, a%ddtddp, a%dslip, a%sed, a%sfd, &
-              a%ddtddt, a%pnewdt, a%statev, a%dgam, a%taulm, a%press, a%dpress, a%ddpddh, a%slip, &
-              a%kstep, a%kinc, a%time, a%dtime, a%noel, a%ciname, a%slname, a%msname, a%npt, &
-              a%node, a%npatch, a%coords, a%rcoord, a%drot, a%temp, a%predef, a%nfdir, a%mcrd, &
-              a%npred, a%nstatv, a%chrlngth, a%props, a%nprops)
-  end subroutine fric_call
 
   ! After every call: PNEWDT never lowered, tails past NFDIR / NFDIR**2 / 2 NFDIR / NSTATV
   ! untouched, SFD never negative when LM = 0.
@@ -84,12 +29,7 @@ contains
     integer :: n
     n = a%nfdir
     call check(a%pnewdt == big, 'PNEWDT never lowered', k)
-    call check(all(a%tau(n + 1:) == sentinel), 'TAU past NFDIR untouched', k)
-    call check(all(a%ddtddg(n*n + 1:) == sentinel), 'DDTDDG past NFDIR**2 untouched', k)
-    call check(all(a%ddtddp(n + 1:) == sentinel), 'DDTDDP past NFDIR untouched', k)
-    call check(all(a%dslip(n + 1:) == sentinel), 'DSLIP past NFDIR untouched', k)
-    call check(all(a%ddtddt(2*n + 1:) == sentinel), 'DDTDDT past 2 NFDIR untouched', k)
-    call check(all(a%statev(a%nstatv + 1:) == sentinel), 'STATEV past NSTATV untouched', k)
+    call check_tails(a)
     if (a%lm == 0) then
       call check(a%sfd >= 0, 'SFD >= 0', k)
       call check(all(a%ddtddt(1:2*n) == 0), 'DDTDDT = 0 (mu independent of temperature)', k)
@@ -183,7 +123,7 @@ contains
     real(dp) :: dth, th0, th1, phi, phid, chord, gpr, tauc, t(2), lag, tnorm, sumsfd, sumtds
     integer :: k
     write (scene, '(a,i0)') 'F2 circle N=', n
-    a = new_point(2, [1.0_dp, mu, 0.0_dp, 0.0_dp, gc], 0.2_dp, 'F2-CIRCLE')
+    a = new_point(2, [1.0_dp, mu, 0.0_dp, 0.0_dp, gc], 'F2-CIRCLE', 0.2_dp)
     a%press = p
     a%dpress = 0
     tauc = mu*p
@@ -246,7 +186,7 @@ contains
     integer :: k, j, ia, ib
     logical :: slips
     write (scene, '(a,i0,a,f4.1)') 'F5 ramp NFDIR=', nfdir, ' tau_max=', tmax
-    a = new_point(nfdir, [1.0_dp, mu, 0.0_dp, tmax, gc], 0.2_dp, 'F5-RAMP')
+    a = new_point(nfdir, [1.0_dp, mu, 0.0_dp, tmax, gc], 'F5-RAMP', 0.2_dp)
     e = direction(nfdir, -40.0_dp*pi/180)
     tn = [-e(2), e(1)]
     pold = 0
@@ -356,7 +296,7 @@ contains
     integer :: k, it, lmflag, ncalls
     logical :: stuck, converged
     write (scene, '(a,i0)') 'F1 exact stick, spring host NFDIR=', nfdir
-    a = new_point(nfdir, [1.0_dp, mu, 0.0_dp, 0.0_dp, gc, 0.0_dp, 1.0_dp], 0.2_dp, 'F1-SPRING')
+    a = new_point(nfdir, [1.0_dp, mu, 0.0_dp, 0.0_dp, gc, 0.0_dp, 1.0_dp], 'F1-SPRING', 0.2_dp)
     a%press = p
     a%dpress = 0
     tauc = mu*p

@@ -20,19 +20,16 @@
 
 program test_fric_steady
   use harness_tally
+  use harness_fric_host
   implicit none
   real(dp), parameter :: mu = 0.4_dp, mu_k = 0.2_dp, dc = 3.0_dp, p = 50.0_dp, ff = 0.01_dp
   real(dp), parameter :: omega = 20.0_dp, radius = 0.5_dp, dt = 0.1_dp
-  real(dp), parameter :: sentinel = -999.25_dp, big = 1.0e36_dp
-  integer, parameter :: mg = 8, msv = 8
 
-  ! FRIC arguments of one contact point; arrays longer than NFDIR / NSTATV.
-  integer :: lm, kstep, kinc, noel, npt, node, npatch, nfdir, mcrd, npred, nstatv, nprops
-  real(dp) :: tau(mg), ddtddg(mg), ddtddp(mg), dslip(mg), sed, sfd, ddtddt(mg), pnewdt
-  real(dp) :: statev(msv), dgam(mg), taulm(mg), press, dpress, ddpddh, slip(mg), time(2)
-  real(dp) :: dtime, coords(3), rcoord(3), drot(2, 2), temp(2), predef(2, 1), chrlngth
-  real(dp) :: props(20)
-  character(len=80) :: ciname, slname, msname
+  ! PROPS entries by name (generated from the schema).
+  include 'props_index.inc'
+
+  ! The FRIC arguments of one contact point (module harness_fric_host).
+  type(fric_args) :: h
   integer :: nd, variant, decay
 
   do nd = 1, 2
@@ -64,68 +61,36 @@ contains
 
   subroutine point(n, var, dec)
     integer, intent(in) :: n, var, dec
+    real(dp) :: props(kpc_n)
     props = 0
-    props(1) = 1
-    props(2) = mu
-    props(6) = ff
-    props(7) = 3 ! viscous stick, steady-state transport
+    props(kpc_code) = law_coulomb
+    props(kpc_mu) = mu
+    props(kpc_slip_tolerance) = ff
+    props(kpc_stick) = 3 ! viscous stick, steady-state transport
     if (dec == 1) then
-      props(8) = 1
-      props(9) = mu_k
-      props(10) = dc
+      props(kpc_mu_law) = 1 ! exponential decay
+      props(kpc_mu_k) = mu_k
+      props(kpc_decay) = dc
     end if
-    props(14) = omega
-    props(15) = 3 ! z axis
-    props(16) = real(var, dp)
-    nprops = 20
-    lm = 0
-    tau = sentinel
-    tau(1:n) = 0
-    ddtddg = sentinel
-    ddtddp = sentinel
-    dslip = sentinel
-    ddtddt = sentinel
-    statev = sentinel
-    statev(1:3) = 0
-    dgam = sentinel
-    dgam(1:n) = 0
-    taulm = 0
-    slip = 0
-    press = p
-    dpress = 0
-    ddpddh = 1.0e6_dp
-    kstep = 1
-    kinc = 1
-    time = 0
-    dtime = dt
-    noel = 17
-    ciname = 'DISC_PAD'
-    slname = 'PAD'
-    msname = 'DISC'
-    npt = 3
-    node = 42
-    npatch = 5
-    coords = [0.3_dp, 0.4_dp, 2.0_dp]
-    rcoord = coords
-    drot = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
-    temp = 20
-    predef = 0
-    nfdir = n
-    mcrd = 3
-    npred = 1
-    nstatv = 3
-    chrlngth = 1
+    props(kpc_omega) = omega
+    props(kpc_axis) = 3 ! z axis
+    props(kpc_viscous_reference) = real(var, dp)
+    h = new_point(n, props, 'DISC_PAD')
+    h%press = p
+    h%dtime = dt
+    h%noel = 17
+    h%slname = 'PAD'
+    h%msname = 'DISC'
+    h%npt = 3
+    h%node = 42
+    h%npatch = 5
+    h%coords = [0.3_dp, 0.4_dp, 2.0_dp]
+    h%rcoord = h%coords
   end subroutine point
 
   subroutine call_fric()
-    pnewdt = big
-    call fric(lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pnewdt, statev, dgam, taulm, &
-              press, dpress, ddpddh, slip, kstep, kinc, time, dtime, noel, ciname, slname, &
-              msname, npt, node, npatch, coords, rcoord, drot, temp, predef, nfdir, mcrd, &
-              npred, nstatv, chrlngth, props, nprops)
-    call check(all(tau(nfdir + 1:) == sentinel), 'TAU past NFDIR untouched')
-    call check(all(ddtddg(nfdir*nfdir + 1:) == sentinel), 'DDTDDG past NFDIR**2 untouched')
-    call check(all(statev(nstatv + 1:) == sentinel), 'STATEV past NSTATV untouched')
+    call fric_call(h)
+    call check_tails(h)
   end subroutine call_fric
 
   subroutine run_scene(n, var, dec)
@@ -149,37 +114,37 @@ contains
         ' decay=', dec, ' v=', v
       do k = 1, 3
         ! TAU on entry is never read: a different one each increment.
-        tau(1) = 17.0_dp*k
-        if (n == 2) tau(2) = -17.0_dp*k
-        dgam(1:n) = v*dt*d(1:n)
+        h%tau(1) = 17.0_dp*k
+        if (n == 2) h%tau(2) = -17.0_dp*k
+        h%dgam(1:n) = v*dt*d(1:n)
         call call_fric()
-        call check(pnewdt == big, 'PNEWDT not lowered')
-        call check(lm == 0, 'LM = 0')
-        call check(sed == 0, 'SED = 0')
+        call check(h%pnewdt == big, 'PNEWDT not lowered')
+        call check(h%lm == 0, 'LM = 0')
+        call check(h%sed == 0, 'SED = 0')
         if (sticks) then
           do ia = 1, n
-            call check_near(tau(ia), kappa*v*d(ia), 1.0e-13_dp, 1.0e-13_dp*mu*p, &
+            call check_near(h%tau(ia), kappa*v*d(ia), 1.0e-13_dp, 1.0e-13_dp*mu*p, &
                             'stick TAU = kappa_s v d')
-            call check(dslip(ia) == 0, 'stick DSLIP = 0')
-            call check_near(ddtddp(ia), mu*v/rate_crit*d(ia), 1.0e-13_dp, 1.0e-15_dp, &
+            call check(h%dslip(ia) == 0, 'stick DSLIP = 0')
+            call check_near(h%ddtddp(ia), mu*v/rate_crit*d(ia), 1.0e-13_dp, 1.0e-15_dp, &
                             'stick DDTDDP')
             do ib = 1, n
               want = 0
               if (ia == ib) want = kappa/dt
-              call check_near(ddtddg(ia + (ib - 1)*n), want, 1.0e-13_dp, &
+              call check_near(h%ddtddg(ia + (ib - 1)*n), want, 1.0e-13_dp, &
                               1.0e-13_dp*kappa/dt, 'stick DDTDDG = kappa_s/DTIME I')
             end do
           end do
-          call check(sfd == 0, 'stick SFD = 0')
-          call check(statev(2) == 0 .and. statev(3) == 0, 'stick STATEV(2:3) = 0')
+          call check(h%sfd == 0, 'stick SFD = 0')
+          call check(h%statev(2) == 0 .and. h%statev(3) == 0, 'stick STATEV(2:3) = 0')
         else
           r = v - rate_crit
           t = mu_of(dec, r)*p
           do ia = 1, n
-            call check_near(tau(ia), t*d(ia), 1.0e-13_dp, 1.0e-13_dp*mu*p, &
+            call check_near(h%tau(ia), t*d(ia), 1.0e-13_dp, 1.0e-13_dp*mu*p, &
                             'slip TAU = mu(v - crit) p d')
-            call check_near(dslip(ia), r*dt*d(ia), 1.0e-13_dp, 1.0e-16_dp, 'slip DSLIP')
-            call check_near(ddtddp(ia), mu_of(dec, r)*d(ia), 1.0e-13_dp, 1.0e-15_dp, &
+            call check_near(h%dslip(ia), r*dt*d(ia), 1.0e-13_dp, 1.0e-16_dp, 'slip DSLIP')
+            call check_near(h%ddtddp(ia), mu_of(dec, r)*d(ia), 1.0e-13_dp, 1.0e-15_dp, &
                             'slip DDTDDP = mu d')
             do ib = 1, n
               delta = 0
@@ -187,16 +152,16 @@ contains
               proj = 0
               if (n == 2) proj = delta - d(ia)*d(ib)
               want = (t/v*proj + d(ia)*d(ib)*dmu_of(dec, r)*p)/dt
-              call check_near(ddtddg(ia + (ib - 1)*n), want, 1.0e-12_dp, &
+              call check_near(h%ddtddg(ia + (ib - 1)*n), want, 1.0e-12_dp, &
                               1.0e-12_dp*kappa/dt, 'slip DDTDDG')
             end do
           end do
           path = path + r*dt
-          call check_near(sfd, t*r*dt, 1.0e-13_dp, 0.0_dp, 'slip SFD = |TAU| |DSLIP|')
-          call check(statev(3) == 1, 'slip STATEV(3) = 1')
-          call check_near(statev(2), r, 1.0e-13_dp, 0.0_dp, 'slip STATEV(2) = v - crit')
+          call check_near(h%sfd, t*r*dt, 1.0e-13_dp, 0.0_dp, 'slip SFD = |TAU| |DSLIP|')
+          call check(h%statev(3) == 1, 'slip STATEV(3) = 1')
+          call check_near(h%statev(2), r, 1.0e-13_dp, 0.0_dp, 'slip STATEV(2) = v - crit')
         end if
-        call check_near(statev(1), path, 1.0e-13_dp, 0.0_dp, 'STATEV(1) = slip path')
+        call check_near(h%statev(1), path, 1.0e-13_dp, 0.0_dp, 'STATEV(1) = slip path')
       end do
     end do
   end subroutine run_scene
@@ -205,19 +170,19 @@ contains
     character(len=*), intent(in) :: needle
     real(dp) :: tau0(2), statev0(3)
     character(len=2048) :: msg
-    statev(1:3) = [0.5_dp, 0.1_dp, 1.0_dp]
-    tau(1:2) = [3.0_dp, -2.0_dp]
-    dgam(1) = 1.0e-3_dp
-    tau0 = tau(1:2)
-    statev0 = statev(1:3)
+    h%statev(1:3) = [0.5_dp, 0.1_dp, 1.0_dp]
+    h%tau(1:2) = [3.0_dp, -2.0_dp]
+    h%dgam(1) = 1.0e-3_dp
+    tau0 = h%tau(1:2)
+    statev0 = h%statev(1:3)
     call ifl_clear_error()
     call call_fric()
-    call check(pnewdt < 1, 'PNEWDT < 1')
+    call check(h%pnewdt < 1, 'PNEWDT < 1')
     msg = last_error()
     call check_contains(msg, 'FRIC')
     call check_contains(msg, needle)
-    call check(all(tau(1:2) == tau0), 'TAU unchanged')
-    call check(all(statev(1:3) == statev0), 'STATEV unchanged')
+    call check(all(h%tau(1:2) == tau0), 'TAU unchanged')
+    call check(all(h%statev(1:3) == statev0), 'STATEV unchanged')
   end subroutine refused
 
   subroutine bad_input()
@@ -226,7 +191,7 @@ contains
     call refused('PROPS(16) = 2 must select')
     scene = 'steady transport: omega = 0'
     call point(2, 1, 0)
-    props(14) = 0
+    h%props(kpc_omega) = 0
     call refused('PROPS(14)')
   end subroutine bad_input
 end program test_fric_steady

@@ -18,34 +18,12 @@
 !
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 
-! The host side of one contact point: every FRIC argument, output arrays longer than NFDIR and
-! STATEV longer than NSTATV, their tails kept at a sentinel.
+! The host side of one contact point: module harness_fric_host, with this scene's names and sizes.
 module table_host
   use harness_tally
+  use harness_fric_host
   implicit none
-  real(dp), parameter :: sentinel = -999.25_dp, big = 1.0e36_dp
   real(dp), parameter :: p = 50.0_dp, gamma_crit = 1.0e-3_dp, dt = 0.01_dp
-  integer, parameter :: mg = 8, msv = 8
-
-  type :: fric_args
-    integer :: lm = 0
-    real(dp) :: tau(mg) = sentinel, ddtddg(mg) = sentinel, ddtddp(mg) = sentinel
-    real(dp) :: dslip(mg) = sentinel, sed = sentinel, sfd = sentinel, ddtddt(mg) = sentinel
-    real(dp) :: pnewdt = big, statev(msv) = sentinel
-    real(dp) :: dgam(mg) = sentinel, taulm(mg) = 0
-    real(dp) :: press = 0, dpress = 0, ddpddh = 1.0e6_dp, slip(mg) = 0
-    integer :: kstep = 1, kinc = 1
-    real(dp) :: time(2) = 0, dtime = dt
-    integer :: noel = 17
-    character(len=80) :: ciname = 'SI_PAD', slname = 'SLAVE_SURF', msname = 'MASTER_SURF'
-    integer :: npt = 3, node = 42, npatch = 5
-    real(dp) :: coords(3) = 0, rcoord(3) = 0
-    real(dp) :: drot(2, 2) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
-    real(dp) :: temp(2) = 20.0_dp, predef(2, 1) = 0
-    integer :: nfdir = 2, mcrd = 3, npred = 1, nstatv = 3
-    real(dp) :: chrlngth = 1.0_dp, props(20) = 0
-    integer :: nprops = 20
-  end type fric_args
 
 contains
 
@@ -74,37 +52,31 @@ contains
     if (frozen) props(20) = 1
   end function props_table
 
-  function new_point(nfdir, props) result(a)
+  ! A point of SI_PAD at first contact, as the C twin's host fills it.
+  function table_point(nfdir, props) result(a)
     integer, intent(in) :: nfdir
     real(dp), intent(in) :: props(20)
     type(fric_args) :: a
-    a%nfdir = nfdir
-    a%props = props
-    a%tau(1:nfdir) = 0
-    a%dgam(1:nfdir) = 0
-    a%statev(1:3) = 0
-  end function new_point
+    a = new_point(nfdir, props, 'SI_PAD')
+    a%dtime = dt
+    a%noel = 17
+    a%slname = 'SLAVE_SURF'
+    a%msname = 'MASTER_SURF'
+    a%npt = 3
+    a%node = 42
+    a%npatch = 5
+  end function table_point
 
-  ! One FRIC call as the host makes it (PNEWDT = 1e36 as Abaqus passes it), then the tails past
-  ! NFDIR / NFDIR**2 / NSTATV checked untouched.
-  subroutine fric_call(a)
+  ! One FRIC call, then the tails past NFDIR / NFDIR**2 / NSTATV checked untouched.
+  subroutine fric_call_tails(a)
     type(fric_args), intent(inout) :: a
-    integer :: n
-    a%pnewdt = big
-    call fric(a%lm, a%tau, a%ddtddg, a%ddtddp, a%dslip, a%sed, a%sfd, &
-              a%ddtddt, a%pnewdt, a%statev, a%dgam, a%taulm, a%press, a%dpress, a%ddpddh, a%slip, &
-              a%kstep, a%kinc, a%time, a%dtime, a%noel, a%ciname, a%slname, a%msname, a%npt, &
-              a%node, a%npatch, a%coords, a%rcoord, a%drot, a%temp, a%predef, a%nfdir, a%mcrd, &
-              a%npred, a%nstatv, a%chrlngth, a%props, a%nprops)
-    n = a%nfdir
-    call check(all(a%tau(n + 1:) == sentinel), 'TAU past NFDIR untouched')
-    call check(all(a%ddtddg(n*n + 1:) == sentinel), 'DDTDDG past NFDIR**2 untouched')
-    call check(all(a%statev(a%nstatv + 1:) == sentinel), 'STATEV past NSTATV untouched')
-  end subroutine fric_call
+    call fric_call(a)
+    call check_tails(a)
+  end subroutine fric_call_tails
 
   subroutine fric_call_ok(a)
     type(fric_args), intent(inout) :: a
-    call fric_call(a)
+    call fric_call_tails(a)
     call check(a%pnewdt == big, 'PNEWDT not lowered')
     if (a%pnewdt /= big .and. nfail <= 40) write (*, '(a,a)') '   message: ', trim(last_error())
   end subroutine fric_call_ok
@@ -120,7 +92,7 @@ contains
     integer :: s, k, ia, ib
     d = [1.0_dp, 0.0_dp]
     if (nfdir == 2) d = [0.6_dp, 0.8_dp]
-    h = new_point(nfdir, props_table(exact, frozen))
+    h = table_point(nfdir, props_table(exact, frozen))
     h%press = p
     h%dpress = p
     do s = 1, size(rates)
@@ -213,7 +185,7 @@ contains
     h%dgam(1) = 1.0e-2_dp
     before = h
     call ifl_clear_error()
-    call fric_call(h)
+    call fric_call_tails(h)
     call check(h%pnewdt < 1, 'PNEWDT < 1')
     msg = last_error()
     call check_contains(msg, 'FRIC')
@@ -243,7 +215,7 @@ program test_fric_table
     ! Rows 2 and 3 of SI_PAD's table go backwards, on line 7 of the file.
     scene = 'bad table'
     write (where, '(a,a)') trim(config), ':7: interactions.SI_PAD.friction.table'
-    h = new_point(2, props_table(.false., .false.))
+    h = table_point(2, props_table(.false., .false.))
     call refused(h, [character(len=1200) :: where, 'slip rates must be strictly increasing'])
   else
     do nfdir = 1, 2
@@ -255,7 +227,7 @@ program test_fric_table
     end do
     call coef_brake()
     scene = 'interaction without a table'
-    h = new_point(2, props_table(.false., .false.))
+    h = table_point(2, props_table(.false., .false.))
     h%ciname = 'NO_TABLE'
     call refused(h, [character(len=40) :: "'NO_TABLE'", '[interactions.NO_TABLE.friction]'])
   end if

@@ -14,18 +14,15 @@
 
 program test_fric_weakening
   use harness_tally
+  use harness_fric_host
+  use harness_uinter_host
   implicit none
   real(dp), parameter :: gcrit = 1.0e-3_dp, p = 100.0_dp, mu_s = 0.5_dp, mu_k = 0.2_dp
   real(dp), parameter :: dc = 200.0_dp, sa = 3.0_dp, kmu = 0.5_dp, vhalf = 1.0e-3_dp
-  real(dp), parameter :: sentinel = -999.25_dp, big = 1.0e36_dp
-  integer, parameter :: mg = 8, msv = 8
 
-  integer :: lm, kstep, kinc, noel, npt, node, npatch, nfdir, mcrd, npred, nstatv, nprops
-  real(dp) :: tau(mg), ddtddg(mg), ddtddp(mg), dslip(mg), sed, sfd, ddtddt(mg), pnewdt
-  real(dp) :: statev(msv), dgam(mg), taulm(mg), press, dpress, ddpddh, slip(mg), time(2)
-  real(dp) :: dtime, coords(3), rcoord(3), drot(2, 2), temp(2), predef(2, 1), chrlngth
-  real(dp) :: props(20), d(2)
-  character(len=80) :: ciname, slname, msname
+  ! The FRIC arguments of one contact point (module harness_fric_host) and the slip direction.
+  type(fric_args) :: h
+  real(dp) :: d(2)
   integer :: law, nd
 
   do law = 1, 2
@@ -59,51 +56,16 @@ contains
 
   subroutine point(lw, n)
     integer, intent(in) :: lw, n
-    props = 0
     if (lw == 1) then
-      props(1:10) = [1.0_dp, mu_s, 0.0_dp, 0.0_dp, gcrit, 0.0_dp, 0.0_dp, 1.0_dp, mu_k, dc]
-      nprops = 10
+      h = new_point(n, [1.0_dp, mu_s, 0.0_dp, 0.0_dp, gcrit, 0.0_dp, 0.0_dp, 1.0_dp, mu_k, dc], &
+                    'WEAKENING')
     else
-      props(1:8) = [2.0_dp, mu_k, mu_s, sa, 0.0_dp, kmu, vhalf, gcrit]
-      nprops = 8
+      h = new_point(n, [2.0_dp, mu_k, mu_s, sa, 0.0_dp, kmu, vhalf, gcrit], 'WEAKENING')
     end if
-    lm = 0
-    tau = sentinel
-    tau(1:n) = 0
-    ddtddg = sentinel
-    ddtddp = sentinel
-    dslip = sentinel
-    ddtddt = sentinel
-    statev = sentinel
-    statev(1:3) = 0
-    dgam = sentinel
-    dgam(1:n) = 0
-    taulm = 0
-    slip = 0
-    press = p
-    dpress = 0
-    ddpddh = 1.0e6_dp
-    kstep = 1
-    kinc = 1
-    time = 0
-    dtime = 1
-    noel = 17
-    ciname = 'WEAKENING'
-    slname = 'SLAVE'
-    msname = 'MASTER'
-    npt = 1
-    node = 42
-    npatch = 1
-    coords = 0
-    rcoord = 0
-    drot = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
-    temp = 20
-    predef = 0
-    nfdir = n
-    mcrd = 3
-    npred = 1
-    nstatv = 3
-    chrlngth = 1
+    h%press = p
+    h%dtime = 1
+    h%noel = 17
+    h%node = 42
     d = [1.0_dp, 0.0_dp]
     if (n == 2) d = [0.6_dp, -0.8_dp]
   end subroutine point
@@ -111,19 +73,14 @@ contains
   ! One increment of slip dg along d in time |dg|/v; returns tau along d.
   real(dp) function step(dg, v)
     real(dp), intent(in) :: dg, v
-    dgam(1:nfdir) = dg*d(1:nfdir)
-    dtime = abs(dg)/v
-    if (dg == 0) dtime = 0.1_dp ! a stop still takes time
-    dpress = 0
-    pnewdt = big
-    call fric(lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pnewdt, statev, dgam, taulm, &
-              press, dpress, ddpddh, slip, kstep, kinc, time, dtime, noel, ciname, slname, &
-              msname, npt, node, npatch, coords, rcoord, drot, temp, predef, nfdir, mcrd, &
-              npred, nstatv, chrlngth, props, nprops)
-    call check(pnewdt == big, 'no cut-back')
-    call check(all(tau(nfdir + 1:) == sentinel), 'TAU past NFDIR untouched')
-    call check(all(statev(nstatv + 1:) == sentinel), 'STATEV past NSTATV untouched')
-    step = dot_product(tau(1:nfdir), d(1:nfdir))
+    h%dgam(1:h%nfdir) = dg*d(1:h%nfdir)
+    h%dtime = abs(dg)/v
+    if (dg == 0) h%dtime = 0.1_dp ! a stop still takes time
+    h%dpress = 0
+    call fric_call(h)
+    call check(h%pnewdt == big, 'no cut-back')
+    call check_tails(h)
+    step = dot_product(h%tau(1:h%nfdir), d(1:h%nfdir))
   end function step
 
   subroutine steady(lw, n)
@@ -145,16 +102,16 @@ contains
         slid = .false.
         do k = 1, ninc
           t = step(r*gcrit, v)
-          if (statev(3) == 1) slid = .true.
+          if (h%statev(3) == 1) slid = .true.
           if (.not. slid) call check(t <= static_strength(lw)*(1 + 1.0e-12_dp), &
                                      'below the static strength before the first slip')
         end do
         call check(slid, 'slides')
         do k = 1, 20
           t = step(r*gcrit, v)
-          call check(statev(3) == 1, 'sliding')
+          call check(h%statev(3) == 1, 'sliding')
           call check_near(t, want, 1.0e-9_dp, 0.0_dp, 'tau = mu(v) p')
-          call check_near(statev(2), v, 1.0e-9_dp, 0.0_dp, 'STATEV(2) = v')
+          call check_near(h%statev(2), v, 1.0e-9_dp, 0.0_dp, 'STATEV(2) = v')
         end do
       end do
     end do
@@ -175,7 +132,7 @@ contains
     call check_near(t, want, 1.0e-9_dp, 0.0_dp, 'sliding before the stop')
     do k = 1, 4
       t = step(0.0_dp, v)
-      call check(statev(3) == 0, 'a stop is stick')
+      call check(h%statev(3) == 0, 'a stop is stick')
       call check_near(t, want, 1.0e-9_dp, 0.0_dp, 'a stop keeps the stress')
     end do
     write (scene, '(a,i0,a,i0)') 'reversal law ', lw, ' NFDIR ', n
@@ -184,7 +141,7 @@ contains
     do k = 1, 80
       t = step(-r*gcrit, v)
       if (crossed < 0 .and. t < 0) crossed = k
-      if (first_slip < 0 .and. statev(3) == 1) first_slip = k
+      if (first_slip < 0 .and. h%statev(3) == 1) first_slip = k
     end do
     call check(crossed > 1, 'the first reversed increment still pushes forward')
     call check(first_slip > crossed, 'stick through zero stress')
@@ -193,51 +150,33 @@ contains
 
   subroutine fresh_gap(ndir)
     integer, intent(in) :: ndir
-    real(dp) :: stress(4), ddsddr(10), dvisc(10), dstruct(10), flux(3), ddfddt(5), ddsddt(7)
-    real(dp) :: ddfddr(7), sv(4), ssed, ssfd, spd, svd, scd, pnew, rdisp(3), drdisp(3)
-    real(dp) :: utemp(2), dtemp(2), upredef(2), dpred(2), utime(2), udtime, freqr
-    real(dp) :: uprops(10), ucoords(3), alocaldir(9), udrot(2, 2), area, uchr
-    character(len=80) :: cin, sln, msn
-    integer :: unode, unstatv, unpred, unprops, umcrd, ukstep, ukinc, kit, linper
-    integer :: lopenclose, lstate, lsdi, lprint, pass
-    uprops = [2.0_dp, mu_k, mu_s, sa, 5.0_dp, 0.0_dp, 0.0_dp, gcrit, 0.0_dp, 1.0e6_dp]
-    stress = 0
-    stress(4) = sentinel
-    sv = 0
-    sv(4) = sentinel
-    ssed = 0; ssfd = 0; spd = 0; svd = 0; scd = 0
-    rdisp = 0; drdisp = [-1.0e-6_dp, 1.0e-5_dp, 0.0_dp]
-    utemp = 20; dtemp = 0; upredef = 0; dpred = 0; utime = 0; udtime = 1; freqr = 0
-    ucoords = 0; alocaldir = 0; udrot = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
-    area = 1; uchr = 1
-    cin = 'FRESH'; sln = 'SLAVE'; msn = 'MASTER'
-    unode = 1; unstatv = 3; unpred = 1; unprops = 10; umcrd = 3; ukstep = 1; ukinc = 1
-    kit = 1; linper = 0; lopenclose = -1; lstate = -1; lsdi = 0; lprint = 0
+    type(uinter_args) :: u
+    integer :: pass
+    u = new_uinter(ndir, [2.0_dp, mu_k, mu_s, sa, 5.0_dp, 0.0_dp, 0.0_dp, gcrit, 0.0_dp, &
+                          1.0e6_dp], 'FRESH')
+    u%drdisp = [-1.0e-6_dp, 1.0e-5_dp, 0.0_dp]
+    u%drot = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+    u%node = 1
     do pass = 0, 2
       write (scene, '(a,i0,a,i0)') 'fresh gap NDIR ', ndir, ' pass ', pass
-      rdisp(1) = -1.0e-6_dp
-      if (pass == 1) rdisp(1) = 1.0e-6_dp
-      pnew = big
-      call uinter(stress, ddsddr, dvisc, dstruct, flux, ddfddt, ddsddt, ddfddr, sv, ssed, &
-                  ssfd, spd, svd, scd, pnew, rdisp, drdisp, utemp, dtemp, upredef, dpred, &
-                  utime, udtime, freqr, cin, sln, msn, uprops, ucoords, alocaldir, udrot, &
-                  area, uchr, unode, ndir, unstatv, unpred, unprops, umcrd, ukstep, ukinc, kit, &
-                  linper, lopenclose, lstate, lsdi, lprint)
-      call check(pnew == big, 'no cut-back')
-      call check(sv(4) == sentinel .and. stress(4) == sentinel, 'guards untouched')
-      drdisp(2) = 0
+      u%rdisp(1) = -1.0e-6_dp
+      if (pass == 1) u%rdisp(1) = 1.0e-6_dp
+      call uinter_call(u)
+      call check(u%pnewdt == big, 'no cut-back')
+      call check_uinter_tails(u)
+      u%drdisp(2) = 0
       select case (pass)
       case (0)
-        call check(all(stress(1:ndir) == 0), 'a fresh point with a gap carries nothing')
-        call check(sv(3) == 4, 'status open')
-        call check(lopenclose == 0, 'LOPENCLOSE = 0')
+        call check(all(u%stress(1:ndir) == 0), 'a fresh point with a gap carries nothing')
+        call check(u%statev(3) == 4, 'status open')
+        call check(u%lopenclose == 0, 'LOPENCLOSE = 0')
       case (1)
-        call check_near(stress(1), 1.0_dp, 1.0e-12_dp, 0.0_dp, 'closed: p = K_n h')
-        call check(sv(3) == 0, 'status stick')
+        call check_near(u%stress(1), 1.0_dp, 1.0e-12_dp, 0.0_dp, 'closed: p = K_n h')
+        call check(u%statev(3) == 0, 'status stick')
       case default
-        call check_near(stress(1), -1.0_dp, 1.0e-12_dp, 0.0_dp, 'bonded: tension K_n |h|')
-        call check(sv(3) == 3, 'status bonded')
-        call check(lopenclose == 1, 'LOPENCLOSE = 1')
+        call check_near(u%stress(1), -1.0_dp, 1.0e-12_dp, 0.0_dp, 'bonded: tension K_n |h|')
+        call check(u%statev(3) == 3, 'status bonded')
+        call check(u%lopenclose == 1, 'LOPENCLOSE = 1')
       end select
     end do
   end subroutine fresh_gap

@@ -23,7 +23,7 @@
 
 module gapcon_omp_support
   use, intrinsic :: iso_fortran_env, only: int64
-  use, intrinsic :: iso_c_binding, only: c_char, c_double, c_int, c_null_char
+  use, intrinsic :: iso_c_binding, only: c_int, c_null_char
   use harness_threads
   implicit none
   integer, parameter :: full_points = 8*131072, min_points = 8192
@@ -32,21 +32,6 @@ module gapcon_omp_support
   integer, parameter :: n_laws = 6
   character(len=8), parameter :: names(n_laws) = [character(len=8) :: 'T1CONST', 'T1PTAB', &
     'T1TEMP', 'RADK', 'RADC', 'GASRAD']
-
-  type, bind(c) :: ifl_conductance
-    real(c_double) :: k, dk_dd, dk_dp, dk_dtheta_mean, dq_dtheta_a, dq_dtheta_b
-  end type ifl_conductance
-
-  interface
-    function ifl_gap_conductance(interaction, d, p, theta_a, theta_b, out) &
-      bind(c, name='ifl_gap_conductance') result(status)
-      import :: c_char, c_double, c_int, ifl_conductance
-      character(kind=c_char), dimension(*), intent(in) :: interaction
-      real(c_double), value :: d, p, theta_a, theta_b
-      type(ifl_conductance), intent(out) :: out
-      integer(c_int) :: status
-    end function ifl_gap_conductance
-  end interface
 
 contains
 

@@ -1,8 +1,8 @@
 ! test_gapcon_scenes.f90 -- scenes T1 (two bars, temperature-dependent gap conductance) and T2
 ! (radiating gap) from free-form Fortran. GAPCON is called the way a user's own Fortran 90 host
 ! would: a plain `call gapcon(...)` with the 15 Abaqus arguments and no interface block. The
-! native C function ifl_gap_conductance (derivatives GAPCON cannot return) and
-! ifl_last_error_copy are called through an ISO_C_BINDING interface, the only one in the file.
+! native C function ifl_gap_conductance (derivatives GAPCON cannot return) and the last error
+! are called through the ISO_C_BINDING interfaces of harness_tally.
 !
 ! Scenario (shared/design/scenes.md, T1/T2; laws from configs/gapcon_good.toml, named by CTest's
 ! INTERFACIAL_CONFIG): bar A (L_A = 0.1, k_A = 50) held at theta_H = 400, bar B (L_B = 0.2,
@@ -14,41 +14,14 @@
 !
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 
-! The library's native C API, as declared in include/interfacial.h.
-module ifl_native
-  use, intrinsic :: iso_c_binding, only: c_char, c_double, c_int, c_null_char, c_size_t
-  implicit none
-  integer(c_int), parameter :: ifl_status_ok = 0
-
-  type, bind(c) :: ifl_conductance
-    real(c_double) :: k, dk_dd, dk_dp, dk_dtheta_mean, dq_dtheta_a, dq_dtheta_b
-  end type ifl_conductance
-
-  interface
-    function ifl_gap_conductance(interaction, d, p, theta_a, theta_b, out) &
-      bind(c, name='ifl_gap_conductance') result(status)
-      import :: c_char, c_double, c_int, ifl_conductance
-      character(kind=c_char), dimension(*), intent(in) :: interaction
-      real(c_double), value :: d, p, theta_a, theta_b
-      type(ifl_conductance), intent(out) :: out
-      integer(c_int) :: status
-    end function ifl_gap_conductance
-
-    function ifl_last_error_copy(buf, len) bind(c, name='ifl_last_error_copy') result(n)
-      import :: c_char, c_size_t
-      character(kind=c_char), dimension(*), intent(out) :: buf
-      integer(c_size_t), value :: len
-      integer(c_size_t) :: n
-    end function ifl_last_error_copy
-  end interface
-end module ifl_native
-
 ! The host side: scene constants, one GAPCON call as Abaqus makes it, one native call.
 module gapcon_host
   ! The tally: check and check_near here take the increment or point number K.
-  use harness_tally, only: dp, npass, nfail, scene, check => check_at, check_near => check_abs_at
-  use ifl_native
+  use harness_tally, only: dp, npass, nfail, scene, check => check_at, check_near => check_abs_at, &
+    last_error, ifl_conductance, ifl_gap_conductance
+  use, intrinsic :: iso_c_binding, only: c_int, c_null_char
   implicit none
+  integer(c_int), parameter :: ifl_status_ok = 0 ! IFL_STATUS_OK of include/interfacial.h
   real(dp), parameter :: l_a = 0.1_dp, k_a = 50.0_dp, l_b = 0.2_dp, k_b = 15.0_dp
   real(dp), parameter :: theta_h = 400.0_dp, theta_c = 300.0_dp
   ! Bar conductances k/L and the series resistance of both bars.
@@ -116,10 +89,7 @@ contains
   end function both
 
   subroutine print_last_error()
-    character(len=512) :: msg
-    integer(c_size_t) :: n
-    n = ifl_last_error_copy(msg, int(len(msg), c_size_t))
-    write (*, '(2a)') '   last error: ', msg(1:int(min(n, int(len(msg) - 1, c_size_t))))
+    write (*, '(2a)') '   last error: ', trim(last_error())
   end subroutine print_last_error
 
   ! The host's Newton on the two-bar residual

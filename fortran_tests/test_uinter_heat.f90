@@ -11,51 +11,47 @@
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 program test_uinter_heat
   use harness_tally, only: dp, npass, nfail, check, check_abs
+  use harness_uinter_host
   implicit none
   real(dp), parameter :: th = 400.0_dp, tc = 20.0_dp, ra = 2.0e-4_dp, rb = 1.0e-3_dp
   real(dp), parameter :: kn = 1.0e4_dp, dt = 0.5_dp, big = 1.0e36_dp
   integer :: it
-  real(dp) :: stress(2), ddsddr(4), dvisc(4), dstruct(4), flux(2), ddfddt(2, 2), ddsddt(2, 2)
-  real(dp) :: ddfddr(2, 2), statev(3), sed, sfd, spd, svd, scd, pnewdt
-  real(dp) :: rdisp(2), drdisp(2), temp(2), dtemp(2), predef(2, 1), dpred(2, 1), time(2), freqr
-  real(dp) :: props(13), coords(3), alocaldir(3, 3), drot(2, 2), area, chrlngth
-  integer :: node, ndir, nstatv, npred, nprops, mcrd, kstep, kinc, kit, linper
-  integer :: lopenclose, lstate, lsdi, lprint
-  character(len=80) :: ciname, slname, msname
+  ! The UINTER arguments of the point (module harness_uinter_host).
+  type(uinter_args) :: u
   real(dp) :: r1, r2, j11, j12, j21, j22, det, q, qin(2)
 
   ! T1
   call init(0.0_dp)
-  rdisp(1) = 40.0_dp/kn
-  temp = [th, tc]
+  u%rdisp(1) = 40.0_dp/kn
+  u%temp = [th, tc]
   do it = 1, 5
     call call_uinter()
-    r1 = (th - temp(1))/ra + flux(1)
-    r2 = (tc - temp(2))/rb + flux(2)
+    r1 = (th - u%temp(1))/ra + u%flux(1)
+    r2 = (tc - u%temp(2))/rb + u%flux(2)
     if (abs(r1) + abs(r2) < 1.0e-9_dp*(th - tc)/ra .and. it > 1) exit
-    j11 = -1.0_dp/ra - ddfddt(1, 1); j12 = -ddfddt(1, 2)
-    j21 = -ddfddt(2, 1); j22 = -1.0_dp/rb - ddfddt(2, 2)
+    j11 = -1.0_dp/ra - u%ddfddt(1, 1); j12 = -u%ddfddt(1, 2)
+    j21 = -u%ddfddt(2, 1); j22 = -1.0_dp/rb - u%ddfddt(2, 2)
     det = j11*j22 - j12*j21
-    temp(1) = temp(1) - (r1*j22 - r2*j12)/det
-    temp(2) = temp(2) - (j11*r2 - j21*r1)/det
+    u%temp(1) = u%temp(1) - (r1*j22 - r2*j12)/det
+    u%temp(2) = u%temp(2) - (j11*r2 - j21*r1)/det
   end do
-  q = (th - temp(1))/ra
+  q = (th - u%temp(1))/ra
   call check_abs(q, (th - tc)/(ra + 1.0_dp/1300.0_dp + rb), 1.0e-10_dp*q, 'T1 flux, closed form')
-  call check_abs(q, 1300.0_dp*(temp(1) - temp(2)), 1.0e-10_dp*q, 'T1 flux = k (T1 - T2)')
+  call check_abs(q, 1300.0_dp*(u%temp(1) - u%temp(2)), 1.0e-10_dp*q, 'T1 flux = k (T1 - T2)')
   call check(it == 2, 'one Newton iteration (then the converged check)')
 
   ! Frictional heat
   call init(0.8_dp)
-  rdisp(1) = 50.0_dp/kn
-  drdisp(2) = 0.05_dp
-  temp = [60.0_dp, 40.0_dp]
+  u%rdisp(1) = 50.0_dp/kn
+  u%drdisp(2) = 0.05_dp
+  u%temp = [60.0_dp, 40.0_dp]
   call call_uinter()
-  qin = flux
-  call check_abs(sfd, 0.4_dp*50.0_dp*(0.05_dp - 1.0e-3_dp), 1.0e-12_dp*sfd, 'SFD = mu p slip')
-  call check_abs(qin(1) + qin(2), 0.8_dp*sfd/dt, 1.0e-12_dp*sfd/dt, 'heat balance')
+  qin = u%flux
+  call check_abs(u%sfd, 0.4_dp*50.0_dp*(0.05_dp - 1.0e-3_dp), 1.0e-12_dp*u%sfd, 'SFD = mu p slip')
+  call check_abs(qin(1) + qin(2), 0.8_dp*u%sfd/dt, 1.0e-12_dp*u%sfd/dt, 'heat balance')
   ! k(50) = 1000 + 600 (50 - 20)/40 = 1450.
-  call check_abs(qin(1) - 1450.0_dp*(40.0_dp - 60.0_dp), 0.25_dp*0.8_dp*sfd/dt, 1.0e-9_dp*sfd/dt, &
-            'slave share f')
+  call check_abs(qin(1) - 1450.0_dp*(40.0_dp - 60.0_dp), 0.25_dp*0.8_dp*u%sfd/dt, &
+                 1.0e-9_dp*u%sfd/dt, 'slave share f')
 
   write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
   if (nfail > 0) error stop 1
@@ -64,26 +60,16 @@ contains
 
   subroutine init(eta)
     real(dp), intent(in) :: eta
-    stress = 0; ddsddr = 0; dvisc = 0; dstruct = 0; flux = 0; ddfddt = 0; ddsddt = 0
-    ddfddr = 0; statev = 0; sed = 0; sfd = 0; spd = 0; svd = 0; scd = 0
-    rdisp = 0; drdisp = 0; temp = 20; dtemp = 0; predef = 0; dpred = 0; time = 0; freqr = 0
     ! mu = 0.4, gamma_crit = 1e-3, K_n, conductance from the file, eta, f = 0.25.
-    props = [2.0_dp, 0.4_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0e-3_dp, 0.0_dp, kn, &
-             1.0_dp, eta, 0.25_dp]
-    nprops = 13
-    coords = 0; alocaldir = 0; drot = 0; area = 1; chrlngth = 1
-    node = 1; ndir = 2; nstatv = 3; npred = 1; mcrd = 3; kstep = 1; kinc = 1; kit = 1
-    linper = 0; lopenclose = -1; lstate = -1; lsdi = 0; lprint = 0
-    ciname = 'PTAB'; slname = 'SLAVE'; msname = 'MASTER'
+    u = new_uinter(2, [2.0_dp, 0.4_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0e-3_dp, &
+                       0.0_dp, kn, 1.0_dp, eta, 0.25_dp], 'PTAB')
+    u%dtime = dt
+    u%node = 1
   end subroutine init
 
   subroutine call_uinter()
-    pnewdt = big
-    call uinter(stress, ddsddr, dvisc, dstruct, flux, ddfddt, ddsddt, ddfddr, statev, sed, &
-                sfd, spd, svd, scd, pnewdt, rdisp, drdisp, temp, dtemp, predef, dpred, time, &
-                dt, freqr, ciname, slname, msname, props, coords, alocaldir, drot, area, &
-                chrlngth, node, ndir, nstatv, npred, nprops, mcrd, kstep, kinc, kit, linper, &
-                lopenclose, lstate, lsdi, lprint)
-    call check(pnewdt == big, 'PNEWDT not lowered')
+    call uinter_call(u)
+    call check(u%pnewdt == big, 'PNEWDT not lowered')
+    call check_uinter_tails(u)
   end subroutine call_uinter
 end program test_uinter_heat

@@ -41,9 +41,9 @@ contains
   ! One interface point of one run: 256 digests into dig(:), the final state into fin(:).
   subroutine run_point(ip, dig, fin, kinds, bad, first_bad)
     integer, intent(in) :: ip
-    integer(int64), intent(out) :: dig(incs)
-    real(dp), intent(out) :: fin(nrec)
-    integer(int64), intent(inout) :: kinds(n_kinds)
+    integer(int64), intent(out) :: dig(:) ! (incs)
+    real(dp), intent(out) :: fin(:) ! (nrec)
+    integer(int64), intent(inout) :: kinds(:) ! (n_kinds)
     integer, intent(inout) :: bad
     character(len=*), intent(inout) :: first_bad
     integer(int64) :: rng, h(2)
@@ -212,42 +212,10 @@ end module uinter_omp_support
 
 program test_uinter_omp
   use uinter_omp_support
-  use omp_lib, only: omp_get_thread_num, omp_get_max_threads
+  use harness_omp
   implicit none
-  integer :: npoints, ip, bad_par, bad_ser, nworkers
-  integer(int64), allocatable :: dig_par(:, :), dig_ser(:, :)
-  real(dp), allocatable :: fin_par(:, :), fin_ser(:, :)
-  integer(int64) :: kinds_par(n_kinds), kinds_ser(n_kinds), calls
-  logical, allocatable :: worked(:)
-  character(len=256) :: first_par, first_ser
 
-  npoints = full_points/shrink_factor(full_points/min_points)
-  calls = int(npoints, int64)*incs
-  allocate (dig_par(incs, npoints), dig_ser(incs, npoints), fin_par(nrec, npoints), &
-            fin_ser(nrec, npoints), worked(0:max(omp_get_max_threads(), 1) - 1))
-  worked = .false.
-  kinds_par = 0; kinds_ser = 0; bad_par = 0; bad_ser = 0
-  first_par = ' '; first_ser = ' '
-  call check(omp_get_max_threads() >= nthreads_min, 'OpenMP offers at least 8 threads '// &
-             '(OMP_NUM_THREADS)')
-
-  !$omp parallel do schedule(static) default(shared) private(ip) &
-  !$omp reduction(+:kinds_par, bad_par)
-  do ip = 1, npoints
-    worked(omp_get_thread_num()) = .true.
-    call run_point(ip, dig_par(:, ip), fin_par(:, ip), kinds_par, bad_par, first_par)
-  end do
-  !$omp end parallel do
-  nworkers = count(worked)
-  call judge_run('OpenMP', kind_names, kinds_par, calls, bad_par, first_par)
-  call check(nworkers >= nthreads_min, 'at least 8 OpenMP threads did work')
-
-  do ip = 1, npoints
-    call run_point(ip, dig_ser(:, ip), fin_ser(:, ip), kinds_ser, bad_ser, first_ser)
-  end do
-  call judge_run('serial', kind_names, kinds_ser, calls, bad_ser, first_ser)
-  call compare_point_runs('UINTER', nworkers, kind_names, kinds_par, kinds_ser, dig_par, dig_ser, &
-                          fin_par, fin_ser)
-  deallocate (dig_par, dig_ser, fin_par, fin_ser, worked)
+  call omp_point_runs('UINTER', kind_names, full_points/shrink_factor(full_points/min_points), &
+                      incs, nrec, run_point)
   call finish()
 end program test_uinter_omp

@@ -214,50 +214,13 @@ end module vfric_omp_support
 
 program test_vfric_omp
   use vfric_omp_support
-  use omp_lib, only: omp_get_thread_num, omp_get_max_threads
+  use harness_omp
   implicit none
-  integer :: nblocks, ib, bad_par, bad_ser, nworkers, shrink
-  integer(int64), allocatable :: dig_par(:, :), dig_ser(:, :)
-  integer, allocatable :: kind_par(:), kind_ser(:), n_par(:), n_ser(:), b_par(:), b_ser(:)
-  logical, allocatable :: worked(:)
-  character(len=256) :: first_par, first_ser
+  integer :: shrink, nblocks
 
   shrink = shrink_factor(full_blocks/min_blocks)
   nblocks = full_blocks/shrink
-  allocate (dig_par(2, nblocks), dig_ser(2, nblocks), kind_par(nblocks), kind_ser(nblocks), &
-            n_par(nblocks), n_ser(nblocks), b_par(nblocks), b_ser(nblocks), &
-            worked(0:max(omp_get_max_threads(), 1) - 1))
-  worked = .false.
-  bad_par = 0
-  bad_ser = 0
-  first_par = ' '
-  first_ser = ' '
-  call check(omp_get_max_threads() >= nthreads_min, 'OpenMP offers at least 8 threads '// &
-             '(OMP_NUM_THREADS)')
-
-  !$omp parallel do schedule(static) default(shared) private(ib)
-  do ib = 1, nblocks
-    worked(omp_get_thread_num()) = .true.
-    call run_block(ib, dig_par(:, ib), kind_par(ib), n_par(ib), b_par(ib), bad_par, first_par)
-  end do
-  !$omp end parallel do
-  nworkers = count(worked)
-  call check(nworkers >= nthreads_min, 'at least 8 OpenMP threads did work')
-  call report_violations('OpenMP', bad_par, first_par)
-  call check(bad_par == 0, 'every OpenMP block matches docs/vfric.md')
-
-  do ib = 1, nblocks
-    call run_block(ib, dig_ser(:, ib), kind_ser(ib), n_ser(ib), b_ser(ib), bad_ser, first_ser)
-  end do
-  call report_violations('serial', bad_ser, first_ser)
-  call check(bad_ser == 0, 'every serial block matches docs/vfric.md')
-
-  write (*, '(a,i0)') 'bad points: ', sum(b_par)
-  call check(sum(b_par) >= nblocks/(2*n_kinds), 'enough bad points')
-  call check(all(b_par == b_ser), 'the same bad points in both runs')
-  call compare_block_runs('VFRIC', nworkers, shrink, kind_names, kind_par, kind_ser, n_par, &
-                          n_ser, dig_par, dig_ser)
-
-  deallocate (dig_par, dig_ser, kind_par, kind_ser, n_par, n_ser, b_par, b_ser, worked)
+  call omp_block_runs('VFRIC', 'docs/vfric.md', kind_names, nblocks, shrink, run_block, &
+                      min_bad_points=nblocks/(2*n_kinds))
   call finish()
 end program test_vfric_omp
