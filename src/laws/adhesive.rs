@@ -33,6 +33,7 @@ use super::coulomb::{
     Coulomb, CoulombState, CriticalSlip, FrictionStatus, Increment, Traction, Update,
 };
 use super::friction_coefficient::{RateFormulation, STICK_TEST_ROUNDING};
+use super::parameter_range::nonnegative;
 use super::small_vec::{add, all_finite, diagonal, norm, radial_transverse, scale, unit};
 use crate::{LawError, Outcome};
 
@@ -105,20 +106,10 @@ pub struct Slide<const N: usize> {
     pub stick_stiffness: f64,
 }
 
-fn check(name: &str, v: f64) -> Result<f64, LawError> {
-    if v.is_finite() && v >= 0.0 {
-        Ok(v)
-    } else {
-        Err(LawError::Parameter(format!(
-            "{name} = {v} must be finite and ≥ 0"
-        )))
-    }
-}
-
 impl Adhesive {
     /// Validates the seed's parameters; γ_crit defaults to 0.005 × characteristic length.
     pub fn new(p: &AdhesiveParameters) -> Result<Self, LawError> {
-        let mu_d = check("coeff (dynamic friction coefficient μ_d)", p.coeff)?;
+        let mu_d = nonnegative("coeff (dynamic friction coefficient μ_d)", p.coeff)?;
         if p.coeff_static.is_nan() || p.coeff_static.is_infinite() {
             return Err(LawError::Parameter(format!(
                 "coeffStatic = {} must be finite (≤ 0 for none)",
@@ -140,10 +131,10 @@ impl Adhesive {
         Ok(Adhesive {
             base: Coulomb::new(mu_d)?,
             mu_static,
-            shear_adhesion: check("Sa (shear adhesive strength)", p.sa)?,
-            normal_adhesion: check("Na (normal adhesive strength)", p.na)?,
-            k_mu: check("kmu (friction slope against slip rate)", p.kmu)?,
-            v_half: check("vhalf (half-transition slip rate)", p.vhalf)?,
+            shear_adhesion: nonnegative("Sa (shear adhesive strength)", p.sa)?,
+            normal_adhesion: nonnegative("Na (normal adhesive strength)", p.na)?,
+            k_mu: nonnegative("kmu (friction slope against slip rate)", p.kmu)?,
+            v_half: nonnegative("vhalf (half-transition slip rate)", p.vhalf)?,
             formulation: RateFormulation::RateFollowingStiffness,
         })
     }

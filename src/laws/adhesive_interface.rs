@@ -25,6 +25,7 @@ use super::adhesive::{Adhesive, SlideBranch};
 use super::coulomb::Traction;
 use super::friction_coefficient::RateFormulation;
 use super::interface_heat::MechanicalAnswer;
+use super::parameter_range::positive;
 use super::small_vec::{add, all_finite, norm, scale};
 use crate::LawError;
 
@@ -165,11 +166,7 @@ pub struct AdhesiveInterface {
 impl AdhesiveInterface {
     /// K_n must be finite and > 0.
     pub fn new(law: Adhesive, normal_stiffness: f64) -> Result<Self, LawError> {
-        if !(normal_stiffness > 0.0 && normal_stiffness.is_finite()) {
-            return Err(LawError::Parameter(format!(
-                "penalty normal stiffness K_n = {normal_stiffness} must be finite and > 0"
-            )));
-        }
+        positive("penalty normal stiffness K_n", normal_stiffness)?;
         Ok(AdhesiveInterface {
             law,
             normal_stiffness,

@@ -12,6 +12,7 @@
 //! increment. Tangents are derivatives of the end-of-increment stress with the start of the
 //! increment held fixed.
 
+use super::parameter_range::{nonnegative, positive};
 use super::small_vec::{
     add, all_finite, diagonal, divided, dot, is_positive_normal, length_beyond, norm, scale, sum,
     transverse_projection, unit, unit_unless_infinite,
@@ -234,32 +235,12 @@ pub struct Update<const N: usize> {
     pub outcome: Outcome,
 }
 
-fn finite_nonnegative(name: &str, v: f64) -> Result<f64, LawError> {
-    if v.is_finite() && v >= 0.0 {
-        Ok(v)
-    } else {
-        Err(LawError::Parameter(format!(
-            "{name} = {v} must be finite and ≥ 0"
-        )))
-    }
-}
-
-fn finite_positive(name: &str, v: f64) -> Result<f64, LawError> {
-    if v.is_finite() && v > 0.0 {
-        Ok(v)
-    } else {
-        Err(LawError::Parameter(format!(
-            "{name} = {v} must be finite and > 0"
-        )))
-    }
-}
-
 impl Coulomb {
     /// Isotropic Coulomb friction with coefficient μ ≥ 0, no shear limit, elastic stick with
     /// γ_crit = 0.005 × characteristic length.
     pub fn new(mu: f64) -> Result<Self, LawError> {
         Ok(Coulomb {
-            mu: finite_nonnegative("friction coefficient μ", mu)?,
+            mu: nonnegative("friction coefficient μ", mu)?,
             tau_max: f64::INFINITY,
             critical_slip: CriticalSlip::Tolerance(DEFAULT_SLIP_TOLERANCE),
             stick: StickMode::Elastic,
@@ -296,22 +277,20 @@ impl Coulomb {
 
     /// Limits the critical stress: τ_crit = min(μp, τ_max), τ_max > 0.
     pub fn with_shear_limit(mut self, tau_max: f64) -> Result<Self, LawError> {
-        self.tau_max = finite_positive("shear limit τ_max", tau_max)?;
+        self.tau_max = positive("shear limit τ_max", tau_max)?;
         Ok(self)
     }
 
     /// Sets the allowable elastic slip γ_crit > 0 as an absolute length.
     pub fn with_critical_slip_absolute(mut self, gamma_crit: f64) -> Result<Self, LawError> {
-        self.critical_slip = CriticalSlip::Absolute(finite_positive(
-            "allowable elastic slip γ_crit",
-            gamma_crit,
-        )?);
+        self.critical_slip =
+            CriticalSlip::Absolute(positive("allowable elastic slip γ_crit", gamma_crit)?);
         Ok(self)
     }
 
     /// Sets γ_crit as `tolerance` × characteristic length, tolerance > 0.
     pub fn with_slip_tolerance(mut self, tolerance: f64) -> Result<Self, LawError> {
-        self.critical_slip = CriticalSlip::Tolerance(finite_positive("slip tolerance", tolerance)?);
+        self.critical_slip = CriticalSlip::Tolerance(positive("slip tolerance", tolerance)?);
         Ok(self)
     }
 

@@ -34,6 +34,7 @@ use super::coulomb::{
 use super::friction_coefficient::{
     CoefficientLaw, Factor, RateFormulation, RateLaw, STICK_TEST_ROUNDING, decay_phi,
 };
+use super::parameter_range::positive;
 use super::scalar_root::{RootFailure, bracketed_newton, halley_on_known_bracket};
 use super::small_vec::{all_finite, dot, norm, scale, unit};
 use crate::{LawError, Outcome};
@@ -299,11 +300,7 @@ impl ExtendedCoulomb {
 
     /// Anisotropic friction: μ₂ > 0 in direction 2 (μ₁ = the base μ, which must be > 0).
     pub fn with_second_coefficient(mut self, mu2: f64) -> Result<Self, LawError> {
-        if !(mu2.is_finite() && mu2 > 0.0) {
-            return Err(LawError::Parameter(format!(
-                "μ₂ = {mu2} must be finite and > 0"
-            )));
-        }
+        positive("μ₂", mu2)?;
         if mu2 != self.base.mu() && self.base.mu() <= 0.0 {
             return Err(LawError::Parameter(format!(
                 "anisotropic friction needs μ₁ > 0 as well (μ₁ = {}, μ₂ = {mu2})",

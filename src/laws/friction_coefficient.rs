@@ -22,6 +22,7 @@
 
 use crate::LawError;
 use crate::laws::friction_table::FrictionTable;
+use crate::laws::parameter_range::{nonnegative, positive};
 
 /// How a rate-dependent strength enters the elastic-stick return map (docs/props.md, "The
 /// rate-dependent formulation"). Shared by the extended Coulomb law (law 1) and the adhesive
@@ -152,16 +153,8 @@ impl CoefficientLaw {
         kinetic_ratio: f64,
         decay: f64,
     ) -> Result<Self, LawError> {
-        if !(kinetic_ratio.is_finite() && kinetic_ratio >= 0.0) {
-            return Err(LawError::Parameter(format!(
-                "kinetic coefficient ratio μ_k/μ_s = {kinetic_ratio} must be finite and ≥ 0"
-            )));
-        }
-        if !(decay.is_finite() && decay > 0.0) {
-            return Err(LawError::Parameter(format!(
-                "decay coefficient d_c = {decay} must be finite and > 0"
-            )));
-        }
+        nonnegative("kinetic coefficient ratio μ_k/μ_s", kinetic_ratio)?;
+        positive("decay coefficient d_c", decay)?;
         self.rate = RateLaw::ExponentialDecay {
             kinetic_ratio,
             decay,
@@ -197,12 +190,7 @@ impl CoefficientLaw {
 
     /// Pressure dependence π = 1/(1 + p/p_ref), p_ref > 0.
     pub fn with_pressure_reference(mut self, p_ref: f64) -> Result<Self, LawError> {
-        if !(p_ref.is_finite() && p_ref > 0.0) {
-            return Err(LawError::Parameter(format!(
-                "reference pressure p_ref = {p_ref} must be finite and > 0"
-            )));
-        }
-        self.pressure_ref = p_ref;
+        self.pressure_ref = positive("reference pressure p_ref", p_ref)?;
         Ok(self)
     }
 

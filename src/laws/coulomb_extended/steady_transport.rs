@@ -37,11 +37,7 @@ pub struct SteadyTransport {
 impl SteadyTransport {
     /// Validated steady-transport parameters.
     pub fn new(tolerance: f64, omega: f64, axis: usize) -> Result<Self, LawError> {
-        if !(tolerance.is_finite() && tolerance > 0.0) {
-            return Err(LawError::Parameter(format!(
-                "slip tolerance F_f = {tolerance} must be finite and > 0"
-            )));
-        }
+        positive("slip tolerance F_f", tolerance)?;
         if !(omega.is_finite() && omega > 0.0) {
             return Err(LawError::Parameter(format!(
                 "angular velocity ω = {omega} must be finite and > 0 for steady-state transport"
