@@ -475,30 +475,14 @@ impl Adhesive {
         let slip_eq = predictor_eq - gamma_crit;
         let p_plus = p.max(0.0);
         let (mu_s, mu_d) = (self.mu_static, self.base.mu());
-        // In slip-increment form: V = v_½Δt (a length), K = k_μ/Δt (per length). With Δt ≤ 0
-        // (allowed only when k_μ = v_½ = 0) the sliding strength is μ_d·p⁺ + S_a.
-        let (length_half, k_per_length) = if dtime > 0.0 {
-            (self.v_half * dtime, self.k_mu / dtime)
-        } else {
-            (0.0, 0.0)
-        };
+        // With Δt ≤ 0 (allowed only when k_μ = v_½ = 0) the sliding strength is μ_d·p⁺ + S_a.
+        let (length_half, k_per_length) = self.slip_increment_form(dtime);
         // Δs > 0, so V + Δs > 0: the transition μ_d + (μ_s − μ_d)·V/(V + Δs) (seed 004's
         // (μ_s v_½ + μ_d Δv)/(v_½ + Δv), in a form that cannot overflow).
         let denom = length_half + slip_eq;
         let share = length_half / denom;
         let transition = mu_d + (mu_s - mu_d) * share;
-        let pressure_part = if p_plus > 0.0 {
-            // k_μ·Δs·p⁺/Δt with the exponents kept apart (see `return_map`).
-            let rate_term = if dtime > 0.0 && self.k_mu > 0.0 {
-                product_ratio(self.k_mu, slip_eq, p_plus, dtime)
-            } else {
-                0.0
-            };
-            transition * p_plus + rate_term
-        } else {
-            0.0
-        };
-        let tau_eq = pressure_part + self.shear_adhesion;
+        let tau_eq = self.pressure_strength(transition, slip_eq, p_plus, dtime) + self.shear_adhesion;
         // ∂g/∂Δs = ((μ_d − μ_s)·V/(V + Δs)² + K)·p⁺ and ∂g/∂p.
         let g_s = ((mu_d - mu_s) * (share / denom) + k_per_length) * p_plus;
         let g_p = if p < 0.0 {
@@ -520,11 +504,7 @@ impl Adhesive {
                 sfd: tau_eq * slip_eq,
             },
             branch: SlideBranch::Slip,
-            slip_rate: if dtime > 0.0 {
-                (slip_eq / dtime).min(f64::MAX)
-            } else {
-                0.0
-            },
+            slip_rate: end_slip_rate(slip_eq, dtime),
             stick_stiffness: tau_eq / gamma_crit,
         }
     }
@@ -540,31 +520,14 @@ impl Adhesive {
         gamma_crit: f64,
     ) -> Slide<N> {
         let predictor_eq = norm(predictor);
-        let k_s = tau_s / gamma_crit;
         if predictor_eq <= gamma_crit {
-            // Stick (Eq. 5.2.3-1): τ = k_s γ^pr, ∂τ/∂p = γ^pr (∂τ_s/∂p)/γ_crit.
-            return Slide {
-                traction: Traction {
-                    tau: scale(predictor, k_s),
-                    ddtddg: diagonal(k_s),
-                    ddtddp: scale(predictor, dtau_s_dp / gamma_crit),
-                    dslip: [0.0; N],
-                    sed: 0.5 * k_s * predictor_eq * predictor_eq,
-                    sfd: 0.0,
-                },
-                branch: SlideBranch::Stick,
-                slip_rate: 0.0,
-                stick_stiffness: k_s,
-            };
+            // Stick (Eq. 5.2.3-1) with the static stiffness: τ_s here is the static strength.
+            return self.stick(predictor, predictor_eq, (tau_s, dtau_s_dp), p, gamma_crit);
         }
+        let k_s = tau_s / gamma_crit;
         let p_plus = p.max(0.0);
         let (mu_s, mu_d) = (self.mu_static, self.base.mu());
-        // In slip-increment form: V = v_½Δt (a length), K = k_μ/Δt (per length).
-        let (length_half, k_per_length) = if dtime > 0.0 {
-            (self.v_half * dtime, self.k_mu / dtime)
-        } else {
-            (0.0, 0.0)
-        };
+        let (length_half, k_per_length) = self.slip_increment_form(dtime);
         let trial = k_s * predictor_eq;
         let a = k_s + p_plus * k_per_length;
         let b = trial - self.shear_adhesion - mu_d * p_plus - a * length_half;
@@ -582,26 +545,15 @@ impl Adhesive {
         // terms) rather than as T − k_s·Δs, whose cancellation loses ~ε·T: with T/g = 10⁶ that
         // put τ 4·10⁻¹¹ above the strength (fuzz target `uinter`, docs/fuzzing.md).
         // The transition written as μ_d + (μ_s − μ_d)·V/(V + Δs), which cannot overflow (the
-        // seed's (μ_s V + μ_d Δs)/(V + Δs) does for Δs near f64::MAX); at p⁺ = 0 the
-        // pressure terms are 0 even when K·Δs is not finite.
+        // seed's (μ_s V + μ_d Δs)/(V + Δs) does for Δs near f64::MAX).
         let transition = if denom > 0.0 {
             mu_d + (mu_s - mu_d) * (length_half / denom)
         } else {
             mu_s
         };
-        let pressure_part = if p_plus > 0.0 {
-            // k_μ·Δs·p⁺/Δt with the exponents kept apart: every fixed order of the product
-            // under- or overflows in some range (fuzz target `fric`, docs/fuzzing.md).
-            let rate_term = if dtime > 0.0 && self.k_mu > 0.0 {
-                product_ratio(self.k_mu, slip_eq, p_plus, dtime)
-            } else {
-                0.0
-            };
-            transition * p_plus + rate_term
-        } else {
-            0.0
-        };
-        let tau_eq = (pressure_part + self.shear_adhesion).min(trial);
+        let tau_eq =
+            (self.pressure_strength(transition, slip_eq, p_plus, dtime) + self.shear_adhesion)
+                .min(trial);
         let (g_s, g_p) = if denom > 0.0 {
             (
                 ((mu_d - mu_s) * length_half / (denom * denom) + k_per_length) * p_plus,
@@ -636,13 +588,38 @@ impl Adhesive {
                 sfd: tau_eq * slip_eq,
             },
             branch: SlideBranch::Slip,
-            // Saturates at f64::MAX (a slip over a subnormal Δt), as in the Coulomb law.
-            slip_rate: if dtime > 0.0 {
-                (slip_eq / dtime).min(f64::MAX)
+            slip_rate: end_slip_rate(slip_eq, dtime),
+            stick_stiffness: k_s,
+        }
+    }
+
+    /// The rate terms in slip-increment form (Δv = Δs/Δt, backward Euler): V = v_½·Δt (a
+    /// length) and K = k_μ/Δt (per length); both 0 when Δt ≤ 0 (then k_μ = v_½ = 0).
+    #[inline(always)]
+    fn slip_increment_form(&self, dtime: f64) -> (f64, f64) {
+        if dtime > 0.0 {
+            (self.v_half * dtime, self.k_mu / dtime)
+        } else {
+            (0.0, 0.0)
+        }
+    }
+
+    /// The pressure part of the sliding strength (seed 004), (transition + k_μ·Δs/Δt)·p⁺, for
+    /// the transition coefficient at the slip increment Δs; 0 at p⁺ = 0 even when k_μ·Δs/Δt is
+    /// not finite. k_μ·Δs·p⁺/Δt is formed with the exponents kept apart ([`product_ratio`]):
+    /// every fixed order of the product under- or overflows in some range (fuzz target `fric`,
+    /// docs/fuzzing.md).
+    #[inline(always)]
+    fn pressure_strength(&self, transition: f64, slip_eq: f64, p_plus: f64, dtime: f64) -> f64 {
+        if p_plus > 0.0 {
+            let rate_term = if dtime > 0.0 && self.k_mu > 0.0 {
+                product_ratio(self.k_mu, slip_eq, p_plus, dtime)
             } else {
                 0.0
-            },
-            stick_stiffness: k_s,
+            };
+            transition * p_plus + rate_term
+        } else {
+            0.0
         }
     }
 
@@ -739,6 +716,17 @@ impl Adhesive {
             },
             outcome: Outcome::CONVERGED,
         })
+    }
+}
+
+/// The end-of-increment slip rate Δs/Δt of a sliding increment (0 when Δt ≤ 0); saturates at
+/// f64::MAX (a slip over a subnormal Δt), as in the Coulomb law.
+#[inline(always)]
+fn end_slip_rate(slip_eq: f64, dtime: f64) -> f64 {
+    if dtime > 0.0 {
+        (slip_eq / dtime).min(f64::MAX)
+    } else {
+        0.0
     }
 }
 

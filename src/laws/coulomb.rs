@@ -187,6 +187,31 @@ impl CoulombState {
         self.accumulated_slip * 0.0 + self.slip_rate * 0.0
     }
 
+    /// The state after an increment with relative motion (`LM = 0`): the path of inelastic slip
+    /// grows by `slip` = |Δγ^sl|, the slip rate is `rate_slip`/`rate_dtime` (the return map's
+    /// Δγ_eq^sl over the time increment of rates; 0 when that is ≤ 0), and the status is slip
+    /// when `slip` > 0, else stick. Both scalars saturate at f64::MAX rather than overflow: a
+    /// finite slip over a subnormal DTIME, or a sum near f64::MAX, would otherwise store ∞ in
+    /// STATEV, which the next increment refuses as corrupted (fuzz target `fric`). For finite
+    /// `slip`, `rate_slip` ≥ 0 (the callers test their outputs first).
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn after_motion(&self, slip: f64, rate_slip: f64, rate_dtime: f64) -> Self {
+        CoulombState {
+            accumulated_slip: saturate(self.accumulated_slip + slip),
+            slip_rate: if rate_dtime > 0.0 {
+                saturate(rate_slip / rate_dtime)
+            } else {
+                0.0
+            },
+            status: if slip > 0.0 {
+                FrictionStatus::Slip
+            } else {
+                FrictionStatus::Stick
+            },
+        }
+    }
+
     /// Writes the state into the first [`Self::NSTATV`] entries of `statev` (nothing else).
     #[inline(always)]
     pub fn write_statev(&self, statev: &mut [f64]) {
@@ -482,23 +507,8 @@ impl Coulomb {
                 slip_rate: 0.0,
                 status: FrictionStatus::ExactStick,
             },
-            // `slip` is the return map's Δγ_eq^sl (= |Δγ^sl|). Both state entries saturate at
-            // f64::MAX rather than overflow: a finite slip over a subnormal DTIME, or a sum
-            // near f64::MAX, would otherwise store ∞ in STATEV, which the next increment
-            // refuses as corrupted.
-            Contact::Motion(_) => CoulombState {
-                accumulated_slip: saturate(state.accumulated_slip + slip),
-                slip_rate: if inc.dtime > 0.0 {
-                    saturate(slip / inc.dtime)
-                } else {
-                    0.0
-                },
-                status: if slip > 0.0 {
-                    FrictionStatus::Slip
-                } else {
-                    FrictionStatus::Stick
-                },
-            },
+            // `slip` is the return map's Δγ_eq^sl (= |Δγ^sl|).
+            Contact::Motion(_) => state.after_motion(slip, slip, inc.dtime),
         };
         Some(Update {
             contact,

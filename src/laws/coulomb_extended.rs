@@ -660,22 +660,9 @@ impl ExtendedCoulomb {
             out.sfd += dot(&viscous, &inc.dgam);
         }
         check_outputs(&out, &ddtdtheta)?;
-        let slip = norm(&out.dslip);
-        let coulomb = CoulombState {
-            // Both saturate at f64::MAX (docs/props.md), as the plain law's do: a finite slip over
-            // a subnormal DTIME would otherwise store ∞ (fuzz, fric target).
-            accumulated_slip: (state.coulomb.accumulated_slip + slip).min(f64::MAX),
-            slip_rate: if rate_dt > 0.0 {
-                (slip_eq / rate_dt).min(f64::MAX)
-            } else {
-                0.0
-            },
-            status: if slip > 0.0 {
-                FrictionStatus::Slip
-            } else {
-                FrictionStatus::Stick
-            },
-        };
+        // |Δγ^sl| of the actual (unscaled) slip for the path, the scaled Δγ̄_eq^sl for the rate;
+        // both saturate at f64::MAX (docs/props.md), as the plain law's do.
+        let coulomb = state.coulomb.after_motion(norm(&out.dslip), slip_eq, rate_dt);
         Ok(ExtendedUpdate {
             contact: Contact::Motion(out),
             ddtdtheta,

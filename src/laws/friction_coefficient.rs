@@ -271,20 +271,8 @@ impl CoefficientLaw {
     #[inline(always)]
     #[must_use]
     pub(crate) fn rate_free(&self, pressure: f64, temperature: f64) -> [f64; 3] {
-        // π(p) = 1/(1 + p/p_ref), π' = −(1/p_ref) π².
-        let (pi, dpi) = if self.pressure_ref.is_finite() {
-            let pi = 1.0 / (1.0 + pressure / self.pressure_ref);
-            (pi, -pi * pi / self.pressure_ref)
-        } else {
-            (1.0, 0.0)
-        };
-        // Θ(θ̄) = exp(−b_θ (θ̄ − θ_ref)), Θ' = −b_θ Θ.
-        let (theta, dtheta) = if self.temperature_slope != 0.0 {
-            let t = (-self.temperature_slope * (temperature - self.temperature_ref)).exp();
-            (t, -self.temperature_slope * t)
-        } else {
-            (1.0, 0.0)
-        };
+        let (pi, dpi) = self.pressure_factor(pressure);
+        let (theta, dtheta) = self.temperature_factor(temperature);
         // As `factor` with φ = 1: 1·π·Θ = π·Θ, 1·π'·Θ = π'·Θ, 1·π·Θ' = π·Θ' (exact products).
         [pi * theta, dpi * theta, pi * dtheta]
     }
@@ -330,6 +318,28 @@ impl CoefficientLaw {
         }
     }
 
+    /// π(p) = 1/(1 + p/p_ref) and π' = −(1/p_ref)·π²; (1, 0) without a reference pressure.
+    #[inline(always)]
+    fn pressure_factor(&self, pressure: f64) -> (f64, f64) {
+        if self.pressure_ref.is_finite() {
+            let pi = 1.0 / (1.0 + pressure / self.pressure_ref);
+            (pi, -pi * pi / self.pressure_ref)
+        } else {
+            (1.0, 0.0)
+        }
+    }
+
+    /// Θ(θ̄) = exp(−b_θ·(θ̄ − θ_ref)) and Θ' = −b_θ·Θ; (1, 0) without a temperature slope.
+    #[inline(always)]
+    fn temperature_factor(&self, temperature: f64) -> (f64, f64) {
+        if self.temperature_slope != 0.0 {
+            let t = (-self.temperature_slope * (temperature - self.temperature_ref)).exp();
+            (t, -self.temperature_slope * t)
+        } else {
+            (1.0, 0.0)
+        }
+    }
+
     /// (φ, φ', φ''), (π, π'), (Θ, Θ') of the closed-form laws (not the table).
     #[inline(always)]
     fn closed_form_parts(&self, rate: f64, pressure: f64, temperature: f64) -> FactorParts {
@@ -352,20 +362,8 @@ impl CoefficientLaw {
                 )
             }
         };
-        // π(p) = 1/(1 + p/p_ref), π' = −(1/p_ref) π².
-        let (pi, dpi) = if self.pressure_ref.is_finite() {
-            let pi = 1.0 / (1.0 + pressure / self.pressure_ref);
-            (pi, -pi * pi / self.pressure_ref)
-        } else {
-            (1.0, 0.0)
-        };
-        // Θ(θ̄) = exp(−b_θ (θ̄ − θ_ref)), Θ' = −b_θ Θ.
-        let (theta, dtheta) = if self.temperature_slope != 0.0 {
-            let t = (-self.temperature_slope * (temperature - self.temperature_ref)).exp();
-            (t, -self.temperature_slope * t)
-        } else {
-            (1.0, 0.0)
-        };
+        let (pi, dpi) = self.pressure_factor(pressure);
+        let (theta, dtheta) = self.temperature_factor(temperature);
         (phi, (pi, dpi), (theta, dtheta))
     }
 }

@@ -27,25 +27,30 @@ pub enum RootFailure {
 /// Solves f(x) = 0 for x in [a, b], starting from `x0` (clipped into the bracket). `f` returns
 /// (f(x), f'(x)). Stops when the step is below `x_tol` or f(x) = 0 exactly.
 pub fn bracketed_newton(
-    mut f: impl FnMut(f64) -> (f64, f64),
+    f: impl FnMut(f64) -> (f64, f64),
     a: f64,
     b: f64,
     x0: f64,
     x_tol: f64,
     max_iterations: u32,
 ) -> Result<Root, RootFailure> {
-    let mut g = |x: f64| {
-        let (v, d) = f(x);
-        (v, d, 0.0)
-    };
-    bracketed_newton_impl(&mut g, a, b, None, x0, x_tol, 0.0, max_iterations)
+    bracketed_newton_impl(
+        &mut without_curvature(f),
+        a,
+        b,
+        None,
+        x0,
+        x_tol,
+        0.0,
+        max_iterations,
+    )
 }
 
 /// As [`bracketed_newton`] for a bracket whose signs the caller knows, f(`low`) ≤ 0 ≤
 /// f(`high`) (the two end evaluations are skipped), also stopping once |f(x)| ≤ `f_tol` (the
 /// round-off level of the residual, below which Newton steps are noise).
 pub fn newton_on_known_bracket(
-    mut f: impl FnMut(f64) -> (f64, f64),
+    f: impl FnMut(f64) -> (f64, f64),
     low: f64,
     high: f64,
     x0: f64,
@@ -53,20 +58,26 @@ pub fn newton_on_known_bracket(
     f_tol: f64,
     max_iterations: u32,
 ) -> Result<Root, RootFailure> {
-    let mut g = |x: f64| {
-        let (v, d) = f(x);
-        (v, d, 0.0)
-    };
-    bracketed_newton_impl(
-        &mut g,
+    halley_on_known_bracket(
+        without_curvature(f),
         low,
         high,
-        Some(()),
         x0,
         x_tol,
         f_tol,
         max_iterations,
     )
+}
+
+/// Newton's method as Halley's with f'' = 0: the step 2ff'/(2f'² − f·0) is f/f'.
+#[inline(always)]
+fn without_curvature(
+    mut f: impl FnMut(f64) -> (f64, f64),
+) -> impl FnMut(f64) -> (f64, f64, f64) {
+    move |x| {
+        let (v, d) = f(x);
+        (v, d, 0.0)
+    }
 }
 
 /// As [`newton_on_known_bracket`] with Halley's step δ = 2ff'/(2f'² − ff'') (cubic convergence)

@@ -274,27 +274,13 @@ impl ExtendedCoulomb {
         if probe != 0.0 {
             check_outputs(&traction, &ddtdtheta)?;
         }
-        // The return map's Δγ_eq^sl (0 in stick), not |DSLIP| again: the same value without a
-        // second square root (as the plain law's state).
-        let slip = slip_eq;
         Ok(ExtendedUpdate {
             contact: Contact::Motion(traction),
             ddtdtheta,
             state: ExtendedState {
-                coulomb: CoulombState {
-                    // Saturating at f64::MAX, as in `update`.
-                    accumulated_slip: (state.coulomb.accumulated_slip + slip).min(f64::MAX),
-                    slip_rate: if rate_dt > 0.0 {
-                        (slip_eq / rate_dt).min(f64::MAX)
-                    } else {
-                        0.0
-                    },
-                    status: if slip > 0.0 {
-                        FrictionStatus::Slip
-                    } else {
-                        FrictionStatus::Stick
-                    },
-                },
+                // The return map's Δγ_eq^sl (0 in stick) for the path too, not |DSLIP| again:
+                // the same value without a second square root (as the plain law's state).
+                coulomb: state.coulomb.after_motion(slip_eq, slip_eq, rate_dt),
                 viscous: [0.0; N],
             },
             outcome: Outcome::CONVERGED,
