@@ -482,7 +482,8 @@ impl Adhesive {
         let denom = length_half + slip_eq;
         let share = length_half / denom;
         let transition = mu_d + (mu_s - mu_d) * share;
-        let tau_eq = self.pressure_strength(transition, slip_eq, p_plus, dtime) + self.shear_adhesion;
+        let tau_eq =
+            self.pressure_strength(transition, slip_eq, p_plus, dtime) + self.shear_adhesion;
         // ∂g/∂Δs = ((μ_d − μ_s)·V/(V + Δs)² + K)·p⁺ and ∂g/∂p.
         let g_s = ((mu_d - mu_s) * (share / denom) + k_per_length) * p_plus;
         let g_p = if p < 0.0 {
@@ -551,9 +552,9 @@ impl Adhesive {
         } else {
             mu_s
         };
-        let tau_eq =
-            (self.pressure_strength(transition, slip_eq, p_plus, dtime) + self.shear_adhesion)
-                .min(trial);
+        let tau_eq = (self.pressure_strength(transition, slip_eq, p_plus, dtime)
+            + self.shear_adhesion)
+            .min(trial);
         let (g_s, g_p) = if denom > 0.0 {
             (
                 ((mu_d - mu_s) * length_half / (denom * denom) + k_per_length) * p_plus,

@@ -36,7 +36,7 @@ use super::friction_coefficient::{
 };
 use super::parameter_range::positive;
 use super::scalar_root::{RootFailure, bracketed_newton, halley_on_known_bracket};
-use super::small_vec::{all_finite, dot, norm, scale, unit};
+use super::small_vec::{all_finite, diagonal, dot, norm, scale, unit};
 use crate::{LawError, Outcome};
 
 mod damping;
@@ -662,7 +662,9 @@ impl ExtendedCoulomb {
         check_outputs(&out, &ddtdtheta)?;
         // |Δγ^sl| of the actual (unscaled) slip for the path, the scaled Δγ̄_eq^sl for the rate;
         // both saturate at f64::MAX (docs/props.md), as the plain law's do.
-        let coulomb = state.coulomb.after_motion(norm(&out.dslip), slip_eq, rate_dt);
+        let coulomb = state
+            .coulomb
+            .after_motion(norm(&out.dslip), slip_eq, rate_dt);
         Ok(ExtendedUpdate {
             contact: Contact::Motion(out),
             ddtdtheta,
@@ -806,49 +808,25 @@ impl ExtendedCoulomb {
         };
         if sticks || stiffness <= 0.0 {
             if stiffness <= 0.0 && g > gamma_crit {
-                // No friction (p ≤ 0): zero stress, all motion beyond γ_crit is slip.
-                let n = unit(&predictor, g);
-                let slip_eq = g - gamma_crit;
-                return Ok(ScaledTraction {
-                    traction: Traction {
-                        tau: [0.0; N],
-                        ddtddg: [[0.0; N]; N],
-                        ddtddp: scale(&n, k.d_pressure),
-                        dslip: scale(&n, slip_eq),
-                        sed: 0.0,
-                        sfd: 0.0,
-                    },
-                    ddtdtheta: [0.0; N],
-                    slip_eq,
-                    iterations: 0,
-                });
+                return Ok(frictionless_slip(&predictor, g, gamma_crit, k.d_pressure));
             }
-            // Stick (Eq. 5.2.3-1): τ̄ = k̄_s γ̄^pr.
-            let mut ddtdtheta = scale(&predictor, stiffness_theta);
-            for i in 0..N {
-                ddtdtheta[i] += stiffness * d_elastic_dtheta[i];
-            }
-            return Ok(ScaledTraction {
-                traction: Traction {
-                    tau: on_strength(&predictor, following && g > gamma_crit, stiffness, k.value),
-                    ddtddg: diag(stiffness),
-                    ddtddp: scale(&predictor, stiffness_p),
-                    dslip: [0.0; N],
-                    sed: if following && start_rate > 0.0 {
-                        rest_energy(
-                            stiffness * g,
-                            self.critical(mbar, 0.0, p, theta).value,
-                            gamma_crit,
-                        )
-                    } else {
-                        0.5 * stiffness * g * g
-                    },
-                    sfd: 0.0,
-                },
-                ddtdtheta,
-                slip_eq: 0.0,
-                iterations: 0,
-            });
+            let sed = if following && start_rate > 0.0 {
+                rest_energy(
+                    stiffness * g,
+                    self.critical(mbar, 0.0, p, theta).value,
+                    gamma_crit,
+                )
+            } else {
+                0.5 * stiffness * g * g
+            };
+            return Ok(stick_answer(
+                &predictor,
+                &d_elastic_dtheta,
+                following && g > gamma_crit,
+                k.value,
+                [stiffness, stiffness_p, stiffness_theta],
+                sed,
+            ));
         }
 
         // Slip: k̄_s (γ̄_eq^pr − s) = τ̄_crit(s/Δt, p, θ̄).
@@ -967,15 +945,14 @@ impl ExtendedCoulomb {
         // Eq. 5.2.3-3 in this formulation: (δ − nn) τ̄_crit/γ̄_eq^pr + nn (∂τ̄_crit/∂s) ∂s/∂G.
         let ddtddg = rate_slip_tangent(&n, transverse, t_s, ds_dg);
         let dtau_dp = t_s * ds_dp + crit.d_pressure;
-        // θ̄: through the start elastic slip v = ∂γ̄^pr/∂θ̄ and through τ̄_crit(·, θ̄).
-        let v = d_elastic_dtheta;
-        let nv = dot(&n, &v);
-        let dt_dtheta = t_s * (ds_dg * nv + ds_dtheta) + crit.d_temperature;
-        let mut ddtdtheta = [0.0; N];
-        for i in 0..N {
-            let proj_v = if N == 1 { 0.0 } else { v[i] - n[i] * nv };
-            ddtdtheta[i] = transverse * proj_v + n[i] * dt_dtheta;
-        }
+        let ddtdtheta = slip_temperature_tangent(
+            &n,
+            &d_elastic_dtheta,
+            transverse,
+            t_s,
+            (ds_dg, ds_dtheta),
+            crit.d_temperature,
+        );
         Ok(ScaledTraction {
             traction: slip_traction(
                 &n, t, ddtddg, dtau_dp, slip_eq, following, gamma_crit, stiffness,
@@ -1092,6 +1069,85 @@ pub(super) fn slip_traction<const N: usize>(
         },
         sfd: t * slip_eq,
     }
+}
+
+/// No friction (τ̄_crit = 0: p ≤ 0) and |γ̄^pr| > γ_crit: zero stress, all motion beyond γ_crit
+/// is slip along γ̄^pr; ∂τ̄/∂p = n·∂τ̄_crit/∂p (`dcrit_dp`, the right derivative at p = 0).
+#[inline(always)]
+fn frictionless_slip<const N: usize>(
+    predictor: &[f64; N],
+    g: f64,
+    gamma_crit: f64,
+    dcrit_dp: f64,
+) -> ScaledTraction<N> {
+    let n = unit(predictor, g);
+    let slip_eq = g - gamma_crit;
+    ScaledTraction {
+        traction: Traction {
+            tau: [0.0; N],
+            ddtddg: [[0.0; N]; N],
+            ddtddp: scale(&n, dcrit_dp),
+            dslip: scale(&n, slip_eq),
+            sed: 0.0,
+            sfd: 0.0,
+        },
+        ddtdtheta: [0.0; N],
+        slip_eq,
+        iterations: 0,
+    }
+}
+
+/// Elastic stick (Eq. 5.2.3-1) in scaled variables: τ̄ = k̄_s·γ̄^pr ([`on_strength`] with
+/// `beyond`), ∂τ̄/∂Δγ̄ = k̄_s·δ, ∂τ̄/∂p = γ̄^pr·∂k̄_s/∂p and ∂τ̄/∂θ̄ = γ̄^pr·∂k̄_s/∂θ̄ + k̄_s·∂γ̄^el/∂θ̄
+/// (`d_elastic_dtheta`), from `k_s` = (k̄_s, ∂k̄_s/∂p, ∂k̄_s/∂θ̄); `sed` as the caller reads it.
+#[inline(always)]
+fn stick_answer<const N: usize>(
+    predictor: &[f64; N],
+    d_elastic_dtheta: &[f64; N],
+    beyond: bool,
+    strength: f64,
+    [stiffness, stiffness_p, stiffness_theta]: [f64; 3],
+    sed: f64,
+) -> ScaledTraction<N> {
+    let mut ddtdtheta = scale(predictor, stiffness_theta);
+    for i in 0..N {
+        ddtdtheta[i] += stiffness * d_elastic_dtheta[i];
+    }
+    ScaledTraction {
+        traction: Traction {
+            tau: on_strength(predictor, beyond, stiffness, strength),
+            ddtddg: diagonal(stiffness),
+            ddtddp: scale(predictor, stiffness_p),
+            dslip: [0.0; N],
+            sed,
+            sfd: 0.0,
+        },
+        ddtdtheta,
+        slip_eq: 0.0,
+        iterations: 0,
+    }
+}
+
+/// ∂τ̄/∂θ̄ of the slip answer τ̄ = t·n: through the start elastic slip v = ∂γ̄^pr/∂θ̄, which turns
+/// n (the transverse part (t/γ̄_eq^pr)·(v − n(n·v)), 0 in 2-D), and through t = τ̄_crit(s, θ̄)
+/// along n: dt/dθ̄ = (∂τ̄_crit/∂s)·(∂s/∂G·n·v + ∂s/∂θ̄) + ∂τ̄_crit/∂θ̄.
+#[inline(always)]
+fn slip_temperature_tangent<const N: usize>(
+    n: &[f64; N],
+    v: &[f64; N],
+    transverse: f64,
+    t_s: f64,
+    (ds_dg, ds_dtheta): (f64, f64),
+    dcrit_dtheta: f64,
+) -> [f64; N] {
+    let nv = dot(n, v);
+    let dt_dtheta = t_s * (ds_dg * nv + ds_dtheta) + dcrit_dtheta;
+    let mut ddtdtheta = [0.0; N];
+    for i in 0..N {
+        let proj_v = if N == 1 { 0.0 } else { v[i] - n[i] * nv };
+        ddtdtheta[i] = transverse * proj_v + n[i] * dt_dtheta;
+    }
+    ddtdtheta
 }
 
 /// The stick stress k̄_s·γ̄^pr; with `beyond` (rate-following, |γ̄^pr| within the rounding
@@ -1223,14 +1279,6 @@ fn check_outputs<const N: usize>(t: &Traction<N>, ddtdtheta: &[f64; N]) -> Resul
             "the stress update overflowed (inputs too large for f64)".into(),
         ))
     }
-}
-
-fn diag<const N: usize>(s: f64) -> [[f64; N]; N] {
-    let mut m = [[0.0; N]; N];
-    for (i, row) in m.iter_mut().enumerate() {
-        row[i] = s;
-    }
-    m
 }
 
 fn multiply<const N: usize>(v: &[f64; N], a: &[f64; N]) -> [f64; N] {

@@ -71,9 +71,7 @@ pub fn newton_on_known_bracket(
 
 /// Newton's method as Halley's with f'' = 0: the step 2ff'/(2f'² − f·0) is f/f'.
 #[inline(always)]
-fn without_curvature(
-    mut f: impl FnMut(f64) -> (f64, f64),
-) -> impl FnMut(f64) -> (f64, f64, f64) {
+fn without_curvature(mut f: impl FnMut(f64) -> (f64, f64)) -> impl FnMut(f64) -> (f64, f64, f64) {
     move |x| {
         let (v, d) = f(x);
         (v, d, 0.0)

@@ -135,7 +135,7 @@ impl ExtendedCoulomb {
             return Ok(ScaledTraction {
                 traction: Traction {
                     tau: scale(&predictor, viscosity),
-                    ddtddg: diag(viscosity / dt),
+                    ddtddg: diagonal(viscosity / dt),
                     ddtddp: scale(&predictor, k.d_pressure / rate_crit),
                     dslip: [0.0; N],
                     sed: 0.0,
