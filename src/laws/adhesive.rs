@@ -30,7 +30,8 @@
 //! returns that law so the entry points run the Coulomb code itself (same results, same cost).
 
 use super::coulomb::{
-    Coulomb, CoulombState, CriticalSlip, FrictionStatus, Increment, Traction, Update,
+    Coulomb, CoulombState, CriticalSlip, FrictionStatus, Increment, StickMode, Traction, Update,
+    name_bad_input,
 };
 use super::friction_coefficient::{RateFormulation, STICK_TEST_ROUNDING};
 use super::parameter_range::nonnegative;
@@ -154,13 +155,7 @@ impl Adhesive {
         tolerance: f64,
     ) -> Self {
         Adhesive {
-            base: Coulomb::from_validated(
-                mu_d,
-                0.0,
-                gamma_crit,
-                tolerance,
-                super::coulomb::StickMode::Elastic,
-            ),
+            base: Coulomb::from_validated(mu_d, 0.0, gamma_crit, tolerance, StickMode::Elastic),
             mu_static: mu_s,
             shear_adhesion: sa,
             normal_adhesion: na,
@@ -494,20 +489,17 @@ impl Adhesive {
         let n = unit(predictor, predictor_eq);
         let transverse = tau_eq / predictor_eq;
         let ddtddg = radial_transverse(&n, g_s, transverse);
-        Slide {
-            traction: Traction {
-                tau: scale(&n, tau_eq),
-                ddtddg,
-                ddtddp: scale(&n, g_p),
-                dslip: scale(&n, slip_eq),
-                // ½|τ|·γ_crit: the elastic slip is γ_crit.
-                sed: 0.5 * tau_eq * gamma_crit,
-                sfd: tau_eq * slip_eq,
-            },
-            branch: SlideBranch::Slip,
-            slip_rate: end_slip_rate(slip_eq, dtime),
-            stick_stiffness: tau_eq / gamma_crit,
-        }
+        // ½|τ|·γ_crit: the elastic slip is γ_crit.
+        let sed = 0.5 * tau_eq * gamma_crit;
+        sliding(
+            &n,
+            tau_eq,
+            ddtddg,
+            g_p,
+            slip_eq,
+            dtime,
+            (sed, tau_eq / gamma_crit),
+        )
     }
 
     #[inline]
@@ -579,19 +571,8 @@ impl Adhesive {
         let n = unit(predictor, predictor_eq);
         // d(τ n)/dγ^pr = τ'(n⊗n) + (τ/|γ^pr|)(I − n⊗n).
         let ddtddg = radial_transverse(&n, dtau_dgamma_eq, tau_eq / predictor_eq);
-        Slide {
-            traction: Traction {
-                tau: scale(&n, tau_eq),
-                ddtddg,
-                ddtddp: scale(&n, dtau_dp),
-                dslip: scale(&n, slip_eq),
-                sed: 0.5 * tau_eq * tau_eq / k_s,
-                sfd: tau_eq * slip_eq,
-            },
-            branch: SlideBranch::Slip,
-            slip_rate: end_slip_rate(slip_eq, dtime),
-            stick_stiffness: k_s,
-        }
+        let sed = 0.5 * tau_eq * tau_eq / k_s;
+        sliding(&n, tau_eq, ddtddg, dtau_dp, slip_eq, dtime, (sed, k_s))
     }
 
     /// The rate terms in slip-increment form (Δv = Δs/Δt, backward Euler): V = v_½·Δt (a
@@ -680,7 +661,8 @@ impl Adhesive {
             probe += inc.tau[i] * 0.0 + inc.dgam[i] * 0.0;
         }
         if probe != 0.0 {
-            return Err(name_bad_input(inc));
+            // Elastic stick reads no TAULM: the Coulomb law's naming, in the same order.
+            return Err(name_bad_input(*inc, StickMode::Elastic));
         }
         // Read only after a slip (the rate-following memory); then it must be a rate (≥ 0;
         // finite: the state reader refuses NaN and ∞).
@@ -720,6 +702,34 @@ impl Adhesive {
     }
 }
 
+/// The sliding answer of either return map (seed 004's S_slide, Eq. 5.2.3-2): τ = |τ|·n with
+/// the tangents `ddtddg` and ∂τ/∂p = n·`dtau_dp`, the slip Δs·n, `SFD` = |τ|·Δs, the slip rate
+/// Δs/Δt, and the formulation's `SED` and stick stiffness.
+#[inline(always)]
+fn sliding<const N: usize>(
+    n: &[f64; N],
+    tau_eq: f64,
+    ddtddg: [[f64; N]; N],
+    dtau_dp: f64,
+    slip_eq: f64,
+    dtime: f64,
+    (sed, stick_stiffness): (f64, f64),
+) -> Slide<N> {
+    Slide {
+        traction: Traction {
+            tau: scale(n, tau_eq),
+            ddtddg,
+            ddtddp: scale(n, dtau_dp),
+            dslip: scale(n, slip_eq),
+            sed,
+            sfd: tau_eq * slip_eq,
+        },
+        branch: SlideBranch::Slip,
+        slip_rate: end_slip_rate(slip_eq, dtime),
+        stick_stiffness,
+    }
+}
+
 /// The end-of-increment slip rate Δs/Δt of a sliding increment (0 when Δt ≤ 0); saturates at
 /// f64::MAX (a slip over a subnormal Δt), as in the Coulomb law.
 #[inline(always)]
@@ -729,23 +739,6 @@ fn end_slip_rate(slip_eq: f64, dtime: f64) -> f64 {
     } else {
         0.0
     }
-}
-
-#[cold]
-#[inline(never)]
-fn name_bad_input<const N: usize>(inc: &Increment<N>) -> LawError {
-    let what = if !inc.pressure.is_finite() {
-        "PRESS"
-    } else if !inc.dpressure.is_finite() {
-        "DPRESS"
-    } else if !all_finite(&inc.dgam) {
-        "DGAM"
-    } else if !all_finite(&inc.tau) {
-        "TAU"
-    } else {
-        "DTIME"
-    };
-    LawError::Input(format!("{what} is NaN or infinite"))
 }
 
 /// Every stress, tangent and energy is finite (the inputs were; an overflow is refused).

@@ -869,7 +869,7 @@ fn input_probe<const N: usize>(inc: &Increment<N>, stick: StickMode) -> f64 {
 #[cold]
 #[inline(never)]
 #[allow(clippy::needless_pass_by_value)]
-fn name_bad_input<const N: usize>(inc: Increment<N>, stick: StickMode) -> LawError {
+pub(super) fn name_bad_input<const N: usize>(inc: Increment<N>, stick: StickMode) -> LawError {
     let what = if !inc.pressure.is_finite() {
         "PRESS"
     } else if !inc.dpressure.is_finite() {

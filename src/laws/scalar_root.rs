@@ -34,16 +34,9 @@ pub fn bracketed_newton(
     x_tol: f64,
     max_iterations: u32,
 ) -> Result<Root, RootFailure> {
-    bracketed_newton_impl(
-        &mut without_curvature(f),
-        a,
-        b,
-        None,
-        x0,
-        x_tol,
-        0.0,
-        max_iterations,
-    )
+    let mut f = without_curvature(f);
+    let (low, high) = orient(&mut f, a, b)?;
+    halley_on_known_bracket(f, low, high, x0, x_tol, 0.0, max_iterations)
 }
 
 /// As [`bracketed_newton`] for a bracket whose signs the caller knows, f(`low`) ≤ 0 ≤
@@ -85,54 +78,26 @@ fn without_curvature(mut f: impl FnMut(f64) -> (f64, f64)) -> impl FnMut(f64) ->
 #[inline(always)]
 pub fn halley_on_known_bracket(
     mut f: impl FnMut(f64) -> (f64, f64, f64),
-    low: f64,
-    high: f64,
+    mut low: f64,
+    mut high: f64,
     x0: f64,
     x_tol: f64,
     f_tol: f64,
     max_iterations: u32,
 ) -> Result<Root, RootFailure> {
-    bracketed_newton_impl(
-        &mut f,
-        low,
-        high,
-        Some(()),
-        x0,
-        x_tol,
-        f_tol,
-        max_iterations,
-    )
-}
-
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-fn bracketed_newton_impl(
-    f: &mut impl FnMut(f64) -> (f64, f64, f64),
-    a: f64,
-    b: f64,
-    oriented: Option<()>,
-    x0: f64,
-    x_tol: f64,
-    f_tol: f64,
-    max_iterations: u32,
-) -> Result<Root, RootFailure> {
-    let (mut low, mut high) = match oriented {
-        Some(()) => (a, b),
-        None => orient(f, a, b)?,
-    };
     if low == high {
         return Ok(Root {
             x: low,
             iterations: 0,
         });
     }
-    let (lo, hi) = (a.min(b), a.max(b));
+    let (lo, hi) = (low.min(high), low.max(high));
     let mut x = if x0.is_finite() {
         x0.clamp(lo, hi)
     } else {
-        0.5 * (a + b)
+        0.5 * (low + high)
     };
-    let mut step_before = (b - a).abs();
+    let mut step_before = (high - low).abs();
     let mut step = step_before;
     let (mut fx, mut dfx, mut ddfx) = f(x);
     for iteration in 1..=max_iterations {
