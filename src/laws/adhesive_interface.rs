@@ -234,16 +234,17 @@ impl AdhesiveInterface {
                 gamma_crit,
             )?;
             let slip = norm(&s.traction.dslip);
-            let (dsfd_dgam, dsfd_dp) = dissipation_derivatives(
-                &s.traction,
-                match self.law.rate_formulation() {
-                    RateFormulation::RateFollowingStiffness => None,
-                    RateFormulation::RateFreeStiffness => Some((s.stick_stiffness, {
-                        let (_, dtau_s_dp) = self.law.static_strength(p);
-                        dtau_s_dp / gamma_crit
-                    })),
-                },
-            );
+            // One call per formulation, so that each inlines with its `rate_free` known.
+            let (dsfd_dgam, dsfd_dp) = match self.law.rate_formulation() {
+                RateFormulation::RateFollowingStiffness => {
+                    dissipation_derivatives(&s.traction, None)
+                }
+                RateFormulation::RateFreeStiffness => {
+                    let (_, dtau_s_dp) = self.law.static_strength(p);
+                    let dk_s_dp = dtau_s_dp / gamma_crit;
+                    dissipation_derivatives(&s.traction, Some((s.stick_stiffness, dk_s_dp)))
+                }
+            };
             InterfaceResponse {
                 dsfd_dgam,
                 dsfd_dh: dsfd_dp * k_n,
@@ -413,6 +414,7 @@ fn released_energy(
 /// formulation (`rate_free = None`) Δs = |γ^pr| − γ_crit, so dΔs = n·dγ and ∂Δs/∂p = 0; in the
 /// earlier one (`rate_free = Some((k_s, ∂k_s/∂p))`) Δs = |γ^pr| − |τ|/k_s, so
 /// dΔs = n·dγ − d|τ|/k_s + |τ| dk_s/k_s².
+#[inline(always)]
 fn dissipation_derivatives<const N: usize>(
     t: &Traction<N>,
     rate_free: Option<(f64, f64)>,
