@@ -195,6 +195,18 @@ struct Critical {
     d_temperature: f64,
 }
 
+impl Critical {
+    /// τ_crit on the shear limit (τ_crit = min(μ̄·p, τ_max), seed 000 §5.2.3): τ_max, which
+    /// depends on neither the rate, the pressure nor the temperature.
+    #[inline(always)]
+    fn at_shear_limit(tau_max: f64) -> Self {
+        Critical {
+            value: tau_max,
+            ..Critical::default()
+        }
+    }
+}
+
 /// The elastic slip at the start of the increment, γ̄^el = τ̄/k̄_s(p₀) = τ̄·γ_crit/τ̄_crit(p₀), and
 /// (with `with_theta`) its θ̄-derivative −γ̄^el·(∂τ̄_crit/∂θ̄)/τ̄_crit(p₀); zero when τ̄_crit(p₀) = 0.
 /// The derivative is formed without τ̄_crit², which underflows for τ̄_crit below 1.5·10⁻¹⁵⁴ (it
@@ -225,7 +237,8 @@ fn elastic_start<const N: usize>(
     }
 }
 
-/// The isotropic problem in scaled variables, as seen by one increment.
+/// The isotropic problem in scaled variables, as seen by one increment: what every stick mode
+/// reads besides the host's increment.
 struct Scaled<const N: usize> {
     /// Friction stress at the start (scaled).
     tau: [f64; N],
@@ -233,6 +246,14 @@ struct Scaled<const N: usize> {
     dgam: [f64; N],
     /// Lagrange stress (scaled).
     taulm: [f64; N],
+    /// μ̄, the coefficient of the scaled (isotropic) problem.
+    mbar: f64,
+    /// θ̄, the temperature μ reads.
+    theta: f64,
+    /// The time increment of rates: Δt statically, β·Δt/γ with HHT.
+    rate_dt: f64,
+    /// γ̇₀ = `STATEV(2)`, the slip rate of the previous increment.
+    start_rate: f64,
 }
 
 /// The scaled answer before unscaling.
@@ -465,10 +486,7 @@ impl ExtendedCoulomb {
         let mu = value;
         let tau_max = self.base.shear_limit().unwrap_or(f64::INFINITY);
         if mu * p >= tau_max {
-            Critical {
-                value: tau_max,
-                ..Critical::default()
-            }
+            Critical::at_shear_limit(tau_max)
         } else {
             Critical {
                 value: mu * p,
@@ -574,35 +592,35 @@ impl ExtendedCoulomb {
         let (a, mbar) = self.scaling::<N>();
         // Isotropic friction skips the scaling (a = 1).
         let anisotropic = a.iter().any(|x| *x != 1.0);
-        let scaled = if anisotropic {
-            Scaled {
-                tau: divide(&tau_friction, &a),
-                dgam: multiply(&inc.dgam, &a),
-                taulm: divide(&inc.taulm, &a),
-            }
+        let (tau, dgam, taulm) = if anisotropic {
+            (
+                divide(&tau_friction, &a),
+                multiply(&inc.dgam, &a),
+                divide(&inc.taulm, &a),
+            )
         } else {
-            Scaled {
-                tau: tau_friction,
-                dgam: inc.dgam,
-                taulm: inc.taulm,
-            }
+            (tau_friction, inc.dgam, inc.taulm)
         };
-        let start_rate = state.coulomb.slip_rate;
+        let scaled = Scaled {
+            tau,
+            dgam,
+            taulm,
+            mbar,
+            theta,
+            rate_dt,
+            start_rate: state.coulomb.slip_rate,
+        };
 
         let answer = match stick {
-            _ if self.transport.is_some() => Some(
-                self.viscous_stick(inc, &scaled, mbar, theta, rate_dt, start_rate, conditions)?,
-            ),
+            _ if self.transport.is_some() => Some(self.viscous_stick(inc, &scaled, conditions)?),
             StickMode::Rough => None,
             StickMode::Elastic => {
                 let gamma_crit = self.base.critical_slip_for(inc.characteristic_length)?;
-                Some(
-                    self.elastic_stick(inc, &scaled, mbar, theta, rate_dt, start_rate, gamma_crit)?,
-                )
+                Some(self.elastic_stick(inc, &scaled, gamma_crit)?)
             }
             StickMode::Exact => {
                 let gamma_crit = self.base.critical_slip_for(inc.characteristic_length)?;
-                self.exact_stick(inc, &scaled, mbar, theta, rate_dt, start_rate, gamma_crit)
+                self.exact_stick(inc, &scaled, gamma_crit)
             }
         };
 
@@ -759,17 +777,19 @@ impl ExtendedCoulomb {
     }
 
     /// Elastic stick with the rate-dependent return map, in scaled variables.
-    #[allow(clippy::too_many_arguments)]
     fn elastic_stick<const N: usize>(
         &self,
         inc: &Increment<N>,
         s: &Scaled<N>,
-        mbar: f64,
-        theta: f64,
-        rate_dt: f64,
-        start_rate: f64,
         gamma_crit: f64,
     ) -> Result<ScaledTraction<N>, LawError> {
+        let &Scaled {
+            mbar,
+            theta,
+            rate_dt,
+            start_rate,
+            ..
+        } = s;
         let p = inc.pressure;
         let p0 = inc.pressure - inc.dpressure;
         let frozen = self.frozen && self.coefficient.is_rate_dependent();
@@ -964,17 +984,19 @@ impl ExtendedCoulomb {
     }
 
     /// Exact stick (LM = 1) with rate-dependent slip, Eq. 5.2.3-7 to 5.2.3-9, scaled.
-    #[allow(clippy::too_many_arguments)]
     fn exact_stick<const N: usize>(
         &self,
         inc: &Increment<N>,
         s: &Scaled<N>,
-        mbar: f64,
-        theta: f64,
-        rate_dt: f64,
-        start_rate: f64,
         gamma_crit: f64,
     ) -> Option<ScaledTraction<N>> {
+        let &Scaled {
+            mbar,
+            theta,
+            rate_dt,
+            start_rate,
+            ..
+        } = s;
         let p = inc.pressure;
         let frozen = self.frozen && self.coefficient.is_rate_dependent();
         let stick_crit = self.critical(mbar, if frozen { start_rate } else { 0.0 }, p, theta);

@@ -297,10 +297,7 @@ impl ExtendedCoulomb {
             let on_cap = g - tau_max * compliance;
             let s_star = -((tau_max / a - r) / (1.0 - r)).ln() / (d * per_dt);
             if on_cap <= s_star {
-                let cap = Critical {
-                    value: tau_max,
-                    ..Critical::default()
-                };
+                let cap = Critical::at_shear_limit(tau_max);
                 return Ok((on_cap.max(0.0), cap, 0));
             }
             floor = s_star;
@@ -348,10 +345,7 @@ fn held_rate_critical(pressure: f64, f: [f64; 3], scaled_mu: f64, tau_max: f64) 
     }
     let mu = scaled_mu * f[0];
     if mu * pressure >= tau_max {
-        Critical {
-            value: tau_max,
-            ..Critical::default()
-        }
+        Critical::at_shear_limit(tau_max)
     } else {
         Critical {
             value: mu * pressure,
@@ -388,10 +382,7 @@ fn frozen_critical(
     let m = mbar * decay_phi(r, d, start_rate).0;
     let mu = m * f[0];
     if mu * p >= tau_max {
-        Critical {
-            value: tau_max,
-            ..Critical::default()
-        }
+        Critical::at_shear_limit(tau_max)
     } else {
         Critical {
             value: mu * p,
@@ -415,10 +406,7 @@ fn critical_from_phi(
 ) -> Critical {
     let a = mbar * pt * p;
     if a * phi >= tau_max {
-        Critical {
-            value: tau_max,
-            ..Critical::default()
-        }
+        Critical::at_shear_limit(tau_max)
     } else {
         let mp = mbar * p;
         Critical {

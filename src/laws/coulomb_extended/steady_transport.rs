@@ -95,17 +95,19 @@ impl ExtendedCoulomb {
     /// |γ̇^pr| ≤ γ̇_crit (κ_s = τ̄_crit(0)/γ̇_crit), else slip with |γ̇^v| = γ̇_crit, so the
     /// slip rate is |γ̇^pr| − γ̇_crit and τ̄ = τ̄_crit(|γ̇^pr| − γ̇_crit)·n. No memory: the stress
     /// of the start of the increment is not used.
-    #[allow(clippy::too_many_arguments)]
     pub(super) fn viscous_stick<const N: usize>(
         &self,
         inc: &Increment<N>,
         s: &Scaled<N>,
-        mbar: f64,
-        theta: f64,
-        dt: f64,
-        start_rate: f64,
         conditions: &Conditions,
     ) -> Result<ScaledTraction<N>, LawError> {
+        let &Scaled {
+            mbar,
+            theta,
+            rate_dt: dt,
+            start_rate,
+            ..
+        } = s;
         let Some(tr) = self.transport else {
             return Err(LawError::Numerical(
                 "steady transport not configured".into(),
