@@ -950,10 +950,7 @@ impl ExtendedCoulomb {
             // s = G − γ_crit.
             (1.0, 0.0, 0.0)
         } else {
-            let d = stiffness + t_s;
-            if d == 0.0 || !d.is_finite() {
-                return Err(rate_softening_cancels(t_s, stiffness));
-            }
+            let d = slip_stiffness(stiffness, t_s)?;
             // Implicit derivatives of s from k̄_s (G − s) = τ̄_crit(s/Δt, p, θ̄).
             (
                 stiffness / d,
@@ -1257,6 +1254,18 @@ impl<const N: usize> ExtendedUpdate<N> {
         }
         out
     }
+}
+
+/// k̄_s + ∂τ̄_crit/∂s, the slope of the slip equation k̄_s (G − s) = τ̄_crit(s/Δt, p, θ̄) in s (up
+/// to sign), which the implicit derivatives of s divide by; refused when a rate softening
+/// cancels the stick stiffness (0) or it overflowed.
+#[inline(always)]
+fn slip_stiffness(stiffness: f64, t_s: f64) -> Result<f64, LawError> {
+    let d = stiffness + t_s;
+    if d == 0.0 || !d.is_finite() {
+        return Err(rate_softening_cancels(t_s, stiffness));
+    }
+    Ok(d)
 }
 
 #[cold]

@@ -200,10 +200,7 @@ impl ExtendedCoulomb {
                 // s = G − γ_crit.
                 (1.0, 0.0, 0.0)
             } else {
-                let dd = stiffness + t_s;
-                if dd == 0.0 || !dd.is_finite() {
-                    return Err(rate_softening_cancels(t_s, stiffness));
-                }
+                let dd = slip_stiffness(stiffness, t_s)?;
                 // Implicit derivatives of s from k_s (G − s) = τ_crit(s/Δt, p, θ̄).
                 // One division for the three implicit derivatives.
                 let per_dd = 1.0 / dd;
