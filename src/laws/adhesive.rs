@@ -831,6 +831,33 @@ mod tests {
     }
 
     #[test]
+    fn rate_free_stick_is_the_static_stiffness() {
+        // μ_s = 0.5, S_a = 2, p = 10: τ_s = 7, k_s = 7/γ_crit = 7000; γ^pr = (3, 4)·1e-4,
+        // |γ^pr| = 5e-4 < γ_crit: τ = k_s γ^pr, ∂τ/∂p = γ^pr·μ_s/γ_crit, SED = ½k_s|γ^pr|².
+        let l = law(AdhesiveParameters {
+            coeff: 0.3,
+            coeff_static: 0.5,
+            sa: 2.0,
+            kmu: 0.05,
+            vhalf: 0.1,
+            ..AdhesiveParameters::default()
+        })
+        .with_rate_formulation(RateFormulation::RateFreeStiffness);
+        let s = l
+            .slide(&[0.0, 0.0], &[3e-4, 4e-4], 10.0, 10.0, 0.5, 1e-3)
+            .unwrap();
+        assert_eq!(s.branch, SlideBranch::Stick);
+        for (a, g) in [3e-4, 4e-4].into_iter().enumerate() {
+            assert!((s.traction.tau[a] - 7000.0 * g).abs() < 1e-12);
+            assert!((s.traction.ddtddp[a] - g * 0.5 / 1e-3).abs() < 1e-15);
+            assert!((s.traction.ddtddg[a][a] - 7000.0).abs() < 1e-9);
+        }
+        assert_eq!(s.traction.ddtddg[0][1], 0.0);
+        assert!((s.traction.sed - 0.5 * 7000.0 * 25e-8).abs() < 1e-15);
+        assert_eq!((s.traction.dslip, s.slip_rate), ([0.0; 2], 0.0));
+    }
+
+    #[test]
     fn onset_at_static_strength() {
         let l = law(AdhesiveParameters {
             coeff: 0.3,

@@ -190,6 +190,18 @@ mod tests {
     }
 
     #[test]
+    fn orients_a_decreasing_bracket_and_takes_a_root_at_an_end() {
+        // f(x) = 3 − x², decreasing on [0, 3]: f(0) > 0 > f(3); root √3, from either end.
+        for (a, b) in [(0.0, 3.0), (3.0, 0.0)] {
+            let r = bracketed_newton(|x| (3.0 - x * x, -2.0 * x), a, b, 2.5, 1e-15, 50).unwrap();
+            assert!((r.x - 3f64.sqrt()).abs() < 4e-16, "{r:?}");
+        }
+        // f(2) = 0 exactly at an end of the bracket: that end, without iterating.
+        let r = bracketed_newton(|x| (x - 2.0, 1.0), -1.0, 2.0, 0.0, 1e-15, 50).unwrap();
+        assert_eq!((r.x, r.iterations), (2.0, 0));
+    }
+
+    #[test]
     fn known_bracket_stops_at_the_residual_tolerance() {
         // f(x) = 1 − x: f(2) < 0 < f(0).
         let r =
