@@ -187,6 +187,17 @@ impl CoulombState {
         self.accumulated_slip * 0.0 + self.slip_rate * 0.0
     }
 
+    /// The state after an increment held by Lagrange multipliers (`LM = 1`): no slip, no rate.
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn held(&self) -> Self {
+        CoulombState {
+            accumulated_slip: self.accumulated_slip,
+            slip_rate: 0.0,
+            status: FrictionStatus::ExactStick,
+        }
+    }
+
     /// The state after an increment with relative motion (`LM = 0`): the path of inelastic slip
     /// grows by `slip` = |Δγ^sl|, the slip rate is `rate_slip`/`rate_dtime` (the return map's
     /// Δγ_eq^sl over the time increment of rates; 0 when that is ≤ 0), and the status is slip
@@ -504,11 +515,7 @@ impl Coulomb {
             return None;
         }
         let state = match &contact {
-            Contact::ExactStick => CoulombState {
-                accumulated_slip: state.accumulated_slip,
-                slip_rate: 0.0,
-                status: FrictionStatus::ExactStick,
-            },
+            Contact::ExactStick => state.held(),
             // `slip` is the return map's Δγ_eq^sl (= |Δγ^sl|).
             Contact::Motion(_) => state.after_motion(slip, slip, inc.dtime),
         };

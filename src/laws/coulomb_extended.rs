@@ -28,8 +28,8 @@
 #![allow(clippy::needless_range_loop)] // index loops mirror the i, j of the seed's equations
 
 use super::coulomb::{
-    Contact, Coulomb, CoulombState, EXACT_STICK_TANGENT_FLOOR, EntryFlag, FrictionStatus,
-    Increment, StickMode, Traction,
+    Contact, Coulomb, CoulombState, EXACT_STICK_TANGENT_FLOOR, EntryFlag, Increment, StickMode,
+    Traction,
 };
 use super::friction_coefficient::{
     CoefficientLaw, Factor, RateFormulation, RateLaw, STICK_TEST_ROUNDING, decay_phi,
@@ -629,11 +629,7 @@ impl ExtendedCoulomb {
                 contact: Contact::ExactStick,
                 ddtdtheta: [0.0; N],
                 state: ExtendedState {
-                    coulomb: CoulombState {
-                        accumulated_slip: state.coulomb.accumulated_slip,
-                        slip_rate: 0.0,
-                        status: FrictionStatus::ExactStick,
-                    },
+                    coulomb: state.coulomb.held(),
                     viscous: [0.0; N],
                 },
                 outcome: Outcome::CONVERGED,
