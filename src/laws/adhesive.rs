@@ -716,14 +716,7 @@ fn sliding<const N: usize>(
     (sed, stick_stiffness): (f64, f64),
 ) -> Slide<N> {
     Slide {
-        traction: Traction {
-            tau: scale(n, tau_eq),
-            ddtddg,
-            ddtddp: scale(n, dtau_dp),
-            dslip: scale(n, slip_eq),
-            sed,
-            sfd: tau_eq * slip_eq,
-        },
+        traction: Traction::sliding(n, tau_eq, ddtddg, dtau_dp, slip_eq, sed),
         branch: SlideBranch::Slip,
         slip_rate: end_slip_rate(slip_eq, dtime),
         stick_stiffness,
@@ -800,17 +793,20 @@ mod tests {
             .unwrap()
     }
 
+    /// μ_d = 0.3, μ_s = 0.5, S_a = 2, k_μ = 0.05, v_½ = 0.1 (no normal adhesion).
+    const RATE_DEPENDENT: AdhesiveParameters = AdhesiveParameters {
+        coeff: 0.3,
+        coeff_static: 0.5,
+        sa: 2.0,
+        na: 0.0,
+        kmu: 0.05,
+        vhalf: 0.1,
+    };
+
     #[test]
     fn steady_sliding_stress_is_the_seed_formula() {
         // Steady sliding at rate v: the elastic slip is constant, every Δγ is slip, τ = g(v).
-        let l = law(AdhesiveParameters {
-            coeff: 0.3,
-            coeff_static: 0.5,
-            sa: 2.0,
-            kmu: 0.05,
-            vhalf: 0.1,
-            ..AdhesiveParameters::default()
-        });
+        let l = law(RATE_DEPENDENT);
         let (p, dt, v) = (100.0, 0.5, 0.4);
         let g = ((0.5 * 0.1 + 0.3 * v) / (0.1 + v) + 0.05 * v) * p + 2.0;
         // After a slip at v the elastic slip of τ̄ = g(v) is γ_crit: all of Δγ slides.
@@ -834,15 +830,7 @@ mod tests {
     fn rate_free_stick_is_the_static_stiffness() {
         // μ_s = 0.5, S_a = 2, p = 10: τ_s = 7, k_s = 7/γ_crit = 7000; γ^pr = (3, 4)·1e-4,
         // |γ^pr| = 5e-4 < γ_crit: τ = k_s γ^pr, ∂τ/∂p = γ^pr·μ_s/γ_crit, SED = ½k_s|γ^pr|².
-        let l = law(AdhesiveParameters {
-            coeff: 0.3,
-            coeff_static: 0.5,
-            sa: 2.0,
-            kmu: 0.05,
-            vhalf: 0.1,
-            ..AdhesiveParameters::default()
-        })
-        .with_rate_formulation(RateFormulation::RateFreeStiffness);
+        let l = law(RATE_DEPENDENT).with_rate_formulation(RateFormulation::RateFreeStiffness);
         let s = l
             .slide(&[0.0, 0.0], &[3e-4, 4e-4], 10.0, 10.0, 0.5, 1e-3)
             .unwrap();

@@ -253,6 +253,31 @@ pub struct Traction<const N: usize> {
     pub sfd: f64,
 }
 
+impl<const N: usize> Traction<N> {
+    /// A sliding answer along the unit slip direction n (Eq. 5.2.3-2): τ = t·n with the
+    /// strength t, ∂τ/∂p = n·∂t/∂p, Δγ^sl = Δγ_eq^sl·n and `SFD` = t·Δγ_eq^sl (backward Euler);
+    /// the tangent ∂τ/∂Δγ and the elastic energy `SED` as the caller's formulation has them.
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn sliding(
+        n: &[f64; N],
+        t: f64,
+        ddtddg: [[f64; N]; N],
+        dt_dp: f64,
+        slip_eq: f64,
+        sed: f64,
+    ) -> Self {
+        Traction {
+            tau: scale(n, t),
+            ddtddg,
+            ddtddp: scale(n, dt_dp),
+            dslip: scale(n, slip_eq),
+            sed,
+            sfd: t * slip_eq,
+        }
+    }
+}
+
 /// The answer of the law for one increment.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Contact<const N: usize> {
@@ -826,21 +851,16 @@ impl<const N: usize> Trial<N> {
         };
         let slip_eq = predictor_eq - self.gamma_crit;
         let transverse = self.tau_crit / predictor_eq;
-        let t = Traction {
-            tau: scale(&n, self.tau_crit),
-            // Eq. 5.2.3-3: (δ_ij − n_i n_j) τ_crit/γ_eq^pr dγ_j + n_i ∂τ_crit/∂p dp; in 2-D
-            // exactly 0 (n² = 1).
-            ddtddg: if N == 1 {
-                [[0.0; N]; N]
-            } else {
-                transverse_projection(&n, transverse)
-            },
-            ddtddp: scale(&n, self.dtau_crit_dp),
-            dslip: scale(&n, slip_eq),
-            // |τ|²/(2k_s) with |τ| = τ_crit.
-            sed: 0.5 * self.tau_crit * self.gamma_crit,
-            sfd: self.tau_crit * slip_eq,
+        // Eq. 5.2.3-3: (δ_ij − n_i n_j) τ_crit/γ_eq^pr dγ_j + n_i ∂τ_crit/∂p dp; in 2-D exactly
+        // 0 (n² = 1).
+        let ddtddg = if N == 1 {
+            [[0.0; N]; N]
+        } else {
+            transverse_projection(&n, transverse)
         };
+        // SED = |τ|²/(2k_s) with |τ| = τ_crit.
+        let sed = 0.5 * self.tau_crit * self.gamma_crit;
+        let t = Traction::sliding(&n, self.tau_crit, ddtddg, self.dtau_crit_dp, slip_eq, sed);
         (t, slip_eq)
     }
 }

@@ -1072,18 +1072,12 @@ pub(super) fn slip_traction<const N: usize>(
     gamma_crit: f64,
     stiffness: f64,
 ) -> Traction<N> {
-    Traction {
-        tau: scale(n, t),
-        ddtddg,
-        ddtddp: scale(n, dtau_dp),
-        dslip: scale(n, slip_eq),
-        sed: if following {
-            0.5 * t * gamma_crit
-        } else {
-            0.5 * t * t / stiffness
-        },
-        sfd: t * slip_eq,
-    }
+    let sed = if following {
+        0.5 * t * gamma_crit
+    } else {
+        0.5 * t * t / stiffness
+    };
+    Traction::sliding(n, t, ddtddg, dtau_dp, slip_eq, sed)
 }
 
 /// No friction (τ̄_crit = 0: p ≤ 0) and |γ̄^pr| > γ_crit: zero stress, all motion beyond γ_crit

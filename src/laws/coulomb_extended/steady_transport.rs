@@ -165,14 +165,8 @@ impl ExtendedCoulomb {
         }
         let slip_eq = slip_rate * dt;
         Ok(ScaledTraction {
-            traction: Traction {
-                tau: scale(&n, t),
-                ddtddg,
-                ddtddp: scale(&n, crit.d_pressure),
-                dslip: scale(&n, slip_eq),
-                sed: 0.0,
-                sfd: t * slip_eq,
-            },
+            // No elastic slip in viscous stick: SED = 0.
+            traction: Traction::sliding(&n, t, ddtddg, crit.d_pressure, slip_eq, 0.0),
             ddtdtheta: scale(&n, crit.d_temperature),
             slip_eq,
             iterations: 0,
