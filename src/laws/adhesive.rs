@@ -491,15 +491,8 @@ impl Adhesive {
         let ddtddg = radial_transverse(&n, g_s, transverse);
         // ½|τ|·γ_crit: the elastic slip is γ_crit.
         let sed = 0.5 * tau_eq * gamma_crit;
-        sliding(
-            &n,
-            tau_eq,
-            ddtddg,
-            g_p,
-            slip_eq,
-            dtime,
-            (sed, tau_eq / gamma_crit),
-        )
+        let traction = Traction::sliding(&n, tau_eq, ddtddg, g_p, slip_eq, sed);
+        sliding(traction, slip_eq, dtime, tau_eq / gamma_crit)
     }
 
     #[inline]
@@ -572,7 +565,8 @@ impl Adhesive {
         // d(τ n)/dγ^pr = τ'(n⊗n) + (τ/|γ^pr|)(I − n⊗n).
         let ddtddg = radial_transverse(&n, dtau_dgamma_eq, tau_eq / predictor_eq);
         let sed = 0.5 * tau_eq * tau_eq / k_s;
-        sliding(&n, tau_eq, ddtddg, dtau_dp, slip_eq, dtime, (sed, k_s))
+        let traction = Traction::sliding(&n, tau_eq, ddtddg, dtau_dp, slip_eq, sed);
+        sliding(traction, slip_eq, dtime, k_s)
     }
 
     /// The rate terms in slip-increment form (Δv = Δs/Δt, backward Euler): V = v_½·Δt (a
@@ -702,21 +696,18 @@ impl Adhesive {
     }
 }
 
-/// The sliding answer of either return map (seed 004's S_slide, Eq. 5.2.3-2): τ = |τ|·n with
-/// the tangents `ddtddg` and ∂τ/∂p = n·`dtau_dp`, the slip Δs·n, `SFD` = |τ|·Δs, the slip rate
-/// Δs/Δt, and the formulation's `SED` and stick stiffness.
+/// The sliding answer of either return map (seed 004's S_slide): the traction along the slip
+/// ([`Traction::sliding`], Eq. 5.2.3-2), the slip rate Δs/Δt and the formulation's stick
+/// stiffness.
 #[inline(always)]
 fn sliding<const N: usize>(
-    n: &[f64; N],
-    tau_eq: f64,
-    ddtddg: [[f64; N]; N],
-    dtau_dp: f64,
+    traction: Traction<N>,
     slip_eq: f64,
     dtime: f64,
-    (sed, stick_stiffness): (f64, f64),
+    stick_stiffness: f64,
 ) -> Slide<N> {
     Slide {
-        traction: Traction::sliding(n, tau_eq, ddtddg, dtau_dp, slip_eq, sed),
+        traction,
         branch: SlideBranch::Slip,
         slip_rate: end_slip_rate(slip_eq, dtime),
         stick_stiffness,

@@ -966,10 +966,9 @@ impl ExtendedCoulomb {
             (ds_dg, ds_dtheta),
             crit.d_temperature,
         );
+        let sed = slip_energy(t, following, gamma_crit, stiffness);
         Ok(ScaledTraction {
-            traction: slip_traction(
-                &n, t, ddtddg, dtau_dp, slip_eq, following, gamma_crit, stiffness,
-            ),
+            traction: Traction::sliding(&n, t, ddtddg, dtau_dp, slip_eq, sed),
             ddtdtheta,
             slip_eq,
             iterations,
@@ -1057,27 +1056,15 @@ impl ExtendedCoulomb {
     }
 }
 
-/// The slip answer τ̄ = t·n (Eq. 5.2.3-2) with its tangents `ddtddg` and ∂t/∂p, the slip
-/// increment and the energies: `SED` = |τ̄|²/(2k̄_s), with k̄_s = t/γ_crit at the end when
-/// rate-following (the elastic slip stays γ_crit), the start stiffness otherwise.
+/// `SED` of the slip answer τ̄ = t·n (Eq. 5.2.3-2): |τ̄|²/(2k̄_s), with k̄_s = t/γ_crit at the end
+/// when rate-following (the elastic slip stays γ_crit), the start stiffness otherwise.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
-pub(super) fn slip_traction<const N: usize>(
-    n: &[f64; N],
-    t: f64,
-    ddtddg: [[f64; N]; N],
-    dtau_dp: f64,
-    slip_eq: f64,
-    following: bool,
-    gamma_crit: f64,
-    stiffness: f64,
-) -> Traction<N> {
-    let sed = if following {
+fn slip_energy(t: f64, following: bool, gamma_crit: f64, stiffness: f64) -> f64 {
+    if following {
         0.5 * t * gamma_crit
     } else {
         0.5 * t * t / stiffness
-    };
-    Traction::sliding(n, t, ddtddg, dtau_dp, slip_eq, sed)
+    }
 }
 
 /// No friction (τ̄_crit = 0: p ≤ 0) and |γ̄^pr| > γ_crit: zero stress, all motion beyond γ_crit

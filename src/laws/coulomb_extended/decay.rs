@@ -227,10 +227,9 @@ impl ExtendedCoulomb {
             } else {
                 [0.0; N]
             };
+            let sed = slip_energy(t, following, gamma_crit, stiffness);
             ScaledTraction {
-                traction: slip_traction(
-                    &n, t, ddtddg, dtau_dp, slip_eq, following, gamma_crit, stiffness,
-                ),
+                traction: Traction::sliding(&n, t, ddtddg, dtau_dp, slip_eq, sed),
                 ddtdtheta,
                 slip_eq,
                 iterations,
