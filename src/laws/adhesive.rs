@@ -30,9 +30,11 @@
 //! returns that law so the entry points run the Coulomb code itself (same results, same cost).
 
 use super::coulomb::{
-    Coulomb, CoulombState, CriticalSlip, FrictionStatus, Increment, Traction, Update,
+    Coulomb, CoulombState, CriticalSlip, FrictionStatus, Increment, StickMode, Traction, Update,
+    name_bad_input,
 };
 use super::friction_coefficient::{RateFormulation, STICK_TEST_ROUNDING};
+use super::parameter_range::nonnegative;
 use super::small_vec::{add, all_finite, diagonal, norm, radial_transverse, scale, unit};
 use crate::{LawError, Outcome};
 
@@ -105,20 +107,10 @@ pub struct Slide<const N: usize> {
     pub stick_stiffness: f64,
 }
 
-fn check(name: &str, v: f64) -> Result<f64, LawError> {
-    if v.is_finite() && v >= 0.0 {
-        Ok(v)
-    } else {
-        Err(LawError::Parameter(format!(
-            "{name} = {v} must be finite and ≥ 0"
-        )))
-    }
-}
-
 impl Adhesive {
     /// Validates the seed's parameters; γ_crit defaults to 0.005 × characteristic length.
     pub fn new(p: &AdhesiveParameters) -> Result<Self, LawError> {
-        let mu_d = check("coeff (dynamic friction coefficient μ_d)", p.coeff)?;
+        let mu_d = nonnegative("coeff (dynamic friction coefficient μ_d)", p.coeff)?;
         if p.coeff_static.is_nan() || p.coeff_static.is_infinite() {
             return Err(LawError::Parameter(format!(
                 "coeffStatic = {} must be finite (≤ 0 for none)",
@@ -140,10 +132,10 @@ impl Adhesive {
         Ok(Adhesive {
             base: Coulomb::new(mu_d)?,
             mu_static,
-            shear_adhesion: check("Sa (shear adhesive strength)", p.sa)?,
-            normal_adhesion: check("Na (normal adhesive strength)", p.na)?,
-            k_mu: check("kmu (friction slope against slip rate)", p.kmu)?,
-            v_half: check("vhalf (half-transition slip rate)", p.vhalf)?,
+            shear_adhesion: nonnegative("Sa (shear adhesive strength)", p.sa)?,
+            normal_adhesion: nonnegative("Na (normal adhesive strength)", p.na)?,
+            k_mu: nonnegative("kmu (friction slope against slip rate)", p.kmu)?,
+            v_half: nonnegative("vhalf (half-transition slip rate)", p.vhalf)?,
             formulation: RateFormulation::RateFollowingStiffness,
         })
     }
@@ -163,13 +155,7 @@ impl Adhesive {
         tolerance: f64,
     ) -> Self {
         Adhesive {
-            base: Coulomb::from_validated(
-                mu_d,
-                0.0,
-                gamma_crit,
-                tolerance,
-                super::coulomb::StickMode::Elastic,
-            ),
+            base: Coulomb::from_validated(mu_d, 0.0, gamma_crit, tolerance, StickMode::Elastic),
             mu_static: mu_s,
             shear_adhesion: sa,
             normal_adhesion: na,
@@ -484,30 +470,15 @@ impl Adhesive {
         let slip_eq = predictor_eq - gamma_crit;
         let p_plus = p.max(0.0);
         let (mu_s, mu_d) = (self.mu_static, self.base.mu());
-        // In slip-increment form: V = v_½Δt (a length), K = k_μ/Δt (per length). With Δt ≤ 0
-        // (allowed only when k_μ = v_½ = 0) the sliding strength is μ_d·p⁺ + S_a.
-        let (length_half, k_per_length) = if dtime > 0.0 {
-            (self.v_half * dtime, self.k_mu / dtime)
-        } else {
-            (0.0, 0.0)
-        };
+        // With Δt ≤ 0 (allowed only when k_μ = v_½ = 0) the sliding strength is μ_d·p⁺ + S_a.
+        let (length_half, k_per_length) = self.slip_increment_form(dtime);
         // Δs > 0, so V + Δs > 0: the transition μ_d + (μ_s − μ_d)·V/(V + Δs) (seed 004's
         // (μ_s v_½ + μ_d Δv)/(v_½ + Δv), in a form that cannot overflow).
         let denom = length_half + slip_eq;
         let share = length_half / denom;
         let transition = mu_d + (mu_s - mu_d) * share;
-        let pressure_part = if p_plus > 0.0 {
-            // k_μ·Δs·p⁺/Δt with the exponents kept apart (see `return_map`).
-            let rate_term = if dtime > 0.0 && self.k_mu > 0.0 {
-                product_ratio(self.k_mu, slip_eq, p_plus, dtime)
-            } else {
-                0.0
-            };
-            transition * p_plus + rate_term
-        } else {
-            0.0
-        };
-        let tau_eq = pressure_part + self.shear_adhesion;
+        let tau_eq =
+            self.pressure_strength(transition, slip_eq, p_plus, dtime) + self.shear_adhesion;
         // ∂g/∂Δs = ((μ_d − μ_s)·V/(V + Δs)² + K)·p⁺ and ∂g/∂p.
         let g_s = ((mu_d - mu_s) * (share / denom) + k_per_length) * p_plus;
         let g_p = if p < 0.0 {
@@ -518,24 +489,10 @@ impl Adhesive {
         let n = unit(predictor, predictor_eq);
         let transverse = tau_eq / predictor_eq;
         let ddtddg = radial_transverse(&n, g_s, transverse);
-        Slide {
-            traction: Traction {
-                tau: scale(&n, tau_eq),
-                ddtddg,
-                ddtddp: scale(&n, g_p),
-                dslip: scale(&n, slip_eq),
-                // ½|τ|·γ_crit: the elastic slip is γ_crit.
-                sed: 0.5 * tau_eq * gamma_crit,
-                sfd: tau_eq * slip_eq,
-            },
-            branch: SlideBranch::Slip,
-            slip_rate: if dtime > 0.0 {
-                (slip_eq / dtime).min(f64::MAX)
-            } else {
-                0.0
-            },
-            stick_stiffness: tau_eq / gamma_crit,
-        }
+        // ½|τ|·γ_crit: the elastic slip is γ_crit.
+        let sed = 0.5 * tau_eq * gamma_crit;
+        let traction = Traction::sliding(&n, tau_eq, ddtddg, g_p, slip_eq, sed);
+        sliding(traction, slip_eq, dtime, tau_eq / gamma_crit)
     }
 
     #[inline]
@@ -549,31 +506,14 @@ impl Adhesive {
         gamma_crit: f64,
     ) -> Slide<N> {
         let predictor_eq = norm(predictor);
-        let k_s = tau_s / gamma_crit;
         if predictor_eq <= gamma_crit {
-            // Stick (Eq. 5.2.3-1): τ = k_s γ^pr, ∂τ/∂p = γ^pr (∂τ_s/∂p)/γ_crit.
-            return Slide {
-                traction: Traction {
-                    tau: scale(predictor, k_s),
-                    ddtddg: diagonal(k_s),
-                    ddtddp: scale(predictor, dtau_s_dp / gamma_crit),
-                    dslip: [0.0; N],
-                    sed: 0.5 * k_s * predictor_eq * predictor_eq,
-                    sfd: 0.0,
-                },
-                branch: SlideBranch::Stick,
-                slip_rate: 0.0,
-                stick_stiffness: k_s,
-            };
+            // Stick (Eq. 5.2.3-1) with the static stiffness: τ_s here is the static strength.
+            return self.stick(predictor, predictor_eq, (tau_s, dtau_s_dp), p, gamma_crit);
         }
+        let k_s = tau_s / gamma_crit;
         let p_plus = p.max(0.0);
         let (mu_s, mu_d) = (self.mu_static, self.base.mu());
-        // In slip-increment form: V = v_½Δt (a length), K = k_μ/Δt (per length).
-        let (length_half, k_per_length) = if dtime > 0.0 {
-            (self.v_half * dtime, self.k_mu / dtime)
-        } else {
-            (0.0, 0.0)
-        };
+        let (length_half, k_per_length) = self.slip_increment_form(dtime);
         let trial = k_s * predictor_eq;
         let a = k_s + p_plus * k_per_length;
         let b = trial - self.shear_adhesion - mu_d * p_plus - a * length_half;
@@ -591,26 +531,15 @@ impl Adhesive {
         // terms) rather than as T − k_s·Δs, whose cancellation loses ~ε·T: with T/g = 10⁶ that
         // put τ 4·10⁻¹¹ above the strength (fuzz target `uinter`, docs/fuzzing.md).
         // The transition written as μ_d + (μ_s − μ_d)·V/(V + Δs), which cannot overflow (the
-        // seed's (μ_s V + μ_d Δs)/(V + Δs) does for Δs near f64::MAX); at p⁺ = 0 the
-        // pressure terms are 0 even when K·Δs is not finite.
+        // seed's (μ_s V + μ_d Δs)/(V + Δs) does for Δs near f64::MAX).
         let transition = if denom > 0.0 {
             mu_d + (mu_s - mu_d) * (length_half / denom)
         } else {
             mu_s
         };
-        let pressure_part = if p_plus > 0.0 {
-            // k_μ·Δs·p⁺/Δt with the exponents kept apart: every fixed order of the product
-            // under- or overflows in some range (fuzz target `fric`, docs/fuzzing.md).
-            let rate_term = if dtime > 0.0 && self.k_mu > 0.0 {
-                product_ratio(self.k_mu, slip_eq, p_plus, dtime)
-            } else {
-                0.0
-            };
-            transition * p_plus + rate_term
-        } else {
-            0.0
-        };
-        let tau_eq = (pressure_part + self.shear_adhesion).min(trial);
+        let tau_eq = (self.pressure_strength(transition, slip_eq, p_plus, dtime)
+            + self.shear_adhesion)
+            .min(trial);
         let (g_s, g_p) = if denom > 0.0 {
             (
                 ((mu_d - mu_s) * length_half / (denom * denom) + k_per_length) * p_plus,
@@ -635,23 +564,38 @@ impl Adhesive {
         let n = unit(predictor, predictor_eq);
         // d(τ n)/dγ^pr = τ'(n⊗n) + (τ/|γ^pr|)(I − n⊗n).
         let ddtddg = radial_transverse(&n, dtau_dgamma_eq, tau_eq / predictor_eq);
-        Slide {
-            traction: Traction {
-                tau: scale(&n, tau_eq),
-                ddtddg,
-                ddtddp: scale(&n, dtau_dp),
-                dslip: scale(&n, slip_eq),
-                sed: 0.5 * tau_eq * tau_eq / k_s,
-                sfd: tau_eq * slip_eq,
-            },
-            branch: SlideBranch::Slip,
-            // Saturates at f64::MAX (a slip over a subnormal Δt), as in the Coulomb law.
-            slip_rate: if dtime > 0.0 {
-                (slip_eq / dtime).min(f64::MAX)
+        let sed = 0.5 * tau_eq * tau_eq / k_s;
+        let traction = Traction::sliding(&n, tau_eq, ddtddg, dtau_dp, slip_eq, sed);
+        sliding(traction, slip_eq, dtime, k_s)
+    }
+
+    /// The rate terms in slip-increment form (Δv = Δs/Δt, backward Euler): V = v_½·Δt (a
+    /// length) and K = k_μ/Δt (per length); both 0 when Δt ≤ 0 (then k_μ = v_½ = 0).
+    #[inline(always)]
+    fn slip_increment_form(&self, dtime: f64) -> (f64, f64) {
+        if dtime > 0.0 {
+            (self.v_half * dtime, self.k_mu / dtime)
+        } else {
+            (0.0, 0.0)
+        }
+    }
+
+    /// The pressure part of the sliding strength (seed 004), (transition + k_μ·Δs/Δt)·p⁺, for
+    /// the transition coefficient at the slip increment Δs; 0 at p⁺ = 0 even when k_μ·Δs/Δt is
+    /// not finite. k_μ·Δs·p⁺/Δt is formed with the exponents kept apart ([`product_ratio`]):
+    /// every fixed order of the product under- or overflows in some range (fuzz target `fric`,
+    /// docs/fuzzing.md).
+    #[inline(always)]
+    fn pressure_strength(&self, transition: f64, slip_eq: f64, p_plus: f64, dtime: f64) -> f64 {
+        if p_plus > 0.0 {
+            let rate_term = if dtime > 0.0 && self.k_mu > 0.0 {
+                product_ratio(self.k_mu, slip_eq, p_plus, dtime)
             } else {
                 0.0
-            },
-            stick_stiffness: k_s,
+            };
+            transition * p_plus + rate_term
+        } else {
+            0.0
         }
     }
 
@@ -711,7 +655,8 @@ impl Adhesive {
             probe += inc.tau[i] * 0.0 + inc.dgam[i] * 0.0;
         }
         if probe != 0.0 {
-            return Err(name_bad_input(inc));
+            // Elastic stick reads no TAULM: the Coulomb law's naming, in the same order.
+            return Err(name_bad_input(*inc, StickMode::Elastic));
         }
         // Read only after a slip (the rate-following memory); then it must be a rate (≥ 0;
         // finite: the state reader refuses NaN and ∞).
@@ -751,21 +696,33 @@ impl Adhesive {
     }
 }
 
-#[cold]
-#[inline(never)]
-fn name_bad_input<const N: usize>(inc: &Increment<N>) -> LawError {
-    let what = if !inc.pressure.is_finite() {
-        "PRESS"
-    } else if !inc.dpressure.is_finite() {
-        "DPRESS"
-    } else if !all_finite(&inc.dgam) {
-        "DGAM"
-    } else if !all_finite(&inc.tau) {
-        "TAU"
+/// The sliding answer of either return map (seed 004's S_slide): the traction along the slip
+/// ([`Traction::sliding`], Eq. 5.2.3-2), the slip rate Δs/Δt and the formulation's stick
+/// stiffness.
+#[inline(always)]
+fn sliding<const N: usize>(
+    traction: Traction<N>,
+    slip_eq: f64,
+    dtime: f64,
+    stick_stiffness: f64,
+) -> Slide<N> {
+    Slide {
+        traction,
+        branch: SlideBranch::Slip,
+        slip_rate: end_slip_rate(slip_eq, dtime),
+        stick_stiffness,
+    }
+}
+
+/// The end-of-increment slip rate Δs/Δt of a sliding increment (0 when Δt ≤ 0); saturates at
+/// f64::MAX (a slip over a subnormal Δt), as in the Coulomb law.
+#[inline(always)]
+fn end_slip_rate(slip_eq: f64, dtime: f64) -> f64 {
+    if dtime > 0.0 {
+        (slip_eq / dtime).min(f64::MAX)
     } else {
-        "DTIME"
-    };
-    LawError::Input(format!("{what} is NaN or infinite"))
+        0.0
+    }
 }
 
 /// Every stress, tangent and energy is finite (the inputs were; an overflow is refused).
@@ -827,17 +784,20 @@ mod tests {
             .unwrap()
     }
 
+    /// μ_d = 0.3, μ_s = 0.5, S_a = 2, k_μ = 0.05, v_½ = 0.1 (no normal adhesion).
+    const RATE_DEPENDENT: AdhesiveParameters = AdhesiveParameters {
+        coeff: 0.3,
+        coeff_static: 0.5,
+        sa: 2.0,
+        na: 0.0,
+        kmu: 0.05,
+        vhalf: 0.1,
+    };
+
     #[test]
     fn steady_sliding_stress_is_the_seed_formula() {
         // Steady sliding at rate v: the elastic slip is constant, every Δγ is slip, τ = g(v).
-        let l = law(AdhesiveParameters {
-            coeff: 0.3,
-            coeff_static: 0.5,
-            sa: 2.0,
-            kmu: 0.05,
-            vhalf: 0.1,
-            ..AdhesiveParameters::default()
-        });
+        let l = law(RATE_DEPENDENT);
         let (p, dt, v) = (100.0, 0.5, 0.4);
         let g = ((0.5 * 0.1 + 0.3 * v) / (0.1 + v) + 0.05 * v) * p + 2.0;
         // After a slip at v the elastic slip of τ̄ = g(v) is γ_crit: all of Δγ slides.
@@ -855,6 +815,25 @@ mod tests {
             .unwrap();
         assert!((s.traction.tau[0] - g).abs() < 1e-12 * g, "{s:?} vs {g}");
         assert!((s.slip_rate - v).abs() < 1e-12);
+    }
+
+    #[test]
+    fn rate_free_stick_is_the_static_stiffness() {
+        // μ_s = 0.5, S_a = 2, p = 10: τ_s = 7, k_s = 7/γ_crit = 7000; γ^pr = (3, 4)·1e-4,
+        // |γ^pr| = 5e-4 < γ_crit: τ = k_s γ^pr, ∂τ/∂p = γ^pr·μ_s/γ_crit, SED = ½k_s|γ^pr|².
+        let l = law(RATE_DEPENDENT).with_rate_formulation(RateFormulation::RateFreeStiffness);
+        let s = l
+            .slide(&[0.0, 0.0], &[3e-4, 4e-4], 10.0, 10.0, 0.5, 1e-3)
+            .unwrap();
+        assert_eq!(s.branch, SlideBranch::Stick);
+        for (a, g) in [3e-4, 4e-4].into_iter().enumerate() {
+            assert!((s.traction.tau[a] - 7000.0 * g).abs() < 1e-12);
+            assert!((s.traction.ddtddp[a] - g * 0.5 / 1e-3).abs() < 1e-15);
+            assert!((s.traction.ddtddg[a][a] - 7000.0).abs() < 1e-9);
+        }
+        assert_eq!(s.traction.ddtddg[0][1], 0.0);
+        assert!((s.traction.sed - 0.5 * 7000.0 * 25e-8).abs() < 1e-15);
+        assert_eq!((s.traction.dslip, s.slip_rate), ([0.0; 2], 0.0));
     }
 
     #[test]

@@ -25,6 +25,7 @@ use super::adhesive::{Adhesive, SlideBranch};
 use super::coulomb::Traction;
 use super::friction_coefficient::RateFormulation;
 use super::interface_heat::MechanicalAnswer;
+use super::parameter_range::positive;
 use super::small_vec::{add, all_finite, norm, scale};
 use crate::LawError;
 
@@ -165,11 +166,7 @@ pub struct AdhesiveInterface {
 impl AdhesiveInterface {
     /// K_n must be finite and > 0.
     pub fn new(law: Adhesive, normal_stiffness: f64) -> Result<Self, LawError> {
-        if !(normal_stiffness > 0.0 && normal_stiffness.is_finite()) {
-            return Err(LawError::Parameter(format!(
-                "penalty normal stiffness K_n = {normal_stiffness} must be finite and > 0"
-            )));
-        }
+        positive("penalty normal stiffness K_n", normal_stiffness)?;
         Ok(AdhesiveInterface {
             law,
             normal_stiffness,
@@ -237,13 +234,15 @@ impl AdhesiveInterface {
                 gamma_crit,
             )?;
             let slip = norm(&s.traction.dslip);
+            // One call per formulation, so that each inlines with its `rate_free` known.
             let (dsfd_dgam, dsfd_dp) = match self.law.rate_formulation() {
-                RateFormulation::RateFollowingStiffness => following_dissipation(&s.traction),
+                RateFormulation::RateFollowingStiffness => {
+                    dissipation_derivatives(&s.traction, None)
+                }
                 RateFormulation::RateFreeStiffness => {
-                    dissipation_derivatives(&s.traction, s.stick_stiffness, {
-                        let (_, dtau_s_dp) = self.law.static_strength(p);
-                        dtau_s_dp / gamma_crit
-                    })
+                    let (_, dtau_s_dp) = self.law.static_strength(p);
+                    let dk_s_dp = dtau_s_dp / gamma_crit;
+                    dissipation_derivatives(&s.traction, Some((s.stick_stiffness, dk_s_dp)))
                 }
             };
             InterfaceResponse {
@@ -410,34 +409,18 @@ fn released_energy(
     (shear + normal).min(f64::MAX)
 }
 
-/// Derivatives of SFD = |τ|·Δs with respect to Δγ and p in the rate-following formulation:
-/// Δs = |γ^pr| − γ_crit, so dΔs = n·dγ and ∂Δs/∂p = 0; dSFD = Δs·d|τ| + |τ|·dΔs.
-fn following_dissipation<const N: usize>(t: &Traction<N>) -> ([f64; N], f64) {
-    let slip = norm(&t.dslip);
-    if slip == 0.0 {
-        return ([0.0; N], 0.0);
-    }
-    let n = scale(&t.dslip, 1.0 / slip);
-    let tau = norm(&t.tau);
-    let mut dsfd_dgam = [0.0; N];
-    for (b, d) in dsfd_dgam.iter_mut().enumerate() {
-        let dtau_b: f64 = (0..N).map(|a| n[a] * t.ddtddg[a][b]).sum();
-        *d = slip * dtau_b + tau * n[b];
-    }
-    let dtau_dp: f64 = (0..N).map(|a| n[a] * t.ddtddp[a]).sum();
-    (dsfd_dgam, slip * dtau_dp)
-}
-
 /// Derivatives of SFD = |τ|·Δs (sliding; 0 otherwise) with respect to Δγ and p, from the
-/// consistent tangents of the earlier (rate-free stiffness) formulation: Δs = |γ^pr| − |τ|/k_s, so
-/// dΔs = n·dγ − d|τ|/k_s + |τ| dk_s/k_s² with d|τ| = n·dτ.
+/// consistent tangents: dSFD = Δs·d|τ| + |τ|·dΔs with d|τ| = n·dτ. In the rate-following
+/// formulation (`rate_free = None`) Δs = |γ^pr| − γ_crit, so dΔs = n·dγ and ∂Δs/∂p = 0; in the
+/// earlier one (`rate_free = Some((k_s, ∂k_s/∂p))`) Δs = |γ^pr| − |τ|/k_s, so
+/// dΔs = n·dγ − d|τ|/k_s + |τ| dk_s/k_s².
+#[inline(always)]
 fn dissipation_derivatives<const N: usize>(
     t: &Traction<N>,
-    k_s: f64,
-    dk_s_dp: f64,
+    rate_free: Option<(f64, f64)>,
 ) -> ([f64; N], f64) {
     let slip = norm(&t.dslip);
-    if slip == 0.0 || k_s == 0.0 {
+    if slip == 0.0 || rate_free.is_some_and(|(k_s, _)| k_s == 0.0) {
         return ([0.0; N], 0.0);
     }
     let n = scale(&t.dslip, 1.0 / slip);
@@ -445,11 +428,20 @@ fn dissipation_derivatives<const N: usize>(
     let mut dsfd_dgam = [0.0; N];
     for (b, d) in dsfd_dgam.iter_mut().enumerate() {
         let dtau_b: f64 = (0..N).map(|a| n[a] * t.ddtddg[a][b]).sum();
-        *d = slip * dtau_b + tau * (n[b] - dtau_b / k_s);
+        let dslip_b = match rate_free {
+            None => n[b],
+            Some((k_s, _)) => n[b] - dtau_b / k_s,
+        };
+        *d = slip * dtau_b + tau * dslip_b;
     }
     let dtau_dp: f64 = (0..N).map(|a| n[a] * t.ddtddp[a]).sum();
-    let dslip_dp = -dtau_dp / k_s + tau * dk_s_dp / (k_s * k_s);
-    (dsfd_dgam, slip * dtau_dp + tau * dslip_dp)
+    match rate_free {
+        None => (dsfd_dgam, slip * dtau_dp),
+        Some((k_s, dk_s_dp)) => {
+            let dslip_dp = -dtau_dp / k_s + tau * dk_s_dp / (k_s * k_s);
+            (dsfd_dgam, slip * dtau_dp + tau * dslip_dp)
+        }
+    }
 }
 
 #[cold]

@@ -12,6 +12,7 @@
 //! increment. Tangents are derivatives of the end-of-increment stress with the start of the
 //! increment held fixed.
 
+use super::parameter_range::{nonnegative, positive};
 use super::small_vec::{
     add, all_finite, diagonal, divided, dot, is_positive_normal, length_beyond, norm, scale, sum,
     transverse_projection, unit, unit_unless_infinite,
@@ -186,6 +187,44 @@ impl CoulombState {
         self.accumulated_slip * 0.0 + self.slip_rate * 0.0
     }
 
+    /// The state after an increment held by Lagrange multipliers (`LM = 1`): no slip, no rate.
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn held(&self) -> Self {
+        CoulombState {
+            accumulated_slip: self.accumulated_slip,
+            slip_rate: 0.0,
+            status: FrictionStatus::ExactStick,
+        }
+    }
+
+    /// The state after an increment with relative motion (`LM = 0`): the path of inelastic slip
+    /// grows by `slip` = |Δγ^sl|, the slip rate is `rate_slip`/`rate_dtime` (the return map's
+    /// Δγ_eq^sl over the time increment of rates; 0 when that is ≤ 0), and the status is slip
+    /// when `slip` > 0, else stick. Both scalars saturate at f64::MAX rather than overflow: a
+    /// finite slip over a subnormal DTIME, or a sum near f64::MAX, would otherwise store ∞ in
+    /// STATEV, which the next increment refuses as corrupted (fuzz target `fric`). `slip` and
+    /// `rate_slip` are finite and ≥ 0 (the callers test their outputs first), so `f64::min`
+    /// with the constant f64::MAX is one `minsd`; it counted 5 instructions per `fric_` call
+    /// fewer than the compare-and-select used before (scripts/bench-fric-count.sh).
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn after_motion(&self, slip: f64, rate_slip: f64, rate_dtime: f64) -> Self {
+        CoulombState {
+            accumulated_slip: (self.accumulated_slip + slip).min(f64::MAX),
+            slip_rate: if rate_dtime > 0.0 {
+                (rate_slip / rate_dtime).min(f64::MAX)
+            } else {
+                0.0
+            },
+            status: if slip > 0.0 {
+                FrictionStatus::Slip
+            } else {
+                FrictionStatus::Stick
+            },
+        }
+    }
+
     /// Writes the state into the first [`Self::NSTATV`] entries of `statev` (nothing else).
     #[inline(always)]
     pub fn write_statev(&self, statev: &mut [f64]) {
@@ -214,6 +253,31 @@ pub struct Traction<const N: usize> {
     pub sfd: f64,
 }
 
+impl<const N: usize> Traction<N> {
+    /// A sliding answer along the unit slip direction n (Eq. 5.2.3-2): τ = t·n with the
+    /// strength t, ∂τ/∂p = n·∂t/∂p, Δγ^sl = Δγ_eq^sl·n and `SFD` = t·Δγ_eq^sl (backward Euler);
+    /// the tangent ∂τ/∂Δγ and the elastic energy `SED` as the caller's formulation has them.
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn sliding(
+        n: &[f64; N],
+        t: f64,
+        ddtddg: [[f64; N]; N],
+        dt_dp: f64,
+        slip_eq: f64,
+        sed: f64,
+    ) -> Self {
+        Traction {
+            tau: scale(n, t),
+            ddtddg,
+            ddtddp: scale(n, dt_dp),
+            dslip: scale(n, slip_eq),
+            sed,
+            sfd: t * slip_eq,
+        }
+    }
+}
+
 /// The answer of the law for one increment.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Contact<const N: usize> {
@@ -234,32 +298,12 @@ pub struct Update<const N: usize> {
     pub outcome: Outcome,
 }
 
-fn finite_nonnegative(name: &str, v: f64) -> Result<f64, LawError> {
-    if v.is_finite() && v >= 0.0 {
-        Ok(v)
-    } else {
-        Err(LawError::Parameter(format!(
-            "{name} = {v} must be finite and ≥ 0"
-        )))
-    }
-}
-
-fn finite_positive(name: &str, v: f64) -> Result<f64, LawError> {
-    if v.is_finite() && v > 0.0 {
-        Ok(v)
-    } else {
-        Err(LawError::Parameter(format!(
-            "{name} = {v} must be finite and > 0"
-        )))
-    }
-}
-
 impl Coulomb {
     /// Isotropic Coulomb friction with coefficient μ ≥ 0, no shear limit, elastic stick with
     /// γ_crit = 0.005 × characteristic length.
     pub fn new(mu: f64) -> Result<Self, LawError> {
         Ok(Coulomb {
-            mu: finite_nonnegative("friction coefficient μ", mu)?,
+            mu: nonnegative("friction coefficient μ", mu)?,
             tau_max: f64::INFINITY,
             critical_slip: CriticalSlip::Tolerance(DEFAULT_SLIP_TOLERANCE),
             stick: StickMode::Elastic,
@@ -296,22 +340,20 @@ impl Coulomb {
 
     /// Limits the critical stress: τ_crit = min(μp, τ_max), τ_max > 0.
     pub fn with_shear_limit(mut self, tau_max: f64) -> Result<Self, LawError> {
-        self.tau_max = finite_positive("shear limit τ_max", tau_max)?;
+        self.tau_max = positive("shear limit τ_max", tau_max)?;
         Ok(self)
     }
 
     /// Sets the allowable elastic slip γ_crit > 0 as an absolute length.
     pub fn with_critical_slip_absolute(mut self, gamma_crit: f64) -> Result<Self, LawError> {
-        self.critical_slip = CriticalSlip::Absolute(finite_positive(
-            "allowable elastic slip γ_crit",
-            gamma_crit,
-        )?);
+        self.critical_slip =
+            CriticalSlip::Absolute(positive("allowable elastic slip γ_crit", gamma_crit)?);
         Ok(self)
     }
 
     /// Sets γ_crit as `tolerance` × characteristic length, tolerance > 0.
     pub fn with_slip_tolerance(mut self, tolerance: f64) -> Result<Self, LawError> {
-        self.critical_slip = CriticalSlip::Tolerance(finite_positive("slip tolerance", tolerance)?);
+        self.critical_slip = CriticalSlip::Tolerance(positive("slip tolerance", tolerance)?);
         Ok(self)
     }
 
@@ -498,28 +540,9 @@ impl Coulomb {
             return None;
         }
         let state = match &contact {
-            Contact::ExactStick => CoulombState {
-                accumulated_slip: state.accumulated_slip,
-                slip_rate: 0.0,
-                status: FrictionStatus::ExactStick,
-            },
-            // `slip` is the return map's Δγ_eq^sl (= |Δγ^sl|). Both state entries saturate at
-            // f64::MAX rather than overflow: a finite slip over a subnormal DTIME, or a sum
-            // near f64::MAX, would otherwise store ∞ in STATEV, which the next increment
-            // refuses as corrupted.
-            Contact::Motion(_) => CoulombState {
-                accumulated_slip: saturate(state.accumulated_slip + slip),
-                slip_rate: if inc.dtime > 0.0 {
-                    saturate(slip / inc.dtime)
-                } else {
-                    0.0
-                },
-                status: if slip > 0.0 {
-                    FrictionStatus::Slip
-                } else {
-                    FrictionStatus::Stick
-                },
-            },
+            Contact::ExactStick => state.held(),
+            // `slip` is the return map's Δγ_eq^sl (= |Δγ^sl|).
+            Contact::Motion(_) => state.after_motion(slip, slip, inc.dtime),
         };
         Some(Update {
             contact,
@@ -828,21 +851,16 @@ impl<const N: usize> Trial<N> {
         };
         let slip_eq = predictor_eq - self.gamma_crit;
         let transverse = self.tau_crit / predictor_eq;
-        let t = Traction {
-            tau: scale(&n, self.tau_crit),
-            // Eq. 5.2.3-3: (δ_ij − n_i n_j) τ_crit/γ_eq^pr dγ_j + n_i ∂τ_crit/∂p dp; in 2-D
-            // exactly 0 (n² = 1).
-            ddtddg: if N == 1 {
-                [[0.0; N]; N]
-            } else {
-                transverse_projection(&n, transverse)
-            },
-            ddtddp: scale(&n, self.dtau_crit_dp),
-            dslip: scale(&n, slip_eq),
-            // |τ|²/(2k_s) with |τ| = τ_crit.
-            sed: 0.5 * self.tau_crit * self.gamma_crit,
-            sfd: self.tau_crit * slip_eq,
+        // Eq. 5.2.3-3: (δ_ij − n_i n_j) τ_crit/γ_eq^pr dγ_j + n_i ∂τ_crit/∂p dp; in 2-D exactly
+        // 0 (n² = 1).
+        let ddtddg = if N == 1 {
+            [[0.0; N]; N]
+        } else {
+            transverse_projection(&n, transverse)
         };
+        // SED = |τ|²/(2k_s) with |τ| = τ_crit.
+        let sed = 0.5 * self.tau_crit * self.gamma_crit;
+        let t = Traction::sliding(&n, self.tau_crit, ddtddg, self.dtau_crit_dp, slip_eq, sed);
         (t, slip_eq)
     }
 }
@@ -851,13 +869,6 @@ impl<const N: usize> Trial<N> {
 #[inline(always)]
 fn is_subnormal(x: f64) -> bool {
     x > 0.0 && x < f64::MIN_POSITIVE
-}
-
-/// `x` capped at f64::MAX (`x` is never NaN here: a sum or quotient of finite values ≥ 0 with
-/// a positive divisor). One compare-and-select, cheaper than `f64::min`'s NaN handling.
-#[inline(always)]
-fn saturate(x: f64) -> f64 {
-    if x > f64::MAX { f64::MAX } else { x }
 }
 
 /// ±0 when every input the stick mode reads is finite, NaN otherwise (x·0 is NaN exactly for
@@ -885,7 +896,7 @@ fn input_probe<const N: usize>(inc: &Increment<N>, stick: StickMode) -> f64 {
 #[cold]
 #[inline(never)]
 #[allow(clippy::needless_pass_by_value)]
-fn name_bad_input<const N: usize>(inc: Increment<N>, stick: StickMode) -> LawError {
+pub(super) fn name_bad_input<const N: usize>(inc: Increment<N>, stick: StickMode) -> LawError {
     let what = if !inc.pressure.is_finite() {
         "PRESS"
     } else if !inc.dpressure.is_finite() {
@@ -969,6 +980,11 @@ mod tests {
         }
     }
 
+    /// The traction of `l` for one increment from a point at rest (the default state).
+    fn from_rest<const N: usize>(l: &Coulomb, inc: &Increment<N>) -> Traction<N> {
+        motion(l.update(inc, &CoulombState::default()).unwrap().contact)
+    }
+
     #[test]
     fn first_contact_gives_stick_stiffness_times_slip() {
         // p = 10, μ = 0.5 → τ_crit = 5, k_s = 500; Δγ = 0.004 < γ_crit → τ = 2.
@@ -978,12 +994,7 @@ mod tests {
             dpressure: 10.0,
             ..Increment::default()
         };
-        let t = motion(
-            law()
-                .update(&inc, &CoulombState::default())
-                .unwrap()
-                .contact,
-        );
+        let t = from_rest(&law(), &inc);
         assert!((t.tau[0] - 2.0).abs() < 1e-14);
         assert!((t.ddtddg[0][0] - 500.0).abs() < 1e-11);
         // ∂τ/∂p = γ^pr μ/γ_crit = 0.004·0.5/0.01 = 0.2.
@@ -1000,12 +1011,7 @@ mod tests {
             dpressure: 10.0,
             ..Increment::default()
         };
-        let t = motion(
-            law()
-                .update(&inc, &CoulombState::default())
-                .unwrap()
-                .contact,
-        );
+        let t = from_rest(&law(), &inc);
         assert!((t.tau[0] - 4.0).abs() < 1e-13);
     }
 
@@ -1035,7 +1041,7 @@ mod tests {
             dpressure: 0.0,
             ..Increment::default()
         };
-        let t = motion(l.update(&inc, &CoulombState::default()).unwrap().contact);
+        let t = from_rest(&l, &inc);
         assert_eq!(t.tau[0], 3.0);
         assert_eq!(t.ddtddp[0], 0.0);
     }

@@ -28,14 +28,15 @@
 #![allow(clippy::needless_range_loop)] // index loops mirror the i, j of the seed's equations
 
 use super::coulomb::{
-    Contact, Coulomb, CoulombState, EXACT_STICK_TANGENT_FLOOR, EntryFlag, FrictionStatus,
-    Increment, StickMode, Traction,
+    Contact, Coulomb, CoulombState, EXACT_STICK_TANGENT_FLOOR, EntryFlag, Increment, StickMode,
+    Traction,
 };
 use super::friction_coefficient::{
     CoefficientLaw, Factor, RateFormulation, RateLaw, STICK_TEST_ROUNDING, decay_phi,
 };
+use super::parameter_range::positive;
 use super::scalar_root::{RootFailure, bracketed_newton, halley_on_known_bracket};
-use super::small_vec::{all_finite, dot, norm, scale, unit};
+use super::small_vec::{all_finite, diagonal, dot, norm, scale, unit};
 use crate::{LawError, Outcome};
 
 mod damping;
@@ -213,6 +214,18 @@ struct Critical {
     d_temperature: f64,
 }
 
+impl Critical {
+    /// τ_crit on the shear limit (τ_crit = min(μ̄·p, τ_max), seed 000 §5.2.3): τ_max, which
+    /// depends on neither the rate, the pressure nor the temperature.
+    #[inline(always)]
+    fn at_shear_limit(tau_max: f64) -> Self {
+        Critical {
+            value: tau_max,
+            ..Critical::default()
+        }
+    }
+}
+
 /// The elastic slip at the start of the increment, γ̄^el = τ̄/k̄_s(p₀) = τ̄·γ_crit/τ̄_crit(p₀), and
 /// (with `with_theta`) its θ̄-derivative −γ̄^el·(∂τ̄_crit/∂θ̄)/τ̄_crit(p₀); zero when τ̄_crit(p₀) = 0.
 /// The derivative is formed without τ̄_crit², which underflows for τ̄_crit below 1.5·10⁻¹⁵⁴ (it
@@ -243,7 +256,8 @@ fn elastic_start<const N: usize>(
     }
 }
 
-/// The isotropic problem in scaled variables, as seen by one increment.
+/// The isotropic problem in scaled variables, as seen by one increment: what every stick mode
+/// reads besides the host's increment.
 struct Scaled<const N: usize> {
     /// Friction stress at the start (scaled).
     tau: [f64; N],
@@ -251,6 +265,14 @@ struct Scaled<const N: usize> {
     dgam: [f64; N],
     /// Lagrange stress (scaled).
     taulm: [f64; N],
+    /// μ̄, the coefficient of the scaled (isotropic) problem.
+    mbar: f64,
+    /// θ̄, the temperature μ reads.
+    theta: f64,
+    /// The time increment of rates: Δt statically, β·Δt/γ with HHT.
+    rate_dt: f64,
+    /// γ̇₀ = `STATEV(2)`, the slip rate of the previous increment.
+    start_rate: f64,
 }
 
 /// The scaled answer before unscaling.
@@ -318,11 +340,7 @@ impl ExtendedCoulomb {
 
     /// Anisotropic friction: μ₂ > 0 in direction 2 (μ₁ = the base μ, which must be > 0).
     pub fn with_second_coefficient(mut self, mu2: f64) -> Result<Self, LawError> {
-        if !(mu2.is_finite() && mu2 > 0.0) {
-            return Err(LawError::Parameter(format!(
-                "μ₂ = {mu2} must be finite and > 0"
-            )));
-        }
+        positive("μ₂", mu2)?;
         if mu2 != self.base.mu() && self.base.mu() <= 0.0 {
             return Err(LawError::Parameter(format!(
                 "anisotropic friction needs μ₁ > 0 as well (μ₁ = {}, μ₂ = {mu2})",
@@ -487,10 +505,7 @@ impl ExtendedCoulomb {
         let mu = value;
         let tau_max = self.base.shear_limit().unwrap_or(f64::INFINITY);
         if mu * p >= tau_max {
-            Critical {
-                value: tau_max,
-                ..Critical::default()
-            }
+            Critical::at_shear_limit(tau_max)
         } else {
             Critical {
                 value: mu * p,
@@ -596,35 +611,35 @@ impl ExtendedCoulomb {
         let (a, mbar) = self.scaling::<N>();
         // Isotropic friction skips the scaling (a = 1).
         let anisotropic = a.iter().any(|x| *x != 1.0);
-        let scaled = if anisotropic {
-            Scaled {
-                tau: divide(&tau_friction, &a),
-                dgam: multiply(&inc.dgam, &a),
-                taulm: divide(&inc.taulm, &a),
-            }
+        let (tau, dgam, taulm) = if anisotropic {
+            (
+                divide(&tau_friction, &a),
+                multiply(&inc.dgam, &a),
+                divide(&inc.taulm, &a),
+            )
         } else {
-            Scaled {
-                tau: tau_friction,
-                dgam: inc.dgam,
-                taulm: inc.taulm,
-            }
+            (tau_friction, inc.dgam, inc.taulm)
         };
-        let start_rate = state.coulomb.slip_rate;
+        let scaled = Scaled {
+            tau,
+            dgam,
+            taulm,
+            mbar,
+            theta,
+            rate_dt,
+            start_rate: state.coulomb.slip_rate,
+        };
 
         let answer = match stick {
-            _ if self.transport.is_some() => Some(
-                self.viscous_stick(inc, &scaled, mbar, theta, rate_dt, start_rate, conditions)?,
-            ),
+            _ if self.transport.is_some() => Some(self.viscous_stick(inc, &scaled, conditions)?),
             StickMode::Rough => None,
             StickMode::Elastic => {
                 let gamma_crit = self.base.critical_slip_for(inc.characteristic_length)?;
-                Some(
-                    self.elastic_stick(inc, &scaled, mbar, theta, rate_dt, start_rate, gamma_crit)?,
-                )
+                Some(self.elastic_stick(inc, &scaled, gamma_crit)?)
             }
             StickMode::Exact => {
                 let gamma_crit = self.base.critical_slip_for(inc.characteristic_length)?;
-                self.exact_stick(inc, &scaled, mbar, theta, rate_dt, start_rate, gamma_crit)
+                self.exact_stick(inc, &scaled, gamma_crit)
             }
         };
 
@@ -633,11 +648,7 @@ impl ExtendedCoulomb {
                 contact: Contact::ExactStick,
                 ddtdtheta: [0.0; N],
                 state: ExtendedState {
-                    coulomb: CoulombState {
-                        accumulated_slip: state.coulomb.accumulated_slip,
-                        slip_rate: 0.0,
-                        status: FrictionStatus::ExactStick,
-                    },
+                    coulomb: state.coulomb.held(),
                     viscous: [0.0; N],
                 },
                 outcome: Outcome::CONVERGED,
@@ -682,22 +693,11 @@ impl ExtendedCoulomb {
             out.sfd += dot(&viscous, &inc.dgam);
         }
         check_outputs(&out, &ddtdtheta)?;
-        let slip = norm(&out.dslip);
-        let coulomb = CoulombState {
-            // Both saturate at f64::MAX (docs/props.md), as the plain law's do: a finite slip over
-            // a subnormal DTIME would otherwise store ∞ (fuzz, fric target).
-            accumulated_slip: (state.coulomb.accumulated_slip + slip).min(f64::MAX),
-            slip_rate: if rate_dt > 0.0 {
-                (slip_eq / rate_dt).min(f64::MAX)
-            } else {
-                0.0
-            },
-            status: if slip > 0.0 {
-                FrictionStatus::Slip
-            } else {
-                FrictionStatus::Stick
-            },
-        };
+        // |Δγ^sl| of the actual (unscaled) slip for the path, the scaled Δγ̄_eq^sl for the rate;
+        // both saturate at f64::MAX (docs/props.md), as the plain law's do.
+        let coulomb = state
+            .coulomb
+            .after_motion(norm(&out.dslip), slip_eq, rate_dt);
         Ok(ExtendedUpdate {
             contact: Contact::Motion(out),
             ddtdtheta,
@@ -792,17 +792,19 @@ impl ExtendedCoulomb {
     }
 
     /// Elastic stick with the rate-dependent return map, in scaled variables.
-    #[allow(clippy::too_many_arguments)]
     fn elastic_stick<const N: usize>(
         &self,
         inc: &Increment<N>,
         s: &Scaled<N>,
-        mbar: f64,
-        theta: f64,
-        rate_dt: f64,
-        start_rate: f64,
         gamma_crit: f64,
     ) -> Result<ScaledTraction<N>, LawError> {
+        let &Scaled {
+            mbar,
+            theta,
+            rate_dt,
+            start_rate,
+            ..
+        } = s;
         let p = inc.pressure;
         let p0 = inc.pressure - inc.dpressure;
         let frozen = self.frozen && self.coefficient.is_rate_dependent();
@@ -841,49 +843,25 @@ impl ExtendedCoulomb {
         };
         if sticks || stiffness <= 0.0 {
             if stiffness <= 0.0 && g > gamma_crit {
-                // No friction (p ≤ 0): zero stress, all motion beyond γ_crit is slip.
-                let n = unit(&predictor, g);
-                let slip_eq = g - gamma_crit;
-                return Ok(ScaledTraction {
-                    traction: Traction {
-                        tau: [0.0; N],
-                        ddtddg: [[0.0; N]; N],
-                        ddtddp: scale(&n, k.d_pressure),
-                        dslip: scale(&n, slip_eq),
-                        sed: 0.0,
-                        sfd: 0.0,
-                    },
-                    ddtdtheta: [0.0; N],
-                    slip_eq,
-                    iterations: 0,
-                });
+                return Ok(frictionless_slip(&predictor, g, gamma_crit, k.d_pressure));
             }
-            // Stick (Eq. 5.2.3-1): τ̄ = k̄_s γ̄^pr.
-            let mut ddtdtheta = scale(&predictor, stiffness_theta);
-            for i in 0..N {
-                ddtdtheta[i] += stiffness * d_elastic_dtheta[i];
-            }
-            return Ok(ScaledTraction {
-                traction: Traction {
-                    tau: on_strength(&predictor, following && g > gamma_crit, stiffness, k.value),
-                    ddtddg: diag(stiffness),
-                    ddtddp: scale(&predictor, stiffness_p),
-                    dslip: [0.0; N],
-                    sed: if following && start_rate > 0.0 {
-                        rest_energy(
-                            stiffness * g,
-                            self.critical(mbar, 0.0, p, theta).value,
-                            gamma_crit,
-                        )
-                    } else {
-                        0.5 * stiffness * g * g
-                    },
-                    sfd: 0.0,
-                },
-                ddtdtheta,
-                slip_eq: 0.0,
-                iterations: 0,
-            });
+            let sed = if following && start_rate > 0.0 {
+                rest_energy(
+                    stiffness * g,
+                    self.critical(mbar, 0.0, p, theta).value,
+                    gamma_crit,
+                )
+            } else {
+                0.5 * stiffness * g * g
+            };
+            return Ok(stick_answer(
+                &predictor,
+                &d_elastic_dtheta,
+                following && g > gamma_crit,
+                k.value,
+                [stiffness, stiffness_p, stiffness_theta],
+                sed,
+            ));
         }
 
         // Slip: k̄_s (γ̄_eq^pr − s) = τ̄_crit(s/Δt, p, θ̄).
@@ -987,10 +965,7 @@ impl ExtendedCoulomb {
             // s = G − γ_crit.
             (1.0, 0.0, 0.0)
         } else {
-            let d = stiffness + t_s;
-            if d == 0.0 || !d.is_finite() {
-                return Err(rate_softening_cancels(t_s, stiffness));
-            }
+            let d = slip_stiffness(stiffness, t_s)?;
             // Implicit derivatives of s from k̄_s (G − s) = τ̄_crit(s/Δt, p, θ̄).
             (
                 stiffness / d,
@@ -1002,19 +977,17 @@ impl ExtendedCoulomb {
         // Eq. 5.2.3-3 in this formulation: (δ − nn) τ̄_crit/γ̄_eq^pr + nn (∂τ̄_crit/∂s) ∂s/∂G.
         let ddtddg = rate_slip_tangent(&n, transverse, t_s, ds_dg);
         let dtau_dp = t_s * ds_dp + crit.d_pressure;
-        // θ̄: through the start elastic slip v = ∂γ̄^pr/∂θ̄ and through τ̄_crit(·, θ̄).
-        let v = d_elastic_dtheta;
-        let nv = dot(&n, &v);
-        let dt_dtheta = t_s * (ds_dg * nv + ds_dtheta) + crit.d_temperature;
-        let mut ddtdtheta = [0.0; N];
-        for i in 0..N {
-            let proj_v = if N == 1 { 0.0 } else { v[i] - n[i] * nv };
-            ddtdtheta[i] = transverse * proj_v + n[i] * dt_dtheta;
-        }
+        let ddtdtheta = slip_temperature_tangent(
+            &n,
+            &d_elastic_dtheta,
+            transverse,
+            t_s,
+            (ds_dg, ds_dtheta),
+            crit.d_temperature,
+        );
+        let sed = slip_energy(t, following, gamma_crit, stiffness);
         Ok(ScaledTraction {
-            traction: slip_traction(
-                &n, t, ddtddg, dtau_dp, slip_eq, following, gamma_crit, stiffness,
-            ),
+            traction: Traction::sliding(&n, t, ddtddg, dtau_dp, slip_eq, sed),
             ddtdtheta,
             slip_eq,
             iterations,
@@ -1022,17 +995,19 @@ impl ExtendedCoulomb {
     }
 
     /// Exact stick (LM = 1) with rate-dependent slip, Eq. 5.2.3-7 to 5.2.3-9, scaled.
-    #[allow(clippy::too_many_arguments)]
     fn exact_stick<const N: usize>(
         &self,
         inc: &Increment<N>,
         s: &Scaled<N>,
-        mbar: f64,
-        theta: f64,
-        rate_dt: f64,
-        start_rate: f64,
         gamma_crit: f64,
     ) -> Option<ScaledTraction<N>> {
+        let &Scaled {
+            mbar,
+            theta,
+            rate_dt,
+            start_rate,
+            ..
+        } = s;
         let p = inc.pressure;
         let frozen = self.frozen && self.coefficient.is_rate_dependent();
         let stick_crit = self.critical(mbar, if frozen { start_rate } else { 0.0 }, p, theta);
@@ -1100,33 +1075,94 @@ impl ExtendedCoulomb {
     }
 }
 
-/// The slip answer τ̄ = t·n (Eq. 5.2.3-2) with its tangents `ddtddg` and ∂t/∂p, the slip
-/// increment and the energies: `SED` = |τ̄|²/(2k̄_s), with k̄_s = t/γ_crit at the end when
-/// rate-following (the elastic slip stays γ_crit), the start stiffness otherwise.
+/// `SED` of the slip answer τ̄ = t·n (Eq. 5.2.3-2): |τ̄|²/(2k̄_s), with k̄_s = t/γ_crit at the end
+/// when rate-following (the elastic slip stays γ_crit), the start stiffness otherwise.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
-pub(super) fn slip_traction<const N: usize>(
-    n: &[f64; N],
-    t: f64,
-    ddtddg: [[f64; N]; N],
-    dtau_dp: f64,
-    slip_eq: f64,
-    following: bool,
-    gamma_crit: f64,
-    stiffness: f64,
-) -> Traction<N> {
-    Traction {
-        tau: scale(n, t),
-        ddtddg,
-        ddtddp: scale(n, dtau_dp),
-        dslip: scale(n, slip_eq),
-        sed: if following {
-            0.5 * t * gamma_crit
-        } else {
-            0.5 * t * t / stiffness
-        },
-        sfd: t * slip_eq,
+fn slip_energy(t: f64, following: bool, gamma_crit: f64, stiffness: f64) -> f64 {
+    if following {
+        0.5 * t * gamma_crit
+    } else {
+        0.5 * t * t / stiffness
     }
+}
+
+/// No friction (τ̄_crit = 0: p ≤ 0) and |γ̄^pr| > γ_crit: zero stress, all motion beyond γ_crit
+/// is slip along γ̄^pr; ∂τ̄/∂p = n·∂τ̄_crit/∂p (`dcrit_dp`, the right derivative at p = 0).
+#[inline(always)]
+fn frictionless_slip<const N: usize>(
+    predictor: &[f64; N],
+    g: f64,
+    gamma_crit: f64,
+    dcrit_dp: f64,
+) -> ScaledTraction<N> {
+    let n = unit(predictor, g);
+    let slip_eq = g - gamma_crit;
+    ScaledTraction {
+        traction: Traction {
+            tau: [0.0; N],
+            ddtddg: [[0.0; N]; N],
+            ddtddp: scale(&n, dcrit_dp),
+            dslip: scale(&n, slip_eq),
+            sed: 0.0,
+            sfd: 0.0,
+        },
+        ddtdtheta: [0.0; N],
+        slip_eq,
+        iterations: 0,
+    }
+}
+
+/// Elastic stick (Eq. 5.2.3-1) in scaled variables: τ̄ = k̄_s·γ̄^pr ([`on_strength`] with
+/// `beyond`), ∂τ̄/∂Δγ̄ = k̄_s·δ, ∂τ̄/∂p = γ̄^pr·∂k̄_s/∂p and ∂τ̄/∂θ̄ = γ̄^pr·∂k̄_s/∂θ̄ + k̄_s·∂γ̄^el/∂θ̄
+/// (`d_elastic_dtheta`), from `k_s` = (k̄_s, ∂k̄_s/∂p, ∂k̄_s/∂θ̄); `sed` as the caller reads it.
+#[inline(always)]
+fn stick_answer<const N: usize>(
+    predictor: &[f64; N],
+    d_elastic_dtheta: &[f64; N],
+    beyond: bool,
+    strength: f64,
+    [stiffness, stiffness_p, stiffness_theta]: [f64; 3],
+    sed: f64,
+) -> ScaledTraction<N> {
+    let mut ddtdtheta = scale(predictor, stiffness_theta);
+    for i in 0..N {
+        ddtdtheta[i] += stiffness * d_elastic_dtheta[i];
+    }
+    ScaledTraction {
+        traction: Traction {
+            tau: on_strength(predictor, beyond, stiffness, strength),
+            ddtddg: diagonal(stiffness),
+            ddtddp: scale(predictor, stiffness_p),
+            dslip: [0.0; N],
+            sed,
+            sfd: 0.0,
+        },
+        ddtdtheta,
+        slip_eq: 0.0,
+        iterations: 0,
+    }
+}
+
+/// ∂τ̄/∂θ̄ of the slip answer τ̄ = t·n: through the start elastic slip v = ∂γ̄^pr/∂θ̄, which turns
+/// n (the transverse part (t/γ̄_eq^pr)·(v − n(n·v)), 0 in 2-D), and through t = τ̄_crit(s, θ̄)
+/// along n: dt/dθ̄ = (∂τ̄_crit/∂s)·(∂s/∂G·n·v + ∂s/∂θ̄) + ∂τ̄_crit/∂θ̄.
+#[inline(always)]
+fn slip_temperature_tangent<const N: usize>(
+    n: &[f64; N],
+    v: &[f64; N],
+    transverse: f64,
+    t_s: f64,
+    (ds_dg, ds_dtheta): (f64, f64),
+    dcrit_dtheta: f64,
+) -> [f64; N] {
+    let nv = dot(n, v);
+    let dt_dtheta = t_s * (ds_dg * nv + ds_dtheta) + dcrit_dtheta;
+    let mut ddtdtheta = [0.0; N];
+    for i in 0..N {
+        let proj_v = if N == 1 { 0.0 } else { v[i] - n[i] * nv };
+        ddtdtheta[i] = transverse * proj_v + n[i] * dt_dtheta;
+    }
+    ddtdtheta
 }
 
 /// The stick stress k̄_s·γ̄^pr; with `beyond` (rate-following, |γ̄^pr| within the rounding
@@ -1216,6 +1252,18 @@ impl<const N: usize> ExtendedUpdate<N> {
     }
 }
 
+/// k̄_s + ∂τ̄_crit/∂s, the slope of the slip equation k̄_s (G − s) = τ̄_crit(s/Δt, p, θ̄) in s (up
+/// to sign), which the implicit derivatives of s divide by; refused when a rate softening
+/// cancels the stick stiffness (0) or it overflowed.
+#[inline(always)]
+fn slip_stiffness(stiffness: f64, t_s: f64) -> Result<f64, LawError> {
+    let d = stiffness + t_s;
+    if d == 0.0 || !d.is_finite() {
+        return Err(rate_softening_cancels(t_s, stiffness));
+    }
+    Ok(d)
+}
+
 #[cold]
 #[inline(never)]
 fn rate_softening_cancels(t_s: f64, stiffness: f64) -> LawError {
@@ -1258,14 +1306,6 @@ fn check_outputs<const N: usize>(t: &Traction<N>, ddtdtheta: &[f64; N]) -> Resul
             "the stress update overflowed (inputs too large for f64)".into(),
         ))
     }
-}
-
-fn diag<const N: usize>(s: f64) -> [[f64; N]; N] {
-    let mut m = [[0.0; N]; N];
-    for (i, row) in m.iter_mut().enumerate() {
-        row[i] = s;
-    }
-    m
 }
 
 fn multiply<const N: usize>(v: &[f64; N], a: &[f64; N]) -> [f64; N] {

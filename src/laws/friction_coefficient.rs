@@ -22,6 +22,7 @@
 
 use crate::LawError;
 use crate::laws::friction_table::FrictionTable;
+use crate::laws::parameter_range::{nonnegative, positive};
 
 /// How a rate-dependent strength enters the elastic-stick return map (docs/props.md, "The
 /// rate-dependent formulation"). Shared by the extended Coulomb law (law 1) and the adhesive
@@ -152,16 +153,8 @@ impl CoefficientLaw {
         kinetic_ratio: f64,
         decay: f64,
     ) -> Result<Self, LawError> {
-        if !(kinetic_ratio.is_finite() && kinetic_ratio >= 0.0) {
-            return Err(LawError::Parameter(format!(
-                "kinetic coefficient ratio μ_k/μ_s = {kinetic_ratio} must be finite and ≥ 0"
-            )));
-        }
-        if !(decay.is_finite() && decay > 0.0) {
-            return Err(LawError::Parameter(format!(
-                "decay coefficient d_c = {decay} must be finite and > 0"
-            )));
-        }
+        nonnegative("kinetic coefficient ratio μ_k/μ_s", kinetic_ratio)?;
+        positive("decay coefficient d_c", decay)?;
         self.rate = RateLaw::ExponentialDecay {
             kinetic_ratio,
             decay,
@@ -197,12 +190,7 @@ impl CoefficientLaw {
 
     /// Pressure dependence π = 1/(1 + p/p_ref), p_ref > 0.
     pub fn with_pressure_reference(mut self, p_ref: f64) -> Result<Self, LawError> {
-        if !(p_ref.is_finite() && p_ref > 0.0) {
-            return Err(LawError::Parameter(format!(
-                "reference pressure p_ref = {p_ref} must be finite and > 0"
-            )));
-        }
-        self.pressure_ref = p_ref;
+        self.pressure_ref = positive("reference pressure p_ref", p_ref)?;
         Ok(self)
     }
 
@@ -283,20 +271,8 @@ impl CoefficientLaw {
     #[inline(always)]
     #[must_use]
     pub(crate) fn rate_free(&self, pressure: f64, temperature: f64) -> [f64; 3] {
-        // π(p) = 1/(1 + p/p_ref), π' = −(1/p_ref) π².
-        let (pi, dpi) = if self.pressure_ref.is_finite() {
-            let pi = 1.0 / (1.0 + pressure / self.pressure_ref);
-            (pi, -pi * pi / self.pressure_ref)
-        } else {
-            (1.0, 0.0)
-        };
-        // Θ(θ̄) = exp(−b_θ (θ̄ − θ_ref)), Θ' = −b_θ Θ.
-        let (theta, dtheta) = if self.temperature_slope != 0.0 {
-            let t = (-self.temperature_slope * (temperature - self.temperature_ref)).exp();
-            (t, -self.temperature_slope * t)
-        } else {
-            (1.0, 0.0)
-        };
+        let (pi, dpi) = self.pressure_factor(pressure);
+        let (theta, dtheta) = self.temperature_factor(temperature);
         // As `factor` with φ = 1: 1·π·Θ = π·Θ, 1·π'·Θ = π'·Θ, 1·π·Θ' = π·Θ' (exact products).
         [pi * theta, dpi * theta, pi * dtheta]
     }
@@ -342,6 +318,28 @@ impl CoefficientLaw {
         }
     }
 
+    /// π(p) = 1/(1 + p/p_ref) and π' = −(1/p_ref)·π²; (1, 0) without a reference pressure.
+    #[inline(always)]
+    fn pressure_factor(&self, pressure: f64) -> (f64, f64) {
+        if self.pressure_ref.is_finite() {
+            let pi = 1.0 / (1.0 + pressure / self.pressure_ref);
+            (pi, -pi * pi / self.pressure_ref)
+        } else {
+            (1.0, 0.0)
+        }
+    }
+
+    /// Θ(θ̄) = exp(−b_θ·(θ̄ − θ_ref)) and Θ' = −b_θ·Θ; (1, 0) without a temperature slope.
+    #[inline(always)]
+    fn temperature_factor(&self, temperature: f64) -> (f64, f64) {
+        if self.temperature_slope != 0.0 {
+            let t = (-self.temperature_slope * (temperature - self.temperature_ref)).exp();
+            (t, -self.temperature_slope * t)
+        } else {
+            (1.0, 0.0)
+        }
+    }
+
     /// (φ, φ', φ''), (π, π'), (Θ, Θ') of the closed-form laws (not the table).
     #[inline(always)]
     fn closed_form_parts(&self, rate: f64, pressure: f64, temperature: f64) -> FactorParts {
@@ -364,20 +362,8 @@ impl CoefficientLaw {
                 )
             }
         };
-        // π(p) = 1/(1 + p/p_ref), π' = −(1/p_ref) π².
-        let (pi, dpi) = if self.pressure_ref.is_finite() {
-            let pi = 1.0 / (1.0 + pressure / self.pressure_ref);
-            (pi, -pi * pi / self.pressure_ref)
-        } else {
-            (1.0, 0.0)
-        };
-        // Θ(θ̄) = exp(−b_θ (θ̄ − θ_ref)), Θ' = −b_θ Θ.
-        let (theta, dtheta) = if self.temperature_slope != 0.0 {
-            let t = (-self.temperature_slope * (temperature - self.temperature_ref)).exp();
-            (t, -self.temperature_slope * t)
-        } else {
-            (1.0, 0.0)
-        };
+        let (pi, dpi) = self.pressure_factor(pressure);
+        let (theta, dtheta) = self.temperature_factor(temperature);
         (phi, (pi, dpi), (theta, dtheta))
     }
 }

@@ -6,6 +6,7 @@
 //! A [`GapLaw`] is one conduction law plus optional [`Radiation`]; their conductances add.
 
 use super::gap_radiation::Radiation;
+use super::parameter_range::{nonnegative, positive};
 use super::table::TemperatureTable;
 use crate::LawError;
 
@@ -66,26 +67,6 @@ pub struct ConductanceResponse {
     pub dq_dtheta_a: f64,
     /// ∂q/∂θ_B.
     pub dq_dtheta_b: f64,
-}
-
-fn positive(name: &str, v: f64) -> Result<f64, LawError> {
-    if v.is_finite() && v > 0.0 {
-        Ok(v)
-    } else {
-        Err(LawError::Parameter(format!(
-            "{name} = {v} must be finite and > 0"
-        )))
-    }
-}
-
-fn nonnegative(name: &str, v: f64) -> Result<f64, LawError> {
-    if v.is_finite() && v >= 0.0 {
-        Ok(v)
-    } else {
-        Err(LawError::Parameter(format!(
-            "{name} = {v} must be finite and ≥ 0"
-        )))
-    }
 }
 
 impl Conduction {

@@ -4,6 +4,7 @@
 //! k_rad = q/(θ_A − θ_B) = F·σ·(a + b)(a² + b²), a = θ_A − θ_Z, b = θ_B − θ_Z, which has no 0/0
 //! at θ_A = θ_B.
 
+use super::parameter_range::{nonnegative, positive};
 use crate::LawError;
 
 /// Gap radiation parameters, validated on construction.
@@ -34,16 +35,8 @@ impl Radiation {
         stefan_boltzmann: f64,
         absolute_zero: f64,
     ) -> Result<Self, LawError> {
-        if !(view_factor.is_finite() && view_factor >= 0.0) {
-            return Err(LawError::Parameter(format!(
-                "view_factor = {view_factor} must be finite and ≥ 0"
-            )));
-        }
-        if !(stefan_boltzmann.is_finite() && stefan_boltzmann > 0.0) {
-            return Err(LawError::Parameter(format!(
-                "stefan_boltzmann = {stefan_boltzmann} must be finite and > 0"
-            )));
-        }
+        nonnegative("view_factor", view_factor)?;
+        positive("stefan_boltzmann", stefan_boltzmann)?;
         if !absolute_zero.is_finite() {
             return Err(LawError::Parameter(format!(
                 "absolute_zero = {absolute_zero} must be finite"

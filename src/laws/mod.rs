@@ -11,6 +11,7 @@ pub mod friction_table;
 pub mod gap_conductance;
 pub mod gap_radiation;
 pub mod interface_heat;
+mod parameter_range;
 pub mod pore_pressure;
 pub mod scalar_root;
 mod small_vec;

@@ -27,25 +27,23 @@ pub enum RootFailure {
 /// Solves f(x) = 0 for x in [a, b], starting from `x0` (clipped into the bracket). `f` returns
 /// (f(x), f'(x)). Stops when the step is below `x_tol` or f(x) = 0 exactly.
 pub fn bracketed_newton(
-    mut f: impl FnMut(f64) -> (f64, f64),
+    f: impl FnMut(f64) -> (f64, f64),
     a: f64,
     b: f64,
     x0: f64,
     x_tol: f64,
     max_iterations: u32,
 ) -> Result<Root, RootFailure> {
-    let mut g = |x: f64| {
-        let (v, d) = f(x);
-        (v, d, 0.0)
-    };
-    bracketed_newton_impl(&mut g, a, b, None, x0, x_tol, 0.0, max_iterations)
+    let mut f = without_curvature(f);
+    let (low, high) = orient(&mut f, a, b)?;
+    halley_on_known_bracket(f, low, high, x0, x_tol, 0.0, max_iterations)
 }
 
 /// As [`bracketed_newton`] for a bracket whose signs the caller knows, f(`low`) ≤ 0 ≤
 /// f(`high`) (the two end evaluations are skipped), also stopping once |f(x)| ≤ `f_tol` (the
 /// round-off level of the residual, below which Newton steps are noise).
 pub fn newton_on_known_bracket(
-    mut f: impl FnMut(f64) -> (f64, f64),
+    f: impl FnMut(f64) -> (f64, f64),
     low: f64,
     high: f64,
     x0: f64,
@@ -53,20 +51,24 @@ pub fn newton_on_known_bracket(
     f_tol: f64,
     max_iterations: u32,
 ) -> Result<Root, RootFailure> {
-    let mut g = |x: f64| {
-        let (v, d) = f(x);
-        (v, d, 0.0)
-    };
-    bracketed_newton_impl(
-        &mut g,
+    halley_on_known_bracket(
+        without_curvature(f),
         low,
         high,
-        Some(()),
         x0,
         x_tol,
         f_tol,
         max_iterations,
     )
+}
+
+/// Newton's method as Halley's with f'' = 0: the step 2ff'/(2f'² − f·0) is f/f'.
+#[inline(always)]
+fn without_curvature(mut f: impl FnMut(f64) -> (f64, f64)) -> impl FnMut(f64) -> (f64, f64, f64) {
+    move |x| {
+        let (v, d) = f(x);
+        (v, d, 0.0)
+    }
 }
 
 /// As [`newton_on_known_bracket`] with Halley's step δ = 2ff'/(2f'² − ff'') (cubic convergence)
@@ -76,54 +78,26 @@ pub fn newton_on_known_bracket(
 #[inline(always)]
 pub fn halley_on_known_bracket(
     mut f: impl FnMut(f64) -> (f64, f64, f64),
-    low: f64,
-    high: f64,
+    mut low: f64,
+    mut high: f64,
     x0: f64,
     x_tol: f64,
     f_tol: f64,
     max_iterations: u32,
 ) -> Result<Root, RootFailure> {
-    bracketed_newton_impl(
-        &mut f,
-        low,
-        high,
-        Some(()),
-        x0,
-        x_tol,
-        f_tol,
-        max_iterations,
-    )
-}
-
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-fn bracketed_newton_impl(
-    f: &mut impl FnMut(f64) -> (f64, f64, f64),
-    a: f64,
-    b: f64,
-    oriented: Option<()>,
-    x0: f64,
-    x_tol: f64,
-    f_tol: f64,
-    max_iterations: u32,
-) -> Result<Root, RootFailure> {
-    let (mut low, mut high) = match oriented {
-        Some(()) => (a, b),
-        None => orient(f, a, b)?,
-    };
     if low == high {
         return Ok(Root {
             x: low,
             iterations: 0,
         });
     }
-    let (lo, hi) = (a.min(b), a.max(b));
+    let (lo, hi) = (low.min(high), low.max(high));
     let mut x = if x0.is_finite() {
         x0.clamp(lo, hi)
     } else {
-        0.5 * (a + b)
+        0.5 * (low + high)
     };
-    let mut step_before = (b - a).abs();
+    let mut step_before = (high - low).abs();
     let mut step = step_before;
     let (mut fx, mut dfx, mut ddfx) = f(x);
     for iteration in 1..=max_iterations {
@@ -213,6 +187,18 @@ mod tests {
         // A wrong (zero, then tiny) derivative forces bisection; the bracket still holds.
         let r = bracketed_newton(|x| (x.powi(3) - 0.001, 0.0), -1.0, 1.0, 0.9, 1e-14, 200).unwrap();
         assert!((r.x - 0.1).abs() < 1e-13);
+    }
+
+    #[test]
+    fn orients_a_decreasing_bracket_and_takes_a_root_at_an_end() {
+        // f(x) = 3 − x², decreasing on [0, 3]: f(0) > 0 > f(3); root √3, from either end.
+        for (a, b) in [(0.0, 3.0), (3.0, 0.0)] {
+            let r = bracketed_newton(|x| (3.0 - x * x, -2.0 * x), a, b, 2.5, 1e-15, 50).unwrap();
+            assert!((r.x - 3f64.sqrt()).abs() < 4e-16, "{r:?}");
+        }
+        // f(2) = 0 exactly at an end of the bracket: that end, without iterating.
+        let r = bracketed_newton(|x| (x - 2.0, 1.0), -1.0, 2.0, 0.0, 1e-15, 50).unwrap();
+        assert_eq!((r.x, r.iterations), (2.0, 0));
     }
 
     #[test]

@@ -4,6 +4,7 @@
 //! τ_v to the friction stress ([`super::ExtendedCoulomb`]); this file holds its parameters.
 
 use crate::LawError;
+use crate::laws::parameter_range::{nonnegative, positive};
 
 /// Viscous tangential damping (seed 003): τ_v = c(h)·γ̇ with c = c₀ at zero overclosure.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -19,16 +20,8 @@ pub struct Damping {
 impl Damping {
     /// Validated damping parameters.
     pub fn new(c0: f64, clearance: f64, fraction: f64) -> Result<Self, LawError> {
-        if !(c0.is_finite() && c0 > 0.0) {
-            return Err(LawError::Parameter(format!(
-                "tangential damping c₀ = {c0} must be finite and > 0"
-            )));
-        }
-        if !(clearance.is_finite() && clearance >= 0.0) {
-            return Err(LawError::Parameter(format!(
-                "damping clearance g₀ = {clearance} must be finite and ≥ 0"
-            )));
-        }
+        positive("tangential damping c₀", c0)?;
+        nonnegative("damping clearance g₀", clearance)?;
         if !(fraction.is_finite() && (0.0..1.0).contains(&fraction)) {
             return Err(LawError::Parameter(format!(
                 "damping clearance fraction f = {fraction} must be in [0, 1)"

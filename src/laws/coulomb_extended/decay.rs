@@ -120,56 +120,32 @@ impl ExtendedCoulomb {
         } else {
             stiffness * g <= stick_crit.value
         };
-        let (traction, ddtdtheta, slip_eq, iterations) = if sticks || stiffness <= 0.0 {
+        let ScaledTraction {
+            traction,
+            ddtdtheta,
+            slip_eq,
+            iterations,
+        } = if sticks || stiffness <= 0.0 {
             if stiffness <= 0.0 && g > gamma_crit {
-                // No friction (p ≤ 0): zero stress, all motion beyond γ_crit is slip.
-                let n = unit(&predictor, g);
-                let slip_eq = g - gamma_crit;
-                (
-                    Traction {
-                        tau: [0.0; N],
-                        ddtddg: [[0.0; N]; N],
-                        ddtddp: scale(&n, k.d_pressure),
-                        dslip: scale(&n, slip_eq),
-                        sed: 0.0,
-                        sfd: 0.0,
-                    },
-                    [0.0; N],
-                    slip_eq,
-                    0,
-                )
+                frictionless_slip(&predictor, g, gamma_crit, k.d_pressure)
             } else {
-                // Stick (Eq. 5.2.3-1): τ = k_s γ^pr.
-                let mut ddtdtheta = scale(&predictor, stiffness_theta);
-                for i in 0..N {
-                    ddtdtheta[i] += stiffness * d_elastic_dtheta[i];
-                }
-                (
-                    Traction {
-                        tau: on_strength(
-                            &predictor,
-                            following && g > gamma_crit,
-                            stiffness,
-                            k.value,
-                        ),
-                        ddtddg: diag(stiffness),
-                        ddtddp: scale(&predictor, stiffness_p),
-                        dslip: [0.0; N],
-                        sed: if phi_k != 1.0 {
-                            // As the next increment reads τ: at rest (see `rest_energy`).
-                            rest_energy(
-                                stiffness * g,
-                                (mbar * factor[0] * p).min(tau_max),
-                                gamma_crit,
-                            )
-                        } else {
-                            0.5 * stiffness * g * g
-                        },
-                        sfd: 0.0,
-                    },
-                    ddtdtheta,
-                    0.0,
-                    0,
+                let sed = if phi_k != 1.0 {
+                    // As the next increment reads τ: at rest (see `rest_energy`).
+                    rest_energy(
+                        stiffness * g,
+                        (mbar * factor[0] * p).min(tau_max),
+                        gamma_crit,
+                    )
+                } else {
+                    0.5 * stiffness * g * g
+                };
+                stick_answer(
+                    &predictor,
+                    &d_elastic_dtheta,
+                    following && g > gamma_crit,
+                    k.value,
+                    [stiffness, stiffness_p, stiffness_theta],
+                    sed,
                 )
             }
         } else {
@@ -224,10 +200,7 @@ impl ExtendedCoulomb {
                 // s = G − γ_crit.
                 (1.0, 0.0, 0.0)
             } else {
-                let dd = stiffness + t_s;
-                if dd == 0.0 || !dd.is_finite() {
-                    return Err(rate_softening_cancels(t_s, stiffness));
-                }
+                let dd = slip_stiffness(stiffness, t_s)?;
                 // Implicit derivatives of s from k_s (G − s) = τ_crit(s/Δt, p, θ̄).
                 // One division for the three implicit derivatives.
                 let per_dd = 1.0 / dd;
@@ -241,26 +214,26 @@ impl ExtendedCoulomb {
             // Eq. 5.2.3-3: (δ − nn) τ_crit/γ_eq^pr + nn (∂τ_crit/∂s) ∂s/∂G.
             let ddtddg = super::rate_slip_tangent(&n, transverse, t_s, ds_dg);
             let dtau_dp = t_s * ds_dp + crit.d_pressure;
-            let mut ddtdtheta = [0.0; N];
-            if with_theta {
-                // θ̄: through the start elastic slip v = ∂γ^pr/∂θ̄ and through τ_crit(·, θ̄).
+            let ddtdtheta = if with_theta {
                 let ds_dtheta = (stiffness_theta * (g - slip_eq) - crit.d_temperature) * per_dd;
-                let v = d_elastic_dtheta;
-                let nv = dot(&n, &v);
-                let dt_dtheta = t_s * (ds_dg * nv + ds_dtheta) + crit.d_temperature;
-                for i in 0..N {
-                    let proj_v = if N == 1 { 0.0 } else { v[i] - n[i] * nv };
-                    ddtdtheta[i] = transverse * proj_v + n[i] * dt_dtheta;
-                }
-            }
-            (
-                slip_traction(
-                    &n, t, ddtddg, dtau_dp, slip_eq, following, gamma_crit, stiffness,
-                ),
+                slip_temperature_tangent(
+                    &n,
+                    &d_elastic_dtheta,
+                    transverse,
+                    t_s,
+                    (ds_dg, ds_dtheta),
+                    crit.d_temperature,
+                )
+            } else {
+                [0.0; N]
+            };
+            let sed = slip_energy(t, following, gamma_crit, stiffness);
+            ScaledTraction {
+                traction: Traction::sliding(&n, t, ddtddg, dtau_dp, slip_eq, sed),
                 ddtdtheta,
                 slip_eq,
                 iterations,
-            )
+            }
         };
         // `check_outputs` in one test: x·0 is 0 for finite x, NaN otherwise.
         let mut probe = traction.sed * 0.0 + traction.sfd * 0.0;
@@ -274,27 +247,13 @@ impl ExtendedCoulomb {
         if probe != 0.0 {
             check_outputs(&traction, &ddtdtheta)?;
         }
-        // The return map's Δγ_eq^sl (0 in stick), not |DSLIP| again: the same value without a
-        // second square root (as the plain law's state).
-        let slip = slip_eq;
         Ok(ExtendedUpdate {
             contact: Contact::Motion(traction),
             ddtdtheta,
             state: ExtendedState {
-                coulomb: CoulombState {
-                    // Saturating at f64::MAX, as in `update`.
-                    accumulated_slip: (state.coulomb.accumulated_slip + slip).min(f64::MAX),
-                    slip_rate: if rate_dt > 0.0 {
-                        (slip_eq / rate_dt).min(f64::MAX)
-                    } else {
-                        0.0
-                    },
-                    status: if slip > 0.0 {
-                        FrictionStatus::Slip
-                    } else {
-                        FrictionStatus::Stick
-                    },
-                },
+                // The return map's Δγ_eq^sl (0 in stick) for the path too, not |DSLIP| again:
+                // the same value without a second square root (as the plain law's state).
+                coulomb: state.coulomb.after_motion(slip_eq, slip_eq, rate_dt),
                 viscous: [0.0; N],
             },
             outcome: Outcome::CONVERGED,
@@ -334,10 +293,7 @@ impl ExtendedCoulomb {
             let on_cap = g - tau_max * compliance;
             let s_star = -((tau_max / a - r) / (1.0 - r)).ln() / (d * per_dt);
             if on_cap <= s_star {
-                let cap = Critical {
-                    value: tau_max,
-                    ..Critical::default()
-                };
+                let cap = Critical::at_shear_limit(tau_max);
                 return Ok((on_cap.max(0.0), cap, 0));
             }
             floor = s_star;
@@ -385,10 +341,7 @@ fn held_rate_critical(pressure: f64, f: [f64; 3], scaled_mu: f64, tau_max: f64) 
     }
     let mu = scaled_mu * f[0];
     if mu * pressure >= tau_max {
-        Critical {
-            value: tau_max,
-            ..Critical::default()
-        }
+        Critical::at_shear_limit(tau_max)
     } else {
         Critical {
             value: mu * pressure,
@@ -407,6 +360,9 @@ fn held_rate_critical(pressure: f64, f: [f64; 3], scaled_mu: f64, tau_max: f64) 
 /// which is the φ of `critical` (the same terms from one exponential, 1 at γ̇₀ = 0). The rate
 /// derivatives are left 0: frozen μ does not follow this increment's rate (the slip answer
 /// reads ∂τ̄_crit/∂s as 0 when frozen); ∂/∂θ̄ is 0 with Θ = 1. 0 for p < 0, as `critical`.
+/// It is [`held_rate_critical`] at γ̇₀ without the ∂/∂θ̄ product (μ̄·φ)·Θ'·p, written out because
+/// that product is formed even where it is not read: 4 instructions more per call on
+/// bench_rate's frozen row (scripts/bench-rate-count.sh) when this called it.
 #[inline(always)]
 fn frozen_critical(
     f: [f64; 3],
@@ -422,10 +378,7 @@ fn frozen_critical(
     let m = mbar * decay_phi(r, d, start_rate).0;
     let mu = m * f[0];
     if mu * p >= tau_max {
-        Critical {
-            value: tau_max,
-            ..Critical::default()
-        }
+        Critical::at_shear_limit(tau_max)
     } else {
         Critical {
             value: mu * p,
@@ -449,10 +402,7 @@ fn critical_from_phi(
 ) -> Critical {
     let a = mbar * pt * p;
     if a * phi >= tau_max {
-        Critical {
-            value: tau_max,
-            ..Critical::default()
-        }
+        Critical::at_shear_limit(tau_max)
     } else {
         let mp = mbar * p;
         Critical {

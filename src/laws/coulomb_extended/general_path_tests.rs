@@ -9,6 +9,32 @@ use crate::laws::coulomb::{Contact, Coulomb, CoulombState, Increment, StickMode}
 use crate::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState, Hht};
 use crate::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
 
+/// Elastic stick with μ, γ_crit = 10⁻³ and, when `tau_max` > 0, that shear limit.
+fn base_law(mu: f64, tau_max: f64) -> Coulomb {
+    let base = Coulomb::new(mu)
+        .unwrap()
+        .with_critical_slip_absolute(1e-3)
+        .unwrap();
+    if tau_max > 0.0 {
+        base.with_shear_limit(tau_max).unwrap()
+    } else {
+        base
+    }
+}
+
+/// A 2-D increment from fractions: start stress tf·μ·p₀, Δγ = gf·γ_crit (10⁻³), end pressure
+/// p₀·(1 + dpf) after Δp = p₀·dpf.
+fn increment(mu: f64, p0: f64, dpf: f64, tf: [f64; 2], gf: [f64; 2], dtime: f64) -> Increment<2> {
+    Increment {
+        tau: [tf[0] * mu * p0, tf[1] * mu * p0],
+        dgam: [gf[0] * 1e-3, gf[1] * 1e-3],
+        pressure: p0 * (1.0 + dpf),
+        dpressure: p0 * dpf,
+        dtime,
+        ..Increment::default()
+    }
+}
+
 /// The start pressure of the three-roots case.
 const P: f64 = 100.0;
 /// μ_s of the three-roots case.
@@ -30,10 +56,7 @@ proptest! {
         exact in prop::bool::ANY,
         p_ref in prop_oneof![Just(0.0), 10.0..500.0f64],
     ) {
-        let mut base = Coulomb::new(mu).unwrap().with_critical_slip_absolute(1e-3).unwrap();
-        if tau_max > 0.0 {
-            base = base.with_shear_limit(tau_max).unwrap();
-        }
+        let mut base = base_law(mu, tau_max);
         if exact {
             base = base.with_stick(StickMode::Exact);
         }
@@ -43,14 +66,7 @@ proptest! {
         }
         let cheap = ExtendedCoulomb::new(base).with_coefficient_law(coefficient);
         let general = cheap.with_general_path();
-        let inc = Increment::<2> {
-            tau: [tf[0] * mu * p0, tf[1] * mu * p0],
-            dgam: [gf[0] * 1e-3, gf[1] * 1e-3],
-            pressure: p0 * (1.0 + dpf),
-            dpressure: p0 * dpf,
-            dtime: 0.1,
-            ..Increment::default()
-        };
+        let inc = increment(mu, p0, dpf, tf, gf, 0.1);
         let st = ExtendedState::default();
         let c = cheap.update(&inc, &Conditions::default(), &st).unwrap();
         let g = general.update(&inc, &Conditions::default(), &st).unwrap();
@@ -121,10 +137,7 @@ proptest! {
         start_rate in prop_oneof![Just(0.0), 0.0..2.0f64],
         dtime in 1e-3..1.0f64,
     ) {
-        let mut base = Coulomb::new(mu).unwrap().with_critical_slip_absolute(1e-3).unwrap();
-        if tau_max > 0.0 {
-            base = base.with_shear_limit(tau_max).unwrap();
-        }
+        let base = base_law(mu, tau_max);
         let mut coefficient = CoefficientLaw::default().with_exponential_decay(ratio, dc).unwrap();
         if p_ref > 0.0 {
             coefficient = coefficient.with_pressure_reference(p_ref).unwrap();
@@ -137,14 +150,7 @@ proptest! {
             .with_frozen_coefficient(frozen)
             .with_hht(hht.then(|| Hht::new(-0.05, 0.0, 0.0).unwrap()));
         let general = lean.with_general_path();
-        let inc = Increment::<2> {
-            tau: [tf[0] * mu * p0, tf[1] * mu * p0],
-            dgam: [gf[0] * 1e-3, gf[1] * 1e-3],
-            pressure: p0 * (1.0 + dpf),
-            dpressure: p0 * dpf,
-            dtime,
-            ..Increment::default()
-        };
+        let inc = increment(mu, p0, dpf, tf, gf, dtime);
         let conditions = Conditions { temperature: theta, ..Conditions::default() };
         let st = ExtendedState::<2> {
             coulomb: CoulombState { slip_rate: start_rate, ..CoulombState::default() },

@@ -37,11 +37,7 @@ pub struct SteadyTransport {
 impl SteadyTransport {
     /// Validated steady-transport parameters.
     pub fn new(tolerance: f64, omega: f64, axis: usize) -> Result<Self, LawError> {
-        if !(tolerance.is_finite() && tolerance > 0.0) {
-            return Err(LawError::Parameter(format!(
-                "slip tolerance F_f = {tolerance} must be finite and > 0"
-            )));
-        }
+        positive("slip tolerance F_f", tolerance)?;
         if !(omega.is_finite() && omega > 0.0) {
             return Err(LawError::Parameter(format!(
                 "angular velocity ω = {omega} must be finite and > 0 for steady-state transport"
@@ -99,17 +95,19 @@ impl ExtendedCoulomb {
     /// |γ̇^pr| ≤ γ̇_crit (κ_s = τ̄_crit(0)/γ̇_crit), else slip with |γ̇^v| = γ̇_crit, so the
     /// slip rate is |γ̇^pr| − γ̇_crit and τ̄ = τ̄_crit(|γ̇^pr| − γ̇_crit)·n. No memory: the stress
     /// of the start of the increment is not used.
-    #[allow(clippy::too_many_arguments)]
     pub(super) fn viscous_stick<const N: usize>(
         &self,
         inc: &Increment<N>,
         s: &Scaled<N>,
-        mbar: f64,
-        theta: f64,
-        dt: f64,
-        start_rate: f64,
         conditions: &Conditions,
     ) -> Result<ScaledTraction<N>, LawError> {
+        let &Scaled {
+            mbar,
+            theta,
+            rate_dt: dt,
+            start_rate,
+            ..
+        } = s;
         let Some(tr) = self.transport else {
             return Err(LawError::Numerical(
                 "steady transport not configured".into(),
@@ -139,7 +137,7 @@ impl ExtendedCoulomb {
             return Ok(ScaledTraction {
                 traction: Traction {
                     tau: scale(&predictor, viscosity),
-                    ddtddg: diag(viscosity / dt),
+                    ddtddg: diagonal(viscosity / dt),
                     ddtddp: scale(&predictor, k.d_pressure / rate_crit),
                     dslip: [0.0; N],
                     sed: 0.0,
@@ -167,14 +165,8 @@ impl ExtendedCoulomb {
         }
         let slip_eq = slip_rate * dt;
         Ok(ScaledTraction {
-            traction: Traction {
-                tau: scale(&n, t),
-                ddtddg,
-                ddtddp: scale(&n, crit.d_pressure),
-                dslip: scale(&n, slip_eq),
-                sed: 0.0,
-                sfd: t * slip_eq,
-            },
+            // No elastic slip in viscous stick: SED = 0.
+            traction: Traction::sliding(&n, t, ddtddg, crit.d_pressure, slip_eq, 0.0),
             ddtdtheta: scale(&n, crit.d_temperature),
             slip_eq,
             iterations: 0,
