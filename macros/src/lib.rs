@@ -221,9 +221,15 @@ mod tests {
         assert_eq!(text(&export.sig.abi), text(&twin.sig.abi));
         assert_eq!(text(&export.sig.safety), text(&twin.sig.safety));
         assert!(matches!(twin.vis, syn::Visibility::Inherited));
-        assert!(!text(&twin.attrs).contains("no_mangle"));
-        assert!(text(&twin.attrs).contains("cold"));
-        assert!(text(&export.attrs).contains("no_mangle"));
+        let attrs = |f: &ItemFn| f.attrs.iter().map(text).collect::<Vec<_>>();
+        assert_eq!(
+            attrs(&twin),
+            ["# [cold]", "# [allow (clippy :: too_many_arguments)]"]
+        );
+        assert_eq!(
+            attrs(&export),
+            ["# [doc = r\" Doc.\"]", "# [unsafe (no_mangle)]"]
+        );
         // The export's last statement is the call to the twin with every parameter, in order.
         let last = export.block.stmts.last().unwrap();
         let Stmt::Expr(Expr::Unsafe(block), None) = last else {
