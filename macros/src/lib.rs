@@ -1,22 +1,23 @@
 //! The procedural macro of interfacial's ABI shell (docs/architecture.md, "The shell's shared
 //! pieces").
 //!
-//! [`with_twin`] writes an export's out-of-line twin from the export's own text, so the
-//! parameter list is written once in the source (where cbindgen, which expands no macro, reads
-//! the export) and the argument view is built from the parameter names in one place.
+//! [`with_twin`] writes an export's out-of-line twin and its argument view from the export's
+//! own text, so the parameter list is written once in the source (where cbindgen, which expands
+//! no macro, reads the export): the twin's list, the view's fields and both literals that build
+//! the view are derived from it.
 
 use proc_macro2::TokenStream;
 use quote::quote;
 use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
-use syn::{Attribute, FnArg, Ident, ItemFn, Pat, Path, Stmt, Token, braced, parenthesized};
+use syn::{Attribute, FnArg, Ident, ItemFn, Pat, Stmt, Token, Type, braced, parenthesized};
 
 /// An exported function that ends, when its body does not return, in a sibling call to a twin
 /// with the identical parameter list (a jump that leaves the host's arguments where they are).
 ///
 /// ```text
 /// #[interfacial_macros::with_twin(
-///     view = FricArgs as args,
+///     view = #[derive(Clone, Copy)] struct FricArgs as args,
 ///     unread = (ddpddh, slip),
 ///     twin = #[cold] #[inline(never)] fric_general { args.general() },
 /// )]
@@ -25,9 +26,12 @@ use syn::{Attribute, FnArg, Ident, ItemFn, Pat, Path, Stmt, Token, braced, paren
 ///
 /// expands to
 ///
+/// - the view, `#[derive(Clone, Copy)] struct FricArgs { lm: *mut c_int, … }`: the view's
+///   attributes, one private field per parameter but the `unread` ones, in the parameters'
+///   order, name and type as in the signature;
 /// - the export, attributes, signature and statements unchanged, with `let args = FricArgs {
-///   lm, … };` (every parameter but the `unread` ones, by name) before its first statement and
-///   `unsafe { fric_general(lm, …) }` (every parameter, in order) after its last;
+///   lm, … };` (every field, by name) before its first statement and `unsafe { fric_general(lm,
+///   …) }` (every parameter, in order) after its last;
 /// - `fric_general`: the twin's attributes, the export's signature under the twin's name (not
 ///   exported, private), `let _ = (ddpddh, slip);`, the same `let args = FricArgs { … };`, then
 ///   the twin's statements.
@@ -45,7 +49,8 @@ pub fn with_twin(
 
 /// The attribute's arguments.
 struct Spec {
-    view: Path,
+    view_attrs: Vec<Attribute>,
+    view: Ident,
     binding: Ident,
     unread: Vec<Ident>,
     twin_attrs: Vec<Attribute>,
@@ -69,6 +74,8 @@ fn key(input: ParseStream, expected: &str) -> syn::Result<()> {
 impl Parse for Spec {
     fn parse(input: ParseStream) -> syn::Result<Self> {
         key(input, "view")?;
+        let view_attrs = Attribute::parse_outer(input)?;
+        input.parse::<Token![struct]>()?;
         let view = input.parse()?;
         input.parse::<Token![as]>()?;
         let binding = input.parse()?;
@@ -90,6 +97,7 @@ impl Parse for Spec {
             input.parse::<Token![,]>()?;
         }
         Ok(Spec {
+            view_attrs,
             view,
             binding,
             unread: unread.into_iter().collect(),
@@ -116,7 +124,9 @@ fn expand(attr: TokenStream, item: TokenStream) -> syn::Result<TokenStream> {
         .iter()
         .map(|arg| match arg {
             FnArg::Typed(typed) => match &*typed.pat {
-                Pat::Ident(p) if p.by_ref.is_none() && p.subpat.is_none() => Ok(p.ident.clone()),
+                Pat::Ident(p) if p.by_ref.is_none() && p.subpat.is_none() => {
+                    Ok((p.ident.clone(), (*typed.ty).clone()))
+                }
                 other => Err(syn::Error::new_spanned(
                     other,
                     "with_twin: every parameter must be a plain name",
@@ -127,8 +137,9 @@ fn expand(attr: TokenStream, item: TokenStream) -> syn::Result<TokenStream> {
                 "with_twin: the export cannot take `self`",
             )),
         })
-        .collect::<syn::Result<Vec<Ident>>>()?;
-    if let Some(stray) = spec.unread.iter().find(|u| !params.contains(u)) {
+        .collect::<syn::Result<Vec<(Ident, Type)>>>()?;
+    let names: Vec<&Ident> = params.iter().map(|(name, _)| name).collect();
+    if let Some(stray) = spec.unread.iter().find(|u| !names.contains(u)) {
         return Err(syn::Error::new(
             stray.span(),
             format!(
@@ -137,8 +148,13 @@ fn expand(attr: TokenStream, item: TokenStream) -> syn::Result<TokenStream> {
             ),
         ));
     }
-    let fields = params.iter().filter(|p| !spec.unread.contains(p));
+    let (fields, types): (Vec<&Ident>, Vec<&Type>) = params
+        .iter()
+        .filter(|(name, _)| !spec.unread.contains(name))
+        .map(|(name, ty)| (name, ty))
+        .unzip();
     let Spec {
+        view_attrs,
         view,
         binding,
         unread,
@@ -154,11 +170,16 @@ fn expand(attr: TokenStream, item: TokenStream) -> syn::Result<TokenStream> {
     let mut twin_sig = sig.clone();
     twin_sig.ident = twin.clone();
     Ok(quote! {
+        #(#view_attrs)*
+        struct #view {
+            #(#fields: #types,)*
+        }
+
         #(#attrs)*
         #vis #sig {
             #view_let
             #(#stmts)*
-            unsafe { #twin(#(#params),*) }
+            unsafe { #twin(#(#names),*) }
         }
 
         #(#twin_attrs)*
@@ -175,7 +196,7 @@ fn expand(attr: TokenStream, item: TokenStream) -> syn::Result<TokenStream> {
 mod tests {
     use super::*;
     use quote::ToTokens;
-    use syn::{Expr, File, Item};
+    use syn::{Expr, File, Item, ItemStruct};
 
     fn export() -> TokenStream {
         quote! {
@@ -189,22 +210,25 @@ mod tests {
 
     fn spec() -> TokenStream {
         quote! {
-            view = View as v,
+            view = #[derive(Clone, Copy)] struct View as v,
             unread = (b),
             twin = #[cold] ex_twin { v.slow(); },
         }
     }
 
+    /// The items of an expansion: the view, the export, the twin.
+    fn items(out: TokenStream) -> (ItemStruct, ItemFn, ItemFn) {
+        let file: File = syn::parse2(out).expect("the expansion parses as items");
+        match <[Item; 3]>::try_from(file.items) {
+            Ok([Item::Struct(view), Item::Fn(export), Item::Fn(twin)]) => (view, export, twin),
+            _ => panic!("expected a struct and two functions"),
+        }
+    }
+
     /// The two functions of an expansion, export first.
     fn functions(out: TokenStream) -> (ItemFn, ItemFn) {
-        let file: File = syn::parse2(out).expect("the expansion parses as items");
-        let mut fns = file.items.into_iter().map(|item| match item {
-            Item::Fn(f) => f,
-            _ => panic!("only functions expected"),
-        });
-        let pair = (fns.next().unwrap(), fns.next().unwrap());
-        assert!(fns.next().is_none(), "exactly two functions");
-        pair
+        let (_, export, twin) = items(out);
+        (export, twin)
     }
 
     fn text<T: ToTokens>(t: &T) -> String {
@@ -239,6 +263,23 @@ mod tests {
     }
 
     #[test]
+    fn view_has_a_field_per_read_parameter_with_its_type() {
+        let (view, _, _) = items(expand(spec(), export()).unwrap());
+        assert_eq!(view.ident, "View");
+        assert!(matches!(view.vis, syn::Visibility::Inherited));
+        assert_eq!(text(&view.attrs[0]), "# [derive (Clone , Copy)]");
+        let fields: Vec<String> = view
+            .fields
+            .iter()
+            .map(|f| {
+                assert!(matches!(f.vis, syn::Visibility::Inherited));
+                format!("{}: {}", text(&f.ident), text(&f.ty))
+            })
+            .collect();
+        assert_eq!(fields, ["a: * mut i32", "c: usize"]);
+    }
+
+    #[test]
     fn view_is_built_from_the_read_parameters_in_both() {
         let (export, twin) = functions(expand(spec(), self::export()).unwrap());
         let view = "let v = View { a , c } ;";
@@ -254,7 +295,7 @@ mod tests {
 
     #[test]
     fn refuses_an_unread_name_that_is_not_a_parameter() {
-        let spec = quote! { view = View as v, unread = (b, z), twin = t { } };
+        let spec = quote! { view = struct View as v, unread = (b, z), twin = t { } };
         let err = expand(spec, export()).unwrap_err().to_string();
         assert_eq!(
             err,
@@ -265,14 +306,14 @@ mod tests {
     #[test]
     fn refuses_a_parameter_that_is_not_a_plain_name() {
         let item = quote! { extern "C" fn ex_((a, b): (i32, i32)) {} };
-        let spec = quote! { view = View as v, unread = (), twin = t { } };
+        let spec = quote! { view = struct View as v, unread = (), twin = t { } };
         let err = expand(spec, item).unwrap_err().to_string();
         assert_eq!(err, "with_twin: every parameter must be a plain name");
     }
 
     #[test]
     fn names_the_missing_key() {
-        let spec = quote! { view = View as v, twin = t { } };
+        let spec = quote! { view = struct View as v, twin = t { } };
         let err = expand(spec, export()).unwrap_err().to_string();
         assert_eq!(err, "with_twin: expected `unread = …` here");
     }

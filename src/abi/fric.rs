@@ -62,10 +62,17 @@ mod rate;
 /// (`DSLIP`, `SED`, `SFD`, `DDTDDT`) may be NULL.
 #[allow(clippy::too_many_arguments)]
 #[unsafe(no_mangle)]
-// The view `args` of the arguments any path reads, built from the parameter names, and the
-// twin `fric_general`, with this parameter list, are written by the attribute from this text.
+// Written by the attribute from this parameter list (macros/): the view `FricArgs` (a field
+// per parameter but the `unread` ones), bound to `args` in both functions, and the twin
+// `fric_general`, with the same list, which `fric_` calls when its body does not return.
 #[interfacial_macros::with_twin(
-    view = FricArgs as args,
+    view =
+        /// The arguments `fric_` reads or writes: the one view of the host's call that every
+        /// path works on (the plain path in `fric_`, everything else in `fric_general`), one
+        /// field per parameter of `fric_` but the unread ones, same name, same type. Its
+        /// address is never taken on the plain path, so it lives in registers there.
+        #[derive(Clone, Copy)]
+        struct FricArgs as args,
     // Not read (the laws need none of them; `DROT` is read only by the damping law in 3-D).
     unread = (ddpddh, slip, kstep, kinc, time, npatch, rcoord, predef, npred, slname, msname,
               slname_len, msname_len),
@@ -160,42 +167,6 @@ thread_local! {
 #[inline(never)]
 fn hand_over(payload: Box<dyn Any + Send>) {
     HANDED_OVER.set(Some(payload));
-}
-
-/// The arguments `fric_` reads or writes: the one view of the host's call that every path
-/// below works on (the plain path in `fric_`, everything else in `fric_general`). Its address
-/// is never taken on the plain path, so it lives in registers there.
-#[derive(Clone, Copy)]
-struct FricArgs {
-    lm: *mut c_int,
-    tau: *mut f64,
-    ddtddg: *mut f64,
-    ddtddp: *mut f64,
-    dslip: *mut f64,
-    sed: *mut f64,
-    sfd: *mut f64,
-    ddtddt: *mut f64,
-    pnewdt: *mut f64,
-    statev: *mut f64,
-    dgam: *const f64,
-    taulm: *const f64,
-    press: *const f64,
-    dpress: *const f64,
-    dtime: *const f64,
-    noel: *const c_int,
-    ciname: *const c_char,
-    ciname_len: usize,
-    npt: *const c_int,
-    node: *const c_int,
-    coords: *const f64,
-    drot: *const f64,
-    temp: *const f64,
-    nfdir: *const c_int,
-    mcrd: *const c_int,
-    nstatv: *const c_int,
-    chrlngth: *const f64,
-    props: *const f64,
-    nprops: *const c_int,
 }
 
 /// How a read of a host pointer refuses a NULL: quietly (`()`, the fast paths, which then
