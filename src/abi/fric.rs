@@ -76,16 +76,23 @@ mod rate;
     // Not read (the laws need none of them; `DROT` is read only by the damping law in 3-D).
     unread = (ddpddh, slip, kstep, kinc, time, npatch, rcoord, predef, npred, slname, msname,
               slname_len, msname_len),
-    // `fric_` for everything but the plain law, inside the export's boundary (`abi::boundary`:
-    // an error or a panic gets the safe outputs of `FricArgs::fail` and one report). Out of
-    // line and `cold` (code layout and register allocation of the plain path).
-    //
-    // It has `fric_`'s parameter list on purpose: `fric_` ends in a sibling call (a jump, the
-    // arguments left where the host put them). Packing them into one view passed by
-    // reference instead cost the plain path 18–22 instructions per call (the six register
-    // arguments then stay in registers across it; measured 2026-11-26, issue 19) and three
-    // arrays of pointers 37 (docs/performance.md, fourth pass).
-    twin = #[cold] #[inline(never)] fric_general {
+    twin =
+        /// `fric_` for everything but the plain law, inside the export's boundary
+        /// (`abi::boundary`: an error or a panic gets the safe outputs of `FricArgs::fail` and
+        /// one report). Out of line and `cold` (code layout and register allocation of the
+        /// plain path).
+        ///
+        /// It has `fric_`'s parameter list on purpose: `fric_` ends in a sibling call (a jump,
+        /// the arguments left where the host put them). Packing them into one view passed by
+        /// reference instead cost the plain path 18–22 instructions per call (the six register
+        /// arguments then stay in registers across it; measured 2026-11-26, issue 19) and three
+        /// arrays of pointers 37 (docs/performance.md, fourth pass).
+        ///
+        /// # Safety
+        /// As `fric_`.
+        #[cold]
+        #[inline(never)]
+        fric_general {
         let _ = boundary(
             // SAFETY (all three closures): the host's pointers, valid per the contract above.
             || unsafe { args.site() },
