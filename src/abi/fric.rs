@@ -62,6 +62,50 @@ mod rate;
 /// (`DSLIP`, `SED`, `SFD`, `DDTDDT`) may be NULL.
 #[allow(clippy::too_many_arguments)]
 #[unsafe(no_mangle)]
+// Written by the attribute from this parameter list (macros/): the view `FricArgs` (a field
+// per parameter but the `unread` ones), bound to `args` in both functions, and the twin
+// `fric_general`, with the same list, which `fric_` calls when its body does not return.
+#[interfacial_macros::with_twin(
+    view =
+        /// The arguments `fric_` reads or writes: the one view of the host's call that every
+        /// path works on (the plain path in `fric_`, everything else in `fric_general`), one
+        /// field per parameter of `fric_` but the unread ones, same name, same type. Its
+        /// address is never taken on the plain path, so it lives in registers there.
+        #[derive(Clone, Copy)]
+        struct FricArgs as args,
+    // Not read (the laws need none of them; `DROT` is read only by the damping law in 3-D).
+    unread = (ddpddh, slip, kstep, kinc, time, npatch, rcoord, predef, npred, slname, msname,
+              slname_len, msname_len),
+    twin =
+        /// `fric_` for everything but the plain law, inside the export's boundary
+        /// (`abi::boundary`: an error or a panic gets the safe outputs of `FricArgs::fail` and
+        /// one report). Out of line and `cold` (code layout and register allocation of the
+        /// plain path).
+        ///
+        /// It has `fric_`'s parameter list on purpose: `fric_` ends in a sibling call (a jump,
+        /// the arguments left where the host put them). Packing them into one view passed by
+        /// reference instead cost the plain path 18–22 instructions per call (the six register
+        /// arguments then stay in registers across it; measured 2026-11-26, issue 19) and three
+        /// arrays of pointers 37 (docs/performance.md, fourth pass).
+        ///
+        /// # Safety
+        /// As `fric_`.
+        #[cold]
+        #[inline(never)]
+        fric_general {
+        let _ = boundary(
+            // SAFETY (all three closures): the host's pointers, valid per the contract above.
+            || unsafe { args.site() },
+            || {
+                if let Some(payload) = HANDED_OVER.take() {
+                    std::panic::resume_unwind(payload);
+                }
+                unsafe { args.general() }
+            },
+            || unsafe { args.fail() },
+        );
+    },
+)]
 pub unsafe extern "C" fn fric_(
     lm: *mut c_int,
     tau: *mut f64,
@@ -106,163 +150,18 @@ pub unsafe extern "C" fn fric_(
     slname_len: usize,
     msname_len: usize,
 ) {
-    // The plain law's fast path on the view of the arguments it reads; anything else goes
-    // out of line with `fric_`'s own argument list (a sibling call: nothing is copied or
-    // packed on the plain path, docs/performance.md, fourth pass).
-    let fast = FricArgs {
-        lm,
-        tau,
-        ddtddg,
-        ddtddp,
-        dslip,
-        sed,
-        sfd,
-        ddtddt,
-        pnewdt,
-        statev,
-        dgam,
-        taulm,
-        press,
-        dpress,
-        dtime,
-        noel,
-        ciname,
-        ciname_len,
-        npt,
-        node,
-        coords,
-        drot,
-        temp,
-        nfdir,
-        mcrd,
-        nstatv,
-        chrlngth,
-        props,
-        nprops,
-    };
+    // The plain law's fast path on the view `args`; anything else goes out of line to
+    // `fric_general` with `fric_`'s own arguments (the call the attribute writes after the last
+    // statement, a sibling call: nothing is copied or packed on the plain path,
+    // docs/performance.md, fourth pass).
     // SAFETY: the host's pointers, valid per the contract above.
-    match catch_unwind(AssertUnwindSafe(|| unsafe { fast.plain_fast() })) {
+    match catch_unwind(AssertUnwindSafe(|| unsafe { args.plain_fast() })) {
         Ok(true) => return,
         Ok(false) => {}
         // Not answered here: handed to the export's one boundary in `fric_general`, which
         // raises it again before anything else (no retry) and reports it.
         Err(payload) => hand_over(payload),
     }
-    // SAFETY: the host's pointers, passed on unchanged.
-    unsafe {
-        fric_general(
-            lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pnewdt, statev, dgam, taulm, press,
-            dpress, ddpddh, slip, kstep, kinc, time, dtime, noel, ciname, slname, msname, npt,
-            node, npatch, coords, rcoord, drot, temp, predef, nfdir, mcrd, npred, nstatv, chrlngth,
-            props, nprops, ciname_len, slname_len, msname_len,
-        )
-    }
-}
-
-/// `fric_` for everything but the plain law, inside the export's boundary (`abi::boundary`:
-/// an error or a panic gets the safe outputs of [`FricArgs::fail`] and one report). Out of
-/// line and `cold` (code layout and register allocation of the plain path).
-///
-/// It repeats `fric_`'s argument list on purpose: `fric_` ends in a sibling call (a jump, the
-/// arguments left where the host put them). Packing them into one view passed by reference
-/// instead cost the plain path 18–22 instructions per call (the six register arguments then
-/// stay in registers across it; measured 2026-11-26, issue 19) and three arrays of pointers
-/// 37 (docs/performance.md, fourth pass).
-///
-/// # Safety
-/// As `fric_`.
-#[cold]
-#[inline(never)]
-#[allow(clippy::too_many_arguments)]
-unsafe extern "C" fn fric_general(
-    lm: *mut c_int,
-    tau: *mut f64,
-    ddtddg: *mut f64,
-    ddtddp: *mut f64,
-    dslip: *mut f64,
-    sed: *mut f64,
-    sfd: *mut f64,
-    ddtddt: *mut f64,
-    pnewdt: *mut f64,
-    statev: *mut f64,
-    dgam: *const f64,
-    taulm: *const f64,
-    press: *const f64,
-    dpress: *const f64,
-    ddpddh: *const f64,
-    slip: *const f64,
-    kstep: *const c_int,
-    kinc: *const c_int,
-    time: *const f64,
-    dtime: *const f64,
-    noel: *const c_int,
-    ciname: *const c_char,
-    slname: *const c_char,
-    msname: *const c_char,
-    npt: *const c_int,
-    node: *const c_int,
-    npatch: *const c_int,
-    coords: *const f64,
-    rcoord: *const f64,
-    drot: *const f64,
-    temp: *const f64,
-    predef: *const f64,
-    nfdir: *const c_int,
-    mcrd: *const c_int,
-    npred: *const c_int,
-    nstatv: *const c_int,
-    chrlngth: *const f64,
-    props: *const f64,
-    nprops: *const c_int,
-    ciname_len: usize,
-    slname_len: usize,
-    msname_len: usize,
-) {
-    // Not read (the laws need none of them; `DROT` is read only by the damping law in 3-D).
-    let _ = (ddpddh, slip, kstep, kinc, time, npatch, rcoord, predef);
-    let _ = (npred, slname, msname, slname_len, msname_len);
-    let args = FricArgs {
-        lm,
-        tau,
-        ddtddg,
-        ddtddp,
-        dslip,
-        sed,
-        sfd,
-        ddtddt,
-        pnewdt,
-        statev,
-        dgam,
-        taulm,
-        press,
-        dpress,
-        dtime,
-        noel,
-        ciname,
-        ciname_len,
-        npt,
-        node,
-        coords,
-        drot,
-        temp,
-        nfdir,
-        mcrd,
-        nstatv,
-        chrlngth,
-        props,
-        nprops,
-    };
-    let _ = boundary(
-        // SAFETY (all three closures): the host's pointers, valid per the contract above.
-        || unsafe { args.site() },
-        || {
-            if let Some(payload) = HANDED_OVER.take() {
-                std::panic::resume_unwind(payload);
-            }
-            unsafe { args.general() }
-        },
-        || unsafe { args.fail() },
-    );
 }
 
 thread_local! {
@@ -275,42 +174,6 @@ thread_local! {
 #[inline(never)]
 fn hand_over(payload: Box<dyn Any + Send>) {
     HANDED_OVER.set(Some(payload));
-}
-
-/// The arguments `fric_` reads or writes: the one view of the host's call that every path
-/// below works on (the plain path in `fric_`, everything else in `fric_general`). Its address
-/// is never taken on the plain path, so it lives in registers there.
-#[derive(Clone, Copy)]
-struct FricArgs {
-    lm: *mut c_int,
-    tau: *mut f64,
-    ddtddg: *mut f64,
-    ddtddp: *mut f64,
-    dslip: *mut f64,
-    sed: *mut f64,
-    sfd: *mut f64,
-    ddtddt: *mut f64,
-    pnewdt: *mut f64,
-    statev: *mut f64,
-    dgam: *const f64,
-    taulm: *const f64,
-    press: *const f64,
-    dpress: *const f64,
-    dtime: *const f64,
-    noel: *const c_int,
-    ciname: *const c_char,
-    ciname_len: usize,
-    npt: *const c_int,
-    node: *const c_int,
-    coords: *const f64,
-    drot: *const f64,
-    temp: *const f64,
-    nfdir: *const c_int,
-    mcrd: *const c_int,
-    nstatv: *const c_int,
-    chrlngth: *const f64,
-    props: *const f64,
-    nprops: *const c_int,
 }
 
 /// How a read of a host pointer refuses a NULL: quietly (`()`, the fast paths, which then
