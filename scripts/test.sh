@@ -5,12 +5,12 @@ cd "$(dirname "$0")/.."
 scripts/deps.sh
 echo "== cargo fmt / clippy"
 cargo fmt --all -- --check
-cargo clippy --locked --all-targets -- -D warnings
+cargo clippy --locked --workspace --all-targets -- -D warnings
 cargo clippy --locked --all-targets --features calculix -- -D warnings
 echo "== cargo doc (no warnings)"
-RUSTDOCFLAGS=-Dwarnings cargo doc --locked --no-deps
+RUSTDOCFLAGS=-Dwarnings cargo doc --locked --workspace --no-deps
 echo "== Rust tests"
-cargo test --locked
+cargo test --locked --workspace
 echo "== Rust tests of the CalculiX variant (gapcon_ with AREA)"
 cargo test --locked --features calculix --test gapcon_abi --test header --test last_error
 echo "== Rust tests of the single-precision Explicit build (vfric_ with REAL*4, docs/vfric.md)"
