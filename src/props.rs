@@ -9,6 +9,7 @@ use crate::laws::coulomb_extended::{
 };
 use crate::laws::friction_coefficient::CoefficientLaw;
 use crate::laws::friction_table::FrictionTable;
+use crate::switch::Path;
 
 mod adhesive;
 mod coulomb;
@@ -127,12 +128,6 @@ fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
     coulomb_from_entries(e)
 }
 
-#[cfg(test)]
-thread_local! {
-    /// Unit tests: the fast `PROPS` readers decline, see [`force_careful_path`].
-    static CAREFUL_PATH_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
-}
-
 /// Unit tests only: while `on`, every fast `PROPS` reader of this thread declines
 /// ([`fast_plain_coulomb`], [`fast_extended_coulomb`], [`fast_decay_lean`], the fast
 /// layouts of [`friction_law`], the adhesive fast path), so every call of the entry points
@@ -141,19 +136,12 @@ thread_local! {
 /// crate the switch does not exist and the readers test a constant `false`.
 #[cfg(test)]
 pub(crate) fn force_careful_path(on: bool) {
-    CAREFUL_PATH_ONLY.with(|c| c.set(on));
+    crate::switch::force(Path::Careful, on);
 }
 
 #[inline(always)]
 fn careful_path_only() -> bool {
-    #[cfg(test)]
-    {
-        CAREFUL_PATH_ONLY.with(std::cell::Cell::get)
-    }
-    #[cfg(not(test))]
-    {
-        false
-    }
+    crate::switch::forced(Path::Careful)
 }
 
 /// Top bit clear exactly when 0 ≤ v < ∞: adding +0 turns −0 into +0; after that a value is

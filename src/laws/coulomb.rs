@@ -966,6 +966,7 @@ fn overflowed() -> LawError {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::testing::XorShift;
 
     fn law() -> Coulomb {
         Coulomb::new(0.5)
@@ -1163,13 +1164,11 @@ mod tests {
 
     /// A value anywhere in the f64 range (both signs, subnormals, near f64::MAX), or zero, or an
     /// ordinary one.
-    fn wide(state: &mut u64) -> f64 {
-        *state ^= *state << 13;
-        *state ^= *state >> 7;
-        *state ^= *state << 17;
-        let u = (*state >> 11) as f64 / (1u64 << 53) as f64;
-        let sign = if *state & 1 == 0 { 1.0 } else { -1.0 };
-        match *state % 4 {
+    fn wide(rng: &mut XorShift) -> f64 {
+        let bits = rng.bits();
+        let u = (bits >> 11) as f64 / (1u64 << 53) as f64;
+        let sign = if bits & 1 == 0 { 1.0 } else { -1.0 };
+        match bits % 4 {
             0 => sign * 2f64.powf(-1074.0 + u * 2097.9),
             1 => 0.0,
             _ => sign * 2.0 * u,
@@ -1182,16 +1181,16 @@ mod tests {
     /// same through `fric_`; this runs the whole range in every `cargo test`.)
     #[test]
     fn elastic_stick_answers_are_finite_over_the_whole_range() {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut rng = XorShift(0x9e37_79b9_7f4a_7c15);
         let mut answered = [0usize; 2];
         for case in 0..200_000 {
-            let mu = wide(&mut state).abs();
+            let mu = wide(&mut rng).abs();
             let tau_max = if case % 3 == 0 {
-                wide(&mut state).abs()
+                wide(&mut rng).abs()
             } else {
                 0.0
             };
-            let gamma = wide(&mut state).abs();
+            let gamma = wide(&mut rng).abs();
             let Ok(law) = Coulomb::new(mu).and_then(|l| {
                 let l = l.with_critical_slip_absolute(if gamma > 0.0 { gamma } else { 1e-3 })?;
                 if tau_max > 0.0 {
@@ -1203,11 +1202,11 @@ mod tests {
                 continue;
             };
             let inc = Increment::<2> {
-                tau: [wide(&mut state), wide(&mut state)],
-                dgam: [wide(&mut state), wide(&mut state)],
-                pressure: wide(&mut state),
-                dpressure: wide(&mut state),
-                dtime: wide(&mut state).abs(),
+                tau: [wide(&mut rng), wide(&mut rng)],
+                dgam: [wide(&mut rng), wide(&mut rng)],
+                pressure: wide(&mut rng),
+                dpressure: wide(&mut rng),
+                dtime: wide(&mut rng).abs(),
                 ..Increment::default()
             };
             let start = CoulombState::default();
@@ -1298,11 +1297,11 @@ mod tests {
     #[test]
     fn one_pass_tier_gives_the_careful_tiers_bits_or_declines() {
         fn run<const N: usize>(seed: u64) -> [usize; 3] {
-            let mut state = seed;
+            let mut rng = XorShift(seed);
             // [both answered, only the careful tier, neither]
             let mut seen = [0usize; 3];
             for case in 0..100_000 {
-                let mut draw = || wide(&mut state);
+                let mut draw = || wide(&mut rng);
                 let tau_max = if case % 3 == 0 { draw().abs() } else { 0.0 };
                 let Some(law) = law_of(draw().abs(), draw().abs(), tau_max) else {
                     continue;
@@ -1391,13 +1390,8 @@ mod tests {
 
         // Ordinary increments (SI units, γ_crit from μm to cm, stick and slip, loading and
         // unloading): always the one-pass tier.
-        let mut state = 0x5851_f42d_4c95_7f2d_u64;
-        let mut uniform = move |lo: f64, hi: f64| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            lo + (hi - lo) * ((state >> 11) as f64 / (1u64 << 53) as f64)
-        };
+        let mut rng = XorShift(0x5851_f42d_4c95_7f2d);
+        let mut uniform = move |lo: f64, hi: f64| lo + (hi - lo) * rng.unit();
         for case in 0..20_000 {
             let gamma_crit = 10f64.powf(uniform(-6.0, -2.0));
             let tau_max = if case % 2 == 0 {

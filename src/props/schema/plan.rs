@@ -343,21 +343,7 @@ mod tests {
     /// [`positive_flag`] against the plain comparisons, at the edges of 0 < v < ∞.
     #[test]
     fn positive_flag_is_zero_to_infinity_open() {
-        for v in [
-            0.0,
-            -0.0,
-            5e-324,
-            -5e-324,
-            f64::MIN_POSITIVE,
-            1.0,
-            f64::MAX,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NAN,
-            -f64::NAN,
-            -1.0,
-            f64::MIN,
-        ] {
+        for v in crate::testing::EDGE_VALUES {
             let expected = v.is_finite() && v > 0.0;
             assert_eq!(positive_flag(v) >> 63 == 0, expected, "{v:e}");
         }
