@@ -276,6 +276,43 @@ impl<const N: usize> Traction<N> {
             sfd: t * slip_eq,
         }
     }
+
+    /// An answer without slip (elastic or viscous stick, a bonded shear): Δγ^sl = 0 and
+    /// `SFD` = 0; the stress, its tangents and `SED` as the caller's law has them.
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn sticking(
+        tau: [f64; N],
+        ddtddg: [[f64; N]; N],
+        ddtddp: [f64; N],
+        sed: f64,
+    ) -> Self {
+        Traction {
+            tau,
+            ddtddg,
+            ddtddp,
+            dslip: [0.0; N],
+            sed,
+            sfd: 0.0,
+        }
+    }
+
+    /// An answer without stress (no friction to carry it, or an open interface): τ = 0,
+    /// ∂τ/∂Δγ = 0, nothing stored or dissipated; the motion counted as slip `dslip` and
+    /// ∂τ/∂p (the strength's right derivative at p = 0 where friction starts) as the caller
+    /// has them.
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn stress_free(ddtddp: [f64; N], dslip: [f64; N]) -> Self {
+        Traction {
+            tau: [0.0; N],
+            ddtddg: [[0.0; N]; N],
+            ddtddp,
+            dslip,
+            sed: 0.0,
+            sfd: 0.0,
+        }
+    }
 }
 
 /// The answer of the law for one increment.
@@ -821,15 +858,13 @@ impl<const N: usize> Trial<N> {
     fn stick(&self, stiffness: f64, tau: [f64; N]) -> StickAnswer<N> {
         let pressure_factor = self.dtau_crit_dp / self.gamma_crit;
         StickAnswer {
-            traction: Traction {
+            traction: Traction::sticking(
                 tau,
-                ddtddg: diagonal(stiffness),
-                ddtddp: scale(&self.predictor, pressure_factor),
-                dslip: [0.0; N],
+                diagonal(stiffness),
+                scale(&self.predictor, pressure_factor),
                 // k_s|γ^pr|²/2 as τ·γ^pr/2: no square root in stick.
-                sed: 0.5 * dot(&tau, &self.predictor),
-                sfd: 0.0,
-            },
+                0.5 * dot(&tau, &self.predictor),
+            ),
             ddtddp_factor: pressure_factor,
         }
     }

@@ -1098,14 +1098,7 @@ fn frictionless_slip<const N: usize>(
     let n = unit(predictor, g);
     let slip_eq = g - gamma_crit;
     ScaledTraction {
-        traction: Traction {
-            tau: [0.0; N],
-            ddtddg: [[0.0; N]; N],
-            ddtddp: scale(&n, dcrit_dp),
-            dslip: scale(&n, slip_eq),
-            sed: 0.0,
-            sfd: 0.0,
-        },
+        traction: Traction::stress_free(scale(&n, dcrit_dp), scale(&n, slip_eq)),
         ddtdtheta: [0.0; N],
         slip_eq,
         iterations: 0,
@@ -1129,14 +1122,12 @@ fn stick_answer<const N: usize>(
         ddtdtheta[i] += stiffness * d_elastic_dtheta[i];
     }
     ScaledTraction {
-        traction: Traction {
-            tau: on_strength(predictor, beyond, stiffness, strength),
-            ddtddg: diagonal(stiffness),
-            ddtddp: scale(predictor, stiffness_p),
-            dslip: [0.0; N],
+        traction: Traction::sticking(
+            on_strength(predictor, beyond, stiffness, strength),
+            diagonal(stiffness),
+            scale(predictor, stiffness_p),
             sed,
-            sfd: 0.0,
-        },
+        ),
         ddtdtheta,
         slip_eq: 0.0,
         iterations: 0,

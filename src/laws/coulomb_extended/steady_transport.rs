@@ -135,14 +135,12 @@ impl ExtendedCoulomb {
         if v <= rate_crit {
             // Viscous stick: τ̄ = κ_s γ̇^pr, dτ̄/dΔγ̄ = κ_s/Δt.
             return Ok(ScaledTraction {
-                traction: Traction {
-                    tau: scale(&predictor, viscosity),
-                    ddtddg: diagonal(viscosity / dt),
-                    ddtddp: scale(&predictor, k.d_pressure / rate_crit),
-                    dslip: [0.0; N],
-                    sed: 0.0,
-                    sfd: 0.0,
-                },
+                traction: Traction::sticking(
+                    scale(&predictor, viscosity),
+                    diagonal(viscosity / dt),
+                    scale(&predictor, k.d_pressure / rate_crit),
+                    0.0,
+                ),
                 ddtdtheta: scale(&predictor, k.d_temperature / rate_crit),
                 slip_eq: 0.0,
                 iterations: 0,
