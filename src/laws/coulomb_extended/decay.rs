@@ -129,23 +129,16 @@ impl ExtendedCoulomb {
             if stiffness <= 0.0 && g > gamma_crit {
                 frictionless_slip(&predictor, g, gamma_crit, k.d_pressure)
             } else {
-                let sed = if phi_k != 1.0 {
-                    // As the next increment reads τ: at rest (see `rest_energy`).
-                    rest_energy(
-                        stiffness * g,
-                        (mbar * factor[0] * p).min(tau_max),
-                        gamma_crit,
-                    )
-                } else {
-                    0.5 * stiffness * g * g
-                };
+                // As the next increment reads τ: at rest (see `rest_energy`).
+                let rest = (phi_k != 1.0).then(|| (mbar * factor[0] * p).min(tau_max));
                 stick_answer(
                     &predictor,
+                    g,
                     &d_elastic_dtheta,
-                    following && g > gamma_crit,
-                    k.value,
-                    [stiffness, stiffness_p, stiffness_theta],
-                    sed,
+                    following,
+                    gamma_crit,
+                    &k,
+                    rest,
                 )
             }
         } else {
