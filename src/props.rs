@@ -9,6 +9,7 @@ use crate::laws::coulomb_extended::{
 };
 use crate::laws::friction_coefficient::CoefficientLaw;
 use crate::laws::friction_table::FrictionTable;
+use crate::switch::Path;
 
 mod adhesive;
 mod coulomb;
@@ -127,12 +128,6 @@ fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
     coulomb_from_entries(e)
 }
 
-#[cfg(test)]
-thread_local! {
-    /// Unit tests: the fast `PROPS` readers decline, see [`force_careful_path`].
-    static CAREFUL_PATH_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
-}
-
 /// Unit tests only: while `on`, every fast `PROPS` reader of this thread declines
 /// ([`fast_plain_coulomb`], [`fast_extended_coulomb`], [`fast_decay_lean`], the fast
 /// layouts of [`friction_law`], the adhesive fast path), so every call of the entry points
@@ -141,19 +136,12 @@ thread_local! {
 /// crate the switch does not exist and the readers test a constant `false`.
 #[cfg(test)]
 pub(crate) fn force_careful_path(on: bool) {
-    CAREFUL_PATH_ONLY.with(|c| c.set(on));
+    crate::switch::force(Path::Careful, on);
 }
 
 #[inline(always)]
 fn careful_path_only() -> bool {
-    #[cfg(test)]
-    {
-        CAREFUL_PATH_ONLY.with(std::cell::Cell::get)
-    }
-    #[cfg(not(test))]
-    {
-        false
-    }
+    crate::switch::forced(Path::Careful)
 }
 
 /// Top bit clear exactly when 0 ≤ v < ∞: adding +0 turns −0 into +0; after that a value is
@@ -820,9 +808,8 @@ mod tests {
     /// and the tolerance), value by value in every position, against the checked path.
     #[test]
     fn fast_path_range_edges_agree_with_checked_path() {
-        let edges = RANGE_EDGES;
         for position in [1, 3, 4, 5] {
-            for v in edges {
+            for v in range_edges() {
                 let mut props = vec![1.0, 0.3, 0.0, 0.0, 1e-3, 0.0, 0.0];
                 props[position] = v;
                 let fast = coulomb_fast(&props);
@@ -845,35 +832,28 @@ mod tests {
         }
     }
 
+    /// Values at the edges of every range test of the `PROPS` parsers: the f64 edges (signed
+    /// zeros, the smallest normal and subnormals, ±f64::MAX, infinities, NaNs of both signs)
+    /// and the code values 0.5, 2 and 3.
+    fn range_edges() -> impl Iterator<Item = f64> {
+        crate::testing::EDGE_VALUES
+            .into_iter()
+            .chain([0.5, 2.0, 3.0])
+    }
+
+    /// A decay-law layout (μ_s = 0.6, γ_crit = 10⁻³, μ_k = 0.3, d_c = 4) of the whole law-1 length.
+    fn decay_layout() -> [f64; COULOMB_EXTENDED_NPROPS] {
+        let mut decay = [0.0; COULOMB_EXTENDED_NPROPS];
+        decay[..10].copy_from_slice(&[1.0, 0.6, 0.0, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.3, 4.0]);
+        decay
+    }
+
     /// The edges of the extended fast path's one-test ranges (PROPS(2, 4, 5, 6, 11): 0 ≤ v < ∞;
     /// PROPS(12, 13): finite) and of its "PROPS(14..19) all ±0" test, value by value in every
     /// position, on a decay-law layout and on a damping layout, against the checked path.
-    /// Values at the edges of every range test of the `PROPS` parsers (signed zeros, the
-    /// smallest normal and subnormal, f64::MAX, the code values, infinities, both NaNs).
-    const RANGE_EDGES: [f64; 16] = [
-        0.0,
-        -0.0,
-        f64::MIN_POSITIVE,
-        5e-324,
-        f64::MAX,
-        0.5,
-        1.0,
-        2.0,
-        3.0,
-        -5e-324,
-        -1.0,
-        f64::MIN,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::NAN,
-        -f64::NAN,
-    ];
-
     #[test]
     fn extended_fast_path_range_edges_agree_with_checked_path() {
-        let edges = RANGE_EDGES;
-        let mut decay = [0.0; COULOMB_EXTENDED_NPROPS];
-        decay[..10].copy_from_slice(&[1.0, 0.6, 0.0, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.3, 4.0]);
+        let decay = decay_layout();
         let mut damped = decay;
         damped[16] = 2.0;
         let mut spinning = [0.0; COULOMB_EXTENDED_NPROPS];
@@ -881,7 +861,7 @@ mod tests {
         spinning[13] = 10.0;
         for layout in [decay, damped, spinning] {
             for position in 1..COULOMB_EXTENDED_NPROPS {
-                for v in edges {
+                for v in range_edges() {
                     let mut props = layout;
                     props[position] = v;
                     let fast = coulomb_extended_fast(&props);
@@ -936,9 +916,7 @@ mod tests {
     /// against the checked parser.
     #[test]
     fn lean_decay_parser_range_edges_agree_with_checked_path() {
-        let edges = RANGE_EDGES;
-        let mut decay = [0.0; COULOMB_EXTENDED_NPROPS];
-        decay[..10].copy_from_slice(&[1.0, 0.6, 0.0, 0.0, 1e-3, 0.0, 0.0, 1.0, 0.3, 4.0]);
+        let decay = decay_layout();
         let mut full = decay;
         full[2] = 0.6;
         full[3] = 50.0;
@@ -951,7 +929,7 @@ mod tests {
         for layout in [decay, full] {
             assert!(fast_decay_lean(&layout).is_some());
             for position in 0..COULOMB_EXTENDED_NPROPS {
-                for v in edges {
+                for v in range_edges() {
                     let mut props = layout;
                     props[position] = v;
                     if let Err(e) = check_lean_against_checked(&props) {

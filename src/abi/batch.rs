@@ -340,29 +340,13 @@ fn chunks_dispatch<const N: usize>(
     tally: &mut Tally,
 ) -> usize {
     #[cfg(target_arch = "x86_64")]
-    if !baseline_only() && std::arch::is_x86_feature_detected!("avx2") {
+    if !crate::switch::forced(crate::switch::Path::Baseline)
+        && std::arch::is_x86_feature_detected!("avx2")
+    {
         // SAFETY: the processor supports AVX2 (checked just above).
         return unsafe { chunks_avx2::<N>(kernel, law, dtime, v, tally) };
     }
     chunks::<N>(kernel, law, dtime, v, tally)
-}
-
-#[cfg(test)]
-thread_local! {
-    /// Unit tests: run the baseline build of [`chunks`] even on an AVX2 processor.
-    static BASELINE_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
-}
-
-#[inline(always)]
-fn baseline_only() -> bool {
-    #[cfg(test)]
-    {
-        BASELINE_ONLY.with(std::cell::Cell::get)
-    }
-    #[cfg(not(test))]
-    {
-        false
-    }
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -806,18 +790,15 @@ unsafe fn optional_mut<'a>(p: *mut f64, len: usize) -> Option<&'a mut [f64]> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::switch::{Path, force};
+    use crate::testing::XorShift;
 
     /// The baseline (SSE2) and AVX2 builds of the chunk loop give the same bits; the
     /// integration tests compare the build the processor selects with `fric_` per point.
     #[test]
     fn baseline_and_avx2_chunks_agree() {
-        let mut seed = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut rng = XorShift(0x2545_F491_4F6C_DD1D);
+        let mut next = move || rng.unit() * 2.0 - 1.0;
         for nfdir in [1usize, 2] {
             let n = 103;
             let random = |k: usize, s: f64, next: &mut dyn FnMut() -> f64| -> Vec<f64> {
@@ -832,7 +813,7 @@ mod tests {
             let props = [1.0, 0.3, 0.0, 12.0, 0.0, 0.002, 0.0];
             let mut results = Vec::new();
             for baseline in [true, false] {
-                BASELINE_ONLY.with(|b| b.set(baseline));
+                force(Path::Baseline, baseline);
                 let mut lm = vec![0; n];
                 let mut tau = tau0.clone();
                 let mut statev = statev0.clone();
@@ -869,7 +850,7 @@ mod tests {
                     .collect();
                 results.push(all);
             }
-            BASELINE_ONLY.with(|b| b.set(false));
+            force(Path::Baseline, false);
             assert_eq!(results[0], results[1], "NFDIR {nfdir}");
         }
     }

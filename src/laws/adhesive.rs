@@ -431,14 +431,12 @@ impl Adhesive {
             0.5 * tau_eq * (tau_eq * (gamma_crit / tau_s))
         };
         Slide {
-            traction: Traction {
-                tau: scale(predictor, k_s),
-                ddtddg: diagonal(k_s),
-                ddtddp: scale(predictor, dtau_k_dp / gamma_crit),
-                dslip: [0.0; N],
+            traction: Traction::sticking(
+                scale(predictor, k_s),
+                diagonal(k_s),
+                scale(predictor, dtau_k_dp / gamma_crit),
                 sed,
-                sfd: 0.0,
-            },
+            ),
             branch: SlideBranch::Stick,
             slip_rate: 0.0,
             stick_stiffness: k_s,
@@ -629,14 +627,7 @@ impl Adhesive {
             0.0
         };
         Slide {
-            traction: Traction {
-                tau: [0.0; N],
-                ddtddg: [[0.0; N]; N],
-                ddtddp,
-                dslip,
-                sed: 0.0,
-                sfd: 0.0,
-            },
+            traction: Traction::stress_free(ddtddp, dslip),
             branch,
             slip_rate,
             stick_stiffness: 0.0,

@@ -332,14 +332,12 @@ impl AdhesiveInterface {
         InterfaceResponse {
             normal_stress: -tension,
             dp_dh: k_n,
-            shear: Traction {
-                tau: shear,
+            shear: Traction::sticking(
+                shear,
                 ddtddg,
-                ddtddp: [0.0; N],
-                dslip: [0.0; N],
-                sed: 0.5 * k_s * norm(&predictor).powi(2),
-                sfd: 0.0,
-            },
+                [0.0; N],
+                0.5 * k_s * norm(&predictor).powi(2),
+            ),
             sed: 0.5 * k_s * norm(&predictor).powi(2) + 0.5 * tension * tension / k_n,
             state: InterfaceState {
                 accumulated_slip: state.accumulated_slip,
@@ -357,14 +355,7 @@ impl AdhesiveInterface {
         InterfaceResponse {
             normal_stress: 0.0,
             dp_dh: 0.0,
-            shear: Traction {
-                tau: [0.0; N],
-                ddtddg: [[0.0; N]; N],
-                ddtddp: [0.0; N],
-                dslip: [0.0; N],
-                sed: 0.0,
-                sfd: 0.0,
-            },
+            shear: Traction::stress_free([0.0; N], [0.0; N]),
             sed: 0.0,
             state: InterfaceState {
                 accumulated_slip: state.accumulated_slip,

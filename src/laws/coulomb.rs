@@ -276,6 +276,43 @@ impl<const N: usize> Traction<N> {
             sfd: t * slip_eq,
         }
     }
+
+    /// An answer without slip (elastic or viscous stick, a bonded shear): Δγ^sl = 0 and
+    /// `SFD` = 0; the stress, its tangents and `SED` as the caller's law has them.
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn sticking(
+        tau: [f64; N],
+        ddtddg: [[f64; N]; N],
+        ddtddp: [f64; N],
+        sed: f64,
+    ) -> Self {
+        Traction {
+            tau,
+            ddtddg,
+            ddtddp,
+            dslip: [0.0; N],
+            sed,
+            sfd: 0.0,
+        }
+    }
+
+    /// An answer without stress (no friction to carry it, or an open interface): τ = 0,
+    /// ∂τ/∂Δγ = 0, nothing stored or dissipated; the motion counted as slip `dslip` and
+    /// ∂τ/∂p (the strength's right derivative at p = 0 where friction starts) as the caller
+    /// has them.
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn stress_free(ddtddp: [f64; N], dslip: [f64; N]) -> Self {
+        Traction {
+            tau: [0.0; N],
+            ddtddg: [[0.0; N]; N],
+            ddtddp,
+            dslip,
+            sed: 0.0,
+            sfd: 0.0,
+        }
+    }
 }
 
 /// The answer of the law for one increment.
@@ -821,15 +858,13 @@ impl<const N: usize> Trial<N> {
     fn stick(&self, stiffness: f64, tau: [f64; N]) -> StickAnswer<N> {
         let pressure_factor = self.dtau_crit_dp / self.gamma_crit;
         StickAnswer {
-            traction: Traction {
+            traction: Traction::sticking(
                 tau,
-                ddtddg: diagonal(stiffness),
-                ddtddp: scale(&self.predictor, pressure_factor),
-                dslip: [0.0; N],
+                diagonal(stiffness),
+                scale(&self.predictor, pressure_factor),
                 // k_s|γ^pr|²/2 as τ·γ^pr/2: no square root in stick.
-                sed: 0.5 * dot(&tau, &self.predictor),
-                sfd: 0.0,
-            },
+                0.5 * dot(&tau, &self.predictor),
+            ),
             ddtddp_factor: pressure_factor,
         }
     }
@@ -966,6 +1001,7 @@ fn overflowed() -> LawError {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::testing::XorShift;
 
     fn law() -> Coulomb {
         Coulomb::new(0.5)
@@ -1163,13 +1199,11 @@ mod tests {
 
     /// A value anywhere in the f64 range (both signs, subnormals, near f64::MAX), or zero, or an
     /// ordinary one.
-    fn wide(state: &mut u64) -> f64 {
-        *state ^= *state << 13;
-        *state ^= *state >> 7;
-        *state ^= *state << 17;
-        let u = (*state >> 11) as f64 / (1u64 << 53) as f64;
-        let sign = if *state & 1 == 0 { 1.0 } else { -1.0 };
-        match *state % 4 {
+    fn wide(rng: &mut XorShift) -> f64 {
+        let bits = rng.bits();
+        let u = (bits >> 11) as f64 / (1u64 << 53) as f64;
+        let sign = if bits & 1 == 0 { 1.0 } else { -1.0 };
+        match bits % 4 {
             0 => sign * 2f64.powf(-1074.0 + u * 2097.9),
             1 => 0.0,
             _ => sign * 2.0 * u,
@@ -1182,16 +1216,16 @@ mod tests {
     /// same through `fric_`; this runs the whole range in every `cargo test`.)
     #[test]
     fn elastic_stick_answers_are_finite_over_the_whole_range() {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut rng = XorShift(0x9e37_79b9_7f4a_7c15);
         let mut answered = [0usize; 2];
         for case in 0..200_000 {
-            let mu = wide(&mut state).abs();
+            let mu = wide(&mut rng).abs();
             let tau_max = if case % 3 == 0 {
-                wide(&mut state).abs()
+                wide(&mut rng).abs()
             } else {
                 0.0
             };
-            let gamma = wide(&mut state).abs();
+            let gamma = wide(&mut rng).abs();
             let Ok(law) = Coulomb::new(mu).and_then(|l| {
                 let l = l.with_critical_slip_absolute(if gamma > 0.0 { gamma } else { 1e-3 })?;
                 if tau_max > 0.0 {
@@ -1203,11 +1237,11 @@ mod tests {
                 continue;
             };
             let inc = Increment::<2> {
-                tau: [wide(&mut state), wide(&mut state)],
-                dgam: [wide(&mut state), wide(&mut state)],
-                pressure: wide(&mut state),
-                dpressure: wide(&mut state),
-                dtime: wide(&mut state).abs(),
+                tau: [wide(&mut rng), wide(&mut rng)],
+                dgam: [wide(&mut rng), wide(&mut rng)],
+                pressure: wide(&mut rng),
+                dpressure: wide(&mut rng),
+                dtime: wide(&mut rng).abs(),
                 ..Increment::default()
             };
             let start = CoulombState::default();
@@ -1298,11 +1332,11 @@ mod tests {
     #[test]
     fn one_pass_tier_gives_the_careful_tiers_bits_or_declines() {
         fn run<const N: usize>(seed: u64) -> [usize; 3] {
-            let mut state = seed;
+            let mut rng = XorShift(seed);
             // [both answered, only the careful tier, neither]
             let mut seen = [0usize; 3];
             for case in 0..100_000 {
-                let mut draw = || wide(&mut state);
+                let mut draw = || wide(&mut rng);
                 let tau_max = if case % 3 == 0 { draw().abs() } else { 0.0 };
                 let Some(law) = law_of(draw().abs(), draw().abs(), tau_max) else {
                     continue;
@@ -1391,13 +1425,8 @@ mod tests {
 
         // Ordinary increments (SI units, γ_crit from μm to cm, stick and slip, loading and
         // unloading): always the one-pass tier.
-        let mut state = 0x5851_f42d_4c95_7f2d_u64;
-        let mut uniform = move |lo: f64, hi: f64| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            lo + (hi - lo) * ((state >> 11) as f64 / (1u64 << 53) as f64)
-        };
+        let mut rng = XorShift(0x5851_f42d_4c95_7f2d);
+        let mut uniform = move |lo: f64, hi: f64| lo + (hi - lo) * rng.unit();
         for case in 0..20_000 {
             let gamma_crit = 10f64.powf(uniform(-6.0, -2.0));
             let tau_max = if case % 2 == 0 {

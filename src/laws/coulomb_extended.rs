@@ -284,6 +284,20 @@ struct ScaledTraction<const N: usize> {
     iterations: u32,
 }
 
+impl<const N: usize> ScaledTraction<N> {
+    /// An answer in closed form (no iteration): stick, frictionless slip, exact stick and
+    /// steady transport's viscous answers.
+    #[inline(always)]
+    fn closed_form(traction: Traction<N>, ddtdtheta: [f64; N], slip_eq: f64) -> Self {
+        ScaledTraction {
+            traction,
+            ddtdtheta,
+            slip_eq,
+            iterations: 0,
+        }
+    }
+}
+
 impl ExtendedCoulomb {
     /// The extended law with everything off: behaves exactly as `base`.
     #[must_use]
@@ -845,22 +859,16 @@ impl ExtendedCoulomb {
             if stiffness <= 0.0 && g > gamma_crit {
                 return Ok(frictionless_slip(&predictor, g, gamma_crit, k.d_pressure));
             }
-            let sed = if following && start_rate > 0.0 {
-                rest_energy(
-                    stiffness * g,
-                    self.critical(mbar, 0.0, p, theta).value,
-                    gamma_crit,
-                )
-            } else {
-                0.5 * stiffness * g * g
-            };
+            let rest =
+                (following && start_rate > 0.0).then(|| self.critical(mbar, 0.0, p, theta).value);
             return Ok(stick_answer(
                 &predictor,
+                g,
                 &d_elastic_dtheta,
-                following && g > gamma_crit,
-                k.value,
-                [stiffness, stiffness_p, stiffness_theta],
-                sed,
+                following,
+                gamma_crit,
+                &k,
+                rest,
             ));
         }
 
@@ -1059,8 +1067,8 @@ impl ExtendedCoulomb {
             }
         }
         let tau = scale(&n, t);
-        Some(ScaledTraction {
-            traction: Traction {
+        Some(ScaledTraction::closed_form(
+            Traction {
                 tau,
                 ddtddg,
                 ddtddp: scale(&n, crit.d_pressure),
@@ -1068,10 +1076,9 @@ impl ExtendedCoulomb {
                 sed: 0.0,
                 sfd: dot(&tau, &s.dgam).max(0.0),
             },
-            ddtdtheta: scale(&n, crit.d_temperature),
+            scale(&n, crit.d_temperature),
             slip_eq,
-            iterations: 0,
-        })
+        ))
     }
 }
 
@@ -1097,50 +1104,50 @@ fn frictionless_slip<const N: usize>(
 ) -> ScaledTraction<N> {
     let n = unit(predictor, g);
     let slip_eq = g - gamma_crit;
-    ScaledTraction {
-        traction: Traction {
-            tau: [0.0; N],
-            ddtddg: [[0.0; N]; N],
-            ddtddp: scale(&n, dcrit_dp),
-            dslip: scale(&n, slip_eq),
-            sed: 0.0,
-            sfd: 0.0,
-        },
-        ddtdtheta: [0.0; N],
+    ScaledTraction::closed_form(
+        Traction::stress_free(scale(&n, dcrit_dp), scale(&n, slip_eq)),
+        [0.0; N],
         slip_eq,
-        iterations: 0,
-    }
+    )
 }
 
-/// Elastic stick (Eq. 5.2.3-1) in scaled variables: τ̄ = k̄_s·γ̄^pr ([`on_strength`] with
-/// `beyond`), ∂τ̄/∂Δγ̄ = k̄_s·δ, ∂τ̄/∂p = γ̄^pr·∂k̄_s/∂p and ∂τ̄/∂θ̄ = γ̄^pr·∂k̄_s/∂θ̄ + k̄_s·∂γ̄^el/∂θ̄
-/// (`d_elastic_dtheta`), from `k_s` = (k̄_s, ∂k̄_s/∂p, ∂k̄_s/∂θ̄); `sed` as the caller reads it.
+/// Elastic stick (Eq. 5.2.3-1) in scaled variables, from the predictor γ̄^pr (|γ̄^pr| = `g`) and
+/// k̄_s = τ̄_crit(γ̇_k, p, θ̄)/γ_crit with `k` = τ̄_crit and its partials: τ̄ = k̄_s·γ̄^pr
+/// ([`on_strength`], on the strength beyond γ_crit when `following`), ∂τ̄/∂Δγ̄ = k̄_s·δ,
+/// ∂τ̄/∂p = γ̄^pr·∂k̄_s/∂p and ∂τ̄/∂θ̄ = γ̄^pr·∂k̄_s/∂θ̄ + k̄_s·∂γ̄^el/∂θ̄ (`d_elastic_dtheta`).
+/// `SED` = ½k̄_s|γ̄^pr|², or with `rest` = Some(τ̄_crit at rest) as the next increment reads
+/// τ̄ ([`rest_energy`]: the point ends at rest but k̄_s is not the rate-free stiffness).
 #[inline(always)]
 fn stick_answer<const N: usize>(
     predictor: &[f64; N],
+    g: f64,
     d_elastic_dtheta: &[f64; N],
-    beyond: bool,
-    strength: f64,
-    [stiffness, stiffness_p, stiffness_theta]: [f64; 3],
-    sed: f64,
+    following: bool,
+    gamma_crit: f64,
+    k: &Critical,
+    rest: Option<f64>,
 ) -> ScaledTraction<N> {
+    let stiffness = k.value / gamma_crit;
+    let (stiffness_p, stiffness_theta) = (k.d_pressure / gamma_crit, k.d_temperature / gamma_crit);
+    let sed = match rest {
+        Some(rest_strength) => rest_energy(stiffness * g, rest_strength, gamma_crit),
+        None => 0.5 * stiffness * g * g,
+    };
+    let beyond = following && g > gamma_crit;
     let mut ddtdtheta = scale(predictor, stiffness_theta);
     for i in 0..N {
         ddtdtheta[i] += stiffness * d_elastic_dtheta[i];
     }
-    ScaledTraction {
-        traction: Traction {
-            tau: on_strength(predictor, beyond, stiffness, strength),
-            ddtddg: diagonal(stiffness),
-            ddtddp: scale(predictor, stiffness_p),
-            dslip: [0.0; N],
+    ScaledTraction::closed_form(
+        Traction::sticking(
+            on_strength(predictor, beyond, stiffness, k.value),
+            diagonal(stiffness),
+            scale(predictor, stiffness_p),
             sed,
-            sfd: 0.0,
-        },
+        ),
         ddtdtheta,
-        slip_eq: 0.0,
-        iterations: 0,
-    }
+        0.0,
+    )
 }
 
 /// ∂τ̄/∂θ̄ of the slip answer τ̄ = t·n: through the start elastic slip v = ∂γ̄^pr/∂θ̄, which turns

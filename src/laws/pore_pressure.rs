@@ -389,23 +389,7 @@ mod tests {
 
     #[test]
     fn positive_finite_is_the_two_comparisons() {
-        let nan_negative = f64::from_bits(f64::NAN.to_bits() | (1 << 63));
-        for x in [
-            0.0,
-            -0.0,
-            5e-324,
-            -5e-324,
-            f64::MIN_POSITIVE,
-            1.0,
-            -1.0,
-            f64::MAX,
-            f64::MIN,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NAN,
-            nan_negative,
-            f64::from_bits(0x7FF0_0000_0000_0001),
-        ] {
+        for x in crate::testing::EDGE_VALUES {
             assert_eq!(positive_finite(x), x > 0.0 && x.is_finite(), "{x:e}");
         }
     }

@@ -266,15 +266,9 @@ mod tests {
     /// f64 range, with bounds put near |v| on purpose.
     #[test]
     fn length_beyond_agrees_with_the_norm_up_to_rounding() {
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut rng = crate::testing::XorShift(0x2545_f491_4f6c_dd1d);
         let mut wide = || {
-            let bits = next();
+            let bits = rng.bits();
             let exponent = (bits >> 53) % 2046 + 1;
             f64::from_bits((exponent << 52) | (bits & ((1 << 52) - 1)))
                 * if bits & (1 << 52) == 0 { 1.0 } else { -1.0 }

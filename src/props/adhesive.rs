@@ -516,21 +516,11 @@ mod tests {
         }
     }
 
-    /// The table is well formed: entries numbered in order, a required entry never after an
-    /// optional one, every "0 / absent" value valid (the fast paths read absent entries as
-    /// 0 and test only the given ones), the pins of the special case inside each entry's class.
+    /// The table is well formed (`Layout::assert_well_formed`), and the pins of the special
+    /// case lie inside each entry's class.
     #[test]
     fn the_schema_is_consistent() {
-        let mut optional_seen = false;
-        for (i, e) in ADHESIVE.entries.iter().enumerate() {
-            assert_eq!(e.index, i + 1, "{e:?}");
-            let required = matches!(e.default, Default::Required);
-            assert!(!(required && optional_seen), "{e:?}");
-            optional_seen |= !required;
-            if !required {
-                assert!(e.class.admits(0.0) && e.class.admits(-0.0), "{e:?}");
-            }
-        }
+        ADHESIVE.assert_well_formed();
         assert_eq!(ADHESIVE.required_len(), 2);
         for (index, fix) in COULOMB_SPECIAL_CASE.fixed {
             let class = ADHESIVE.entry(*index).class;

@@ -240,7 +240,7 @@ props_builder! {
 mod tests {
     use super::*;
     use crate::laws::coulomb_extended::Damping;
-    use crate::props::schema::{Cause, Default};
+    use crate::props::schema::Cause;
     use crate::props::{COULOMB_EXTENDED_NPROPS, FrictionLaw, coulomb_extended};
     use proptest::prelude::*;
 
@@ -435,36 +435,13 @@ mod tests {
         assert_eq!(CoulombBuilder::new().mu(0.3).build_first(2), [1.0, 0.3]);
     }
 
+    /// The table is well formed (`Layout::assert_well_formed`: entries, rules, variants), with
+    /// two required entries and twenty in all.
     #[test]
     fn the_schema_is_consistent() {
-        let mut optional_seen = false;
-        for (i, e) in COULOMB.entries.iter().enumerate() {
-            assert_eq!(e.index, i + 1, "{e:?}");
-            let required = matches!(e.default, Default::Required);
-            assert!(!(required && optional_seen), "{e:?}");
-            optional_seen |= !required;
-            if !required {
-                assert!(e.class.admits(0.0) && e.class.admits(-0.0), "{e:?}");
-            }
-        }
+        COULOMB.assert_well_formed();
         assert_eq!(COULOMB.required_len(), 2);
         assert_eq!(COULOMB.entries.len(), 20);
-        for rule in COULOMB.rules {
-            assert!(rule.entry() <= 20 && rule.other() <= 20, "{rule:?}");
-        }
-        // A variant redefines entries of the layout, and its switch is a value its entry
-        // accepts.
-        for variant in COULOMB.variants {
-            assert!(
-                COULOMB
-                    .entry(variant.on)
-                    .class
-                    .admits(f64::from(variant.value))
-            );
-            for e in variant.entries {
-                assert!(e.index <= COULOMB.entries.len(), "{e:?}");
-            }
-        }
     }
 
     /// Each law-1 default is written once and every reader takes it from there: the HHT β(α)

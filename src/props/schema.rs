@@ -792,6 +792,38 @@ impl Layout {
     }
 }
 
+#[cfg(test)]
+impl Layout {
+    /// Unit tests: the table is well formed. Entries are numbered in order, a required entry
+    /// never follows an optional one, every optional entry admits 0 and −0 (the fast paths read
+    /// an absent entry as 0 and test only the given ones), every rule names entries of the
+    /// layout, and a variant's switch is a value its entry accepts and it redefines entries of
+    /// the layout.
+    pub(crate) fn assert_well_formed(&self) {
+        let mut optional_seen = false;
+        for (i, e) in self.entries.iter().enumerate() {
+            assert_eq!(e.index, i + 1, "{e:?}");
+            let required = matches!(e.default, Default::Required);
+            assert!(!(required && optional_seen), "{e:?}");
+            optional_seen |= !required;
+            if !required {
+                assert!(e.class.admits(0.0) && e.class.admits(-0.0), "{e:?}");
+            }
+        }
+        let len = self.entries.len();
+        for rule in self.rules {
+            assert!(rule.entry() <= len && rule.other() <= len, "{rule:?}");
+        }
+        for variant in self.variants {
+            let switch = self.entry(variant.on).class;
+            assert!(switch.admits(f64::from(variant.value)), "{variant:?}");
+            for e in variant.entries {
+                assert!(e.index <= len, "{e:?}");
+            }
+        }
+    }
+}
+
 impl Layout {
     /// One row of [`Layout::markdown_table`]: entry `e`, `when` after its name.
     fn markdown_row(&self, e: &Entry, when: &str) -> String {

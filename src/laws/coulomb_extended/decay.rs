@@ -88,8 +88,8 @@ impl ExtendedCoulomb {
         };
         // Stick stiffness k̄_s = τ̄_crit(γ̇_k, p, θ̄)/γ_crit at the end and at the start.
         let factor = self.coefficient.rate_free(p, theta);
-        let k = held_rate_critical(p, factor, mbar * phi_k, tau_max);
-        let k0 = held_rate_critical(
+        let k = held_rate_critical::<true>(p, factor, mbar * phi_k, tau_max);
+        let k0 = held_rate_critical::<true>(
             p0,
             self.coefficient.rate_free(p0, theta),
             mbar * phi_k,
@@ -129,23 +129,16 @@ impl ExtendedCoulomb {
             if stiffness <= 0.0 && g > gamma_crit {
                 frictionless_slip(&predictor, g, gamma_crit, k.d_pressure)
             } else {
-                let sed = if phi_k != 1.0 {
-                    // As the next increment reads τ: at rest (see `rest_energy`).
-                    rest_energy(
-                        stiffness * g,
-                        (mbar * factor[0] * p).min(tau_max),
-                        gamma_crit,
-                    )
-                } else {
-                    0.5 * stiffness * g * g
-                };
+                // As the next increment reads τ: at rest (see `rest_energy`).
+                let rest = (phi_k != 1.0).then(|| (mbar * factor[0] * p).min(tau_max));
                 stick_answer(
                     &predictor,
+                    g,
                     &d_elastic_dtheta,
-                    following && g > gamma_crit,
-                    k.value,
-                    [stiffness, stiffness_p, stiffness_theta],
-                    sed,
+                    following,
+                    gamma_crit,
+                    &k,
+                    rest,
                 )
             }
         } else {
@@ -333,9 +326,15 @@ impl ExtendedCoulomb {
 }
 
 /// τ̄_crit(γ̇_k, p, θ̄) as `critical` forms it, from f = π·Θ and its partials, with the rate held
-/// (`scaled_mu` = μ̄·φ(γ̇_k); φ(0) = 1); 0 for p < 0.
+/// (`scaled_mu` = μ̄·φ(γ̇_k); φ(0) = 1); 0 for p < 0. `THETA = false` leaves ∂τ̄_crit/∂θ̄ = 0
+/// without forming the product μ̄·φ·Θ'·p (for [`frozen_critical`], where Θ = 1).
 #[inline(always)]
-fn held_rate_critical(pressure: f64, f: [f64; 3], scaled_mu: f64, tau_max: f64) -> Critical {
+fn held_rate_critical<const THETA: bool>(
+    pressure: f64,
+    f: [f64; 3],
+    scaled_mu: f64,
+    tau_max: f64,
+) -> Critical {
     if pressure < 0.0 {
         return Critical::default();
     }
@@ -348,7 +347,11 @@ fn held_rate_critical(pressure: f64, f: [f64; 3], scaled_mu: f64, tau_max: f64) 
             d_rate: 0.0,
             d_rate2: 0.0,
             d_pressure: mu + scaled_mu * f[1] * pressure,
-            d_temperature: scaled_mu * f[2] * pressure,
+            d_temperature: if THETA {
+                scaled_mu * f[2] * pressure
+            } else {
+                0.0
+            },
         }
     }
 }
@@ -359,10 +362,8 @@ fn held_rate_critical(pressure: f64, f: [f64; 3], scaled_mu: f64, tau_max: f64) 
 /// products (μ̄·φ)·π and (μ̄·φ)·π' are the same numbers ((x·π)·1 = x·π). φ is `decay_phi`'s,
 /// which is the φ of `critical` (the same terms from one exponential, 1 at γ̇₀ = 0). The rate
 /// derivatives are left 0: frozen μ does not follow this increment's rate (the slip answer
-/// reads ∂τ̄_crit/∂s as 0 when frozen); ∂/∂θ̄ is 0 with Θ = 1. 0 for p < 0, as `critical`.
-/// It is [`held_rate_critical`] at γ̇₀ without the ∂/∂θ̄ product (μ̄·φ)·Θ'·p, written out because
-/// that product is formed even where it is not read: 4 instructions more per call on
-/// bench_rate's frozen row (scripts/bench-rate-count.sh) when this called it.
+/// reads ∂τ̄_crit/∂s as 0 when frozen); ∂/∂θ̄ is 0 with Θ = 1. 0 for p < 0, as `critical`,
+/// tested before φ is formed (no exponential for a point in tension).
 #[inline(always)]
 fn frozen_critical(
     f: [f64; 3],
@@ -375,19 +376,7 @@ fn frozen_critical(
     if p < 0.0 {
         return Critical::default();
     }
-    let m = mbar * decay_phi(r, d, start_rate).0;
-    let mu = m * f[0];
-    if mu * p >= tau_max {
-        Critical::at_shear_limit(tau_max)
-    } else {
-        Critical {
-            value: mu * p,
-            d_rate: 0.0,
-            d_rate2: 0.0,
-            d_pressure: mu + m * f[1] * p,
-            d_temperature: 0.0,
-        }
-    }
+    held_rate_critical::<false>(p, f, mbar * decay_phi(r, d, start_rate).0, tau_max)
 }
 
 /// τ̄_crit = min(A·φ, τ_max), A = μ̄·π·Θ·p, with its partials, from φ and φ' at the rate.

@@ -134,19 +134,16 @@ impl ExtendedCoulomb {
         let v = norm(&predictor);
         if v <= rate_crit {
             // Viscous stick: τ̄ = κ_s γ̇^pr, dτ̄/dΔγ̄ = κ_s/Δt.
-            return Ok(ScaledTraction {
-                traction: Traction {
-                    tau: scale(&predictor, viscosity),
-                    ddtddg: diagonal(viscosity / dt),
-                    ddtddp: scale(&predictor, k.d_pressure / rate_crit),
-                    dslip: [0.0; N],
-                    sed: 0.0,
-                    sfd: 0.0,
-                },
-                ddtdtheta: scale(&predictor, k.d_temperature / rate_crit),
-                slip_eq: 0.0,
-                iterations: 0,
-            });
+            return Ok(ScaledTraction::closed_form(
+                Traction::sticking(
+                    scale(&predictor, viscosity),
+                    diagonal(viscosity / dt),
+                    scale(&predictor, k.d_pressure / rate_crit),
+                    0.0,
+                ),
+                scale(&predictor, k.d_temperature / rate_crit),
+                0.0,
+            ));
         }
         let n = unit(&predictor, v);
         let slip_rate = v - rate_crit;
@@ -164,12 +161,11 @@ impl ExtendedCoulomb {
             }
         }
         let slip_eq = slip_rate * dt;
-        Ok(ScaledTraction {
+        Ok(ScaledTraction::closed_form(
             // No elastic slip in viscous stick: SED = 0.
-            traction: Traction::sliding(&n, t, ddtddg, crit.d_pressure, slip_eq, 0.0),
-            ddtdtheta: scale(&n, crit.d_temperature),
+            Traction::sliding(&n, t, ddtddg, crit.d_pressure, slip_eq, 0.0),
+            scale(&n, crit.d_temperature),
             slip_eq,
-            iterations: 0,
-        })
+        ))
     }
 }

@@ -135,23 +135,18 @@ impl Plan {
             let rule = layout.rules[r];
             let (a, b) = (rule.entry(), rule.other());
             let live = match rule {
-                Rule::ZeroWhen { value, .. } => {
-                    if !possible(layout, fixed, nprops, b, value) || always_zero(fixed, nprops, a) {
+                // Holds when the mode cannot occur (and a `ZeroWhen` entry that is always 0);
+                // always in the mode: the entry's own test, 0 where the mode does not read it,
+                // 0 < v < ∞ where it needs it.
+                Rule::ZeroWhen { value, .. } | Rule::PositiveWhen { value, .. } => {
+                    let zero = matches!(rule, Rule::ZeroWhen { .. });
+                    if !possible(layout, fixed, nprops, b, value)
+                        || (zero && always_zero(fixed, nprops, a))
+                    {
                         false
                     } else if matches!(known(layout, fixed, nprops, b), Some(c) if c == value) {
-                        // Always in the mode that does not read it: it must be 0.
-                        p = p.retest(a, Test::Zero, fixed);
-                        false
-                    } else {
-                        true
-                    }
-                }
-                Rule::PositiveWhen { value, .. } => {
-                    if !possible(layout, fixed, nprops, b, value) {
-                        false
-                    } else if matches!(known(layout, fixed, nprops, b), Some(c) if c == value) {
-                        // Always in the mode that needs it: 0 < v < ∞.
-                        p = p.retest(a, Test::Positive, fixed);
+                        let test = if zero { Test::Zero } else { Test::Positive };
+                        p = p.retest(a, test, fixed);
                         false
                     } else {
                         true
@@ -343,21 +338,7 @@ mod tests {
     /// [`positive_flag`] against the plain comparisons, at the edges of 0 < v < ∞.
     #[test]
     fn positive_flag_is_zero_to_infinity_open() {
-        for v in [
-            0.0,
-            -0.0,
-            5e-324,
-            -5e-324,
-            f64::MIN_POSITIVE,
-            1.0,
-            f64::MAX,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NAN,
-            -f64::NAN,
-            -1.0,
-            f64::MIN,
-        ] {
+        for v in crate::testing::EDGE_VALUES {
             let expected = v.is_finite() && v > 0.0;
             assert_eq!(positive_flag(v) >> 63 == 0, expected, "{v:e}");
         }
