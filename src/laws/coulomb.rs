@@ -927,7 +927,7 @@ fn input_probe<const N: usize>(inc: &Increment<N>, stick: StickMode) -> f64 {
     a + b
 }
 
-/// Names the first non-finite input (the slow path of [`check_increment`]).
+/// Names the first non-finite input (the slow path of [`input_probe`]).
 #[cold]
 #[inline(never)]
 #[allow(clippy::needless_pass_by_value)]

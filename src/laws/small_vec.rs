@@ -106,7 +106,7 @@ pub(crate) fn unit<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
     divided(v, len)
 }
 
-/// [`unit`] for a caller that refuses its results when `len` is infinite (the elastic-stick
+/// [`unit()`] for a caller that refuses its results when `len` is infinite (the elastic-stick
 /// slip, whose slip increment is then infinite): one comparison instead of the range test.
 #[inline(always)]
 #[must_use]
