@@ -13,16 +13,14 @@ C       stick: tau = k_s gamma_el,  slip: |tau| = tau_crit.
 C     Output arrays are declared longer than NFDIR (STATEV longer than
 C     NSTATV); their tails hold a sentinel that must survive each call.
 C
-C     CHECK, CHKNR, GUARD1, SENTAL, SENTOU, HOSTIN and F1PT come from
-C     harness_f77.f.
+C     TALLY0, CHECK, CHKNR, TALLYE (the tally and its last line), GUARD1,
+C     SENTAL, SENTOU, HOSTIN and F1PT come from harness_f77.f.
 C
-C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
       PROGRAM TFRIC1
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
-      NPASS = 0
-      NFAIL = 0
+      CALL TALLY0
 C     NDIR: NFDIR = 1 (2-D) and 2 (3-D).  IGSRC = 1: gamma_crit from
 C     PROPS(5); IGSRC = 2: the default 0.005*CHRLNGTH.  ICAP = 0: no
 C     shear limit; ICAP = 1: tau_max = 20 < mu p = 30.
@@ -35,8 +33,7 @@ C     shear limit; ICAP = 1: tau_max = 20 < mu p = 30.
    30 CONTINUE
       CALL LMTWO
       CALL ROUGH
-      WRITE (*,'(I0,A,I0,A)') NPASS, ' passed, ', NFAIL, ' failed'
-      IF (NFAIL .GT. 0) STOP 1
+      CALL TALLYE
       END
 
 C-----------------------------------------------------------------------
