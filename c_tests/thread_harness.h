@@ -63,6 +63,28 @@ static inline uint64_t th_fnv(uint64_t h, const void *p, size_t n)
     return h;
 }
 
+/* ---- A block harness's buffers ---------------------------------------------------------- */
+/* n doubles from malloc, each v (a guard or a start value); NULL when out of memory. */
+static inline double *th_filled(size_t n, double v)
+{
+    double *a = malloc(sizeof(double) * n);
+    size_t i;
+    for (i = 0; a != NULL && i < n; i++) {
+        a[i] = v;
+    }
+    return a;
+}
+/* The interaction name of block b as a Fortran host passes it: prefix and b, blank-padded to
+ * 80 characters (no NUL); blank the blank name of the other two CHARACTER*80 arguments. */
+static inline void th_block_names(char name[80], char blank[80], const char *prefix, int b)
+{
+    char text[32];
+    int len = snprintf(text, sizeof text, "%s%d", prefix, b);
+    memset(name, ' ', 80);
+    memset(blank, ' ', 80);
+    memcpy(name, text, (size_t)(len < 32 ? len : 31));
+}
+
 /* INTERFACIAL_TEST_SHRINK=n divides a harness's size by n; at most max_shrink, at least 1. */
 static inline int th_shrink_factor(int max_shrink)
 {
