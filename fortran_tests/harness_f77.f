@@ -128,13 +128,19 @@ C     of a history: TAU and STATEV carry the state).
 C-----------------------------------------------------------------------
 C     The host arguments the Coulomb law does not use, filled as a host
 C     would (step 1 at time 0, Delta t = 0.1, identity DROT, contact at
-C     node 7, point 1, element 0, SLIP(1..MG) = 0).
+C     node 7, point 1, element 0, SLIP(1..MG) = 0), and the names:
+C     interaction NAME between surfaces 'SLAVE' and 'MASTER'.
 C-----------------------------------------------------------------------
       SUBROUTINE HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,
-     1 COORDS,RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
+     1 COORDS,RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG,
+     2 CINAME,SLNAME,MSNAME,NAME)
       INCLUDE 'ABA_PARAM.INC'
+      CHARACTER*(*) CINAME,SLNAME,MSNAME,NAME
       DIMENSION TIME(2),COORDS(3),RCOORD(3),DROT(2,2),TEMP(2),
      1 PREDEF(2,1),SLIP(MG)
+      CINAME = NAME
+      SLNAME = 'SLAVE'
+      MSNAME = 'MASTER'
       KSTEP = 1
       KINC = 1
       TIME(1) = 0.0D0

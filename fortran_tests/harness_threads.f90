@@ -189,10 +189,4 @@ contains
     write (*, '(i0,a,a,a,i0,a,i0,a)') nblocks, ' ', entry, ' blocks on ', nworkers, &
       ' OpenMP threads and serially: ', ndiff, ' blocks differ'
   end subroutine compare_block_runs
-
-  ! The last line, "<n> passed, <m> failed", and ERROR STOP on a failure.
-  subroutine finish()
-    write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-    if (nfail > 0) error stop 1
-  end subroutine finish
 end module harness_threads

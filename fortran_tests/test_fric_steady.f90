@@ -40,8 +40,7 @@ program test_fric_steady
     end do
   end do
   call bad_input()
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0 .or. npass == 0) error stop 1
+  call finish()
 
 contains
 

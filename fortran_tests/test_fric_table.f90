@@ -232,6 +232,5 @@ program test_fric_table
     call refused(h, [character(len=40) :: "'NO_TABLE'", '[interactions.NO_TABLE.friction]'])
   end if
 
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0 .or. npass == 0) error stop 1
+  call finish()
 end program test_fric_table
