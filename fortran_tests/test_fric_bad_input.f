@@ -17,7 +17,7 @@ C     names (old user code) checks that the hidden length is trusted.
 C
 C     The tally (TALLY0, CHECK, CHKNR, TALLYE: last line "<n> passed,
 C     <m> failed"), GUARD1, SENTAL, HOSTIN, F1PT, NANINF and GETMSG come
-C     from harness_f77.f.
+C     from harness_f77.f, a host point's declarations from fric_host.inc.
 C
 C=======================================================================
       PROGRAM TFBAD
@@ -56,14 +56,8 @@ C-----------------------------------------------------------------------
       SUBROUTINE BADONE(ICASE, NDIR, XNAN, XINF)
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
-      CHARACTER*80 CINAME,SLNAME,MSNAME
-      CHARACTER*48 CASE
-      COMMON /CTX/ CASE
-      PARAMETER (MG=8, MSV=8, SENT=-999.25D0, BIG=1.0D36)
-      DIMENSION TAU(MG),DDTDDG(MG),DDTDDP(MG),DSLIP(MG),DDTDDT(MG),
-     1 STATEV(MSV),DGAM(MG),TAULM(MG),SLIP(MG),TIME(2),COORDS(3),
-     2 RCOORD(3),DROT(2,2),TEMP(2),PREDEF(2,1),PROPS(7),
-     3 TAUIN(MG),SVIN(MSV),DGIN(MG),PRIN(7)
+      INCLUDE 'fric_host.inc'
+      DIMENSION PROPS(7),TAUIN(MG),SVIN(MSV),DGIN(MG),PRIN(7)
       CHARACTER*12 KEY(0:10)
       CHARACTER*200 EXPECT
       CHARACTER*512 MSG

@@ -14,7 +14,8 @@ C     Output arrays are declared longer than NFDIR (STATEV longer than
 C     NSTATV); their tails hold a sentinel that must survive each call.
 C
 C     TALLY0, CHECK, CHKNR, TALLYE (the tally and its last line), GUARD1,
-C     SENTAL, SENTOU, HOSTIN and F1PT come from harness_f77.f.
+C     SENTAL, SENTOU, HOSTIN and F1PT come from harness_f77.f, a host
+C     point's declarations from fric_host.inc.
 C
 C=======================================================================
       PROGRAM TFRIC1
@@ -53,13 +54,9 @@ C     the capped sum is tau_max gc 57).
 C-----------------------------------------------------------------------
       SUBROUTINE PULL(NDIR, IGSRC, ICAP)
       INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*80 CINAME,SLNAME,MSNAME
-      CHARACTER*48 CASE
-      COMMON /CTX/ CASE
-      PARAMETER (MG=8, MSV=8, NUP=75, SENT=-999.25D0, BIG=1.0D36)
-      DIMENSION TAU(MG),DDTDDG(MG),DDTDDP(MG),DSLIP(MG),DDTDDT(MG),
-     1 STATEV(MSV),DGAM(MG),TAULM(MG),SLIP(MG),TIME(2),COORDS(3),
-     2 RCOORD(3),DROT(2,2),TEMP(2),PREDEF(2,1),PROPS(7),E(2),DGIN(MG)
+      INCLUDE 'fric_host.inc'
+      PARAMETER (NUP=75)
+      DIMENSION PROPS(7),E(2),DGIN(MG)
       LOGICAL SLIPS
 C
       NFDIR = NDIR
@@ -285,13 +282,8 @@ C     and writes nothing, not even PNEWDT.
 C-----------------------------------------------------------------------
       SUBROUTINE LMTWO
       INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*80 CINAME,SLNAME,MSNAME
-      CHARACTER*48 CASE
-      COMMON /CTX/ CASE
-      PARAMETER (MG=8, MSV=8, SENT=-999.25D0, BIG=1.0D36)
-      DIMENSION TAU(MG),DDTDDG(MG),DDTDDP(MG),DSLIP(MG),DDTDDT(MG),
-     1 STATEV(MSV),DGAM(MG),TAULM(MG),SLIP(MG),TIME(2),COORDS(3),
-     2 RCOORD(3),DROT(2,2),TEMP(2),PREDEF(2,1),PROPS(7)
+      INCLUDE 'fric_host.inc'
+      DIMENSION PROPS(7)
 C
       CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
      1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG,CINAME,SLNAME,
@@ -332,13 +324,8 @@ C     SFD = 0; STATEV(1) kept, STATEV(2) = 0, STATEV(3) = 2.
 C-----------------------------------------------------------------------
       SUBROUTINE ROUGH
       INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*80 CINAME,SLNAME,MSNAME
-      CHARACTER*48 CASE
-      COMMON /CTX/ CASE
-      PARAMETER (MG=8, MSV=8, SENT=-999.25D0, BIG=1.0D36)
-      DIMENSION TAU(MG),DDTDDG(MG),DDTDDP(MG),DSLIP(MG),DDTDDT(MG),
-     1 STATEV(MSV),DGAM(MG),TAULM(MG),SLIP(MG),TIME(2),COORDS(3),
-     2 RCOORD(3),DROT(2,2),TEMP(2),PREDEF(2,1),PROPS(7)
+      INCLUDE 'fric_host.inc'
+      DIMENSION PROPS(7)
 C
       CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
      1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG,CINAME,SLNAME,
