@@ -77,12 +77,9 @@ contains
     h = new_point(n, props, 'DISC_PAD')
     h%press = p
     h%dtime = dt
-    h%noel = 17
+    call at_c_twin_point(h)
     h%slname = 'PAD'
     h%msname = 'DISC'
-    h%npt = 3
-    h%node = 42
-    h%npatch = 5
     h%coords = [0.3_dp, 0.4_dp, 2.0_dp]
     h%rcoord = h%coords
   end subroutine point

@@ -26,7 +26,8 @@ C     a byte read past the hidden length.  Each call has its own
 C     element number, so a stale message cannot pass.
 C
 C     GAPONE (one checked GAPCON call), the tally, NANINF and GETMSG
-C     come from harness_f77.f.
+C     come from harness_f77.f; the run's COMMON /CFGC/ from
+C     gapcon_cfg.inc.
 C
 C=======================================================================
       PROGRAM TGBAD
@@ -34,9 +35,7 @@ C=======================================================================
       COMMON /TALLY/ NPASS,NFAIL
       CHARACTER*48 CASE
       COMMON /CTX/ CASE
-      CHARACTER*16 MODE
-      CHARACTER*512 CFG, CAUSE
-      COMMON /CFGC/ MODE, CFG, CAUSE
+      INCLUDE 'gapcon_cfg.inc'
       CALL TALLY0
       MODE = 'good'
       IF (COMMAND_ARGUMENT_COUNT() .GE. 1)
@@ -66,9 +65,7 @@ C-----------------------------------------------------------------------
       INCLUDE 'ABA_PARAM.INC'
       CHARACTER*48 CASE
       COMMON /CTX/ CASE
-      CHARACTER*16 MODE
-      CHARACTER*512 CFG, CAUSE
-      COMMON /CFGC/ MODE, CFG, CAUSE
+      INCLUDE 'gapcon_cfg.inc'
       PARAMETER (SENT=-999.25D0)
 C
       CASE = 'good call T1CONST'
@@ -160,9 +157,7 @@ C-----------------------------------------------------------------------
       INCLUDE 'ABA_PARAM.INC'
       CHARACTER*48 CASE
       COMMON /CTX/ CASE
-      CHARACTER*16 MODE
-      CHARACTER*512 CFG, CAUSE
-      COMMON /CFGC/ MODE, CFG, CAUSE
+      INCLUDE 'gapcon_cfg.inc'
       CHARACTER*12 NUM
       LOGICAL THERE
       CHARACTER*8 NAMES(3)
@@ -222,9 +217,7 @@ C-----------------------------------------------------------------------
       COMMON /OLDNAM/ CINAME,CTAIL
       CHARACTER*48 CASE
       COMMON /CTX/ CASE
-      CHARACTER*16 MODE
-      CHARACTER*512 CFG, CAUSE
-      COMMON /CFGC/ MODE, CFG, CAUSE
+      INCLUDE 'gapcon_cfg.inc'
       DIMENSION AK(5),D(2),FLOWM(2),TEMP(2),PREDEF(2,1),TIME(2),
      1 COORDS(3)
       CHARACTER*512 MSG
@@ -277,9 +270,7 @@ C     parameter' (configuration), 'bad input', 'numerical failure'.
 C-----------------------------------------------------------------------
       SUBROUTINE EXPMSG(ROUT, NAME, NOEL, KIND, IAT)
       CHARACTER*(*) ROUT, NAME, KIND
-      CHARACTER*16 MODE
-      CHARACTER*512 CFG, CAUSE
-      COMMON /CFGC/ MODE, CFG, CAUSE
+      INCLUDE 'gapcon_cfg.inc'
       COMMON /TALLY/ NPASS,NFAIL
       CHARACTER*600 EXPECT
       CHARACTER*512 MSG
@@ -323,9 +314,7 @@ C-----------------------------------------------------------------------
      1 C_NULL_CHAR
       INCLUDE 'ABA_PARAM.INC'
       CHARACTER*(*) NAME
-      CHARACTER*16 MODE
-      CHARACTER*512 CFG, CAUSE
-      COMMON /CFGC/ MODE, CFG, CAUSE
+      INCLUDE 'gapcon_cfg.inc'
       COMMON /TALLY/ NPASS,NFAIL
       TYPE, BIND(C) :: IFLCND
         REAL(C_DOUBLE) :: V(6)
