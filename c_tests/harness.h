@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "interfacial.h"
+#include "props_index.h"
 
 #if defined(__GNUC__)
 #define FH_PRINTF(fmt_index, first_arg) __attribute__((format(printf, fmt_index, first_arg)))
@@ -214,6 +215,18 @@ static inline void fh_set_name(char *buf, size_t *buf_len, size_t len, const cha
     *buf_len = len;
 }
 
+/* A whole Coulomb PROPS layout (IFLP_COULOMB_NPROPS entries): law 1 with μ, every other entry
+ * 0 (its default); the caller sets the entries its scene means. */
+static inline void fh_props_coulomb(double *props, double mu)
+{
+    int i;
+    for (i = 0; i < IFLP_COULOMB_NPROPS; i++) {
+        props[i] = 0.0;
+    }
+    props[IFLP_COULOMB_CODE] = IFLP_LAW_COULOMB;
+    props[IFLP_COULOMB_MU] = mu;
+}
+
 static inline int fh_clamp(int v, int lo, int hi)
 {
     return v < lo ? lo : (v > hi ? hi : v);
@@ -313,6 +326,17 @@ static inline void fh_init(fh_fric *h, int nfdir, const double *props, int nprop
     }
     h->nprops = nprops;
     fh_set_guards(h);
+}
+
+/* The point of fh_init at first contact (PRESS = DPRESS = p) with time increment dtime and the
+ * whole Coulomb layout, for a scene that slides it increment by increment. */
+static inline void fh_init_contact(fh_fric *h, int nfdir, const double *props, double p,
+                                   double dtime)
+{
+    fh_init(h, nfdir, props, IFLP_COULOMB_NPROPS);
+    h->press = p;
+    h->dpress = p;
+    h->dtime = dtime;
 }
 
 /* The raw call, as gfortran makes it for CALL FRIC(...) with CHARACTER*(*) names. */
