@@ -435,6 +435,20 @@ static inline void fh_check_tangent_along(const fh_fric *h, const double *d, dou
 }
 
 /*
+ * The thread's last message copied into msg (len bytes): not empty, naming the routine, the
+ * quoted interaction and the place of the call (where); the caller checks the cause.
+ */
+static inline void fh_check_last_message(char *msg, size_t len, const char *routine,
+                                         const char *quoted, const char *where)
+{
+    snprintf(msg, len, "%s", ifl_last_error());
+    FH_CHECK(msg[0] != '\0');
+    FH_CONTAINS(msg, routine);
+    FH_CONTAINS(msg, quoted);
+    FH_CONTAINS(msg, where);
+}
+
+/*
  * A call that must be refused: PNEWDT < 1, the message names FRIC and contains n1 and (unless
  * NULL) n2, TAU(1..NFDIR) and STATEV(1..3) unchanged. The caller sets the state first.
  */

@@ -110,11 +110,7 @@ static void expect_gapcon_refused(gh_gapcon *g, const char *shown, const char *c
         ak = gh_call(g); /* AK(1) written, AK(2..5) guards, inputs unchanged */
         FH_EXACT(ak, 0.0);
         FH_CHECK(!signbit(ak));
-        snprintf(msg, sizeof msg, "%s", ifl_last_error());
-        FH_CHECK(msg[0] != '\0');
-        FH_CONTAINS(msg, "GAPCON");
-        FH_CONTAINS(msg, quoted);
-        FH_CONTAINS(msg, "element 17, node 42");
+        fh_check_last_message(msg, sizeof msg, "GAPCON", quoted, "element 17, node 42");
         expect_needles(msg, needles);
         remember_message(msg);
     }
