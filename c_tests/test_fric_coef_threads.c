@@ -59,9 +59,8 @@ typedef struct {
 
 static int draw_block(int b, block_in *in)
 {
-    uint32_t x = (uint32_t)b * 2654435761u % (TH_LEHMER_M - 1u) + 1u;
+    uint32_t x = th_block_seed(b);
     int k, law, decay, pref, temp;
-    th_lehmer(&x);
     law = (int)(th_lehmer(&x) % N_LAWS);
     in->law = law;
     in->n = 1 + b % MAX_NBLOCK;

@@ -45,6 +45,14 @@ static inline uint32_t th_lehmer(uint32_t *x)
     *x = (uint32_t)(((uint64_t)*x * 48271u) % TH_LEHMER_M);
     return *x;
 }
+/* The generator's state for block b of a block harness: b scattered by Knuth's multiplicative
+ * hash (mod 2^32) into [1, m - 1], then advanced once. */
+static inline uint32_t th_block_seed(int b)
+{
+    uint32_t x = (uint32_t)b * 2654435761u % (TH_LEHMER_M - 1u) + 1u;
+    th_lehmer(&x);
+    return x;
+}
 /* A draw in [lo, hi) from the generator's next value. */
 static inline double th_uniform(uint32_t *x, double lo, double hi)
 {
