@@ -280,12 +280,7 @@ program bench_fric
     call check_points(nfdir, 'check non-positive pressure', -1)
   end do
 
-  write (*, '(a,i0,a,i0,a,i0,a)') 'Points per case: ', npoints, '; timed run: ', nrep, &
-    ' sweeps; best of ', nrun, ' rounds.'
-  write (*, '(a)') ''
-  write (*, '(a)') '| case | FRIC (ours) ns/call | FRICREF ns/call | ratio ours/ref | ' // &
-    'ratio of medians | empty call ns/call | ratio net of empty call | within 1.10 |'
-  write (*, '(a)') '|---|---:|---:|---:|---:|---:|---:|---|'
+  call timing_table_head(npoints, nrep, nrun, 'FRIC', 'FRICREF', ' within 1.10 |')
   nmissed = 0
   do icase = 1, 4
     if (only /= 0 .and. icase /= only) cycle

@@ -263,12 +263,7 @@ program bench_gapcon
       end if
     end do
 
-    write (*, '(a,i0,a,i0,a,i0,a)') 'Points per case: ', npoints, '; timed run: ', nrep, &
-      ' sweeps; best of ', nrun, ' rounds.'
-    write (*, '(a)') ''
-    write (*, '(a)') '| case | GAPCON (ours) ns/call | GAPREF ns/call | ratio ours/ref | ' // &
-      'ratio of medians | empty call ns/call | ratio net of empty call |'
-    write (*, '(a)') '|---|---:|---:|---:|---:|---:|---:|'
+    call timing_table_head(npoints, nrep, nrun, 'GAPCON', 'GAPREF', '')
     do icase = 1, nlaws
       if (only /= 0 .and. icase /= only) cycle
       ciname = law_name(icase)

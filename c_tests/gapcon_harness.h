@@ -220,6 +220,12 @@ static inline void gh_config_real(const char *key, double v)
     gh_config_text("%s = %s\n", key, num);
 }
 
+/* The conductance section of interaction `name` with its law (keys follow). */
+static inline void gh_config_law(const char *name, const char *law)
+{
+    gh_config_text("\n[interactions.%s.conductance]\nlaw = \"%s\"\n", name, law);
+}
+
 /* table = [[x, k], ...] (ncol = 2) or [[x, k, theta], ...] (ncol = 3), rows flat. */
 static inline void gh_config_table(const double *rows, int nrows, int ncol)
 {

@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "interfacial.h"
+#include "props_index.h"
 
 #if defined(__GNUC__)
 #define FH_PRINTF(fmt_index, first_arg) __attribute__((format(printf, fmt_index, first_arg)))
@@ -214,6 +215,18 @@ static inline void fh_set_name(char *buf, size_t *buf_len, size_t len, const cha
     *buf_len = len;
 }
 
+/* A whole Coulomb PROPS layout (IFLP_COULOMB_NPROPS entries): law 1 with μ, every other entry
+ * 0 (its default); the caller sets the entries its scene means. */
+static inline void fh_props_coulomb(double *props, double mu)
+{
+    int i;
+    for (i = 0; i < IFLP_COULOMB_NPROPS; i++) {
+        props[i] = 0.0;
+    }
+    props[IFLP_COULOMB_CODE] = IFLP_LAW_COULOMB;
+    props[IFLP_COULOMB_MU] = mu;
+}
+
 static inline int fh_clamp(int v, int lo, int hi)
 {
     return v < lo ? lo : (v > hi ? hi : v);
@@ -315,6 +328,17 @@ static inline void fh_init(fh_fric *h, int nfdir, const double *props, int nprop
     fh_set_guards(h);
 }
 
+/* The point of fh_init at first contact (PRESS = DPRESS = p) with time increment dtime and the
+ * whole Coulomb layout, for a scene that slides it increment by increment. */
+static inline void fh_init_contact(fh_fric *h, int nfdir, const double *props, double p,
+                                   double dtime)
+{
+    fh_init(h, nfdir, props, IFLP_COULOMB_NPROPS);
+    h->press = p;
+    h->dpress = p;
+    h->dtime = dtime;
+}
+
 /* The raw call, as gfortran makes it for CALL FRIC(...) with CHARACTER*(*) names. */
 static inline void fh_call_raw(fh_fric *h)
 {
@@ -408,6 +432,20 @@ static inline void fh_check_tangent_along(const fh_fric *h, const double *d, dou
         }
     }
     FH_NEAR(an, fd, 0.0, atol);
+}
+
+/*
+ * The thread's last message copied into msg (len bytes): not empty, naming the routine, the
+ * quoted interaction and the place of the call (where); the caller checks the cause.
+ */
+static inline void fh_check_last_message(char *msg, size_t len, const char *routine,
+                                         const char *quoted, const char *where)
+{
+    snprintf(msg, len, "%s", ifl_last_error());
+    FH_CHECK(msg[0] != '\0');
+    FH_CONTAINS(msg, routine);
+    FH_CONTAINS(msg, quoted);
+    FH_CONTAINS(msg, where);
 }
 
 /*

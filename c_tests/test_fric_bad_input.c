@@ -145,11 +145,7 @@ static void expect_refused(fh_fric *h, const char *name, const char *cause, cons
             FH_CHECK(memcmp(h->ddtddt, before.ddtddt, sizeof h->ddtddt) == 0);
         }
 
-        snprintf(msg, sizeof msg, "%s", ifl_last_error());
-        FH_CHECK(msg[0] != '\0');
-        FH_CONTAINS(msg, "FRIC");
-        FH_CONTAINS(msg, quoted);
-        FH_CONTAINS(msg, "element 17, node 42, point 3");
+        fh_check_last_message(msg, sizeof msg, "FRIC", quoted, "element 17, node 42, point 3");
         FH_CONTAINS(msg, cause);
         if (cause2 != NULL) {
             FH_CONTAINS(msg, cause2);

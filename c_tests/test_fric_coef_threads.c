@@ -59,9 +59,8 @@ typedef struct {
 
 static int draw_block(int b, block_in *in)
 {
-    uint32_t x = (uint32_t)b * 2654435761u % (TH_LEHMER_M - 1u) + 1u;
+    uint32_t x = th_block_seed(b);
     int k, law, decay, pref, temp;
-    th_lehmer(&x);
     law = (int)(th_lehmer(&x) % N_LAWS);
     in->law = law;
     in->n = 1 + b % MAX_NBLOCK;
@@ -160,14 +159,10 @@ static uint64_t run_block(int b, th_tally *t)
     uint64_t h = TH_FNV_OFFSET;
 
     memset(&in, 0, sizeof in);
-    if (!draw_block(b, &in)) {
-        t->alloc_fail++;
-        free_block(&in);
-        return 0;
-    }
+    k = draw_block(b, &in);
     n = in.n;
-    coef = malloc(sizeof(double) * 2 * (size_t)n);
-    deriv = malloc(sizeof(double) * 40 * (size_t)n);
+    coef = k ? th_filled(2 * (size_t)n, FH_GUARD) : NULL;
+    deriv = k ? th_filled(40 * (size_t)n, FH_GUARD) : NULL;
     if (coef == NULL || deriv == NULL) {
         t->alloc_fail++;
         free(coef);
@@ -175,16 +170,7 @@ static uint64_t run_block(int b, th_tally *t)
         free_block(&in);
         return 0;
     }
-    for (k = 0; k < 2 * n; k++) {
-        coef[k] = FH_GUARD;
-    }
-    for (k = 0; k < 40 * n; k++) {
-        deriv[k] = FH_GUARD;
-    }
-    memset(blank, ' ', sizeof blank);
-    memset(name, ' ', sizeof name);
-    k = snprintf(name, sizeof name, "CF%d", b);
-    name[k] = ' ';
+    th_block_names(name, blank, "CF", b);
     fric_coef_(coef, deriv, &n, &nprops, &in.ntemp, &nfields, idata, rdata, name, blank, blank,
                in.props, in.slip, in.pressure, in.temp, field, sizeof name, sizeof blank,
                sizeof blank);

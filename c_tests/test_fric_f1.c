@@ -64,15 +64,22 @@ static double path_gamma(int k, double gamma_crit)
     return top - 40.0 * gamma_crit * ((double)(k - N_UP) / N_DOWN);
 }
 
+/* The plastic part of a path g that rises to `peak` and then falls back, with an elastic band
+ * of half-width b (the play operator started at 0): g - b once past b on the way up; on the
+ * way down it stays at peak - b until g + b falls below it. */
+static double play(double g, double b, double peak, int rising)
+{
+    double top = peak - b;
+    if (rising) {
+        return g > b ? g - b : 0.0;
+    }
+    return g + b < top ? g + b : top;
+}
+
 /* Closed-form plastic slip gamma_p after increment k (see the header comment). */
 static double plastic_slip(int k, double gamma_crit)
 {
-    double g = path_gamma(k, gamma_crit);
-    double top = path_gamma(N_UP, gamma_crit) - gamma_crit;
-    if (k <= N_UP) {
-        return g > gamma_crit ? g - gamma_crit : 0.0;
-    }
-    return g + gamma_crit < top ? g + gamma_crit : top;
+    return play(path_gamma(k, gamma_crit), gamma_crit, path_gamma(N_UP, gamma_crit), k <= N_UP);
 }
 
 /* Closed-form path length of plastic slip after increment k (STATEV(1)). */
@@ -210,12 +217,7 @@ static double spring_u(int k, double u_rel)
 
 static double spring_gamma(int k, double u_rel)
 {
-    double u = spring_u(k, u_rel);
-    double top = spring_u(SPRING_UP, u_rel) - u_rel;
-    if (k <= SPRING_UP) {
-        return u > u_rel ? u - u_rel : 0.0;
-    }
-    return u + u_rel < top ? u + u_rel : top;
+    return play(spring_u(k, u_rel), u_rel, spring_u(SPRING_UP, u_rel), k <= SPRING_UP);
 }
 
 static void f1_exact_stick_spring(void)

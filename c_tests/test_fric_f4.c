@@ -34,12 +34,7 @@ static double mu_of(double v) { return MU_K + (MU_S - MU_K) * exp(-DECAY * v); }
 /* Law 1 with mu and gamma_crit, every other entry 0. */
 static void props_coulomb(double *props, double mu)
 {
-    int i;
-    for (i = 0; i < IFLP_COULOMB_NPROPS; i++) {
-        props[i] = 0.0;
-    }
-    props[IFLP_COULOMB_CODE] = IFLP_LAW_COULOMB;
-    props[IFLP_COULOMB_MU] = mu;
+    fh_props_coulomb(props, mu);
     props[IFLP_COULOMB_GAMMA_CRIT] = GAMMA_CRIT;
 }
 
@@ -75,10 +70,7 @@ static void steps(int nfdir, int exact, int frozen)
     fh_fric h;
     int s;
     props_decay(props, exact, frozen);
-    fh_init(&h, nfdir, props, IFLP_COULOMB_NPROPS);
-    h.press = P;
-    h.dpress = P;
-    h.dtime = DT;
+    fh_init_contact(&h, nfdir, props, P, DT);
     for (s = 0; s < 4; s++) {
         const double v = rates[s];
         double tau_eq, mu, dmu;

@@ -36,12 +36,7 @@
 
 static void props_steady(double *props, int variant, int decay)
 {
-    int i;
-    for (i = 0; i < IFLP_COULOMB_NPROPS; i++) {
-        props[i] = 0.0;
-    }
-    props[IFLP_COULOMB_CODE] = IFLP_LAW_COULOMB;
-    props[IFLP_COULOMB_MU] = MU;
+    fh_props_coulomb(props, MU);
     props[IFLP_COULOMB_SLIP_TOLERANCE] = FF;
     props[IFLP_COULOMB_STICK] = 3; /* viscous stick, steady-state transport */
     if (decay) {

@@ -38,12 +38,7 @@ static double mu_tab(double v)
 
 static void props_table(double *props, int exact, int frozen)
 {
-    int i;
-    for (i = 0; i < IFLP_COULOMB_NPROPS; i++) {
-        props[i] = 0.0;
-    }
-    props[IFLP_COULOMB_CODE] = IFLP_LAW_COULOMB;
-    props[IFLP_COULOMB_MU] = 1.0; /* reference of the anisotropy ratio only */
+    fh_props_coulomb(props, 1.0); /* μ: reference of the anisotropy ratio only */
     props[IFLP_COULOMB_GAMMA_CRIT] = GAMMA_CRIT;
     props[IFLP_COULOMB_STICK] = exact ? 1 : 0;
     props[IFLP_COULOMB_MU_LAW] = 2; /* the table of the configuration file */
@@ -58,10 +53,7 @@ static void steps(int nfdir, int exact, int frozen)
     fh_fric h;
     int s;
     props_table(props, exact, frozen);
-    fh_init(&h, nfdir, props, IFLP_COULOMB_NPROPS);
-    h.press = P;
-    h.dpress = P;
-    h.dtime = DT;
+    fh_init_contact(&h, nfdir, props, P, DT);
     for (s = 0; s < 5; s++) {
         const double v = rates[s];
         fh_context("F4 table NFDIR=%d exact=%d frozen=%d v=%g", nfdir, exact, frozen, v);

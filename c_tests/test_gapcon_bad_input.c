@@ -110,11 +110,7 @@ static void expect_gapcon_refused(gh_gapcon *g, const char *shown, const char *c
         ak = gh_call(g); /* AK(1) written, AK(2..5) guards, inputs unchanged */
         FH_EXACT(ak, 0.0);
         FH_CHECK(!signbit(ak));
-        snprintf(msg, sizeof msg, "%s", ifl_last_error());
-        FH_CHECK(msg[0] != '\0');
-        FH_CONTAINS(msg, "GAPCON");
-        FH_CONTAINS(msg, quoted);
-        FH_CONTAINS(msg, "element 17, node 42");
+        fh_check_last_message(msg, sizeof msg, "GAPCON", quoted, "element 17, node 42");
         expect_needles(msg, needles);
         remember_message(msg);
     }
@@ -383,6 +379,19 @@ static void bad_values(void)
     }
 }
 
+/* A gapcon_ call with only the arguments it reads (AK, D, TEMP, CINAME, NOEL, NODE; every other
+ * one NULL), AK(1) preset to the mark and the thread's message cleared first. */
+static void gapcon_reads_only(double *ak, double *d, double *temp, char *name, int *noel,
+                              int *node)
+{
+    if (ak != NULL) {
+        ak[0] = GH_AK_MARK;
+    }
+    ifl_clear_error();
+    gapcon_(ak, d, NULL, temp, NULL, NULL, name, NULL, NULL, NULL, noel, node, NULL, NULL, NULL,
+            80, 80, 80);
+}
+
 /* NULL pointers: what the host must pass, and what gapcon_ must never read. */
 static void null_pointers(void)
 {
@@ -400,10 +409,7 @@ static void null_pointers(void)
     for (i = 0; i < GH_AK; i++) {
         ak[i] = GH_GUARD;
     }
-    ak[0] = GH_AK_MARK;
-    ifl_clear_error();
-    gapcon_(ak, d, NULL, temp, NULL, NULL, name, NULL, NULL, NULL, &noel, &node, NULL, NULL,
-            NULL, 80, 80, 80);
+    gapcon_reads_only(ak, d, temp, name, &noel, &node);
     FH_EXACT(ak[0], K_SI1);
     FH_CHECK(ak[1] == GH_GUARD && ak[2] == GH_GUARD && ak[3] == GH_GUARD && ak[4] == GH_GUARD &&
              ak[5] == GH_GUARD);
@@ -411,39 +417,25 @@ static void null_pointers(void)
 
     /* NOEL and NODE are only read for messages: NULL shows as '?'. */
     fh_context("NOEL, NODE NULL in a failing call");
-    ak[0] = GH_AK_MARK;
     d[0] = NAN;
     name[0] = 'C'; /* "CI1": not configured, a cause of its own */
-    gapcon_(ak, d, NULL, temp, NULL, NULL, name, NULL, NULL, NULL, NULL, NULL, NULL, NULL,
-            NULL, 80, 80, 80);
+    gapcon_reads_only(ak, d, temp, name, NULL, NULL);
     FH_EXACT(ak[0], 0.0);
     FH_CONTAINS(ifl_last_error(), "interaction 'CI1' (element ?, node ?)");
     remember_message(ifl_last_error());
     d[0] = 1e-4;
     name[0] = 'S';
 
-    fh_context("D NULL");
-    ak[0] = GH_AK_MARK;
-    ifl_clear_error();
-    gapcon_(ak, NULL, NULL, temp, NULL, NULL, name, NULL, NULL, NULL, &noel, &node, NULL, NULL,
-            NULL, 80, 80, 80);
-    FH_EXACT(ak[0], 0.0);
-    FH_CONTAINS(ifl_last_error(), "D is a NULL pointer");
-    remember_message(ifl_last_error());
-
-    fh_context("TEMP NULL");
-    ak[0] = GH_AK_MARK;
-    ifl_clear_error();
-    gapcon_(ak, d, NULL, NULL, NULL, NULL, name, NULL, NULL, NULL, &noel, &node, NULL, NULL,
-            NULL, 80, 80, 80);
-    FH_EXACT(ak[0], 0.0);
-    FH_CONTAINS(ifl_last_error(), "TEMP is a NULL pointer");
-    remember_message(ifl_last_error());
+    for (i = 0; i < 2; i++) {
+        fh_context(i == 0 ? "D NULL" : "TEMP NULL");
+        gapcon_reads_only(ak, i == 0 ? NULL : d, i == 0 ? temp : NULL, name, &noel, &node);
+        FH_EXACT(ak[0], 0.0);
+        FH_CONTAINS(ifl_last_error(), i == 0 ? "D is a NULL pointer" : "TEMP is a NULL pointer");
+        remember_message(ifl_last_error());
+    }
 
     fh_context("AK NULL: reported, no crash");
-    ifl_clear_error();
-    gapcon_(NULL, d, NULL, temp, NULL, NULL, name, NULL, NULL, NULL, &noel, &node, NULL, NULL,
-            NULL, 80, 80, 80);
+    gapcon_reads_only(NULL, d, temp, name, &noel, &node);
     FH_CONTAINS(ifl_last_error(), "AK is a NULL pointer");
     remember_message(ifl_last_error());
 

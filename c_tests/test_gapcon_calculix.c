@@ -41,9 +41,9 @@ static void write_config(const char *path)
         return;
     }
     gh_config_text("# Written by test_gapcon_calculix.c.\n");
-    gh_config_text("[interactions.CCX_CONST.conductance]\nlaw = \"constant\"\n");
+    gh_config_law("CCX_CONST", "constant");
     gh_config_real("k", K_CONST);
-    gh_config_text("\n[interactions.CCX_PTAB.conductance]\nlaw = \"pressure-table\"\n");
+    gh_config_law("CCX_PTAB", "pressure-table");
     gh_config_table(PTAB, PTAB_ROWS, 2);
     gh_config_close(path);
 }

@@ -90,21 +90,21 @@ static void write_config(const char *path)
         return;
     }
     gh_config_text("# Written by test_gapcon_t1.c: scene T1.\n");
-    gh_config_text("[interactions.T1_CONST.conductance]\nlaw = \"constant\"\n");
+    gh_config_law("T1_CONST", "constant");
     gh_config_real("k", H_CONST);
-    gh_config_text("\n[interactions.T1_PTAB.conductance]\nlaw = \"pressure-table\"\n");
+    gh_config_law("T1_PTAB", "pressure-table");
     gh_config_table(PTAB, PTAB_ROWS, 2);
-    gh_config_text("\n[interactions.T1_CTAB.conductance]\nlaw = \"clearance-table\"\n");
+    gh_config_law("T1_CTAB", "clearance-table");
     gh_config_table(CTAB, CTAB_ROWS, 2);
-    gh_config_text("\n[interactions.T1_TTAB.conductance]\nlaw = \"pressure-table\"\n");
+    gh_config_law("T1_TTAB", "pressure-table");
     gh_config_table(TTAB, TTAB_ROWS, 3);
-    gh_config_text("\n[interactions.T1_CTTAB.conductance]\nlaw = \"clearance-table\"\n");
+    gh_config_law("T1_CTTAB", "clearance-table");
     gh_config_table(CTTAB, CTTAB_ROWS, 3);
-    gh_config_text("\n[interactions.T1_GAS.conductance]\nlaw = \"gas-gap\"\n");
+    gh_config_law("T1_GAS", "gas-gap");
     gh_config_real("k_gas", K_GAS);
     gh_config_real("g0", G0);
     gh_config_real("min_gap", MIN_GAP);
-    gh_config_text("\n[interactions.T1_CMY.conductance]\nlaw = \"cmy\"\n");
+    gh_config_law("T1_CMY", "cmy");
     gh_config_real("k_s", CMY_KS);
     gh_config_real("m", CMY_M);
     gh_config_real("sigma", CMY_SIGMA);

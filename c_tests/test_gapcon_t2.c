@@ -58,15 +58,15 @@ static void write_config(const char *path)
     radiation_block("RAD_K", SIGMA, 0.0, VIEW_F);
     radiation_block("RAD_C", SIGMA, ZERO_C, VIEW_F);
     radiation_block("RAD_MM", SIGMA_MM, 0.0, VIEW_F);
-    gh_config_text("\n[interactions.RAD_GAS.conductance]\nlaw = \"gas-gap\"\n");
+    gh_config_law("RAD_GAS", "gas-gap");
     gh_config_real("k_gas", K_GAS);
     gh_config_real("g0", G0);
     radiation_block("RAD_GAS", SIGMA, 0.0, VIEW_F);
-    gh_config_text("\n[interactions.RAD_GAS_C.conductance]\nlaw = \"gas-gap\"\n");
+    gh_config_law("RAD_GAS_C", "gas-gap");
     gh_config_real("k_gas", K_GAS);
     gh_config_real("g0", G0);
     radiation_block("RAD_GAS_C", SIGMA, ZERO_C, VIEW_F);
-    gh_config_text("\n[interactions.RAD_OFF.conductance]\nlaw = \"gas-gap\"\n");
+    gh_config_law("RAD_OFF", "gas-gap");
     gh_config_real("k_gas", K_GAS);
     gh_config_real("g0", G0);
     radiation_block("RAD_OFF", SIGMA, 0.0, 0.0);

@@ -80,17 +80,17 @@ static void write_config(const char *path)
         return;
     }
     gh_config_text("# Written by test_gapcon_threads.c.\n");
-    gh_config_text("[interactions.TH_CONST.conductance]\nlaw = \"constant\"\n");
+    gh_config_law("TH_CONST", "constant");
     gh_config_real("k", K_CONST);
-    gh_config_text("\n[interactions.TH_PTAB.conductance]\nlaw = \"pressure-table\"\n");
+    gh_config_law("TH_PTAB", "pressure-table");
     gh_config_table(PTAB, PTAB_ROWS, 2);
-    gh_config_text("\n[interactions.TH_TTAB.conductance]\nlaw = \"pressure-table\"\n");
+    gh_config_law("TH_TTAB", "pressure-table");
     gh_config_table(TTAB, TTAB_ROWS, 3);
     gh_config_text("\n[interactions.TH_RAD.radiation]\n");
     gh_config_real("view_factor", VIEW_F);
     gh_config_real("stefan_boltzmann", GH_SIGMA_SI);
     gh_config_real("absolute_zero", ZERO_C);
-    gh_config_text("\n[interactions.TH_GAS_RAD.conductance]\nlaw = \"gas-gap\"\n");
+    gh_config_law("TH_GAS_RAD", "gas-gap");
     gh_config_real("k_gas", K_GAS);
     gh_config_real("g0", G0);
     gh_config_text("\n[interactions.TH_GAS_RAD.radiation]\n");

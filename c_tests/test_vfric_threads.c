@@ -63,9 +63,8 @@ typedef struct {
 
 static int draw_block(int b, block_in *in)
 {
-    uint32_t x = (uint32_t)b * 2654435761u % (TH_LEHMER_M - 1u) + 1u;
+    uint32_t x = th_block_seed(b);
     int k, kind, nbad;
-    th_lehmer(&x);
     kind = (int)(th_lehmer(&x) % N_KINDS);
     in->kind = kind;
     in->n = 1 + b % MAX_NCONTACT;
@@ -172,24 +171,20 @@ static int same_bits(double a, double b)
 static uint64_t run_block(int b, th_tally *t)
 {
     block_in in;
-    int n, nf, k, len, one = 1, two = NSTATEV, four = 4, nprops = NPROPS, ndir, ints[4] = {1, 1, 1, 1};
+    int n, nf, k, one = 1, two = NSTATEV, four = 4, nprops = NPROPS, ndir, ints[4] = {1, 1, 1, 1};
     double *ftan, *statev, *unread;
     char name[80], blank[80], want[48];
     const char *msg;
     uint64_t h = TH_FNV_OFFSET;
 
     memset(&in, 0, sizeof in);
-    if (!draw_block(b, &in)) {
-        t->alloc_fail++;
-        free_block(&in);
-        return 0;
-    }
+    k = draw_block(b, &in);
     n = in.n;
     nf = in.nf;
     ndir = nf + 1;
-    ftan = malloc(sizeof(double) * (size_t)(nf * n));
-    statev = malloc(sizeof(double) * NSTATEV * (size_t)n);
-    unread = malloc(sizeof(double) * UNREAD);
+    ftan = k ? th_filled((size_t)(nf * n), FH_GUARD) : NULL;
+    statev = k ? th_filled(NSTATEV * (size_t)n, 0.0) : NULL;
+    unread = k ? th_filled(UNREAD, 1.0) : NULL;
     if (ftan == NULL || statev == NULL || unread == NULL) {
         t->alloc_fail++;
         free(ftan);
@@ -198,19 +193,10 @@ static uint64_t run_block(int b, th_tally *t)
         free_block(&in);
         return 0;
     }
-    for (k = 0; k < nf * n; k++) {
-        ftan[k] = FH_GUARD;
-    }
     for (k = 0; k < NSTATEV * n; k++) {
         statev[k] = 0.5 * k;
     }
-    for (k = 0; k < UNREAD; k++) {
-        unread[k] = 1.0;
-    }
-    memset(blank, ' ', sizeof blank);
-    memset(name, ' ', sizeof name);
-    len = snprintf(name, sizeof name, "VF%d", b);
-    name[len] = ' ';
+    th_block_names(name, blank, "VF", b);
     vfric_(ftan, statev, &one, &one, &n, &four, &in.nslv, &four, &nf, &ndir, &two, &nprops, &one,
            &one, &one, ints, ints, in.slave, ints, unread, unread, unread, name, blank, blank,
            ints, unread, in.stick, unread, in.normal, unread, unread, unread, unread, unread,

@@ -45,6 +45,14 @@ static inline uint32_t th_lehmer(uint32_t *x)
     *x = (uint32_t)(((uint64_t)*x * 48271u) % TH_LEHMER_M);
     return *x;
 }
+/* The generator's state for block b of a block harness: b scattered by Knuth's multiplicative
+ * hash (mod 2^32) into [1, m - 1], then advanced once. */
+static inline uint32_t th_block_seed(int b)
+{
+    uint32_t x = (uint32_t)b * 2654435761u % (TH_LEHMER_M - 1u) + 1u;
+    th_lehmer(&x);
+    return x;
+}
 /* A draw in [lo, hi) from the generator's next value. */
 static inline double th_uniform(uint32_t *x, double lo, double hi)
 {
@@ -61,6 +69,28 @@ static inline uint64_t th_fnv(uint64_t h, const void *p, size_t n)
         h = (h ^ b[i]) * 1099511628211u;
     }
     return h;
+}
+
+/* ---- A block harness's buffers ---------------------------------------------------------- */
+/* n doubles from malloc, each v (a guard or a start value); NULL when out of memory. */
+static inline double *th_filled(size_t n, double v)
+{
+    double *a = malloc(sizeof(double) * n);
+    size_t i;
+    for (i = 0; a != NULL && i < n; i++) {
+        a[i] = v;
+    }
+    return a;
+}
+/* The interaction name of block b as a Fortran host passes it: prefix and b, blank-padded to
+ * 80 characters (no NUL); blank the blank name of the other two CHARACTER*80 arguments. */
+static inline void th_block_names(char name[80], char blank[80], const char *prefix, int b)
+{
+    char text[32];
+    int len = snprintf(text, sizeof text, "%s%d", prefix, b);
+    memset(name, ' ', 80);
+    memset(blank, ' ', 80);
+    memcpy(name, text, (size_t)(len < 32 ? len : 31));
 }
 
 /* INTERFACIAL_TEST_SHRINK=n divides a harness's size by n; at most max_shrink, at least 1. */

@@ -1,19 +1,40 @@
 C=======================================================================
 C     harness_f77.f -- the routines the fixed-form harnesses share
 C     (test_fric_f1.f, test_fric_bad_input.f, test_fric_rate.f,
-C     test_gapcon_t1.f, test_gapcon_bad_input.f): the tally CHECK /
-C     CHKNR, the sentinel guard GUARD1, the FRIC arguments preset to
-C     the sentinel before a call (SENTAL, SENTOU), the host arguments a
+C     test_gapcon_t1.f, test_gapcon_bad_input.f, test_vfric.f): the
+C     tally TALLY0 / CHECK / CHKNR / TALLYE, the sentinel guard GUARD1,
+C     the FRIC arguments preset to the sentinel before a call (SENTAL,
+C     SENTOU), the host arguments a
 C     Coulomb call does not use (HOSTIN), the Coulomb point of scene
 C     F1 (F1PT), a NaN and an Inf made at run time (NANINF), the
 C     thread's last library message (GETMSG) and one checked GAPCON
 C     call (GAPONE, with SAMEB).
 C     Fixed-form Fortran 77 like its callers, which share with it
-C       COMMON /TALLY/ NPASS,NFAIL   (zeroed by the program)
+C       COMMON /TALLY/ NPASS,NFAIL   (zeroed by TALLY0)
 C       COMMON /CTX/ CASE            (CHARACTER*48, the current case).
-C     Linked into a harness by interfacial_fortran_harness's extra
-C     source argument (fortran_tests/CMakeLists.txt).
+C     Built once (object library fortran_harness_f77) and linked into
+C     every fixed-form harness (fortran_tests/CMakeLists.txt).
 C=======================================================================
+
+C-----------------------------------------------------------------------
+C     The tally opened (TALLY0: counts zero, no case) and closed (TALLYE:
+C     the harness's last line "<n> passed, <m> failed", STOP 1 on a
+C     failure) by each program.
+C-----------------------------------------------------------------------
+      SUBROUTINE TALLY0
+      CHARACTER*48 CASE
+      COMMON /CTX/ CASE
+      COMMON /TALLY/ NPASS,NFAIL
+      NPASS = 0
+      NFAIL = 0
+      CASE = ' '
+      END
+
+      SUBROUTINE TALLYE
+      COMMON /TALLY/ NPASS,NFAIL
+      WRITE (*,'(I0,A,I0,A)') NPASS, ' passed, ', NFAIL, ' failed'
+      IF (NFAIL .GT. 0) STOP 1
+      END
 
 C-----------------------------------------------------------------------
 C     Tally.  A failure prints the case, K (the check or increment
@@ -107,13 +128,19 @@ C     of a history: TAU and STATEV carry the state).
 C-----------------------------------------------------------------------
 C     The host arguments the Coulomb law does not use, filled as a host
 C     would (step 1 at time 0, Delta t = 0.1, identity DROT, contact at
-C     node 7, point 1, element 0, SLIP(1..MG) = 0).
+C     node 7, point 1, element 0, SLIP(1..MG) = 0), and the names:
+C     interaction NAME between surfaces 'SLAVE' and 'MASTER'.
 C-----------------------------------------------------------------------
       SUBROUTINE HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,
-     1 COORDS,RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
+     1 COORDS,RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG,
+     2 CINAME,SLNAME,MSNAME,NAME)
       INCLUDE 'ABA_PARAM.INC'
+      CHARACTER*(*) CINAME,SLNAME,MSNAME,NAME
       DIMENSION TIME(2),COORDS(3),RCOORD(3),DROT(2,2),TEMP(2),
      1 PREDEF(2,1),SLIP(MG)
+      CINAME = NAME
+      SLNAME = 'SLAVE'
+      MSNAME = 'MASTER'
       KSTEP = 1
       KINC = 1
       TIME(1) = 0.0D0
@@ -220,10 +247,33 @@ C-----------------------------------------------------------------------
       PARAMETER (SENT=-999.25D0)
       DIMENSION AK(5),D(2),FLOWM(2),TEMP(2),PREDEF(2,1),TIME(2),
      1 COORDS(3)
-      LOGICAL OK, SAMEB
+      LOGICAL SAMEB
       CINAME = NAME
       SLNAME = 'SLAVE'
       MSNAME = 'MASTER'
+      CALL GAPIN(AK,D,FLOWM,TEMP,PREDEF,TIME,COORDS,NODE,NPRED,KSTEP,
+     1 KINC,CLR,P,TA,TB)
+      NOELIN = NOEL
+      CALL GAPCON(AK,D,FLOWM,TEMP,PREDEF,TIME,CINAME,SLNAME,MSNAME,
+     1 COORDS,NOELIN,NODE,NPRED,KSTEP,KINC)
+      AK1 = AK(1)
+      CALL GUARD1(AK, 2, 5, 'AK(2..5) untouched', NOEL)
+      CALL CHECK(SAMEB(D(1), CLR) .AND. SAMEB(D(2), P) .AND.
+     1 SAMEB(TEMP(1), TA) .AND. SAMEB(TEMP(2), TB) .AND.
+     2 CINAME .EQ. NAME .AND. NOELIN .EQ. NOEL .AND. NODE .EQ. 7,
+     3 'inputs not written', NOEL)
+      CALL CHECK(AK1 .NE. SENT, 'AK(1) written', NOEL)
+      END
+
+C     The GAPCON arguments before a call: AK(1..5) the sentinel, D =
+C     (CLR, P), TEMP = (TA, TB), node 7, step 1, increment 1 at time 1,
+C     and harmless zeros in what GAPCON does not read.
+      SUBROUTINE GAPIN(AK,D,FLOWM,TEMP,PREDEF,TIME,COORDS,NODE,NPRED,
+     1 KSTEP,KINC,CLR,P,TA,TB)
+      INCLUDE 'ABA_PARAM.INC'
+      PARAMETER (SENT=-999.25D0)
+      DIMENSION AK(5),D(2),FLOWM(2),TEMP(2),PREDEF(2,1),TIME(2),
+     1 COORDS(3)
       DO 10 I = 1, 5
         AK(I) = SENT
    10 CONTINUE
@@ -244,20 +294,6 @@ C-----------------------------------------------------------------------
       NPRED = 1
       KSTEP = 1
       KINC = 1
-      NOELIN = NOEL
-      CALL GAPCON(AK,D,FLOWM,TEMP,PREDEF,TIME,CINAME,SLNAME,MSNAME,
-     1 COORDS,NOELIN,NODE,NPRED,KSTEP,KINC)
-      AK1 = AK(1)
-      OK = .TRUE.
-      DO 20 I = 2, 5
-        IF (AK(I) .NE. SENT) OK = .FALSE.
-   20 CONTINUE
-      CALL CHECK(OK, 'AK(2..5) untouched', NOEL)
-      CALL CHECK(SAMEB(D(1), CLR) .AND. SAMEB(D(2), P) .AND.
-     1 SAMEB(TEMP(1), TA) .AND. SAMEB(TEMP(2), TB) .AND.
-     2 CINAME .EQ. NAME .AND. NOELIN .EQ. NOEL .AND. NODE .EQ. 7,
-     3 'inputs not written', NOEL)
-      CALL CHECK(AK1 .NE. SENT, 'AK(1) written', NOEL)
       END
 
 C     A and B the same bit for bit (a NaN equals that same NaN).

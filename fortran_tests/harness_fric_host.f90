@@ -11,7 +11,7 @@ module harness_fric_host
   use harness_tally, only: dp, check
   implicit none
   private
-  public :: fric_args, new_point, fric_call, check_tails, sentinel, big, mg, msv
+  public :: fric_args, new_point, at_c_twin_point, fric_call, check_tails, sentinel, big, mg, msv
 
   real(dp), parameter :: sentinel = -999.25_dp, big = 1.0e36_dp
   integer, parameter :: mg = 8, msv = 8
@@ -57,6 +57,18 @@ contains
     a%nstatv = 3
     a%ciname = name
   end function new_point
+
+  ! The host values the C twins pin (fh_init of c_tests/harness.h): element 17, node 42, point 3,
+  ! patch 5, surfaces SLAVE_SURF and MASTER_SURF.
+  subroutine at_c_twin_point(a)
+    type(fric_args), intent(inout) :: a
+    a%noel = 17
+    a%node = 42
+    a%npt = 3
+    a%npatch = 5
+    a%slname = 'SLAVE_SURF'
+    a%msname = 'MASTER_SURF'
+  end subroutine at_c_twin_point
 
   ! One FRIC call as the host makes it: the outputs that are not also inputs preset to the
   ! sentinel (so an entry that should have been written cannot pass by accident), PNEWDT = 1e36

@@ -45,6 +45,29 @@ module harness_omp
 
 contains
 
+  ! The start of the two runs: a flag per OpenMP thread (set by the threads that do work), the
+  ! violation counts and first texts cleared; OpenMP must offer at least 8 threads.
+  subroutine start_runs(worked, bad_par, bad_ser, first_par, first_ser)
+    logical, allocatable, intent(out) :: worked(:)
+    integer, intent(out) :: bad_par, bad_ser
+    character(len=*), intent(out) :: first_par, first_ser
+    allocate (worked(0:max(omp_get_max_threads(), 1) - 1))
+    worked = .false.
+    bad_par = 0
+    bad_ser = 0
+    first_par = ' '
+    first_ser = ' '
+    call check(omp_get_max_threads() >= nthreads_min, 'OpenMP offers at least 8 threads '// &
+               '(OMP_NUM_THREADS)')
+  end subroutine start_runs
+
+  ! The threads that did work in the parallel run; at least 8 must have.
+  integer function workers(worked)
+    logical, intent(in) :: worked(:)
+    workers = count(worked)
+    call check(workers >= nthreads_min, 'at least 8 OpenMP threads did work')
+  end function workers
+
   ! npoints points of incs increments each (nrec entries in a point's final record), kinds of
   ! call named by names; entry names the routine in the report.
   subroutine omp_point_runs(entry, names, npoints, incs, nrec, run_point)
@@ -60,16 +83,10 @@ contains
 
     calls = int(npoints, int64)*incs
     allocate (dig_par(incs, npoints), dig_ser(incs, npoints), fin_par(nrec, npoints), &
-              fin_ser(nrec, npoints), worked(0:max(omp_get_max_threads(), 1) - 1))
-    worked = .false.
+              fin_ser(nrec, npoints))
     kinds_par = 0
     kinds_ser = 0
-    bad_par = 0
-    bad_ser = 0
-    first_par = ' '
-    first_ser = ' '
-    call check(omp_get_max_threads() >= nthreads_min, 'OpenMP offers at least 8 threads '// &
-               '(OMP_NUM_THREADS)')
+    call start_runs(worked, bad_par, bad_ser, first_par, first_ser)
 
     ! Contiguous blocks of points per thread.
     !$omp parallel do schedule(static) default(shared) private(ip) &
@@ -79,9 +96,8 @@ contains
       call run_point(ip, dig_par(:, ip), fin_par(:, ip), kinds_par, bad_par, first_par)
     end do
     !$omp end parallel do
-    nworkers = count(worked)
+    nworkers = workers(worked)
     call judge_run('OpenMP', names, kinds_par, calls, bad_par, first_par)
-    call check(nworkers >= nthreads_min, 'at least 8 OpenMP threads did work')
 
     do ip = 1, npoints
       call run_point(ip, dig_ser(:, ip), fin_ser(:, ip), kinds_ser, bad_ser, first_ser)
@@ -89,7 +105,7 @@ contains
     call judge_run('serial', names, kinds_ser, calls, bad_ser, first_ser)
     call compare_point_runs(entry, nworkers, names, kinds_par, kinds_ser, dig_par, dig_ser, &
                             fin_par, fin_ser)
-    deallocate (dig_par, dig_ser, fin_par, fin_ser, worked)
+    deallocate (dig_par, dig_ser, fin_par, fin_ser)
   end subroutine omp_point_runs
 
   ! nblocks blocks (full size divided by shrink), kinds of block named by names; law names what
@@ -107,15 +123,8 @@ contains
     character(len=256) :: first_par, first_ser
 
     allocate (dig_par(2, nblocks), dig_ser(2, nblocks), kind_par(nblocks), kind_ser(nblocks), &
-              n_par(nblocks), n_ser(nblocks), b_par(nblocks), b_ser(nblocks), &
-              worked(0:max(omp_get_max_threads(), 1) - 1))
-    worked = .false.
-    bad_par = 0
-    bad_ser = 0
-    first_par = ' '
-    first_ser = ' '
-    call check(omp_get_max_threads() >= nthreads_min, 'OpenMP offers at least 8 threads '// &
-               '(OMP_NUM_THREADS)')
+              n_par(nblocks), n_ser(nblocks), b_par(nblocks), b_ser(nblocks))
+    call start_runs(worked, bad_par, bad_ser, first_par, first_ser)
 
     !$omp parallel do schedule(static) default(shared) private(ib)
     do ib = 1, nblocks
@@ -123,8 +132,7 @@ contains
       call run_block(ib, dig_par(:, ib), kind_par(ib), n_par(ib), b_par(ib), bad_par, first_par)
     end do
     !$omp end parallel do
-    nworkers = count(worked)
-    call check(nworkers >= nthreads_min, 'at least 8 OpenMP threads did work')
+    nworkers = workers(worked)
     call report_violations('OpenMP', bad_par, first_par)
     call check(bad_par == 0, 'every OpenMP block matches '//law)
 
@@ -141,6 +149,6 @@ contains
     end if
     call compare_block_runs(entry, nworkers, shrink, names, kind_par, kind_ser, n_par, n_ser, &
                             dig_par, dig_ser)
-    deallocate (dig_par, dig_ser, kind_par, kind_ser, n_par, n_ser, b_par, b_ser, worked)
+    deallocate (dig_par, dig_ser, kind_par, kind_ser, n_par, n_ser, b_par, b_ser)
   end subroutine omp_block_runs
 end module harness_omp

@@ -1,5 +1,5 @@
 ! harness_tally.f90 -- the pass/fail tally shared by the free-form Fortran harnesses that use it
-! (the Fortran side of c_tests/harness.h): check, check_near (|got - want| <= rtol |want| + atol),
+! (the Fortran side of c_tests/harness.h): finish (the last line), check, check_near (|got - want| <= rtol |want| + atol),
 ! check_abs (|got - want| <= tol), check_at / check_abs_at (the same for a numbered step),
 ! the calling thread's last library message (ifl_last_error_copy) and check_contains. The
 ! current scene's name goes in `scene`; the first 40 failures are printed with it.
@@ -37,6 +37,13 @@ module harness_tally
   end interface
 
 contains
+
+  ! The harness's last line, "<n> passed, <m> failed", and ERROR STOP on a failure or when
+  ! nothing was checked.
+  subroutine finish()
+    write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
+    if (nfail > 0 .or. npass == 0) error stop 1
+  end subroutine finish
 
   subroutine check(ok, what)
     logical, intent(in) :: ok

@@ -41,6 +41,15 @@ contains
     lehmer = x
   end function lehmer
 
+  ! The generator's state for block ib of a block harness: ib scattered by Knuth's
+  ! multiplicative hash into [1, m - 1], then advanced once.
+  recursive function block_seed(ib) result(x)
+    integer, intent(in) :: ib
+    integer(int64) :: x
+    x = mod(int(ib, int64)*2654435761_int64, lehmer_m - 1) + 1
+    x = mod(48271_int64*x, lehmer_m)
+  end function block_seed
+
   ! Uniform in [lo, hi) from the generator's next value.
   recursive real(dp) function uniform(x, lo, hi)
     integer(int64), intent(inout) :: x
@@ -189,10 +198,4 @@ contains
     write (*, '(i0,a,a,a,i0,a,i0,a)') nblocks, ' ', entry, ' blocks on ', nworkers, &
       ' OpenMP threads and serially: ', ndiff, ' blocks differ'
   end subroutine compare_block_runs
-
-  ! The last line, "<n> passed, <m> failed", and ERROR STOP on a failure.
-  subroutine finish()
-    write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-    if (nfail > 0) error stop 1
-  end subroutine finish
 end module harness_threads

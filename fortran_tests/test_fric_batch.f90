@@ -40,7 +40,7 @@ module batch_api
 end module batch_api
 
 module batch_points
-  use harness_tally, only: dp, npass, nfail, scene, check
+  use harness_tally, only: dp, finish, scene, check
   implicit none
   integer, parameter :: np = 33, ld = 37, nsv = 3
   real(dp), parameter :: unset = 12345.678_dp, big = 1.0e36_dp
@@ -284,8 +284,7 @@ program test_fric_batch
   call check(pb == 0.25_dp, 'PNEWDT lowered to 0.25')
   call check(same(in, got), 'nothing written')
 
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 
 contains
 

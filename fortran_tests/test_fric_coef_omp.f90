@@ -55,8 +55,7 @@ contains
     logical :: decay, pref, tlaw
     character(len=200) :: what
 
-    x = mod(int(ib, int64)*2654435761_int64, lehmer_m - 1) + 1
-    x = mod(48271_int64*x, lehmer_m)
+    x = block_seed(ib)
     law = int(mod(lehmer(x), int(n_laws, int64))) + 1
     n = 1 + mod(ib - 1, max_nblock)
     npts = n

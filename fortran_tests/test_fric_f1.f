@@ -13,16 +13,15 @@ C       stick: tau = k_s gamma_el,  slip: |tau| = tau_crit.
 C     Output arrays are declared longer than NFDIR (STATEV longer than
 C     NSTATV); their tails hold a sentinel that must survive each call.
 C
-C     CHECK, CHKNR, GUARD1, SENTAL, SENTOU, HOSTIN and F1PT come from
-C     harness_f77.f.
+C     TALLY0, CHECK, CHKNR, TALLYE (the tally and its last line), GUARD1,
+C     SENTAL, SENTOU, HOSTIN and F1PT come from harness_f77.f, a host
+C     point's declarations from fric_host.inc.
 C
-C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
       PROGRAM TFRIC1
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
-      NPASS = 0
-      NFAIL = 0
+      CALL TALLY0
 C     NDIR: NFDIR = 1 (2-D) and 2 (3-D).  IGSRC = 1: gamma_crit from
 C     PROPS(5); IGSRC = 2: the default 0.005*CHRLNGTH.  ICAP = 0: no
 C     shear limit; ICAP = 1: tau_max = 20 < mu p = 30.
@@ -35,8 +34,7 @@ C     shear limit; ICAP = 1: tau_max = 20 < mu p = 30.
    30 CONTINUE
       CALL LMTWO
       CALL ROUGH
-      WRITE (*,'(I0,A,I0,A)') NPASS, ' passed, ', NFAIL, ' failed'
-      IF (NFAIL .GT. 0) STOP 1
+      CALL TALLYE
       END
 
 C-----------------------------------------------------------------------
@@ -56,23 +54,17 @@ C     the capped sum is tau_max gc 57).
 C-----------------------------------------------------------------------
       SUBROUTINE PULL(NDIR, IGSRC, ICAP)
       INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*80 CINAME,SLNAME,MSNAME
-      CHARACTER*48 CASE
-      COMMON /CTX/ CASE
-      PARAMETER (MG=8, MSV=8, NUP=75, SENT=-999.25D0, BIG=1.0D36)
-      DIMENSION TAU(MG),DDTDDG(MG),DDTDDP(MG),DSLIP(MG),DDTDDT(MG),
-     1 STATEV(MSV),DGAM(MG),TAULM(MG),SLIP(MG),TIME(2),COORDS(3),
-     2 RCOORD(3),DROT(2,2),TEMP(2),PREDEF(2,1),PROPS(7),E(2),DGIN(MG)
+      INCLUDE 'fric_host.inc'
+      PARAMETER (NUP=75)
+      DIMENSION PROPS(7),E(2),DGIN(MG)
       LOGICAL SLIPS
 C
       NFDIR = NDIR
       WRITE (CASE,'(A,I1,A,I1,A,I1)') 'F1 pull NFDIR=', NFDIR,
      1 ' gcsrc=', IGSRC, ' cap=', ICAP
       CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
-     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
-      CINAME = 'F1-PULL'
-      SLNAME = 'SLAVE'
-      MSNAME = 'MASTER'
+     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG,CINAME,SLNAME,
+     2 MSNAME,'F1-PULL')
 C
       XMU = 0.3D0
       P = 100.0D0
@@ -290,19 +282,12 @@ C     and writes nothing, not even PNEWDT.
 C-----------------------------------------------------------------------
       SUBROUTINE LMTWO
       INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*80 CINAME,SLNAME,MSNAME
-      CHARACTER*48 CASE
-      COMMON /CTX/ CASE
-      PARAMETER (MG=8, MSV=8, SENT=-999.25D0, BIG=1.0D36)
-      DIMENSION TAU(MG),DDTDDG(MG),DDTDDP(MG),DSLIP(MG),DDTDDT(MG),
-     1 STATEV(MSV),DGAM(MG),TAULM(MG),SLIP(MG),TIME(2),COORDS(3),
-     2 RCOORD(3),DROT(2,2),TEMP(2),PREDEF(2,1),PROPS(7)
+      INCLUDE 'fric_host.inc'
+      DIMENSION PROPS(7)
 C
       CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
-     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
-      CINAME = 'F1-LM2'
-      SLNAME = 'SLAVE'
-      MSNAME = 'MASTER'
+     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG,CINAME,SLNAME,
+     2 MSNAME,'F1-LM2')
       CALL F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
       DO 50 NFDIR = 1, 2
         WRITE (CASE,'(A,I1)') 'F1 LM=2 on entry NFDIR=', NFDIR
@@ -339,19 +324,12 @@ C     SFD = 0; STATEV(1) kept, STATEV(2) = 0, STATEV(3) = 2.
 C-----------------------------------------------------------------------
       SUBROUTINE ROUGH
       INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*80 CINAME,SLNAME,MSNAME
-      CHARACTER*48 CASE
-      COMMON /CTX/ CASE
-      PARAMETER (MG=8, MSV=8, SENT=-999.25D0, BIG=1.0D36)
-      DIMENSION TAU(MG),DDTDDG(MG),DDTDDP(MG),DSLIP(MG),DDTDDT(MG),
-     1 STATEV(MSV),DGAM(MG),TAULM(MG),SLIP(MG),TIME(2),COORDS(3),
-     2 RCOORD(3),DROT(2,2),TEMP(2),PREDEF(2,1),PROPS(7)
+      INCLUDE 'fric_host.inc'
+      DIMENSION PROPS(7)
 C
       CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
-     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
-      CINAME = 'F1-ROUGH'
-      SLNAME = 'SLAVE'
-      MSNAME = 'MASTER'
+     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG,CINAME,SLNAME,
+     2 MSNAME,'F1-ROUGH')
       CALL F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
       PROPS(6) = 0.0D0
       PROPS(7) = 2.0D0

@@ -13,22 +13,20 @@ C     steady |tau| = mu(v) p and STATEV(2) = v; FRIC_COEF returns
 C     fCoef(1,1) = mu(v), fCoefDeriv(1,1,1) = -d_c (mu_s-mu_k)
 C     exp(-d_c v).  NFDIR = 1 and 2, elastic and exact stick.
 C
-C     CHECK (K = the velocity step) and HOSTIN come from harness_f77.f.
+C     The tally (CHECK with K = the velocity step) and HOSTIN come from
+C     harness_f77.f.
 C
-C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
       PROGRAM TFRATE
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
-      NPASS = 0
-      NFAIL = 0
+      CALL TALLY0
       DO 20 NDIR = 1, 2
         DO 10 LMODE = 0, 1
           CALL STEPS(NDIR, LMODE)
    10   CONTINUE
    20 CONTINUE
-      WRITE (*,'(I0,A,I0,A)') NPASS, ' passed, ', NFAIL, ' failed'
-      IF (NFAIL .GT. 0) STOP 1
+      CALL TALLYE
       END
 
       SUBROUTINE STEPS(NDIR, LMODE)
@@ -84,10 +82,8 @@ C     Exponential decay from mu_s = PROPS(2) to mu_k.
       STATEV(2) = 0.0D0
       STATEV(3) = 0.0D0
       CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
-     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG)
-      CINAME = 'F4-RATE'
-      SLNAME = 'SLAVE'
-      MSNAME = 'MASTER'
+     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG,CINAME,SLNAME,
+     2 MSNAME,'F4-RATE')
       DTIME = 0.01D0
       PRESS = P
       DPRESS = P

@@ -15,7 +15,7 @@
 module fric_host
   use harness_fric_host
   ! The tally: check and check_near here take the increment or point number K.
-  use harness_tally, only: dp, npass, nfail, scene, check => check_at, check_near => check_abs_at
+  use harness_tally, only: dp, finish, scene, check => check_at, check_near => check_abs_at
   implicit none
   real(dp), parameter :: pi = 3.14159265358979323846_dp
 
@@ -418,6 +418,5 @@ program test_fric_scenes
     call scene_f5(nfdir, 20.0_dp)
     call scene_spring(nfdir)
   end do
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 end program test_fric_scenes

@@ -40,8 +40,7 @@ program test_fric_steady
     end do
   end do
   call bad_input()
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0 .or. npass == 0) error stop 1
+  call finish()
 
 contains
 
@@ -78,12 +77,9 @@ contains
     h = new_point(n, props, 'DISC_PAD')
     h%press = p
     h%dtime = dt
-    h%noel = 17
+    call at_c_twin_point(h)
     h%slname = 'PAD'
     h%msname = 'DISC'
-    h%npt = 3
-    h%node = 42
-    h%npatch = 5
     h%coords = [0.3_dp, 0.4_dp, 2.0_dp]
     h%rcoord = h%coords
   end subroutine point

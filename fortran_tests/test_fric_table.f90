@@ -59,12 +59,7 @@ contains
     type(fric_args) :: a
     a = new_point(nfdir, props, 'SI_PAD')
     a%dtime = dt
-    a%noel = 17
-    a%slname = 'SLAVE_SURF'
-    a%msname = 'MASTER_SURF'
-    a%npt = 3
-    a%node = 42
-    a%npatch = 5
+    call at_c_twin_point(a)
   end function table_point
 
   ! One FRIC call, then the tails past NFDIR / NFDIR**2 / NSTATV checked untouched.
@@ -232,6 +227,5 @@ program test_fric_table
     call refused(h, [character(len=40) :: "'NO_TABLE'", '[interactions.NO_TABLE.friction]'])
   end if
 
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0 .or. npass == 0) error stop 1
+  call finish()
 end program test_fric_table

@@ -33,8 +33,7 @@ program test_fric_weakening
   end do
   call fresh_gap(2)
   call fresh_gap(3)
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0 .or. npass == 0) error stop 1
+  call finish()
 
 contains
 

@@ -25,21 +25,18 @@ C     8-character name must match (good) or be reported (bad) without
 C     a byte read past the hidden length.  Each call has its own
 C     element number, so a stale message cannot pass.
 C
-C     GAPONE (one checked GAPCON call), CHECK, CHKNR, NANINF and GETMSG
-C     come from harness_f77.f.
+C     GAPONE (one checked GAPCON call), the tally, NANINF and GETMSG
+C     come from harness_f77.f; the run's COMMON /CFGC/ from
+C     gapcon_cfg.inc.
 C
-C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
       PROGRAM TGBAD
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
       CHARACTER*48 CASE
       COMMON /CTX/ CASE
-      CHARACTER*16 MODE
-      CHARACTER*512 CFG, CAUSE
-      COMMON /CFGC/ MODE, CFG, CAUSE
-      NPASS = 0
-      NFAIL = 0
+      INCLUDE 'gapcon_cfg.inc'
+      CALL TALLY0
       MODE = 'good'
       IF (COMMAND_ARGUMENT_COUNT() .GE. 1)
      1 CALL GET_COMMAND_ARGUMENT(1, MODE)
@@ -56,8 +53,7 @@ C
         CALL BADCFG
       END IF
       CALL OLDUSR(XNAN)
-      WRITE (*,'(I0,A,I0,A)') NPASS, ' passed, ', NFAIL, ' failed'
-      IF (NFAIL .GT. 0) STOP 1
+      CALL TALLYE
       END
 
 C-----------------------------------------------------------------------
@@ -69,9 +65,7 @@ C-----------------------------------------------------------------------
       INCLUDE 'ABA_PARAM.INC'
       CHARACTER*48 CASE
       COMMON /CTX/ CASE
-      CHARACTER*16 MODE
-      CHARACTER*512 CFG, CAUSE
-      COMMON /CFGC/ MODE, CFG, CAUSE
+      INCLUDE 'gapcon_cfg.inc'
       PARAMETER (SENT=-999.25D0)
 C
       CASE = 'good call T1CONST'
@@ -163,9 +157,7 @@ C-----------------------------------------------------------------------
       INCLUDE 'ABA_PARAM.INC'
       CHARACTER*48 CASE
       COMMON /CTX/ CASE
-      CHARACTER*16 MODE
-      CHARACTER*512 CFG, CAUSE
-      COMMON /CFGC/ MODE, CFG, CAUSE
+      INCLUDE 'gapcon_cfg.inc'
       CHARACTER*12 NUM
       LOGICAL THERE
       CHARACTER*8 NAMES(3)
@@ -225,14 +217,10 @@ C-----------------------------------------------------------------------
       COMMON /OLDNAM/ CINAME,CTAIL
       CHARACTER*48 CASE
       COMMON /CTX/ CASE
-      CHARACTER*16 MODE
-      CHARACTER*512 CFG, CAUSE
-      COMMON /CFGC/ MODE, CFG, CAUSE
-      PARAMETER (SENT=-999.25D0)
+      INCLUDE 'gapcon_cfg.inc'
       DIMENSION AK(5),D(2),FLOWM(2),TEMP(2),PREDEF(2,1),TIME(2),
      1 COORDS(3)
       CHARACTER*512 MSG
-      LOGICAL OK
       CHARACTER*8 NAMES(3), TAILS(3)
       DATA NAMES /'OLDGAP08', 'T1CONST', 'OLDGAP08'/
       DATA TAILS /'T1CONST', 'XX', 'NOTNAME!'/
@@ -243,35 +231,13 @@ C
         WRITE (CASE,'(A,I0)') 'CHARACTER*8 caller, case ', ICASE
         CINAME = NAMES(ICASE)
         CTAIL = TAILS(ICASE)
-        DO 10 I = 1, 5
-          AK(I) = SENT
-   10   CONTINUE
-        D(1) = 0.0D0
-        D(2) = 40.0D0
-        FLOWM(1) = 0.0D0
-        FLOWM(2) = 0.0D0
-        TEMP(1) = 400.0D0
+        CALL GAPIN(AK,D,FLOWM,TEMP,PREDEF,TIME,COORDS,NODE,NPRED,
+     1   KSTEP,KINC,0.0D0,40.0D0,400.0D0,380.0D0)
         IF (ICASE .EQ. 3) TEMP(1) = XNAN
-        TEMP(2) = 380.0D0
-        PREDEF(1,1) = 0.0D0
-        PREDEF(2,1) = 0.0D0
-        TIME(1) = 1.0D0
-        TIME(2) = 1.0D0
-        COORDS(1) = 0.0D0
-        COORDS(2) = 0.0D0
-        COORDS(3) = 0.0D0
         NOEL = 200 + ICASE
-        NODE = 7
-        NPRED = 1
-        KSTEP = 1
-        KINC = 1
         CALL GAPCON(AK,D,FLOWM,TEMP,PREDEF,TIME,CINAME,SLNAME,MSNAME,
      1   COORDS,NOEL,NODE,NPRED,KSTEP,KINC)
-        OK = .TRUE.
-        DO 20 I = 2, 5
-          IF (AK(I) .NE. SENT) OK = .FALSE.
-   20   CONTINUE
-        CALL CHECK(OK, 'AK(2..5) untouched', NOEL)
+        CALL GUARD1(AK, 2, 5, 'AK(2..5) untouched', NOEL)
         CALL CHECK(CINAME .EQ. NAMES(ICASE) .AND.
      1   CTAIL .EQ. TAILS(ICASE), 'names not written', NOEL)
         IF (MODE .EQ. 'good' .AND. ICASE .EQ. 1) THEN
@@ -304,9 +270,7 @@ C     parameter' (configuration), 'bad input', 'numerical failure'.
 C-----------------------------------------------------------------------
       SUBROUTINE EXPMSG(ROUT, NAME, NOEL, KIND, IAT)
       CHARACTER*(*) ROUT, NAME, KIND
-      CHARACTER*16 MODE
-      CHARACTER*512 CFG, CAUSE
-      COMMON /CFGC/ MODE, CFG, CAUSE
+      INCLUDE 'gapcon_cfg.inc'
       COMMON /TALLY/ NPASS,NFAIL
       CHARACTER*600 EXPECT
       CHARACTER*512 MSG
@@ -350,9 +314,7 @@ C-----------------------------------------------------------------------
      1 C_NULL_CHAR
       INCLUDE 'ABA_PARAM.INC'
       CHARACTER*(*) NAME
-      CHARACTER*16 MODE
-      CHARACTER*512 CFG, CAUSE
-      COMMON /CFGC/ MODE, CFG, CAUSE
+      INCLUDE 'gapcon_cfg.inc'
       COMMON /TALLY/ NPASS,NFAIL
       TYPE, BIND(C) :: IFLCND
         REAL(C_DOUBLE) :: V(6)

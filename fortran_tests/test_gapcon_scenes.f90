@@ -17,7 +17,7 @@
 ! The host side: scene constants, one GAPCON call as Abaqus makes it, one native call.
 module gapcon_host
   ! The tally: check and check_near here take the increment or point number K.
-  use harness_tally, only: dp, npass, nfail, scene, check => check_at, check_near => check_abs_at, &
+  use harness_tally, only: dp, finish, scene, check => check_at, check_near => check_abs_at, &
     last_error, ifl_conductance, ifl_gap_conductance
   use, intrinsic :: iso_c_binding, only: c_int, c_null_char
   implicit none
@@ -487,6 +487,5 @@ program test_gapcon_scenes
   call scene_t2_steady('GASRAD', 1.0e-4_dp, kelvin_zero, qg)
   scene = 'T2 steady GASRAD vs RADK'
   call check(qg > qk, 'adding gas conduction raises the flux', 0)
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 end program test_gapcon_scenes

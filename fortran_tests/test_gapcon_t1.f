@@ -21,18 +21,16 @@ C     converged mean temperature; the flux is also the root of the
 C     quadratic that follows from h linear in the mean temperature.
 C
 C     The configuration file comes from CTest (INTERFACIAL_CONFIG).
-C     GAPONE (one checked GAPCON call), CHECK and CHKNR come from
-C     harness_f77.f.
+C     GAPONE (one checked GAPCON call) and the tally (CHECK, CHKNR,
+C     TALLYE's last line "<n> passed, <m> failed") come from harness_f77.f.
 C
-C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
 C=======================================================================
       PROGRAM TGAPT1
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
       CHARACTER*48 CASE
       COMMON /CTX/ CASE
-      NPASS = 0
-      NFAIL = 0
+      CALL TALLY0
 C
 C     Constant k = 2000: h = 2000 at any pressure.
       CALL T1LIN('T1CONST', 40.0D0, 2000.0D0, 1)
@@ -47,8 +45,7 @@ C     outside on both sides (constant there, also for p < 0).
 C     Pressure and temperature table at p = 50.
       CALL T1TMP
 C
-      WRITE (*,'(I0,A,I0,A)') NPASS, ' passed, ', NFAIL, ' failed'
-      IF (NFAIL .GT. 0) STOP 1
+      CALL TALLYE
       END
 
 C-----------------------------------------------------------------------

@@ -78,8 +78,7 @@ program test_pore_pressure
   call check(count(tng /= 0.0_dp) == 3, 'no other tangent entry')
   call check(all(geo == 0.0_dp), 'small sliding: no geometric terms')
 
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0 .or. npass == 0) stop 1
+  call finish()
 
 contains
 

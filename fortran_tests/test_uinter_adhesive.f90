@@ -15,7 +15,7 @@
 !
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 program test_uinter_adhesive
-  use harness_tally, only: dp, npass, nfail, scene, check, check_abs
+  use harness_tally, only: dp, finish, scene, check, check_abs
   use harness_fric_host, only: fric_args, new_point, fric_call, check_tails
   use harness_uinter_host
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -34,8 +34,7 @@ program test_uinter_adhesive
   call pull_off()
   call bad_input()
 
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 
 contains
 

@@ -10,7 +10,7 @@
 !       eta SFD/DTIME, SFD = mu p (|dgam| - gamma_crit), FLUX(1) = k(50)(T2 - T1) + f eta SFD/DTIME.
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 program test_uinter_heat
-  use harness_tally, only: dp, npass, nfail, check, check_abs
+  use harness_tally, only: dp, finish, check, check_abs
   use harness_uinter_host
   implicit none
   real(dp), parameter :: th = 400.0_dp, tc = 20.0_dp, ra = 2.0e-4_dp, rb = 1.0e-3_dp
@@ -53,8 +53,7 @@ program test_uinter_heat
   call check_abs(qin(1) - 1450.0_dp*(40.0_dp - 60.0_dp), 0.25_dp*0.8_dp*u%sfd/dt, &
                  1.0e-9_dp*u%sfd/dt, 'slave share f')
 
-  write (*, '(i0,a,i0,a)') npass, ' passed, ', nfail, ' failed'
-  if (nfail > 0) error stop 1
+  call finish()
 
 contains
 

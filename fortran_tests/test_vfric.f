@@ -16,13 +16,13 @@ C     computed; an adhesive PROPS(1) = 2 gives 0 everywhere.  Columns
 C     past nContact hold a sentinel that must survive; STATEV is not
 C     written.
 C
-C     Last line printed: "<n> passed, <m> failed"; STOP 1 on a failure.
+C     The tally (TALLY0, CHECK with the case in CASE, TALLYE) comes from
+C     harness_f77.f.
 C=======================================================================
       PROGRAM TVFRIC
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
-      NPASS = 0
-      NFAIL = 0
+      CALL TALLY0
       DO 20 NFD = 1, 2
         DO 10 ICAP = 0, 1
           CALL BLOCK(NFD, ICAP, 0)
@@ -31,8 +31,7 @@ C       A negative stick force at point 2; an adhesive PROPS.
         CALL BLOCK(NFD, 1, 1)
         CALL BLOCK(NFD, 0, 2)
    20 CONTINUE
-      WRITE (*,'(I0,A,I0,A)') NPASS, ' passed, ', NFAIL, ' failed'
-      IF (NFAIL .GT. 0) STOP 1
+      CALL TALLYE
       END
 
 C-----------------------------------------------------------------------
@@ -42,6 +41,8 @@ C     negative stick force; IBAD = 2: the adhesive law (refused).
 C-----------------------------------------------------------------------
       SUBROUTINE BLOCK(NFD, ICAP, IBAD)
       INCLUDE 'ABA_PARAM.INC'
+      CHARACTER*48 CASE
+      COMMON /CTX/ CASE
       PARAMETER (NC=5, MC=7, NSLV=6, NSV=2, SENT=-999.25D0)
       CHARACTER*80 SURFI, SURFS, SURFM
       DIMENSION FTAN(2,MC), STATEV(NSV,NSLV), JSLVU(NSLV), JMSTU(4),
@@ -53,6 +54,8 @@ C-----------------------------------------------------------------------
       DATA FNIN /10.0D0, 10.0D0, -3.0D0, 40.0D0, 1.0D5/
       DATA FSIN / 5.0D0,  2.0D0,  4.0D0, 1.0D3, 1.0D9/
 C
+      WRITE (CASE,'(A,I0,A,I0,A,I0)') 'VFRIC nFricDir=', NFD,
+     1 ' cap=', ICAP, ' bad=', IBAD
       NCON = NC
       NFACN = 4
       NSLVN = NSLV
@@ -128,32 +131,32 @@ C     stride is 1, so point K is entry K of the flat array.
           IF (TMAX .GT. 0.0D0) CRIT = MIN(CRIT, TMAX*AREA(JCONS(K)))
           WANT = -MIN(CRIT, FSTICK(K))
         END IF
-        CALL CHECK(FLAT(FTAN, NFD, K, 1) .EQ. WANT, NFD, ICAP, IBAD, K)
+        CALL CHECK(FLAT(FTAN, NFD, K, 1) .EQ. WANT,
+     1   'fTangential(1,point) = closed form', K)
         IF (NFD .EQ. 2) THEN
-          CALL CHECK(FTAN(2,K) .EQ. 0.0D0, NFD, ICAP, IBAD, K)
+          CALL CHECK(FTAN(2,K) .EQ. 0.0D0, 'fTangential(2,point) = 0',
+     1     K)
         END IF
    30 CONTINUE
 C     Nothing past fTangential(nFricDir,nContact), STATEV untouched.
       DO 40 K = NC*NFD + 1, 2*MC
-        CALL CHECK(FLAT(FTAN, 1, K, 1) .EQ. SENT, NFD, ICAP, IBAD, -K)
+        CALL CHECK(FLAT(FTAN, 1, K, 1) .EQ. SENT,
+     1   'nothing past fTangential(nFricDir,nContact)', -K)
    40 CONTINUE
       DO 50 I = 1, NSLV
         CALL CHECK(STATEV(1,I) .EQ. 7.0D0 .AND. STATEV(2,I) .EQ. 8.0D0,
-     1   NFD, ICAP, IBAD, 100 + I)
+     1   'STATEV untouched', 100 + I)
    50 CONTINUE
 C     The kinds are present: slip, stick, tension (uncapped block).
       IF (IBAD .EQ. 0 .AND. ICAP .EQ. 0) THEN
-        CALL CHECK(FLAT(FTAN, NFD, 1, 1) .EQ. -3.0D0, NFD, ICAP, IBAD,
-     1   201)
-        CALL CHECK(FLAT(FTAN, NFD, 2, 1) .EQ. -2.0D0, NFD, ICAP, IBAD,
-     1   202)
-        CALL CHECK(FLAT(FTAN, NFD, 3, 1) .EQ. 0.0D0, NFD, ICAP, IBAD,
-     1   203)
+        CALL CHECK(FLAT(FTAN, NFD, 1, 1) .EQ. -3.0D0, 'slip', 201)
+        CALL CHECK(FLAT(FTAN, NFD, 2, 1) .EQ. -2.0D0, 'stick', 202)
+        CALL CHECK(FLAT(FTAN, NFD, 3, 1) .EQ. 0.0D0, 'tension', 203)
       END IF
 C     Point 4 capped: tau_max*area(node 3) = 2*1.25 < mu*40 = 12.
       IF (IBAD .EQ. 0 .AND. ICAP .EQ. 1) THEN
-        CALL CHECK(FLAT(FTAN, NFD, 4, 1) .EQ. -2.5D0, NFD, ICAP, IBAD,
-     1   204)
+        CALL CHECK(FLAT(FTAN, NFD, 4, 1) .EQ. -2.5D0,
+     1   'point 4 capped at tau_max area', 204)
       END IF
       END
 
@@ -162,16 +165,4 @@ C     Entry (I,K) of an array declared (LDA,*) but viewed flat.
       INCLUDE 'ABA_PARAM.INC'
       DIMENSION A(*)
       FLAT = A(I + (K-1)*LDA)
-      END
-
-      SUBROUTINE CHECK(OK, NFD, ICAP, IBAD, K)
-      LOGICAL OK
-      COMMON /TALLY/ NPASS,NFAIL
-      IF (OK) THEN
-        NPASS = NPASS + 1
-      ELSE
-        NFAIL = NFAIL + 1
-        WRITE (*,'(A,I0,A,I0,A,I0,A,I0)') 'FAIL nFricDir=', NFD,
-     1   ' cap=', ICAP, ' bad=', IBAD, ' point/check=', K
-      END IF
       END

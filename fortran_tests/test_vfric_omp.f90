@@ -62,8 +62,7 @@ contains
     integer(c_size_t) :: mlen
     character(len=200) :: what
 
-    x = mod(int(ib, int64)*2654435761_int64, lehmer_m - 1) + 1
-    x = mod(48271_int64*x, lehmer_m)
+    x = block_seed(ib)
     kind = int(mod(lehmer(x), int(n_kinds, int64))) + 1
     n = 1 + mod(ib - 1, max_ncontact)
     npts = n

@@ -24,6 +24,8 @@
 
 module mpi_host_points
   use, intrinsic :: iso_fortran_env, only: int64
+  ! The calling thread's last library message, as the serial Fortran harnesses read it.
+  use harness_tally, only: last_error
   implicit none
   integer, parameter :: dp = kind(1.0d0)
   integer, parameter :: npts = 5200, ninc = 24, ncat = 13, reclen = 8
@@ -437,26 +439,6 @@ contains
                 1, k)
   end subroutine gapcon_call
 
-  ! The calling thread's last message (ifl_last_error_copy: at most len - 1 bytes and a NUL).
-  function last_error() result(msg)
-    use, intrinsic :: iso_c_binding, only: c_char, c_size_t
-    character(len=512) :: msg
-    interface
-      function ifl_last_error_copy(buf, nbuf) bind(c, name='ifl_last_error_copy')
-        import :: c_char, c_size_t
-        integer(c_size_t) :: ifl_last_error_copy
-        character(kind=c_char), dimension(*) :: buf
-        integer(c_size_t), value :: nbuf
-      end function ifl_last_error_copy
-    end interface
-    integer(c_size_t) :: nfull
-    integer :: l
-    msg = ' '
-    nfull = ifl_last_error_copy(msg, int(len(msg), c_size_t))
-    l = int(min(nfull, int(len(msg) - 1, c_size_t)))
-    msg(l + 1:) = ' '
-  end function last_error
-
   ! Bad input on this rank, once per increment (phase 3): FRIC with mu < 0 in interaction BADMU
   ! and GAPCON for the unconfigured interaction NOSUCH, element 90000 + rank.
   subroutine bad_calls(rank, k)
@@ -465,7 +447,7 @@ contains
     real(dp) :: tau(mg), statev(msv), ddtddg(mg*mg), ddtddp(mg), dslip(mg), ddtddt(2*mg)
     real(dp) :: sed, sfd, pnewdt, dgam(mg), taulm(mg), d(2), ak(5)
     integer :: lm
-    character(len=512) :: msg
+    character(len=2048) :: msg
     character(len=16) :: elem
     b = new_point(1)
     b%cat = 99

@@ -8,8 +8,8 @@
 # Usage: scripts/bench-batch.sh [NREP [NRUN]]   (defaults 200, 15)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-# shellcheck source=scripts/bench-c-setup.sh
-. "$root/scripts/bench-c-setup.sh" bench-batch.sh /tmp/build-bench-batch
+# shellcheck source=scripts/bench-setup.sh
+. "$root/scripts/bench-setup.sh" bench-batch.sh /tmp/build-bench-batch cc
 "$cc" "${cflags[@]}" -D_POSIX_C_SOURCE=199309L -I"$root/include" "$root/bench/bench_batch.c" \
   -o bench_batch "$lib" "${native_libs[@]}"
 echo "== bench_batch ${*:-}"

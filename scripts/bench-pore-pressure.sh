@@ -8,8 +8,8 @@
 # Usage: scripts/bench-pore-pressure.sh [NREP [NRUN]]   (defaults 2000, 15)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-# shellcheck source=scripts/bench-c-setup.sh
-. "$root/scripts/bench-c-setup.sh" bench-pore-pressure.sh /tmp/build-bench-pore-pressure
+# shellcheck source=scripts/bench-setup.sh
+. "$root/scripts/bench-setup.sh" bench-pore-pressure.sh /tmp/build-bench-pore-pressure cc
 "$cc" "${cflags[@]}" -c "$root/bench/pore_pressure_ref.c" -o pore_pressure_ref.o
 "$cc" "${cflags[@]}" -D_POSIX_C_SOURCE=199309L -I"$root/include" \
   "$root/bench/bench_pore_pressure.c" pore_pressure_ref.o -o bench_pore_pressure "$lib" \

@@ -11,27 +11,15 @@
 # Usage: scripts/bench-rate-count.sh [NREP]   (default 3). Builds the library (cargo, release)
 # and bench_rate in $BENCH_BUILD_DIR (default /tmp/build-bench), as scripts/bench.sh does.
 # Prints a Markdown table on stdout (scripts/bench.sh puts it into docs/benchmarks.md).
-# Installs nothing; needs gfortran and valgrind.
+# Installs nothing; needs gfortran and valgrind (exit 2 without them, scripts/bench-setup.sh).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-build="${BENCH_BUILD_DIR:-/tmp/build-bench}"
 nrep="${1:-3}"
 # The bound; BENCH_RATE_LIMIT only to see the guard fail (e.g. 2.5), never to pass it.
 limit="${BENCH_RATE_LIMIT:-3}"
-native_libs=(-lgcc_s -lutil -lrt -lpthread -lm -ldl -lc)
 npoints=4096 # bench_rate's npoints
-
-for tool in gfortran valgrind cargo; do
-  if ! command -v "$tool" >/dev/null 2>&1; then
-    echo "bench-rate-count.sh: $tool is not installed; nothing counted" >&2
-    exit 2
-  fi
-done
-
-(cd "$root" && cargo build --release --locked --lib) >&2
-lib="${CARGO_TARGET_DIR:-$root/target}/release/libinterfacial.a"
-mkdir -p "$build"
-cd "$build"
+# shellcheck source=scripts/bench-setup.sh
+. "$root/scripts/bench-setup.sh" bench-rate-count.sh /tmp/build-bench gfortran valgrind
 gfortran -O2 -o bench_rate "$root/bench/bench_rate.f90" "$lib" "${native_libs[@]}"
 
 # Rows of bench_rate, in its order.

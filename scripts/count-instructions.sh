@@ -31,24 +31,15 @@ case "$mode" in print | --check | --write) ;; *)
 esac
 doc="$root/docs/performance.md"
 tolerance_percent=2
-build="${BENCH_BUILD_DIR:-/tmp/build-count}"
-native_libs=(-lgcc_s -lutil -lrt -lpthread -lm -ldl -lc)
-for tool in gfortran cc valgrind callgrind_annotate cargo rustc; do
-  command -v "$tool" >/dev/null 2>&1 || {
-    echo "count-instructions.sh: $tool is not installed" >&2
-    exit 2
-  }
-done
-(cd "$root" && cargo build --release --locked --lib) >&2
-lib="${CARGO_TARGET_DIR:-$root/target}/release/libinterfacial.a"
-mkdir -p "$build"
-cd "$build"
+# shellcheck source=scripts/bench-setup.sh
+. "$root/scripts/bench-setup.sh" count-instructions.sh /tmp/build-count gfortran cc valgrind \
+  callgrind_annotate rustc
 gfortran -O2 -I"$root/bench" -c "$root/bench/fric_ref.f" -o fric_ref.o
 gfortran -O2 -I"$root/bench" -c "$root/bench/fric_nop.f" -o fric_nop.o
 gfortran -O2 -o bench_fric "$root/bench/bench_fric.f90" fric_ref.o fric_nop.o "$lib" "${native_libs[@]}"
 gfortran -O2 -o bench_adhesive "$root/bench/bench_adhesive.f90" fric_nop.o "$lib" "${native_libs[@]}"
-cc -O2 -c "$root/bench/pore_pressure_ref.c" -o pore_pressure_ref.o
-cc -O2 -D_POSIX_C_SOURCE=199309L -I"$root/include" "$root/bench/bench_pore_pressure.c" \
+"$cc" -O2 -c "$root/bench/pore_pressure_ref.c" -o pore_pressure_ref.o
+"$cc" -O2 -D_POSIX_C_SOURCE=199309L -I"$root/include" "$root/bench/bench_pore_pressure.c" \
   pore_pressure_ref.o -o bench_pore_pressure "$lib" "${native_libs[@]}" -lm
 
 # cg FILE PROGRAM ARGS...: one callgrind run.
@@ -88,7 +79,7 @@ cg p.20 ./bench_pore_pressure 20 1
 cg p.40 ./bench_pore_pressure 40 1
 rows+=("| ifl_pore_pressure (bench_pore_pressure) | $(per_call "$(inclusive p.20 ifl_pore_pressure)" "$(inclusive p.40 ifl_pore_pressure)" 20480) |")
 
-toolchain="$(rustc --version), $(gfortran --version | head -n1), $(cc --version | head -n1)"
+toolchain="$(rustc --version), $(gfortran --version | head -n1), $("$cc" --version | head -n1)"
 table() {
   echo "Counted with $toolchain by \`scripts/count-instructions.sh --write\`."
   echo
