@@ -3,11 +3,11 @@
 //!
 //! Shared by the `gapcon` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
 
-use std::ffi::{CString, c_char};
+use std::ffi::CString;
 use std::sync::Once;
 
-use super::bytes::Bytes;
-use super::contract::last_error;
+use super::bytes::{Bytes, bits};
+use super::contract::{Names, UNWRITTEN, last_error};
 use interfacial::abi::{IflConductance, IflStatus, gapcon_, ifl_clear_error, ifl_gap_conductance};
 
 /// The configuration every `gapcon_` case runs against: one interaction per law, radiation in
@@ -88,11 +88,8 @@ pub struct GapconCase {
     pub d: [f64; 2],
     /// `TEMP(2)`.
     pub temp: [f64; 2],
-    /// `CINAME`; the hidden length is its length.
-    pub ciname: Vec<u8>,
-    /// `SLNAME`, `MSNAME`.
-    pub slname: Vec<u8>,
-    pub msname: Vec<u8>,
+    /// `CINAME`, `SLNAME`, `MSNAME`.
+    pub names: Names,
     /// `FLOWM(2)`, `PREDEF(2,NPRED)`, `TIME(2)`, `COORDS(3)`: never read.
     pub flowm: Vec<f64>,
     pub predef: Vec<f64>,
@@ -125,9 +122,11 @@ impl GapconCase {
         GapconCase {
             d: [b.real(), b.real()],
             temp: [b.real(), b.real()],
-            ciname,
-            slname: vec![b' '; 80],
-            msname: vec![b' '; usize::from(b.u8() % 81)],
+            names: Names {
+                interaction: ciname,
+                secondary: vec![b' '; 80],
+                main: vec![b' '; usize::from(b.u8() % 81)],
+            },
             flowm: vec![f64::NAN; 2],
             predef: vec![f64::NAN; 2 * usize::try_from(npred).unwrap_or(0)],
             time: vec![f64::NAN; 2],
@@ -142,10 +141,11 @@ impl GapconCase {
     /// GAPCON on failure; `AK(2..5)` and every input left alone. Returns `AK(1)`.
     pub fn check(&self) -> Result<f64, String> {
         setup();
-        let guard = -7.77e77;
-        let mut ak = vec![guard; 5];
+        let mut ak = vec![UNWRITTEN; 5];
         let c = self.clone();
         let (kstep, kinc) = (1i32, 1i32);
+        let [ci, sl, ms] = c.names.pointers();
+        let [ci_len, sl_len, ms_len] = c.names.lengths();
         ifl_clear_error();
         // SAFETY: AK(5), D(2), TEMP(2) and the names with their exact hidden lengths; the
         // unread arrays have their declared lengths too.
@@ -157,9 +157,9 @@ impl GapconCase {
                 c.temp.as_ptr(),
                 c.predef.as_ptr(),
                 c.time.as_ptr(),
-                c.ciname.as_ptr().cast::<c_char>(),
-                c.slname.as_ptr().cast::<c_char>(),
-                c.msname.as_ptr().cast::<c_char>(),
+                ci,
+                sl,
+                ms,
                 c.coords.as_ptr(),
                 &c.noel,
                 &c.node,
@@ -169,21 +169,17 @@ impl GapconCase {
                 // AREA, never read (CalculiX's variant only).
                 #[cfg(feature = "calculix")]
                 &f64::NAN,
-                c.ciname.len(),
-                c.slname.len(),
-                c.msname.len(),
+                ci_len,
+                sl_len,
+                ms_len,
             );
             last_error()
         };
-        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-        if bits(&c.d) != bits(&self.d)
-            || bits(&c.temp) != bits(&self.temp)
-            || c.ciname != self.ciname
-            || c.msname != self.msname
+        if bits(&c.d) != bits(&self.d) || bits(&c.temp) != bits(&self.temp) || c.names != self.names
         {
             return Err("an input argument was written".into());
         }
-        if ak[1..].iter().any(|x| *x != guard) {
+        if ak[1..].iter().any(|x| *x != UNWRITTEN) {
             return Err(format!("AK(2..5) written: {ak:?}"));
         }
         let k = ak[0];
@@ -209,11 +205,12 @@ impl GapconCase {
     /// on failure `*out` is zeroed. A NULL `out` is refused without a crash.
     fn check_native(&self, ak1: f64, gapcon_ok: bool) -> Result<(), String> {
         let end = self
-            .ciname
+            .names
+            .interaction
             .iter()
             .rposition(|b| *b != 0 && *b != b' ')
             .map_or(0, |i| i + 1);
-        let core = &self.ciname[..end];
+        let core = &self.names.interaction[..end];
         let Ok(name) = CString::new(core) else {
             return Ok(()); // a NUL inside the name: not expressible as a C string
         };
