@@ -17,7 +17,8 @@ use crate::scene::Point;
 use crate::stability::{Cell, Map};
 use crate::velocity::RateLaw;
 
-const COLORS: [RGBColor; 10] = [
+/// The series colours, in order (matplotlib's "tab10").
+pub const COLORS: [RGBColor; 10] = [
     RGBColor(31, 119, 180),
     RGBColor(255, 127, 14),
     RGBColor(44, 160, 44),
@@ -123,6 +124,15 @@ pub struct Axis {
     pub range: (f64, f64),
     /// Title, with the unit.
     pub title: String,
+}
+
+impl Axis {
+    pub fn new(range: (f64, f64), title: impl Into<String>) -> Axis {
+        Axis {
+            range,
+            title: title.into(),
+        }
+    }
 }
 
 /// A chart's fixed parts.
@@ -488,34 +498,9 @@ pub struct Extras {
 /// measurable, a triangle on the top edge when it is not. The error is floored at 1e-16 so that
 /// round-off-exact results stay on a log axis. A curve that coincides with an earlier one (every
 /// point within 5 % in error at the same step) is drawn with rings over the first one's dots,
-/// and a note says so.
+/// and a note says so. `extras` adds a scene's own notes and reference lines.
 #[allow(clippy::too_many_arguments)]
 pub fn work_precision_chart(
-    path: &Path,
-    title: &str,
-    x_title: &str,
-    y_title: &str,
-    points: &[Point],
-    cost: Cost,
-    highlights: &[Highlight],
-    machine: &str,
-) -> Result<(), String> {
-    work_precision_full(
-        path,
-        title,
-        x_title,
-        y_title,
-        points,
-        cost,
-        highlights,
-        machine,
-        &Extras::default(),
-    )
-}
-
-/// [`work_precision_chart`] with a scene's own notes and reference lines.
-#[allow(clippy::too_many_arguments)]
-pub fn work_precision_full(
     path: &Path,
     title: &str,
     x_title: &str,
@@ -640,14 +625,8 @@ pub fn work_precision_full(
     notes.extend(extras.notes.iter().cloned());
     let f = Frame {
         title,
-        x: Axis {
-            range: (x0, x1),
-            title: x_title.into(),
-        },
-        y: Axis {
-            range: (y0, y1),
-            title: y_title.into(),
-        },
+        x: Axis::new((x0, x1), x_title),
+        y: Axis::new((y0, y1), y_title),
         top: None,
         legend,
         notes,
@@ -737,15 +716,21 @@ pub fn work_precision_full(
     })
 }
 
+/// The cells every map shares, one colour each: an answer that settles (accurate), one that
+/// oscillates (unstable), a host cut-back.
+const SETTLES: RGBColor = RGBColor(102, 194, 120);
+const OSCILLATES: RGBColor = RGBColor(244, 109, 67);
+const CUT_BACK: RGBColor = RGBColor(49, 54, 149);
+
 fn cell_color(c: Cell) -> RGBColor {
     match c {
-        Cell::Accurate => RGBColor(102, 194, 120),
+        Cell::Accurate => SETTLES,
         Cell::Inaccurate => RGBColor(199, 233, 192),
         Cell::Chattering => RGBColor(254, 224, 139),
-        Cell::Unstable => RGBColor(244, 109, 67),
+        Cell::Unstable => OSCILLATES,
         Cell::Diverged => RGBColor(215, 48, 39),
         Cell::NewtonFailed => RGBColor(117, 107, 177),
-        Cell::CutBack => RGBColor(49, 54, 149),
+        Cell::CutBack => CUT_BACK,
     }
 }
 
@@ -838,14 +823,8 @@ pub fn stability_map(
     let period = o.period();
     let f = Frame {
         title: &format!("F6 stability map: {}", map.spec.label),
-        x: Axis {
-            range: (x0, x1),
-            title: "time step Δt (s)".into(),
-        },
-        y: Axis {
-            range: (y0, y1),
-            title: "allowable elastic slip γ_crit (m)".into(),
-        },
+        x: Axis::new((x0, x1), "time step Δt (s)"),
+        y: Axis::new((y0, y1), "allowable elastic slip γ_crit (m)"),
         top: Some((period, format!("Δt / T, period T = {period:.3} s"))),
         legend,
         notes: all_notes,
@@ -895,9 +874,9 @@ fn draw_cell_marks(
 
 fn rate_cell_color(c: RateCell) -> RGBColor {
     match c {
-        RateCell::Settles => RGBColor(102, 194, 120),
-        RateCell::Oscillates => RGBColor(244, 109, 67),
-        RateCell::CutBack => RGBColor(49, 54, 149),
+        RateCell::Settles => SETTLES,
+        RateCell::Oscillates => OSCILLATES,
+        RateCell::CutBack => CUT_BACK,
     }
 }
 
@@ -922,14 +901,8 @@ pub fn rate_map(path: &Path, map: &RateMap) -> Result<(), String> {
     ));
     let f = Frame {
         title: &map.title(),
-        x: Axis {
-            range: (x0, x1),
-            title: "time step Δt (s)".into(),
-        },
-        y: Axis {
-            range: (y0, y1),
-            title: "decay coefficient d_c (s/m)".into(),
-        },
+        x: Axis::new((x0, x1), "time step Δt (s)"),
+        y: Axis::new((y0, y1), "decay coefficient d_c (s/m)"),
         top: None,
         legend,
         notes: vec![format!(

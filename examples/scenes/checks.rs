@@ -791,16 +791,12 @@ pub fn run() -> Result<Vec<Row>, String> {
 
 /// Prints the rows; returns the number of failures.
 pub fn print(rows: &[Row]) -> usize {
-    println!(
+    let header = format!(
         "{:<5} {:<46} {:<36} {:>14} {:>14} {:>10}  ok",
         "scene", "case", "quantity", "closed form", "computed", "error"
     );
-    let mut failed = 0;
-    for r in rows {
-        if !r.ok() {
-            failed += 1;
-        }
-        println!(
+    print_table(&header, rows, Row::ok, |r| {
+        format!(
             "{:<5} {:<46} {:<36} {:>14.8e} {:>14.8e} {:>10.2e}  {}",
             r.scene,
             r.case,
@@ -809,7 +805,20 @@ pub fn print(rows: &[Row]) -> usize {
             r.computed,
             r.error(),
             if r.ok() { "yes" } else { "NO" }
-        );
+        )
+    })
+}
+
+/// Prints `header`, then one `line` per item; returns how many items are not `ok`.
+pub fn print_table<T>(
+    header: &str,
+    items: &[T],
+    ok: impl Fn(&T) -> bool,
+    line: impl Fn(&T) -> String,
+) -> usize {
+    println!("{header}");
+    for item in items {
+        println!("{}", line(item));
     }
-    failed
+    items.iter().filter(|item| !ok(item)).count()
 }

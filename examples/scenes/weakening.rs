@@ -30,7 +30,8 @@ use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use plotters::prelude::*;
 
 use crate::charts::{
-    Axis, Frame, LinearFrame, Marker, Swatch, draw_cells, edge, frame as frame_chart, frame_linear,
+    Axis, COLORS, Frame, LinearFrame, Marker, Swatch, draw_cells, edge, frame as frame_chart,
+    frame_linear,
 };
 use crate::checks::Row;
 
@@ -234,12 +235,7 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
     let csv_path = out.join("F7-mean-error.csv");
     std::fs::write(&csv_path, csv).map_err(|e| format!("{}: {e}", csv_path.display()))?;
     let svg = out.join("F7-mean-error.svg");
-    let colors = [
-        RGBColor(31, 119, 180),
-        RGBColor(255, 127, 14),
-        RGBColor(44, 160, 44),
-        RGBColor(214, 39, 40),
-    ];
+    let colors = &COLORS[..4];
     let mut legend: Vec<(Swatch, String)> = series
         .iter()
         .enumerate()
@@ -269,14 +265,8 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
     }
     let frame = Frame {
         title: "F7: error of the mean friction against the increment r",
-        x: Axis {
-            range: (0.008, 1.25),
-            title: "increment r = Δγ/γ_crit (–)".into(),
-        },
-        y: Axis {
-            range: (1e-17, 10.0),
-            title: "|mean τ − μ(v)p| / μ(v)p (–)".into(),
-        },
+        x: Axis::new((0.008, 1.25), "increment r = Δγ/γ_crit (–)"),
+        y: Axis::new((1e-17, 10.0), "|mean τ − μ(v)p| / μ(v)p (–)"),
         top: None,
         legend,
         notes,
@@ -408,7 +398,7 @@ fn map_chart(
 ) -> Result<(), String> {
     let (x0, x1) = (edge(rs, 0, false), edge(rs, rs.len() - 1, true));
     let (y0, y1) = (edge(xs, 0, false), edge(xs, xs.len() - 1, true));
-    let (settle, cycle) = (RGBColor(44, 160, 44), RGBColor(214, 39, 40));
+    let (settle, cycle) = (COLORS[2], COLORS[3]);
     // The cells' colours at 60 % over white, as drawn.
     let pale = |c: RGBColor| {
         let m = |v: u8| (0.6 * f64::from(v) + 0.4 * 255.0).round() as u8;
@@ -433,14 +423,8 @@ fn map_chart(
     ));
     let frame = Frame {
         title: &format!("F7: steady sliding under weakening, {}", f.name()),
-        x: Axis {
-            range: (x0, x1),
-            title: "increment r = Δγ/γ_crit (–)".into(),
-        },
-        y: Axis {
-            range: (y0, y1),
-            title: "x = d_c·v (–)".into(),
-        },
+        x: Axis::new((x0, x1), "increment r = Δγ/γ_crit (–)"),
+        y: Axis::new((y0, y1), "x = d_c·v (–)"),
         top: None,
         legend,
         notes: vec![
@@ -738,12 +722,7 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
     let csv_path = out.join("F7-belt.csv");
     std::fs::write(&csv_path, csv).map_err(|e| format!("{}: {e}", csv_path.display()))?;
     let svg = out.join("F7-belt.svg");
-    let colors = [
-        BLACK,
-        RGBColor(31, 119, 180),
-        RGBColor(255, 127, 14),
-        RGBColor(44, 160, 44),
-    ];
+    let colors = [BLACK, COLORS[0], COLORS[1], COLORS[2]];
     let legend = traces
         .iter()
         .enumerate()

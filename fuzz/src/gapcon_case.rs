@@ -12,48 +12,7 @@ use interfacial::abi::{IflConductance, IflStatus, gapcon_, ifl_clear_error, ifl_
 
 /// The configuration every `gapcon_` case runs against: one interaction per law, radiation in
 /// kelvin and in °C, and no `"*"` entry, so unknown names take the error path.
-pub const CONFIG: &str = r#"
-[interactions.CONST.conductance]
-law = "constant"
-k = 4500.0
-
-[interactions.PTAB.conductance]
-law = "pressure-table"
-table = [[0.0, 1.0], [1e-300, 2.0], [100.0, 3.0], [1e300, 4.0]]
-
-[interactions.CTAB.conductance]
-law = "clearance-table"
-table = [[0.0, 10.0, 0.0], [1.0, 5.0, 0.0], [0.0, 20.0, 500.0], [1.0, 1.0, 500.0]]
-
-[interactions.GAS.conductance]
-law = "gas-gap"
-k_gas = 0.025
-g0 = 1e-6
-min_gap = 0.0
-
-[interactions.CMY.conductance]
-law = "cmy"
-k_s = 20.0
-m = 0.1
-sigma = 1e-6
-H_c = 3e9
-
-[interactions.RADK.radiation]
-view_factor = 0.8
-stefan_boltzmann = 5.670374419e-8
-absolute_zero = 0.0
-
-[interactions.BOTH.conductance]
-law = "gas-gap"
-k_gas = 0.025
-g0 = 0.0
-min_gap = 1e-9
-
-[interactions.BOTH.radiation]
-view_factor = 1.0
-stefan_boltzmann = 5.670374419e-8
-absolute_zero = -273.15
-"#;
+pub const CONFIG: &str = include_str!("../gapcon.toml");
 
 /// The configured names (and one that is not).
 pub const NAMES: [&str; 8] = [
