@@ -174,20 +174,17 @@ impl GapconCase {
             return Ok(()); // a NUL inside the name: not expressible as a C string
         };
         let mut out = IflConductance {
-            k: -7.77e77,
+            k: UNWRITTEN,
             ..IflConductance::default()
         };
-        // SAFETY: a NUL-terminated name and a writable IflConductance.
-        let status = unsafe {
-            ifl_gap_conductance(
-                name.as_ptr(),
-                self.d[0],
-                self.d[1],
-                self.temp[0],
-                self.temp[1],
-                &mut out,
-            )
+        let [clearance, pressure] = self.d;
+        let [theta_a, theta_b] = self.temp;
+        // SAFETY: a NUL-terminated name; `out` writable, or NULL (which must be refused with
+        // nothing written).
+        let native = |out: *mut IflConductance| unsafe {
+            ifl_gap_conductance(name.as_ptr(), clearance, pressure, theta_a, theta_b, out)
         };
+        let status = native(&mut out);
         if gapcon_ok {
             if status != IflStatus::Ok || out.k.to_bits() != ak1.to_bits() {
                 return Err(format!(
@@ -211,17 +208,7 @@ impl GapconCase {
                 "gapcon_ refused but ifl_gap_conductance gave {status:?} {out:?}"
             ));
         }
-        // SAFETY: NULL out must be refused, nothing written.
-        let null = unsafe {
-            ifl_gap_conductance(
-                name.as_ptr(),
-                self.d[0],
-                self.d[1],
-                self.temp[0],
-                self.temp[1],
-                std::ptr::null_mut(),
-            )
-        };
+        let null = native(std::ptr::null_mut());
         if null != IflStatus::BadInput {
             return Err(format!("NULL out gave {null:?}"));
         }
