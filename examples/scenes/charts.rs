@@ -8,7 +8,9 @@
 
 use std::path::Path;
 
+use plotters::chart::MeshStyle;
 use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
+use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
 
 use crate::oscillator::Oscillator;
@@ -225,18 +227,14 @@ pub fn frame(
             log_axis(f.y.range.0, f.y.range.1),
         )
         .map_err(err)?;
-    chart
-        .configure_mesh()
-        .x_desc(f.x.title.as_str())
-        .y_desc(f.y.title.as_str())
-        .x_label_formatter(&|v| tick_label(*v))
-        .y_label_formatter(&|v| tick_label(*v))
-        .light_line_style(RGBColor(235, 235, 235))
-        .bold_line_style(RGBColor(200, 200, 200))
-        .label_style(("sans-serif", 13))
-        .axis_desc_style(("sans-serif", 14))
-        .draw()
-        .map_err(err)?;
+    draw_mesh(
+        chart
+            .configure_mesh()
+            .x_desc(f.x.title.as_str())
+            .y_desc(f.y.title.as_str())
+            .x_label_formatter(&|v| tick_label(*v))
+            .y_label_formatter(&|v| tick_label(*v)),
+    )?;
     body(&mut chart)?;
     if let Some((scale, title)) = &f.top {
         // The second x axis: ticks at every decade of x/scale along the plot's top edge.
@@ -325,16 +323,12 @@ pub fn frame_linear(
         .y_label_area_size(78)
         .build_cartesian_2d(f.x.0.0..f.x.0.1, f.y.0.0..f.y.0.1)
         .map_err(err)?;
-    chart
-        .configure_mesh()
-        .x_desc(f.x.1.as_str())
-        .y_desc(f.y.1.as_str())
-        .light_line_style(RGBColor(235, 235, 235))
-        .bold_line_style(RGBColor(200, 200, 200))
-        .label_style(("sans-serif", 13))
-        .axis_desc_style(("sans-serif", 14))
-        .draw()
-        .map_err(err)?;
+    draw_mesh(
+        chart
+            .configure_mesh()
+            .x_desc(f.x.1.as_str())
+            .y_desc(f.y.1.as_str()),
+    )?;
     body(&mut chart)?;
     draw_legend(&side, &f.legend)?;
     draw_notes(&notes, &note_lines)?;
@@ -342,6 +336,20 @@ pub fn frame_linear(
 }
 
 type Area<'b> = DrawingArea<SVGBackend<'b>, plotters::coord::Shift>;
+
+/// The grid and the label fonts every chart shares; draws the mesh.
+fn draw_mesh<X, Y>(mesh: &mut MeshStyle<'_, '_, X, Y, SVGBackend<'_>>) -> Result<(), String>
+where
+    X: Ranged + ValueFormatter<X::ValueType>,
+    Y: Ranged + ValueFormatter<Y::ValueType>,
+{
+    mesh.light_line_style(RGBColor(235, 235, 235))
+        .bold_line_style(RGBColor(200, 200, 200))
+        .label_style(("sans-serif", 13))
+        .axis_desc_style(("sans-serif", 14))
+        .draw()
+        .map_err(err)
+}
 
 /// The legend panel right of the plot.
 fn draw_legend(side: &Area<'_>, legend: &[(Swatch, String)]) -> Result<(), String> {
