@@ -154,7 +154,7 @@ impl BatchCase {
 
     /// Calls `ifl_fric_batch` (status, message, what it wrote).
     pub fn call(&self) -> BatchOutputs {
-        let (n, s) = (self.n(), self.s());
+        let n = self.n();
         let c = self.clone();
         let mut out = BatchOutputs {
             lm: c.lm.clone(),
@@ -169,7 +169,6 @@ impl BatchCase {
             status: 0,
             message: String::new(),
         };
-        let _ = s;
         let req = |k: usize| self.null_required == Some(k);
         let m = |k: usize, p: *mut f64| if req(k) { std::ptr::null_mut() } else { p };
         let r = |k: usize, p: *const f64| if req(k) { std::ptr::null() } else { p };
