@@ -796,15 +796,17 @@ pub fn print(rows: &[Row]) -> usize {
         "scene", "case", "quantity", "closed form", "computed", "error"
     );
     print_table(&header, rows, Row::ok, |r| {
+        let Row {
+            scene,
+            case,
+            quantity,
+            exact,
+            computed,
+            ..
+        } = r;
+        let (error, ok) = (r.error(), if r.ok() { "yes" } else { "NO" });
         format!(
-            "{:<5} {:<46} {:<36} {:>14.8e} {:>14.8e} {:>10.2e}  {}",
-            r.scene,
-            r.case,
-            r.quantity,
-            r.exact,
-            r.computed,
-            r.error(),
-            if r.ok() { "yes" } else { "NO" }
+            "{scene:<5} {case:<46} {quantity:<36} {exact:>14.8e} {computed:>14.8e} {error:>10.2e}  {ok}"
         )
     })
 }
