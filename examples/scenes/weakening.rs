@@ -663,60 +663,58 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
         reference_dt,
         reference.x.clone(),
     )];
-    for dt in [0.05, 0.02, 0.01] {
-        for tangent in [Tangent::Exact, Tangent::Bounded] {
-            let run = b.run(dt, t_end, tangent);
-            let (xmax, xmin, period, stuck) = cycle_measures(&run, dt);
-            let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
-            onset_means.push((dt, tangent, omean));
-            let _ = writeln!(
-                csv,
-                "{dt},{tangent:?},{xmax:e},{xmin:e},{period:e},{stuck:e},{mean},{max},{omean},{omax},{}",
-                run.failed
-            );
-            let _ = writeln!(
-                table,
-                "| {dt} | {tangent:?} | {:+.4} | {:+.4} | {:+.3} | {mean:.2} | {max} | {omean:.2} | {omax} | {} |",
-                xmax - rmax,
-                xmin - rmin,
-                period - rperiod,
-                run.failed
-            );
-            if tangent == Tangent::Exact {
-                let case = format!("Δt = {dt}, exact tangent");
-                if dt <= 0.02 {
-                    rows.push(row(
-                        case.clone(),
-                        "Newton: unconverged steps",
-                        0.0,
-                        run.failed as f64,
-                        0.0,
-                    ));
-                    // Coarse steps keep the stick-slip cycle of the fine reference.
-                    rows.push(row(
-                        case.clone(),
-                        "x_max against the reference, over A",
-                        0.0,
-                        (xmax - rmax) / amplitude,
-                        0.05,
-                    ));
-                    rows.push(row(
-                        case.clone(),
-                        "x_min against the reference, over A",
-                        0.0,
-                        (xmin - rmin) / amplitude,
-                        0.1,
-                    ));
-                    rows.push(row(
-                        case,
-                        "period against the reference, relative",
-                        0.0,
-                        (period - rperiod) / rperiod,
-                        0.05,
-                    ));
-                }
-                traces.push((format!("Δt = {dt}"), dt, run.x.clone()));
+    for (dt, tangent) in step_grid() {
+        let run = b.run(dt, t_end, tangent);
+        let (xmax, xmin, period, stuck) = cycle_measures(&run, dt);
+        let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
+        onset_means.push((dt, tangent, omean));
+        let _ = writeln!(
+            csv,
+            "{dt},{tangent:?},{xmax:e},{xmin:e},{period:e},{stuck:e},{mean},{max},{omean},{omax},{}",
+            run.failed
+        );
+        let _ = writeln!(
+            table,
+            "| {dt} | {tangent:?} | {:+.4} | {:+.4} | {:+.3} | {mean:.2} | {max} | {omean:.2} | {omax} | {} |",
+            xmax - rmax,
+            xmin - rmin,
+            period - rperiod,
+            run.failed
+        );
+        if tangent == Tangent::Exact {
+            let case = format!("Δt = {dt}, exact tangent");
+            if dt <= 0.02 {
+                rows.push(row(
+                    case.clone(),
+                    "Newton: unconverged steps",
+                    0.0,
+                    run.failed as f64,
+                    0.0,
+                ));
+                // Coarse steps keep the stick-slip cycle of the fine reference.
+                rows.push(row(
+                    case.clone(),
+                    "x_max against the reference, over A",
+                    0.0,
+                    (xmax - rmax) / amplitude,
+                    0.05,
+                ));
+                rows.push(row(
+                    case.clone(),
+                    "x_min against the reference, over A",
+                    0.0,
+                    (xmin - rmin) / amplitude,
+                    0.1,
+                ));
+                rows.push(row(
+                    case,
+                    "period against the reference, relative",
+                    0.0,
+                    (period - rperiod) / rperiod,
+                    0.05,
+                ));
             }
+            traces.push((format!("Δt = {dt}"), dt, run.x.clone()));
         }
     }
     let csv_path = out.join("F7-belt.csv");
@@ -780,27 +778,25 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
         adhesive_vhalf: Some(0.005),
         ..b
     };
-    for dt in [0.05, 0.02, 0.01] {
-        for tangent in [Tangent::Exact, Tangent::Bounded] {
-            let run = a.run(dt, t_end, tangent);
-            let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
-            adhesive_means.push((dt, tangent, omean));
-            let _ = writeln!(
-                table,
-                "| {dt} | {tangent:?} | {mean:.2} | {max} | {omean:.2} | {omax} | {} |",
-                run.failed
-            );
-            // Measured: 2 steps of 2000 at Δt = 0.02 (slip → stick, not onsets) and 9 at 0.05 do
-            // not converge in 50 iterations (a host cuts back there); claimed from 0.01 down.
-            if tangent == Tangent::Exact && dt <= 0.01 {
-                rows.push(row(
-                    format!("adhesive v_½ = 0.005, Δt = {dt}, exact tangent"),
-                    "Newton: unconverged steps",
-                    0.0,
-                    run.failed as f64,
-                    0.0,
-                ));
-            }
+    for (dt, tangent) in step_grid() {
+        let run = a.run(dt, t_end, tangent);
+        let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
+        adhesive_means.push((dt, tangent, omean));
+        let _ = writeln!(
+            table,
+            "| {dt} | {tangent:?} | {mean:.2} | {max} | {omean:.2} | {omax} | {} |",
+            run.failed
+        );
+        // Measured: 2 steps of 2000 at Δt = 0.02 (slip → stick, not onsets) and 9 at 0.05 do
+        // not converge in 50 iterations (a host cuts back there); claimed from 0.01 down.
+        if tangent == Tangent::Exact && dt <= 0.01 {
+            rows.push(row(
+                format!("adhesive v_½ = 0.005, Δt = {dt}, exact tangent"),
+                "Newton: unconverged steps",
+                0.0,
+                run.failed as f64,
+                0.0,
+            ));
         }
     }
     for (law, means) in [("decay", &onset_means), ("adhesive", &adhesive_means)] {
@@ -821,6 +817,14 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
         }
     }
     Ok((vec![csv_path, svg], table))
+}
+
+/// The steps of the F7 Newton tables, in table order: Δt = 0.05, 0.02, 0.01, each with the exact
+/// and then the bounded tangent.
+fn step_grid() -> impl Iterator<Item = (f64, Tangent)> {
+    [0.05, 0.02, 0.01]
+        .into_iter()
+        .flat_map(|dt| [Tangent::Exact, Tangent::Bounded].map(|tangent| (dt, tangent)))
 }
 
 /// Runs F7: check rows, and the charts and CSV written to `out`. Returns the rows, the files
