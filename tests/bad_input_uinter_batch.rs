@@ -52,7 +52,7 @@ fn uinter_base() -> UinterCase {
     c.pnewdt = 1e36;
     let mut name = b"PTAB".to_vec();
     name.resize(80, b' ');
-    c.ciname = name;
+    c.names.interaction = name;
     c.null_optional = false;
     c
 }
@@ -245,14 +245,14 @@ fn uinter_names_of_every_shape() {
         b"ptab".to_vec(),
     ] {
         let mut c = base.clone();
-        c.ciname = name.clone();
+        c.names.interaction = name.clone();
         let out = run(&c);
         assert!(out.message.is_empty(), "{name:?}: {}", out.message);
         assert_eq!(format!("{out:?}"), format!("{clean:?}"), "{name:?}");
     }
     for name in [vec![b' '; 80], vec![b' '; 8], Vec::new()] {
         let mut c = base.clone();
-        c.ciname = name;
+        c.names.interaction = name;
         let out = run(&c);
         assert_eq!(out.pnewdt, 0.25);
         assert!(

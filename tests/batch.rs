@@ -6,6 +6,7 @@
 mod common;
 
 use common::{Points, Rng, UNSET, first_difference, per_point, via_c};
+use interfacial::abi::batch::BatchError;
 use interfacial::abi::host::FricCall;
 use interfacial::abi::{FricBatch, IflStatus, fric_batch, ifl_fric_batch};
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
@@ -34,10 +35,16 @@ fn random_points(rng: &mut Rng, n: usize, ld: usize, nfdir: usize, gamma_crit: f
     p
 }
 
-fn via_rust(props: &[f64], dtime: f64, input: &Points) -> (Points, f64, bool) {
+/// The points through `fric_batch`, with or without the optional outputs DSLIP, SED, SFD.
+fn via_rust(
+    props: &[f64],
+    dtime: f64,
+    input: &Points,
+    optional: bool,
+) -> (Points, f64, Result<(), BatchError>) {
     let mut p = input.clone();
     let mut pnewdt = 1e36;
-    let ok = {
+    let result = {
         let mut b = FricBatch {
             npoints: p.n,
             ld: p.ld,
@@ -47,9 +54,9 @@ fn via_rust(props: &[f64], dtime: f64, input: &Points) -> (Points, f64, bool) {
             tau: &mut p.tau,
             ddtddg: &mut p.ddtddg,
             ddtddp: &mut p.ddtddp,
-            dslip: Some(&mut p.dslip),
-            sed: Some(&mut p.sed),
-            sfd: Some(&mut p.sfd),
+            dslip: optional.then_some(&mut p.dslip[..]),
+            sed: optional.then_some(&mut p.sed[..]),
+            sfd: optional.then_some(&mut p.sfd[..]),
             statev: &mut p.statev,
             dgam: &input.dgam,
             taulm: Some(&input.taulm),
@@ -57,9 +64,9 @@ fn via_rust(props: &[f64], dtime: f64, input: &Points) -> (Points, f64, bool) {
             dpress: &input.dpress,
             chrlngth: &input.chrlngth,
         };
-        fric_batch(props, dtime, &mut b, &mut pnewdt).is_ok()
+        fric_batch(props, dtime, &mut b, &mut pnewdt)
     };
-    (p, pnewdt, ok)
+    (p, pnewdt, result)
 }
 
 fn assert_identical(what: &str, a: &Points, b: &Points) {
@@ -94,8 +101,8 @@ fn batch_is_bit_identical_to_fric_per_point() {
                 let dtime = rng.range(1e-3, 2.0);
                 let (expected, pnewdt, _) = per_point(&props, dtime, &input);
                 assert_eq!(pnewdt, 1e36, "valid inputs must not cut back");
-                let (r, pr, ok) = via_rust(&props, dtime, &input);
-                assert!(ok);
+                let (r, pr, result) = via_rust(&props, dtime, &input, true);
+                assert!(result.is_ok());
                 assert_eq!(pr, pnewdt);
                 assert_identical("Rust API", &expected, &r);
                 let (c, pc, st) = via_c(&props, dtime, &input);
@@ -145,28 +152,8 @@ fn a_bad_point_gets_fric_failure_outputs_and_the_rest_are_computed() {
             msg.contains("ifl_fric_batch") && msg.contains("point 20"),
             "{msg}"
         );
-        let mut p = input.clone();
-        let mut pn = 1e36;
-        let mut b = FricBatch {
-            npoints: p.n,
-            ld: p.ld,
-            nfdir: p.nfdir,
-            nstatv: p.nstatv,
-            lm: &mut p.lm,
-            tau: &mut p.tau,
-            ddtddg: &mut p.ddtddg,
-            ddtddp: &mut p.ddtddp,
-            dslip: None,
-            sed: None,
-            sfd: None,
-            statev: &mut p.statev,
-            dgam: &input.dgam,
-            taulm: Some(&input.taulm),
-            press: &input.press,
-            dpress: &input.dpress,
-            chrlngth: &input.chrlngth,
-        };
-        let e = fric_batch(&props, 0.5, &mut b, &mut pn).unwrap_err();
+        let (_, pn, result) = via_rust(&props, 0.5, &input, false);
+        let e = result.unwrap_err();
         assert_eq!((e.point, e.failed), (Some(7), 2));
         assert_eq!(pn, 0.25);
     }

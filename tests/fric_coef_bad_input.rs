@@ -57,18 +57,18 @@ fn run(case: &FricCoefCase) -> CoefOutputs {
 
 fn refused(case: &FricCoefCase, needle: &str) -> CoefOutputs {
     let out = run(case);
-    assert!(
-        out.message
-            .starts_with("interfacial: FRIC_COEF: interaction 'SI1' (block): "),
-        "{}",
-        out.message
-    );
-    assert!(
-        out.message.contains(needle),
-        "{:?} lacks {needle:?}",
-        out.message
-    );
+    let prefix = "interfacial: FRIC_COEF: interaction 'SI1' (block): ";
+    assert_message(&out.message, prefix, needle);
     out
+}
+
+/// A refusal's message: it names the routine (and the interaction) first, then the cause.
+fn assert_message(message: &str, prefix: &str, needle: &str) {
+    assert!(
+        message.starts_with(prefix),
+        "{message:?} does not start {prefix:?}"
+    );
+    assert!(message.contains(needle), "{message:?} lacks {needle:?}");
 }
 
 fn accepted(case: &FricCoefCase) -> CoefOutputs {
@@ -149,21 +149,23 @@ fn fric_coef_unread_reals_have_no_effect() {
 /// may be NULL without a temperature law.
 #[test]
 fn fric_coef_null_pointers() {
-    for (null, name) in [
-        (CoefNull::FCoef, "fCoef is a NULL pointer"),
-        (CoefNull::FCoefDeriv, "fCoefDeriv is a NULL pointer"),
-        (CoefNull::NBlock, "nBlock is a NULL pointer"),
-        (CoefNull::NProps, "nProps is a NULL pointer"),
-        (CoefNull::NTemp, "nTemp is a NULL pointer"),
-        (CoefNull::Props, "props is a NULL pointer"),
-        (CoefNull::SlipData, "slipData is a NULL pointer"),
-        (CoefNull::Pressure, "pressure is a NULL pointer"),
-        (CoefNull::TempAvg, "tempAvg is a NULL pointer"),
-    ] {
+    use CoefNull::{FCoef, FCoefDeriv, NBlock, NProps, NTemp, Pressure, Props, SlipData, TempAvg};
+    let arguments = [
+        (FCoef, "fCoef"),
+        (FCoefDeriv, "fCoefDeriv"),
+        (NBlock, "nBlock"),
+        (NProps, "nProps"),
+        (NTemp, "nTemp"),
+        (Props, "props"),
+        (SlipData, "slipData"),
+        (Pressure, "pressure"),
+        (TempAvg, "tempAvg"),
+    ];
+    for (null, argument) in arguments {
         let mut c = block(&all_laws());
         c.null = null;
-        let out = refused(&c, name);
-        if null == CoefNull::NBlock {
+        let out = refused(&c, &format!("{argument} is a NULL pointer"));
+        if null == NBlock {
             assert!(out.coef.iter().all(|x| *x == fric_coef_case::UNWRITTEN));
         }
     }
@@ -295,16 +297,7 @@ fn slide_run(case: &ForcedSlidingCase) -> SlideOutputs {
 fn slide_refused(case: &ForcedSlidingCase, status: IflStatus, needle: &str) {
     let out = slide_run(case);
     assert_eq!(out.status, status, "{}", out.message);
-    assert!(
-        out.message.starts_with("interfacial: ifl_forced_sliding: "),
-        "{}",
-        out.message
-    );
-    assert!(
-        out.message.contains(needle),
-        "{:?} lacks {needle:?}",
-        out.message
-    );
+    assert_message(&out.message, "interfacial: ifl_forced_sliding: ", needle);
 }
 
 /// Row 78: velocity, pressure or temperature NaN or ±Inf.

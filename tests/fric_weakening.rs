@@ -691,14 +691,9 @@ fn a_negative_start_rate_after_a_slip_is_refused() {
         c.statev[..3].copy_from_slice(&[0.5, -1e-3, 1.0]);
         let before = c.clone();
         c.call();
-        assert_eq!(c.pnewdt, interfacial::CUTBACK_RATIO);
+        assert_rate_refused(c.pnewdt, "FRIC");
         assert_eq!(c.tau, before.tau);
         assert_eq!(c.statev, before.statev);
-        let message = FricCall::last_error();
-        assert!(
-            message.contains("STATEV(2)") && message.contains("FRIC"),
-            "{message}"
-        );
         // After a stick the rate is not read: the same call succeeds.
         let mut c = before.clone();
         c.statev[2] = 0.0;
@@ -713,12 +708,17 @@ fn a_negative_start_rate_after_a_slip_is_refused() {
     u.drdisp[1] = 1e-5;
     let before = u.clone();
     u.call();
-    assert_eq!(u.pnewdt, interfacial::CUTBACK_RATIO);
+    assert_rate_refused(u.pnewdt, "UINTER");
     assert_eq!(u.stress, before.stress);
     assert_eq!(u.statev, before.statev);
+}
+
+/// A call of `routine` refused for its start rate: a cut-back and a message naming `STATEV(2)`.
+fn assert_rate_refused(pnewdt: f64, routine: &str) {
+    assert_eq!(pnewdt, interfacial::CUTBACK_RATIO);
     let message = FricCall::last_error();
     assert!(
-        message.contains("STATEV(2)") && message.contains("UINTER"),
+        message.contains("STATEV(2)") && message.contains(routine),
         "{message}"
     );
 }

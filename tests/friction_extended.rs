@@ -873,32 +873,44 @@ fn steady_transport_viscous_stick() {
                 assert!((c.statev[0] - slip_rate * dt).abs() <= 1e-12 * speed * dt);
                 // DDTDDG and DDTDDP against central differences.
                 let h = 1e-7 * speed * dt;
-                for b in 0..nfdir {
-                    let (mut up, mut dn) = (dgam, dgam);
-                    up[b] += h;
-                    dn[b] -= h;
-                    let (cu, cd) = (at(up, p), at(dn, p));
-                    for a in 0..nfdir {
-                        let fd = (cu.tau[a] - cd.tau[a]) / (2.0 * h);
-                        let an = c.ddtddg(a, b);
-                        assert!(
-                            (fd - an).abs() <= 1e-6 * (kappa / dt),
-                            "DDTDDG({a},{b}) {an} vs {fd}"
-                        );
-                    }
-                }
-                let hp = 1e-5 * p;
-                let (cu, cd) = (at(dgam, p + hp), at(dgam, p - hp));
-                for a in 0..nfdir {
-                    let fd = (cu.tau[a] - cd.tau[a]) / (2.0 * hp);
-                    assert!(
-                        (fd - c.ddtddp[a]).abs() <= 1e-8,
-                        "DDTDDP {fd} vs {}",
-                        c.ddtddp[a]
-                    );
-                }
+                assert_smooth_tangents(&c, nfdir, (dgam, p), h, 1e-6 * (kappa / dt), at, "");
             }
         }
+    }
+}
+
+/// DDTDDG and DDTDDP of `c`, the call `at` makes at `(dgam, p)`, against plain central
+/// differences of TAU in a smooth branch: steps `h` on each DGAM(b) (within `tol` of DDTDDG) and
+/// 10⁻⁵·p on the pressure (within 10⁻⁸ of DDTDDP).
+fn assert_smooth_tangents(
+    c: &FricCall,
+    nfdir: usize,
+    (dgam, p): ([f64; 2], f64),
+    h: f64,
+    tol: f64,
+    at: impl Fn([f64; 2], f64) -> FricCall,
+    context: &str,
+) {
+    for b in 0..nfdir {
+        let (mut up, mut dn) = (dgam, dgam);
+        up[b] += h;
+        dn[b] -= h;
+        let (cu, cd) = (at(up, p), at(dn, p));
+        for a in 0..nfdir {
+            let fd = (cu.tau[a] - cd.tau[a]) / (2.0 * h);
+            let an = c.ddtddg(a, b);
+            assert!(
+                (fd - an).abs() <= tol,
+                "DDTDDG({a},{b}) {an} vs {fd} {context}"
+            );
+        }
+    }
+    let hp = 1e-5 * p;
+    let (cu, cd) = (at(dgam, p + hp), at(dgam, p - hp));
+    for a in 0..nfdir {
+        let fd = (cu.tau[a] - cd.tau[a]) / (2.0 * hp);
+        let an = c.ddtddp[a];
+        assert!((fd - an).abs() <= 1e-8, "DDTDDP {fd} vs {an} {context}");
     }
 }
 
@@ -1042,30 +1054,8 @@ fn steady_transport_anisotropic_seed_003() {
             assert!((c.statev[1] - r).abs() <= 1e-12 * scaled_speed);
             assert_eq!(c.statev[2], if sticks { 0.0 } else { 1.0 });
             let h = 1e-7 * speed * dt;
-            for b in 0..2 {
-                let (mut up, mut dn) = (dgam, dgam);
-                up[b] += h;
-                dn[b] -= h;
-                let (cu, cd) = (at(up, p), at(dn, p));
-                for i in 0..2 {
-                    let fd = (cu.tau[i] - cd.tau[i]) / (2.0 * h);
-                    let an = c.ddtddg(i, b);
-                    assert!(
-                        (fd - an).abs() <= 1e-6 * (kappa / dt),
-                        "DDTDDG({i},{b}) {an} vs {fd} (stick {sticks}, decay {decay:?})"
-                    );
-                }
-            }
-            let hp = 1e-5 * p;
-            let (cu, cd) = (at(dgam, p + hp), at(dgam, p - hp));
-            for i in 0..2 {
-                let fd = (cu.tau[i] - cd.tau[i]) / (2.0 * hp);
-                assert!(
-                    (fd - c.ddtddp[i]).abs() <= 1e-8,
-                    "DDTDDP {fd} vs {}",
-                    c.ddtddp[i]
-                );
-            }
+            let context = format!("(stick {sticks}, decay {decay:?})");
+            assert_smooth_tangents(&c, 2, (dgam, p), h, 1e-6 * (kappa / dt), at, &context);
         }
     }
 }

@@ -19,6 +19,15 @@ fn checked(case: &FricCase) -> FricOutputs {
         .unwrap_or_else(|e| panic!("{e}\ninput: {case:?}"))
 }
 
+/// A recorded `fric` input that must still decode to the adhesive law (`PROPS(1) = 2`), through
+/// the property check.
+fn adhesive_replay(bytes: &[u8]) -> (FricCase, FricOutputs) {
+    let case = FricCase::decode(bytes);
+    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
+    let out = checked(&case);
+    (case, out)
+}
+
 fn succeeded(case: &FricCase, out: &FricOutputs) {
     assert!(out.message.is_empty(), "refused: {}", out.message);
     assert_eq!(out.pnewdt.to_bits(), case.pnewdt.to_bits());
@@ -179,9 +188,7 @@ const CRASH_ADHESIVE_CANCELLATION: [u8; 77] = [
 
 #[test]
 fn fric_adhesive_cancellation_replays_clean() {
-    let case = FricCase::decode(&CRASH_ADHESIVE_CANCELLATION);
-    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
-    let out = checked(&case);
+    let (case, out) = adhesive_replay(&CRASH_ADHESIVE_CANCELLATION);
     succeeded(&case, &out);
     // Seed 004 with μ_s = μ_d = μ, S_a = k_μ = 0: sliding stress μp whatever the rate.
     let mu_p = case.props[1] * case.press;
@@ -229,9 +236,7 @@ const CRASH_ADHESIVE_SLIP_RATE: [u8; 65] = [
 
 #[test]
 fn fric_adhesive_slip_rate_replays_clean() {
-    let case = FricCase::decode(&CRASH_ADHESIVE_SLIP_RATE);
-    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
-    let out = checked(&case);
+    let (case, out) = adhesive_replay(&CRASH_ADHESIVE_SLIP_RATE);
     succeeded(&case, &out);
     assert_eq!((out.statev[0], out.statev[1]), (f64::MAX, f64::MAX));
 }
@@ -249,9 +254,7 @@ const CRASH_ADHESIVE_SUBNORMAL_RATE: [u8; 114] = [
 
 #[test]
 fn fric_adhesive_subnormal_rate_replays_clean() {
-    let case = FricCase::decode(&CRASH_ADHESIVE_SUBNORMAL_RATE);
-    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
-    let out = checked(&case);
+    let (case, out) = adhesive_replay(&CRASH_ADHESIVE_SUBNORMAL_RATE);
     succeeded(&case, &out);
     // Seed 004 with μ_s = μ_d = 0: τ = k_μ·(Δs/Δt)·p + S_a.
     let (s_a, k_mu) = (case.props[3], case.props[5]);
@@ -408,9 +411,7 @@ const FRIC_ADHESIVE_NEGATIVE_PRESSURE: [u8; 87] = [
 
 #[test]
 fn fric_adhesive_at_negative_pressure_replays_clean() {
-    let case = FricCase::decode(&FRIC_ADHESIVE_NEGATIVE_PRESSURE);
-    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
-    let out = checked(&case);
+    let (case, out) = adhesive_replay(&FRIC_ADHESIVE_NEGATIVE_PRESSURE);
     succeeded(&case, &out);
     // Sliding at p < 0: the stress is the shear adhesive strength S_a = PROPS(4).
     assert_eq!(out.statev[2], 1.0);
@@ -431,9 +432,7 @@ const CRASH_ADHESIVE_TRANSITION: [u8; 96] = [
 
 #[test]
 fn crash_7_replays_clean() {
-    let case = FricCase::decode(&CRASH_ADHESIVE_TRANSITION);
-    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
-    let out = checked(&case);
+    let (case, out) = adhesive_replay(&CRASH_ADHESIVE_TRANSITION);
     if out.message.is_empty() && out.lm == 0 && case.press < 0.0 {
         // Sliding at p < 0: the stress is S_a.
         let tau = out.tau.iter().fold(0.0f64, |s, x| s.hypot(*x));
@@ -470,11 +469,9 @@ fn batch_refuses_the_extended_law_as_a_whole() {
 /// 1.9·10⁻⁸ above k_μ·Δv·p. The rate term is now formed with its exponents kept apart.
 #[test]
 fn fric_adhesive_subnormal_rate_coefficient_replays_clean() {
-    let case = FricCase::decode(include_bytes!(
+    let (case, out) = adhesive_replay(include_bytes!(
         "../fuzz/regressions/fric-adhesive-subnormal-rate"
     ));
-    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
-    let out = checked(&case);
     succeeded(&case, &out);
     // μ_d = 0, v_½ = 0: sliding stress k_μ·(Δs/Δt)·p + S_a, with the exact slip rate.
     let slip = out.dslip[0].hypot(out.dslip[1]);
@@ -595,10 +592,8 @@ fn fric_stick_with_a_subnormal_stiffness_stays_on_the_cone() {
 /// stress is formed as the Coulomb law's careful tier forms it for a subnormal k_s.
 #[test]
 fn fric_adhesive_vanishing_start_strength_stays_within_the_property() {
-    let case = FricCase::decode(include_bytes!(
+    let (_, out) = adhesive_replay(include_bytes!(
         "../fuzz/regressions/fric-adhesive-vanishing-start-strength"
     ));
-    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
-    let out = checked(&case);
     assert_eq!(out.pnewdt, 0.25, "{out:?}");
 }

@@ -94,49 +94,36 @@ fn exports_have_the_abaqus_signatures() {
         usize,      // len(MSNAME)
     );
     let _: Fric = interfacial::abi::fric_;
+    // CalculiX's GAPCON has one more argument, AREA, before the hidden lengths.
+    macro_rules! gapcon {
+        ($($area:ty)?) => {
+            unsafe extern "C" fn(
+                *mut f64, // AK
+                R,        // D
+                R,        // FLOWM
+                R,        // TEMP
+                R,        // PREDEF
+                R,        // TIME
+                S,        // CINAME
+                S,        // SLNAME
+                S,        // MSNAME
+                R,        // COORDS
+                I,        // NOEL
+                I,        // NODE
+                I,        // NPRED
+                I,        // KSTEP
+                I,        // KINC
+                $($area,)?
+                usize,    // len(CINAME)
+                usize,    // len(SLNAME)
+                usize,    // len(MSNAME)
+            )
+        };
+    }
     #[cfg(not(feature = "calculix"))]
-    type Gapcon = unsafe extern "C" fn(
-        *mut f64, // AK
-        R,        // D
-        R,        // FLOWM
-        R,        // TEMP
-        R,        // PREDEF
-        R,        // TIME
-        S,        // CINAME
-        S,        // SLNAME
-        S,        // MSNAME
-        R,        // COORDS
-        I,        // NOEL
-        I,        // NODE
-        I,        // NPRED
-        I,        // KSTEP
-        I,        // KINC
-        usize,    // len(CINAME)
-        usize,    // len(SLNAME)
-        usize,    // len(MSNAME)
-    );
+    type Gapcon = gapcon!();
     #[cfg(feature = "calculix")]
-    type Gapcon = unsafe extern "C" fn(
-        *mut f64, // AK
-        R,        // D
-        R,        // FLOWM
-        R,        // TEMP
-        R,        // PREDEF
-        R,        // TIME
-        S,        // CINAME
-        S,        // SLNAME
-        S,        // MSNAME
-        R,        // COORDS
-        I,        // NOEL
-        I,        // NODE
-        I,        // NPRED
-        I,        // KSTEP
-        I,        // KINC
-        R,        // AREA (CalculiX)
-        usize,    // len(CINAME)
-        usize,    // len(SLNAME)
-        usize,    // len(MSNAME)
-    );
+    type Gapcon = gapcon!(R);
     let _: Gapcon = interfacial::abi::gapcon_;
     let _: unsafe extern "C" fn(
         *const c_char,

@@ -252,12 +252,7 @@ proptest! {
         dt in prop::num::f64::POSITIVE,
         flags in 0i32..16,
     ) {
-        let v = IflPorePressureVariant {
-            open: flags & 1,
-            steady: (flags >> 1) & 1,
-            finite_sliding: (flags >> 2) & 1,
-            per_side: (flags >> 3) & 1,
-        };
+        let (v, _, _) = decoded(flags);
         let (status, r, t, g) = call(v, [p1, p2, q, 0.0, 0.0, dt]);
         prop_assert!(matches!(status, IflStatus::Ok | IflStatus::NumericalFailure | IflStatus::BadInput));
         prop_assert!(r.iter().chain(t.iter()).chain(g.iter()).all(|x| x.is_finite()));
@@ -269,25 +264,23 @@ proptest! {
 
 type Outputs = (IflStatus, [f64; 4], [f64; 16], [f64; 4]);
 
-fn call(v: IflPorePressureVariant, x: [f64; 6]) -> Outputs {
+/// The reference point as the entry points' scalar arguments `p1, p2, q_hat, h, dh, dt`.
+const GOOD: [f64; 6] = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+
+/// The outputs of one call of `entry` on `RESIDUAL(4)`, `TANGENT(4,4)`, `GEOMETRIC(4)`
+/// prefilled with 7 (so that what the call wrote shows).
+fn outputs(entry: impl FnOnce(*mut f64, *mut f64, *mut f64) -> IflStatus) -> Outputs {
     let (mut r, mut t, mut g) = ([7.0; 4], [7.0; 16], [7.0; 4]);
-    // SAFETY: arrays of 4, 16 and 4 doubles; a NUL-terminated name.
-    let s = unsafe {
-        ifl_pore_pressure(
-            c"column".as_ptr(),
-            v,
-            x[0],
-            x[1],
-            x[2],
-            x[3],
-            x[4],
-            x[5],
-            r.as_mut_ptr(),
-            t.as_mut_ptr(),
-            g.as_mut_ptr(),
-        )
-    };
+    let s = entry(r.as_mut_ptr(), t.as_mut_ptr(), g.as_mut_ptr());
     (s, r, t, g)
+}
+
+fn call(v: IflPorePressureVariant, x: [f64; 6]) -> Outputs {
+    let [p1, p2, q, h, dh, dt] = x;
+    // SAFETY: arrays of 4, 16 and 4 doubles; a NUL-terminated name.
+    outputs(|r, t, g| unsafe {
+        ifl_pore_pressure(c"column".as_ptr(), v, p1, p2, q, h, dh, dt, r, t, g)
+    })
 }
 
 fn last_error() -> String {
@@ -311,7 +304,7 @@ fn the_abi_returns_the_core_terms_in_fortran_order() {
             per_side,
             ..GENERAL_FLAGS
         };
-        let x = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+        let x = GOOD;
         let (s, r, t, g) = call(v, x);
         assert_eq!(s, IflStatus::Ok);
         let basis = if per_side == 1 {
@@ -333,7 +326,7 @@ fn the_abi_returns_the_core_terms_in_fortran_order() {
 
 #[test]
 fn bad_input_is_refused_with_a_clear_message_and_zero_outputs() {
-    let good = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    let good = GOOD;
     let cases: [(IflPorePressureVariant, usize, f64, IflStatus, &str); 7] = [
         (
             GENERAL_FLAGS,
@@ -435,72 +428,39 @@ fn every_flag_combination_returns_the_core_terms_bit_for_bit() {
     // The ABI answers valid points on a lean path specialised per variant; it must give the
     // checked core's terms exactly.
     for flags in 0..16 {
-        let v = IflPorePressureVariant {
-            open: flags & 1,
-            steady: (flags >> 1) & 1,
-            finite_sliding: (flags >> 2) & 1,
-            per_side: (flags >> 3) & 1,
-        };
-        let variant = Variant {
-            contact: if v.open == 1 {
-                Contact::Open
-            } else {
-                Contact::Closed
-            },
-            regime: if v.steady == 1 {
-                Regime::Steady
-            } else {
-                Regime::Transient
-            },
-            sliding: if v.finite_sliding == 1 {
-                Sliding::Finite
-            } else {
-                Sliding::Small
-            },
-        };
-        let basis = if v.per_side == 1 {
-            Basis::PerSide
-        } else {
-            Basis::MeanJump
-        };
-        let x = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
-        let (s, r, t, g) = call(v, x);
-        assert_eq!(s, IflStatus::Ok, "flags {flags}");
-        let core = terms(&POINT, variant, basis);
-        let bits = |a: &[f64]| a.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-        assert_eq!(bits(&r), bits(&core.residual), "flags {flags}");
-        assert_eq!(bits(&g), bits(&core.geometric), "flags {flags}");
-        let core_t: Vec<f64> = (0..16).map(|k| core.tangent[k % 4][k / 4]).collect();
-        assert_eq!(bits(&t), bits(&core_t), "flags {flags}");
+        let (v, variant, basis) = decoded(flags);
+        let out = call(v, GOOD);
+        assert_eq!(out.0, IflStatus::Ok, "flags {flags}");
+        assert_bitwise(
+            &out,
+            &terms(&POINT, variant, basis),
+            &format!("flags {flags}"),
+        );
     }
 }
 
-/// `ifl_pore_pressure_n` on `len` bytes of `name`.
-fn call_n(name: &[u8], len: usize, v: IflPorePressureVariant, x: [f64; 6]) -> Outputs {
-    let (mut r, mut t, mut g) = ([7.0; 4], [7.0; 16], [7.0; 4]);
-    // SAFETY: `len` <= name.len() readable bytes; arrays of 4, 16 and 4 doubles.
-    let s = unsafe {
-        ifl_pore_pressure_n(
-            name.as_ptr().cast(),
-            len,
-            v,
-            x[0],
-            x[1],
-            x[2],
-            x[3],
-            x[4],
-            x[5],
-            r.as_mut_ptr(),
-            t.as_mut_ptr(),
-            g.as_mut_ptr(),
-        )
-    };
-    (s, r, t, g)
+/// The ABI's outputs are the core's terms bit for bit (`TANGENT(4,4)` in Fortran order).
+fn assert_bitwise(out: &Outputs, core: &PorePressureTerms, context: &str) {
+    let bits = |a: &[f64]| a.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    let (_, r, t, g) = out;
+    assert_eq!(bits(r), bits(&core.residual), "{context}");
+    assert_eq!(bits(g), bits(&core.geometric), "{context}");
+    let core_t: Vec<f64> = (0..16).map(|k| core.tangent[k % 4][k / 4]).collect();
+    assert_eq!(bits(t), bits(&core_t), "{context}");
+}
+
+/// `ifl_pore_pressure_n` on `len` bytes of `name` (NULL for `None`).
+fn call_n(name: Option<&[u8]>, len: usize, v: IflPorePressureVariant, x: [f64; 6]) -> Outputs {
+    let [p1, p2, q, h, dh, dt] = x;
+    let name = name.map_or(std::ptr::null(), |n| n.as_ptr().cast());
+    // SAFETY: `len` <= readable bytes of a non-NULL name (the callers'); a NULL name is
+    // allowed; arrays of 4, 16 and 4 doubles.
+    outputs(|r, t, g| unsafe { ifl_pore_pressure_n(name, len, v, p1, p2, q, h, dh, dt, r, t, g) })
 }
 
 #[test]
 fn the_length_carrying_form_answers_as_the_nul_terminated_one() {
-    let good = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    let good = GOOD;
     let bits = |o: &Outputs| {
         (
             o.0,
@@ -510,14 +470,9 @@ fn the_length_carrying_form_answers_as_the_nul_terminated_one() {
         )
     };
     for flags in 0..16 {
-        let v = IflPorePressureVariant {
-            open: flags & 1,
-            steady: (flags >> 1) & 1,
-            finite_sliding: (flags >> 2) & 1,
-            per_side: (flags >> 3) & 1,
-        };
+        let (v, _, _) = decoded(flags);
         assert_eq!(
-            bits(&call_n(b"column", 6, v, good)),
+            bits(&call_n(Some(b"column"), 6, v, good)),
             bits(&call(v, good)),
             "flags {flags}"
         );
@@ -526,11 +481,11 @@ fn the_length_carrying_form_answers_as_the_nul_terminated_one() {
 
 #[test]
 fn the_length_carrying_form_reads_only_its_length_and_needs_no_nul() {
-    let mut x = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    let mut x = GOOD;
     x[5] = 0.0;
     // A Fortran CHARACTER*12: blank-padded, no NUL, and bytes after it that are not the name's.
     let buffer = b"column      XYZ";
-    let (s, r, t, g) = call_n(buffer, 12, GENERAL_FLAGS, x);
+    let (s, r, t, g) = call_n(Some(buffer), 12, GENERAL_FLAGS, x);
     assert_eq!(s, IflStatus::BadInput);
     let msg = last_error();
     assert!(
@@ -541,24 +496,7 @@ fn the_length_carrying_form_reads_only_its_length_and_needs_no_nul() {
     assert_eq!((r, t, g), ([0.0; 4], [0.0; 16], [0.0; 4]));
     // Length 0 (any pointer, here NULL) and a NULL name with a length: no name, same refusal.
     for len in [0, 5] {
-        let (mut r, mut t, mut g) = ([7.0; 4], [7.0; 16], [7.0; 4]);
-        // SAFETY: a NULL name is allowed; arrays of 4, 16 and 4 doubles.
-        let s = unsafe {
-            ifl_pore_pressure_n(
-                std::ptr::null(),
-                len,
-                GENERAL_FLAGS,
-                x[0],
-                x[1],
-                x[2],
-                x[3],
-                x[4],
-                x[5],
-                r.as_mut_ptr(),
-                t.as_mut_ptr(),
-                g.as_mut_ptr(),
-            )
-        };
+        let (s, r, t, g) = call_n(None, len, GENERAL_FLAGS, x);
         assert_eq!(s, IflStatus::BadInput);
         assert!(last_error().contains("interaction ''"), "{}", last_error());
         assert_eq!((r, t, g), ([0.0; 4], [0.0; 16], [0.0; 4]));
@@ -603,7 +541,7 @@ fn the_abi_refuses_exactly_what_the_checked_core_refuses() {
         f64::NEG_INFINITY,
         f64::NAN,
     ];
-    let good = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    let good = GOOD;
     let mut inputs: Vec<[f64; 6]> = Vec::new();
     for i in 0..6 {
         for &x in &specials {
@@ -634,16 +572,13 @@ fn the_abi_refuses_exactly_what_the_checked_core_refuses() {
                 dh: x[4],
                 dt: x[5],
             };
-            let (s, r, t, g) = call(v, *x);
+            let out = call(v, *x);
+            let (s, r, t, g) = out;
             match interface_terms(&point, variant) {
                 Ok(core) => {
-                    let core = core.in_basis(basis);
                     assert_eq!(s, IflStatus::Ok, "flags {flags}, {x:?}");
-                    let bits = |a: &[f64]| a.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-                    assert_eq!(bits(&r), bits(&core.residual), "flags {flags}, {x:?}");
-                    assert_eq!(bits(&g), bits(&core.geometric), "flags {flags}, {x:?}");
-                    let core_t: Vec<f64> = (0..16).map(|k| core.tangent[k % 4][k / 4]).collect();
-                    assert_eq!(bits(&t), bits(&core_t), "flags {flags}, {x:?}");
+                    let context = format!("flags {flags}, {x:?}");
+                    assert_bitwise(&out, &core.in_basis(basis), &context);
                 }
                 Err(fault) => {
                     refused += 1;
@@ -664,7 +599,7 @@ fn the_abi_refuses_exactly_what_the_checked_core_refuses() {
 
 #[test]
 fn a_flag_other_than_0_or_1_is_refused_naming_the_flag() {
-    let x = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    let x = GOOD;
     for bad in [-1, 2, i32::MIN, i32::MAX] {
         for (k, name) in ["open", "steady", "finite_sliding", "per_side"]
             .into_iter()
@@ -693,14 +628,17 @@ fn a_flag_other_than_0_or_1_is_refused_naming_the_flag() {
 #[test]
 fn a_success_leaves_the_last_error_as_every_entry_point_does() {
     // docs/install.md: a successful call does not clear the thread's last error.
-    let good = [POINT.p1, POINT.p2, POINT.q_hat, POINT.h, POINT.dh, POINT.dt];
+    let good = GOOD;
     let mut bad = good;
     bad[0] = f64::NAN;
     assert_eq!(call(GENERAL_FLAGS, bad).0, IflStatus::BadInput);
     let before = last_error();
     assert!(before.contains("p1 = NaN"), "{before}");
     assert_eq!(call(GENERAL_FLAGS, good).0, IflStatus::Ok);
-    assert_eq!(call_n(b"column", 6, GENERAL_FLAGS, good).0, IflStatus::Ok);
+    assert_eq!(
+        call_n(Some(b"column"), 6, GENERAL_FLAGS, good).0,
+        IflStatus::Ok
+    );
     assert_eq!(last_error(), before);
     interfacial::abi::ifl_clear_error();
     assert_eq!(last_error(), "");

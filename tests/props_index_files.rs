@@ -41,26 +41,27 @@ fn c_header() -> String {
          * value of PROPS(1). The twin of fortran_tests/props_index.inc. */\n\
          #ifndef INTERFACIAL_PROPS_INDEX_H\n#define INTERFACIAL_PROPS_INDEX_H\n",
     );
-    for (law, layout) in layouts() {
-        s.push_str(&format!(
-            "\n/* law {}: the {} */\n",
-            layout.code, layout.law
-        ));
-        s.push_str(&format!("#define IFLP_LAW_{law} {}\n", layout.code));
-        s.push_str(&format!(
-            "#define IFLP_{law}_NPROPS {}\n",
-            layout.entries.len()
-        ));
-        for e in named_entries(layout) {
-            s.push_str(&format!(
+    render(
+        &mut s,
+        |law, layout| {
+            format!(
+                "\n/* law {}: the {} */\n#define IFLP_LAW_{law} {}\n#define IFLP_{law}_NPROPS {}\n",
+                layout.code,
+                layout.law,
+                layout.code,
+                layout.entries.len()
+            )
+        },
+        |law, e| {
+            format!(
                 "#define IFLP_{law}_{} {} /* PROPS({}): {} */\n",
                 upper(e.key),
                 e.index - 1,
                 e.index,
                 e.meaning.replace("*/", "* /")
-            ));
-        }
-    }
+            )
+        },
+    );
     s.push_str("\n#endif\n");
     s
 }
@@ -75,26 +76,44 @@ fn fortran_include() -> String {
          ! the value of PROPS(1). Valid in fixed and free form. The twin of\n\
          ! c_tests/props_index.h.\n",
     );
-    for (law, layout) in layouts() {
-        let short = law_letter(law);
-        s.push_str(&format!("! law {}: the {}\n", layout.code, layout.law));
-        s.push_str(&format!(
-            "      INTEGER, PARAMETER :: LAW_{law} = {}\n",
-            layout.code
-        ));
-        s.push_str(&format!(
-            "      INTEGER, PARAMETER :: KP{short}_N = {}\n",
-            layout.entries.len()
-        ));
-        for e in named_entries(layout) {
-            s.push_str(&format!(
-                "      INTEGER, PARAMETER :: KP{short}_{} = {}\n",
+    render(
+        &mut s,
+        |law, layout| {
+            format!(
+                "! law {}: the {}\n      INTEGER, PARAMETER :: LAW_{law} = {}\n      \
+                 INTEGER, PARAMETER :: KP{}_N = {}\n",
+                layout.code,
+                layout.law,
+                layout.code,
+                law_letter(law),
+                layout.entries.len()
+            )
+        },
+        |law, e| {
+            format!(
+                "      INTEGER, PARAMETER :: KP{}_{} = {}\n",
+                law_letter(law),
                 upper(e.key),
                 e.index
-            ));
+            )
+        },
+    );
+    s
+}
+
+/// Appends, for each law, the lines `law_lines` writes for the law itself (its code, the length
+/// of its layout) and one line `entry_line` per named entry: the body both files share.
+fn render(
+    s: &mut String,
+    law_lines: impl Fn(&str, &Layout) -> String,
+    entry_line: impl Fn(&str, &Entry) -> String,
+) {
+    for (law, layout) in layouts() {
+        s.push_str(&law_lines(law, layout));
+        for e in named_entries(layout) {
+            s.push_str(&entry_line(law, e));
         }
     }
-    s
 }
 
 /// One letter per law in the Fortran names (they must stay within 31 characters): C, A.

@@ -3,8 +3,10 @@
 //! `ifl_last_error` still gives each call's own message. Runs in a child process of this test
 //! binary, so the environment (read once per process) and the set of causes are its own.
 
+#[path = "common/child.rs"]
+mod child;
+use child::run_child_with_log;
 use std::ffi::CStr;
-use std::process::Command;
 
 use interfacial::abi::host::FricCall;
 use interfacial::abi::ifl_last_error;
@@ -44,23 +46,11 @@ fn child_many_distinct_causes() {
 
 #[test]
 fn messages_stop_after_ten_thousand_causes_with_one_line_saying_so() {
-    let log = std::env::temp_dir().join(format!("interfacial-limit-{}.txt", std::process::id()));
-    let _ = std::fs::remove_file(&log);
-    let exe = std::env::current_exe().expect("test binary path");
-    let out = Command::new(exe)
-        .args(["--exact", "child_many_distinct_causes", "--test-threads=1"])
-        .env("IFL_REPORT_LIMIT_CHILD", "1")
-        .env("INTERFACIAL_LOG", &log)
-        .env_remove("INTERFACIAL_STRICT")
-        .output()
-        .expect("run child");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stdout)
+    let (_, text) = run_child_with_log(
+        "child_many_distinct_causes",
+        "IFL_REPORT_LIMIT_CHILD",
+        "limit",
     );
-    let text = std::fs::read_to_string(&log).expect("log written");
-    let _ = std::fs::remove_file(&log);
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines.len(), LIMIT + 1, "{LIMIT} causes, then one line");
     // The first LIMIT causes, in order, each once.

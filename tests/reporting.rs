@@ -2,9 +2,15 @@
 //! threads; `INTERFACIAL_STRICT=1` aborts. Each test runs in a child process of this test binary
 //! so the environment (read once per process) is its own.
 
-use std::process::Command;
+#[path = "common/child.rs"]
+mod child;
+use child::{run_child, run_child_with_log};
 
 use interfacial::abi::host::FricCall;
+
+/// The child test, and the variable that makes it do its work.
+const CHILD: &str = "child_many_bad_calls";
+const MARKER: &str = "IFL_REPORTING_CHILD";
 
 fn bad_call(mu: f64) {
     let mut c = FricCall::new(2, &[1.0, mu]);
@@ -16,7 +22,7 @@ fn bad_call(mu: f64) {
 /// Child side: many bad calls with two distinct causes from several threads.
 #[test]
 fn child_many_bad_calls() {
-    if std::env::var_os("IFL_REPORTING_CHILD").is_none() {
+    if std::env::var_os(MARKER).is_none() {
         return;
     }
     std::thread::scope(|s| {
@@ -31,34 +37,9 @@ fn child_many_bad_calls() {
     });
 }
 
-fn run_child(envs: &[(&str, &str)]) -> std::process::Output {
-    let exe = std::env::current_exe().expect("test binary path");
-    let mut cmd = Command::new(exe);
-    cmd.args([
-        "--exact",
-        "child_many_bad_calls",
-        "--nocapture",
-        "--test-threads=1",
-    ])
-    .env("IFL_REPORTING_CHILD", "1");
-    for (k, v) in envs {
-        cmd.env(k, v);
-    }
-    cmd.output().expect("run child")
-}
-
 #[test]
 fn one_line_per_cause_in_the_log_file() {
-    let log = std::env::temp_dir().join(format!("interfacial-log-{}.txt", std::process::id()));
-    let _ = std::fs::remove_file(&log);
-    let out = run_child(&[("INTERFACIAL_LOG", log.to_str().unwrap())]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = std::fs::read_to_string(&log).expect("log written");
-    let _ = std::fs::remove_file(&log);
+    let (out, text) = run_child_with_log(CHILD, MARKER, "log");
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines.len(), 2, "8000 bad calls, 2 causes: {text}");
     assert!(lines.iter().any(|l| l.contains("-1")) && lines.iter().any(|l| l.contains("-2")));
@@ -73,7 +54,7 @@ fn one_line_per_cause_in_the_log_file() {
 
 #[test]
 fn strict_mode_aborts_on_the_first_error() {
-    let out = run_child(&[("INTERFACIAL_STRICT", "1")]);
+    let out = run_child(CHILD, MARKER, &[("INTERFACIAL_STRICT", "1")]);
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(

@@ -8,7 +8,9 @@
 
 use std::path::Path;
 
+use plotters::chart::MeshStyle;
 use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
+use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
 
 use crate::oscillator::Oscillator;
@@ -17,7 +19,8 @@ use crate::scene::Point;
 use crate::stability::{Cell, Map};
 use crate::velocity::RateLaw;
 
-const COLORS: [RGBColor; 10] = [
+/// The series colours, in order (matplotlib's "tab10").
+pub const COLORS: [RGBColor; 10] = [
     RGBColor(31, 119, 180),
     RGBColor(255, 127, 14),
     RGBColor(44, 160, 44),
@@ -125,6 +128,15 @@ pub struct Axis {
     pub title: String,
 }
 
+impl Axis {
+    pub fn new(range: (f64, f64), title: impl Into<String>) -> Axis {
+        Axis {
+            range,
+            title: title.into(),
+        }
+    }
+}
+
 /// A chart's fixed parts.
 pub struct Frame<'a> {
     /// Caption.
@@ -215,18 +227,14 @@ pub fn frame(
             log_axis(f.y.range.0, f.y.range.1),
         )
         .map_err(err)?;
-    chart
-        .configure_mesh()
-        .x_desc(f.x.title.as_str())
-        .y_desc(f.y.title.as_str())
-        .x_label_formatter(&|v| tick_label(*v))
-        .y_label_formatter(&|v| tick_label(*v))
-        .light_line_style(RGBColor(235, 235, 235))
-        .bold_line_style(RGBColor(200, 200, 200))
-        .label_style(("sans-serif", 13))
-        .axis_desc_style(("sans-serif", 14))
-        .draw()
-        .map_err(err)?;
+    draw_mesh(
+        chart
+            .configure_mesh()
+            .x_desc(f.x.title.as_str())
+            .y_desc(f.y.title.as_str())
+            .x_label_formatter(&|v| tick_label(*v))
+            .y_label_formatter(&|v| tick_label(*v)),
+    )?;
     body(&mut chart)?;
     if let Some((scale, title)) = &f.top {
         // The second x axis: ticks at every decade of x/scale along the plot's top edge.
@@ -315,16 +323,12 @@ pub fn frame_linear(
         .y_label_area_size(78)
         .build_cartesian_2d(f.x.0.0..f.x.0.1, f.y.0.0..f.y.0.1)
         .map_err(err)?;
-    chart
-        .configure_mesh()
-        .x_desc(f.x.1.as_str())
-        .y_desc(f.y.1.as_str())
-        .light_line_style(RGBColor(235, 235, 235))
-        .bold_line_style(RGBColor(200, 200, 200))
-        .label_style(("sans-serif", 13))
-        .axis_desc_style(("sans-serif", 14))
-        .draw()
-        .map_err(err)?;
+    draw_mesh(
+        chart
+            .configure_mesh()
+            .x_desc(f.x.1.as_str())
+            .y_desc(f.y.1.as_str()),
+    )?;
     body(&mut chart)?;
     draw_legend(&side, &f.legend)?;
     draw_notes(&notes, &note_lines)?;
@@ -332,6 +336,20 @@ pub fn frame_linear(
 }
 
 type Area<'b> = DrawingArea<SVGBackend<'b>, plotters::coord::Shift>;
+
+/// The grid and the label fonts every chart shares; draws the mesh.
+fn draw_mesh<X, Y>(mesh: &mut MeshStyle<'_, '_, X, Y, SVGBackend<'_>>) -> Result<(), String>
+where
+    X: Ranged + ValueFormatter<X::ValueType>,
+    Y: Ranged + ValueFormatter<Y::ValueType>,
+{
+    mesh.light_line_style(RGBColor(235, 235, 235))
+        .bold_line_style(RGBColor(200, 200, 200))
+        .label_style(("sans-serif", 13))
+        .axis_desc_style(("sans-serif", 14))
+        .draw()
+        .map_err(err)
+}
 
 /// The legend panel right of the plot.
 fn draw_legend(side: &Area<'_>, legend: &[(Swatch, String)]) -> Result<(), String> {
@@ -488,34 +506,9 @@ pub struct Extras {
 /// measurable, a triangle on the top edge when it is not. The error is floored at 1e-16 so that
 /// round-off-exact results stay on a log axis. A curve that coincides with an earlier one (every
 /// point within 5 % in error at the same step) is drawn with rings over the first one's dots,
-/// and a note says so.
+/// and a note says so. `extras` adds a scene's own notes and reference lines.
 #[allow(clippy::too_many_arguments)]
 pub fn work_precision_chart(
-    path: &Path,
-    title: &str,
-    x_title: &str,
-    y_title: &str,
-    points: &[Point],
-    cost: Cost,
-    highlights: &[Highlight],
-    machine: &str,
-) -> Result<(), String> {
-    work_precision_full(
-        path,
-        title,
-        x_title,
-        y_title,
-        points,
-        cost,
-        highlights,
-        machine,
-        &Extras::default(),
-    )
-}
-
-/// [`work_precision_chart`] with a scene's own notes and reference lines.
-#[allow(clippy::too_many_arguments)]
-pub fn work_precision_full(
     path: &Path,
     title: &str,
     x_title: &str,
@@ -640,14 +633,8 @@ pub fn work_precision_full(
     notes.extend(extras.notes.iter().cloned());
     let f = Frame {
         title,
-        x: Axis {
-            range: (x0, x1),
-            title: x_title.into(),
-        },
-        y: Axis {
-            range: (y0, y1),
-            title: y_title.into(),
-        },
+        x: Axis::new((x0, x1), x_title),
+        y: Axis::new((y0, y1), y_title),
         top: None,
         legend,
         notes,
@@ -737,15 +724,21 @@ pub fn work_precision_full(
     })
 }
 
+/// The cells every map shares, one colour each: an answer that settles (accurate), one that
+/// oscillates (unstable), a host cut-back.
+const SETTLES: RGBColor = RGBColor(102, 194, 120);
+const OSCILLATES: RGBColor = RGBColor(244, 109, 67);
+const CUT_BACK: RGBColor = RGBColor(49, 54, 149);
+
 fn cell_color(c: Cell) -> RGBColor {
     match c {
-        Cell::Accurate => RGBColor(102, 194, 120),
+        Cell::Accurate => SETTLES,
         Cell::Inaccurate => RGBColor(199, 233, 192),
         Cell::Chattering => RGBColor(254, 224, 139),
-        Cell::Unstable => RGBColor(244, 109, 67),
+        Cell::Unstable => OSCILLATES,
         Cell::Diverged => RGBColor(215, 48, 39),
         Cell::NewtonFailed => RGBColor(117, 107, 177),
-        Cell::CutBack => RGBColor(49, 54, 149),
+        Cell::CutBack => CUT_BACK,
     }
 }
 
@@ -838,14 +831,8 @@ pub fn stability_map(
     let period = o.period();
     let f = Frame {
         title: &format!("F6 stability map: {}", map.spec.label),
-        x: Axis {
-            range: (x0, x1),
-            title: "time step Δt (s)".into(),
-        },
-        y: Axis {
-            range: (y0, y1),
-            title: "allowable elastic slip γ_crit (m)".into(),
-        },
+        x: Axis::new((x0, x1), "time step Δt (s)"),
+        y: Axis::new((y0, y1), "allowable elastic slip γ_crit (m)"),
         top: Some((period, format!("Δt / T, period T = {period:.3} s"))),
         legend,
         notes: all_notes,
@@ -895,9 +882,9 @@ fn draw_cell_marks(
 
 fn rate_cell_color(c: RateCell) -> RGBColor {
     match c {
-        RateCell::Settles => RGBColor(102, 194, 120),
-        RateCell::Oscillates => RGBColor(244, 109, 67),
-        RateCell::CutBack => RGBColor(49, 54, 149),
+        RateCell::Settles => SETTLES,
+        RateCell::Oscillates => OSCILLATES,
+        RateCell::CutBack => CUT_BACK,
     }
 }
 
@@ -922,14 +909,8 @@ pub fn rate_map(path: &Path, map: &RateMap) -> Result<(), String> {
     ));
     let f = Frame {
         title: &map.title(),
-        x: Axis {
-            range: (x0, x1),
-            title: "time step Δt (s)".into(),
-        },
-        y: Axis {
-            range: (y0, y1),
-            title: "decay coefficient d_c (s/m)".into(),
-        },
+        x: Axis::new((x0, x1), "time step Δt (s)"),
+        y: Axis::new((y0, y1), "decay coefficient d_c (s/m)"),
         top: None,
         legend,
         notes: vec![format!(

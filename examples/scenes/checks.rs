@@ -791,25 +791,36 @@ pub fn run() -> Result<Vec<Row>, String> {
 
 /// Prints the rows; returns the number of failures.
 pub fn print(rows: &[Row]) -> usize {
-    println!(
+    let header = format!(
         "{:<5} {:<46} {:<36} {:>14} {:>14} {:>10}  ok",
         "scene", "case", "quantity", "closed form", "computed", "error"
     );
-    let mut failed = 0;
-    for r in rows {
-        if !r.ok() {
-            failed += 1;
-        }
-        println!(
-            "{:<5} {:<46} {:<36} {:>14.8e} {:>14.8e} {:>10.2e}  {}",
-            r.scene,
-            r.case,
-            r.quantity,
-            r.exact,
-            r.computed,
-            r.error(),
-            if r.ok() { "yes" } else { "NO" }
-        );
+    print_table(&header, rows, Row::ok, |r| {
+        let Row {
+            scene,
+            case,
+            quantity,
+            exact,
+            computed,
+            ..
+        } = r;
+        let (error, ok) = (r.error(), if r.ok() { "yes" } else { "NO" });
+        format!(
+            "{scene:<5} {case:<46} {quantity:<36} {exact:>14.8e} {computed:>14.8e} {error:>10.2e}  {ok}"
+        )
+    })
+}
+
+/// Prints `header`, then one `line` per item; returns how many items are not `ok`.
+pub fn print_table<T>(
+    header: &str,
+    items: &[T],
+    ok: impl Fn(&T) -> bool,
+    line: impl Fn(&T) -> String,
+) -> usize {
+    println!("{header}");
+    for item in items {
+        println!("{}", line(item));
     }
-    failed
+    items.iter().filter(|item| !ok(item)).count()
 }

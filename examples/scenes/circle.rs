@@ -43,15 +43,11 @@ pub struct CircleRun {
 impl Circle {
     /// Checks the parameters.
     pub fn validate(&self) -> Result<(), String> {
-        for (name, v) in [
+        crate::scene::all_positive(&[
             ("mu", self.mu),
             ("pressure", self.pressure),
             ("radius", self.radius),
-        ] {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(format!("{name} = {v} must be finite and > 0"));
-            }
-        }
+        ])?;
         if self.turns == 0 || self.turns > 100 {
             return Err(format!("turns = {} must be in 1..=100", self.turns));
         }

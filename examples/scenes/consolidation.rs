@@ -158,6 +158,25 @@ pub struct Outcome {
     pub failures: usize,
 }
 
+/// An observed order of convergence against the scene file's band `[lo, hi]`: its middle, within
+/// half its width.
+fn order_row(
+    rows: &mut Vec<Row>,
+    case: String,
+    quantity: &'static str,
+    observed: f64,
+    [lo, hi]: [f64; 2],
+) {
+    row(
+        rows,
+        case,
+        quantity,
+        0.5 * (lo + hi),
+        observed,
+        0.5 * (hi - lo),
+    );
+}
+
 fn row(rows: &mut Vec<Row>, case: String, quantity: &'static str, exact: f64, got: f64, tol: f64) {
     rows.push(Row {
         scene: "P1",
@@ -512,30 +531,24 @@ fn study(
     // The two smallest Δt: the largest ones step over the earliest output time.
     by_dt.sort_by(|a, b| a.step.total_cmp(&b.step));
     if by_dt.len() >= 2 {
-        let o = order(by_dt[0], by_dt[1]);
-        let mid = 0.5 * (s.dt_order[0] + s.dt_order[1]);
-        row(
+        order_row(
             rows,
             format!("Δt {:e} → {:e}", by_dt[0].step, by_dt[1].step),
             "observed order in Δt (backward Euler: 1)",
-            mid,
-            o,
-            0.5 * (s.dt_order[1] - s.dt_order[0]),
+            order(by_dt[0], by_dt[1]),
+            s.dt_order,
         );
     }
     let mut by_mesh: Vec<&Point> = mesh_points.iter().filter(kernel_only).collect();
     by_mesh.sort_by(|a, b| a.step.total_cmp(&b.step));
     if by_mesh.len() >= 2 {
         // Error against the element size Δz ∝ 1/elements.
-        let o = -order(by_mesh[0], by_mesh[1]);
-        let mid = 0.5 * (s.mesh_order[0] + s.mesh_order[1]);
-        row(
+        order_row(
             rows,
             format!("{} → {} elements", by_mesh[0].step, by_mesh[1].step),
             "observed order in Δz (linear elements: 2)",
-            mid,
-            o,
-            0.5 * (s.mesh_order[1] - s.mesh_order[0]),
+            -order(by_mesh[0], by_mesh[1]),
+            s.mesh_order,
         );
     }
     // Interface and shared meshes agree point by point.
@@ -681,6 +694,11 @@ fn study(
         "Error: the larger of the pore-pressure error over q₀ and the error in the degree of consolidation U, at the file's depths and output times (earliest t = {} s), against the series solution.",
         c.times.iter().copied().fold(f64::INFINITY, f64::min)
     );
+    // The three error charts' notes: what the error is, in which units.
+    let error_notes = || crate::charts::Extras {
+        notes: vec![error_note.clone(), units.into()],
+        verticals: Vec::new(),
+    };
     let machine = crate::machine();
     let charts: [Chart; 4] = [
         (
@@ -689,10 +707,7 @@ fn study(
             label,
             &dt_points,
             crate::charts::Cost::Other(&|p| p.step),
-            crate::charts::Extras {
-                notes: vec![error_note.clone(), units.into()],
-                verticals: Vec::new(),
-            },
+            error_notes(),
         ),
         (
             "error-vs-elements",
@@ -700,10 +715,7 @@ fn study(
             label,
             &mesh_points,
             crate::charts::Cost::Other(&|p| p.step),
-            crate::charts::Extras {
-                notes: vec![error_note.clone(), units.into()],
-                verticals: Vec::new(),
-            },
+            error_notes(),
         ),
         (
             "error-vs-time",
@@ -711,10 +723,7 @@ fn study(
             label,
             &all,
             crate::charts::Cost::Runs(s.repeats.max(1)),
-            crate::charts::Extras {
-                notes: vec![error_note, units.into()],
-                verticals: Vec::new(),
-            },
+            error_notes(),
         ),
         (
             "stability",
@@ -742,7 +751,7 @@ fn study(
     ];
     for (name, x_label, y_label, points, cost, extras) in charts {
         let svg = out.join(format!("{id}-{name}.svg"));
-        if let Err(e) = crate::charts::work_precision_full(
+        if let Err(e) = crate::charts::work_precision_chart(
             &svg,
             &format!(
                 "{}: {}",

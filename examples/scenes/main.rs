@@ -139,90 +139,95 @@ pub fn sweep(scene: &Scene, quick: bool, mut tick: impl FnMut(&str)) -> Vec<Poin
     points
 }
 
-fn write_points(path: &Path, points: &[Point]) -> Result<(), String> {
-    let mut s = String::from(
-        "scene,method,step,relative_step,error,claim,meets_claim,verdict,calls,wall_s,wall_min_s,wall_max_s,repeats,runs_per_repeat,ns_per_call,details\n",
-    );
-    for p in points {
-        let _ = writeln!(
-            s,
-            "{},\"{}\",{:e},{:e},{:e},{:e},{},{},{},{:e},{:e},{:e},{},{},{:.1},\"{}\"",
-            p.scene,
-            p.method,
-            p.step,
-            p.relative_step,
-            p.error,
-            p.claim,
-            if p.claim.is_finite() {
-                if p.meets_claim() { "true" } else { "false" }
-            } else {
-                "no claim"
-            },
-            p.verdict,
-            p.calls,
-            p.wall,
-            p.wall_range[0],
-            p.wall_range[1],
-            p.repeats[0],
-            p.repeats[1],
-            p.wall / p.calls.max(1) as f64 * 1e9,
-            p.details
-                .iter()
-                .map(|d| format!("{d:e}"))
-                .collect::<Vec<_>>()
-                .join(";")
-        );
+/// Writes a CSV file: the `header` line, then one line per item of `lines`.
+fn write_csv(path: &Path, header: &str, lines: impl Iterator<Item = String>) -> Result<(), String> {
+    let mut s = format!("{header}\n");
+    for line in lines {
+        let _ = writeln!(s, "{line}");
     }
     std::fs::write(path, s).map_err(|e| format!("cannot write {}: {e}", path.display()))
 }
 
+fn write_points(path: &Path, points: &[Point]) -> Result<(), String> {
+    let header = "scene,method,step,relative_step,error,claim,meets_claim,verdict,calls,wall_s,wall_min_s,wall_max_s,repeats,runs_per_repeat,ns_per_call,details";
+    write_csv(
+        path,
+        header,
+        points.iter().map(|p| {
+            format!(
+                "{},\"{}\",{:e},{:e},{:e},{:e},{},{},{},{:e},{:e},{:e},{},{},{:.1},\"{}\"",
+                p.scene,
+                p.method,
+                p.step,
+                p.relative_step,
+                p.error,
+                p.claim,
+                if p.claim.is_finite() {
+                    if p.meets_claim() { "true" } else { "false" }
+                } else {
+                    "no claim"
+                },
+                p.verdict,
+                p.calls,
+                p.wall,
+                p.wall_range[0],
+                p.wall_range[1],
+                p.repeats[0],
+                p.repeats[1],
+                p.wall / p.calls.max(1) as f64 * 1e9,
+                p.details
+                    .iter()
+                    .map(|d| format!("{d:e}"))
+                    .collect::<Vec<_>>()
+                    .join(";")
+            )
+        }),
+    )
+}
+
 fn write_map(path: &Path, map: &Map) -> Result<(), String> {
-    let mut s = String::from("dt,gamma_crit,class,error\n");
-    for (r, row) in map.cells.iter().enumerate() {
-        for (c, cell) in row.iter().enumerate() {
-            let _ = writeln!(
-                s,
+    let cells = map.cells.iter().enumerate().flat_map(|(r, row)| {
+        row.iter().enumerate().map(move |(c, cell)| {
+            format!(
                 "{:e},{:e},{},{:e}",
                 map.dts[c],
                 map.gammas[r],
                 cell.name(),
                 map.errors[r][c]
-            );
-        }
-    }
-    std::fs::write(path, s).map_err(|e| format!("cannot write {}: {e}", path.display()))
+            )
+        })
+    });
+    write_csv(path, "dt,gamma_crit,class,error", cells)
 }
 
 fn write_checks(path: &Path, rows: &[checks::Row]) -> Result<(), String> {
-    let mut s = String::from("scene,case,quantity,closed_form,computed,error,tolerance,ok\n");
-    for r in rows {
-        let _ = writeln!(
-            s,
-            "{},\"{}\",\"{}\",{:e},{:e},{:e},{:e},{}",
-            r.scene,
-            r.case,
-            r.quantity,
-            r.exact,
-            r.computed,
-            r.error(),
-            r.tolerance,
-            r.ok()
-        );
-    }
-    std::fs::write(path, s).map_err(|e| format!("cannot write {}: {e}", path.display()))
+    let header = "scene,case,quantity,closed_form,computed,error,tolerance,ok";
+    write_csv(
+        path,
+        header,
+        rows.iter().map(|r| {
+            format!(
+                "{},\"{}\",\"{}\",{:e},{:e},{:e},{:e},{}",
+                r.scene,
+                r.case,
+                r.quantity,
+                r.exact,
+                r.computed,
+                r.error(),
+                r.tolerance,
+                r.ok()
+            )
+        }),
+    )
 }
 
 fn print_points(points: &[Point]) -> usize {
-    println!(
+    let header = format!(
         "{:<5} {:<34} {:>9} {:>10} {:>10} {:>10} {:>8} {:>11}  {:<14} claim met",
         "scene", "method", "step", "error", "claim", "run (ms)", "calls", "ns/call", "verdict"
     );
-    let mut failed = 0;
-    for p in points {
-        if !p.meets_claim() {
-            failed += 1;
-        }
-        println!(
+    checks::print_table(&header, points, Point::meets_claim, |p| {
+        format!(
             "{:<5} {:<34} {:>9.3e} {:>10.2e} {:>10} {:>10.3} {:>8} {:>11.1}  {:<14} {}",
             p.scene,
             p.method,
@@ -244,9 +249,8 @@ fn print_points(points: &[Point]) -> usize {
             } else {
                 "NO"
             }
-        );
-    }
-    failed
+        )
+    })
 }
 
 /// The machine the times were taken on: CPU model and logical CPUs.
@@ -394,31 +398,38 @@ fn main() {
             _ => "lag angle error (rad), against the end-of-step tangent unless marked",
         };
         let highlights = findings::highlights(id);
-        let written = write_points(&csv, &points)
-            .and_then(|()| {
-                charts::work_precision_chart(
-                    &time_svg,
-                    &format!("{}: error against wall time", scene.file.title),
-                    "wall time per run (s): median of 5 repeats, bar = fastest..slowest",
-                    error_label,
-                    &points,
-                    charts::Cost::Wall,
-                    &highlights,
-                    &machine,
-                )
-            })
-            .and_then(|()| {
-                charts::work_precision_chart(
-                    &calls_svg,
-                    &format!("{}: error against fric_ calls", scene.file.title),
-                    "fric_ calls per run, Newton iterations included (–)",
-                    error_label,
-                    &points,
-                    charts::Cost::Calls,
-                    &highlights,
-                    &machine,
-                )
-            });
+        // The error against each cost: wall time, then fric_ calls.
+        let views = [
+            (
+                &time_svg,
+                "wall time",
+                "wall time per run (s): median of 5 repeats, bar = fastest..slowest",
+                charts::Cost::Wall,
+            ),
+            (
+                &calls_svg,
+                "fric_ calls",
+                "fric_ calls per run, Newton iterations included (–)",
+                charts::Cost::Calls,
+            ),
+        ];
+        let written = write_points(&csv, &points).and_then(|()| {
+            views
+                .into_iter()
+                .try_for_each(|(svg, cost_name, x_title, cost)| {
+                    charts::work_precision_chart(
+                        svg,
+                        &format!("{}: error against {cost_name}", scene.file.title),
+                        x_title,
+                        error_label,
+                        &points,
+                        cost,
+                        &highlights,
+                        &machine,
+                        &charts::Extras::default(),
+                    )
+                })
+        });
         if let Err(e) = written {
             eprintln!("\nscenes: {e}");
             failures += 1;

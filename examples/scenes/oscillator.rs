@@ -98,11 +98,7 @@ impl Oscillator {
             ("mu_kinetic", self.mu_kinetic),
             ("belt_speed", self.belt_speed),
         ];
-        for (name, v) in positive {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(format!("{name} = {v} must be finite and > 0"));
-            }
-        }
+        crate::scene::all_positive(&positive)?;
         if !(self.mu_static.is_finite() && self.mu_static > self.mu_kinetic) {
             return Err(format!(
                 "mu_static = {} must exceed mu_kinetic = {} for stick-slip",

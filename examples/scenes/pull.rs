@@ -49,15 +49,11 @@ const MAX_NEWTON: usize = 30;
 impl Pull {
     /// Checks the parameters.
     pub fn validate(&self) -> Result<(), String> {
-        for (name, v) in [
+        crate::scene::all_positive(&[
             ("mu", self.mu),
             ("pressure", self.pressure),
             ("spring", self.spring),
-        ] {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(format!("{name} = {v} must be finite and > 0"));
-            }
-        }
+        ])?;
         if !(self.travel.is_finite() && self.travel > 1.0 && self.travel < 1e4) {
             return Err(format!(
                 "travel = {} must be in (1, 1e4) stick stretches",

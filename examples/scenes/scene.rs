@@ -404,6 +404,28 @@ fn timed<R>(timing: Timing, mut run: impl FnMut() -> R) -> (R, f64, [f64; 2], [u
     )
 }
 
+/// The first of the named parameters that is not finite and > 0, as an error.
+pub fn all_positive(parameters: &[(&str, f64)]) -> Result<(), String> {
+    match parameters
+        .iter()
+        .find(|(_, v)| !(v.is_finite() && *v > 0.0))
+    {
+        Some((name, v)) => Err(format!("{name} = {v} must be finite and > 0")),
+        None => Ok(()),
+    }
+}
+
+/// The first of the named parameters that is not finite and ≥ 0, as an error.
+pub fn all_non_negative(parameters: &[(&str, f64)]) -> Result<(), String> {
+    match parameters
+        .iter()
+        .find(|(_, v)| !(v.is_finite() && *v >= 0.0))
+    {
+        Some((name, v)) => Err(format!("{name} = {v} must be finite and ≥ 0")),
+        None => Ok(()),
+    }
+}
+
 /// Runs one method at one step, timed as the main job times it (the earlier entry point).
 #[allow(dead_code)]
 pub fn run_point(scene: &Scene, method: &Method, step: f64) -> Point {

@@ -73,26 +73,18 @@ impl VelocitySteps {
         if self.rates.is_empty() || self.rates.iter().any(|v| !(v.is_finite() && *v > 0.0)) {
             return Err("rates must be a non-empty list of positive rates".into());
         }
-        for (name, v) in [
+        crate::scene::all_positive(&[
             ("hold", self.hold),
             ("pressure", self.pressure),
             ("mu_static", self.mu_static),
             ("decay", self.decay),
-        ] {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(format!("{name} = {v} must be finite and > 0"));
-            }
-        }
-        for (name, v) in [
+        ])?;
+        crate::scene::all_non_negative(&[
             ("mu_kinetic", self.mu_kinetic),
             ("v_half", self.v_half),
             ("k_mu", self.k_mu),
             ("shear_adhesion", self.shear_adhesion),
-        ] {
-            if !(v.is_finite() && v >= 0.0) {
-                return Err(format!("{name} = {v} must be finite and ≥ 0"));
-            }
-        }
+        ])?;
         if self.mu_kinetic >= self.mu_static {
             return Err("mu_kinetic must be < mu_static".into());
         }

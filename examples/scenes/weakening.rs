@@ -30,7 +30,8 @@ use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use plotters::prelude::*;
 
 use crate::charts::{
-    Axis, Frame, LinearFrame, Marker, Swatch, draw_cells, edge, frame as frame_chart, frame_linear,
+    Axis, COLORS, Frame, LinearFrame, Marker, Swatch, draw_cells, edge, frame as frame_chart,
+    frame_linear,
 };
 use crate::checks::Row;
 
@@ -234,12 +235,7 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
     let csv_path = out.join("F7-mean-error.csv");
     std::fs::write(&csv_path, csv).map_err(|e| format!("{}: {e}", csv_path.display()))?;
     let svg = out.join("F7-mean-error.svg");
-    let colors = [
-        RGBColor(31, 119, 180),
-        RGBColor(255, 127, 14),
-        RGBColor(44, 160, 44),
-        RGBColor(214, 39, 40),
-    ];
+    let colors = &COLORS[..4];
     let mut legend: Vec<(Swatch, String)> = series
         .iter()
         .enumerate()
@@ -269,14 +265,8 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
     }
     let frame = Frame {
         title: "F7: error of the mean friction against the increment r",
-        x: Axis {
-            range: (0.008, 1.25),
-            title: "increment r = Δγ/γ_crit (–)".into(),
-        },
-        y: Axis {
-            range: (1e-17, 10.0),
-            title: "|mean τ − μ(v)p| / μ(v)p (–)".into(),
-        },
+        x: Axis::new((0.008, 1.25), "increment r = Δγ/γ_crit (–)"),
+        y: Axis::new((1e-17, 10.0), "|mean τ − μ(v)p| / μ(v)p (–)"),
         top: None,
         legend,
         notes,
@@ -408,7 +398,7 @@ fn map_chart(
 ) -> Result<(), String> {
     let (x0, x1) = (edge(rs, 0, false), edge(rs, rs.len() - 1, true));
     let (y0, y1) = (edge(xs, 0, false), edge(xs, xs.len() - 1, true));
-    let (settle, cycle) = (RGBColor(44, 160, 44), RGBColor(214, 39, 40));
+    let (settle, cycle) = (COLORS[2], COLORS[3]);
     // The cells' colours at 60 % over white, as drawn.
     let pale = |c: RGBColor| {
         let m = |v: u8| (0.6 * f64::from(v) + 0.4 * 255.0).round() as u8;
@@ -433,14 +423,8 @@ fn map_chart(
     ));
     let frame = Frame {
         title: &format!("F7: steady sliding under weakening, {}", f.name()),
-        x: Axis {
-            range: (x0, x1),
-            title: "increment r = Δγ/γ_crit (–)".into(),
-        },
-        y: Axis {
-            range: (y0, y1),
-            title: "x = d_c·v (–)".into(),
-        },
+        x: Axis::new((x0, x1), "increment r = Δγ/γ_crit (–)"),
+        y: Axis::new((y0, y1), "x = d_c·v (–)"),
         top: None,
         legend,
         notes: vec![
@@ -679,71 +663,64 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
         reference_dt,
         reference.x.clone(),
     )];
-    for dt in [0.05, 0.02, 0.01] {
-        for tangent in [Tangent::Exact, Tangent::Bounded] {
-            let run = b.run(dt, t_end, tangent);
-            let (xmax, xmin, period, stuck) = cycle_measures(&run, dt);
-            let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
-            onset_means.push((dt, tangent, omean));
-            let _ = writeln!(
-                csv,
-                "{dt},{tangent:?},{xmax:e},{xmin:e},{period:e},{stuck:e},{mean},{max},{omean},{omax},{}",
-                run.failed
-            );
-            let _ = writeln!(
-                table,
-                "| {dt} | {tangent:?} | {:+.4} | {:+.4} | {:+.3} | {mean:.2} | {max} | {omean:.2} | {omax} | {} |",
-                xmax - rmax,
-                xmin - rmin,
-                period - rperiod,
-                run.failed
-            );
-            if tangent == Tangent::Exact {
-                let case = format!("Δt = {dt}, exact tangent");
-                if dt <= 0.02 {
-                    rows.push(row(
-                        case.clone(),
-                        "Newton: unconverged steps",
-                        0.0,
-                        run.failed as f64,
-                        0.0,
-                    ));
-                    // Coarse steps keep the stick-slip cycle of the fine reference.
-                    rows.push(row(
-                        case.clone(),
-                        "x_max against the reference, over A",
-                        0.0,
-                        (xmax - rmax) / amplitude,
-                        0.05,
-                    ));
-                    rows.push(row(
-                        case.clone(),
-                        "x_min against the reference, over A",
-                        0.0,
-                        (xmin - rmin) / amplitude,
-                        0.1,
-                    ));
-                    rows.push(row(
-                        case,
-                        "period against the reference, relative",
-                        0.0,
-                        (period - rperiod) / rperiod,
-                        0.05,
-                    ));
-                }
-                traces.push((format!("Δt = {dt}"), dt, run.x.clone()));
+    for (dt, tangent) in step_grid() {
+        let run = b.run(dt, t_end, tangent);
+        let (xmax, xmin, period, stuck) = cycle_measures(&run, dt);
+        let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
+        onset_means.push((dt, tangent, omean));
+        let _ = writeln!(
+            csv,
+            "{dt},{tangent:?},{xmax:e},{xmin:e},{period:e},{stuck:e},{mean},{max},{omean},{omax},{}",
+            run.failed
+        );
+        let _ = writeln!(
+            table,
+            "| {dt} | {tangent:?} | {:+.4} | {:+.4} | {:+.3} | {mean:.2} | {max} | {omean:.2} | {omax} | {} |",
+            xmax - rmax,
+            xmin - rmin,
+            period - rperiod,
+            run.failed
+        );
+        if tangent == Tangent::Exact {
+            let case = format!("Δt = {dt}, exact tangent");
+            if dt <= 0.02 {
+                rows.push(row(
+                    case.clone(),
+                    "Newton: unconverged steps",
+                    0.0,
+                    run.failed as f64,
+                    0.0,
+                ));
+                // Coarse steps keep the stick-slip cycle of the fine reference.
+                rows.push(row(
+                    case.clone(),
+                    "x_max against the reference, over A",
+                    0.0,
+                    (xmax - rmax) / amplitude,
+                    0.05,
+                ));
+                rows.push(row(
+                    case.clone(),
+                    "x_min against the reference, over A",
+                    0.0,
+                    (xmin - rmin) / amplitude,
+                    0.1,
+                ));
+                rows.push(row(
+                    case,
+                    "period against the reference, relative",
+                    0.0,
+                    (period - rperiod) / rperiod,
+                    0.05,
+                ));
             }
+            traces.push((format!("Δt = {dt}"), dt, run.x.clone()));
         }
     }
     let csv_path = out.join("F7-belt.csv");
     std::fs::write(&csv_path, csv).map_err(|e| format!("{}: {e}", csv_path.display()))?;
     let svg = out.join("F7-belt.svg");
-    let colors = [
-        BLACK,
-        RGBColor(31, 119, 180),
-        RGBColor(255, 127, 14),
-        RGBColor(44, 160, 44),
-    ];
+    let colors = [BLACK, COLORS[0], COLORS[1], COLORS[2]];
     let legend = traces
         .iter()
         .enumerate()
@@ -801,27 +778,25 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
         adhesive_vhalf: Some(0.005),
         ..b
     };
-    for dt in [0.05, 0.02, 0.01] {
-        for tangent in [Tangent::Exact, Tangent::Bounded] {
-            let run = a.run(dt, t_end, tangent);
-            let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
-            adhesive_means.push((dt, tangent, omean));
-            let _ = writeln!(
-                table,
-                "| {dt} | {tangent:?} | {mean:.2} | {max} | {omean:.2} | {omax} | {} |",
-                run.failed
-            );
-            // Measured: 2 steps of 2000 at Δt = 0.02 (slip → stick, not onsets) and 9 at 0.05 do
-            // not converge in 50 iterations (a host cuts back there); claimed from 0.01 down.
-            if tangent == Tangent::Exact && dt <= 0.01 {
-                rows.push(row(
-                    format!("adhesive v_½ = 0.005, Δt = {dt}, exact tangent"),
-                    "Newton: unconverged steps",
-                    0.0,
-                    run.failed as f64,
-                    0.0,
-                ));
-            }
+    for (dt, tangent) in step_grid() {
+        let run = a.run(dt, t_end, tangent);
+        let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
+        adhesive_means.push((dt, tangent, omean));
+        let _ = writeln!(
+            table,
+            "| {dt} | {tangent:?} | {mean:.2} | {max} | {omean:.2} | {omax} | {} |",
+            run.failed
+        );
+        // Measured: 2 steps of 2000 at Δt = 0.02 (slip → stick, not onsets) and 9 at 0.05 do
+        // not converge in 50 iterations (a host cuts back there); claimed from 0.01 down.
+        if tangent == Tangent::Exact && dt <= 0.01 {
+            rows.push(row(
+                format!("adhesive v_½ = 0.005, Δt = {dt}, exact tangent"),
+                "Newton: unconverged steps",
+                0.0,
+                run.failed as f64,
+                0.0,
+            ));
         }
     }
     for (law, means) in [("decay", &onset_means), ("adhesive", &adhesive_means)] {
@@ -842,6 +817,14 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
         }
     }
     Ok((vec![csv_path, svg], table))
+}
+
+/// The steps of the F7 Newton tables, in table order: Δt = 0.05, 0.02, 0.01, each with the exact
+/// and then the bounded tangent.
+fn step_grid() -> impl Iterator<Item = (f64, Tangent)> {
+    [0.05, 0.02, 0.01]
+        .into_iter()
+        .flat_map(|dt| [Tangent::Exact, Tangent::Bounded].map(|tangent| (dt, tangent)))
 }
 
 /// Runs F7: check rows, and the charts and CSV written to `out`. Returns the rows, the files

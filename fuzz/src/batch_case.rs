@@ -8,12 +8,11 @@
 use std::ffi::c_int;
 
 use super::bytes::{Bytes, bits};
-use super::contract::last_error;
+use super::contract::{last_error, unwritten};
 use super::fric_case::{FricCase, FricOutputs};
 use interfacial::abi::{IflStatus, ifl_clear_error, ifl_fric_batch};
 
-/// Written into every output before the call, to see what the call wrote.
-pub const UNWRITTEN: f64 = -7.77e77;
+pub use super::contract::UNWRITTEN;
 
 /// Every `ifl_fric_batch` argument; arrays in the batch layout with exactly the needed length.
 #[derive(Clone, Debug)]
@@ -155,7 +154,7 @@ impl BatchCase {
 
     /// Calls `ifl_fric_batch` (status, message, what it wrote).
     pub fn call(&self) -> BatchOutputs {
-        let (n, s) = (self.n(), self.s());
+        let n = self.n();
         let c = self.clone();
         let mut out = BatchOutputs {
             lm: c.lm.clone(),
@@ -170,7 +169,6 @@ impl BatchCase {
             status: 0,
             message: String::new(),
         };
-        let _ = s;
         let req = |k: usize| self.null_required == Some(k);
         let m = |k: usize, p: *mut f64| if req(k) { std::ptr::null_mut() } else { p };
         let r = |k: usize, p: *const f64| if req(k) { std::ptr::null() } else { p };
@@ -268,7 +266,7 @@ impl BatchCase {
             && bits(&out.statev) == bits(&self.statev)
             && [&out.ddtddg, &out.ddtddp, &out.dslip, &out.sed, &out.sfd]
                 .iter()
-                .all(|v| v.iter().all(|x| x.to_bits() == UNWRITTEN.to_bits()));
+                .all(|v| v.iter().all(unwritten));
         let ok = out.status == IflStatus::Ok as i32;
         if ok != out.message.is_empty() {
             return Err(format!(

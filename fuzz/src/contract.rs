@@ -1,13 +1,53 @@
 //! What every entry point owes its host, checked the same way by every case: the message of a
-//! call ([`last_error`]), the input arguments left alone ([`input_bits`]), and for the Abaqus
-//! routines that refuse by lowering `PNEWDT` (FRIC, UINTER) the refusal itself
-//! ([`pnewdt_refusal`]).
+//! call ([`last_error`]), the input arguments left alone ([`input_bits`], [`Names`]), what it
+//! wrote ([`UNWRITTEN`]), and for the Abaqus routines that refuse by lowering `PNEWDT` (FRIC,
+//! UINTER) the refusal itself ([`pnewdt_refusal`]).
 
-use std::ffi::CStr;
+use std::ffi::{CStr, c_char};
 
 use interfacial::abi::ifl_last_error;
 
 use super::bytes::bits;
+
+/// Written into every output before the call, to see what the call wrote.
+pub const UNWRITTEN: f64 = -7.77e77;
+
+/// Whether `x` is still [`UNWRITTEN`] (bit for bit).
+pub fn unwritten(x: &f64) -> bool {
+    x.to_bits() == UNWRITTEN.to_bits()
+}
+
+/// The three `CHARACTER` arguments of a call (`CINAME`, `SLNAME`, `MSNAME`; `surfInt`,
+/// `surfSec`, `surfMain`): the bytes the host passes, no NUL, each hidden length its length.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Names {
+    pub interaction: Vec<u8>,
+    pub secondary: Vec<u8>,
+    pub main: Vec<u8>,
+}
+
+impl Names {
+    /// `interaction` blank-padded to 80 bytes and blank surface names, as a `CHARACTER*80`.
+    pub fn padded(interaction: &str) -> Names {
+        let mut name = interaction.as_bytes().to_vec();
+        name.resize(80, b' ');
+        Names {
+            interaction: name,
+            secondary: vec![b' '; 80],
+            main: vec![b' '; 80],
+        }
+    }
+
+    /// The three pointers, in argument order.
+    pub fn pointers(&self) -> [*const c_char; 3] {
+        [&self.interaction, &self.secondary, &self.main].map(|n| n.as_ptr().cast::<c_char>())
+    }
+
+    /// The three hidden lengths, in argument order.
+    pub fn lengths(&self) -> [usize; 3] {
+        [&self.interaction, &self.secondary, &self.main].map(Vec::len)
+    }
+}
 
 /// The library's last message on this thread ("" when the last call succeeded).
 pub fn last_error() -> String {

@@ -4,14 +4,11 @@
 //!
 //! Shared by the `fric` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
 
-use std::ffi::c_char;
-
 use super::bytes::{Bytes, bits, len};
-use super::contract::{input_bits, last_error, pnewdt_refusal};
+use super::contract::{Names, input_bits, last_error, pnewdt_refusal, unwritten};
 use interfacial::abi::{fric_, ifl_clear_error};
 
-/// Written into every output before the call, to see what the call wrote.
-pub const UNWRITTEN: f64 = -7.77e77;
+pub use super::contract::UNWRITTEN;
 
 /// Every `fric_` argument. Arrays have exactly their declared lengths.
 #[derive(Clone, Debug)]
@@ -58,10 +55,8 @@ pub struct FricCase {
     pub temp: Vec<f64>,
     /// `PREDEF(2,NPRED)`.
     pub predef: Vec<f64>,
-    /// `CINAME`, `SLNAME`, `MSNAME`: the hidden lengths are these lengths.
-    pub ciname: Vec<u8>,
-    pub slname: Vec<u8>,
-    pub msname: Vec<u8>,
+    /// `CINAME`, `SLNAME`, `MSNAME`.
+    pub names: Names,
     /// Pass NULL for the optional outputs `DSLIP`, `SED`, `SFD`, `DDTDDT`.
     pub null_optional: bool,
 }
@@ -71,8 +66,6 @@ impl FricCase {
     /// zero except `DTIME = CHRLNGTH = 1`, `PNEWDT = 1e36`, interaction name `"SI1"` (80 bytes).
     pub fn coulomb(nfdir: i32, props: &[f64]) -> Self {
         let n = len(nfdir);
-        let mut ciname = b"SI1".to_vec();
-        ciname.resize(80, b' ');
         FricCase {
             lm: 0,
             nfdir,
@@ -104,9 +97,7 @@ impl FricCase {
             drot: vec![1.0, 0.0, 0.0, 1.0],
             temp: vec![20.0; 2],
             predef: vec![0.0; 2],
-            ciname,
-            slname: vec![b' '; 80],
-            msname: vec![b' '; 80],
+            names: Names::padded("SI1"),
             null_optional: false,
         }
     }
@@ -192,9 +183,11 @@ impl FricCase {
             drot: b.reals(4),
             temp: b.reals(2),
             predef: b.reals(2 * len(npred)),
-            ciname: name(&mut b),
-            slname: name(&mut b),
-            msname: name(&mut b),
+            names: Names {
+                interaction: name(&mut b),
+                secondary: name(&mut b),
+                main: name(&mut b),
+            },
             null_optional: flags & 0x80 != 0,
         }
     }
@@ -219,6 +212,8 @@ impl FricCase {
         };
         let opt = |p: *mut f64, null: bool| if null { std::ptr::null_mut() } else { p };
         let null = c.null_optional;
+        let [ci, sl, ms] = c.names.pointers();
+        let [ci_len, sl_len, ms_len] = c.names.lengths();
         ifl_clear_error();
         // SAFETY: every array has exactly the length the call declares (NFDIR, NFDIR², 2·NFDIR,
         // NSTATV, NPROPS, MCRD, 2·NPRED, the hidden name lengths); scalars are locals.
@@ -245,9 +240,9 @@ impl FricCase {
                 c.time.as_ptr(),
                 &c.dtime,
                 &c.noel,
-                c.ciname.as_ptr().cast::<c_char>(),
-                c.slname.as_ptr().cast::<c_char>(),
-                c.msname.as_ptr().cast::<c_char>(),
+                ci,
+                sl,
+                ms,
                 &c.npt,
                 &c.node,
                 &c.npatch,
@@ -263,9 +258,9 @@ impl FricCase {
                 &c.chrlngth,
                 c.props.as_ptr(),
                 &c.nprops,
-                c.ciname.len(),
-                c.slname.len(),
-                c.msname.len(),
+                ci_len,
+                sl_len,
+                ms_len,
             );
             out.message = last_error();
         }
@@ -444,7 +439,7 @@ impl FricOutputs {
         all.chain([&self.sed, &self.sfd])
             .chain(&self.ddtddt)
             .copied()
-            .filter(|x| x.to_bits() != UNWRITTEN.to_bits())
+            .filter(|x| !unwritten(x))
             .collect()
     }
 }
@@ -466,9 +461,5 @@ fn same(a: &FricCase, b: &FricCase) -> bool {
             c.npatch,
         ]
     };
-    reals(a) == reals(b)
-        && ints(a) == ints(b)
-        && a.ciname == b.ciname
-        && a.slname == b.slname
-        && a.msname == b.msname
+    reals(a) == reals(b) && ints(a) == ints(b) && a.names == b.names
 }

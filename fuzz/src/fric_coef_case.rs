@@ -5,14 +5,13 @@
 //! Shared by the `fric_coef` fuzz target and `tests/fuzz_regressions_coef.rs` (included there by
 //! path).
 
-use std::ffi::{c_char, c_int};
+use std::ffi::c_int;
 
 use super::bytes::{Bytes, bits, len};
-use super::contract::{input_bits, last_error};
+use super::contract::{Names, input_bits, last_error, unwritten};
 use interfacial::abi::{IflStatus, fric_coef_, ifl_clear_error, ifl_forced_sliding};
 
-/// Written into every output before the call, to see what the call wrote.
-pub const UNWRITTEN: f64 = -7.77e77;
+pub use super::contract::UNWRITTEN;
 
 /// Derivative slots per point and direction: `fCoefDeriv(nBlock,20,2)`.
 const NDERIV: usize = 20;
@@ -83,9 +82,8 @@ pub struct FricCoefCase {
     pub temp: Vec<f64>,
     /// `fieldAvg(nBlock,nFields)`.
     pub field: Vec<f64>,
-    pub surf_int: Vec<u8>,
-    pub surf_sec: Vec<u8>,
-    pub surf_main: Vec<u8>,
+    /// `surfInt`, `surfSec`, `surfMain`.
+    pub names: Names,
     pub null: CoefNull,
 }
 
@@ -117,8 +115,6 @@ impl FricCoefCase {
         let n = rate.len();
         let mut slip = vec![0.0; 6 * n];
         slip[..n].copy_from_slice(rate);
-        let mut surf_int = b"SI1".to_vec();
-        surf_int.resize(80, b' ');
         FricCoefCase {
             nblock: i32::try_from(n).unwrap_or(i32::MAX),
             nprops: i32::try_from(props.len()).unwrap_or(i32::MAX),
@@ -131,9 +127,7 @@ impl FricCoefCase {
             pressure: pressure.to_vec(),
             temp: temp.to_vec(),
             field: Vec::new(),
-            surf_int,
-            surf_sec: vec![b' '; 80],
-            surf_main: vec![b' '; 80],
+            names: Names::padded("SI1"),
             null: CoefNull::None,
         }
     }
@@ -179,9 +173,11 @@ impl FricCoefCase {
             pressure: b.reals(n),
             temp: b.reals(n),
             field: b.reals(n * len(nfields)),
-            surf_int: b.name(),
-            surf_sec: b.name(),
-            surf_main: b.name(),
+            names: Names {
+                interaction: b.name(),
+                secondary: b.name(),
+                main: b.name(),
+            },
             null,
         }
     }
@@ -211,6 +207,8 @@ impl FricCoefCase {
         let io = |p: *const c_int, which: CoefNull| {
             if null == which { std::ptr::null() } else { p }
         };
+        let [ci, sl, ms] = c.names.pointers();
+        let [ci_len, sl_len, ms_len] = c.names.lengths();
         ifl_clear_error();
         // SAFETY: every array has exactly the length the call declares (2·nBlock, 40·nBlock,
         // nProps, 6·nBlock, nBlock, nBlock, nBlock·nFields, the hidden name lengths); scalars
@@ -225,17 +223,17 @@ impl FricCoefCase {
                 &c.nfields,
                 c.idata.as_ptr(),
                 c.rdata.as_ptr(),
-                c.surf_int.as_ptr().cast::<c_char>(),
-                c.surf_sec.as_ptr().cast::<c_char>(),
-                c.surf_main.as_ptr().cast::<c_char>(),
+                ci,
+                sl,
+                ms,
                 ro(c.props.as_ptr(), CoefNull::Props),
                 ro(c.slip.as_ptr(), CoefNull::SlipData),
                 ro(c.pressure.as_ptr(), CoefNull::Pressure),
                 ro(c.temp.as_ptr(), CoefNull::TempAvg),
                 c.field.as_ptr(),
-                c.surf_int.len(),
-                c.surf_sec.len(),
-                c.surf_main.len(),
+                ci_len,
+                sl_len,
+                ms_len,
             );
             out.message = last_error();
         }
@@ -248,7 +246,7 @@ impl FricCoefCase {
 
     fn check_outputs(&self, out: &CoefOutputs) -> Result<(), String> {
         let n = len(self.nblock);
-        let written = |v: &[f64]| v.iter().any(|x| x.to_bits() != UNWRITTEN.to_bits());
+        let written = |v: &[f64]| !v.iter().all(unwritten);
         let all = out.coef.iter().chain(&out.deriv);
         if !out.message.is_empty() {
             // Refused: one message naming the routine; the block zeroed when nBlock is
@@ -406,7 +404,7 @@ fn same_coef(a: &FricCoefCase, b: &FricCoefCase) -> bool {
     reals(a) == reals(b)
         && [a.nblock, a.nprops, a.ntemp, a.nfields] == [b.nblock, b.nprops, b.ntemp, b.nfields]
         && a.idata == b.idata
-        && (&a.surf_int, &a.surf_sec, &a.surf_main) == (&b.surf_int, &b.surf_sec, &b.surf_main)
+        && a.names == b.names
 }
 
 /// Which pointer argument of `ifl_forced_sliding` is passed as NULL.
@@ -548,10 +546,7 @@ impl ForcedSlidingCase {
             return Err(format!("a NULL {:?} was accepted", self.null));
         }
         for (v, which) in outputs {
-            if let Some(x) = v
-                .iter()
-                .find(|x| !x.is_finite() || x.to_bits() == UNWRITTEN.to_bits())
-            {
+            if let Some(x) = v.iter().find(|x| !x.is_finite() || unwritten(x)) {
                 return Err(format!("success but {which:?} holds {x}"));
             }
         }

@@ -3,57 +3,16 @@
 //!
 //! Shared by the `gapcon` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
 
-use std::ffi::{CString, c_char};
+use std::ffi::CString;
 use std::sync::Once;
 
-use super::bytes::Bytes;
-use super::contract::last_error;
+use super::bytes::{Bytes, bits};
+use super::contract::{Names, UNWRITTEN, last_error};
 use interfacial::abi::{IflConductance, IflStatus, gapcon_, ifl_clear_error, ifl_gap_conductance};
 
 /// The configuration every `gapcon_` case runs against: one interaction per law, radiation in
 /// kelvin and in °C, and no `"*"` entry, so unknown names take the error path.
-pub const CONFIG: &str = r#"
-[interactions.CONST.conductance]
-law = "constant"
-k = 4500.0
-
-[interactions.PTAB.conductance]
-law = "pressure-table"
-table = [[0.0, 1.0], [1e-300, 2.0], [100.0, 3.0], [1e300, 4.0]]
-
-[interactions.CTAB.conductance]
-law = "clearance-table"
-table = [[0.0, 10.0, 0.0], [1.0, 5.0, 0.0], [0.0, 20.0, 500.0], [1.0, 1.0, 500.0]]
-
-[interactions.GAS.conductance]
-law = "gas-gap"
-k_gas = 0.025
-g0 = 1e-6
-min_gap = 0.0
-
-[interactions.CMY.conductance]
-law = "cmy"
-k_s = 20.0
-m = 0.1
-sigma = 1e-6
-H_c = 3e9
-
-[interactions.RADK.radiation]
-view_factor = 0.8
-stefan_boltzmann = 5.670374419e-8
-absolute_zero = 0.0
-
-[interactions.BOTH.conductance]
-law = "gas-gap"
-k_gas = 0.025
-g0 = 0.0
-min_gap = 1e-9
-
-[interactions.BOTH.radiation]
-view_factor = 1.0
-stefan_boltzmann = 5.670374419e-8
-absolute_zero = -273.15
-"#;
+pub const CONFIG: &str = include_str!("../gapcon.toml");
 
 /// The configured names (and one that is not).
 pub const NAMES: [&str; 8] = [
@@ -88,11 +47,8 @@ pub struct GapconCase {
     pub d: [f64; 2],
     /// `TEMP(2)`.
     pub temp: [f64; 2],
-    /// `CINAME`; the hidden length is its length.
-    pub ciname: Vec<u8>,
-    /// `SLNAME`, `MSNAME`.
-    pub slname: Vec<u8>,
-    pub msname: Vec<u8>,
+    /// `CINAME`, `SLNAME`, `MSNAME`.
+    pub names: Names,
     /// `FLOWM(2)`, `PREDEF(2,NPRED)`, `TIME(2)`, `COORDS(3)`: never read.
     pub flowm: Vec<f64>,
     pub predef: Vec<f64>,
@@ -125,9 +81,11 @@ impl GapconCase {
         GapconCase {
             d: [b.real(), b.real()],
             temp: [b.real(), b.real()],
-            ciname,
-            slname: vec![b' '; 80],
-            msname: vec![b' '; usize::from(b.u8() % 81)],
+            names: Names {
+                interaction: ciname,
+                secondary: vec![b' '; 80],
+                main: vec![b' '; usize::from(b.u8() % 81)],
+            },
             flowm: vec![f64::NAN; 2],
             predef: vec![f64::NAN; 2 * usize::try_from(npred).unwrap_or(0)],
             time: vec![f64::NAN; 2],
@@ -142,10 +100,11 @@ impl GapconCase {
     /// GAPCON on failure; `AK(2..5)` and every input left alone. Returns `AK(1)`.
     pub fn check(&self) -> Result<f64, String> {
         setup();
-        let guard = -7.77e77;
-        let mut ak = vec![guard; 5];
+        let mut ak = vec![UNWRITTEN; 5];
         let c = self.clone();
         let (kstep, kinc) = (1i32, 1i32);
+        let [ci, sl, ms] = c.names.pointers();
+        let [ci_len, sl_len, ms_len] = c.names.lengths();
         ifl_clear_error();
         // SAFETY: AK(5), D(2), TEMP(2) and the names with their exact hidden lengths; the
         // unread arrays have their declared lengths too.
@@ -157,9 +116,9 @@ impl GapconCase {
                 c.temp.as_ptr(),
                 c.predef.as_ptr(),
                 c.time.as_ptr(),
-                c.ciname.as_ptr().cast::<c_char>(),
-                c.slname.as_ptr().cast::<c_char>(),
-                c.msname.as_ptr().cast::<c_char>(),
+                ci,
+                sl,
+                ms,
                 c.coords.as_ptr(),
                 &c.noel,
                 &c.node,
@@ -169,21 +128,17 @@ impl GapconCase {
                 // AREA, never read (CalculiX's variant only).
                 #[cfg(feature = "calculix")]
                 &f64::NAN,
-                c.ciname.len(),
-                c.slname.len(),
-                c.msname.len(),
+                ci_len,
+                sl_len,
+                ms_len,
             );
             last_error()
         };
-        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-        if bits(&c.d) != bits(&self.d)
-            || bits(&c.temp) != bits(&self.temp)
-            || c.ciname != self.ciname
-            || c.msname != self.msname
+        if bits(&c.d) != bits(&self.d) || bits(&c.temp) != bits(&self.temp) || c.names != self.names
         {
             return Err("an input argument was written".into());
         }
-        if ak[1..].iter().any(|x| *x != guard) {
+        if ak[1..].iter().any(|x| *x != UNWRITTEN) {
             return Err(format!("AK(2..5) written: {ak:?}"));
         }
         let k = ak[0];
@@ -209,29 +164,27 @@ impl GapconCase {
     /// on failure `*out` is zeroed. A NULL `out` is refused without a crash.
     fn check_native(&self, ak1: f64, gapcon_ok: bool) -> Result<(), String> {
         let end = self
-            .ciname
+            .names
+            .interaction
             .iter()
             .rposition(|b| *b != 0 && *b != b' ')
             .map_or(0, |i| i + 1);
-        let core = &self.ciname[..end];
+        let core = &self.names.interaction[..end];
         let Ok(name) = CString::new(core) else {
             return Ok(()); // a NUL inside the name: not expressible as a C string
         };
         let mut out = IflConductance {
-            k: -7.77e77,
+            k: UNWRITTEN,
             ..IflConductance::default()
         };
-        // SAFETY: a NUL-terminated name and a writable IflConductance.
-        let status = unsafe {
-            ifl_gap_conductance(
-                name.as_ptr(),
-                self.d[0],
-                self.d[1],
-                self.temp[0],
-                self.temp[1],
-                &mut out,
-            )
+        let [clearance, pressure] = self.d;
+        let [theta_a, theta_b] = self.temp;
+        // SAFETY: a NUL-terminated name; `out` writable, or NULL (which must be refused with
+        // nothing written).
+        let native = |out: *mut IflConductance| unsafe {
+            ifl_gap_conductance(name.as_ptr(), clearance, pressure, theta_a, theta_b, out)
         };
+        let status = native(&mut out);
         if gapcon_ok {
             if status != IflStatus::Ok || out.k.to_bits() != ak1.to_bits() {
                 return Err(format!(
@@ -255,17 +208,7 @@ impl GapconCase {
                 "gapcon_ refused but ifl_gap_conductance gave {status:?} {out:?}"
             ));
         }
-        // SAFETY: NULL out must be refused, nothing written.
-        let null = unsafe {
-            ifl_gap_conductance(
-                name.as_ptr(),
-                self.d[0],
-                self.d[1],
-                self.temp[0],
-                self.temp[1],
-                std::ptr::null_mut(),
-            )
-        };
+        let null = native(std::ptr::null_mut());
         if null != IflStatus::BadInput {
             return Err(format!("NULL out gave {null:?}"));
         }

@@ -6,15 +6,14 @@
 //! so `PROPS(11) = 1` reaches every conductance law as well as the "no thermal law" refusal.
 //! Shared by the `uinter` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
 
-use std::ffi::{c_char, c_int};
+use std::ffi::c_int;
 
 use super::bytes::{Bytes, bits, len};
-use super::contract::{input_bits, last_error, pnewdt_refusal};
+use super::contract::{Names, input_bits, last_error, pnewdt_refusal, unwritten};
 use super::gapcon_case::NAMES;
 use interfacial::abi::{ifl_clear_error, uinter_};
 
-/// Written into every output before the call, to see what the call wrote.
-pub const UNWRITTEN: f64 = -7.77e77;
+pub use super::contract::UNWRITTEN;
 /// The same, for the integer outputs.
 pub const UNWRITTEN_INT: c_int = -7777;
 
@@ -62,10 +61,8 @@ pub struct UinterCase {
     pub drot: Vec<f64>,
     pub area: f64,
     pub chrlngth: f64,
-    /// `CINAME`, `SLNAME`, `MSNAME`: the hidden lengths are these lengths.
-    pub ciname: Vec<u8>,
-    pub slname: Vec<u8>,
-    pub msname: Vec<u8>,
+    /// `CINAME`, `SLNAME`, `MSNAME`.
+    pub names: Names,
     /// Pass NULL for every optional output (`DVISCOUS`, `DSTRUCTURAL`, `FLUX`, `DDFDDT`,
     /// `DDSDDT`, `DDFDDR`, `SED` … `SCD`, `LSTATE`).
     pub null_optional: bool,
@@ -186,9 +183,11 @@ impl UinterCase {
             drot: b.reals(4),
             area: b.real(),
             chrlngth: b.real(),
-            ciname: name(&mut b, ci),
-            slname: name(&mut b, None),
-            msname: name(&mut b, None),
+            names: Names {
+                interaction: name(&mut b, ci),
+                secondary: name(&mut b, None),
+                main: name(&mut b, None),
+            },
             null_optional: flags & 0x80 != 0,
         }
     }
@@ -223,6 +222,8 @@ impl UinterCase {
         } else {
             &mut out.lstate
         };
+        let [ci, sl, ms] = c.names.pointers();
+        let [ci_len, sl_len, ms_len] = c.names.lengths();
         ifl_clear_error();
         // SAFETY: every array has exactly the length the call declares (NDIR, NDIR², 2, 4,
         // 2·NDIR, NSTATV, 2·NPRED, NPROPS, MCRD, MCRD², the hidden name lengths); scalars are
@@ -253,9 +254,9 @@ impl UinterCase {
                 c.time.as_ptr(),
                 &c.dtime,
                 &c.freqr,
-                c.ciname.as_ptr().cast::<c_char>(),
-                c.slname.as_ptr().cast::<c_char>(),
-                c.msname.as_ptr().cast::<c_char>(),
+                ci,
+                sl,
+                ms,
                 c.props.as_ptr(),
                 c.coords.as_ptr(),
                 c.alocaldir.as_ptr(),
@@ -276,9 +277,9 @@ impl UinterCase {
                 lstate,
                 &mut out.lsdi,
                 &c.lprint,
-                c.ciname.len(),
-                c.slname.len(),
-                c.msname.len(),
+                ci_len,
+                sl_len,
+                ms_len,
             );
             out.message = last_error();
         }
@@ -321,11 +322,7 @@ impl UinterCase {
         if let Some(x) = all.iter().find(|x| !x.is_finite()) {
             return Err(format!("success with a non-finite output {x}: {out:?}"));
         }
-        if out
-            .ddsddr
-            .iter()
-            .any(|x| x.to_bits() == UNWRITTEN.to_bits())
-        {
+        if out.ddsddr.iter().any(unwritten) {
             return Err("DDSDDR not fully written".into());
         }
         if !self.null_optional {
@@ -337,13 +334,8 @@ impl UinterCase {
                 &out.ddsddt,
                 &out.ddfddr,
             ];
-            let unwritten = everything
-                .iter()
-                .any(|v| v.iter().any(|x| x.to_bits() == UNWRITTEN.to_bits()))
-                || out
-                    .energies
-                    .iter()
-                    .any(|x| x.to_bits() == UNWRITTEN.to_bits());
+            let unwritten = everything.iter().any(|v| v.iter().any(unwritten))
+                || out.energies.iter().any(unwritten);
             if unwritten {
                 return Err("an output was left unwritten".into());
             }
@@ -480,7 +472,7 @@ impl UinterOutputs {
             .flatten()
             .chain(&self.energies)
             .copied()
-            .filter(|x| x.to_bits() != UNWRITTEN.to_bits())
+            .filter(|x| !unwritten(x))
             .collect()
     }
 }
@@ -525,9 +517,5 @@ fn same(a: &UinterCase, b: &UinterCase) -> bool {
             c.lsdi,
         ]
     };
-    reals(a) == reals(b)
-        && ints(a) == ints(b)
-        && a.ciname == b.ciname
-        && a.slname == b.slname
-        && a.msname == b.msname
+    reals(a) == reals(b) && ints(a) == ints(b) && a.names == b.names
 }

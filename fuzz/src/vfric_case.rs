@@ -8,11 +8,11 @@
 use std::ffi::{c_char, c_int};
 
 use super::bytes::{Bytes, bits, len};
-use super::contract::last_error;
+use super::contract::{last_error, unwritten};
 use interfacial::abi::{ifl_clear_error, vfric_};
 
 /// Written into every output entry and guard before the call, to see what the call wrote.
-pub const UNWRITTEN: f64 = -7.77e77;
+pub use super::contract::UNWRITTEN;
 
 /// Guard entries on each side of `fTangential` and `statev`.
 pub const GUARD: usize = 4;
@@ -373,7 +373,7 @@ impl VfricCase {
             || out.statev[..GUARD]
                 .iter()
                 .chain(&out.statev[GUARD + 2 * n..])
-                .any(|x| x.to_bits() != UNWRITTEN.to_bits())
+                .any(|x| !unwritten(x))
         {
             return Err("statev (or around it) was written".into());
         }
@@ -381,7 +381,7 @@ impl VfricCase {
         if t[..GUARD]
             .iter()
             .chain(&t[t.len() - GUARD..])
-            .any(|x| x.to_bits() != UNWRITTEN.to_bits())
+            .any(|x| !unwritten(x))
         {
             return Err("written outside fTangential(nFricDir, nContact)".into());
         }
@@ -478,7 +478,6 @@ impl VfricCase {
         let n = len(self.ncontact);
         let nf = len(self.nfricdir);
         let block = &out.tangential[GUARD..GUARD + nf * n];
-        let unwritten = |x: &f64| x.to_bits() == UNWRITTEN.to_bits();
         let names = out.message.starts_with("interfacial: VFRIC: interaction '");
         match self.expect() {
             Expect::RefusedUnwritten | Expect::RefusedZeroed => {
