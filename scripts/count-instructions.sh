@@ -17,7 +17,7 @@
 # Rows: bench/bench_fric.f90 cases 1..4 (fric_ inclusive, and the hand-written FRICREF of the
 # same runs); bench/bench_adhesive.f90 laws 2..5
 # (whole program); uinter_ inclusive (bench_adhesive law 5); ifl_pore_pressure inclusive
-# (bench/bench_pore_pressure.c). Each is the difference of a run with more repeats and one with
+# (bench/bench_pore_pressure.c); the rate law's rows of scripts/bench-rate-count.sh. Each is the difference of a run with more repeats and one with
 # fewer, divided by the extra calls, so start-up and set-up cancel. Builds the library (cargo,
 # release) and the benchmarks in $BENCH_BUILD_DIR (default /tmp/build-count). Needs gfortran,
 # cc, valgrind.
@@ -78,6 +78,13 @@ rows+=("| uinter_ (bench_adhesive law 5) | $(per_call "$(inclusive a5.1 uinter_)
 cg p.20 ./bench_pore_pressure 20 1
 cg p.40 ./bench_pore_pressure 40 1
 rows+=("| ifl_pore_pressure (bench_pore_pressure) | $(per_call "$(inclusive p.20 ifl_pore_pressure)" "$(inclusive p.40 ifl_pore_pressure)" 20480) |")
+# The rate law's rows, from scripts/bench-rate-count.sh (which fails when a rate row reaches 3x
+# constant mu; set -e makes that a failure here too).
+rate="$(BENCH_BUILD_DIR="$build/rate" "$root/scripts/bench-rate-count.sh" 2>/dev/null)"
+while IFS='|' read -r _ name count _; do
+  name="$(sed 's/^ *//; s/ *$//' <<<"$name")"
+  rows+=("| bench_rate: $name | $(tr -d ' ' <<<"$count") |")
+done < <(tail -n +3 <<<"$rate")
 
 toolchain="$(rustc --version), $(gfortran --version | head -n1), $("$cc" --version | head -n1)"
 table() {

@@ -206,7 +206,7 @@ impl CoulombState {
     /// STATEV, which the next increment refuses as corrupted (fuzz target `fric`). `slip` and
     /// `rate_slip` are finite and ≥ 0 (the callers test their outputs first), so `f64::min`
     /// with the constant f64::MAX is one `minsd`; it counted 5 instructions per `fric_` call
-    /// fewer than the compare-and-select used before (scripts/bench-fric-count.sh).
+    /// fewer than the compare-and-select used before (scripts/count-instructions.sh).
     #[inline(always)]
     #[must_use]
     pub(crate) fn after_motion(&self, slip: f64, rate_slip: f64, rate_dtime: f64) -> Self {
