@@ -7,7 +7,8 @@
 #   scripts/count-instructions.sh           print the table
 #   scripts/count-instructions.sh --check   fail (exit 1) when a row differs from the committed
 #                                           table by more than 2 % (either way: a slower call, or
-#                                           a figure the docs quote that the code no longer has)
+#                                           a figure the docs quote that the code no longer has;
+#                                           10 % on another CPU vendor than the table's)
 #   scripts/count-instructions.sh --write   rewrite the committed table from this count
 #
 # Counts depend on the compilers (rustc, gfortran, cc): the table records the rustc it was
@@ -87,8 +88,9 @@ while IFS='|' read -r _ name count _; do
 done < <(tail -n +3 <<<"$rate")
 
 toolchain="$(rustc --version), $(gfortran --version | head -n1), $("$cc" --version | head -n1)"
+vendor="$(sed -n 's/^vendor_id[[:space:]]*:[[:space:]]*//p' /proc/cpuinfo | head -n1)"
 table() {
-  echo "Counted with $toolchain by \`scripts/count-instructions.sh --write\`."
+  echo "Counted with $toolchain on a ${vendor:-unknown} CPU by \`scripts/count-instructions.sh --write\`."
   echo
   echo "| call | instructions per call |"
   echo "|---|---:|"
@@ -111,6 +113,13 @@ print) table ;;
   if ! grep -qF "$(rustc --version)" <<<"$committed"; then
     echo "count-instructions.sh: not checked: the table in docs/performance.md was counted with another rustc than $(rustc --version)" >&2
     exit 0
+  fi
+  # The C library picks some routines (exp, memcpy) by the processor: on another vendor's CPU
+  # than the table's, a row may differ by that alone, so the check widens to 10 % there (still
+  # a failure for a real regression of that size).
+  if [ -n "$vendor" ] && ! grep -qF "on a $vendor CPU" <<<"$committed"; then
+    tolerance_percent=10
+    echo "count-instructions.sh: the table was counted on another vendor's CPU than this $vendor: checking within $tolerance_percent %" >&2
   fi
   status=0
   for row in "${rows[@]}"; do
