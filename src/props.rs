@@ -532,8 +532,16 @@ pub fn coulomb_extended_with_table(
                     "PROPS(9) = μ_k = {mu_k} must be finite and ≥ 0"
                 )));
             }
+            // μ_k/μ_s overflows when μ_s is tiny (subnormal): the cause is the pair, not d_c.
+            let ratio = mu_k / mu;
+            if !ratio.is_finite() {
+                return Err(LawError::Parameter(format!(
+                    "PROPS(9) = μ_k = {mu_k} over PROPS(2) = μ_s = {mu:e}: μ_k/μ_s = {ratio} \
+                     overflows; μ_s is too small for the decay law"
+                )));
+            }
             coefficient = coefficient
-                .with_exponential_decay(mu_k / mu, decay)
+                .with_exponential_decay(ratio, decay)
                 .map_err(|e| in_props(10, e))?;
         }
         2.0 => {
@@ -1104,6 +1112,11 @@ mod tests {
             (
                 &[1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.1, 1.0][..],
                 "PROPS(2)",
+            ),
+            // μ_k/μ_s overflows with a subnormal μ_s: named by the pair, not by d_c.
+            (
+                &[1.0, 1e-310, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.1, 1.0][..],
+                "PROPS(9) = μ_k = 0.1 over PROPS(2) = μ_s = 1e-310: μ_k/μ_s = inf overflows",
             ),
             (
                 &[1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -5.0][..],
