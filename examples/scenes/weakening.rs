@@ -208,8 +208,7 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
             series.push((x, f, pts));
         }
     }
-    // The earlier formulation on the issue's case (x = 3, r = 0.25) misses by more than 1 %,
-    // and at x = 1 it misses for every r below its stability bound 2c/e.
+    // The earlier formulation on the issue's case (x = 3, r = 0.25) misses by more than 1 %.
     let issue = mean_error(Formulation::RateFree, 3.0, 0.25)?;
     rows.push(row(
         "earlier, d_c·v = 3, r = 0.25 (the issue's case)".into(),
@@ -218,20 +217,36 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
         f64::from(u8::from(issue > 0.01)),
         0.0,
     ));
-    let (bound, _) = rate_free_bounds(1.0);
-    let misses = series
-        .iter()
-        .filter(|(x, f, _)| *x == 1.0 && *f == Formulation::RateFree)
-        .flat_map(|(_, _, pts)| pts.iter())
-        .filter(|(r, e)| *r < bound / 1.5 && *e <= 0.01)
-        .count();
-    rows.push(row(
-        "earlier, d_c·v = 1, r < (2c/e)/1.5".into(),
-        "earlier formulation: increments below its bound that meet 1 %",
-        0.0,
-        misses as f64,
-        0.0,
-    ));
+    // The earlier formulation against its closed-form bound r*(x) = max(2c·x·e^(−x),
+    // c·(1 − e^(−x))) (docs/props.md): off by more than 1 % at every r below r*/1.2, within 1 %
+    // at every r above 1.2·r* (the margins keep the grid's neighbours of r* out of the test).
+    let bound_of = |x: f64| {
+        let (slip, stick) = rate_free_bounds(x);
+        slip.max(stick)
+    };
+    for x in [1.0, 3.0] {
+        let bound = bound_of(x);
+        let pts = series
+            .iter()
+            .filter(|(sx, f, _)| *sx == x && *f == Formulation::RateFree)
+            .flat_map(|(_, _, pts)| pts.iter());
+        let (below, above): (Vec<_>, Vec<_>) = pts.partition(|(r, _)| *r < bound);
+        let wrong = below
+            .iter()
+            .filter(|(r, e)| *r < bound / 1.2 && *e <= 0.01)
+            .count()
+            + above
+                .iter()
+                .filter(|(r, e)| *r > bound * 1.2 && *e > 0.01)
+                .count();
+        rows.push(row(
+            format!("earlier, d_c·v = {x}, r* = {bound:.3}"),
+            "earlier formulation: points on the wrong side of its bound (r < r*/1.2 within 1 %, r > 1.2·r* off)",
+            0.0,
+            wrong as f64,
+            0.0,
+        ));
+    }
     let csv_path = out.join("F7-mean-error.csv");
     std::fs::write(&csv_path, csv).map_err(|e| format!("{}: {e}", csv_path.display()))?;
     let svg = out.join("F7-mean-error.svg");
@@ -250,6 +265,23 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
         Swatch::Line(BLACK, Marker::None, true),
         "the issue's 1 %".into(),
     ));
+    // Each x's bound r* of the earlier formulation, dotted in its curve's colour.
+    let bounds: Vec<(f64, RGBColor)> = series
+        .iter()
+        .enumerate()
+        .filter(|(_, (_, f, _))| *f == Formulation::RateFree)
+        .map(|(i, (x, _, _))| (bound_of(*x), colors[i % colors.len()]))
+        .collect();
+    for ((x, _, _), (bound, color)) in series
+        .iter()
+        .filter(|(_, f, _)| *f == Formulation::RateFree)
+        .zip(&bounds)
+    {
+        legend.push((
+            Swatch::Line(*color, Marker::None, true),
+            format!("d_c·v = {x}: earlier formulation's bound r* = {bound:.2}"),
+        ));
+    }
     let zeros = series
         .iter()
         .flat_map(|(_, _, pts)| pts.iter())
@@ -292,6 +324,16 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
                 BLACK.stroke_width(1),
             ))
             .map_err(err)?;
+        for (bound, color) in &bounds {
+            chart
+                .draw_series(DashedLineSeries::new(
+                    vec![(*bound, 1e-17), (*bound, 10.0)],
+                    3,
+                    3,
+                    color.stroke_width(1),
+                ))
+                .map_err(err)?;
+        }
         Ok(())
     })?;
     Ok(vec![csv_path, svg])
