@@ -93,18 +93,18 @@ mod rate;
         #[cold]
         #[inline(never)]
         fric_general {
-        let _ = boundary(
-            // SAFETY (all three closures): the host's pointers, valid per the contract above.
-            || unsafe { args.site() },
-            || {
-                if let Some(payload) = HANDED_OVER.take() {
-                    std::panic::resume_unwind(payload);
-                }
-                unsafe { args.general() }
-            },
-            || unsafe { args.fail() },
-        );
-    },
+            let _ = boundary(
+                // SAFETY (all three closures): the host's pointers, valid per the contract above.
+                || unsafe { args.site() },
+                || {
+                    if let Some(payload) = HANDED_OVER.take() {
+                        std::panic::resume_unwind(payload);
+                    }
+                    unsafe { args.general() }
+                },
+                || unsafe { args.fail() },
+            );
+        },
 )]
 pub unsafe extern "C" fn fric_(
     lm: *mut c_int,
