@@ -443,8 +443,8 @@ fn chunk<const N: usize>(
             .unwrap_or([f64::NAN; LANES])
     };
     let input = ChunkInput::<N, LANES> {
-        tau: std::array::from_fn(|a| load(v.tau[a])),
-        dgam: std::array::from_fn(|a| load(v.dgam[a])),
+        tau: rows_of(|a| load(v.tau[a])),
+        dgam: rows_of(|a| load(v.dgam[a])),
         pressure: load(v.press),
         dpressure: load(v.dpress),
         characteristic_length: load(v.chrlngth),
@@ -479,6 +479,16 @@ fn chunk<const N: usize>(
         store(v.statev[r], x);
     }
     true
+}
+
+/// `[f(0), …, f(N − 1)]` as a plain loop (always inlined, unlike `std::array::from_fn`).
+#[inline(always)]
+fn rows_of<const N: usize>(f: impl Fn(usize) -> [f64; LANES]) -> [[f64; LANES]; N] {
+    let mut out = [[0.0; LANES]; N];
+    for (a, x) in out.iter_mut().enumerate() {
+        *x = f(a);
+    }
+    out
 }
 
 /// One point: reads its inputs, updates it and writes its outputs, as `fric_` does (everything

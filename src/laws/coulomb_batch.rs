@@ -146,7 +146,7 @@ impl ElasticStickKernel {
         let (tau_crit_start, _) =
             self.critical_stress(map2(inc.pressure, inc.dpressure, |p, dp| p - dp));
         let start_factor = map2(*gamma_crit, tau_crit_start, |g, t| g / t);
-        std::array::from_fn(|a| {
+        per_row(|a| {
             let elastic = map3(inc.tau[a], start_factor, tau_crit_start, |t, f, c| {
                 if c > 0.0 { t * f } else { 0.0 }
             });
@@ -197,7 +197,7 @@ impl ElasticStickKernel {
         // number, else or when they say no on the norm. As a mask `key ≤ 0` (the comparison is
         // repeated in each select, a SIMD mask); all set when `STICK_ONLY`, so that the
         // compiler drops the slip branch's work.
-        let stick_key: [f64; W] = std::array::from_fn(|l| {
+        let stick_key: [f64; W] = lanes(|l| {
             if STICK_ONLY {
                 return 0.0;
             }
@@ -213,11 +213,11 @@ impl ElasticStickKernel {
         });
         let stick = Le(stick_key, [0.0; W]);
         let stick_tau: [[f64; W]; N] =
-            std::array::from_fn(|a| map2(predictor[a], stiffness, |x, k| x * k));
+            per_row(|a| map2(predictor[a], stiffness, |x, k| x * k));
 
         // Slip (Eq. 5.2.3-2): n = γ^pr/γ_eq^pr, Δγ_eq^sl = γ_eq^pr − γ_crit.
         let n: [[f64; W]; N] =
-            std::array::from_fn(|a| map2(predictor[a], predictor_eq, |x, e| x / e));
+            per_row(|a| map2(predictor[a], predictor_eq, |x, e| x / e));
         let slip_eq = map2(predictor_eq, gamma_crit, |e, g| e - g);
         let transverse = map2(tau_crit, predictor_eq, |t, e| t / e);
         let stick_dp = map2(dtau_crit_dp, gamma_crit, |d, g| d / g);
@@ -273,7 +273,7 @@ impl ElasticStickKernel {
         // the same bits).
         // A subnormal k_s declines the chunk: the scalar law then forms the stick stress
         // differently (`Coulomb::update`).
-        let common: [f64; W] = std::array::from_fn(|l| {
+        let common: [f64; W] = lanes(|l| {
             let subnormal = stiffness[l] > 0.0 && stiffness[l] < f64::MIN_POSITIVE;
             (gamma_crit[l] * 0.0 + (tau_crit[l] * HEADROOM) * 0.0)
                 + ((stiffness[l] * HEADROOM) * 0.0 + (dtau_crit_dp[l] * HEADROOM) * 0.0)
@@ -332,10 +332,32 @@ fn all_stick_on_squares<const N: usize, const W: usize>(
     sticks
 }
 
+/// `[f(0), …, f(W − 1)]`, as a plain loop over a zeroed array: unlike `std::array::from_fn`
+/// (not always inlined into the AVX2 build of the chunk loop, where its call ran SSE2 code),
+/// always inlined, so the SLP vectoriser sees every lane.
+#[inline(always)]
+fn lanes<const W: usize>(f: impl Fn(usize) -> f64) -> [f64; W] {
+    let mut out = [0.0; W];
+    for (l, x) in out.iter_mut().enumerate() {
+        *x = f(l);
+    }
+    out
+}
+
+/// `[f(0), …, f(N − 1)]` for rows of `W` lanes, as [`lanes`].
+#[inline(always)]
+fn per_row<const N: usize, const W: usize>(f: impl Fn(usize) -> [f64; W]) -> [[f64; W]; N] {
+    let mut out = [[0.0; W]; N];
+    for (a, x) in out.iter_mut().enumerate() {
+        *x = f(a);
+    }
+    out
+}
+
 /// Lane by lane `f(a, b)`.
 #[inline(always)]
 fn map2<const W: usize>(a: [f64; W], b: [f64; W], f: impl Fn(f64, f64) -> f64) -> [f64; W] {
-    std::array::from_fn(|l| f(a[l], b[l]))
+    lanes(|l| f(a[l], b[l]))
 }
 
 /// Lane by lane `f(a, b, c)`.
@@ -346,7 +368,7 @@ fn map3<const W: usize>(
     c: [f64; W],
     f: impl Fn(f64, f64, f64) -> f64,
 ) -> [f64; W] {
-    std::array::from_fn(|l| f(a[l], b[l], c[l]))
+    lanes(|l| f(a[l], b[l], c[l]))
 }
 
 /// The lanes where `x ≤ y`.
@@ -356,7 +378,7 @@ struct Le<const W: usize>([f64; W], [f64; W]);
 /// Lane by lane `if x ≤ y { a } else { b }`.
 #[inline(always)]
 fn select<const W: usize>(m: Le<W>, a: [f64; W], b: [f64; W]) -> [f64; W] {
-    std::array::from_fn(|l| if m.0[l] <= m.1[l] { a[l] } else { b[l] })
+    lanes(|l| if m.0[l] <= m.1[l] { a[l] } else { b[l] })
 }
 
 /// The sum of squares v·v (for N = 2 the scalar `dot(v, v)`, which the stick test uses) and the
