@@ -430,7 +430,8 @@ fn chunk<const N: usize>(
     };
     let mut motion = true;
     for x in lm {
-        motion &= *x == 0 || (*x == 1 && has_taulm);
+        // `|`, `&`: no branch per point.
+        motion &= (*x == 0) | ((*x == 1) & has_taulm);
     }
     if !motion {
         return false;

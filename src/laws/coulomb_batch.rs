@@ -202,9 +202,7 @@ impl ElasticStickKernel {
                 return 0.0;
             }
             let g2 = gamma_crit[l] * gamma_crit[l];
-            let on_squares = (N > 1)
-                & (f64::MIN_POSITIVE..f64::INFINITY).contains(&g2)
-                & (predictor_sq[l] <= g2);
+            let on_squares = (N > 1) & normal_square(g2) & (predictor_sq[l] <= g2);
             if on_squares | (predictor_eq[l] <= gamma_crit[l]) {
                 0.0
             } else {
@@ -273,8 +271,9 @@ impl ElasticStickKernel {
         // the same bits).
         // A subnormal k_s declines the chunk: the scalar law then forms the stick stress
         // differently (`Coulomb::update`).
+        // (`&` rather than `&&`: both comparisons as SIMD masks, no branch per lane.)
         let common: [f64; W] = lanes(|l| {
-            let subnormal = stiffness[l] > 0.0 && stiffness[l] < f64::MIN_POSITIVE;
+            let subnormal = (stiffness[l] > 0.0) & (stiffness[l] < f64::MIN_POSITIVE);
             (gamma_crit[l] * 0.0 + (tau_crit[l] * HEADROOM) * 0.0)
                 + ((stiffness[l] * HEADROOM) * 0.0 + (dtau_crit_dp[l] * HEADROOM) * 0.0)
                 + if subnormal { f64::NAN } else { 0.0 }
@@ -300,11 +299,13 @@ impl ElasticStickKernel {
         });
         out.statev[2] = slip.map(|d| if d > 0.0 { 1.0 } else { 0.0 });
 
-        let mut total = dtime * 0.0;
+        // Every probe term is ±0 or NaN, so their sum is 0 exactly when no term is NaN, in any
+        // order: lane by lane (a SIMD compare and one mask test) rather than one running sum.
+        let mut common_path = dtime * 0.0 == 0.0;
         for l in 0..W {
-            total += probe[l] + probe_out[l];
+            common_path &= probe[l] + probe_out[l] == 0.0;
         }
-        (total == 0.0).then_some(out)
+        common_path.then_some(out)
     }
 }
 
@@ -326,7 +327,7 @@ fn all_stick_on_squares<const N: usize, const W: usize>(
                 s += row[l] * row[l];
             }
             let g2 = g * g;
-            (f64::MIN_POSITIVE..f64::INFINITY).contains(&g2) & (s <= g2)
+            normal_square(g2) & (s <= g2)
         };
     }
     sticks
@@ -352,6 +353,13 @@ fn per_row<const N: usize, const W: usize>(f: impl Fn(usize) -> [f64; W]) -> [[f
         *x = f(a);
     }
     out
+}
+
+/// `MIN_POSITIVE ≤ g2 < ∞` (γ_crit² a normal number), both comparisons evaluated (`&`, not the
+/// short-circuit of `RangeBounds::contains`), so that lanes compare as one SIMD mask.
+#[inline(always)]
+fn normal_square(g2: f64) -> bool {
+    (f64::MIN_POSITIVE <= g2) & (g2 < f64::INFINITY)
 }
 
 /// Lane by lane `f(a, b)`.
