@@ -197,18 +197,21 @@ impl ElasticStickKernel {
         // number, else or when they say no on the norm. As a mask `key ≤ 0` (the comparison is
         // repeated in each select, a SIMD mask); all set when `STICK_ONLY`, so that the
         // compiler drops the slip branch's work.
-        let stick_key: [f64; W] = lanes(|l| {
-            if STICK_ONLY {
-                return 0.0;
-            }
-            let g2 = gamma_crit[l] * gamma_crit[l];
-            let on_squares = (N > 1) & normal_square(g2) & (predictor_sq[l] <= g2);
-            if on_squares | (predictor_eq[l] <= gamma_crit[l]) {
-                0.0
+        let stick_key: [f64; W] = if STICK_ONLY {
+            [0.0; W]
+        } else {
+            let by_norm = select(Le(predictor_eq, gamma_crit), [0.0; W], [1.0; W]);
+            if N > 1 {
+                let g2 = map2(gamma_crit, gamma_crit, |g, h| g * h);
+                select(
+                    Le(predictor_sq, g2),
+                    where_normal(g2, [0.0; W], by_norm),
+                    by_norm,
+                )
             } else {
-                1.0
+                by_norm
             }
-        });
+        };
         let stick = Le(stick_key, [0.0; W]);
         let stick_tau: [[f64; W]; N] =
             per_row(|a| map2(predictor[a], stiffness, |x, k| x * k));
@@ -272,11 +275,15 @@ impl ElasticStickKernel {
         // A subnormal k_s declines the chunk: the scalar law then forms the stick stress
         // differently (`Coulomb::update`).
         // (`&` rather than `&&`: both comparisons as SIMD masks, no branch per lane.)
+        let subnormal = select(
+            Le(stiffness, [0.0; W]),
+            [0.0; W],
+            select(Le([f64::MIN_POSITIVE; W], stiffness), [0.0; W], [f64::NAN; W]),
+        );
         let common: [f64; W] = lanes(|l| {
-            let subnormal = (stiffness[l] > 0.0) & (stiffness[l] < f64::MIN_POSITIVE);
             (gamma_crit[l] * 0.0 + (tau_crit[l] * HEADROOM) * 0.0)
                 + ((stiffness[l] * HEADROOM) * 0.0 + (dtau_crit_dp[l] * HEADROOM) * 0.0)
-                + if subnormal { f64::NAN } else { 0.0 }
+                + subnormal[l]
         });
         let branch = select(
             stick,
@@ -301,11 +308,8 @@ impl ElasticStickKernel {
 
         // Every probe term is ±0 or NaN, so their sum is 0 exactly when no term is NaN, in any
         // order: lane by lane (a SIMD compare and one mask test) rather than one running sum.
-        let mut common_path = dtime * 0.0 == 0.0;
-        for l in 0..W {
-            common_path &= probe[l] + probe_out[l] == 0.0;
-        }
-        common_path.then_some(out)
+        let terms = map2(probe, probe_out, |q, r| q + r);
+        (dtime * 0.0 == 0.0 && all_zero(terms)).then_some(out)
     }
 }
 
@@ -316,21 +320,45 @@ fn all_stick_on_squares<const N: usize, const W: usize>(
     predictor: &[[f64; W]; N],
     gamma_crit: &[f64; W],
 ) -> bool {
-    let mut sticks = true;
-    for l in 0..W {
-        let g = gamma_crit[l];
-        sticks &= if N == 1 {
-            predictor[0][l].abs() <= g
-        } else {
-            let mut s = predictor[0][l] * predictor[0][l];
-            for row in &predictor[1..] {
-                s += row[l] * row[l];
-            }
-            let g2 = g * g;
-            normal_square(g2) & (s <= g2)
-        };
+    // 0 where the lane sticks, 1 elsewhere.
+    let key = if N == 1 {
+        select(
+            Le(predictor[0].map(f64::abs), *gamma_crit),
+            [0.0; W],
+            [1.0; W],
+        )
+    } else {
+        let mut s = predictor[0].map(|x| x * x);
+        for row in &predictor[1..] {
+            s = map2(s, *row, |s, x| s + x * x);
+        }
+        let g2 = map2(*gamma_crit, *gamma_crit, |g, h| g * h);
+        select(Le(s, g2), where_normal(g2, [0.0; W], [1.0; W]), [1.0; W])
+    };
+    all_zero(key)
+}
+
+/// `a` where γ_crit² = `g2` is a normal number (`MIN_POSITIVE ≤ g2 < ∞`, where the test on the
+/// squares stands), `b` elsewhere; as selects, so that the lanes compare as SIMD masks.
+#[inline(always)]
+fn where_normal<const W: usize>(g2: [f64; W], a: [f64; W], b: [f64; W]) -> [f64; W] {
+    select(
+        Le([f64::MIN_POSITIVE; W], g2),
+        select(Le([f64::INFINITY; W], g2), b, a),
+        b,
+    )
+}
+
+/// Every lane is ±0 (no NaN, no other number): the bits but the sign bit, OR-ed over the lanes
+/// (an integer reduction, which the compiler vectorises; a sum or an `&&` of comparisons it
+/// runs lane by lane).
+#[inline(always)]
+fn all_zero<const W: usize>(x: [f64; W]) -> bool {
+    let mut bits = 0u64;
+    for v in x {
+        bits |= v.to_bits() << 1;
     }
-    sticks
+    bits == 0
 }
 
 /// `[f(0), …, f(W − 1)]`, as a plain loop over a zeroed array: unlike `std::array::from_fn`
@@ -353,13 +381,6 @@ fn per_row<const N: usize, const W: usize>(f: impl Fn(usize) -> [f64; W]) -> [[f
         *x = f(a);
     }
     out
-}
-
-/// `MIN_POSITIVE ≤ g2 < ∞` (γ_crit² a normal number), both comparisons evaluated (`&`, not the
-/// short-circuit of `RangeBounds::contains`), so that lanes compare as one SIMD mask.
-#[inline(always)]
-fn normal_square(g2: f64) -> bool {
-    (f64::MIN_POSITIVE <= g2) & (g2 < f64::INFINITY)
 }
 
 /// Lane by lane `f(a, b)`.
