@@ -212,13 +212,59 @@ impl ElasticStickKernel {
                 by_norm
             }
         };
-        let stick = Le(stick_key, [0.0; W]);
-        let stick_tau: [[f64; W]; N] =
-            per_row(|a| map2(predictor[a], stiffness, |x, k| x * k));
+        let state = Lanes {
+            accumulated_slip: inc.accumulated_slip,
+            gamma_crit,
+            predictor,
+            predictor_eq,
+            tau_crit,
+            dtau_crit_dp,
+            stiffness,
+            probe,
+        };
+        // A chunk whose lanes all slip (key 1 everywhere) runs the same code with the stick
+        // mask known to be empty, so that the compiler drops the stick branch's work and the
+        // selects: the same bits, as for `STICK_ONLY`.
+        if !STICK_ONLY && all_zero(stick_key.map(|k| k - 1.0)) {
+            state.answer(Le([1.0; W], [0.0; W]), dtime)
+        } else {
+            state.answer(Le(stick_key, [0.0; W]), dtime)
+        }
+    }
+}
+
+/// What [`ElasticStickKernel::update`] has for `W` lanes once γ_crit, the predictor and its
+/// norm, τ_crit and the input probe are formed.
+struct Lanes<const N: usize, const W: usize> {
+    accumulated_slip: [f64; W],
+    gamma_crit: [f64; W],
+    predictor: [[f64; W]; N],
+    predictor_eq: [f64; W],
+    tau_crit: [f64; W],
+    dtau_crit_dp: [f64; W],
+    stiffness: [f64; W],
+    probe: [f64; W],
+}
+
+impl<const N: usize, const W: usize> Lanes<N, W> {
+    /// The return map's answer with the lanes of `stick` sticking and the others slipping, or
+    /// `None` when a lane leaves the common path.
+    #[inline(always)]
+    fn answer(&self, stick: Le<W>, dtime: f64) -> Option<ChunkOutput<N, W>> {
+        let Lanes {
+            accumulated_slip,
+            gamma_crit,
+            predictor,
+            predictor_eq,
+            tau_crit,
+            dtau_crit_dp,
+            stiffness,
+            probe,
+        } = *self;
+        let stick_tau: [[f64; W]; N] = per_row(|a| map2(predictor[a], stiffness, |x, k| x * k));
 
         // Slip (Eq. 5.2.3-2): n = γ^pr/γ_eq^pr, Δγ_eq^sl = γ_eq^pr − γ_crit.
-        let n: [[f64; W]; N] =
-            per_row(|a| map2(predictor[a], predictor_eq, |x, e| x / e));
+        let n: [[f64; W]; N] = per_row(|a| map2(predictor[a], predictor_eq, |x, e| x / e));
         let slip_eq = map2(predictor_eq, gamma_crit, |e, g| e - g);
         let transverse = map2(tau_crit, predictor_eq, |t, e| t / e);
         let stick_dp = map2(dtau_crit_dp, gamma_crit, |d, g| d / g);
@@ -274,11 +320,14 @@ impl ElasticStickKernel {
         // the same bits).
         // A subnormal k_s declines the chunk: the scalar law then forms the stick stress
         // differently (`Coulomb::update`).
-        // (`&` rather than `&&`: both comparisons as SIMD masks, no branch per lane.)
         let subnormal = select(
             Le(stiffness, [0.0; W]),
             [0.0; W],
-            select(Le([f64::MIN_POSITIVE; W], stiffness), [0.0; W], [f64::NAN; W]),
+            select(
+                Le([f64::MIN_POSITIVE; W], stiffness),
+                [0.0; W],
+                [f64::NAN; W],
+            ),
         );
         let common: [f64; W] = lanes(|l| {
             (gamma_crit[l] * 0.0 + (tau_crit[l] * HEADROOM) * 0.0)
@@ -296,7 +345,7 @@ impl ElasticStickKernel {
         // End state from the return map's slip Δγ_eq^sl (0 in stick), as the scalar path:
         // accumulated slip and slip rate, both saturating at f64::MAX.
         let slip = select(stick, [0.0; W], slip_eq);
-        out.statev[0] = map2(inc.accumulated_slip, slip, |s, d| saturate(s + d));
+        out.statev[0] = map2(accumulated_slip, slip, |s, d| saturate(s + d));
         out.statev[1] = slip.map(|d| {
             if dtime > 0.0 {
                 saturate(d / dtime)
