@@ -499,3 +499,137 @@ fn norm_common<const N: usize, const W: usize>(
 fn saturate(x: f64) -> f64 {
     if x > f64::MAX { f64::MAX } else { x }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::laws::coulomb::{Contact, CoulombState, FrictionStatus, Increment};
+    use crate::testing::XorShift;
+
+    const W: usize = 8;
+
+    /// A chunk of `W` lanes whose predictor |γ^pr| is `ratio(l)` × γ_crit (γ_crit = 10⁻³
+    /// absolute, or 1 % of CHRLNGTH = 0.1), at pressures 1 … 100 (every lane's τ_crit > 0;
+    /// μp above `tau_max` is capped).
+    fn chunk<const N: usize>(
+        rng: &mut XorShift,
+        tau_max: f64,
+        ratio: impl Fn(usize, f64) -> f64,
+    ) -> ChunkInput<N, W> {
+        let mut inc = ChunkInput::<N, W> {
+            tau: [[0.0; W]; N],
+            dgam: [[0.0; W]; N],
+            pressure: [0.0; W],
+            dpressure: [0.0; W],
+            characteristic_length: [0.1; W],
+            accumulated_slip: [0.0; W],
+            slip_rate: [0.0; W],
+        };
+        // γ_crit: 10⁻³ absolute, or 1 % of CHRLNGTH = 0.1, the same number.
+        let gc = 1e-3;
+        for l in 0..W {
+            let (p, dp) = (1.0 + 99.0 * rng.unit(), 0.5 * rng.unit() - 0.25);
+            inc.pressure[l] = p;
+            inc.dpressure[l] = dp;
+            inc.accumulated_slip[l] = rng.unit();
+            inc.slip_rate[l] = rng.unit();
+            // γ^pr = γ̄^el + Δγ with |γ^pr| = ratio·γ_crit: Δγ from a chosen start stress.
+            let k_start = (0.3 * (p - dp)).min(tau_max) / gc;
+            let angle = std::f64::consts::TAU * rng.unit();
+            let r = ratio(l, rng.unit());
+            for a in 0..N {
+                let dir = match (N, a) {
+                    (1, _) => angle.cos().signum(),
+                    (_, 0) => angle.cos(),
+                    _ => angle.sin(),
+                };
+                let elastic = (0.6 * rng.unit() - 0.3) * gc;
+                inc.tau[a][l] = k_start * elastic;
+                inc.dgam[a][l] = r * gc * dir - elastic;
+            }
+        }
+        inc
+    }
+
+    /// Every lane of the kernel's answer against `Coulomb::update`, bit for bit; returns how
+    /// many lanes slipped.
+    fn agree<const N: usize>(law: &Coulomb, inc: &ChunkInput<N, W>) -> usize {
+        let dtime = 0.1;
+        let kernel = ElasticStickKernel::new(law).expect("elastic stick");
+        let out = kernel
+            .update(inc, dtime)
+            .expect("ordinary lanes stay on the kernel");
+        let mut slipped = 0;
+        for l in 0..W {
+            let mut one = Increment::<N> {
+                pressure: inc.pressure[l],
+                dpressure: inc.dpressure[l],
+                dtime,
+                characteristic_length: inc.characteristic_length[l],
+                ..Increment::default()
+            };
+            for a in 0..N {
+                one.tau[a] = inc.tau[a][l];
+                one.dgam[a] = inc.dgam[a][l];
+            }
+            let state =
+                CoulombState::from_statev(&[inc.accumulated_slip[l], inc.slip_rate[l], 0.0])
+                    .expect("state");
+            let up = law.update(&one, &state).expect("scalar law");
+            let Contact::Motion(t) = up.contact else {
+                panic!("lane {l}: exact stick from elastic stick");
+            };
+            let bits = |x: f64| x.to_bits();
+            for a in 0..N {
+                assert_eq!(bits(out.tau[a][l]), bits(t.tau[a]), "tau lane {l}");
+                assert_eq!(bits(out.ddtddp[a][l]), bits(t.ddtddp[a]), "ddtddp lane {l}");
+                assert_eq!(bits(out.dslip[a][l]), bits(t.dslip[a]), "dslip lane {l}");
+                for b in 0..N {
+                    assert_eq!(bits(out.ddtddg[a][b][l]), bits(t.ddtddg[a][b]), "lane {l}");
+                }
+            }
+            assert_eq!(bits(out.sed[l]), bits(t.sed), "sed lane {l}");
+            assert_eq!(bits(out.sfd[l]), bits(t.sfd), "sfd lane {l}");
+            let mut sv = [0.0; 3];
+            up.state.write_statev(&mut sv);
+            for (r, x) in sv.iter().enumerate() {
+                assert_eq!(bits(out.statev[r][l]), bits(*x), "statev {r} lane {l}");
+            }
+            slipped += usize::from(up.state.status == FrictionStatus::Slip);
+        }
+        slipped
+    }
+
+    /// Chunks whose lanes all stick, all slip (the routes that drop one branch) or mix (the
+    /// selects) give `Coulomb::update`'s bits, NFDIR 1 and 2, γ_crit absolute or relative,
+    /// with and without τ_max.
+    #[test]
+    fn whole_stick_whole_slip_and_mixed_chunks_agree_with_the_scalar_law() {
+        let mut rng = XorShift(0x9E37_79B9_7F4A_7C15);
+        for absolute in [true, false] {
+            for tau_max in [None, Some(15.0)] {
+                let mut law = Coulomb::new(0.3).expect("mu");
+                law = if absolute {
+                    law.with_critical_slip_absolute(1e-3).expect("gamma_crit")
+                } else {
+                    law.with_slip_tolerance(0.01).expect("tolerance")
+                };
+                if let Some(t) = tau_max {
+                    law = law.with_shear_limit(t).expect("tau_max");
+                }
+                let cap = tau_max.unwrap_or(f64::INFINITY);
+                for _ in 0..50 {
+                    let stick = |_: usize, u: f64| 0.05 + 0.85 * u;
+                    let slip = |_: usize, u: f64| 1.1 + 3.9 * u;
+                    let mixed = |l: usize, u: f64| if l % 3 == 0 { 0.5 * u } else { 1.1 + u };
+                    assert_eq!(agree::<1>(&law, &chunk(&mut rng, cap, stick)), 0);
+                    assert_eq!(agree::<2>(&law, &chunk(&mut rng, cap, stick)), 0);
+                    assert_eq!(agree::<1>(&law, &chunk(&mut rng, cap, slip)), W);
+                    assert_eq!(agree::<2>(&law, &chunk(&mut rng, cap, slip)), W);
+                    assert_eq!(agree::<1>(&law, &chunk(&mut rng, cap, mixed)), 5);
+                    assert_eq!(agree::<2>(&law, &chunk(&mut rng, cap, mixed)), 5);
+                }
+            }
+        }
+    }
+}
