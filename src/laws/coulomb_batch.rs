@@ -146,7 +146,7 @@ impl ElasticStickKernel {
         let (tau_crit_start, _) =
             self.critical_stress(map2(inc.pressure, inc.dpressure, |p, dp| p - dp));
         let start_factor = map2(*gamma_crit, tau_crit_start, |g, t| g / t);
-        std::array::from_fn(|a| {
+        per_row(|a| {
             let elastic = map3(inc.tau[a], start_factor, tau_crit_start, |t, f, c| {
                 if c > 0.0 { t * f } else { 0.0 }
             });
@@ -197,27 +197,74 @@ impl ElasticStickKernel {
         // number, else or when they say no on the norm. As a mask `key ≤ 0` (the comparison is
         // repeated in each select, a SIMD mask); all set when `STICK_ONLY`, so that the
         // compiler drops the slip branch's work.
-        let stick_key: [f64; W] = std::array::from_fn(|l| {
-            if STICK_ONLY {
-                return 0.0;
-            }
-            let g2 = gamma_crit[l] * gamma_crit[l];
-            let on_squares = (N > 1)
-                & (f64::MIN_POSITIVE..f64::INFINITY).contains(&g2)
-                & (predictor_sq[l] <= g2);
-            if on_squares | (predictor_eq[l] <= gamma_crit[l]) {
-                0.0
+        let stick_key: [f64; W] = if STICK_ONLY {
+            [0.0; W]
+        } else {
+            let by_norm = select(Le(predictor_eq, gamma_crit), [0.0; W], [1.0; W]);
+            if N > 1 {
+                let g2 = map2(gamma_crit, gamma_crit, |g, h| g * h);
+                select(
+                    Le(predictor_sq, g2),
+                    where_normal(g2, [0.0; W], by_norm),
+                    by_norm,
+                )
             } else {
-                1.0
+                by_norm
             }
-        });
-        let stick = Le(stick_key, [0.0; W]);
-        let stick_tau: [[f64; W]; N] =
-            std::array::from_fn(|a| map2(predictor[a], stiffness, |x, k| x * k));
+        };
+        let state = Lanes {
+            accumulated_slip: inc.accumulated_slip,
+            gamma_crit,
+            predictor,
+            predictor_eq,
+            tau_crit,
+            dtau_crit_dp,
+            stiffness,
+            probe,
+        };
+        // A chunk whose lanes all slip (key 1 everywhere) runs the same code with the stick
+        // mask known to be empty, so that the compiler drops the stick branch's work and the
+        // selects: the same bits, as for `STICK_ONLY`.
+        if !STICK_ONLY && all_zero(stick_key.map(|k| k - 1.0)) {
+            state.answer(Le([1.0; W], [0.0; W]), dtime)
+        } else {
+            state.answer(Le(stick_key, [0.0; W]), dtime)
+        }
+    }
+}
+
+/// What [`ElasticStickKernel::update`] has for `W` lanes once γ_crit, the predictor and its
+/// norm, τ_crit and the input probe are formed.
+struct Lanes<const N: usize, const W: usize> {
+    accumulated_slip: [f64; W],
+    gamma_crit: [f64; W],
+    predictor: [[f64; W]; N],
+    predictor_eq: [f64; W],
+    tau_crit: [f64; W],
+    dtau_crit_dp: [f64; W],
+    stiffness: [f64; W],
+    probe: [f64; W],
+}
+
+impl<const N: usize, const W: usize> Lanes<N, W> {
+    /// The return map's answer with the lanes of `stick` sticking and the others slipping, or
+    /// `None` when a lane leaves the common path.
+    #[inline(always)]
+    fn answer(&self, stick: Le<W>, dtime: f64) -> Option<ChunkOutput<N, W>> {
+        let Lanes {
+            accumulated_slip,
+            gamma_crit,
+            predictor,
+            predictor_eq,
+            tau_crit,
+            dtau_crit_dp,
+            stiffness,
+            probe,
+        } = *self;
+        let stick_tau: [[f64; W]; N] = per_row(|a| map2(predictor[a], stiffness, |x, k| x * k));
 
         // Slip (Eq. 5.2.3-2): n = γ^pr/γ_eq^pr, Δγ_eq^sl = γ_eq^pr − γ_crit.
-        let n: [[f64; W]; N] =
-            std::array::from_fn(|a| map2(predictor[a], predictor_eq, |x, e| x / e));
+        let n: [[f64; W]; N] = per_row(|a| map2(predictor[a], predictor_eq, |x, e| x / e));
         let slip_eq = map2(predictor_eq, gamma_crit, |e, g| e - g);
         let transverse = map2(tau_crit, predictor_eq, |t, e| t / e);
         let stick_dp = map2(dtau_crit_dp, gamma_crit, |d, g| d / g);
@@ -273,11 +320,19 @@ impl ElasticStickKernel {
         // the same bits).
         // A subnormal k_s declines the chunk: the scalar law then forms the stick stress
         // differently (`Coulomb::update`).
-        let common: [f64; W] = std::array::from_fn(|l| {
-            let subnormal = stiffness[l] > 0.0 && stiffness[l] < f64::MIN_POSITIVE;
+        let subnormal = select(
+            Le(stiffness, [0.0; W]),
+            [0.0; W],
+            select(
+                Le([f64::MIN_POSITIVE; W], stiffness),
+                [0.0; W],
+                [f64::NAN; W],
+            ),
+        );
+        let common: [f64; W] = lanes(|l| {
             (gamma_crit[l] * 0.0 + (tau_crit[l] * HEADROOM) * 0.0)
                 + ((stiffness[l] * HEADROOM) * 0.0 + (dtau_crit_dp[l] * HEADROOM) * 0.0)
-                + if subnormal { f64::NAN } else { 0.0 }
+                + subnormal[l]
         });
         let branch = select(
             stick,
@@ -290,7 +345,7 @@ impl ElasticStickKernel {
         // End state from the return map's slip Δγ_eq^sl (0 in stick), as the scalar path:
         // accumulated slip and slip rate, both saturating at f64::MAX.
         let slip = select(stick, [0.0; W], slip_eq);
-        out.statev[0] = map2(inc.accumulated_slip, slip, |s, d| saturate(s + d));
+        out.statev[0] = map2(accumulated_slip, slip, |s, d| saturate(s + d));
         out.statev[1] = slip.map(|d| {
             if dtime > 0.0 {
                 saturate(d / dtime)
@@ -300,11 +355,10 @@ impl ElasticStickKernel {
         });
         out.statev[2] = slip.map(|d| if d > 0.0 { 1.0 } else { 0.0 });
 
-        let mut total = dtime * 0.0;
-        for l in 0..W {
-            total += probe[l] + probe_out[l];
-        }
-        (total == 0.0).then_some(out)
+        // Every probe term is ±0 or NaN, so their sum is 0 exactly when no term is NaN, in any
+        // order: lane by lane (a SIMD compare and one mask test) rather than one running sum.
+        let terms = map2(probe, probe_out, |q, r| q + r);
+        (dtime * 0.0 == 0.0 && all_zero(terms)).then_some(out)
     }
 }
 
@@ -315,27 +369,73 @@ fn all_stick_on_squares<const N: usize, const W: usize>(
     predictor: &[[f64; W]; N],
     gamma_crit: &[f64; W],
 ) -> bool {
-    let mut sticks = true;
-    for l in 0..W {
-        let g = gamma_crit[l];
-        sticks &= if N == 1 {
-            predictor[0][l].abs() <= g
-        } else {
-            let mut s = predictor[0][l] * predictor[0][l];
-            for row in &predictor[1..] {
-                s += row[l] * row[l];
-            }
-            let g2 = g * g;
-            (f64::MIN_POSITIVE..f64::INFINITY).contains(&g2) & (s <= g2)
-        };
+    // 0 where the lane sticks, 1 elsewhere.
+    let key = if N == 1 {
+        select(
+            Le(predictor[0].map(f64::abs), *gamma_crit),
+            [0.0; W],
+            [1.0; W],
+        )
+    } else {
+        let mut s = predictor[0].map(|x| x * x);
+        for row in &predictor[1..] {
+            s = map2(s, *row, |s, x| s + x * x);
+        }
+        let g2 = map2(*gamma_crit, *gamma_crit, |g, h| g * h);
+        select(Le(s, g2), where_normal(g2, [0.0; W], [1.0; W]), [1.0; W])
+    };
+    all_zero(key)
+}
+
+/// `a` where γ_crit² = `g2` is a normal number (`MIN_POSITIVE ≤ g2 < ∞`, where the test on the
+/// squares stands), `b` elsewhere; as selects, so that the lanes compare as SIMD masks.
+#[inline(always)]
+fn where_normal<const W: usize>(g2: [f64; W], a: [f64; W], b: [f64; W]) -> [f64; W] {
+    select(
+        Le([f64::MIN_POSITIVE; W], g2),
+        select(Le([f64::INFINITY; W], g2), b, a),
+        b,
+    )
+}
+
+/// Every lane is ±0 (no NaN, no other number): the bits but the sign bit, OR-ed over the lanes
+/// (an integer reduction, which the compiler vectorises; a sum or an `&&` of comparisons it
+/// runs lane by lane).
+#[inline(always)]
+fn all_zero<const W: usize>(x: [f64; W]) -> bool {
+    let mut bits = 0u64;
+    for v in x {
+        bits |= v.to_bits() << 1;
     }
-    sticks
+    bits == 0
+}
+
+/// `[f(0), …, f(W − 1)]`, as a plain loop over a zeroed array: unlike `std::array::from_fn`
+/// (not always inlined into the AVX2 build of the chunk loop, where its call ran SSE2 code),
+/// always inlined, so the SLP vectoriser sees every lane.
+#[inline(always)]
+fn lanes<const W: usize>(f: impl Fn(usize) -> f64) -> [f64; W] {
+    let mut out = [0.0; W];
+    for (l, x) in out.iter_mut().enumerate() {
+        *x = f(l);
+    }
+    out
+}
+
+/// `[f(0), …, f(N − 1)]` for rows of `W` lanes, as [`lanes`].
+#[inline(always)]
+fn per_row<const N: usize, const W: usize>(f: impl Fn(usize) -> [f64; W]) -> [[f64; W]; N] {
+    let mut out = [[0.0; W]; N];
+    for (a, x) in out.iter_mut().enumerate() {
+        *x = f(a);
+    }
+    out
 }
 
 /// Lane by lane `f(a, b)`.
 #[inline(always)]
 fn map2<const W: usize>(a: [f64; W], b: [f64; W], f: impl Fn(f64, f64) -> f64) -> [f64; W] {
-    std::array::from_fn(|l| f(a[l], b[l]))
+    lanes(|l| f(a[l], b[l]))
 }
 
 /// Lane by lane `f(a, b, c)`.
@@ -346,7 +446,7 @@ fn map3<const W: usize>(
     c: [f64; W],
     f: impl Fn(f64, f64, f64) -> f64,
 ) -> [f64; W] {
-    std::array::from_fn(|l| f(a[l], b[l], c[l]))
+    lanes(|l| f(a[l], b[l], c[l]))
 }
 
 /// The lanes where `x ≤ y`.
@@ -356,7 +456,7 @@ struct Le<const W: usize>([f64; W], [f64; W]);
 /// Lane by lane `if x ≤ y { a } else { b }`.
 #[inline(always)]
 fn select<const W: usize>(m: Le<W>, a: [f64; W], b: [f64; W]) -> [f64; W] {
-    std::array::from_fn(|l| if m.0[l] <= m.1[l] { a[l] } else { b[l] })
+    lanes(|l| if m.0[l] <= m.1[l] { a[l] } else { b[l] })
 }
 
 /// The sum of squares v·v (for N = 2 the scalar `dot(v, v)`, which the stick test uses) and the
@@ -398,4 +498,138 @@ fn norm_common<const N: usize, const W: usize>(
 #[inline(always)]
 fn saturate(x: f64) -> f64 {
     if x > f64::MAX { f64::MAX } else { x }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::laws::coulomb::{Contact, CoulombState, FrictionStatus, Increment};
+    use crate::testing::XorShift;
+
+    const W: usize = 8;
+
+    /// A chunk of `W` lanes whose predictor |γ^pr| is `ratio(l)` × γ_crit (γ_crit = 10⁻³
+    /// absolute, or 1 % of CHRLNGTH = 0.1), at pressures 1 … 100 (every lane's τ_crit > 0;
+    /// μp above `tau_max` is capped).
+    fn chunk<const N: usize>(
+        rng: &mut XorShift,
+        tau_max: f64,
+        ratio: impl Fn(usize, f64) -> f64,
+    ) -> ChunkInput<N, W> {
+        let mut inc = ChunkInput::<N, W> {
+            tau: [[0.0; W]; N],
+            dgam: [[0.0; W]; N],
+            pressure: [0.0; W],
+            dpressure: [0.0; W],
+            characteristic_length: [0.1; W],
+            accumulated_slip: [0.0; W],
+            slip_rate: [0.0; W],
+        };
+        // γ_crit: 10⁻³ absolute, or 1 % of CHRLNGTH = 0.1, the same number.
+        let gc = 1e-3;
+        for l in 0..W {
+            let (p, dp) = (1.0 + 99.0 * rng.unit(), 0.5 * rng.unit() - 0.25);
+            inc.pressure[l] = p;
+            inc.dpressure[l] = dp;
+            inc.accumulated_slip[l] = rng.unit();
+            inc.slip_rate[l] = rng.unit();
+            // γ^pr = γ̄^el + Δγ with |γ^pr| = ratio·γ_crit: Δγ from a chosen start stress.
+            let k_start = (0.3 * (p - dp)).min(tau_max) / gc;
+            let angle = std::f64::consts::TAU * rng.unit();
+            let r = ratio(l, rng.unit());
+            for a in 0..N {
+                let dir = match (N, a) {
+                    (1, _) => angle.cos().signum(),
+                    (_, 0) => angle.cos(),
+                    _ => angle.sin(),
+                };
+                let elastic = (0.6 * rng.unit() - 0.3) * gc;
+                inc.tau[a][l] = k_start * elastic;
+                inc.dgam[a][l] = r * gc * dir - elastic;
+            }
+        }
+        inc
+    }
+
+    /// Every lane of the kernel's answer against `Coulomb::update`, bit for bit; returns how
+    /// many lanes slipped.
+    fn agree<const N: usize>(law: &Coulomb, inc: &ChunkInput<N, W>) -> usize {
+        let dtime = 0.1;
+        let kernel = ElasticStickKernel::new(law).expect("elastic stick");
+        let out = kernel
+            .update(inc, dtime)
+            .expect("ordinary lanes stay on the kernel");
+        let mut slipped = 0;
+        for l in 0..W {
+            let mut one = Increment::<N> {
+                pressure: inc.pressure[l],
+                dpressure: inc.dpressure[l],
+                dtime,
+                characteristic_length: inc.characteristic_length[l],
+                ..Increment::default()
+            };
+            for a in 0..N {
+                one.tau[a] = inc.tau[a][l];
+                one.dgam[a] = inc.dgam[a][l];
+            }
+            let state =
+                CoulombState::from_statev(&[inc.accumulated_slip[l], inc.slip_rate[l], 0.0])
+                    .expect("state");
+            let up = law.update(&one, &state).expect("scalar law");
+            let Contact::Motion(t) = up.contact else {
+                panic!("lane {l}: exact stick from elastic stick");
+            };
+            let bits = |x: f64| x.to_bits();
+            for a in 0..N {
+                assert_eq!(bits(out.tau[a][l]), bits(t.tau[a]), "tau lane {l}");
+                assert_eq!(bits(out.ddtddp[a][l]), bits(t.ddtddp[a]), "ddtddp lane {l}");
+                assert_eq!(bits(out.dslip[a][l]), bits(t.dslip[a]), "dslip lane {l}");
+                for b in 0..N {
+                    assert_eq!(bits(out.ddtddg[a][b][l]), bits(t.ddtddg[a][b]), "lane {l}");
+                }
+            }
+            assert_eq!(bits(out.sed[l]), bits(t.sed), "sed lane {l}");
+            assert_eq!(bits(out.sfd[l]), bits(t.sfd), "sfd lane {l}");
+            let mut sv = [0.0; 3];
+            up.state.write_statev(&mut sv);
+            for (r, x) in sv.iter().enumerate() {
+                assert_eq!(bits(out.statev[r][l]), bits(*x), "statev {r} lane {l}");
+            }
+            slipped += usize::from(up.state.status == FrictionStatus::Slip);
+        }
+        slipped
+    }
+
+    /// Chunks whose lanes all stick, all slip (the routes that drop one branch) or mix (the
+    /// selects) give `Coulomb::update`'s bits, NFDIR 1 and 2, γ_crit absolute or relative,
+    /// with and without τ_max.
+    #[test]
+    fn whole_stick_whole_slip_and_mixed_chunks_agree_with_the_scalar_law() {
+        let mut rng = XorShift(0x9E37_79B9_7F4A_7C15);
+        for absolute in [true, false] {
+            for tau_max in [None, Some(15.0)] {
+                let mut law = Coulomb::new(0.3).expect("mu");
+                law = if absolute {
+                    law.with_critical_slip_absolute(1e-3).expect("gamma_crit")
+                } else {
+                    law.with_slip_tolerance(0.01).expect("tolerance")
+                };
+                if let Some(t) = tau_max {
+                    law = law.with_shear_limit(t).expect("tau_max");
+                }
+                let cap = tau_max.unwrap_or(f64::INFINITY);
+                for _ in 0..50 {
+                    let stick = |_: usize, u: f64| 0.05 + 0.85 * u;
+                    let slip = |_: usize, u: f64| 1.1 + 3.9 * u;
+                    let mixed = |l: usize, u: f64| if l % 3 == 0 { 0.5 * u } else { 1.1 + u };
+                    assert_eq!(agree::<1>(&law, &chunk(&mut rng, cap, stick)), 0);
+                    assert_eq!(agree::<2>(&law, &chunk(&mut rng, cap, stick)), 0);
+                    assert_eq!(agree::<1>(&law, &chunk(&mut rng, cap, slip)), W);
+                    assert_eq!(agree::<2>(&law, &chunk(&mut rng, cap, slip)), W);
+                    assert_eq!(agree::<1>(&law, &chunk(&mut rng, cap, mixed)), 5);
+                    assert_eq!(agree::<2>(&law, &chunk(&mut rng, cap, mixed)), 5);
+                }
+            }
+        }
+    }
 }
