@@ -89,6 +89,9 @@ out="$root/docs/benchmarks-batch.md"
   echo "| 2 | sticking | 334 (83 + 251) | 106 (44 + 61.5) | 3.16× |"
   echo "| 2 | slipping | 347 (83 + 264) | 117 (44 + 72) | 2.97× |"
   echo
+  echo "The \`fric_\` and \`ifl_fric_batch\` figures are rows of [performance.md's counted"
+  echo "table](performance.md#where-it-stands), which the test command re-counts (±2 %)."
+  echo
   echo "Before that pass the batch side ran 120/134/168/214 instructions per point (\`ifl_fric_batch\`"
   echo "75/90/124/170), 2.65/2.31/1.98/1.62× fewer than the \`fric_\` side, and NFDIR 2 ran at only"
   echo "1.4–1.5× the wall-clock throughput of \`fric_\` on the Intel guest (Emerald Rapids) against"

@@ -18,7 +18,7 @@
 # Rows: bench/bench_fric.f90 cases 1..4 (fric_ inclusive, and the hand-written FRICREF of the
 # same runs); bench/bench_adhesive.f90 laws 2..5
 # (whole program); uinter_ inclusive (bench_adhesive law 5); ifl_pore_pressure inclusive
-# (bench/bench_pore_pressure.c); the rate law's rows of scripts/bench-rate-count.sh. Each is the difference of a run with more repeats and one with
+# (bench/bench_pore_pressure.c); ifl_fric_batch per point (bench/bench_batch.c); the rate law's rows of scripts/bench-rate-count.sh. Each is the difference of a run with more repeats and one with
 # fewer, divided by the extra calls, so start-up and set-up cancel. Builds the library (cargo,
 # release) and the benchmarks in $BENCH_BUILD_DIR (default /tmp/build-count). Needs gfortran,
 # cc, valgrind.
@@ -39,6 +39,8 @@ gfortran -O2 -I"$root/bench" -c "$root/bench/fric_ref.f" -o fric_ref.o
 gfortran -O2 -I"$root/bench" -c "$root/bench/fric_nop.f" -o fric_nop.o
 gfortran -O2 -o bench_fric "$root/bench/bench_fric.f90" fric_ref.o fric_nop.o "$lib" "${native_libs[@]}"
 gfortran -O2 -o bench_adhesive "$root/bench/bench_adhesive.f90" fric_nop.o "$lib" "${native_libs[@]}"
+"$cc" "${cflags[@]}" -D_POSIX_C_SOURCE=199309L -I"$root/include" "$root/bench/bench_batch.c" \
+  -o bench_batch "$lib" "${native_libs[@]}"
 "$cc" -O2 -c "$root/bench/pore_pressure_ref.c" -o pore_pressure_ref.o
 "$cc" -O2 -D_POSIX_C_SOURCE=199309L -I"$root/include" "$root/bench/bench_pore_pressure.c" \
   pore_pressure_ref.o -o bench_pore_pressure "$lib" "${native_libs[@]}" -lm
@@ -74,6 +76,14 @@ for l in 2 3 4 5; do
   rows+=("| bench_adhesive law $l, whole program | $(per_call "$(whole "a$l.1")" "$(whole "a$l.3")" 16384) |")
 done
 rows+=("| uinter_ (bench_adhesive law 5) | $(per_call "$(inclusive a5.1 uinter_)" "$(inclusive a5.3 uinter_)" 16384) |")
+# ifl_fric_batch per point (bench_batch CASE 1..4: NFDIR 1 stick, slip, NFDIR 2 stick, slip; 4096
+# points a sweep, so NREP 3 minus NREP 1 is 8192 points). Under valgrind the chunk loop is the
+# AVX2 build (valgrind's CPU has AVX2, not AVX-512).
+for c in 1 2 3 4; do
+  cg "b$c.1" ./bench_batch 1 1 "$c"
+  cg "b$c.3" ./bench_batch 3 1 "$c"
+  rows+=("| ifl_fric_batch per point, ${names[$c]#fric_, } (bench_batch case $c) | $(per_call "$(inclusive "b$c.1" ifl_fric_batch)" "$(inclusive "b$c.3" ifl_fric_batch)" 8192) |")
+done
 # bench_pore_pressure NREP NRUN: 1024 points x (NREP + 1) calls per run and path (41 984 calls
 # at NREP 20, NRUN 2); the difference of NREP 40 and NREP 20 is 20 x 1024 x NRUN calls.
 cg p.20 ./bench_pore_pressure 20 1
