@@ -9,7 +9,8 @@
 ! anisotropic, exponential decay, decay + pressure, decay + temperature, pressure + temperature
 ! anisotropic, all of them, and a block with one bad point (NaN pressure or a negative slip
 ! rate: refused). Every array is allocated at exactly its declared size, so valgrind sees any
-! access past it.
+! access past it; a valgrind run sets INTERFACIAL_TEST_SHRINK=n for 1/n of the blocks (sizes in
+! harness_omp.f90).
 !
 ! Compared with the serial run: every output of every block (fCoef(nBlock,2) and
 ! fCoefDeriv(nBlock,20,2)), bit patterns folded into a 62-bit digest per block (two
@@ -20,16 +21,12 @@
 ! fCoefDeriv(k,4:20,d) = 0; a refused block has mu = 0, every derivative 0 and a message
 ! naming FRIC_COEF. At least 8 OpenMP threads must have done work.
 !
-! INTERFACIAL_TEST_SHRINK=n divides the number of blocks by n (valgrind runs).
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 
 module fric_coef_omp_support
-  use, intrinsic :: iso_fortran_env, only: int64
-  use, intrinsic :: iso_c_binding, only: c_char, c_size_t
-  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use harness_threads
+  use harness_omp, only: block_points, block_violation
   implicit none
-  integer, parameter :: full_blocks = 16384, max_nblock = 127, min_blocks = 512
   integer, parameter :: nprops = 13, n_laws = 8, law_bad = 8
   character(len=32), parameter :: law_names(n_laws) = [character(len=32) :: 'constant', &
     'anisotropic', 'decay', 'decay+pressure', 'decay+temperature', &
@@ -39,25 +36,22 @@ contains
 
   ! Calls FRIC_COEF for block ib, checks it, returns its digest and law.
   ! nbad_pts: always 0 (FRIC_COEF refuses a block as a whole, law_bad).
-  subroutine run_block(ib, dig, law, npts, nbad_pts, bad, first_bad)
+  subroutine run_block(ib, dig, law, npts, nbad_pts)
     integer, intent(in) :: ib
     integer(int64), intent(out) :: dig(2)
     integer, intent(out) :: law, npts, nbad_pts
-    integer, intent(inout) :: bad
-    character(len=256), intent(inout) :: first_bad
     integer(int64) :: x
     integer :: n, k, d, j, ntemp, nfields, idata(3), npr
     real(dp) :: props(nprops), rdata(3), field(1), pp, e, ome, mk(2), ms(2), pi, th, mu, dr
     real(dp), allocatable :: coef(:, :), deriv(:, :, :), slip(:, :), press(:), temp(:)
     character(len=80) :: name, blank
-    character(kind=c_char) :: msg(512)
-    integer(c_size_t) :: mlen
+    character(len=2048) :: msg
     logical :: decay, pref, tlaw
     character(len=200) :: what
 
     x = block_seed(ib)
     law = int(mod(lehmer(x), int(n_laws, int64))) + 1
-    n = 1 + mod(ib - 1, max_nblock)
+    n = block_points(ib)
     npts = n
     nbad_pts = 0
     props = 0
@@ -98,7 +92,7 @@ contains
     if (law == law_bad) then
       k = 1 + int(mod(lehmer(x), int(n, int64)))
       if (mod(lehmer(x), 2_int64) == 0) then
-        press(k) = ieee_value(1.0_dp, ieee_quiet_nan)
+        press(k) = quiet_nan()
       else
         slip(k, 1) = -uniform(x, 0.1_dp, 1.0_dp)
       end if
@@ -120,12 +114,12 @@ contains
     call digest(dig, reshape(deriv, [40*n]))
 
     what = ' '
-    mlen = ifl_last_error_copy(msg, int(size(msg), c_size_t))
+    msg = last_error()
     if (law == law_bad) then
       if (any(coef /= 0) .or. any(deriv /= 0)) what = 'refused block not zeroed'
-      if (mlen < 40 .or. .not. starts_fric_coef(msg)) what = 'refusal message lacks FRIC_COEF'
+      if (len_trim(msg) < 40 .or. index(msg, 'interfacial: FRIC_COEF: interaction') /= 1) what = 'refusal message lacks FRIC_COEF'
     else
-      if (mlen /= 0) what = 'a good block left a message'
+      if (msg /= ' ') what = 'a good block left a message'
       ms = [props(2), merge(props(3), props(2), props(3) /= 0)]
       do k = 1, n
         pp = max(press(k), 0.0_dp)
@@ -155,12 +149,7 @@ contains
         end do
       end do
     end if
-    if (what /= ' ') then
-      !$omp critical (fric_coef_omp_first_bad)
-      bad = bad + 1
-      if (first_bad == ' ') write (first_bad, '(a,i0,a,a)') 'block ', ib, ': ', trim(what)
-      !$omp end critical (fric_coef_omp_first_bad)
-    end if
+    if (what /= ' ') call block_violation(ib, trim(what))
     deallocate (coef, deriv, slip, press, temp)
   end subroutine run_block
 
@@ -177,26 +166,13 @@ contains
     end do
   end function expm1_series
 
-  logical function starts_fric_coef(msg)
-    character(kind=c_char), intent(in) :: msg(:)
-    character(len=*), parameter :: head = 'interfacial: FRIC_COEF: interaction'
-    integer :: i
-    starts_fric_coef = .true.
-    do i = 1, len(head)
-      if (msg(i) /= head(i:i)) starts_fric_coef = .false.
-    end do
-  end function starts_fric_coef
-
 end module fric_coef_omp_support
 
 program test_fric_coef_omp
   use fric_coef_omp_support
   use harness_omp
   implicit none
-  integer :: shrink
 
-  shrink = shrink_factor(full_blocks/min_blocks)
-  call omp_block_runs('FRIC_COEF', 'the closed form', law_names, full_blocks/shrink, shrink, &
-                      run_block)
+  call omp_block_runs('FRIC_COEF', 'the closed form', law_names, run_block, .false.)
   call finish()
 end program test_fric_coef_omp

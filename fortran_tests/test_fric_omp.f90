@@ -11,7 +11,8 @@
 ! rough; a tau_max cap or none; gamma_crit from PROPS(5) or PROPS(6) x CHRLNGTH; NSTATV 3 or 5;
 ! now and then a negative pressure (no friction) and a NaN in DGAM (refused: PNEWDT = 0.25, the
 ! state unchanged, the thread's last error names the element). Every array FRIC may touch is
-! allocated at exactly its declared size, so valgrind sees any write past it.
+! allocated at exactly its declared size, so valgrind sees any write past it (a valgrind run
+! sets INTERFACIAL_TEST_SHRINK=n: 1/n of the points; sizes in harness_omp.f90).
 !
 ! Compared with the serial run: every output of every call (LM, TAU, DDTDDG, DDTDDP, DSLIP, SED,
 ! SFD, DDTDDT, PNEWDT, STATEV), bit patterns folded into a 62-bit digest per call; the final
@@ -22,16 +23,12 @@
 ! PNEWDT untouched by a successful call. Each kind of call must occur often, and at least 8
 ! OpenMP threads must have done work.
 !
-! INTERFACIAL_TEST_SHRINK=n divides the number of points by n (valgrind runs).
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 
 module fric_omp_support
-  use, intrinsic :: iso_fortran_env, only: int64
-  use, intrinsic :: iso_c_binding, only: c_char, c_size_t
-  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use harness_threads
+  use harness_omp, only: incs, point_violation
   implicit none
-  integer, parameter :: full_points = 4096, incs = 256, min_points = 64
   real(dp), parameter :: pnewdt_in = 1.0e36_dp, statev_tail = -5.5e55_dp, cutback = 0.25_dp
   integer, parameter :: nrec = 24 ! final record: see final_record
 
@@ -53,14 +50,12 @@ contains
   end function norm
 
   ! One contact point of one run: 256 increments into dig(:), the final outputs into fin(:),
-  ! counts into kinds(:), broken checks into bad (the first one's text into first_bad).
-  subroutine run_point(ip, dig, fin, kinds, bad, first_bad)
+  ! counts into kinds(:), broken checks to point_violation.
+  subroutine run_point(ip, dig, fin, kinds)
     integer, intent(in) :: ip
     integer(int64), intent(out) :: dig(:) ! (incs)
     real(dp), intent(out) :: fin(:) ! (nrec)
     integer(int64), intent(inout) :: kinds(:) ! (n_kinds)
-    integer, intent(inout) :: bad
-    character(len=*), intent(inout) :: first_bad
     ! FRIC's arguments; the arrays at exactly their declared sizes.
     real(dp), allocatable :: tau(:), ddtddg(:, :), ddtddp(:), dslip(:), ddtddt(:, :), &
       statev(:), dgam(:), taulm(:), slip(:)
@@ -73,9 +68,8 @@ contains
     integer(int64) :: rng, h(2)
     real(dp) :: p_ref, tau_max, gc, p_old, tau_crit, tau_old(2), statev_old(3), s1_old, tn, m
     logical :: nan_call, slipping
-    character(len=512) :: msg
+    character(len=2048) :: msg
     character(len=32) :: want
-    integer(c_size_t) :: msg_len
 
     rng = int(mod(ip, int(lehmer_m) - 1), int64) + 1_int64
     do i = 1, 4 ! decorrelate neighbouring seeds
@@ -154,7 +148,7 @@ contains
       end do
       nan_call = mod(ip - 1, 8) == 3 .and. mod(inc - 1, 97) == 50
       if (nan_call) then
-        dgam(1) = ieee_value(1.0_dp, ieee_quiet_nan)
+        dgam(1) = quiet_nan()
       else
         slip = slip + dgam
       end if
@@ -180,8 +174,7 @@ contains
             .not. same_bits(tau(nfdir), tau_old(2)) .or. &
             any(transfer(statev(1:3), 0_int64, 3) /= transfer(statev_old, 0_int64, 3))) &
           call fault('refused call: PNEWDT not 0.25 or state changed')
-        msg = ' '
-        msg_len = ifl_last_error_copy(msg, int(len(msg), c_size_t))
+        msg = last_error()
         write (want, '(a,i0,a)') 'element ', noel, ','
         if (index(msg, trim(want)) == 0 .or. index(msg, 'DGAM') == 0) &
           call fault('last error does not name the element and DGAM: '//trim(msg))
@@ -225,12 +218,7 @@ contains
 
     subroutine fault(what)
       character(len=*), intent(in) :: what
-      ! first_bad is shared between the threads; bad is each thread's own (a reduction).
-      !$omp critical (fric_omp_first_bad)
-      if (first_bad == ' ') write (first_bad, '(a,i0,a,i0,a,a)') 'point ', ip, &
-        ', increment ', inc, ': ', what
-      !$omp end critical (fric_omp_first_bad)
-      bad = bad + 1
+      call point_violation(ip, inc, what)
     end subroutine fault
 
     ! A successful call against the law.
@@ -287,7 +275,6 @@ program test_fric_omp
   use harness_omp
   implicit none
 
-  call omp_point_runs('FRIC', kind_names, full_points/shrink_factor(full_points/min_points), &
-                      incs, nrec, run_point)
+  call omp_point_runs('FRIC', kind_names, nrec, run_point)
   call finish()
 end program test_fric_omp

@@ -11,7 +11,8 @@
 ! or 3, mu_s = mu_d or above, separation adhesion or none, rate dependence or none, heat
 ! conduction (the PTAB law of configs/uinter_heat.toml, INTERFACIAL_CONFIG set by CTest) with
 ! frictional heat or none, NSTATV 3 or 5; now and then a NaN in DRDISP (refused: PNEWDT = 0.25,
-! STRESS and STATEV unchanged). Arrays are allocated at exactly their declared sizes.
+! STRESS and STATEV unchanged). Arrays are allocated at exactly their declared sizes; under
+! valgrind, INTERFACIAL_TEST_SHRINK=n runs 1/n of the points (sizes in harness_omp.f90).
 !
 ! Compared with the serial run: every output of every call (STRESS, DDSDDR, FLUX, DDFDDT,
 ! DDFDDR, STATEV, SED, SFD, PNEWDT, LOPENCLOSE, LSTATE), bit patterns folded into a 62-bit
@@ -20,15 +21,14 @@
 ! status 0/1/3/4 with LSTATE and LOPENCLOSE agreeing, open => zero stress, SED, SFD >= 0,
 ! STATEV past 3 untouched. At least 8 OpenMP threads must have done work.
 !
-! INTERFACIAL_TEST_SHRINK=n divides the number of points by n (valgrind runs).
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 
 module uinter_omp_support
   use, intrinsic :: iso_fortran_env, only: int64
-  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use harness_threads
+  use harness_omp, only: incs, point_violation
   implicit none
-  integer, parameter :: full_points = 4096, incs = 256, min_points = 64
   real(dp), parameter :: pnewdt_in = 1.0e36_dp, statev_tail = -5.5e55_dp, kn = 1.0e4_dp
   integer, parameter :: nrec = 8 ! final record: STRESS(3), STATEV(5)
   integer, parameter :: k_stick = 1, k_slip = 2, k_bonded = 3, k_open = 4, k_recontact = 5, &
@@ -39,13 +39,11 @@ module uinter_omp_support
 contains
 
   ! One interface point of one run: 256 digests into dig(:), the final state into fin(:).
-  subroutine run_point(ip, dig, fin, kinds, bad, first_bad)
+  subroutine run_point(ip, dig, fin, kinds)
     integer, intent(in) :: ip
     integer(int64), intent(out) :: dig(:) ! (incs)
     real(dp), intent(out) :: fin(:) ! (nrec)
     integer(int64), intent(inout) :: kinds(:) ! (n_kinds)
-    integer, intent(inout) :: bad
-    character(len=*), intent(inout) :: first_bad
     integer(int64) :: rng, h(2)
     integer :: ndir, nstatv, node, npred, nprops, mcrd, kstep, kinc, kit, linper
     integer :: lopenclose, lstate, lsdi, lprint, inc, a
@@ -119,7 +117,7 @@ contains
         drdisp(a) = uniform(rng, -slide_amp, slide_amp)
         rdisp(a) = rdisp(a) + drdisp(a)
       end do
-      if (refuse) drdisp(2) = ieee_value(1.0_dp, ieee_quiet_nan)
+      if (refuse) drdisp(2) = quiet_nan()
       ddsddr = -1.0_dp; dvisc = -1.0_dp; dstruct = -1.0_dp
       pnewdt = pnewdt_in
       kinc = inc
@@ -201,11 +199,7 @@ contains
 
     subroutine fault(what)
       character(len=*), intent(in) :: what
-      !$omp critical (uinter_omp_fault)
-      if (bad == 0) write (first_bad, '(a,i0,a,i0,a,a)') 'point ', ip, ' increment ', inc, &
-        ': ', what
-      bad = bad + 1
-      !$omp end critical (uinter_omp_fault)
+      call point_violation(ip, inc, what)
     end subroutine fault
   end subroutine run_point
 end module uinter_omp_support
@@ -215,7 +209,6 @@ program test_uinter_omp
   use harness_omp
   implicit none
 
-  call omp_point_runs('UINTER', kind_names, full_points/shrink_factor(full_points/min_points), &
-                      incs, nrec, run_point)
+  call omp_point_runs('UINTER', kind_names, nrec, run_point)
   call finish()
 end program test_uinter_omp

@@ -5,7 +5,8 @@
 ! `call vfric(...)` with the 42 arguments, no interface block.
 !
 ! 16 384 blocks of 1..127 contact points (nContact = 1 + mod(b-1, 127)): 1 048 513 point
-! evaluations per run. Each block has its own interaction ("VF<b>"), nFricDir (1 or 2), 1..64
+! evaluations per run (1/n of the blocks under INTERFACIAL_TEST_SHRINK=n, for valgrind; sizes
+! in harness_omp.f90). Each block has its own interaction ("VF<b>"), nFricDir (1 or 2), 1..64
 ! slave nodes with areas in [0.1, 2] and law-1 PROPS drawn from a Lehmer generator
 ! x <- 48271 x mod (2**31 - 1) seeded by the block's index, one of seven kinds: plain Coulomb,
 ! tau_max, rough (PROPS(7) = 2), exact stick with tau_max, tau_max with one to three bad points
@@ -23,19 +24,15 @@
 ! naming VFRIC, the interaction and "(block)"; statev untouched; no message for a good block.
 ! At least 8 OpenMP threads must have done work.
 !
-! INTERFACIAL_TEST_SHRINK=n divides the number of blocks by n (valgrind runs).
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 
 module vfric_omp_support
-  use, intrinsic :: iso_fortran_env, only: int64
-  use, intrinsic :: iso_c_binding, only: c_char, c_size_t
-  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use harness_threads
+  use harness_omp, only: block_points, block_violation, max_block_points
   implicit none
-  integer, parameter :: full_blocks = 16384, max_ncontact = 127, min_blocks = 512
   integer, parameter :: nprops = 7, n_kinds = 7, max_slaves = 64
   integer, parameter :: kind_bad_points = 5, kind_refused = 6, kind_nfricdir = 7
-  integer, parameter :: n_unread = 3*3*max_ncontact
+  integer, parameter :: n_unread = 3*3*max_block_points
   real(dp), parameter :: guard = -7.77e77_dp
   character(len=16), parameter :: kind_names(n_kinds) = [character(len=16) :: 'plain', &
     'tau_max', 'rough', 'exact stick', 'bad points', 'refused', 'nFricDir 3']
@@ -43,12 +40,10 @@ module vfric_omp_support
 contains
 
   ! Calls VFRIC for block ib, checks it, returns its digest, kind and size.
-  subroutine run_block(ib, dig, kind, npts, nbad_pts, bad, first_bad)
+  subroutine run_block(ib, dig, kind, npts, nbad_pts)
     integer, intent(in) :: ib
     integer(int64), intent(out) :: dig(2)
     integer, intent(out) :: kind, npts, nbad_pts
-    integer, intent(inout) :: bad
-    character(len=256), intent(inout) :: first_bad
     integer(int64) :: x
     integer :: n, nf, nslv, k, j, nbad, last_bad, ndir, npr, one, two, four, ints(4)
     real(dp) :: props(nprops), f, want, unread(n_unread)
@@ -56,15 +51,13 @@ contains
     integer, allocatable :: slave(:)
     logical, allocatable :: isbad(:)
     character(len=80) :: name, blank
-    character(kind=c_char) :: msg(512)
-    character(len=512) :: text
+    character(len=2048) :: text
     character(len=64) :: head, point
-    integer(c_size_t) :: mlen
     character(len=200) :: what
 
     x = block_seed(ib)
     kind = int(mod(lehmer(x), int(n_kinds, int64))) + 1
-    n = 1 + mod(ib - 1, max_ncontact)
+    n = block_points(ib)
     npts = n
     if (kind == kind_nfricdir) then
       nf = 3
@@ -94,7 +87,7 @@ contains
         k = 1 + int(mod(lehmer(x), int(n, int64)))
         select case (mod(lehmer(x), 3_int64))
         case (0)
-          normal(k) = ieee_value(1.0_dp, ieee_quiet_nan)
+          normal(k) = quiet_nan()
         case (1)
           stick(k) = -uniform(x, 0.1_dp, 1.0_dp)
         case default
@@ -133,18 +126,14 @@ contains
                ints, ints, slave, ints, unread, unread, unread, name, blank, blank, ints, unread, &
                stick, unread, normal, unread, unread, unread, unread, unread, unread, props, area, &
                unread, unread, unread, unread)
-    mlen = ifl_last_error_copy(msg, int(size(msg), c_size_t))
-    text = ' '
-    do j = 1, min(int(mlen), len(text))
-      text(j:j) = msg(j)
-    end do
+    text = last_error()
     dig = 0
     do k = 1, n
       do j = 1, nf
         call digest(dig, transfer(ftan(j, k), 0_int64))
       end do
     end do
-    do j = 1, min(int(mlen), len(text))
+    do j = 1, len_trim(text)
       call digest(dig, int(ichar(text(j:j)), int64))
     end do
 
@@ -196,16 +185,11 @@ contains
         write (point, '(a,i0,a)') '(contact point ', last_bad, ')'
         if (index(text, trim(head)) /= 1 .or. index(text, trim(point)) == 0) &
           what = 'bad-point message lacks VFRIC, the interaction or the last bad point'
-      else if (mlen /= 0) then
+      else if (text /= ' ') then
         what = 'a good block left a message'
       end if
     end if
-    if (what /= ' ') then
-      !$omp critical (vfric_omp_first_bad)
-      bad = bad + 1
-      if (first_bad == ' ') write (first_bad, '(a,i0,a,a)') 'block ', ib, ': ', trim(what)
-      !$omp end critical (vfric_omp_first_bad)
-    end if
+    if (what /= ' ') call block_violation(ib, trim(what))
     deallocate (ftan, statev, normal, stick, area, slave, isbad)
   end subroutine run_block
 
@@ -215,11 +199,7 @@ program test_vfric_omp
   use vfric_omp_support
   use harness_omp
   implicit none
-  integer :: shrink, nblocks
 
-  shrink = shrink_factor(full_blocks/min_blocks)
-  nblocks = full_blocks/shrink
-  call omp_block_runs('VFRIC', 'docs/vfric.md', kind_names, nblocks, shrink, run_block, &
-                      min_bad_points=nblocks/(2*n_kinds))
+  call omp_block_runs('VFRIC', 'docs/vfric.md', kind_names, run_block, .true.)
   call finish()
 end program test_vfric_omp
