@@ -4,9 +4,9 @@ C     (test_fric_f1.f, test_fric_bad_input.f, test_fric_rate.f,
 C     test_gapcon_t1.f, test_gapcon_bad_input.f, test_vfric.f): the
 C     tally TALLY0 / CHECK / CHKNR / TALLYE, the sentinel guard GUARD1,
 C     the FRIC arguments preset to the sentinel before a call (SENTAL,
-C     SENTOU), the host arguments a
-C     Coulomb call does not use (HOSTIN), the Coulomb point of scene
-C     F1 (F1PT), a NaN and an Inf made at run time (NANINF), the
+C     SENTOU), the host arguments a Coulomb call does not use (HOSTIN;
+C     HOSTAT, where and when the point is, also serves GAPIN), the
+C     Coulomb point of scene F1 (F1PT), a NaN and an Inf made at run time (NANINF), the
 C     thread's last library message (GETMSG) and one checked GAPCON
 C     call (GAPONE, with SAMEB).
 C     Fixed-form Fortran 77 like its callers, which share with it
@@ -127,8 +127,8 @@ C     of a history: TAU and STATEV carry the state).
 
 C-----------------------------------------------------------------------
 C     The host arguments the Coulomb law does not use, filled as a host
-C     would (step 1 at time 0, Delta t = 0.1, identity DROT, contact at
-C     node 7, point 1, element 0, SLIP(1..MG) = 0), and the names:
+C     would (HOSTAT at time 0 and 20 degrees, Delta t = 0.1, identity
+C     DROT, point 1, element 0, SLIP(1..MG) = 0), and the names:
 C     interaction NAME between surfaces 'SLAVE' and 'MASTER'.
 C-----------------------------------------------------------------------
       SUBROUTINE HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,
@@ -141,33 +141,52 @@ C-----------------------------------------------------------------------
       CINAME = NAME
       SLNAME = 'SLAVE'
       MSNAME = 'MASTER'
-      KSTEP = 1
-      KINC = 1
-      TIME(1) = 0.0D0
-      TIME(2) = 0.0D0
+      CALL HOSTAT(0.0D0, 20.0D0, 20.0D0, TIME, TEMP, PREDEF, COORDS,
+     1 KSTEP, KINC, NODE, NPRED)
       DTIME = 0.1D0
       NOEL = 0
       NPT = 1
-      NODE = 7
       NPATCH = 1
       MCRD = 3
-      NPRED = 1
+      DDPDDH = 1.0D6
       DO 10 I = 1, 3
-        COORDS(I) = 0.0D0
         RCOORD(I) = 0.0D0
    10 CONTINUE
-      DROT(1,1) = 1.0D0
-      DROT(2,1) = 0.0D0
-      DROT(1,2) = 0.0D0
-      DROT(2,2) = 1.0D0
-      TEMP(1) = 20.0D0
-      TEMP(2) = 20.0D0
+C     DROT the identity: the local directions are not rotated.
+      DO 30 J = 1, 2
+        DO 20 I = 1, 2
+          DROT(I,J) = 0.0D0
+   20   CONTINUE
+        DROT(J,J) = 1.0D0
+   30 CONTINUE
+      DO 40 I = 1, MG
+        SLIP(I) = 0.0D0
+   40 CONTINUE
+      END
+
+C-----------------------------------------------------------------------
+C     Where and when a host point is, for FRIC (HOSTIN) and GAPCON
+C     (GAPIN) alike: step 1, increment 1 at time T (TIME(1) = TIME(2) =
+C     T), surface temperatures TEMP = (TA, TB), one predefined field at
+C     0 on both surfaces, node 7 at the origin.
+C-----------------------------------------------------------------------
+      SUBROUTINE HOSTAT(T, TA, TB, TIME, TEMP, PREDEF, COORDS, KSTEP,
+     1 KINC, NODE, NPRED)
+      INCLUDE 'ABA_PARAM.INC'
+      DIMENSION TIME(2),TEMP(2),PREDEF(2,1),COORDS(3)
+      KSTEP = 1
+      KINC = 1
+      TIME(1) = T
+      TIME(2) = T
+      TEMP(1) = TA
+      TEMP(2) = TB
+      NPRED = 1
       PREDEF(1,1) = 0.0D0
       PREDEF(2,1) = 0.0D0
-      DDPDDH = 1.0D6
-      DO 20 I = 1, MG
-        SLIP(I) = 0.0D0
-   20 CONTINUE
+      NODE = 7
+      DO 10 I = 1, 3
+        COORDS(I) = 0.0D0
+   10 CONTINUE
       END
 
 C-----------------------------------------------------------------------
@@ -266,8 +285,8 @@ C-----------------------------------------------------------------------
       END
 
 C     The GAPCON arguments before a call: AK(1..5) the sentinel, D =
-C     (CLR, P), TEMP = (TA, TB), node 7, step 1, increment 1 at time 1,
-C     and harmless zeros in what GAPCON does not read.
+C     (CLR, P), HOSTAT at time 1 with TEMP = (TA, TB), and harmless
+C     zeros in what GAPCON does not read.
       SUBROUTINE GAPIN(AK,D,FLOWM,TEMP,PREDEF,TIME,COORDS,NODE,NPRED,
      1 KSTEP,KINC,CLR,P,TA,TB)
       INCLUDE 'ABA_PARAM.INC'
@@ -281,19 +300,8 @@ C     and harmless zeros in what GAPCON does not read.
       D(2) = P
       FLOWM(1) = 0.0D0
       FLOWM(2) = 0.0D0
-      TEMP(1) = TA
-      TEMP(2) = TB
-      PREDEF(1,1) = 0.0D0
-      PREDEF(2,1) = 0.0D0
-      TIME(1) = 1.0D0
-      TIME(2) = 1.0D0
-      COORDS(1) = 0.0D0
-      COORDS(2) = 0.0D0
-      COORDS(3) = 0.0D0
-      NODE = 7
-      NPRED = 1
-      KSTEP = 1
-      KINC = 1
+      CALL HOSTAT(1.0D0, TA, TB, TIME, TEMP, PREDEF, COORDS, KSTEP,
+     1 KINC, NODE, NPRED)
       END
 
 C     A and B the same bit for bit (a NaN equals that same NaN).

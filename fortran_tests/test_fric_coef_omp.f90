@@ -139,8 +139,8 @@ contains
         do d = 1, 2
           mu = (ms(d)*e + mk(d)*ome)*pi*th
           dr = -props(10)*(ms(d) - mk(d))*e*pi*th
-          if (.not. (abs(coef(k, d) - mu) <= 1e-13_dp*mu)) write (what, '(a,i0,a,i0,2es25.17)') &
-            'mu(', k, ',', d, coef(k, d), mu
+          if (.not. (abs(coef(k, d) - mu) <= 1e-13_dp*mu)) write (what, '(a,i0,a,i0,a,2es25.17)') &
+            'mu(', k, ',', d, ')', coef(k, d), mu
           if (.not. (abs(deriv(k, 1, d) - dr) <= 4e-12_dp*props(10)*props(2))) &
             write (what, '(a,i0,2es25.17)') 'd mu/d rate at ', k, deriv(k, 1, d), dr
           if ((press(k) < 0 .or. .not. pref) .and. deriv(k, 2, d) /= 0) what = 'd mu/d p not 0'
