@@ -72,15 +72,22 @@ contains
 
   ! One FRIC call as the host makes it: the outputs that are not also inputs preset to the
   ! sentinel (so an entry that should have been written cannot pass by accident), PNEWDT = 1e36
-  ! as Abaqus passes it.
-  subroutine fric_call(a)
+  ! as Abaqus passes it. With keep_outputs, those outputs go in as the caller left them (a call
+  ! that writes nothing leaves them so), PNEWDT still 1e36.
+  subroutine fric_call(a, keep_outputs)
     type(fric_args), intent(inout) :: a
-    a%ddtddg = sentinel
-    a%ddtddp = sentinel
-    a%dslip = sentinel
-    a%ddtddt = sentinel
-    a%sed = sentinel
-    a%sfd = sentinel
+    logical, intent(in), optional :: keep_outputs
+    logical :: preset
+    preset = .true.
+    if (present(keep_outputs)) preset = .not. keep_outputs
+    if (preset) then
+      a%ddtddg = sentinel
+      a%ddtddp = sentinel
+      a%dslip = sentinel
+      a%ddtddt = sentinel
+      a%sed = sentinel
+      a%sfd = sentinel
+    end if
     a%pnewdt = big
     call fric(a%lm, a%tau, a%ddtddg, a%ddtddp, a%dslip, a%sed, a%sfd, &
               a%ddtddt, a%pnewdt, a%statev, a%dgam, a%taulm, a%press, a%dpress, a%ddpddh, a%slip, &

@@ -32,7 +32,7 @@ C
 C     Case 0 is the untouched baseline (it must succeed, so that every
 C     failure below comes from its one bad argument).  NFDIR = 0 and 3
 C     (cases 1, 2) are bad for either host dimension: run them once.
-      DO 20 ICASE = 0, 10
+      DO 20 ICASE = 0, 11
         DO 10 NDIR = 1, 2
           IF ((ICASE .EQ. 1 .OR. ICASE .EQ. 2) .AND. NDIR .EQ. 1)
      1     GO TO 10
@@ -51,20 +51,24 @@ C        1 NFDIR = 0             7 DGAM(1) = +Inf
 C        2 NFDIR = 3             8 NSTATV = 2
 C        3 NPROPS = 1            9 CHRLNGTH = 0 with PROPS(5) = 0
 C        4 PROPS(1) = 3         10 LM = 5 on entry
-C        5 PROPS(2) = mu < 0, then again with PNEWDT = 0.1 on entry
+C        5 PROPS(2) = mu < 0    11 PROPS(2) = mu < 0 from a host that
+C                                  had already asked for a smaller
+C                                  increment (PNEWDT = 0.1 on entry):
+C                                  PNEWDT is only ever lowered, so it
+C                                  stays 0.1
 C-----------------------------------------------------------------------
       SUBROUTINE BADONE(ICASE, NDIR, XNAN, XINF)
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
       INCLUDE 'fric_host.inc'
       DIMENSION PROPS(7),TAUIN(MG),SVIN(MSV),DGIN(MG),PRIN(7)
-      CHARACTER*12 KEY(0:10)
+      CHARACTER*12 KEY(0:11)
       CHARACTER*200 EXPECT
       CHARACTER*512 MSG
       LOGICAL VALID
       DATA KEY /' ', 'NFDIR = 0', 'NFDIR = 3', 'NPROPS = 1',
      1 'PROPS(1)', 'PROPS(2)', 'PRESS', 'DGAM', 'NSTATV = 2',
-     2 'CHRLNGTH', 'LM = 5'/
+     2 'CHRLNGTH', 'LM = 5', 'PROPS(2)'/
 C
       WRITE (CASE,'(A,I0,A,I0)') 'bad input case ', ICASE,
      1 ' host NFDIR=', NDIR
@@ -94,7 +98,7 @@ C
       IF (ICASE .EQ. 2) NFDIR = 3
       IF (ICASE .EQ. 3) NPROPS = 1
       IF (ICASE .EQ. 4) PROPS(1) = 3.0D0
-      IF (ICASE .EQ. 5) PROPS(2) = -0.3D0
+      IF (ICASE .EQ. 5 .OR. ICASE .EQ. 11) PROPS(2) = -0.3D0
       IF (ICASE .EQ. 6) PRESS = XNAN
       IF (ICASE .EQ. 7) DGAM(1) = XINF
       IF (ICASE .EQ. 8) NSTATV = 2
@@ -103,6 +107,11 @@ C
         PROPS(5) = 0.0D0
       END IF
       IF (ICASE .EQ. 10) LM = 5
+      PNWANT = 0.25D0
+      IF (ICASE .EQ. 11) THEN
+        PNEWDT = 0.1D0
+        PNWANT = 0.1D0
+      END IF
       LMIN = LM
       DO 12 I = 1, MG
         TAUIN(I) = TAU(I)
@@ -137,7 +146,8 @@ C       points along TAU + k_s DGAM, |.| > gc, so tau = mu p n.
         RETURN
       END IF
 C
-      CALL CHECK(PNEWDT .EQ. 0.25D0, 'PNEWDT = 0.25', 0)
+      CALL CHECK(PNEWDT .EQ. PNWANT,
+     1 'PNEWDT = 0.25 (0.1 when 0.1 on entry)', 0)
       CALL CHECK(LM .EQ. LMIN, 'LM unchanged', 0)
       CALL SAME(TAU, TAUIN, MG, 'TAU unchanged (all entries)')
       CALL SAME(STATEV, SVIN, MSV, 'STATEV unchanged (all entries)')
@@ -187,19 +197,6 @@ C
      1 'message names the bad argument', 0)
       IF (NFAIL .GT. NF0 .AND. NFAIL .LE. 40) WRITE (*,'(2A)')
      1 '   message: ', MSG(1:MIN(L,200))
-C
-C     Case 5 again with a host that had already asked for a smaller
-C     increment: PNEWDT is only ever lowered.
-      IF (ICASE .EQ. 5) THEN
-        PNEWDT = 0.1D0
-        CALL FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,
-     1   DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,
-     2   KSTEP,KINC,TIME,DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,
-     3   NPATCH,COORDS,RCOORD,DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,
-     4   NSTATV,CHRLNGTH,PROPS,NPROPS)
-        CALL CHECK(PNEWDT .EQ. 0.1D0, 'PNEWDT 0.1 on entry stays 0.1',
-     1   0)
-      END IF
       END
 
 C-----------------------------------------------------------------------

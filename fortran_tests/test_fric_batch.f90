@@ -41,6 +41,7 @@ end module batch_api
 
 module batch_points
   use harness_tally, only: dp, finish, scene, check
+  use harness_fric_host, only: fric_args, new_point, fric_call
   implicit none
   integer, parameter :: np = 33, ld = 37, nsv = 3
   real(dp), parameter :: unset = 12345.678_dp, big = 1.0e36_dp
@@ -89,66 +90,48 @@ contains
     end do
   end subroutine random_batch
 
-  ! The same points through FRIC, one call each, the results stored back in the batch layout.
-  ! Returns the smallest PNEWDT FRIC asked for.
+  ! The same points through FRIC, one call each (the host point of harness_fric_host.f90), the
+  ! results stored back in the batch layout. The outputs go in as the batch holds them, so that a
+  ! point FRIC does not write keeps them as the batch entry does. Returns the smallest PNEWDT
+  ! FRIC asked for.
   function per_point(b, nfdir, props, dtime) result(pnewdt)
     type(batch), intent(inout) :: b
     integer, intent(in) :: nfdir
     real(dp), intent(in) :: props(:), dtime
     real(dp) :: pnewdt
-    integer :: i, a, c, lm, nprops
-    real(dp) :: tau(2), ddtddg(4), ddtddp(2), dslip(2), sed, sfd, ddtddt(4), pn, statev(nsv)
-    real(dp) :: dgam(2), taulm(2), slip(2), time(2), coords(3), rcoord(3), drot(2, 2)
-    real(dp) :: temp(2), predef(2, 1), props_(8)
-    character(len=80) :: ciname, slname, msname
+    type(fric_args) :: a
+    integer :: i, n, n2
     pnewdt = big
-    nprops = size(props)
-    props_ = 0
-    props_(1:nprops) = props
-    ciname = 'SI1'
-    slname = 'SLAVE'
-    msname = 'MASTER'
-    time = 0
-    coords = 0
-    rcoord = 0
-    drot = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
-    temp = 20
-    predef = 0
-    slip = 0
+    n = nfdir
+    n2 = nfdir*nfdir
+    a = new_point(nfdir, props, 'SI1')
+    a%dtime = dtime
+    a%nstatv = nsv
     do i = 1, np
-      lm = b%lm(i)
-      sed = b%sed(i)
-      sfd = b%sfd(i)
-      do a = 1, nfdir
-        tau(a) = b%tau(i, a)
-        dgam(a) = b%dgam(i, a)
-        taulm(a) = b%taulm(i, a)
-        ddtddp(a) = b%ddtddp(i, a)
-        dslip(a) = b%dslip(i, a)
-        do c = 1, nfdir
-          ddtddg(a + (c - 1)*nfdir) = b%ddtddg(i, a + (c - 1)*nfdir)
-        end do
-      end do
-      statev = b%statev(i, :)
-      ddtddt = 0
-      pn = big
-      call fric(lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pn, statev, dgam, taulm, &
-                b%press(i), b%dpress(i), 1.0e6_dp, slip, 1, 1, time, dtime, 0, ciname, slname, &
-                msname, 1, 1, 1, coords, rcoord, drot, temp, predef, nfdir, 3, 1, nsv, b%chr(i), &
-                props_, nprops)
-      pnewdt = min(pnewdt, pn)
-      b%lm(i) = lm
-      b%sed(i) = sed
-      b%sfd(i) = sfd
-      do a = 1, nfdir
-        b%tau(i, a) = tau(a)
-        b%ddtddp(i, a) = ddtddp(a)
-        b%dslip(i, a) = dslip(a)
-        do c = 1, nfdir
-          b%ddtddg(i, a + (c - 1)*nfdir) = ddtddg(a + (c - 1)*nfdir)
-        end do
-      end do
-      b%statev(i, :) = statev
+      a%lm = b%lm(i)
+      a%sed = b%sed(i)
+      a%sfd = b%sfd(i)
+      a%tau(1:n) = b%tau(i, 1:n)
+      a%dgam(1:n) = b%dgam(i, 1:n)
+      a%taulm(1:n) = b%taulm(i, 1:n)
+      a%ddtddp(1:n) = b%ddtddp(i, 1:n)
+      a%dslip(1:n) = b%dslip(i, 1:n)
+      a%ddtddg(1:n2) = b%ddtddg(i, 1:n2)
+      a%statev(1:nsv) = b%statev(i, :)
+      a%ddtddt = 0
+      a%press = b%press(i)
+      a%dpress = b%dpress(i)
+      a%chrlngth = b%chr(i)
+      call fric_call(a, keep_outputs=.true.)
+      pnewdt = min(pnewdt, a%pnewdt)
+      b%lm(i) = a%lm
+      b%sed(i) = a%sed
+      b%sfd(i) = a%sfd
+      b%tau(i, 1:n) = a%tau(1:n)
+      b%ddtddp(i, 1:n) = a%ddtddp(1:n)
+      b%dslip(i, 1:n) = a%dslip(1:n)
+      b%ddtddg(i, 1:n2) = a%ddtddg(1:n2)
+      b%statev(i, :) = a%statev(1:nsv)
     end do
   end function per_point
 

@@ -21,15 +21,17 @@ C     harness_f77.f.
 C=======================================================================
       PROGRAM TVFRIC
       INCLUDE 'ABA_PARAM.INC'
-      COMMON /TALLY/ NPASS,NFAIL
+C     The blocks run for each nFricDir (BLOCK's ICAP, IBAD): no cap, the
+C     tau_max cap, the cap with a negative stick force at point 2, the
+C     adhesive law (refused).
+      DIMENSION ICAPS(4), IBADS(4)
+      DATA ICAPS /0, 1, 1, 0/
+      DATA IBADS /0, 0, 1, 2/
       CALL TALLY0
       DO 20 NFD = 1, 2
-        DO 10 ICAP = 0, 1
-          CALL BLOCK(NFD, ICAP, 0)
+        DO 10 K = 1, 4
+          CALL BLOCK(NFD, ICAPS(K), IBADS(K))
    10   CONTINUE
-C       A negative stick force at point 2; an adhesive PROPS.
-        CALL BLOCK(NFD, 1, 1)
-        CALL BLOCK(NFD, 0, 2)
    20 CONTINUE
       CALL TALLYE
       END

@@ -98,10 +98,17 @@ contains
     digest_of = ior(ishft(h(1), 31), h(2))
   end function digest_of
 
-  ! The point's law and the start of its history, from its global number alone.
+  ! The point's law and the start of its history, from its global number alone. The FRIC
+  ! categories 0..5: 0 mostly elastic stick; 1 stick and slip, gamma_crit = PROPS(6) * CHRLNGTH,
+  ! PROPS(3) = mu (isotropic); 2 mostly slip, tau_max in [5, 20] caps mu p on the higher
+  ! pressures; 3 exact stick; 4 exact stick with gamma_crit from the default tolerance
+  ! 0.005 * CHRLNGTH; 5 rough. Each with its NFDIR, PROPS(7) (elastic, exact stick, rough) and
+  ! the amplitude of its imposed slip (in gamma_crit).
   function new_point(id) result(s)
     integer, intent(in) :: id
     type(point) :: s
+    integer, parameter :: nfdirs(0:5) = [1, 2, 2, 1, 2, 2], stick(0:5) = [0, 0, 0, 1, 1, 2]
+    real(dp), parameter :: amplitudes(0:5) = [0.4_dp, 1.5_dp, 3.0_dp, 2.0_dp, 2.0_dp, 1.0_dp]
     real(dp) :: mu
     integer :: i
     s%id = id
@@ -117,42 +124,22 @@ contains
     s%props(1) = 1
     s%props(2) = mu
     s%gc = 1.0e-4_dp + 9.0e-4_dp*uniform(s%rng)
+    s%nfdir = nfdirs(s%cat)
+    s%props(7) = stick(s%cat)
+    s%amplitude = amplitudes(s%cat)
     select case (s%cat)
-    case (0)
-      ! Mostly elastic stick.
-      s%nfdir = 1
-      s%props(5) = s%gc
-      s%amplitude = 0.4_dp
     case (1)
-      ! Stick and slip, gamma_crit = PROPS(6) * CHRLNGTH, PROPS(3) = mu (isotropic).
-      s%nfdir = 2
       s%props(3) = mu
       s%props(6) = 0.002_dp + 0.008_dp*uniform(s%rng)
       s%gc = s%props(6)*s%chrlngth
-      s%amplitude = 1.5_dp
       s%nprops = 6
     case (2)
-      ! Mostly slip, tau_max in [5, 20] caps mu p on the higher pressures.
-      s%nfdir = 2
       s%props(4) = 5 + 15*uniform(s%rng)
       s%props(5) = s%gc
-      s%amplitude = 3
-    case (3)
-      s%nfdir = 1
-      s%props(5) = s%gc
-      s%props(7) = 1
-      s%amplitude = 2
     case (4)
-      ! Exact stick with gamma_crit from the default tolerance 0.005 * CHRLNGTH.
-      s%nfdir = 2
-      s%props(7) = 1
       s%gc = 0.005_dp*s%chrlngth
-      s%amplitude = 2
-    case (5)
-      s%nfdir = 2
+    case default
       s%props(5) = s%gc
-      s%props(7) = 2
-      s%amplitude = 1
     end select
   end function new_point
 
