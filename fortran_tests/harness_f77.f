@@ -6,12 +6,15 @@ C     tally TALLY0 / CHECK / CHKNR / TALLYE, the sentinel guard GUARD1,
 C     the FRIC arguments preset to the sentinel before a call (SENTAL,
 C     SENTOU), the host arguments a Coulomb call does not use (HOSTIN;
 C     HOSTAT, where and when the point is, also serves GAPIN), the
-C     Coulomb point of scene F1 (F1PT), a NaN and an Inf made at run time (NANINF), the
-C     thread's last library message (GETMSG) and one checked GAPCON
-C     call (GAPONE, with SAMEB).
+C     Coulomb point of scene F1 (F1PT), the host point of
+C     fric_host.inc with its one CALL FRIC (HOSTPT, F1HOST, FRICH), a
+C     NaN and an Inf made at run time (NANINF), the thread's last
+C     library message (GETMSG) and one checked GAPCON call (GAPONE,
+C     with SAMEB).
 C     Fixed-form Fortran 77 like its callers, which share with it
 C       COMMON /TALLY/ NPASS,NFAIL   (zeroed by TALLY0)
-C       COMMON /CTX/ CASE            (CHARACTER*48, the current case).
+C       COMMON /CTX/ CASE            (CHARACTER*48, the current case)
+C       COMMON /FHOST/, /FHOSTN/     (the host point, fric_host.inc).
 C     Built once (object library fortran_harness_f77) and linked into
 C     every fixed-form harness (fortran_tests/CMakeLists.txt).
 C=======================================================================
@@ -162,6 +165,38 @@ C     DROT the identity: the local directions are not rotated.
       DO 40 I = 1, MG
         SLIP(I) = 0.0D0
    40 CONTINUE
+      END
+
+C-----------------------------------------------------------------------
+C     The host point of fric_host.inc (COMMON /FHOST/, /FHOSTN/): HOSTIN
+C     for interaction NAME (HOSTPT); that and the Coulomb point of scene
+C     F1 (F1HOST); FRIC called there as Abaqus calls it, a plain CALL
+C     with the 39 arguments (FRICH).
+C-----------------------------------------------------------------------
+      SUBROUTINE HOSTPT(NAME)
+      INCLUDE 'ABA_PARAM.INC'
+      INCLUDE 'fric_host.inc'
+      CHARACTER*(*) NAME
+      CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
+     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG,CINAME,SLNAME,
+     2 MSNAME,NAME)
+      END
+
+      SUBROUTINE F1HOST(NAME)
+      INCLUDE 'ABA_PARAM.INC'
+      INCLUDE 'fric_host.inc'
+      CHARACTER*(*) NAME
+      CALL HOSTPT(NAME)
+      CALL F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
+      END
+
+      SUBROUTINE FRICH
+      INCLUDE 'ABA_PARAM.INC'
+      INCLUDE 'fric_host.inc'
+      CALL FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,
+     1 STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,KSTEP,KINC,TIME,
+     2 DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,NPATCH,COORDS,RCOORD,
+     3 DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,NSTATV,CHRLNGTH,PROPS,NPROPS)
       END
 
 C-----------------------------------------------------------------------

@@ -16,8 +16,9 @@ C     an earlier case cannot pass.  A caller that declares CHARACTER*8
 C     names (old user code) checks that the hidden length is trusted.
 C
 C     The tally (TALLY0, CHECK, CHKNR, TALLYE: last line "<n> passed,
-C     <m> failed"), GUARD1, SENTAL, HOSTIN, F1PT, NANINF and GETMSG come
-C     from harness_f77.f, a host point's declarations from fric_host.inc.
+C     <m> failed"), GUARD1, SENTAL, F1HOST, FRICH (the plain CALL FRIC
+C     of the host point), HOSTIN, F1PT, NANINF and GETMSG come from
+C     harness_f77.f, the host point (COMMON) from fric_host.inc.
 C
 C=======================================================================
       PROGRAM TFBAD
@@ -61,7 +62,7 @@ C-----------------------------------------------------------------------
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
       INCLUDE 'fric_host.inc'
-      DIMENSION PROPS(7),TAUIN(MG),SVIN(MSV),DGIN(MG),PRIN(7)
+      DIMENSION TAUIN(MG),SVIN(MSV),DGIN(MG),PRIN(7)
       CHARACTER*12 KEY(0:11)
       CHARACTER*200 EXPECT
       CHARACTER*512 MSG
@@ -72,12 +73,9 @@ C-----------------------------------------------------------------------
 C
       WRITE (CASE,'(A,I0,A,I0)') 'bad input case ', ICASE,
      1 ' host NFDIR=', NDIR
-      CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
-     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG,CINAME,SLNAME,
-     2 MSNAME,' ')
+      CALL F1HOST(' ')
       WRITE (CINAME,'(A,I2.2,A,I1)') 'CP-BAD', ICASE, '-', NDIR
       NFDIR = NDIR
-      CALL F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
       PROPS(6) = SENT
       PROPS(7) = SENT
       LM = 0
@@ -124,11 +122,7 @@ C
         PRIN(I) = PROPS(I)
    14 CONTINUE
 C
-      CALL FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,
-     1 DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,
-     2 KSTEP,KINC,TIME,DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,
-     3 NPATCH,COORDS,RCOORD,DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,
-     4 NSTATV,CHRLNGTH,PROPS,NPROPS)
+      CALL FRICH
 C
       IF (ICASE .EQ. 0) THEN
 C       Baseline, mid-slip at the plateau: gamma_pr = gc n + DGAM

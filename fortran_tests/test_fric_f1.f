@@ -2,7 +2,8 @@ C=======================================================================
 C     test_fric_f1.f -- scene F1 "pull to plateau" through FRIC, called
 C     the way a legacy Abaqus/Standard host calls a user subroutine:
 C     fixed-form Fortran 77, INCLUDE 'ABA_PARAM.INC', CHARACTER*80
-C     names and a plain CALL FRIC(...) with the 39 Abaqus arguments;
+C     names and a plain CALL FRIC(...) with the 39 Abaqus arguments
+C     (FRICH in harness_f77.f, on the host point of fric_host.inc);
 C     no interface block, no ISO_C_BINDING.  The library's fric_ has
 C     to link and answer unchanged.
 C
@@ -14,8 +15,8 @@ C     Output arrays are declared longer than NFDIR (STATEV longer than
 C     NSTATV); their tails hold a sentinel that must survive each call.
 C
 C     TALLY0, CHECK, CHKNR, TALLYE (the tally and its last line), GUARD1,
-C     SENTAL, SENTOU, HOSTIN and F1PT come from harness_f77.f, a host
-C     point's declarations from fric_host.inc.
+C     SENTAL, SENTOU, HOSTPT, F1HOST and FRICH come from harness_f77.f,
+C     the host point (COMMON) from fric_host.inc.
 C
 C=======================================================================
       PROGRAM TFRIC1
@@ -56,15 +57,13 @@ C-----------------------------------------------------------------------
       INCLUDE 'ABA_PARAM.INC'
       INCLUDE 'fric_host.inc'
       PARAMETER (NUP=75)
-      DIMENSION PROPS(7),E(2),DGIN(MG)
+      DIMENSION E(2),DGIN(MG)
       LOGICAL SLIPS
 C
       NFDIR = NDIR
       WRITE (CASE,'(A,I1,A,I1,A,I1)') 'F1 pull NFDIR=', NFDIR,
      1 ' gcsrc=', IGSRC, ' cap=', ICAP
-      CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
-     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG,CINAME,SLNAME,
-     2 MSNAME,'F1-PULL')
+      CALL HOSTPT('F1-PULL')
 C
       XMU = 0.3D0
       P = 100.0D0
@@ -170,11 +169,7 @@ C
    10   CONTINUE
         CALL SENTOU(DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,MG)
 C
-        CALL FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,
-     1   DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,
-     2   KSTEP,KINC,TIME,DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,
-     3   NPATCH,COORDS,RCOORD,DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,
-     4   NSTATV,CHRLNGTH,PROPS,NPROPS)
+        CALL FRICH
 C
         CALL CHECK(LM .EQ. 0, 'LM = 0 in elastic stick', K)
         CALL CHECK(PNEWDT .EQ. BIG, 'PNEWDT never lowered', K)
@@ -283,12 +278,8 @@ C-----------------------------------------------------------------------
       SUBROUTINE LMTWO
       INCLUDE 'ABA_PARAM.INC'
       INCLUDE 'fric_host.inc'
-      DIMENSION PROPS(7)
 C
-      CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
-     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG,CINAME,SLNAME,
-     2 MSNAME,'F1-LM2')
-      CALL F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
+      CALL F1HOST('F1-LM2')
       DO 50 NFDIR = 1, 2
         WRITE (CASE,'(A,I1)') 'F1 LM=2 on entry NFDIR=', NFDIR
         CALL SENTAL(TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,
@@ -298,11 +289,7 @@ C
           TAULM(I) = 50.0D0
    10   CONTINUE
         LM = 2
-        CALL FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,
-     1   DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,
-     2   KSTEP,KINC,TIME,DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,
-     3   NPATCH,COORDS,RCOORD,DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,
-     4   NSTATV,CHRLNGTH,PROPS,NPROPS)
+        CALL FRICH
         CALL CHECK(LM .EQ. 2, 'LM = 2 stays 2', 1)
         CALL CHECK(PNEWDT .EQ. BIG, 'PNEWDT untouched', 1)
         CALL CHECK(SED .EQ. SENT .AND. SFD .EQ. SENT,
@@ -325,12 +312,8 @@ C-----------------------------------------------------------------------
       SUBROUTINE ROUGH
       INCLUDE 'ABA_PARAM.INC'
       INCLUDE 'fric_host.inc'
-      DIMENSION PROPS(7)
 C
-      CALL HOSTIN(KSTEP,KINC,TIME,DTIME,NOEL,NPT,NODE,NPATCH,COORDS,
-     1 RCOORD,DROT,TEMP,PREDEF,MCRD,NPRED,DDPDDH,SLIP,MG,CINAME,SLNAME,
-     2 MSNAME,'F1-ROUGH')
-      CALL F1PT(PROPS, NPROPS, CHRLNGTH, NSTATV, PRESS, DPRESS)
+      CALL F1HOST('F1-ROUGH')
       PROPS(6) = 0.0D0
       PROPS(7) = 2.0D0
       NPROPS = 7
@@ -351,11 +334,7 @@ C       LMIN = 1: next iteration with a Lagrange stress 1e3 mu p.
           STATEV(2) = 0.1D0
           STATEV(3) = 1.0D0
           LM = LMIN
-          CALL FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,
-     1     DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,DPRESS,DDPDDH,SLIP,
-     2     KSTEP,KINC,TIME,DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,
-     3     NPATCH,COORDS,RCOORD,DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,
-     4     NSTATV,CHRLNGTH,PROPS,NPROPS)
+          CALL FRICH
           CALL CHECK(LM .EQ. 1, 'rough returns LM = 1', 1)
           CALL CHECK(PNEWDT .EQ. BIG, 'PNEWDT untouched', 1)
           DO 20 I = 1, NFDIR
