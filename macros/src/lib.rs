@@ -151,7 +151,7 @@ fn expand(attr: TokenStream, item: TokenStream) -> syn::Result<TokenStream> {
             "with_twin: expected `twin = …` after `unread`",
         ));
     };
-    let view = View::of(&spec, &export)?;
+    let view = View::of(&spec, &export, "with_twin")?;
     let View { item, build, .. } = &view;
     let sig = &export.sig;
     let names = view.params.iter().map(|(name, _)| name);
@@ -192,7 +192,7 @@ fn expand_view(attr: TokenStream, item: TokenStream) -> syn::Result<TokenStream>
             "with_view: takes no twin (see `with_twin`)",
         ));
     }
-    let View { item, build, .. } = View::of(&spec, &export)?;
+    let View { item, build, .. } = View::of(&spec, &export, "with_view")?;
     let unread = &spec.unread;
     let (attrs, vis, sig) = (&export.attrs, &export.vis, &export.sig);
     let stmts = &export.block.stmts;
@@ -219,12 +219,13 @@ struct View {
 }
 
 impl View {
-    fn of(spec: &Spec, export: &ItemFn) -> syn::Result<View> {
+    /// The view of `export`; `who` (the attribute's name) starts the messages.
+    fn of(spec: &Spec, export: &ItemFn, who: &str) -> syn::Result<View> {
         let sig = &export.sig;
         if !sig.generics.params.is_empty() || sig.variadic.is_some() {
             return Err(syn::Error::new(
                 sig.ident.span(),
-                "with_twin: the export must have no generics and no variadic part",
+                format!("{who}: the export must have no generics and no variadic part"),
             ));
         }
         let params = sig
@@ -237,12 +238,12 @@ impl View {
                     }
                     other => Err(syn::Error::new_spanned(
                         other,
-                        "with_twin: every parameter must be a plain name",
+                        format!("{who}: every parameter must be a plain name"),
                     )),
                 },
                 FnArg::Receiver(r) => Err(syn::Error::new_spanned(
                     r,
-                    "with_twin: the export cannot take `self`",
+                    format!("{who}: the export cannot take `self`"),
                 )),
             })
             .collect::<syn::Result<Vec<(Ident, Type)>>>()?;
@@ -254,7 +255,7 @@ impl View {
             return Err(syn::Error::new(
                 stray.span(),
                 format!(
-                    "with_twin: `{stray}` in `unread` is not a parameter of `{}`",
+                    "{who}: `{stray}` in `unread` is not a parameter of `{}`",
                     sig.ident
                 ),
             ));
@@ -434,5 +435,12 @@ mod tests {
         let spec = quote! { view = struct View as v, unread = (b), };
         let err = expand(spec, export()).unwrap_err().to_string();
         assert_eq!(err, "with_twin: expected `twin = …` after `unread`");
+    }
+
+    #[test]
+    fn view_alone_names_itself_in_its_refusals() {
+        let spec = quote! { view = struct View as v, unread = (z) };
+        let err = expand_view(spec, export()).unwrap_err().to_string();
+        assert_eq!(err, "with_view: `z` in `unread` is not a parameter of `ex_`");
     }
 }
