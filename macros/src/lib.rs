@@ -441,6 +441,9 @@ mod tests {
     fn view_alone_names_itself_in_its_refusals() {
         let spec = quote! { view = struct View as v, unread = (z) };
         let err = expand_view(spec, export()).unwrap_err().to_string();
-        assert_eq!(err, "with_view: `z` in `unread` is not a parameter of `ex_`");
+        assert_eq!(
+            err,
+            "with_view: `z` in `unread` is not a parameter of `ex_`"
+        );
     }
 }
