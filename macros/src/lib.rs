@@ -4,7 +4,8 @@
 //! [`with_twin`] writes an export's out-of-line twin and its argument view from the export's
 //! own text, so the parameter list is written once in the source (where cbindgen, which expands
 //! no macro, reads the export): the twin's list, the view's fields and both literals that build
-//! the view are derived from it.
+//! the view are derived from it. [`with_view`] writes the view alone, for an export without a
+//! twin.
 
 use proc_macro2::TokenStream;
 use quote::quote;
@@ -47,15 +48,41 @@ pub fn with_twin(
         .into()
 }
 
+/// [`with_twin`] without the twin, for an export whose whole body runs where the host called it:
+///
+/// ```text
+/// #[interfacial_macros::with_view(view = struct CoefArgs as args, unread = (idata, rdata))]
+/// pub unsafe extern "C" fn fric_coef_(fcoef: *mut f64, /* … */) { args.run(); }
+/// ```
+///
+/// expands to the view (as [`with_twin`] writes it) and the export, attributes and signature
+/// unchanged, its body `let _ = (idata, rdata);` (the unread parameters, named once), `let args
+/// = CoefArgs { fcoef, … };`, then its statements.
+#[proc_macro_attribute]
+pub fn with_view(
+    attr: proc_macro::TokenStream,
+    item: proc_macro::TokenStream,
+) -> proc_macro::TokenStream {
+    expand_view(attr.into(), item.into())
+        .unwrap_or_else(syn::Error::into_compile_error)
+        .into()
+}
+
 /// The attribute's arguments.
 struct Spec {
     view_attrs: Vec<Attribute>,
     view: Ident,
     binding: Ident,
     unread: Vec<Ident>,
-    twin_attrs: Vec<Attribute>,
-    twin: Ident,
-    twin_stmts: Vec<Stmt>,
+    /// `None` when the attribute names no twin (`with_view`).
+    twin: Option<Twin>,
+}
+
+/// The twin of [`with_twin`]: its attributes, name and statements.
+struct Twin {
+    attrs: Vec<Attribute>,
+    name: Ident,
+    stmts: Vec<Stmt>,
 }
 
 /// Reads `key =`, naming the expected key when it is not there.
@@ -85,25 +112,31 @@ impl Parse for Spec {
         let names;
         parenthesized!(names in input);
         let unread = Punctuated::<Ident, Token![,]>::parse_terminated(&names)?;
-        input.parse::<Token![,]>()?;
-
-        key(input, "twin")?;
-        let twin_attrs = Attribute::parse_outer(input)?;
-        let twin = input.parse()?;
-        let body;
-        braced!(body in input);
-        let twin_stmts = body.call(syn::Block::parse_within)?;
-        if !input.is_empty() {
+        let twin = if input.is_empty() {
+            None
+        } else {
             input.parse::<Token![,]>()?;
-        }
+            if input.is_empty() {
+                None
+            } else {
+                key(input, "twin")?;
+                let attrs = Attribute::parse_outer(input)?;
+                let name = input.parse()?;
+                let body;
+                braced!(body in input);
+                let stmts = body.call(syn::Block::parse_within)?;
+                if !input.is_empty() {
+                    input.parse::<Token![,]>()?;
+                }
+                Some(Twin { attrs, name, stmts })
+            }
+        };
         Ok(Spec {
             view_attrs,
             view,
             binding,
             unread: unread.into_iter().collect(),
-            twin_attrs,
             twin,
-            twin_stmts,
         })
     }
 }
@@ -112,84 +145,145 @@ impl Parse for Spec {
 fn expand(attr: TokenStream, item: TokenStream) -> syn::Result<TokenStream> {
     let spec: Spec = syn::parse2(attr)?;
     let export: ItemFn = syn::parse2(item)?;
+    let Some(twin) = &spec.twin else {
+        return Err(syn::Error::new(
+            export.sig.ident.span(),
+            "with_twin: expected `twin = …` after `unread`",
+        ));
+    };
+    let view = View::of(&spec, &export, "with_twin")?;
+    let View { item, build, .. } = &view;
     let sig = &export.sig;
-    if !sig.generics.params.is_empty() || sig.variadic.is_some() {
-        return Err(syn::Error::new(
-            sig.ident.span(),
-            "with_twin: the export must have no generics and no variadic part",
-        ));
-    }
-    let params = sig
-        .inputs
-        .iter()
-        .map(|arg| match arg {
-            FnArg::Typed(typed) => match &*typed.pat {
-                Pat::Ident(p) if p.by_ref.is_none() && p.subpat.is_none() => {
-                    Ok((p.ident.clone(), (*typed.ty).clone()))
-                }
-                other => Err(syn::Error::new_spanned(
-                    other,
-                    "with_twin: every parameter must be a plain name",
-                )),
-            },
-            FnArg::Receiver(r) => Err(syn::Error::new_spanned(
-                r,
-                "with_twin: the export cannot take `self`",
-            )),
-        })
-        .collect::<syn::Result<Vec<(Ident, Type)>>>()?;
-    let names: Vec<&Ident> = params.iter().map(|(name, _)| name).collect();
-    if let Some(stray) = spec.unread.iter().find(|u| !names.contains(u)) {
-        return Err(syn::Error::new(
-            stray.span(),
-            format!(
-                "with_twin: `{stray}` in `unread` is not a parameter of `{}`",
-                sig.ident
-            ),
-        ));
-    }
-    let (fields, types): (Vec<&Ident>, Vec<&Type>) = params
-        .iter()
-        .filter(|(name, _)| !spec.unread.contains(name))
-        .map(|(name, ty)| (name, ty))
-        .unzip();
-    let Spec {
-        view_attrs,
-        view,
-        binding,
-        unread,
-        twin_attrs,
-        twin,
-        twin_stmts,
-    } = &spec;
-    let view_let = quote! { let #binding = #view { #(#fields),* }; };
-
-    let attrs = &export.attrs;
-    let vis = &export.vis;
-    let stmts = &export.block.stmts;
+    let names = view.params.iter().map(|(name, _)| name);
+    let unread = &spec.unread;
+    let Twin { attrs, name, stmts } = twin;
     let mut twin_sig = sig.clone();
-    twin_sig.ident = twin.clone();
+    twin_sig.ident = name.clone();
+    let export_attrs = &export.attrs;
+    let vis = &export.vis;
+    let export_stmts = &export.block.stmts;
     Ok(quote! {
-        #(#view_attrs)*
-        struct #view {
-            #(#fields: #types,)*
+        #item
+
+        #(#export_attrs)*
+        #vis #sig {
+            #build
+            #(#export_stmts)*
+            unsafe { #name(#(#names),*) }
         }
 
         #(#attrs)*
-        #vis #sig {
-            #view_let
-            #(#stmts)*
-            unsafe { #twin(#(#names),*) }
-        }
-
-        #(#twin_attrs)*
         #[allow(clippy::too_many_arguments)]
         #twin_sig {
             let _ = (#(#unread,)*);
-            #view_let
-            #(#twin_stmts)*
+            #build
+            #(#stmts)*
         }
     })
+}
+
+/// The expansion of [`with_view`], on `proc_macro2` streams.
+fn expand_view(attr: TokenStream, item: TokenStream) -> syn::Result<TokenStream> {
+    let spec: Spec = syn::parse2(attr)?;
+    let export: ItemFn = syn::parse2(item)?;
+    if let Some(twin) = &spec.twin {
+        return Err(syn::Error::new(
+            twin.name.span(),
+            "with_view: takes no twin (see `with_twin`)",
+        ));
+    }
+    let View { item, build, .. } = View::of(&spec, &export, "with_view")?;
+    let unread = &spec.unread;
+    let (attrs, vis, sig) = (&export.attrs, &export.vis, &export.sig);
+    let stmts = &export.block.stmts;
+    Ok(quote! {
+        #item
+
+        #(#attrs)*
+        #vis #sig {
+            let _ = (#(#unread,)*);
+            #build
+            #(#stmts)*
+        }
+    })
+}
+
+/// The argument view of an export, as both attributes write it.
+struct View {
+    /// Every parameter of the export, name and type, in order.
+    params: Vec<(Ident, Type)>,
+    /// The struct: the view's attributes, one private field per parameter but the unread ones.
+    item: TokenStream,
+    /// `let binding = View { field, … };`.
+    build: TokenStream,
+}
+
+impl View {
+    /// The view of `export`; `who` (the attribute's name) starts the messages.
+    fn of(spec: &Spec, export: &ItemFn, who: &str) -> syn::Result<View> {
+        let sig = &export.sig;
+        if !sig.generics.params.is_empty() || sig.variadic.is_some() {
+            return Err(syn::Error::new(
+                sig.ident.span(),
+                format!("{who}: the export must have no generics and no variadic part"),
+            ));
+        }
+        let params = sig
+            .inputs
+            .iter()
+            .map(|arg| match arg {
+                FnArg::Typed(typed) => match &*typed.pat {
+                    Pat::Ident(p) if p.by_ref.is_none() && p.subpat.is_none() => {
+                        Ok((p.ident.clone(), (*typed.ty).clone()))
+                    }
+                    other => Err(syn::Error::new_spanned(
+                        other,
+                        format!("{who}: every parameter must be a plain name"),
+                    )),
+                },
+                FnArg::Receiver(r) => Err(syn::Error::new_spanned(
+                    r,
+                    format!("{who}: the export cannot take `self`"),
+                )),
+            })
+            .collect::<syn::Result<Vec<(Ident, Type)>>>()?;
+        if let Some(stray) = spec
+            .unread
+            .iter()
+            .find(|u| !params.iter().any(|(name, _)| name == *u))
+        {
+            return Err(syn::Error::new(
+                stray.span(),
+                format!(
+                    "{who}: `{stray}` in `unread` is not a parameter of `{}`",
+                    sig.ident
+                ),
+            ));
+        }
+        let (fields, types): (Vec<&Ident>, Vec<&Type>) = params
+            .iter()
+            .filter(|(name, _)| !spec.unread.contains(name))
+            .map(|(name, ty)| (name, ty))
+            .unzip();
+        let Spec {
+            view_attrs,
+            view,
+            binding,
+            ..
+        } = spec;
+        let item = quote! {
+            #(#view_attrs)*
+            struct #view {
+                #(#fields: #types,)*
+            }
+        };
+        let build = quote! { let #binding = #view { #(#fields),* }; };
+        Ok(View {
+            params,
+            item,
+            build,
+        })
+    }
 }
 
 #[cfg(test)]
@@ -316,5 +410,40 @@ mod tests {
         let spec = quote! { view = struct View as v, twin = t { } };
         let err = expand(spec, export()).unwrap_err().to_string();
         assert_eq!(err, "with_twin: expected `unread = …` here");
+    }
+
+    #[test]
+    fn view_alone_names_the_unread_then_builds_the_view() {
+        let spec = quote! { view = struct View as v, unread = (b) };
+        let file: File = syn::parse2(expand_view(spec, export()).unwrap()).unwrap();
+        let Ok([Item::Struct(view), Item::Fn(export)]) = <[Item; 2]>::try_from(file.items) else {
+            panic!("expected the view and the export");
+        };
+        assert_eq!(text(&view.fields), "{ a : * mut i32 , c : usize , }");
+        assert_eq!(export.sig.ident, "ex_");
+        let stmts: Vec<String> = export.block.stmts.iter().map(text).collect();
+        assert_eq!(stmts[..2], ["let _ = (b ,) ;", "let v = View { a , c } ;"]);
+        // The export's own statement follows, and nothing after it (no twin to call).
+        assert_eq!(stmts.len(), 3);
+        assert!(stmts[2].starts_with("if fast"));
+    }
+
+    #[test]
+    fn twin_and_view_alone_refuse_each_others_form() {
+        let err = expand_view(spec(), export()).unwrap_err().to_string();
+        assert_eq!(err, "with_view: takes no twin (see `with_twin`)");
+        let spec = quote! { view = struct View as v, unread = (b), };
+        let err = expand(spec, export()).unwrap_err().to_string();
+        assert_eq!(err, "with_twin: expected `twin = …` after `unread`");
+    }
+
+    #[test]
+    fn view_alone_names_itself_in_its_refusals() {
+        let spec = quote! { view = struct View as v, unread = (z) };
+        let err = expand_view(spec, export()).unwrap_err().to_string();
+        assert_eq!(
+            err,
+            "with_view: `z` in `unread` is not a parameter of `ex_`"
+        );
     }
 }

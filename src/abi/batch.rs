@@ -19,7 +19,7 @@
 
 use std::ffi::c_int;
 
-use super::{Fault, IflStatus, bad_lm, boundary, count, cut_back};
+use super::{Fault, IflStatus, bad_lm, boundary, count, cut_back, null_pointer};
 use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
 use crate::laws::coulomb_batch::{ChunkInput, ElasticStickKernel};
 use crate::props::{FrictionLaw, friction_law};
@@ -330,68 +330,74 @@ fn run<const N: usize>(
     })
 }
 
-/// [`chunks`] compiled for AVX2 when the processor has it (same IEEE operations, so the same
-/// bits; wider registers and three-operand instructions), else for the baseline.
-fn chunks_dispatch<const N: usize>(
-    kernel: &ElasticStickKernel,
-    law: &Coulomb,
-    dtime: f64,
-    v: &mut Views<'_>,
-    tally: &mut Tally,
-) -> usize {
-    #[cfg(target_arch = "x86_64")]
-    if !crate::switch::forced(crate::switch::Path::Baseline)
-        && std::arch::is_x86_feature_detected!("avx2")
-    {
-        // SAFETY: the processor supports AVX2 (checked just above).
-        return unsafe { chunks_avx2::<N>(kernel, law, dtime, v, tally) };
-    }
-    chunks::<N>(kernel, law, dtime, v, tally)
+/// A function with one parameter list and body, compiled twice (multiversioning): `$baseline`
+/// (`#[inline(always)]`) for the baseline target and `$avx2` with AVX2 enabled (the same IEEE
+/// operations, so the same bits; wider registers and three-operand instructions), and `$name`,
+/// which calls the AVX2 one when the processor has it (and no unit test forces the baseline,
+/// `crate::switch`), else the baseline one. The list and the body are written once, in the
+/// invocation.
+macro_rules! multiversioned {
+    (
+        $(#[$doc:meta])*
+        fn $name:ident | $avx2:ident | $baseline:ident <const N: usize>($($p:ident: $t:ty),* $(,)?)
+            -> $ret:ty $body:block
+    ) => {
+        $(#[$doc])*
+        fn $name<const N: usize>($($p: $t),*) -> $ret {
+            #[cfg(target_arch = "x86_64")]
+            if !crate::switch::forced(crate::switch::Path::Baseline)
+                && std::arch::is_x86_feature_detected!("avx2")
+            {
+                // SAFETY: the processor supports AVX2 (checked just above).
+                return unsafe { $avx2::<N>($($p),*) };
+            }
+            $baseline::<N>($($p),*)
+        }
+
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx2")]
+        fn $avx2<const N: usize>($($p: $t),*) -> $ret {
+            $baseline::<N>($($p),*)
+        }
+
+        #[inline(always)]
+        fn $baseline<const N: usize>($($p: $t),*) -> $ret $body
+    };
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn chunks_avx2<const N: usize>(
-    kernel: &ElasticStickKernel,
-    law: &Coulomb,
-    dtime: f64,
-    v: &mut Views<'_>,
-    tally: &mut Tally,
-) -> usize {
-    chunks::<N>(kernel, law, dtime, v, tally)
-}
-
-/// The whole chunks of the batch through the kernel; returns where the tail starts. Chunks the
-/// kernel declines go point by point after the others (each point is independent, and they
-/// keep their order, so the first failure and the reports are those of a loop in order).
-#[inline(always)]
-fn chunks<const N: usize>(
-    kernel: &ElasticStickKernel,
-    law: &Coulomb,
-    dtime: f64,
-    v: &mut Views<'_>,
-    tally: &mut Tally,
-) -> usize {
-    let m = v.lm.len() / LANES;
-    let has_taulm = v.taulm.is_some();
-    let mut declined = Vec::new();
-    match ChunkRows::new::<N>(v, m) {
-        Some(mut rows) => {
-            for k in 0..m {
-                if !rows.chunk::<N>(kernel, dtime, k, has_taulm) {
-                    declined.push(k);
+multiversioned! {
+    /// The whole chunks of the batch through the kernel; returns where the tail starts. Chunks
+    /// the kernel declines go point by point after the others (each point is independent, and
+    /// they keep their order, so the first failure and the reports are those of a loop in
+    /// order). Compiled for the baseline (`chunks`) and for AVX2 (`chunks_avx2`).
+    fn chunks_dispatch | chunks_avx2 | chunks <const N: usize>(
+        kernel: &ElasticStickKernel,
+        law: &Coulomb,
+        dtime: f64,
+        v: &mut Views<'_>,
+        tally: &mut Tally,
+    ) -> usize {
+        let m = v.lm.len() / LANES;
+        let has_taulm = v.taulm.is_some();
+        let mut declined = Vec::new();
+        match ChunkRows::new::<N>(v, m) {
+            Some(mut rows) => {
+                for k in 0..m {
+                    if !rows.chunk::<N>(kernel, dtime, k, has_taulm) {
+                        declined.push(k);
+                    }
                 }
             }
+            // Every row is `npoints` long (`Views`): not taken.
+            None => declined.extend(0..m),
         }
-        // Every row is `npoints` long (`Views`): not taken.
-        None => declined.extend(0..m),
-    }
-    for k in declined {
-        for j in k * LANES..(k + 1) * LANES {
-            tally.one::<N>(law, dtime, v, j);
+        for k in declined {
+            for j in k * LANES..(k + 1) * LANES {
+                tally.one::<N>(law, dtime, v, j);
+            }
         }
+        m * LANES
     }
-    m * LANES
 }
 
 /// Points per chunk of the elastic-stick kernel: 8 (two AVX2 registers per quantity) rather
@@ -614,7 +620,7 @@ fn point<const N: usize>(
     }
     if entry == EntryFlag::ExactStick {
         let Some(taulm) = &v.taulm else {
-            return Err(no_taulm());
+            return Err(null_pointer("TAULM"));
         };
         for (x, row) in inc.taulm.iter_mut().zip(taulm) {
             *x = row[i];
@@ -667,12 +673,6 @@ fn point<const N: usize>(
         }
     }
     Ok(up.outcome.step_ratio)
-}
-
-#[cold]
-#[inline(never)]
-fn no_taulm() -> LawError {
-    LawError::Input("LM = 1 on entry but no TAULM array was given".into())
 }
 
 /// `fric_`'s failure outputs for one point, and the report.

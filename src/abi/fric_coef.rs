@@ -3,7 +3,7 @@
 
 use std::ffi::{c_char, c_int};
 
-use super::{boundary, count, fortran_name_bytes, host_site, null_pointer, read, slice};
+use super::{count, fortran_name_bytes, host_site, null_pointer, read, slice};
 use crate::LawError;
 use crate::config::friction_table_for;
 use crate::laws::coulomb_extended::ExtendedCoulomb;
@@ -37,6 +37,12 @@ pub const FRIC_COEF_NDERIV: usize = 20;
 /// names of the given hidden lengths.
 #[allow(clippy::too_many_arguments)]
 #[unsafe(no_mangle)]
+// The view `CoefArgs` (a field per parameter but the `unread` ones, bound to `args`) is written
+// by the attribute from this parameter list (macros/).
+#[interfacial_macros::with_view(
+    view = struct CoefArgs as args,
+    unread = (nfields, idata, rdata, surf_sec, surf_main, field_avg, surf_sec_len, surf_main_len),
+)]
 pub unsafe extern "C" fn fric_coef_(
     fcoef: *mut f64,
     fcoef_deriv: *mut f64,
@@ -58,42 +64,11 @@ pub unsafe extern "C" fn fric_coef_(
     surf_sec_len: usize,
     surf_main_len: usize,
 ) {
-    let _ = (nfields, idata, rdata, surf_sec, surf_main, field_avg);
-    let _ = (surf_sec_len, surf_main_len);
-    let args = CoefArgs {
-        fcoef,
-        fcoef_deriv,
-        nblock,
-        nprops,
-        ntemp,
-        props,
-        slip_data,
-        pressure,
-        temp_avg,
-        surf_int,
-        surf_int_len,
-    };
-    let _ = boundary(
-        // SAFETY (all three closures): the host's pointers, valid per the contract above.
-        || unsafe { host_site("FRIC_COEF", surf_int, surf_int_len, "block".into()) },
-        || unsafe { args.run() },
-        || unsafe { args.fail() },
+    fortran_boundary!(
+        args,
+        // SAFETY: the name of its hidden length, per the contract above.
+        || unsafe { host_site("FRIC_COEF", surf_int, surf_int_len, "block".into()) }
     );
-}
-
-struct CoefArgs {
-    fcoef: *mut f64,
-    fcoef_deriv: *mut f64,
-    nblock: *const c_int,
-    nprops: *const c_int,
-    ntemp: *const c_int,
-    props: *const f64,
-    slip_data: *const f64,
-    pressure: *const f64,
-    temp_avg: *const f64,
-    /// The interaction name (read only for a μ table, `PROPS(8) = 2`).
-    surf_int: *const c_char,
-    surf_int_len: usize,
 }
 
 impl CoefArgs {

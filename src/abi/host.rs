@@ -17,9 +17,48 @@ pub(crate) fn state_with_guards(n: usize) -> Vec<f64> {
     statev
 }
 
-/// True when every entry of `slots` still holds [`GUARD`].
-pub(crate) fn all_guards(slots: &[f64]) -> bool {
-    slots.iter().all(|x| *x == GUARD)
+/// The output arrays of a host call, each with the number of entries the call may write
+/// (NFDIR, NDIR², NSTATV, …): every entry past that count is a guard slot. A count past the
+/// array's end (a test's deliberately bad size) leaves that array without guard slots.
+pub(crate) type Outputs<'a, const K: usize> = [(&'a mut [f64], usize); K];
+
+/// `set_guards` and `guards_intact` of a host call (`FricCall`, `UinterCall`), from its one list
+/// of output arrays, `fn outputs(&mut self) -> Outputs<'_, K>`.
+macro_rules! guard_methods {
+    () => {
+        /// Fills every output entry past what the call may write with [`GUARD`](crate::abi::host::GUARD).
+        pub fn set_guards(&mut self) {
+            $crate::abi::host::fill_guards(self.outputs());
+        }
+
+        /// True when every guard slot still holds [`GUARD`](crate::abi::host::GUARD).
+        #[must_use]
+        pub fn guards_intact(&self) -> bool {
+            // On a copy: `outputs` lends the arrays mutably (one list serves both).
+            $crate::abi::host::guards_hold(self.clone().outputs())
+        }
+    };
+}
+pub(crate) use guard_methods;
+
+/// Fills every guard slot of `outputs` with [`GUARD`].
+pub(crate) fn fill_guards<const K: usize>(outputs: Outputs<'_, K>) {
+    for (array, written) in outputs {
+        if let Some(slots) = array.get_mut(written..) {
+            slots.fill(GUARD);
+        }
+    }
+}
+
+/// True when every guard slot of `outputs` still holds [`GUARD`].
+pub(crate) fn guards_hold<const K: usize>(outputs: Outputs<'_, K>) -> bool {
+    outputs.into_iter().all(|(array, written)| {
+        array
+            .get(written..)
+            .unwrap_or(&[])
+            .iter()
+            .all(|x| *x == GUARD)
+    })
 }
 
 /// A `CHARACTER` argument as the host passes it: `name` blank-padded to `len` bytes (longer
@@ -165,31 +204,22 @@ impl FricCall {
         call
     }
 
-    /// Fills every output entry past NFDIR (or NFDIR², 2·NFDIR, NSTATV) with [`GUARD`].
-    pub fn set_guards(&mut self) {
+    /// The output arrays, each with what the call may write: NFDIR (or NFDIR², 2·NFDIR,
+    /// NSTATV) entries.
+    fn outputs(&mut self) -> Outputs<'_, 6> {
         let n = self.nfdir.clamp(0, 3) as usize;
-        let ns = (self.nstatv.max(0) as usize).min(self.statev.len());
-        self.statev[ns..].fill(GUARD);
-        self.tau[n..].fill(GUARD);
-        self.ddtddg[n * n..].fill(GUARD);
-        self.ddtddp[n..].fill(GUARD);
-        self.dslip[n..].fill(GUARD);
-        self.ddtddt[2 * n..].fill(GUARD);
+        let ns = self.nstatv.max(0) as usize;
+        [
+            (&mut self.statev, ns),
+            (&mut self.tau, n),
+            (&mut self.ddtddg, n * n),
+            (&mut self.ddtddp, n),
+            (&mut self.dslip, n),
+            (&mut self.ddtddt, 2 * n),
+        ]
     }
 
-    /// True when every guard slot still holds [`GUARD`].
-    #[must_use]
-    pub fn guards_intact(&self) -> bool {
-        let n = self.nfdir.clamp(0, 3) as usize;
-        let ns = self.nstatv.clamp(0, i32::MAX) as usize;
-        let g = all_guards;
-        g(&self.tau[n..])
-            && g(&self.ddtddg[n * n..])
-            && g(&self.ddtddp[n..])
-            && g(&self.dslip[n..])
-            && g(&self.ddtddt[2 * n..])
-            && g(self.statev.get(ns..).unwrap_or(&[]))
-    }
+    guard_methods!();
 
     /// `∂τ_a/∂Δγ_b` = `DDTDDG(a,b)`, 0-based.
     #[must_use]

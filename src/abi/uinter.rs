@@ -8,8 +8,8 @@
 use std::ffi::{c_char, c_int};
 
 use super::{
-    boundary, count, cut_back, fortran_name_bytes, host_number, host_site, read, read_array, slice,
-    write, write_zeros,
+    count, cut_back, fortran_name_bytes, host_number, host_site, read, read_array, slice, write,
+    write_zeros,
 };
 use crate::LawError;
 use crate::config;
@@ -48,6 +48,13 @@ use crate::report::Site;
 /// `DDFDDT`, `LSTATE`) may be NULL.
 #[allow(clippy::too_many_arguments)]
 #[unsafe(no_mangle)]
+// The view `UinterArgs` (the arguments `uinter_` reads or writes: a field per parameter but the
+// `unread` ones, bound to `args`) is written by the attribute from this parameter list (macros/).
+#[interfacial_macros::with_view(
+    view = struct UinterArgs as args,
+    unread = (dtemp, predef, dpred, time, freqr, slname, msname, coords, alocaldir, drot, area,
+              npred, mcrd, kstep, kinc, kit, linper, lsdi, lprint, slname_len, msname_len),
+)]
 pub unsafe extern "C" fn uinter_(
     stress: *mut f64,
     ddsddr: *mut f64,
@@ -100,79 +107,11 @@ pub unsafe extern "C" fn uinter_(
     slname_len: usize,
     msname_len: usize,
 ) {
-    let _ = (
-        dtemp, predef, dpred, time, freqr, slname, msname, coords, alocaldir, drot, area,
+    fortran_boundary!(
+        args,
+        // SAFETY: the name of its hidden length and NODE, per the contract above.
+        || unsafe { site(args.ciname, args.ciname_len, args.node) }
     );
-    let _ = (npred, mcrd, kstep, kinc, kit, linper, lsdi, lprint);
-    let _ = (slname_len, msname_len);
-    let args = UinterArgs {
-        stress,
-        ddsddr,
-        dviscous,
-        dstructural,
-        flux,
-        ddfddt,
-        ddsddt,
-        ddfddr,
-        statev,
-        sed,
-        sfd,
-        spd,
-        svd,
-        scd,
-        pnewdt,
-        rdisp,
-        drdisp,
-        temp,
-        dtime,
-        ciname,
-        ciname_len,
-        props,
-        chrlngth,
-        ndir,
-        nstatv,
-        nprops,
-        lopenclose,
-        lstate,
-    };
-    let _ = boundary(
-        // SAFETY (all three closures): the host's pointers, valid per the contract above.
-        || unsafe { site(ciname, ciname_len, node) },
-        || unsafe { args.run() },
-        || unsafe { args.fail() },
-    );
-}
-
-/// The arguments `uinter_` reads or writes.
-struct UinterArgs {
-    stress: *mut f64,
-    ddsddr: *mut f64,
-    dviscous: *mut f64,
-    dstructural: *mut f64,
-    flux: *mut f64,
-    ddfddt: *mut f64,
-    ddsddt: *mut f64,
-    ddfddr: *mut f64,
-    statev: *mut f64,
-    sed: *mut f64,
-    sfd: *mut f64,
-    spd: *mut f64,
-    svd: *mut f64,
-    scd: *mut f64,
-    pnewdt: *mut f64,
-    rdisp: *const f64,
-    drdisp: *const f64,
-    temp: *const f64,
-    dtime: *const f64,
-    ciname: *const c_char,
-    ciname_len: usize,
-    props: *const f64,
-    chrlngth: *const f64,
-    ndir: *const c_int,
-    nstatv: *const c_int,
-    nprops: *const c_int,
-    lopenclose: *mut c_int,
-    lstate: *mut c_int,
 }
 
 /// What every UINTER law answers for one point with N = NDIR − 1 tangential directions: the

@@ -4,7 +4,7 @@
 
 use std::ffi::c_char;
 
-use super::host::{GUARD, all_guards, blank_padded, state_with_guards};
+use super::host::{Outputs, blank_padded, guard_methods, state_with_guards};
 use super::uinter_;
 
 /// All UINTER arguments of one interface point. Arrays are sized for NDIR ≤ 3 plus guard slots.
@@ -96,37 +96,25 @@ impl UinterCall {
         c
     }
 
-    /// Fills every output slot past the declared sizes with [`GUARD`].
-    pub fn set_guards(&mut self) {
+    /// The output arrays, each with what the call may write: NDIR (or NDIR², 2·NDIR, 2, 4,
+    /// NSTATV) entries.
+    fn outputs(&mut self) -> Outputs<'_, 9> {
         let n = self.ndir.clamp(0, 3) as usize;
-        let ns = (self.nstatv.max(0) as usize).min(self.statev.len());
-        self.statev[ns..].fill(GUARD);
-        self.stress[n..].fill(GUARD);
-        self.ddsddr[n * n..].fill(GUARD);
-        self.dviscous[n * n..].fill(GUARD);
-        self.dstructural[n * n..].fill(GUARD);
-        self.flux[2..].fill(GUARD);
-        self.ddfddt[4..].fill(GUARD);
-        self.ddsddt[2 * n..].fill(GUARD);
-        self.ddfddr[2 * n..].fill(GUARD);
+        let ns = self.nstatv.max(0) as usize;
+        [
+            (&mut self.statev, ns),
+            (&mut self.stress, n),
+            (&mut self.ddsddr, n * n),
+            (&mut self.dviscous, n * n),
+            (&mut self.dstructural, n * n),
+            (&mut self.flux, 2),
+            (&mut self.ddfddt, 4),
+            (&mut self.ddsddt, 2 * n),
+            (&mut self.ddfddr, 2 * n),
+        ]
     }
 
-    /// True when every guard slot still holds [`GUARD`].
-    #[must_use]
-    pub fn guards_intact(&self) -> bool {
-        let n = self.ndir.clamp(0, 3) as usize;
-        let ns = self.nstatv.clamp(0, i32::MAX) as usize;
-        let g = all_guards;
-        g(&self.stress[n..])
-            && g(&self.ddsddr[n * n..])
-            && g(&self.dviscous[n * n..])
-            && g(&self.dstructural[n * n..])
-            && g(&self.flux[2..])
-            && g(&self.ddfddt[4..])
-            && g(&self.ddsddt[2 * n..])
-            && g(&self.ddfddr[2 * n..])
-            && g(self.statev.get(ns..).unwrap_or(&[]))
-    }
+    guard_methods!();
 
     /// `DDSDDR(i,j)`, 0-based.
     #[must_use]

@@ -4,7 +4,7 @@
 
 use std::ffi::{c_char, c_int};
 
-use super::{boundary, count, host_site, read};
+use super::{count, host_site, read};
 use crate::LawError;
 use crate::laws::coulomb_kinematic::KinematicCoulomb;
 use crate::props::{FrictionLaw, LAW_ADHESIVE, friction_law};
@@ -50,6 +50,16 @@ pub type IflReal = f32;
 /// `props(nProps)`, names of the given hidden lengths; the other pointers are not dereferenced.
 #[allow(clippy::too_many_arguments)]
 #[unsafe(no_mangle)]
+// The view `VfricArgs` (a field per parameter but the `unread` ones, bound to `args`) is written
+// by the attribute from this parameter list (macros/).
+#[interfacial_macros::with_view(
+    view = struct VfricArgs as args,
+    unread = (statev, k_step, k_inc, n_fac_nod, n_mst_nod, n_dir, n_state_var, n_temp, n_pred,
+              num_def_tfv, j_slv_uid, j_mst_uid, j_con_mstid, tim_step, tim_glb, d_tim_cur,
+              surf_slv, surf_mst, l_cont_type, d_slip_fric, f_tang_prev, friction_work, shape,
+              coord_slv, coord_mst, dircos_sl, dircos_n, temp_slv, pre_def_slv, temp_mst,
+              pre_def_mst, surf_slv_len, surf_mst_len),
+)]
 pub unsafe extern "C" fn vfric_(
     f_tangential: *mut IflReal,
     statev: *mut IflReal,
@@ -97,84 +107,11 @@ pub unsafe extern "C" fn vfric_(
     surf_slv_len: usize,
     surf_mst_len: usize,
 ) {
-    let _ = (
-        statev,
-        k_step,
-        k_inc,
-        n_fac_nod,
-        n_mst_nod,
-        n_dir,
-        n_state_var,
-        n_temp,
+    fortran_boundary!(
+        args,
+        // SAFETY: the name of its hidden length, per the contract above.
+        || unsafe { host_site("VFRIC", surf_int, surf_int_len, "block".into()) }
     );
-    let _ = (
-        n_pred,
-        num_def_tfv,
-        j_slv_uid,
-        j_mst_uid,
-        j_con_mstid,
-        tim_step,
-        tim_glb,
-    );
-    let _ = (
-        d_tim_cur,
-        surf_slv,
-        surf_mst,
-        l_cont_type,
-        d_slip_fric,
-        f_tang_prev,
-    );
-    let _ = (
-        friction_work,
-        shape,
-        coord_slv,
-        coord_mst,
-        dircos_sl,
-        dircos_n,
-    );
-    let _ = (
-        temp_slv,
-        pre_def_slv,
-        temp_mst,
-        pre_def_mst,
-        surf_slv_len,
-        surf_mst_len,
-    );
-    let args = VfricArgs {
-        f_tangential,
-        n_contact,
-        n_slv_nod,
-        n_fric_dir,
-        n_props,
-        j_con_slvid,
-        f_stick_force,
-        f_normal,
-        props,
-        area_slv,
-        surf_int,
-        surf_int_len,
-    };
-    let _ = boundary(
-        // SAFETY (all three closures): the host's pointers, valid per the contract above.
-        || unsafe { host_site("VFRIC", surf_int, surf_int_len, "block".into()) },
-        || unsafe { args.run() },
-        || unsafe { args.fail() },
-    );
-}
-
-struct VfricArgs {
-    f_tangential: *mut IflReal,
-    n_contact: *const c_int,
-    n_slv_nod: *const c_int,
-    n_fric_dir: *const c_int,
-    n_props: *const c_int,
-    j_con_slvid: *const c_int,
-    f_stick_force: *const IflReal,
-    f_normal: *const IflReal,
-    props: *const IflReal,
-    area_slv: *const IflReal,
-    surf_int: *const c_char,
-    surf_int_len: usize,
 }
 
 impl VfricArgs {
