@@ -544,7 +544,9 @@ fn batch_null_pointers() {
     c.null_taulm = true;
     let out = run_batch(&c);
     assert_eq!(out.status, IflStatus::BadInput as i32);
-    assert!(out.message.contains("batch point 3") && out.message.contains("TAULM"));
+    assert!(
+        out.message.contains("batch point 3") && out.message.contains("LM = 1 on entry but TAULM")
+    );
     // PNEWDT NULL and PROPS NULL with NPROPS > 0.
     let good = CoulombBuilder::new()
         .mu(0.3)

@@ -620,7 +620,8 @@ fn point<const N: usize>(
     }
     if entry == EntryFlag::ExactStick {
         let Some(taulm) = &v.taulm else {
-            return Err(null_pointer("TAULM"));
+            // Said with its cause: TAULM may be NULL in a batch where no point enters with LM = 1.
+            return Err(null_pointer("LM = 1 on entry but TAULM"));
         };
         for (x, row) in inc.taulm.iter_mut().zip(taulm) {
             *x = row[i];
