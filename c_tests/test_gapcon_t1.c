@@ -86,23 +86,15 @@ static const double CTTAB[] = {
 
 static void write_config(const char *path)
 {
-    if (gh_config_open(path) == NULL) {
+    if (gh_config_open(path, "test_gapcon_t1.c: scene T1") == NULL) {
         return;
     }
-    gh_config_text("# Written by test_gapcon_t1.c: scene T1.\n");
-    gh_config_law("T1_CONST", "constant");
-    gh_config_real("k", H_CONST);
-    gh_config_law("T1_PTAB", "pressure-table");
-    gh_config_table(PTAB, PTAB_ROWS, 2);
-    gh_config_law("T1_CTAB", "clearance-table");
-    gh_config_table(CTAB, CTAB_ROWS, 2);
-    gh_config_law("T1_TTAB", "pressure-table");
-    gh_config_table(TTAB, TTAB_ROWS, 3);
-    gh_config_law("T1_CTTAB", "clearance-table");
-    gh_config_table(CTTAB, CTTAB_ROWS, 3);
-    gh_config_law("T1_GAS", "gas-gap");
-    gh_config_real("k_gas", K_GAS);
-    gh_config_real("g0", G0);
+    gh_config_constant("T1_CONST", H_CONST);
+    gh_config_tabulated("T1_PTAB", "pressure-table", PTAB, PTAB_ROWS, 2);
+    gh_config_tabulated("T1_CTAB", "clearance-table", CTAB, CTAB_ROWS, 2);
+    gh_config_tabulated("T1_TTAB", "pressure-table", TTAB, TTAB_ROWS, 3);
+    gh_config_tabulated("T1_CTTAB", "clearance-table", CTTAB, CTTAB_ROWS, 3);
+    gh_config_gas_gap("T1_GAS", K_GAS, G0);
     gh_config_real("min_gap", MIN_GAP);
     gh_config_law("T1_CMY", "cmy");
     gh_config_real("k_s", CMY_KS);
