@@ -90,12 +90,12 @@ static void write_config(const char *path)
     gh_config_close(path);
 }
 
-/* A reproducible stream of numbers in [0, 1) (64-bit LCG, top 53 bits). */
-static uint64_t lcg_state = 0x9E3779B97F4A7C15u;
+/* A reproducible stream of numbers in [0, 1): the harnesses' MINSTD generator, one stream
+ * drawn on the main thread before the runs. */
+static uint32_t point_rng = 20240601u;
 static double uniform(void)
 {
-    lcg_state = lcg_state * 6364136223846793005u + 1442695040888963407u;
-    return (double)(lcg_state >> 11) * (1.0 / 9007199254740992.0);
+    return th_uniform(&point_rng, 0.0, 1.0);
 }
 
 static void make_points(void)
