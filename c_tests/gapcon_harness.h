@@ -60,27 +60,22 @@ typedef struct {
 static inline void gh_init(gh_gapcon *g, const char *name, double d, double p, double theta_a,
                            double theta_b)
 {
-    memset(g, 0, sizeof *g);
+    const gh_gapcon point = {
+        .d = {d, p},
+        .temp = {theta_a, theta_b},
+        .time = {0.5, 1.5},
+        .coords = {1.0, 2.0, 3.0},
+        .noel = 17,
+        .node = 42,
+        .npred = 1,
+        .kstep = 1,
+        .kinc = 3,
+        .area = 0.25,
+    }; /* everything not named zero: AK, FLOWM, PREDEF */
+    *g = point;
     fh_set_name(g->ciname, &g->ciname_len, 80, name);
     fh_set_name(g->slname, &g->slname_len, 80, "SLAVE_SURF");
     fh_set_name(g->msname, &g->msname_len, 80, "MASTER_SURF");
-    g->d[0] = d;
-    g->d[1] = p;
-    g->temp[0] = theta_a;
-    g->temp[1] = theta_b;
-    g->flowm[0] = g->flowm[1] = 0.0;
-    g->predef[0] = g->predef[1] = 0.0;
-    g->time[0] = 0.5;
-    g->time[1] = 1.5;
-    g->coords[0] = 1.0;
-    g->coords[1] = 2.0;
-    g->coords[2] = 3.0;
-    g->noel = 17;
-    g->node = 42;
-    g->npred = 1;
-    g->kstep = 1;
-    g->kinc = 3;
-    g->area = 0.25;
 }
 
 /* The raw call, as gfortran makes CALL GAPCON(...) (CalculiX: with AREA after KINC). */
