@@ -265,6 +265,17 @@ static inline void gh_config_gas_gap(const char *name, double k_gas, double g0)
     gh_config_real("g0", g0);
 }
 
+/* Interaction `name` with the cmy law of k_s, m, sigma and H_c (c, when wanted, follows). */
+static inline void gh_config_cmy(const char *name, double k_s, double m, double sigma,
+                                 double h_c)
+{
+    gh_config_law(name, "cmy");
+    gh_config_real("k_s", k_s);
+    gh_config_real("m", m);
+    gh_config_real("sigma", sigma);
+    gh_config_real("H_c", h_c);
+}
+
 /* The radiation section of interaction `name`: view factor F, Stefan-Boltzmann constant sigma
  * and absolute zero theta_z on the model's temperature scale. */
 static inline void gh_config_radiation(const char *name, double view, double sigma,

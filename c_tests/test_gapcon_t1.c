@@ -96,16 +96,9 @@ static void write_config(const char *path)
     gh_config_tabulated("T1_CTTAB", "clearance-table", CTTAB, CTTAB_ROWS, 3);
     gh_config_gas_gap("T1_GAS", K_GAS, G0);
     gh_config_real("min_gap", MIN_GAP);
-    gh_config_law("T1_CMY", "cmy");
-    gh_config_real("k_s", CMY_KS);
-    gh_config_real("m", CMY_M);
-    gh_config_real("sigma", CMY_SIGMA);
-    gh_config_real("H_c", CMY_HC);
-    gh_config_text("\n[interactions.T1_CMY_C1.conductance]\nlaw = \"cmy\"\nc = 1.0\n");
-    gh_config_real("k_s", CMY_KS);
-    gh_config_real("m", CMY_M);
-    gh_config_real("sigma", CMY_SIGMA);
-    gh_config_real("H_c", CMY_HC);
+    gh_config_cmy("T1_CMY", CMY_KS, CMY_M, CMY_SIGMA, CMY_HC);
+    gh_config_cmy("T1_CMY_C1", CMY_KS, CMY_M, CMY_SIGMA, CMY_HC);
+    gh_config_real("c", 1.0);
     gh_config_close(path);
 }
 

@@ -85,8 +85,7 @@ static void write_config(const char *path)
     gh_config_radiation("TH_RAD", VIEW_F, GH_SIGMA_SI, ZERO_C);
     gh_config_gas_gap("TH_GAS_RAD", K_GAS, G0);
     gh_config_radiation("TH_GAS_RAD", VIEW_F, GH_SIGMA_SI, 0.0);
-    gh_config_text("\n[interactions.TH_CMY.conductance]\nlaw = \"cmy\"\n"
-                   "k_s = 30.0\nm = 0.12\nsigma = 3e-6\nH_c = 2e9\n");
+    gh_config_cmy("TH_CMY", 30.0, 0.12, 3e-6, 2e9);
     gh_config_close(path);
 }
 
