@@ -7,9 +7,7 @@ C=======================================================================
       SUBROUTINE GAPNOP(AK,D,FLOWM,TEMP,PREDEF,TIME,CINAME,SLNAME,
      1 MSNAME,COORDS,NOEL,NODE,NPRED,KSTEP,KINC)
       INCLUDE 'ABA_PARAM.INC'
-      CHARACTER*80 CINAME,SLNAME,MSNAME
-      DIMENSION AK(5),D(2),FLOWM(2),TEMP(2),PREDEF(2,*),TIME(2),
-     1 COORDS(3)
+      INCLUDE 'gapcon_args.inc'
       AK(1) = 0.0D0
       RETURN
       END

@@ -60,27 +60,22 @@ typedef struct {
 static inline void gh_init(gh_gapcon *g, const char *name, double d, double p, double theta_a,
                            double theta_b)
 {
-    memset(g, 0, sizeof *g);
+    const gh_gapcon point = {
+        .d = {d, p},
+        .temp = {theta_a, theta_b},
+        .time = {0.5, 1.5},
+        .coords = {1.0, 2.0, 3.0},
+        .noel = 17,
+        .node = 42,
+        .npred = 1,
+        .kstep = 1,
+        .kinc = 3,
+        .area = 0.25,
+    }; /* everything not named zero: AK, FLOWM, PREDEF */
+    *g = point;
     fh_set_name(g->ciname, &g->ciname_len, 80, name);
     fh_set_name(g->slname, &g->slname_len, 80, "SLAVE_SURF");
     fh_set_name(g->msname, &g->msname_len, 80, "MASTER_SURF");
-    g->d[0] = d;
-    g->d[1] = p;
-    g->temp[0] = theta_a;
-    g->temp[1] = theta_b;
-    g->flowm[0] = g->flowm[1] = 0.0;
-    g->predef[0] = g->predef[1] = 0.0;
-    g->time[0] = 0.5;
-    g->time[1] = 1.5;
-    g->coords[0] = 1.0;
-    g->coords[1] = 2.0;
-    g->coords[2] = 3.0;
-    g->noel = 17;
-    g->node = 42;
-    g->npred = 1;
-    g->kstep = 1;
-    g->kinc = 3;
-    g->area = 0.25;
 }
 
 /* The raw call, as gfortran makes CALL GAPCON(...) (CalculiX: with AREA after KINC). */
@@ -182,16 +177,8 @@ static inline IflConductance gh_native_ok(const char *name, double d, double p, 
 
 static FILE *gh_cfg;
 
-static inline FILE *gh_config_open(const char *path)
-{
-    gh_cfg = fopen(path, "w");
-    if (gh_cfg == NULL) {
-        fprintf(stderr, "cannot write the configuration file %s\n", path);
-    }
-    return gh_cfg;
-}
-
 static inline void gh_config_text(const char *fmt, ...) FH_PRINTF(1, 2);
+
 static inline void gh_config_text(const char *fmt, ...)
 {
     va_list ap;
@@ -201,6 +188,18 @@ static inline void gh_config_text(const char *fmt, ...)
     va_start(ap, fmt);
     vfprintf(gh_cfg, fmt, ap);
     va_end(ap);
+}
+
+/* Opens the file and writes its first line, "# Written by WRITER."; NULL when it cannot. */
+static inline FILE *gh_config_open(const char *path, const char *writer)
+{
+    gh_cfg = fopen(path, "w");
+    if (gh_cfg == NULL) {
+        fprintf(stderr, "cannot write the configuration file %s\n", path);
+        return NULL;
+    }
+    gh_config_text("# Written by %s.\n", writer);
+    return gh_cfg;
 }
 
 /* A TOML float that reads back as exactly v (%.17g, with ".0" when it would read as integer). */
@@ -241,6 +240,51 @@ static inline void gh_config_table(const double *rows, int nrows, int ncol)
         gh_config_text("]");
     }
     gh_config_text("]\n");
+}
+
+/* Interaction `name` with the constant law k. */
+static inline void gh_config_constant(const char *name, double k)
+{
+    gh_config_law(name, "constant");
+    gh_config_real("k", k);
+}
+
+/* Interaction `name` with a tabulated law ("pressure-table" or "clearance-table") and its rows. */
+static inline void gh_config_tabulated(const char *name, const char *law, const double *rows,
+                                       int nrows, int ncol)
+{
+    gh_config_law(name, law);
+    gh_config_table(rows, nrows, ncol);
+}
+
+/* Interaction `name` with the gas-gap law k_gas/(d + g0) (min_gap, when wanted, follows). */
+static inline void gh_config_gas_gap(const char *name, double k_gas, double g0)
+{
+    gh_config_law(name, "gas-gap");
+    gh_config_real("k_gas", k_gas);
+    gh_config_real("g0", g0);
+}
+
+/* Interaction `name` with the cmy law of k_s, m, sigma and H_c (c, when wanted, follows). */
+static inline void gh_config_cmy(const char *name, double k_s, double m, double sigma,
+                                 double h_c)
+{
+    gh_config_law(name, "cmy");
+    gh_config_real("k_s", k_s);
+    gh_config_real("m", m);
+    gh_config_real("sigma", sigma);
+    gh_config_real("H_c", h_c);
+}
+
+/* The radiation section of interaction `name`: view factor F, Stefan-Boltzmann constant sigma
+ * and absolute zero theta_z on the model's temperature scale. */
+static inline void gh_config_radiation(const char *name, double view, double sigma,
+                                       double theta_z)
+{
+    gh_config_text("\n[interactions.%s.radiation]\n", name);
+    gh_config_real("view_factor", view);
+    gh_config_real("stefan_boltzmann", sigma);
+    gh_config_real("absolute_zero", theta_z);
 }
 
 /* Closes the file and points INTERFACIAL_CONFIG to it (before the library's first call). */

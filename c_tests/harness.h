@@ -407,6 +407,22 @@ static inline double fh_slide(fh_fric *h, const double *d, double v, int n)
 }
 
 /*
+ * scene(nfdir, a, b) for NFDIR = 1 and 2 and each setting of two on/off switches a and b (the
+ * variants a harness crosses, e.g. exact stick and frozen rate), NFDIR outermost, then a.
+ */
+static inline void fh_each_nfdir_and_switches(void (*scene)(int nfdir, int a, int b))
+{
+    int nfdir, a, b;
+    for (nfdir = 1; nfdir <= 2; nfdir++) {
+        for (a = 0; a <= 1; a++) {
+            for (b = 0; b <= 1; b++) {
+                scene(nfdir, a, b);
+            }
+        }
+    }
+}
+
+/*
  * The slip tangent along the unit direction d (NFDIR entries) against a central difference of
  * fric_'s own TAU: d . DDTDDG . d at the increment h against
  * d . (TAU(DGAM + hg d) - TAU(DGAM - hg d)) / (2 hg), hg = 1e-9, to the absolute tolerance atol.

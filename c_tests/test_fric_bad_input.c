@@ -182,19 +182,6 @@ static void props8_nonzero(fh_fric *h)
     h->props[7] = 1e-3;
     h->nprops = 8;
 }
-static void press_nan(fh_fric *h) { h->press = NAN; }
-static void press_pinf(fh_fric *h) { h->press = INFINITY; }
-static void press_minf(fh_fric *h) { h->press = -INFINITY; }
-static void dpress_nan(fh_fric *h) { h->dpress = NAN; }
-static void dpress_pinf(fh_fric *h) { h->dpress = INFINITY; }
-static void dpress_minf(fh_fric *h) { h->dpress = -INFINITY; }
-/* The last component, so a check of DGAM(1) only would miss it. */
-static void dgam_nan(fh_fric *h) { h->dgam[h->nfdir - 1] = NAN; }
-static void dgam_pinf(fh_fric *h) { h->dgam[h->nfdir - 1] = INFINITY; }
-static void dgam_minf(fh_fric *h) { h->dgam[h->nfdir - 1] = -INFINITY; }
-static void tau_nan(fh_fric *h) { h->tau[h->nfdir - 1] = NAN; }
-static void tau_pinf(fh_fric *h) { h->tau[h->nfdir - 1] = INFINITY; }
-static void tau_minf(fh_fric *h) { h->tau[h->nfdir - 1] = -INFINITY; }
 static void nstatv_2(fh_fric *h) { h->nstatv = 2; }
 /* gamma_crit from the default tolerance x CHRLNGTH, with no usable CHRLNGTH. */
 static void chrlngth_zero(fh_fric *h)
@@ -230,18 +217,6 @@ static const bad_case CATALOGUE[] = {
     {"mu2 < 0", mu2_negative, "PROPS(3)", NULL},
     {"PROPS(7) = 5", stick_mode_5, "PROPS(7)", NULL},
     {"PROPS(8) != 0", props8_nonzero, "PROPS(8)", NULL},
-    {"PRESS = NaN", press_nan, " PRESS", "NaN"},
-    {"PRESS = +Inf", press_pinf, " PRESS", "NaN"},
-    {"PRESS = -Inf", press_minf, " PRESS", "NaN"},
-    {"DPRESS = NaN", dpress_nan, "DPRESS", "NaN"},
-    {"DPRESS = +Inf", dpress_pinf, "DPRESS", "NaN"},
-    {"DPRESS = -Inf", dpress_minf, "DPRESS", "NaN"},
-    {"DGAM = NaN", dgam_nan, "DGAM", "NaN"},
-    {"DGAM = +Inf", dgam_pinf, "DGAM", "NaN"},
-    {"DGAM = -Inf", dgam_minf, "DGAM", "NaN"},
-    {"TAU = NaN", tau_nan, "TAU", "NaN"},
-    {"TAU = +Inf", tau_pinf, "TAU", "NaN"},
-    {"TAU = -Inf", tau_minf, "TAU", "NaN"},
     {"NSTATV = 2", nstatv_2, "NSTATV = 2", NULL},
     {"CHRLNGTH = 0, PROPS(5) = 0", chrlngth_zero, "CHRLNGTH", NULL},
     {"CHRLNGTH < 0, PROPS(5) = 0", chrlngth_negative, "CHRLNGTH", NULL},
@@ -250,6 +225,49 @@ static const bad_case CATALOGUE[] = {
     {"STATEV(1) = NaN", statev_nan, "STATEV", NULL},
     {"TAULM = NaN with LM = 1", taulm_nan, "TAULM", NULL},
 };
+
+/*
+ * The inputs that must be finite, each refused with NaN, +Inf and -Inf in turn; the cause names
+ * the input (" PRESS" with its blank, so that "DPRESS" does not count) and says "NaN" for all
+ * three values. An array input gets the value in its last component, so that a check of the
+ * first one only would miss it.
+ */
+typedef struct {
+    const char *name;
+    const char *cause;
+    double *(*slot)(fh_fric *);
+} finite_input;
+
+static double *press_slot(fh_fric *h) { return &h->press; }
+static double *dpress_slot(fh_fric *h) { return &h->dpress; }
+static double *dgam_slot(fh_fric *h) { return &h->dgam[h->nfdir - 1]; }
+static double *tau_slot(fh_fric *h) { return &h->tau[h->nfdir - 1]; }
+
+static const finite_input FINITE_INPUTS[] = {
+    {"PRESS", " PRESS", press_slot},
+    {"DPRESS", "DPRESS", dpress_slot},
+    {"DGAM", "DGAM", dgam_slot},
+    {"TAU", "TAU", tau_slot},
+};
+
+static const struct {
+    const char *label;
+    double value;
+} NON_FINITE[] = {{"NaN", NAN}, {"+Inf", INFINITY}, {"-Inf", -INFINITY}};
+
+static void non_finite_inputs(int nfdir)
+{
+    size_t c, v;
+    for (c = 0; c < sizeof FINITE_INPUTS / sizeof FINITE_INPUTS[0]; c++) {
+        for (v = 0; v < sizeof NON_FINITE / sizeof NON_FINITE[0]; v++) {
+            fh_fric h;
+            fh_context("%s = %s, NFDIR=%d", FINITE_INPUTS[c].name, NON_FINITE[v].label, nfdir);
+            good_point(&h, nfdir);
+            *FINITE_INPUTS[c].slot(&h) = NON_FINITE[v].value;
+            expect_refused(&h, "SI_PAD", FINITE_INPUTS[c].cause, "NaN");
+        }
+    }
+}
 
 /* Old host code: CHARACTER*8 CINAME. The bytes after the 8 are not part of the name. */
 static void short_name(fh_fric *h)
@@ -361,6 +379,7 @@ int main(int argc, char **argv)
             CATALOGUE[c].breaks(&h);
             expect_refused(&h, "SI_PAD", CATALOGUE[c].cause, CATALOGUE[c].cause2);
         }
+        non_finite_inputs(nfdir);
     }
     name_cases();
     native_api();

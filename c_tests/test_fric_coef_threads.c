@@ -237,9 +237,7 @@ static uint64_t run_block(int b, th_tally *t)
 
 static void report_tally(const char *run, const th_tally *t)
 {
-    char head[64];
-    snprintf(head, sizeof head, "%ld point evaluations", t->points);
-    th_report(run, head, t, LAW_NAMES, N_LAWS, " blocks");
+    th_report(run, t, LAW_NAMES, N_LAWS, " blocks", "%ld point evaluations", t->points);
 }
 
 int main(void)

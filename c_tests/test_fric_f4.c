@@ -185,13 +185,9 @@ static void bad_dtime(void)
 
 int main(void)
 {
-    int nfdir, exact, frozen;
+    int nfdir;
+    fh_each_nfdir_and_switches(steps);
     for (nfdir = 1; nfdir <= 2; nfdir++) {
-        for (exact = 0; exact <= 1; exact++) {
-            for (frozen = 0; frozen <= 1; frozen++) {
-                steps(nfdir, exact, frozen);
-            }
-        }
         damping(nfdir);
         f5_pressure_mu(nfdir);
     }

@@ -171,14 +171,7 @@ static void bad_input(void)
 
 int main(void)
 {
-    int nfdir, variant, decay;
-    for (nfdir = 1; nfdir <= 2; nfdir++) {
-        for (variant = 0; variant <= 1; variant++) {
-            for (decay = 0; decay <= 1; decay++) {
-                scene(nfdir, variant, decay);
-            }
-        }
-    }
+    fh_each_nfdir_and_switches(scene);
     bad_input();
     return fh_finish();
 }

@@ -120,16 +120,7 @@ int main(int argc, char **argv)
         refused(&h, where, "slip rates must be strictly increasing");
         return fh_finish();
     }
-    {
-        int nfdir, exact, frozen;
-        for (nfdir = 1; nfdir <= 2; nfdir++) {
-            for (exact = 0; exact <= 1; exact++) {
-                for (frozen = 0; frozen <= 1; frozen++) {
-                    steps(nfdir, exact, frozen);
-                }
-            }
-        }
-    }
+    fh_each_nfdir_and_switches(steps);
     coef_brake();
     props_table(props, 0, 0);
     fh_init(&h, 2, props, IFLP_COULOMB_NPROPS);

@@ -86,25 +86,36 @@ typedef struct {
     int64_t lm;
 } final_rec;
 
-static void *xcalloc(size_t n, size_t size, th_tally *t)
+/* One of the host's arrays of a contact and its declared size. */
+typedef struct {
+    double **array;
+    size_t len;
+} host_array;
+
+enum { N_HOST_ARRAYS = 9 };
+
+/* The host's arrays of c: NFDIR, NFDIR^2, 2 NFDIR or NSTATV doubles. */
+static void host_arrays(contact *c, host_array a[N_HOST_ARRAYS])
 {
-    void *p = calloc(n, size);
-    if (p == NULL) {
-        t->alloc_fail++;
-    }
-    return p;
+    const size_t n = (size_t)c->nfdir;
+    const host_array all[N_HOST_ARRAYS] = {
+        {&c->tau, n},   {&c->ddtddg, n * n}, {&c->ddtddp, n},
+        {&c->dslip, n}, {&c->ddtddt, 2 * n}, {&c->statev, (size_t)c->nstatv},
+        {&c->dgam, n},  {&c->taulm, n},      {&c->slip, n}};
+    memcpy(a, all, sizeof all);
 }
 
 static int contact_init(contact *c, int index, th_tally *t)
 {
     uint32_t *r = &c->rng;
-    int n, i;
+    host_array arrays[N_HOST_ARRAYS];
+    int i, allocated = 1;
     memset(c, 0, sizeof *c);
     c->rng = (uint32_t)(index % (int)(TH_LEHMER_M - 1u)) + 1u;
     for (i = 0; i < 4; i++) { /* decorrelate neighbouring seeds */
         th_lehmer(r);
     }
-    c->nfdir = n = th_uniform(r, 0.0, 1.0) < 0.5 ? 1 : 2;
+    c->nfdir = th_uniform(r, 0.0, 1.0) < 0.5 ? 1 : 2;
     {
         double m = th_uniform(r, 0.0, 1.0);
         c->mode = m < 0.6 ? 0 : m < 0.9 ? 1 : 2;
@@ -126,18 +137,15 @@ static int contact_init(contact *c, int index, th_tally *t)
     c->props[6] = (double)c->mode;
     c->nprops = 7;
     c->lm = 0;
-    c->tau = xcalloc((size_t)n, sizeof(double), t);
-    c->ddtddg = xcalloc((size_t)(n * n), sizeof(double), t);
-    c->ddtddp = xcalloc((size_t)n, sizeof(double), t);
-    c->dslip = xcalloc((size_t)n, sizeof(double), t);
-    c->ddtddt = xcalloc((size_t)(2 * n), sizeof(double), t);
-    c->statev = xcalloc((size_t)c->nstatv, sizeof(double), t);
-    c->dgam = xcalloc((size_t)n, sizeof(double), t);
-    c->taulm = xcalloc((size_t)n, sizeof(double), t);
-    c->slip = xcalloc((size_t)n, sizeof(double), t);
-    if (c->tau == NULL || c->ddtddg == NULL || c->ddtddp == NULL || c->dslip == NULL ||
-        c->ddtddt == NULL || c->statev == NULL || c->dgam == NULL || c->taulm == NULL ||
-        c->slip == NULL) {
+    host_arrays(c, arrays);
+    for (i = 0; i < N_HOST_ARRAYS; i++) {
+        *arrays[i].array = calloc(arrays[i].len, sizeof(double));
+        if (*arrays[i].array == NULL) {
+            t->alloc_fail++;
+            allocated = 0;
+        }
+    }
+    if (!allocated) {
         return 0;
     }
     for (i = 3; i < c->nstatv; i++) {
@@ -148,15 +156,12 @@ static int contact_init(contact *c, int index, th_tally *t)
 
 static void contact_free(contact *c)
 {
-    free(c->tau);
-    free(c->ddtddg);
-    free(c->ddtddp);
-    free(c->dslip);
-    free(c->ddtddt);
-    free(c->statev);
-    free(c->dgam);
-    free(c->taulm);
-    free(c->slip);
+    host_array arrays[N_HOST_ARRAYS];
+    int i;
+    host_arrays(c, arrays);
+    for (i = 0; i < N_HOST_ARRAYS; i++) {
+        free(*arrays[i].array);
+    }
 }
 
 /* Every output of the last call, byte by byte. */
@@ -364,9 +369,7 @@ static void run_point(int p, uint64_t *digests, void *fin, th_tally *t)
 
 static void report_tally(const char *run, const th_tally *t)
 {
-    char head[48];
-    snprintf(head, sizeof head, "%ld calls", (long)t->points);
-    th_report(run, head, t, KIND_NAMES, N_KINDS, "");
+    th_report(run, t, KIND_NAMES, N_KINDS, "", "%ld calls", (long)t->points);
 }
 
 int main(void)

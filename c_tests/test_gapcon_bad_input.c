@@ -175,14 +175,18 @@ static void config_error(const char *const *needles)
 
 /* ---- a good file ------------------------------------------------------------------------- */
 
+/* A name passed as CINAME (CHARACTER*len) and the conductance it must find; a k <= 0 means
+ * what the table using it says. */
+typedef struct {
+    const char *text;
+    size_t len;
+    double k;
+} name_case;
+
 /* Name rules and CHARACTER lengths that must find the configured law. */
 static void names_that_match(void)
 {
-    static const struct {
-        const char *text;
-        size_t len;
-        double k;
-    } cases[] = {
+    static const name_case cases[] = {
         {"SI1", 80, K_SI1},          /* CHARACTER*80, blank-padded */
         {"si1", 80, K_SI1},          /* case ignored */
         {"Si1", 80, K_SI1},
@@ -241,11 +245,8 @@ static char *name_at_page_end(size_t len, const char *text, void **map, size_t *
 
 static void names_at_page_end(void)
 {
-    static const struct {
-        const char *text;
-        size_t len;
-        double k;
-    } cases[] = {{"CONTACT8", 8, K_CONTACT8}, {"SI1", 80, K_SI1}, {"NOPE8", 8, 0.0}};
+    static const name_case cases[] = {
+        {"CONTACT8", 8, K_CONTACT8}, {"SI1", 80, K_SI1}, {"NOPE8", 8, 0.0}};
     size_t i;
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         void *map = NULL;
@@ -451,11 +452,7 @@ static void null_pointers(void)
 
 static void fallback_names(void)
 {
-    static const struct {
-        const char *text;
-        size_t len;
-        double k;
-    } cases[] = {
+    static const name_case cases[] = {
         {"SI1", 80, K_SI1},       {"si1", 80, K_SI1},         {"SI1", 8, K_SI1},
         {"SI1A", 80, K_FALLBACK}, {"SI", 80, K_FALLBACK},     {"SI1_", 80, K_FALLBACK},
         {"SI1A", 8, K_FALLBACK},  {"OTHER", 80, K_FALLBACK},  {"", 80, K_FALLBACK},

@@ -86,34 +86,19 @@ static const double CTTAB[] = {
 
 static void write_config(const char *path)
 {
-    if (gh_config_open(path) == NULL) {
+    if (gh_config_open(path, "test_gapcon_t1.c: scene T1") == NULL) {
         return;
     }
-    gh_config_text("# Written by test_gapcon_t1.c: scene T1.\n");
-    gh_config_law("T1_CONST", "constant");
-    gh_config_real("k", H_CONST);
-    gh_config_law("T1_PTAB", "pressure-table");
-    gh_config_table(PTAB, PTAB_ROWS, 2);
-    gh_config_law("T1_CTAB", "clearance-table");
-    gh_config_table(CTAB, CTAB_ROWS, 2);
-    gh_config_law("T1_TTAB", "pressure-table");
-    gh_config_table(TTAB, TTAB_ROWS, 3);
-    gh_config_law("T1_CTTAB", "clearance-table");
-    gh_config_table(CTTAB, CTTAB_ROWS, 3);
-    gh_config_law("T1_GAS", "gas-gap");
-    gh_config_real("k_gas", K_GAS);
-    gh_config_real("g0", G0);
+    gh_config_constant("T1_CONST", H_CONST);
+    gh_config_tabulated("T1_PTAB", "pressure-table", PTAB, PTAB_ROWS, 2);
+    gh_config_tabulated("T1_CTAB", "clearance-table", CTAB, CTAB_ROWS, 2);
+    gh_config_tabulated("T1_TTAB", "pressure-table", TTAB, TTAB_ROWS, 3);
+    gh_config_tabulated("T1_CTTAB", "clearance-table", CTTAB, CTTAB_ROWS, 3);
+    gh_config_gas_gap("T1_GAS", K_GAS, G0);
     gh_config_real("min_gap", MIN_GAP);
-    gh_config_law("T1_CMY", "cmy");
-    gh_config_real("k_s", CMY_KS);
-    gh_config_real("m", CMY_M);
-    gh_config_real("sigma", CMY_SIGMA);
-    gh_config_real("H_c", CMY_HC);
-    gh_config_text("\n[interactions.T1_CMY_C1.conductance]\nlaw = \"cmy\"\nc = 1.0\n");
-    gh_config_real("k_s", CMY_KS);
-    gh_config_real("m", CMY_M);
-    gh_config_real("sigma", CMY_SIGMA);
-    gh_config_real("H_c", CMY_HC);
+    gh_config_cmy("T1_CMY", CMY_KS, CMY_M, CMY_SIGMA, CMY_HC);
+    gh_config_cmy("T1_CMY_C1", CMY_KS, CMY_M, CMY_SIGMA, CMY_HC);
+    gh_config_real("c", 1.0);
     gh_config_close(path);
 }
 
@@ -667,6 +652,20 @@ static void temperature_rows(const char *name, const double *rows, int nrows, in
     }
 }
 
+/*
+ * T1_GAS at gap d against its closed form: k and dk/dd as given, dk/dp = dk/dtheta_mean = 0;
+ * then the finite differences with the gap step hd, to the relative tolerance rtol.
+ */
+static void check_gas_gap(double d, double k, double dk_dd, double hd, double rtol)
+{
+    IflConductance c = gh_native_ok("T1_GAS", d, 40.0, 300.0, 280.0);
+    FH_NEAR(c.k, k, 1e-15, 0.0);
+    FH_NEAR(c.dk_dd, dk_dd, 1e-14, 0.0);
+    FH_EXACT(c.dk_dp, 0.0);
+    FH_EXACT(c.dk_dtheta_mean, 0.0);
+    check_fd("T1_GAS", d, 40.0, 300.0, 280.0, hd, 1.0, 0.5, 0, rtol);
+}
+
 static void gas_gap_and_cmy(void)
 {
     static const double gaps[] = {1e-4, 3e-5, 2e-3, 1.5e-5};
@@ -674,24 +673,15 @@ static void gas_gap_and_cmy(void)
     static const double pressures[] = {1e6, 3e5, 2e8, 1.0};
     size_t i;
     for (i = 0; i < sizeof gaps / sizeof gaps[0]; i++) {
-        double d = gaps[i];
-        IflConductance c;
+        const double d = gaps[i];
         fh_context("gas-gap at d = %g", d);
-        c = gh_native_ok("T1_GAS", d, 40.0, 300.0, 280.0);
-        FH_NEAR(c.k, K_GAS / (d + G0), 1e-15, 0.0);
-        FH_NEAR(c.dk_dd, -K_GAS / ((d + G0) * (d + G0)), 1e-14, 0.0);
-        FH_EXACT(c.dk_dp, 0.0);
-        FH_EXACT(c.dk_dtheta_mean, 0.0);
-        check_fd("T1_GAS", d, 40.0, 300.0, 280.0, 1e-4 * (d - MIN_GAP), 1.0, 0.5, 0, 1e-7);
+        check_gas_gap(d, K_GAS / (d + G0), -K_GAS / ((d + G0) * (d + G0)), 1e-4 * (d - MIN_GAP),
+                      1e-7);
     }
+    /* Below min_gap the gap is taken as min_gap: k stays, dk/dd = 0 (differences exact). */
     for (i = 0; i < sizeof closed / sizeof closed[0]; i++) {
-        double d = closed[i];
-        IflConductance c;
-        fh_context("gas-gap at d = %g (below min_gap)", d);
-        c = gh_native_ok("T1_GAS", d, 40.0, 300.0, 280.0);
-        FH_NEAR(c.k, K_GAS / (MIN_GAP + G0), 1e-15, 0.0);
-        FH_EXACT(c.dk_dd, 0.0);
-        check_fd("T1_GAS", d, 40.0, 300.0, 280.0, 1e-3 * (MIN_GAP - 5e-6), 1.0, 0.5, 0, 0.0);
+        fh_context("gas-gap at d = %g (below min_gap)", closed[i]);
+        check_gas_gap(closed[i], K_GAS / (MIN_GAP + G0), 0.0, 1e-3 * (MIN_GAP - 5e-6), 0.0);
     }
     for (i = 0; i < sizeof pressures / sizeof pressures[0]; i++) {
         double p = pressures[i];

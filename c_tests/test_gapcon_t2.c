@@ -41,35 +41,20 @@
 #define K_GAS 0.03
 #define G0 1e-5
 
-static void radiation_block(const char *name, double sigma, double theta_z, double view)
-{
-    gh_config_text("\n[interactions.%s.radiation]\n", name);
-    gh_config_real("view_factor", view);
-    gh_config_real("stefan_boltzmann", sigma);
-    gh_config_real("absolute_zero", theta_z);
-}
-
 static void write_config(const char *path)
 {
-    if (gh_config_open(path) == NULL) {
+    if (gh_config_open(path, "test_gapcon_t2.c: scene T2") == NULL) {
         return;
     }
-    gh_config_text("# Written by test_gapcon_t2.c: scene T2.\n");
-    radiation_block("RAD_K", SIGMA, 0.0, VIEW_F);
-    radiation_block("RAD_C", SIGMA, ZERO_C, VIEW_F);
-    radiation_block("RAD_MM", SIGMA_MM, 0.0, VIEW_F);
-    gh_config_law("RAD_GAS", "gas-gap");
-    gh_config_real("k_gas", K_GAS);
-    gh_config_real("g0", G0);
-    radiation_block("RAD_GAS", SIGMA, 0.0, VIEW_F);
-    gh_config_law("RAD_GAS_C", "gas-gap");
-    gh_config_real("k_gas", K_GAS);
-    gh_config_real("g0", G0);
-    radiation_block("RAD_GAS_C", SIGMA, ZERO_C, VIEW_F);
-    gh_config_law("RAD_OFF", "gas-gap");
-    gh_config_real("k_gas", K_GAS);
-    gh_config_real("g0", G0);
-    radiation_block("RAD_OFF", SIGMA, 0.0, 0.0);
+    gh_config_radiation("RAD_K", VIEW_F, SIGMA, 0.0);
+    gh_config_radiation("RAD_C", VIEW_F, SIGMA, ZERO_C);
+    gh_config_radiation("RAD_MM", VIEW_F, SIGMA_MM, 0.0);
+    gh_config_gas_gap("RAD_GAS", K_GAS, G0);
+    gh_config_radiation("RAD_GAS", VIEW_F, SIGMA, 0.0);
+    gh_config_gas_gap("RAD_GAS_C", K_GAS, G0);
+    gh_config_radiation("RAD_GAS_C", VIEW_F, SIGMA, ZERO_C);
+    gh_config_gas_gap("RAD_OFF", K_GAS, G0);
+    gh_config_radiation("RAD_OFF", 0.0, SIGMA, 0.0);
     gh_config_close(path);
 }
 

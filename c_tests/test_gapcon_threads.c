@@ -76,38 +76,25 @@ typedef struct {
 
 static void write_config(const char *path)
 {
-    if (gh_config_open(path) == NULL) {
+    if (gh_config_open(path, "test_gapcon_threads.c") == NULL) {
         return;
     }
-    gh_config_text("# Written by test_gapcon_threads.c.\n");
-    gh_config_law("TH_CONST", "constant");
-    gh_config_real("k", K_CONST);
-    gh_config_law("TH_PTAB", "pressure-table");
-    gh_config_table(PTAB, PTAB_ROWS, 2);
-    gh_config_law("TH_TTAB", "pressure-table");
-    gh_config_table(TTAB, TTAB_ROWS, 3);
-    gh_config_text("\n[interactions.TH_RAD.radiation]\n");
-    gh_config_real("view_factor", VIEW_F);
-    gh_config_real("stefan_boltzmann", GH_SIGMA_SI);
-    gh_config_real("absolute_zero", ZERO_C);
-    gh_config_law("TH_GAS_RAD", "gas-gap");
-    gh_config_real("k_gas", K_GAS);
-    gh_config_real("g0", G0);
-    gh_config_text("\n[interactions.TH_GAS_RAD.radiation]\n");
-    gh_config_real("view_factor", VIEW_F);
-    gh_config_real("stefan_boltzmann", GH_SIGMA_SI);
-    gh_config_real("absolute_zero", 0.0);
-    gh_config_text("\n[interactions.TH_CMY.conductance]\nlaw = \"cmy\"\n"
-                   "k_s = 30.0\nm = 0.12\nsigma = 3e-6\nH_c = 2e9\n");
+    gh_config_constant("TH_CONST", K_CONST);
+    gh_config_tabulated("TH_PTAB", "pressure-table", PTAB, PTAB_ROWS, 2);
+    gh_config_tabulated("TH_TTAB", "pressure-table", TTAB, TTAB_ROWS, 3);
+    gh_config_radiation("TH_RAD", VIEW_F, GH_SIGMA_SI, ZERO_C);
+    gh_config_gas_gap("TH_GAS_RAD", K_GAS, G0);
+    gh_config_radiation("TH_GAS_RAD", VIEW_F, GH_SIGMA_SI, 0.0);
+    gh_config_cmy("TH_CMY", 30.0, 0.12, 3e-6, 2e9);
     gh_config_close(path);
 }
 
-/* A reproducible stream of numbers in [0, 1) (64-bit LCG, top 53 bits). */
-static uint64_t lcg_state = 0x9E3779B97F4A7C15u;
+/* A reproducible stream of numbers in [0, 1): the harnesses' MINSTD generator, one stream
+ * drawn on the main thread before the runs. */
+static uint32_t point_rng = 20240601u;
 static double uniform(void)
 {
-    lcg_state = lcg_state * 6364136223846793005u + 1442695040888963407u;
-    return (double)(lcg_state >> 11) * (1.0 / 9007199254740992.0);
+    return th_uniform(&point_rng, 0.0, 1.0);
 }
 
 static void make_points(void)

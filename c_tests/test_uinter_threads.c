@@ -270,9 +270,7 @@ static void run_point(int ip, uint64_t *digests, void *fin_out, th_tally *t)
 
 static void report_tally(const char *run, const th_tally *t)
 {
-    char head[48];
-    snprintf(head, sizeof head, "%ld calls", (long)t->points);
-    th_report(run, head, t, KIND_NAMES, N_KINDS, "");
+    th_report(run, t, KIND_NAMES, N_KINDS, "", "%ld calls", (long)t->points);
 }
 
 int main(int argc, char **argv)

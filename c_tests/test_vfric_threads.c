@@ -259,10 +259,8 @@ static uint64_t run_block(int b, th_tally *t)
 
 static void report_tally(const char *run, const th_tally *t)
 {
-    char head[96];
-    snprintf(head, sizeof head, "%ld point evaluations (%ld bad points)", t->points,
-             t->bad_points);
-    th_report(run, head, t, KIND_NAMES, N_KINDS, " blocks");
+    th_report(run, t, KIND_NAMES, N_KINDS, " blocks", "%ld point evaluations (%ld bad points)",
+              t->points, t->bad_points);
 }
 
 int main(void)

@@ -5,7 +5,8 @@
  * by a barrier and once serially on the main thread, and compares the two bit for bit. This
  * header holds the parts that are the same in all of them:
  *   - th_lehmer / th_uniform: the MINSTD generator (x <- 48271 x mod 2^31 - 1) a harness seeds
- *     per point or per block, so a draw never depends on which thread makes it;
+ *     per point or per block, so a draw never depends on which thread makes it (the serial
+ *     harnesses that draw random points, test_fric_batch.c, include this header for it);
  *   - th_fnv: 64-bit FNV-1a over bytes, from TH_FNV_OFFSET, to digest a call's outputs;
  *   - th_shrink_factor: INTERFACIAL_TEST_SHRINK=n (valgrind, ASan runs), clamped;
  *   - th_tally: the counts a run keeps (kinds of call, points, violations, the first violation
@@ -144,12 +145,21 @@ static inline void th_tally_add(th_tally *sum, const th_tally *t)
     }
 }
 
-/* "<run>: <head>; <name> <count>, ... <unit>", then the first violation on stderr. */
-static inline void th_report(const char *run, const char *head, const th_tally *t,
-                             const char *const *names, int n_kinds, const char *unit)
+/* "<run>: <head>; <name> <count>, ... <unit>", the head printed from head_fmt and what
+ * follows it; then the first violation on stderr. */
+static inline void th_report(const char *run, const th_tally *t, const char *const *names,
+                             int n_kinds, const char *unit, const char *head_fmt, ...)
+    TH_PRINTF(6, 7);
+static inline void th_report(const char *run, const th_tally *t, const char *const *names,
+                             int n_kinds, const char *unit, const char *head_fmt, ...)
 {
+    va_list ap;
     int k;
-    printf("%s: %s;", run, head);
+    printf("%s: ", run);
+    va_start(ap, head_fmt);
+    vprintf(head_fmt, ap);
+    va_end(ap);
+    printf(";");
     for (k = 0; k < n_kinds; k++) {
         printf(" %s %ld%s", names[k], t->kinds[k], k + 1 < n_kinds ? "," : "");
     }
