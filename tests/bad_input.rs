@@ -5,6 +5,9 @@
 
 #[path = "common/config_file.rs"]
 mod config_file;
+#[path = "common/messages.rs"]
+mod messages;
+use messages::assert_mentions;
 use std::ffi::{CString, c_char};
 
 use interfacial::CUTBACK_RATIO;
@@ -64,11 +67,7 @@ fn refused(mut c: FricCall, what: &str, word: &str) {
     assert_eq!(bits(&c.tau), bits(&before.tau), "{what}: TAU");
     assert_eq!(bits(&c.statev), bits(&before.statev), "{what}: STATEV");
     assert_eq!(c.lm, before.lm, "{what}: LM");
-    let msg = FricCall::last_error();
-    assert!(
-        msg.contains("FRIC") && msg.contains("'SI1'") && msg.contains(word),
-        "{what}: {msg:?} should name FRIC, the interaction and {word:?}"
-    );
+    assert_mentions(&FricCall::last_error(), &["FRIC", "'SI1'", word], what);
 }
 
 type Spoil = fn(&mut FricCall, f64);
@@ -303,10 +302,10 @@ fn gapcon_names_of_every_shape() {
     for name in [&b"        "[..], b"", b"SI1X", b" SI1"] {
         ifl_clear_error();
         assert_eq!(k(name), 0.0, "{name:?}");
-        let msg = FricCall::last_error();
-        assert!(
-            msg.contains("GAPCON") && msg.contains("interaction not found"),
-            "{name:?}: {msg}"
+        assert_mentions(
+            &FricCall::last_error(),
+            &["GAPCON", "interaction not found"],
+            &format!("{name:?}"),
         );
     }
 }
@@ -356,6 +355,9 @@ fn gapcon_overflow_is_a_failure_not_an_infinite_flux() {
     g.temp = [1.7e308, -1.7e308];
     assert_eq!(g.call(), 0.0);
     assert_eq!(&g.ak[1..], &[GUARD; 4]);
-    let msg = FricCall::last_error();
-    assert!(msg.contains("GAPCON") && msg.contains("overflow"), "{msg}");
+    assert_mentions(
+        &FricCall::last_error(),
+        &["GAPCON", "overflow"],
+        "overflowing flux",
+    );
 }
