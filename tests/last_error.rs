@@ -7,10 +7,10 @@
 mod config_file;
 #[path = "common/fric_coef.rs"]
 mod fric_coef_common;
-#[path = "common/messages.rs"]
-mod messages;
+#[path = "common/refusal.rs"]
+mod refusal;
 use fric_coef_common::fric_coef_call;
-use messages::assert_mentions;
+use refusal::assert_mentions;
 #[path = "common/vfric.rs"]
 mod vfric_common;
 use std::ffi::{CStr, c_char, c_int};
