@@ -250,45 +250,34 @@ pub fn frame(
     canvas.finish(&f.legend)
 }
 
-/// A chart with linear axes (a time trace): the same title, legend panel and notes as [`frame`].
-pub struct LinearFrame<'a> {
-    /// Caption.
-    pub title: &'a str,
-    /// x range and title with the unit.
-    pub x: ((f64, f64), String),
-    /// y range and title with the unit.
-    pub y: ((f64, f64), String),
-    /// Legend panel entries.
-    pub legend: Vec<(Swatch, String)>,
-    /// Notes under the plot, one line each.
-    pub notes: Vec<String>,
-    /// Pixel size of the plot.
-    pub size: (u32, u32),
-}
-
-/// The plotting context of a [`LinearFrame`].
+/// The plotting context of [`frame_linear`].
 pub type LinearChart<'a, 'b> = ChartContext<
     'a,
     SVGBackend<'b>,
     Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
 >;
 
-/// Draws a [`LinearFrame`] and calls `body` to draw the data.
+/// Draws `f` with linear axes (a time trace; the same title, legend panel and notes as [`frame`])
+/// and calls `body` to draw the data. The second x axis on top is [`frame`]'s only: `f.top` must
+/// be `None`.
 pub fn frame_linear(
     path: &Path,
-    f: &LinearFrame,
+    f: &Frame,
     body: impl FnOnce(&mut LinearChart<'_, '_>) -> Result<(), String>,
 ) -> Result<(), String> {
+    if f.top.is_some() {
+        return Err(format!("{}: a linear chart has no second x axis", f.title));
+    }
     let canvas = Canvas::new(path, f.title, f.size, &f.notes)?;
     let mut chart = canvas
         .builder()
-        .build_cartesian_2d(f.x.0.0..f.x.0.1, f.y.0.0..f.y.0.1)
+        .build_cartesian_2d(f.x.range.0..f.x.range.1, f.y.range.0..f.y.range.1)
         .map_err(err)?;
     draw_mesh(
         chart
             .configure_mesh()
-            .x_desc(f.x.1.as_str())
-            .y_desc(f.y.1.as_str()),
+            .x_desc(f.x.title.as_str())
+            .y_desc(f.y.title.as_str()),
     )?;
     body(&mut chart)?;
     canvas.finish(&f.legend)

@@ -30,8 +30,7 @@ use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use plotters::prelude::*;
 
 use crate::charts::{
-    Axis, COLORS, Frame, LinearFrame, Marker, Swatch, draw_cells, edge, frame as frame_chart,
-    frame_linear,
+    Axis, COLORS, Frame, Marker, Swatch, draw_cells, edge, frame as frame_chart, frame_linear,
 };
 use crate::checks::Row;
 
@@ -773,10 +772,11 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
             )
         })
         .collect();
-    let frame = LinearFrame {
+    let frame = Frame {
         title: "F7: F6 with velocity-weakening μ (decay law), implicit steps",
-        x: ((0.0, t_end), "time t (s)".into()),
-        y: ((0.0, 0.75), "block position x (m)".into()),
+        x: Axis::new((0.0, t_end), "time t (s)"),
+        y: Axis::new((0.0, 0.75), "block position x (m)"),
+        top: None,
         legend,
         notes: vec![
             format!(
