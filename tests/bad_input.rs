@@ -5,9 +5,11 @@
 
 #[path = "common/config_file.rs"]
 mod config_file;
+#[path = "common/refusal.rs"]
+mod refusal;
+use refusal::{assert_fric_refused, assert_mentions};
 use std::ffi::{CString, c_char};
 
-use interfacial::CUTBACK_RATIO;
 use interfacial::abi::host::{FricCall, GUARD};
 use interfacial::abi::{
     IflConductance, IflStatus, gapcon_, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
@@ -57,20 +59,6 @@ fn outputs(c: &FricCall) -> Vec<u64> {
     v
 }
 
-fn refused(mut c: FricCall, what: &str, word: &str) {
-    let before = c.clone();
-    c.call();
-    assert_eq!(c.pnewdt, CUTBACK_RATIO, "{what}: PNEWDT");
-    assert_eq!(bits(&c.tau), bits(&before.tau), "{what}: TAU");
-    assert_eq!(bits(&c.statev), bits(&before.statev), "{what}: STATEV");
-    assert_eq!(c.lm, before.lm, "{what}: LM");
-    let msg = FricCall::last_error();
-    assert!(
-        msg.contains("FRIC") && msg.contains("'SI1'") && msg.contains(word),
-        "{what}: {msg:?} should name FRIC, the interaction and {word:?}"
-    );
-}
-
 type Spoil = fn(&mut FricCall, f64);
 
 /// Arguments the Coulomb law never reads: NaN or ±Inf there changes no output bit.
@@ -116,20 +104,20 @@ fn fric_non_finite_read_arguments_are_refused() {
     for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
         let mut c = good(&coulomb().build_first(5));
         c.dtime = bad;
-        refused(c, &format!("DTIME = {bad}"), "DTIME");
+        assert_fric_refused(c, &format!("DTIME = {bad}"), "DTIME");
         // γ_crit from the slip tolerance: CHRLNGTH is read.
         let tolerance = CoulombBuilder::new().mu(MU).slip_tolerance(0.01);
         let mut c = good(&tolerance.build_first(6));
         c.chrlngth = bad;
-        refused(c, &format!("CHRLNGTH = {bad}"), "CHRLNGTH");
+        assert_fric_refused(c, &format!("CHRLNGTH = {bad}"), "CHRLNGTH");
         let mut c = good(&mu_only());
         c.statev[1] = bad;
-        refused(c, &format!("STATEV(2) = {bad}"), "STATEV");
+        assert_fric_refused(c, &format!("STATEV(2) = {bad}"), "STATEV");
         // Every PROPS entry of law 1.
         for k in 1..7 {
             let mut props = coulomb().build_first(7);
             props[k] = bad;
-            refused(
+            assert_fric_refused(
                 good(&props),
                 &format!("PROPS({}) = {bad}", k + 1),
                 &format!("PROPS({})", k + 1),
@@ -184,10 +172,10 @@ fn fric_names_not_blank_padded() {
     c.nstatv = 2;
     c.ciname = "SI1\0\0\0\0\0".into();
     c.name_len = 8;
-    refused(c.clone(), "NUL-padded name", "NSTATV");
+    assert_fric_refused(c.clone(), "NUL-padded name", "NSTATV");
     c.ciname = "SI1ABCDEF".into();
     c.name_len = 3;
-    refused(c.clone(), "unpadded name of hidden length 3", "NSTATV");
+    assert_fric_refused(c.clone(), "unpadded name of hidden length 3", "NSTATV");
     assert!(!FricCall::last_error().contains("ABC"));
 }
 
@@ -303,10 +291,10 @@ fn gapcon_names_of_every_shape() {
     for name in [&b"        "[..], b"", b"SI1X", b" SI1"] {
         ifl_clear_error();
         assert_eq!(k(name), 0.0, "{name:?}");
-        let msg = FricCall::last_error();
-        assert!(
-            msg.contains("GAPCON") && msg.contains("interaction not found"),
-            "{name:?}: {msg}"
+        assert_mentions(
+            &FricCall::last_error(),
+            &["GAPCON", "interaction not found"],
+            &format!("{name:?}"),
         );
     }
 }
@@ -356,6 +344,9 @@ fn gapcon_overflow_is_a_failure_not_an_infinite_flux() {
     g.temp = [1.7e308, -1.7e308];
     assert_eq!(g.call(), 0.0);
     assert_eq!(&g.ak[1..], &[GUARD; 4]);
-    let msg = FricCall::last_error();
-    assert!(msg.contains("GAPCON") && msg.contains("overflow"), "{msg}");
+    assert_mentions(
+        &FricCall::last_error(),
+        &["GAPCON", "overflow"],
+        "overflowing flux",
+    );
 }

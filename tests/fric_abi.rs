@@ -8,6 +8,9 @@ use interfacial::props::CoulombBuilder;
 #[path = "common/laws.rs"]
 mod laws;
 use laws::set_entry;
+#[path = "common/refusal.rs"]
+mod refusal;
+use refusal::assert_fric_refused;
 #[path = "common/threads.rs"]
 mod threads;
 use threads::map_on_threads;
@@ -169,19 +172,8 @@ fn cases() -> Vec<Case> {
 /// Runs a bad call and checks the documented safe outputs.
 fn check_refused(mut c: FricCall, what: &str, word: &str) {
     c.set_guards();
-    let before = c.clone();
-    c.call();
-    assert_eq!(c.pnewdt, CUTBACK_RATIO, "{what}: PNEWDT");
-    assert_eq!(c.lm, before.lm, "{what}: LM");
-    let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-    assert_eq!(bits(&c.tau), bits(&before.tau), "{what}: TAU");
-    assert_eq!(bits(&c.statev), bits(&before.statev), "{what}: STATEV");
+    let c = assert_fric_refused(c, what, word);
     assert!(c.guards_intact(), "{what}: guards");
-    let msg = FricCall::last_error();
-    assert!(
-        msg.contains("FRIC") && msg.contains("'SI1'") && msg.contains(word),
-        "{what}: message {msg:?} should name FRIC, the interaction and {word:?}"
-    );
     for (i, x) in c.ddtddg.iter().enumerate() {
         assert!(!x.is_nan(), "{what}: DDTDDG[{i}] is NaN");
     }

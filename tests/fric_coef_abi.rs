@@ -5,43 +5,11 @@
 #[path = "common/fric_coef.rs"]
 mod fric_coef_common;
 use fric_coef_common::fric_coef_call;
-use interfacial::abi::fric_coef_;
 use interfacial::abi::host::FricCall;
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use proptest::prelude::*;
-use std::ffi::{c_char, c_int};
 
 const GUARD: f64 = -7.77e77;
-
-/// The signature of abi.md: 16 explicit arguments by reference, 3 hidden lengths.
-#[test]
-fn export_has_the_fric_coef_signature() {
-    type I = *const c_int;
-    type R = *const f64;
-    type S = *const c_char;
-    type FricCoef = unsafe extern "C" fn(
-        *mut f64, // fCoef(nBlock,2)
-        *mut f64, // fCoefDeriv(nBlock,20,2)
-        I,        // nBlock
-        I,        // nProps
-        I,        // nTemp
-        I,        // nFields
-        I,        // iData
-        R,        // rData
-        S,        // surfInt
-        S,        // surfSec
-        S,        // surfMain
-        R,        // props
-        R,        // slipData(nBlock,6)
-        R,        // pressure(nBlock)
-        R,        // tempAvg(nBlock)
-        R,        // fieldAvg(nBlock,nFields)
-        usize,    // len(surfInt)
-        usize,    // len(surfSec)
-        usize,    // len(surfMain)
-    );
-    let _: FricCoef = fric_coef_;
-}
 
 /// One FRIC_COEF call's arrays, with guard slots after each output.
 struct Block {

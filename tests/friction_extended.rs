@@ -9,8 +9,11 @@
 mod central;
 #[path = "common/laws.rs"]
 mod laws;
+#[path = "common/loading.rs"]
+mod loading;
 use central::{Shift, along_dgam, along_press, along_temp, central_tau, slide_steadily};
 use laws::{every_mu_law, set_entry};
+use loading::Loading;
 
 use interfacial::abi::host::FricCall;
 use interfacial::laws::coulomb::{Contact, Coulomb, EntryFlag, Increment};
@@ -119,10 +122,7 @@ impl Params {
 struct Sample {
     nfdir: usize,
     law: Params,
-    p0: f64,
-    dp: f64,
-    tau_frac: [f64; 2],
-    dgam_frac: [f64; 2],
+    load: Loading,
     dtime: f64,
     start_rate: f64,
     theta: f64,
@@ -186,10 +186,12 @@ fn sample() -> impl Strategy<Value = Sample> {
                 Sample {
                     nfdir,
                     law,
-                    p0,
-                    dp: dpf * p0,
-                    tau_frac,
-                    dgam_frac,
+                    load: Loading {
+                        p0,
+                        dp: dpf * p0,
+                        tau_frac,
+                        dgam_frac,
+                    },
                     dtime,
                     start_rate,
                     theta,
@@ -219,16 +221,15 @@ fn prepare(s: &Sample, dgam_shift: [f64; 2], dp_shift: f64, temp_shift: [f64; 2]
     c.statev[1] = s.start_rate;
     c.statev[2] = 1.0;
     let a = s.law.scaling(n);
-    let tc0 = s.law.critical(n, 0.0, s.p0, s.theta);
+    let tc0 = s.law.critical(n, 0.0, s.load.p0, s.theta);
     for i in 0..n {
         // A start stress inside the (scaled) cone, plus the viscous part when damped.
         let visc = if s.law.c0 > 0.0 { s.viscous[i] } else { 0.0 };
-        c.tau[i] = a[i] * s.tau_frac[i] * tc0 / (n as f64).sqrt() + visc;
+        c.tau[i] = a[i] * s.load.tau_frac[i] * tc0 / (n as f64).sqrt() + visc;
         c.statev[3 + i] = visc;
-        c.dgam[i] = s.dgam_frac[i] * s.law.gamma_crit + dgam_shift[i];
+        c.dgam[i] = s.load.dgam_frac[i] * s.law.gamma_crit + dgam_shift[i];
     }
-    c.press = s.p0 + s.dp + dp_shift;
-    c.dpress = s.dp + dp_shift;
+    s.load.set_pressure(&mut c, dp_shift);
     c.dtime = s.dtime;
     c.temp = [s.theta + temp_shift[0], s.theta + temp_shift[1]];
     c
@@ -272,7 +273,7 @@ fn check_tangents(s: Sample) -> Result<(), TestCaseError> {
     }
     let at = |(g, dp, dt): Shift| call(&s, g, dp, dt);
     let law = &s.law;
-    let p = s.p0 + s.dp;
+    let p = s.load.p_end();
     let mbar = law.mbar(n);
     let rate_dt = law.rate_dt(s.dtime);
     let k_scale = mbar * p.max(1.0) / law.gamma_crit + law.c0 / rate_dt;
@@ -296,7 +297,7 @@ fn check_tangents(s: Sample) -> Result<(), TestCaseError> {
         }
     }
     // DDTDDP(a): the end pressure moves, the start (PRESS − DPRESS) stays.
-    let hp = 1e-6 * s.p0;
+    let hp = 1e-6 * s.load.p0;
     for a in 0..n {
         match central_tau(a, hp, mbar.max(1.0), along_press, at) {
             Some(fd) => {

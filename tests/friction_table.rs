@@ -13,8 +13,11 @@ mod central;
 mod config_file;
 #[path = "common/fric_coef.rs"]
 mod fric_coef_common;
+#[path = "common/loading.rs"]
+mod loading;
 use central::{Shift, along_dgam, along_press, along_temp, central_tau, slide_steadily};
 use fric_coef_common::fric_coef_call;
+use loading::Loading;
 
 use std::process::Command;
 
@@ -119,13 +122,10 @@ struct Sample {
     mu2: f64,
     exact: bool,
     frozen: bool,
-    p0: f64,
-    dp: f64,
+    load: Loading,
     theta: f64,
     start_rate: f64,
     dtime: f64,
-    tau_frac: [f64; 2],
-    dgam_frac: [f64; 2],
 }
 
 const GC: f64 = 1e-3;
@@ -160,13 +160,15 @@ fn sample() -> impl Strategy<Value = Sample> {
                 mu2,
                 exact,
                 frozen,
-                p0,
-                dp,
+                load: Loading {
+                    p0,
+                    dp,
+                    tau_frac,
+                    dgam_frac,
+                },
                 theta,
                 start_rate,
                 dtime,
-                tau_frac,
-                dgam_frac,
             },
         )
 }
@@ -179,12 +181,11 @@ fn call(s: &Sample, dg: [f64; 2], dp: f64, dt: [f64; 2]) -> FricCall {
     c.statev[2] = 1.0;
     // A start stress well inside the cone (μ ≥ 0.33 everywhere in the table).
     for i in 0..n {
-        c.tau[i] = s.tau_frac[i] * 0.3 * s.p0 / (n as f64).sqrt()
+        c.tau[i] = s.load.tau_frac[i] * 0.3 * s.load.p0 / (n as f64).sqrt()
             * if i == 1 && s.mu2 > 0.0 { 0.5 } else { 1.0 };
-        c.dgam[i] = s.dgam_frac[i] * GC + dg[i];
+        c.dgam[i] = s.load.dgam_frac[i] * GC + dg[i];
     }
-    c.press = s.p0 + s.dp + dp;
-    c.dpress = s.dp + dp;
+    s.load.set_pressure(&mut c, dp);
     c.dtime = s.dtime;
     c.temp = [s.theta + dt[0], s.theta + dt[1]];
     c.call();
@@ -212,7 +213,7 @@ fn tangents_match_central_differences_with_a_table() {
             return Ok(());
         }
         let at = |(g, dp, dt): Shift| call(&s, g, dp, dt);
-        let p = s.p0 + s.dp;
+        let p = s.load.p_end();
         let k_scale = 0.5 * p.max(1.0) / GC;
         let mut skipped = false;
         let mut check =
@@ -233,7 +234,7 @@ fn tangents_match_central_differences_with_a_table() {
             }
         }
         for a in 0..n {
-            let fd = central_tau(a, 1e-6 * s.p0, 1.0, along_press, at);
+            let fd = central_tau(a, 1e-6 * s.load.p0, 1.0, along_press, at);
             check(format!("DDTDDP({a})"), fd, base.ddtddp[a], 1.0)?;
         }
         let t_scale = p.max(1.0) * 1e-3;

@@ -94,6 +94,28 @@ fn exports_have_the_abaqus_signatures() {
         usize,      // len(MSNAME)
     );
     let _: Fric = interfacial::abi::fric_;
+    // FRIC_COEF: 16 explicit arguments, 3 hidden lengths.
+    let _: unsafe extern "C" fn(
+        *mut f64, // fCoef(nBlock,2)
+        *mut f64, // fCoefDeriv(nBlock,20,2)
+        I,        // nBlock
+        I,        // nProps
+        I,        // nTemp
+        I,        // nFields
+        I,        // iData
+        R,        // rData
+        S,        // surfInt
+        S,        // surfSec
+        S,        // surfMain
+        R,        // props
+        R,        // slipData(nBlock,6)
+        R,        // pressure(nBlock)
+        R,        // tempAvg(nBlock)
+        R,        // fieldAvg(nBlock,nFields)
+        usize,    // len(surfInt)
+        usize,    // len(surfSec)
+        usize,    // len(surfMain)
+    ) = interfacial::abi::fric_coef_;
     // CalculiX's GAPCON has one more argument, AREA, before the hidden lengths.
     macro_rules! gapcon {
         ($($area:ty)?) => {

@@ -3,6 +3,10 @@
 
 #![allow(clippy::needless_range_loop)] // index loops mirror the a, b indices of the equations
 
+#[path = "common/loading.rs"]
+mod loading;
+use loading::Loading;
+
 use interfacial::abi::host::FricCall;
 use interfacial::props::CoulombBuilder;
 use proptest::prelude::*;
@@ -21,10 +25,7 @@ struct Sample {
     mu: f64,
     tau_max: f64,
     gamma_crit: f64,
-    p0: f64,
-    dp: f64,
-    tau_frac: [f64; 2],
-    dgam_frac: [f64; 2],
+    load: Loading,
     branch: Branch,
 }
 
@@ -50,10 +51,12 @@ fn sample() -> impl Strategy<Value = Sample> {
                 mu,
                 tau_max,
                 gamma_crit,
-                p0,
-                dp: dp_frac * p0,
-                tau_frac,
-                dgam_frac,
+                load: Loading {
+                    p0,
+                    dp: dp_frac * p0,
+                    tau_frac,
+                    dgam_frac,
+                },
                 branch,
             },
         )
@@ -82,14 +85,13 @@ fn call_at(s: &Sample, dgam: [f64; 2], dp_shift: f64) -> FricCall {
         .build_first(7);
     let mut c = FricCall::new(s.nfdir, &props);
     let n = s.nfdir as usize;
-    let tc0 = tau_crit(s, s.p0);
+    let tc0 = tau_crit(s, s.load.p0);
     for i in 0..n {
-        c.tau[i] = s.tau_frac[i] * tc0;
+        c.tau[i] = s.load.tau_frac[i] * tc0;
         c.dgam[i] = dgam[i];
     }
     // The start of the increment (p0, TAU) is held fixed: PRESS and DPRESS move together.
-    c.press = s.p0 + s.dp + dp_shift;
-    c.dpress = s.dp + dp_shift;
+    s.load.set_pressure(&mut c, dp_shift);
     c.call();
     assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
     assert_eq!(c.lm, 0);
@@ -103,8 +105,8 @@ proptest! {
     #[test]
     fn tangents_match_central_differences(s in sample()) {
         let n = s.nfdir as usize;
-        let p = s.p0 + s.dp;
-        let tc0 = tau_crit(&s, s.p0);
+        let p = s.load.p_end();
+        let tc0 = tau_crit(&s, s.load.p0);
         let tc = tau_crit(&s, p);
         prop_assume!(p > 0.0 && tc > 0.0);
         // Keep away from the τ_max kink.
@@ -113,10 +115,10 @@ proptest! {
         }
         let gc = s.gamma_crit;
         // Start elastic slip γ̄ = τ̄/k_s(p0); place the predictor in the wanted branch.
-        let start: Vec<f64> = (0..n).map(|i| s.tau_frac[i] * tc0 * gc / tc0.max(f64::MIN_POSITIVE)).collect();
+        let start: Vec<f64> = (0..n).map(|i| s.load.tau_frac[i] * tc0 * gc / tc0.max(f64::MIN_POSITIVE)).collect();
         let mut dgam = [0.0; 2];
         for i in 0..n {
-            dgam[i] = s.dgam_frac[i] * gc;
+            dgam[i] = s.load.dgam_frac[i] * gc;
         }
         let pred: f64 = (0..n).map(|i| (start[i] + dgam[i]).powi(2)).sum::<f64>().sqrt();
         match s.branch {
@@ -124,7 +126,7 @@ proptest! {
             Branch::Slip => prop_assume!(pred > gc * 1.001),
             Branch::ExactSlip => {
                 // Slipping on entry (LM = 0) and moving with the start stress: Δγ·τ(t) > 0.
-                let along: f64 = (0..n).map(|i| dgam[i] * s.tau_frac[i]).sum();
+                let along: f64 = (0..n).map(|i| dgam[i] * s.load.tau_frac[i]).sum();
                 let size: f64 = (0..n).map(|i| dgam[i] * dgam[i]).sum::<f64>().sqrt();
                 prop_assume!(along > 1e-3 * size * 0.7 && size > 1e-2 * gc);
             }
@@ -148,7 +150,7 @@ proptest! {
             }
         }
         // DDTDDP(a) against central differences in the end pressure.
-        let hp = 1e-6 * s.p0;
+        let hp = 1e-6 * s.load.p0;
         let cu = call_at(&s, dgam, hp);
         let cd = call_at(&s, dgam, -hp);
         for a in 0..n {

@@ -192,35 +192,14 @@ pub fn frame(
     f: &Frame,
     body: impl FnOnce(&mut Chart<'_, '_>) -> Result<(), String>,
 ) -> Result<(), String> {
-    const LEGEND_W: u32 = 300;
-    const LINE: i32 = 15;
-    let note_lines: Vec<String> = f.notes.iter().flat_map(|n| wrap(n, 120)).collect();
-    let notes_h = 10 + LINE as u32 * note_lines.len() as u32;
-    let (w, h) = (f.size.0 + LEGEND_W, f.size.1 + notes_h);
-    let root = SVGBackend::new(path, (w, h)).into_drawing_area();
-    root.fill(&WHITE).map_err(err)?;
-    let (upper, notes) = root.split_vertically(f.size.1);
-    let (plot, side) = upper.split_horizontally(f.size.0);
-    let mut builder = ChartBuilder::on(&plot);
-    // The caption is drawn by hand at the top (plotters puts it inside the top margin, where the
-    // second x axis goes).
-    builder
-        .margin(12)
-        .margin_top(40)
-        .x_label_area_size(48)
-        .y_label_area_size(78);
+    let canvas = Canvas::new(path, f.title, f.size, &f.notes)?;
+    let root = &canvas.root;
+    let mut builder = canvas.builder();
     if f.top.is_some() {
         // Room above the plot for the second x axis, drawn by hand below (a plotters top label
         // area would also carry the primary axis' labels).
         builder.margin_top(92);
     }
-    let w = 9 * f.title.chars().count() as i32;
-    root.draw(&Text::new(
-        f.title.to_string(),
-        (f.size.0 as i32 / 2 - w / 2, 10),
-        ("sans-serif", 18).into_font(),
-    ))
-    .map_err(err)?;
     let mut chart = builder
         .build_cartesian_2d(
             log_axis(f.x.range.0, f.x.range.1),
@@ -268,74 +247,110 @@ pub fn frame(
         ))
         .map_err(err)?;
     }
-    draw_legend(&side, &f.legend)?;
-    draw_notes(&notes, &note_lines)?;
-    root.present().map_err(err)
+    canvas.finish(&f.legend)
 }
 
-/// A chart with linear axes (a time trace): the same title, legend panel and notes as [`frame`].
-pub struct LinearFrame<'a> {
-    /// Caption.
-    pub title: &'a str,
-    /// x range and title with the unit.
-    pub x: ((f64, f64), String),
-    /// y range and title with the unit.
-    pub y: ((f64, f64), String),
-    /// Legend panel entries.
-    pub legend: Vec<(Swatch, String)>,
-    /// Notes under the plot, one line each.
-    pub notes: Vec<String>,
-    /// Pixel size of the plot.
-    pub size: (u32, u32),
-}
-
-/// The plotting context of a [`LinearFrame`].
+/// The plotting context of [`frame_linear`].
 pub type LinearChart<'a, 'b> = ChartContext<
     'a,
     SVGBackend<'b>,
     Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
 >;
 
-/// Draws a [`LinearFrame`] and calls `body` to draw the data.
+/// Draws `f` with linear axes (a time trace; the same title, legend panel and notes as [`frame`])
+/// and calls `body` to draw the data. The second x axis on top is [`frame`]'s only: `f.top` must
+/// be `None`.
 pub fn frame_linear(
     path: &Path,
-    f: &LinearFrame,
+    f: &Frame,
     body: impl FnOnce(&mut LinearChart<'_, '_>) -> Result<(), String>,
 ) -> Result<(), String> {
-    const LEGEND_W: u32 = 300;
-    let note_lines: Vec<String> = f.notes.iter().flat_map(|n| wrap(n, 120)).collect();
-    let notes_h = 10 + 15 * note_lines.len() as u32;
-    let root = SVGBackend::new(path, (f.size.0 + LEGEND_W, f.size.1 + notes_h)).into_drawing_area();
-    root.fill(&WHITE).map_err(err)?;
-    let (upper, notes) = root.split_vertically(f.size.1);
-    let (plot, side) = upper.split_horizontally(f.size.0);
-    let w = 9 * f.title.chars().count() as i32;
-    root.draw(&Text::new(
-        f.title.to_string(),
-        ((f.size.0 as i32 / 2 - w / 2).max(4), 10),
-        ("sans-serif", 18).into_font(),
-    ))
-    .map_err(err)?;
-    let mut chart = ChartBuilder::on(&plot)
-        .margin(12)
-        .margin_top(40)
-        .x_label_area_size(48)
-        .y_label_area_size(78)
-        .build_cartesian_2d(f.x.0.0..f.x.0.1, f.y.0.0..f.y.0.1)
+    if f.top.is_some() {
+        return Err(format!("{}: a linear chart has no second x axis", f.title));
+    }
+    let canvas = Canvas::new(path, f.title, f.size, &f.notes)?;
+    let mut chart = canvas
+        .builder()
+        .build_cartesian_2d(f.x.range.0..f.x.range.1, f.y.range.0..f.y.range.1)
         .map_err(err)?;
     draw_mesh(
         chart
             .configure_mesh()
-            .x_desc(f.x.1.as_str())
-            .y_desc(f.y.1.as_str()),
+            .x_desc(f.x.title.as_str())
+            .y_desc(f.y.title.as_str()),
     )?;
     body(&mut chart)?;
-    draw_legend(&side, &f.legend)?;
-    draw_notes(&notes, &note_lines)?;
-    root.present().map_err(err)
+    canvas.finish(&f.legend)
 }
 
 type Area<'b> = DrawingArea<SVGBackend<'b>, plotters::coord::Shift>;
+
+/// The layout every chart shares: the plot (`size` pixels) with the title centred above it, the
+/// legend panel to its right and the wrapped notes under both.
+struct Canvas<'b> {
+    /// The whole image.
+    root: Area<'b>,
+    /// Where the axes and the data go.
+    plot: Area<'b>,
+    /// The legend panel.
+    side: Area<'b>,
+    /// The area under the plot and its wrapped lines.
+    notes: Area<'b>,
+    note_lines: Vec<String>,
+}
+
+impl<'b> Canvas<'b> {
+    /// A white image at `path` split into the areas, with the title drawn.
+    fn new(
+        path: &'b Path,
+        title: &str,
+        size: (u32, u32),
+        notes: &[String],
+    ) -> Result<Self, String> {
+        const LEGEND_W: u32 = 300;
+        const LINE: u32 = 15;
+        let note_lines: Vec<String> = notes.iter().flat_map(|n| wrap(n, 120)).collect();
+        let notes_h = 10 + LINE * note_lines.len() as u32;
+        let root = SVGBackend::new(path, (size.0 + LEGEND_W, size.1 + notes_h)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let (upper, notes) = root.split_vertically(size.1);
+        let (plot, side) = upper.split_horizontally(size.0);
+        let w = 9 * title.chars().count() as i32;
+        root.draw(&Text::new(
+            title.to_string(),
+            ((size.0 as i32 / 2 - w / 2).max(4), 10),
+            ("sans-serif", 18).into_font(),
+        ))
+        .map_err(err)?;
+        Ok(Canvas {
+            root,
+            plot,
+            side,
+            notes,
+            note_lines,
+        })
+    }
+
+    /// A chart builder on the plot with the margins and label areas every chart shares. The
+    /// caption is drawn by [`Canvas::new`], not by plotters (which puts it inside the top margin,
+    /// where a second x axis goes).
+    fn builder(&self) -> ChartBuilder<'_, '_, SVGBackend<'b>> {
+        let mut builder = ChartBuilder::on(&self.plot);
+        builder
+            .margin(12)
+            .margin_top(40)
+            .x_label_area_size(48)
+            .y_label_area_size(78);
+        builder
+    }
+
+    /// Draws the legend panel and the notes, and writes the file.
+    fn finish(&self, legend: &[(Swatch, String)]) -> Result<(), String> {
+        draw_legend(&self.side, legend)?;
+        draw_notes(&self.notes, &self.note_lines)?;
+        self.root.present().map_err(err)
+    }
+}
 
 /// The grid and the label fonts every chart shares; draws the mesh.
 fn draw_mesh<X, Y>(mesh: &mut MeshStyle<'_, '_, X, Y, SVGBackend<'_>>) -> Result<(), String>

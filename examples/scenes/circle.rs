@@ -9,6 +9,9 @@ use interfacial::abi::host::FricCall;
 use interfacial::props::CoulombBuilder;
 use serde::Deserialize;
 
+use crate::scene::Bound::Positive;
+use crate::scene::check_bounds;
+
 /// The parameters of F2.
 #[derive(Clone, Copy, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -43,10 +46,10 @@ pub struct CircleRun {
 impl Circle {
     /// Checks the parameters.
     pub fn validate(&self) -> Result<(), String> {
-        crate::scene::all_positive(&[
-            ("mu", self.mu),
-            ("pressure", self.pressure),
-            ("radius", self.radius),
+        check_bounds(&[
+            ("mu", self.mu, Positive),
+            ("pressure", self.pressure, Positive),
+            ("radius", self.radius, Positive),
         ])?;
         if self.turns == 0 || self.turns > 100 {
             return Err(format!("turns = {} must be in 1..=100", self.turns));

@@ -307,21 +307,36 @@ impl Band {
 // ---------------------------------------------------------------------------------------------
 // The host: degrees of freedom, elements, the interface point.
 
-/// One element: its nodes' (w, p) dofs, length and layer.
+/// The (w, p) dofs of two nodes: an element's ends, or the nodes either side of the interface.
 #[derive(Clone, Copy, Debug)]
-struct Element {
+struct NodePair {
     w: [usize; 2],
     p: [usize; 2],
+}
+
+impl NodePair {
+    /// From two entries (z, w dof, p dof) of the node list.
+    fn of(a: (f64, usize, usize), b: (f64, usize, usize)) -> NodePair {
+        NodePair {
+            w: [a.1, b.1],
+            p: [a.2, b.2],
+        }
+    }
+}
+
+/// One element: its nodes, length and layer.
+#[derive(Clone, Copy, Debug)]
+struct Element {
+    nodes: NodePair,
     length: f64,
     permeability: f64,
     modulus: f64,
 }
 
-/// The interface's dofs.
+/// The interface's dofs: its two nodes, the contact multiplier λ and the flux q̂.
 #[derive(Clone, Copy, Debug)]
 struct InterfaceDofs {
-    w: [usize; 2],
-    p: [usize; 2],
+    nodes: NodePair,
     lambda: usize,
     q_hat: usize,
 }
@@ -365,11 +380,8 @@ impl Mesh {
                 let lambda = next;
                 next += 2;
                 node(&mut nodes, &mut next, l1.thickness);
-                let (_, w1, p1) = nodes[n1];
-                let (_, w2, p2) = nodes[n1 + 1];
                 Some(InterfaceDofs {
-                    w: [w1, w2],
-                    p: [p1, p2],
+                    nodes: NodePair::of(nodes[n1], nodes[n1 + 1]),
                     lambda,
                     q_hat: lambda + 1,
                 })
@@ -394,8 +406,7 @@ impl Mesh {
             };
             let l = layer_of(e);
             elements.push(Element {
-                w: [nodes[a].1, nodes[b].1],
-                p: [nodes[a].2, nodes[b].2],
+                nodes: NodePair::of(nodes[a], nodes[b]),
                 length: nodes[b].0 - nodes[a].0,
                 permeability: l.permeability,
                 modulus: l.modulus,
@@ -440,7 +451,8 @@ impl Mesh {
 
     /// The interface pressures (p₁, p₂) and q̂, when there is an interface.
     pub fn interface_state(&self, x: &[f64]) -> Option<(f64, f64, f64)> {
-        self.interface.map(|i| (x[i.p[0]], x[i.p[1]], x[i.q_hat]))
+        self.interface
+            .map(|i| (x[i.nodes.p[0]], x[i.nodes.p[1]], x[i.q_hat]))
     }
 }
 
@@ -530,8 +542,8 @@ impl Mesh {
         let skeleton = matches!(analysis, Analysis::Transient(_));
         for e in &self.elements {
             let (l, k, m) = (e.length, e.permeability, e.modulus);
-            let [wa, wb] = e.w;
-            let [pa, pb] = e.p;
+            let [wa, wb] = e.nodes.w;
+            let [pa, pb] = e.nodes.p;
             // ∫ M w′δw′: M/ℓ [[1, −1], [−1, 1]].
             let s = m / l * (x[wa] - x[wb]);
             r[wa] += s;
@@ -573,8 +585,8 @@ impl Mesh {
             }
         }
         if let Some(i) = self.interface {
-            let [w1, w2] = i.w;
-            let [p1, p2] = i.p;
+            let [w1, w2] = i.nodes.w;
+            let [p1, p2] = i.nodes.p;
             // Closed normal contact by a Lagrange multiplier: −λ δh − δλ h, h = w₂ − w₁.
             let h = x[w2] - x[w1];
             let lambda = x[i.lambda];
@@ -729,7 +741,7 @@ impl Steady {
         self.mesh
             .elements
             .iter()
-            .map(|e| -e.permeability * (self.x[e.p[1]] - self.x[e.p[0]]) / e.length)
+            .map(|e| -e.permeability * (self.x[e.nodes.p[1]] - self.x[e.nodes.p[0]]) / e.length)
             .collect()
     }
 

@@ -14,6 +14,9 @@ use interfacial::abi::host::FricCall;
 use interfacial::props::CoulombBuilder;
 use serde::Deserialize;
 
+use crate::scene::Bound::Positive;
+use crate::scene::check_bounds;
+
 /// The physical parameters of F6.
 #[derive(Clone, Copy, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -91,14 +94,13 @@ impl Oscillator {
     }
     /// Checks the parameters describe a stick-slip cycle.
     pub fn validate(&self) -> Result<(), String> {
-        let positive = [
-            ("mass", self.mass),
-            ("spring", self.spring),
-            ("normal_force", self.normal_force),
-            ("mu_kinetic", self.mu_kinetic),
-            ("belt_speed", self.belt_speed),
-        ];
-        crate::scene::all_positive(&positive)?;
+        check_bounds(&[
+            ("mass", self.mass, Positive),
+            ("spring", self.spring, Positive),
+            ("normal_force", self.normal_force, Positive),
+            ("mu_kinetic", self.mu_kinetic, Positive),
+            ("belt_speed", self.belt_speed, Positive),
+        ])?;
         if !(self.mu_static.is_finite() && self.mu_static > self.mu_kinetic) {
             return Err(format!(
                 "mu_static = {} must exceed mu_kinetic = {} for stick-slip",

@@ -15,6 +15,8 @@ use interfacial::props::CoulombBuilder;
 use serde::Deserialize;
 
 use crate::oscillator::Stick;
+use crate::scene::Bound::Positive;
+use crate::scene::check_bounds;
 
 /// The parameters of the pull scene.
 #[derive(Clone, Copy, Debug, Deserialize)]
@@ -49,10 +51,10 @@ const MAX_NEWTON: usize = 30;
 impl Pull {
     /// Checks the parameters.
     pub fn validate(&self) -> Result<(), String> {
-        crate::scene::all_positive(&[
-            ("mu", self.mu),
-            ("pressure", self.pressure),
-            ("spring", self.spring),
+        check_bounds(&[
+            ("mu", self.mu, Positive),
+            ("pressure", self.pressure, Positive),
+            ("spring", self.spring, Positive),
         ])?;
         if !(self.travel.is_finite() && self.travel > 1.0 && self.travel < 1e4) {
             return Err(format!(

@@ -201,17 +201,11 @@ impl Method {
                 ));
             }
         };
-        for (name, v) in [
-            ("claim_floor", spec.claim_floor),
-            ("claim_slope", spec.claim_slope),
-        ] {
-            if !(v.is_finite() && v >= 0.0) {
-                return Err(format!(
-                    "method '{}': {name} = {v} must be finite and ≥ 0",
-                    spec.label
-                ));
-            }
-        }
+        check_bounds(&[
+            ("claim_floor", spec.claim_floor, Bound::NonNegative),
+            ("claim_slope", spec.claim_slope, Bound::NonNegative),
+        ])
+        .map_err(|e| format!("method '{}': {e}", spec.label))?;
         Ok(Method {
             spec: spec.clone(),
             law,
@@ -404,26 +398,28 @@ fn timed<R>(timing: Timing, mut run: impl FnMut() -> R) -> (R, f64, [f64; 2], [u
     )
 }
 
-/// The first of the named parameters that is not finite and > 0, as an error.
-pub fn all_positive(parameters: &[(&str, f64)]) -> Result<(), String> {
-    match parameters
-        .iter()
-        .find(|(_, v)| !(v.is_finite() && *v > 0.0))
-    {
-        Some((name, v)) => Err(format!("{name} = {v} must be finite and > 0")),
-        None => Ok(()),
-    }
+/// What a scene parameter must be besides finite.
+#[derive(Clone, Copy, Debug)]
+pub enum Bound {
+    /// > 0.
+    Positive,
+    /// ≥ 0.
+    NonNegative,
 }
 
-/// The first of the named parameters that is not finite and ≥ 0, as an error.
-pub fn all_non_negative(parameters: &[(&str, f64)]) -> Result<(), String> {
-    match parameters
-        .iter()
-        .find(|(_, v)| !(v.is_finite() && *v >= 0.0))
-    {
-        Some((name, v)) => Err(format!("{name} = {v} must be finite and ≥ 0")),
-        None => Ok(()),
+/// The first of the named parameters that is not finite or not within its bound, as an error
+/// ("name = value must be finite and > 0", or "≥ 0").
+pub fn check_bounds(parameters: &[(&str, f64, Bound)]) -> Result<(), String> {
+    for &(name, v, bound) in parameters {
+        let (ok, rule) = match bound {
+            Bound::Positive => (v > 0.0, "> 0"),
+            Bound::NonNegative => (v >= 0.0, "≥ 0"),
+        };
+        if !(v.is_finite() && ok) {
+            return Err(format!("{name} = {v} must be finite and {rule}"));
+        }
     }
+    Ok(())
 }
 
 /// Runs one method at one step, timed as the main job times it (the earlier entry point).

@@ -17,6 +17,9 @@ use interfacial::abi::host::FricCall;
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use serde::Deserialize;
 
+use crate::scene::Bound::{NonNegative, Positive};
+use crate::scene::check_bounds;
+
 /// The parameters of F4.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -73,17 +76,15 @@ impl VelocitySteps {
         if self.rates.is_empty() || self.rates.iter().any(|v| !(v.is_finite() && *v > 0.0)) {
             return Err("rates must be a non-empty list of positive rates".into());
         }
-        crate::scene::all_positive(&[
-            ("hold", self.hold),
-            ("pressure", self.pressure),
-            ("mu_static", self.mu_static),
-            ("decay", self.decay),
-        ])?;
-        crate::scene::all_non_negative(&[
-            ("mu_kinetic", self.mu_kinetic),
-            ("v_half", self.v_half),
-            ("k_mu", self.k_mu),
-            ("shear_adhesion", self.shear_adhesion),
+        check_bounds(&[
+            ("hold", self.hold, Positive),
+            ("pressure", self.pressure, Positive),
+            ("mu_static", self.mu_static, Positive),
+            ("decay", self.decay, Positive),
+            ("mu_kinetic", self.mu_kinetic, NonNegative),
+            ("v_half", self.v_half, NonNegative),
+            ("k_mu", self.k_mu, NonNegative),
+            ("shear_adhesion", self.shear_adhesion, NonNegative),
         ])?;
         if self.mu_kinetic >= self.mu_static {
             return Err("mu_kinetic must be < mu_static".into());

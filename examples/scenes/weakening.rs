@@ -30,8 +30,7 @@ use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use plotters::prelude::*;
 
 use crate::charts::{
-    Axis, COLORS, Frame, LinearFrame, Marker, Swatch, draw_cells, edge, frame as frame_chart,
-    frame_linear,
+    Axis, COLORS, Frame, Marker, Swatch, draw_cells, edge, frame as frame_chart, frame_linear,
 };
 use crate::checks::Row;
 
@@ -696,20 +695,16 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
     let mut table = String::from(
         "| Δt | tangent | x_max − ref | x_min − ref | period − ref | Newton mean | max | mean near onset | max near onset | unconverged |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n",
     );
-    // Mean Newton iterations near the onsets, per (Δt, tangent), for the exact-against-bounded
-    // rows (docs/props.md: the exact tangent stays the default because it needs fewer).
-    let mut onset_means: Vec<(f64, Tangent, f64)> = Vec::new();
-    let mut adhesive_means: Vec<(f64, Tangent, f64)> = Vec::new();
     let mut traces = vec![(
         format!("reference Δt = {reference_dt}"),
         reference_dt,
         reference.x.clone(),
     )];
-    for (dt, tangent) in step_grid() {
-        let run = b.run(dt, t_end, tangent);
-        let (xmax, xmin, period, stuck) = cycle_measures(&run, dt);
-        let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
-        onset_means.push((dt, tangent, omean));
+    let decay_runs = b.grid_runs(t_end);
+    for g in &decay_runs {
+        let (dt, tangent, run) = (g.dt, g.tangent, &g.run);
+        let (xmax, xmin, period, stuck) = cycle_measures(run, dt);
+        let ((mean, max), (omean, omax)) = (g.all, g.onset);
         let _ = writeln!(
             csv,
             "{dt},{tangent:?},{xmax:e},{xmin:e},{period:e},{stuck:e},{mean},{max},{omean},{omax},{}",
@@ -777,10 +772,11 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
             )
         })
         .collect();
-    let frame = LinearFrame {
+    let frame = Frame {
         title: "F7: F6 with velocity-weakening μ (decay law), implicit steps",
-        x: ((0.0, t_end), "time t (s)".into()),
-        y: ((0.0, 0.75), "block position x (m)".into()),
+        x: Axis::new((0.0, t_end), "time t (s)"),
+        y: Axis::new((0.0, 0.75), "block position x (m)"),
+        top: None,
         legend,
         notes: vec![
             format!(
@@ -820,34 +816,33 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
         adhesive_vhalf: Some(0.005),
         ..b
     };
-    for (dt, tangent) in step_grid() {
-        let run = a.run(dt, t_end, tangent);
-        let ((mean, max), (omean, omax)) = (run.newton(false), run.newton(true));
-        adhesive_means.push((dt, tangent, omean));
+    let adhesive_runs = a.grid_runs(t_end);
+    for g in &adhesive_runs {
         let _ = writeln!(
             table,
-            "| {dt} | {tangent:?} | {mean:.2} | {max} | {omean:.2} | {omax} | {} |",
-            run.failed
+            "| {} | {:?} | {:.2} | {} | {:.2} | {} | {} |",
+            g.dt, g.tangent, g.all.0, g.all.1, g.onset.0, g.onset.1, g.run.failed
         );
         // Measured: 2 steps of 2000 at Δt = 0.02 (slip → stick, not onsets) and 9 at 0.05 do
         // not converge in 50 iterations (a host cuts back there); claimed from 0.01 down.
-        if tangent == Tangent::Exact && dt <= 0.01 {
+        if g.tangent == Tangent::Exact && g.dt <= 0.01 {
             rows.push(row(
-                format!("adhesive v_½ = 0.005, Δt = {dt}, exact tangent"),
+                format!("adhesive v_½ = 0.005, Δt = {}, exact tangent", g.dt),
                 "Newton: unconverged steps",
                 0.0,
-                run.failed as f64,
+                g.run.failed as f64,
                 0.0,
             ));
         }
     }
-    for (law, means) in [("decay", &onset_means), ("adhesive", &adhesive_means)] {
+    // Mean Newton iterations near the onsets, exact against bounded tangent (docs/props.md: the
+    // exact tangent stays the default because it needs fewer).
+    for (law, runs) in [("decay", &decay_runs), ("adhesive", &adhesive_runs)] {
         for dt in [0.02, 0.01] {
             let of = |t: Tangent| {
-                means
-                    .iter()
-                    .find(|(d, tt, _)| *d == dt && *tt == t)
-                    .map_or(f64::NAN, |m| m.2)
+                runs.iter()
+                    .find(|g| g.dt == dt && g.tangent == t)
+                    .map_or(f64::NAN, |g| g.onset.0)
             };
             rows.push(row(
                 format!("{law}, Δt = {dt}"),
@@ -867,6 +862,35 @@ fn step_grid() -> impl Iterator<Item = (f64, Tangent)> {
     [0.05, 0.02, 0.01]
         .into_iter()
         .flat_map(|dt| [Tangent::Exact, Tangent::Bounded].map(|tangent| (dt, tangent)))
+}
+
+/// A belt run at one step of [`step_grid`] with its Newton iterations per step, (mean, max)
+/// over every step and over the steps near a slip onset.
+struct GridRun {
+    dt: f64,
+    tangent: Tangent,
+    run: BeltRun,
+    all: (f64, u32),
+    onset: (f64, u32),
+}
+
+impl Belt {
+    /// One run per step of [`step_grid`], in table order.
+    fn grid_runs(&self, t_end: f64) -> Vec<GridRun> {
+        step_grid()
+            .map(|(dt, tangent)| {
+                let run = self.run(dt, t_end, tangent);
+                let (all, onset) = (run.newton(false), run.newton(true));
+                GridRun {
+                    dt,
+                    tangent,
+                    run,
+                    all,
+                    onset,
+                }
+            })
+            .collect()
+    }
 }
 
 /// Runs F7: check rows, and the charts and CSV written to `out`. Returns the rows, the files
