@@ -90,23 +90,11 @@ impl From<Result<(), super::Fault>> for IflStatus {
     }
 }
 
-/// Gap conductance and its derivatives (seed 000, section 5.2.4): q = k·(θ_A − θ_B).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct IflConductance {
-    /// Conductance k (conduction plus radiation's equivalent conductance).
-    pub k: f64,
-    /// ∂k/∂d (clearance).
-    pub dk_dd: f64,
-    /// ∂k/∂p (contact pressure).
-    pub dk_dp: f64,
-    /// ∂k/∂θ̄, θ̄ = (θ_A + θ_B)/2 (for radiation: at fixed θ_A − θ_B).
-    pub dk_dtheta_mean: f64,
-    /// ∂q/∂θ_A = k + ½(∂k/∂θ̄)(θ_A − θ_B) for conduction, exact for radiation.
-    pub dq_dtheta_a: f64,
-    /// ∂q/∂θ_B = −k + ½(∂k/∂θ̄)(θ_A − θ_B) for conduction, exact for radiation.
-    pub dq_dtheta_b: f64,
-}
+/// Gap conductance and its derivatives, as the native calls write them: the law's own
+/// [`ConductanceResponse`](crate::laws::gap_conductance::ConductanceResponse) (`#[repr(C)]`),
+/// named `IflConductance` in the header (cbindgen.toml's `[export.rename]`).
+pub use crate::laws::gap_conductance::ConductanceResponse as IflConductance;
+use crate::laws::gap_conductance::ConductanceResponse;
 
 /// The thermal law of `interaction` (NUL-terminated; matched as `gapcon_` matches `CINAME`) from
 /// the `INTERFACIAL_CONFIG` file, evaluated at clearance `d`, contact pressure `p` and surface
@@ -123,7 +111,7 @@ pub unsafe extern "C" fn ifl_gap_conductance(
     p: f64,
     theta_a: f64,
     theta_b: f64,
-    out: *mut IflConductance,
+    out: *mut ConductanceResponse,
 ) -> IflStatus {
     let name: Option<&[u8]> = if interaction.is_null() {
         None
@@ -150,7 +138,7 @@ pub unsafe extern "C" fn ifl_gap_conductance_n(
     p: f64,
     theta_a: f64,
     theta_b: f64,
-    out: *mut IflConductance,
+    out: *mut ConductanceResponse,
 ) -> IflStatus {
     let name: Option<&[u8]> = if interaction_len == 0 {
         Some(&[])
@@ -174,7 +162,7 @@ fn gap_conductance(
     p: f64,
     theta_a: f64,
     theta_b: f64,
-    out: *mut IflConductance,
+    out: *mut ConductanceResponse,
 ) -> IflStatus {
     super::boundary(
         || crate::report::Site {
@@ -192,21 +180,14 @@ fn gap_conductance(
             let r = law.evaluate(d, p, theta_a, theta_b)?;
             // SAFETY: checked non-NULL above; writable per the callers' contracts.
             unsafe {
-                out.write(IflConductance {
-                    k: r.k,
-                    dk_dd: r.dk_dd,
-                    dk_dp: r.dk_dp,
-                    dk_dtheta_mean: r.dk_dtheta_mean,
-                    dq_dtheta_a: r.dq_dtheta_a,
-                    dq_dtheta_b: r.dq_dtheta_b,
-                });
+                out.write(r);
             }
             Ok(())
         },
         || {
             if !out.is_null() {
                 // SAFETY: writable per the callers' contracts.
-                unsafe { out.write(IflConductance::default()) };
+                unsafe { out.write(ConductanceResponse::default()) };
             }
         },
     )

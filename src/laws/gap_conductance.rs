@@ -52,20 +52,23 @@ pub enum Conduction {
     },
 }
 
-/// k and its partial derivatives.
+// The native C API writes it as it is (`IflConductance` in include/interfacial.h: cbindgen.toml
+// renames it), so its layout is C's and its doc comments are the header's.
+/// Gap conductance and its derivatives (seed 000, section 5.2.4): q = k·(θ_A − θ_B).
+#[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct ConductanceResponse {
     /// Conductance k (conduction plus radiation's equivalent conductance).
     pub k: f64,
-    /// ∂k/∂d.
+    /// ∂k/∂d (clearance).
     pub dk_dd: f64,
-    /// ∂k/∂p.
+    /// ∂k/∂p (contact pressure).
     pub dk_dp: f64,
-    /// ∂k/∂θ̄ (for radiation: at fixed θ_A − θ_B).
+    /// ∂k/∂θ̄, θ̄ = (θ_A + θ_B)/2 (for radiation: at fixed θ_A − θ_B).
     pub dk_dtheta_mean: f64,
-    /// ∂q/∂θ_A.
+    /// ∂q/∂θ_A = k + ½(∂k/∂θ̄)(θ_A − θ_B) for conduction, exact for radiation.
     pub dq_dtheta_a: f64,
-    /// ∂q/∂θ_B.
+    /// ∂q/∂θ_B = −k + ½(∂k/∂θ̄)(θ_A − θ_B) for conduction, exact for radiation.
     pub dq_dtheta_b: f64,
 }
 
