@@ -118,21 +118,54 @@ pub enum FrictionStatus {
     ExactStick = 2,
 }
 
-/// The law's state: three scalars, stored in `STATEV(1..3)`. No vector is kept, so the rotation
-/// `DROT` of the tangent directions needs no treatment (the host rotates `TAU` itself).
+/// How a point's status is stored in `STATEV(3)`: [`FrictionStatus`] for the Coulomb laws,
+/// `InterfaceStatus` for the adhesive interface (which adds bonded and open).
+pub trait StatusCode: Copy {
+    /// The law, as a message about too short a `STATEV` names it.
+    const LAW: &'static str;
+    /// The status stored as `code`; an unknown code reads as stick.
+    fn from_code(code: f64) -> Self;
+    /// The code stored for the status.
+    fn code(self) -> f64;
+}
+
+impl StatusCode for FrictionStatus {
+    const LAW: &'static str = "the Coulomb law";
+
+    #[inline(always)]
+    fn from_code(code: f64) -> Self {
+        match code {
+            1.0 => FrictionStatus::Slip,
+            2.0 => FrictionStatus::ExactStick,
+            _ => FrictionStatus::Stick,
+        }
+    }
+
+    #[inline(always)]
+    fn code(self) -> f64 {
+        f64::from(self as i32)
+    }
+}
+
+/// A point's state: three scalars, stored in `STATEV(1..3)`. No vector is kept, so the
+/// rotation `DROT` of the tangent directions needs no treatment (the host rotates `TAU`
+/// itself). The laws differ only in the statuses `S` they record.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
-pub struct CoulombState {
+pub struct PointState<S> {
     /// Accumulated equivalent slip Σ|Δγ^sl| (path length of inelastic slip); saturates at
     /// f64::MAX.
     pub accumulated_slip: f64,
     /// Equivalent slip rate of the last increment, |Δγ^sl|/Δt (0 when Δt ≤ 0); saturates at
     /// f64::MAX.
     pub slip_rate: f64,
-    /// Stick, slip or exact stick in the last increment.
-    pub status: FrictionStatus,
+    /// What the point did in the last increment (stick, slip, …).
+    pub status: S,
 }
 
-impl CoulombState {
+/// The Coulomb laws' state: stick, slip or exact stick in the last increment.
+pub type CoulombState = PointState<FrictionStatus>;
+
+impl<S: StatusCode> PointState<S> {
     /// Number of `STATEV` entries the law uses.
     pub const NSTATV: usize = 3;
 
@@ -140,7 +173,7 @@ impl CoulombState {
     #[inline(always)]
     pub fn from_statev(statev: &[f64]) -> Result<Self, LawError> {
         let [s, rate, status, ..] = statev else {
-            return Err(short_statev(statev.len()));
+            return Err(short_statev(statev.len(), S::LAW));
         };
         Self::from_values(*s, *rate, *status).ok_or_else(corrupt_statev)
     }
@@ -163,15 +196,10 @@ impl CoulombState {
         slip_rate: f64,
         status: f64,
     ) -> Self {
-        let status = match status {
-            1.0 => FrictionStatus::Slip,
-            2.0 => FrictionStatus::ExactStick,
-            _ => FrictionStatus::Stick,
-        };
-        CoulombState {
+        PointState {
             accumulated_slip,
             slip_rate,
-            status,
+            status: S::from_code(status),
         }
     }
 
@@ -187,6 +215,18 @@ impl CoulombState {
         self.accumulated_slip * 0.0 + self.slip_rate * 0.0
     }
 
+    /// Writes the state into the first [`Self::NSTATV`] entries of `statev` (nothing else).
+    #[inline(always)]
+    pub fn write_statev(&self, statev: &mut [f64]) {
+        if let [s, rate, status, ..] = statev {
+            *s = self.accumulated_slip;
+            *rate = self.slip_rate;
+            *status = self.status.code();
+        }
+    }
+}
+
+impl CoulombState {
     /// The state after an increment held by Lagrange multipliers (`LM = 1`): no slip, no rate.
     #[inline(always)]
     #[must_use]
@@ -222,16 +262,6 @@ impl CoulombState {
             } else {
                 FrictionStatus::Stick
             },
-        }
-    }
-
-    /// Writes the state into the first [`Self::NSTATV`] entries of `statev` (nothing else).
-    #[inline(always)]
-    pub fn write_statev(&self, statev: &mut [f64]) {
-        if let [s, rate, status, ..] = statev {
-            *s = self.accumulated_slip;
-            *rate = self.slip_rate;
-            *status = self.status as i32 as f64;
         }
     }
 }
@@ -394,11 +424,9 @@ impl Coulomb {
         Ok(self)
     }
 
-    /// Chooses how stick is enforced.
-    #[must_use]
-    pub fn with_stick(mut self, stick: StickMode) -> Self {
-        self.stick = stick;
-        self
+    setters! {
+        /// Chooses how stick is enforced.
+        with_stick(stick: StickMode);
     }
 
     /// The friction coefficient μ.
@@ -950,9 +978,9 @@ pub(super) fn name_bad_input<const N: usize>(inc: Increment<N>, stick: StickMode
 
 #[cold]
 #[inline(never)]
-fn short_statev(n: usize) -> LawError {
+fn short_statev(n: usize, law: &str) -> LawError {
     LawError::Input(format!(
-        "NSTATV = {n} but the Coulomb law needs {}",
+        "NSTATV = {n} but {law} needs {}",
         CoulombState::NSTATV
     ))
 }
