@@ -392,17 +392,20 @@ impl Adhesive {
         dtime: f64,
         gamma_crit: f64,
     ) -> Slide<N> {
-        let (tau_s, dtau_s_dp) = self.stick_strength(sliding, p);
-        if tau_s == 0.0 {
-            return self.no_strength(predictor, sliding, p, dtime, gamma_crit);
+        let trial = Trial {
+            predictor,
+            predictor_eq: norm(predictor),
+            p,
+            dtime,
+            gamma_crit,
+        };
+        let strength = self.stick_strength(sliding, p);
+        if strength.0 == 0.0 {
+            return self.no_strength(&trial, sliding);
         }
         match self.formulation {
-            RateFormulation::RateFollowingStiffness => {
-                self.following_map(predictor, p, tau_s, dtau_s_dp, dtime, gamma_crit)
-            }
-            RateFormulation::RateFreeStiffness => {
-                self.return_map(predictor, p, tau_s, dtau_s_dp, dtime, gamma_crit)
-            }
+            RateFormulation::RateFollowingStiffness => self.following_map(&trial, strength),
+            RateFormulation::RateFreeStiffness => self.return_map(&trial, strength),
         }
     }
 
@@ -412,14 +415,14 @@ impl Adhesive {
     /// with the static strength τ_s at p (a stick increment leaves the point at rest); it is
     /// ½k_s|γ^pr|² when k_s is the static stiffness.
     #[inline]
-    fn stick<const N: usize>(
-        &self,
-        predictor: &[f64; N],
-        predictor_eq: f64,
-        (tau_k, dtau_k_dp): (f64, f64),
-        p: f64,
-        gamma_crit: f64,
-    ) -> Slide<N> {
+    fn stick<const N: usize>(&self, trial: &Trial<N>, (tau_k, dtau_k_dp): (f64, f64)) -> Slide<N> {
+        let &Trial {
+            predictor,
+            predictor_eq,
+            p,
+            gamma_crit,
+            ..
+        } = trial;
         let k_s = tau_k / gamma_crit;
         let (tau_s, _) = self.static_strength(p);
         let sed = if tau_s == tau_k || tau_s <= 0.0 {
@@ -445,66 +448,57 @@ impl Adhesive {
     /// slip held at γ_crit, Δs = |γ^pr| − γ_crit, τ = g(Δs/Δt)·n (explicit, one answer), and
     /// the tangent of Eq. 5.2.3-3: (δ − nn)·g/|γ^pr| + nn·∂g/∂Δs, ∂τ/∂p = n·∂g/∂p.
     #[inline]
-    fn following_map<const N: usize>(
-        &self,
-        predictor: &[f64; N],
-        p: f64,
-        tau_k: f64,
-        dtau_k_dp: f64,
-        dtime: f64,
-        gamma_crit: f64,
-    ) -> Slide<N> {
-        let predictor_eq = norm(predictor);
+    fn following_map<const N: usize>(&self, trial: &Trial<N>, strength: (f64, f64)) -> Slide<N> {
+        let (predictor_eq, gamma_crit) = (trial.predictor_eq, trial.gamma_crit);
         if predictor_eq <= gamma_crit * (1.0 + STICK_TEST_ROUNDING) {
-            let mut s = self.stick(predictor, predictor_eq, (tau_k, dtau_k_dp), p, gamma_crit);
+            let mut s = self.stick(trial, strength);
             if predictor_eq > gamma_crit {
                 // Within the rounding allowance: on the strength, never above it.
-                s.traction.tau = scale(&unit(predictor, predictor_eq), tau_k);
+                s.traction.tau = scale(&unit(trial.predictor, predictor_eq), strength.0);
             }
             return s;
         }
         let slip_eq = predictor_eq - gamma_crit;
-        let p_plus = p.max(0.0);
+        let p_plus = trial.p.max(0.0);
         let (mu_s, mu_d) = (self.mu_static, self.base.mu());
         // With Δt ≤ 0 (allowed only when k_μ = v_½ = 0) the sliding strength is μ_d·p⁺ + S_a.
-        let (length_half, k_per_length) = self.slip_increment_form(dtime);
+        let (length_half, k_per_length) = self.slip_increment_form(trial.dtime);
         // Δs > 0, so V + Δs > 0: the transition μ_d + (μ_s − μ_d)·V/(V + Δs) (seed 004's
         // (μ_s v_½ + μ_d Δv)/(v_½ + Δv), in a form that cannot overflow).
         let denom = length_half + slip_eq;
         let share = length_half / denom;
         let transition = mu_d + (mu_s - mu_d) * share;
         let tau_eq =
-            self.pressure_strength(transition, slip_eq, p_plus, dtime) + self.shear_adhesion;
+            self.pressure_strength(transition, slip_eq, p_plus, trial.dtime) + self.shear_adhesion;
         // ∂g/∂Δs = ((μ_d − μ_s)·V/(V + Δs)² + K)·p⁺ and ∂g/∂p.
         let g_s = ((mu_d - mu_s) * (share / denom) + k_per_length) * p_plus;
-        let g_p = if p < 0.0 {
+        let g_p = if trial.p < 0.0 {
             0.0
         } else {
             transition + k_per_length * slip_eq
         };
-        let n = unit(predictor, predictor_eq);
+        let n = unit(trial.predictor, predictor_eq);
         let transverse = tau_eq / predictor_eq;
         let ddtddg = radial_transverse(&n, g_s, transverse);
         // ½|τ|·γ_crit: the elastic slip is γ_crit.
         let sed = 0.5 * tau_eq * gamma_crit;
         let traction = Traction::sliding(&n, tau_eq, ddtddg, g_p, slip_eq, sed);
-        sliding(traction, slip_eq, dtime, tau_eq / gamma_crit)
+        sliding(traction, slip_eq, trial.dtime, tau_eq / gamma_crit)
     }
 
     #[inline]
-    fn return_map<const N: usize>(
-        &self,
-        predictor: &[f64; N],
-        p: f64,
-        tau_s: f64,
-        dtau_s_dp: f64,
-        dtime: f64,
-        gamma_crit: f64,
-    ) -> Slide<N> {
-        let predictor_eq = norm(predictor);
+    fn return_map<const N: usize>(&self, trial: &Trial<N>, strength: (f64, f64)) -> Slide<N> {
+        let (tau_s, dtau_s_dp) = strength;
+        let Trial {
+            predictor,
+            predictor_eq,
+            p,
+            dtime,
+            gamma_crit,
+        } = *trial;
         if predictor_eq <= gamma_crit {
             // Stick (Eq. 5.2.3-1) with the static stiffness: τ_s here is the static strength.
-            return self.stick(predictor, predictor_eq, (tau_s, dtau_s_dp), p, gamma_crit);
+            return self.stick(trial, strength);
         }
         let k_s = tau_s / gamma_crit;
         let p_plus = p.max(0.0);
@@ -598,17 +592,16 @@ impl Adhesive {
     /// τ_s = 0 (no pressure and no adhesion): no shear is carried. At p = 0 with μ_s > 0 and
     /// S_a = 0 every stress is proportional to p, so ∂τ/∂p⁺ is the answer at p = 1.
     #[cold]
-    fn no_strength<const N: usize>(
-        &self,
-        predictor: &[f64; N],
-        sliding: Option<f64>,
-        p: f64,
-        dtime: f64,
-        gamma_crit: f64,
-    ) -> Slide<N> {
+    fn no_strength<const N: usize>(&self, trial: &Trial<N>, sliding: Option<f64>) -> Slide<N> {
+        let &Trial {
+            predictor,
+            predictor_eq,
+            p,
+            dtime,
+            gamma_crit,
+        } = trial;
         let unit_pressure = (p == 0.0 && self.stick_strength(sliding, 1.0).0 > 0.0)
             .then(|| self.map(predictor, sliding, 1.0, dtime, gamma_crit));
-        let predictor_eq = norm(predictor);
         let slip_eq = (predictor_eq - gamma_crit).max(0.0);
         let (ddtddp, dslip, branch) = match unit_pressure {
             Some(s) => (s.traction.tau, s.traction.dslip, s.branch),
@@ -761,6 +754,18 @@ pub(crate) fn check_finite<const N: usize>(t: &Traction<N>) -> Result<(), LawErr
             "the adhesive stress update overflowed (inputs too large for f64)".into(),
         ))
     }
+}
+
+/// What the stick test and both return maps read: the elastic predictor γ^pr and its length
+/// |γ^pr|, the pressure at the end of the increment, Δt and γ_crit (one list for the two
+/// maps and the stick answer).
+#[derive(Clone, Copy)]
+struct Trial<'a, const N: usize> {
+    predictor: &'a [f64; N],
+    predictor_eq: f64,
+    p: f64,
+    dtime: f64,
+    gamma_crit: f64,
 }
 
 #[cfg(test)]
