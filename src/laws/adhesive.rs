@@ -331,30 +331,18 @@ impl Adhesive {
     /// (T ≤ τ_s), and on sliding the admissible root of the quadratic above with its consistent
     /// tangent.
     ///
-    /// `p_start` and `p` are the pressures at the start and the end of the increment; a Δt ≤ 0
-    /// is refused when the law depends on the slip rate (k_μ or v_½ non-zero).
-    #[inline]
-    pub fn slide<const N: usize>(
-        &self,
-        tau_start: &[f64; N],
-        dgam: &[f64; N],
-        p_start: f64,
-        p: f64,
-        dtime: f64,
-        gamma_crit: f64,
-    ) -> Result<Slide<N>, LawError> {
-        self.slide_after(None, tau_start, dgam, p_start, p, dtime, gamma_crit)
-    }
-
-    /// [`Self::slide`] for a point whose previous increment slid at the rate
-    /// `sliding = Some(Δv₀)` (`STATEV(3)` = 1, Δv₀ = `STATEV(2)`), or stuck (`None`). With the
-    /// rate-following formulation (the default; docs/props.md) the stick stiffness is
+    /// `sliding` is `Some(Δv₀)` for a point whose previous increment slid at the rate Δv₀
+    /// (`STATEV(3)` = 1, Δv₀ = `STATEV(2)`), `None` for one that stuck or starts at rest. With
+    /// the rate-following formulation (the default; docs/props.md) the stick stiffness is
     /// k_s = g(Δv₀)/γ_crit after a slip and τ_s/γ_crit otherwise, the same at both ends of the
     /// increment, the stick test is |γ^pr| ≤ γ_crit, and a sliding increment has
     /// Δs = |γ^pr| − γ_crit and τ = g(Δs/Δt) (seed 000, Eq. 5.2.3-2; seed 004's S_slide).
+    ///
+    /// `p_start` and `p` are the pressures at the start and the end of the increment; a Δt ≤ 0
+    /// is refused when the law depends on the slip rate (k_μ or v_½ non-zero).
     #[inline]
     #[allow(clippy::too_many_arguments)]
-    pub fn slide_after<const N: usize>(
+    pub fn slide<const N: usize>(
         &self,
         sliding: Option<f64>,
         tau_start: &[f64; N],
@@ -651,7 +639,7 @@ impl Adhesive {
         let gamma_crit = self.critical_slip_for(inc.characteristic_length)?;
         // The memory of the rate-following formulation: the previous increment's slip.
         let sliding = (state.status == FrictionStatus::Slip).then_some(state.slip_rate);
-        let s = self.slide_after(
+        let s = self.slide(
             sliding,
             &inc.tau,
             &inc.dgam,
@@ -795,18 +783,14 @@ mod tests {
         let (p, dt, v) = (100.0, 0.5, 0.4);
         let g = ((0.5 * 0.1 + 0.3 * v) / (0.1 + v) + 0.05 * v) * p + 2.0;
         // After a slip at v the elastic slip of τ̄ = g(v) is γ_crit: all of Δγ slides.
-        let s = l
-            .slide_after(Some(v), &[g], &[v * dt], p, p, dt, 1e-3)
-            .unwrap();
+        let s = l.slide(Some(v), &[g], &[v * dt], p, p, dt, 1e-3).unwrap();
         assert_eq!(s.branch, SlideBranch::Slip);
         assert!((s.traction.tau[0] - g).abs() < 1e-12 * g, "{s:?} vs {g}");
         assert!((s.slip_rate - v).abs() < 1e-12);
         // The earlier formulation has the same fixed point (its trial stress less k_s·vΔt is
         // g(v)); what differs is whether driving converges to it (docs/props.md, scene F7).
         let old = l.with_rate_formulation(RateFormulation::RateFreeStiffness);
-        let s = old
-            .slide_after(Some(v), &[g], &[v * dt], p, p, dt, 1e-3)
-            .unwrap();
+        let s = old.slide(Some(v), &[g], &[v * dt], p, p, dt, 1e-3).unwrap();
         assert!((s.traction.tau[0] - g).abs() < 1e-12 * g, "{s:?} vs {g}");
         assert!((s.slip_rate - v).abs() < 1e-12);
     }
@@ -817,7 +801,7 @@ mod tests {
         // |γ^pr| = 5e-4 < γ_crit: τ = k_s γ^pr, ∂τ/∂p = γ^pr·μ_s/γ_crit, SED = ½k_s|γ^pr|².
         let l = law(RATE_DEPENDENT).with_rate_formulation(RateFormulation::RateFreeStiffness);
         let s = l
-            .slide(&[0.0, 0.0], &[3e-4, 4e-4], 10.0, 10.0, 0.5, 1e-3)
+            .slide(None, &[0.0, 0.0], &[3e-4, 4e-4], 10.0, 10.0, 0.5, 1e-3)
             .unwrap();
         assert_eq!(s.branch, SlideBranch::Stick);
         for (a, g) in [3e-4, 4e-4].into_iter().enumerate() {
@@ -839,11 +823,15 @@ mod tests {
             ..AdhesiveParameters::default()
         });
         // k_s = (0.5·10 + 2)/1e-3 = 7000; γ^pr = γ_crit exactly: still stick at τ = 7.
-        let s = l.slide(&[0.0], &[1e-3], 10.0, 10.0, 1.0, 1e-3).unwrap();
+        let s = l
+            .slide(None, &[0.0], &[1e-3], 10.0, 10.0, 1.0, 1e-3)
+            .unwrap();
         assert_eq!(s.branch, SlideBranch::Stick);
         assert!((s.traction.tau[0] - 7.0).abs() < 1e-12);
         // Just past it: slides at the dynamic strength 0.3·10 + 2 (v_½ = 0, instantaneous drop).
-        let s = l.slide(&[0.0], &[1.001e-3], 10.0, 10.0, 1.0, 1e-3).unwrap();
+        let s = l
+            .slide(None, &[0.0], &[1.001e-3], 10.0, 10.0, 1.0, 1e-3)
+            .unwrap();
         assert_eq!(s.branch, SlideBranch::Slip);
         assert!((s.traction.tau[0] - 5.0).abs() < 1e-12);
     }

@@ -196,7 +196,7 @@ impl AdhesiveInterface {
         let sliding = (state.status == InterfaceStatus::Slip).then_some(state.slip_rate);
         let response = if h > 0.0 {
             let p = k_n * h;
-            let s = self.law.slide_after(
+            let s = self.law.slide(
                 sliding,
                 &inc.shear_start,
                 &inc.dgam,
