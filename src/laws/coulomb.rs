@@ -1049,16 +1049,27 @@ mod tests {
         motion(l.update(inc, &CoulombState::default()).unwrap().contact)
     }
 
+    /// An increment with relative motion (Δt = 1): start stress `tau`, slip `dgam`, end
+    /// pressure `pressure` after the change `dpressure`.
+    fn moving<const N: usize>(
+        tau: [f64; N],
+        dgam: [f64; N],
+        pressure: f64,
+        dpressure: f64,
+    ) -> Increment<N> {
+        Increment {
+            tau,
+            dgam,
+            pressure,
+            dpressure,
+            ..Increment::default()
+        }
+    }
+
     #[test]
     fn first_contact_gives_stick_stiffness_times_slip() {
         // p = 10, μ = 0.5 → τ_crit = 5, k_s = 500; Δγ = 0.004 < γ_crit → τ = 2.
-        let inc = Increment::<1> {
-            dgam: [0.004],
-            pressure: 10.0,
-            dpressure: 10.0,
-            ..Increment::default()
-        };
-        let t = from_rest(&law(), &inc);
+        let t = from_rest(&law(), &moving([0.0], [0.004], 10.0, 10.0));
         assert!((t.tau[0] - 2.0).abs() < 1e-14);
         assert!((t.ddtddg[0][0] - 500.0).abs() < 1e-11);
         // ∂τ/∂p = γ^pr μ/γ_crit = 0.004·0.5/0.01 = 0.2.
@@ -1069,24 +1080,13 @@ mod tests {
     fn start_elastic_slip_uses_start_pressure() {
         // Start: p = 10, τ = 2 → γ̄^el = 2/500 = 0.004. End: p = 20 (k_s = 1000), Δγ = 0.
         // τ = 1000·0.004 = 4. Recovering γ̄^el with the end pressure would give τ = 2.
-        let inc = Increment::<1> {
-            tau: [2.0],
-            pressure: 20.0,
-            dpressure: 10.0,
-            ..Increment::default()
-        };
-        let t = from_rest(&law(), &inc);
+        let t = from_rest(&law(), &moving([2.0], [0.0], 20.0, 10.0));
         assert!((t.tau[0] - 4.0).abs() < 1e-13);
     }
 
     #[test]
     fn slip_sits_on_the_cone_and_dissipates() {
-        let inc = Increment::<2> {
-            dgam: [0.03, 0.04],
-            pressure: 10.0,
-            dpressure: 10.0,
-            ..Increment::default()
-        };
+        let inc = moving([0.0; 2], [0.03, 0.04], 10.0, 10.0);
         let up = law().update(&inc, &CoulombState::default()).unwrap();
         let t = motion(up.contact);
         // |γ^pr| = 0.05 → n = (0.6, 0.8), τ = 5 n, Δγ_eq^sl = 0.04, SFD = 5·0.04.
@@ -1099,13 +1099,7 @@ mod tests {
     #[test]
     fn shear_limit_caps_and_zeroes_the_pressure_tangent() {
         let l = law().with_shear_limit(3.0).unwrap();
-        let inc = Increment::<1> {
-            dgam: [1.0],
-            pressure: 10.0,
-            dpressure: 0.0,
-            ..Increment::default()
-        };
-        let t = from_rest(&l, &inc);
+        let t = from_rest(&l, &moving([0.0], [1.0], 10.0, 0.0));
         assert_eq!(t.tau[0], 3.0);
         assert_eq!(t.ddtddp[0], 0.0);
     }
