@@ -129,23 +129,7 @@ pub trait StatusCode: Copy {
     fn code(self) -> f64;
 }
 
-impl StatusCode for FrictionStatus {
-    const LAW: &'static str = "the Coulomb law";
-
-    #[inline(always)]
-    fn from_code(code: f64) -> Self {
-        match code {
-            1.0 => FrictionStatus::Slip,
-            2.0 => FrictionStatus::ExactStick,
-            _ => FrictionStatus::Stick,
-        }
-    }
-
-    #[inline(always)]
-    fn code(self) -> f64 {
-        f64::from(self as i32)
-    }
-}
+status_codes!(FrictionStatus, "the Coulomb law", 1.0 => Slip, 2.0 => ExactStick);
 
 /// A point's state: three scalars, stored in `STATEV(1..3)`. No vector is kept, so the
 /// rotation `DROT` of the tangent directions needs no treatment (the host rotates `TAU`

@@ -985,16 +985,9 @@ impl ExtendedCoulomb {
         s: &Scaled<N>,
         gamma_crit: f64,
     ) -> Option<ScaledTraction<N>> {
-        let &Scaled {
-            mbar,
-            theta,
-            rate_dt,
-            start_rate,
-            ..
-        } = s;
         let p = inc.pressure;
         let frozen = self.frozen && self.coefficient.is_rate_dependent();
-        let stick_crit = self.critical(mbar, if frozen { start_rate } else { 0.0 }, p, theta);
+        let stick_crit = self.critical(s.mbar, if frozen { s.start_rate } else { 0.0 }, p, s.theta);
         let direction_source = match inc.entry {
             EntryFlag::ExactStick => {
                 if norm(&s.taulm) <= stick_crit.value {
@@ -1020,12 +1013,16 @@ impl ExtendedCoulomb {
         let slip_eq = norm(&s.dgam);
         let rate_law = self.coefficient.is_rate_dependent() && !frozen;
         let crit = if rate_law {
-            self.critical(mbar, slip_eq / rate_dt, p, theta)
+            self.critical(s.mbar, slip_eq / s.rate_dt, p, s.theta)
         } else {
             stick_crit
         };
         let t = crit.value;
-        let t_s = if rate_law { crit.d_rate / rate_dt } else { 0.0 };
+        let t_s = if rate_law {
+            crit.d_rate / s.rate_dt
+        } else {
+            0.0
+        };
         let m = if slip_eq > 0.0 {
             unit(&s.dgam, slip_eq)
         } else {
