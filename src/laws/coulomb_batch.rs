@@ -296,10 +296,8 @@ impl<const N: usize, const W: usize> Lanes<N, W> {
         // Stick: k_s|γ^pr|²/2 as τ·γ^pr/2 (the scalar `dot`, from 0.0 in the same order);
         // slip: |τ|²/(2k_s) with |τ| = τ_crit. Dissipation τ_crit Δγ_eq^sl.
         let mut stick_work = [0.0; W];
-        for a in 0..N {
-            stick_work = map3(stick_work, stick_tau[a], self.predictor[a], |w, t, x| {
-                w + t * x
-            });
+        for (tau, x) in stick_tau.iter().zip(&self.predictor) {
+            stick_work = map3(stick_work, *tau, *x, |w, t, x| w + t * x);
         }
         out.sed = select(
             stick,
