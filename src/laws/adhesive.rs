@@ -165,7 +165,7 @@ impl Adhesive {
         }
     }
 
-    setters! {
+    field_setters! {
         /// How the rate-dependent strength enters the return map: the default
         /// [`RateFormulation::RateFollowingStiffness`], or the earlier rate-free stick stiffness
         /// τ_s/γ_crit with the slip from the quadratic (for comparisons only; no `PROPS` entry

@@ -408,7 +408,7 @@ impl Coulomb {
         Ok(self)
     }
 
-    setters! {
+    field_setters! {
         /// Chooses how stick is enforced.
         with_stick(stick: StickMode);
     }

@@ -339,7 +339,7 @@ impl ExtendedCoulomb {
         }
     }
 
-    setters! {
+    field_setters! {
         /// Viscous stick for steady-state transport instead of elastic or exact stick.
         with_steady_transport(transport: Option<SteadyTransport>);
     }
@@ -363,7 +363,7 @@ impl ExtendedCoulomb {
         Ok(self)
     }
 
-    setters! {
+    field_setters! {
         /// μ(γ̇, p, θ̄) factors.
         with_coefficient_law(coefficient: CoefficientLaw);
         /// Freeze μ at its start-of-increment value (explicit in the slip rate).

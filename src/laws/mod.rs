@@ -1,10 +1,10 @@
 //! The contact-interface laws, one per file, each in the field's words and free of `unsafe`.
 
 /// Builder setters that only store their argument in the field of the same name:
-/// `setters! { /// doc \n with_x(field: Type); … }` writes, per line, the documented
+/// `field_setters! { /// doc \n with_x(field: Type); … }` writes, per line, the documented
 /// `#[must_use] pub fn with_x(mut self, field: Type) -> Self`. A setter that validates its
 /// argument is written out.
-macro_rules! setters {
+macro_rules! field_setters {
     ($($(#[$attr:meta])* $name:ident($field:ident: $ty:ty);)*) => {
         $(
             $(#[$attr])*

@@ -57,7 +57,7 @@ impl SteadyTransport {
         })
     }
 
-    setters! {
+    field_setters! {
         /// The same parameters with γ̇_crit taken as seed `reference` defines it.
         with_reference(reference: ViscousSlipReference);
     }
