@@ -216,7 +216,7 @@ proptest! {
     ) {
         let law = Adhesive::new(&params(mask, mu)).unwrap().with_critical_slip_absolute(GAMMA_CRIT).unwrap();
         let dgam = [gpr * GAMMA_CRIT * angle.cos(), gpr * GAMMA_CRIT * angle.sin()];
-        let s = law.slide(&[0.0, 0.0], &dgam, p, p, dtime, GAMMA_CRIT).unwrap();
+        let s = law.slide(None, &[0.0, 0.0], &dgam, p, p, dtime, GAMMA_CRIT).unwrap();
         if s.branch == SlideBranch::Slip && s.stick_stiffness > 0.0 {
             let r = law.slide_residual(&s, p);
             prop_assert!(r.abs() < 1e-12, "residual {r:e} for {s:?}");
@@ -266,7 +266,9 @@ proptest! {
         let coulomb = Coulomb::new(s.mu).unwrap().with_critical_slip_absolute(GAMMA_CRIT).unwrap();
         let start = s.mu * (s.p0 - s.dp).max(0.0);
         let tau = [s.tau_frac[0] * start, s.tau_frac[1] * start];
-        let g = law.slide(&tau, &s.dgam, s.p0 - s.dp, s.p0, s.dtime, GAMMA_CRIT).unwrap();
+        let g = law
+            .slide(None, &tau, &s.dgam, s.p0 - s.dp, s.p0, s.dtime, GAMMA_CRIT)
+            .unwrap();
         let inc = Increment::<2> { tau, dgam: s.dgam, pressure: s.p0, dpressure: s.dp, dtime: s.dtime, ..Increment::default() };
         let Contact::Motion(c) = coulomb.update(&inc, &CoulombState::default()).unwrap().contact else {
             panic!("elastic stick answers LM = 0");

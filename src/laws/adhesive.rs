@@ -165,14 +165,12 @@ impl Adhesive {
         }
     }
 
-    /// How the rate-dependent strength enters the return map: the default
-    /// [`RateFormulation::RateFollowingStiffness`], or the earlier rate-free stick stiffness
-    /// τ_s/γ_crit with the slip from the quadratic (for comparisons only; no `PROPS` entry
-    /// selects it).
-    #[must_use]
-    pub fn with_rate_formulation(mut self, formulation: RateFormulation) -> Self {
-        self.formulation = formulation;
-        self
+    field_setters! {
+        /// How the rate-dependent strength enters the return map: the default
+        /// [`RateFormulation::RateFollowingStiffness`], or the earlier rate-free stick stiffness
+        /// τ_s/γ_crit with the slip from the quadratic (for comparisons only; no `PROPS` entry
+        /// selects it).
+        with_rate_formulation(formulation: RateFormulation);
     }
 
     /// The rate formulation in use.
@@ -333,30 +331,18 @@ impl Adhesive {
     /// (T ≤ τ_s), and on sliding the admissible root of the quadratic above with its consistent
     /// tangent.
     ///
-    /// `p_start` and `p` are the pressures at the start and the end of the increment; a Δt ≤ 0
-    /// is refused when the law depends on the slip rate (k_μ or v_½ non-zero).
-    #[inline]
-    pub fn slide<const N: usize>(
-        &self,
-        tau_start: &[f64; N],
-        dgam: &[f64; N],
-        p_start: f64,
-        p: f64,
-        dtime: f64,
-        gamma_crit: f64,
-    ) -> Result<Slide<N>, LawError> {
-        self.slide_after(None, tau_start, dgam, p_start, p, dtime, gamma_crit)
-    }
-
-    /// [`Self::slide`] for a point whose previous increment slid at the rate
-    /// `sliding = Some(Δv₀)` (`STATEV(3)` = 1, Δv₀ = `STATEV(2)`), or stuck (`None`). With the
-    /// rate-following formulation (the default; docs/props.md) the stick stiffness is
+    /// `sliding` is `Some(Δv₀)` for a point whose previous increment slid at the rate Δv₀
+    /// (`STATEV(3)` = 1, Δv₀ = `STATEV(2)`), `None` for one that stuck or starts at rest. With
+    /// the rate-following formulation (the default; docs/props.md) the stick stiffness is
     /// k_s = g(Δv₀)/γ_crit after a slip and τ_s/γ_crit otherwise, the same at both ends of the
     /// increment, the stick test is |γ^pr| ≤ γ_crit, and a sliding increment has
     /// Δs = |γ^pr| − γ_crit and τ = g(Δs/Δt) (seed 000, Eq. 5.2.3-2; seed 004's S_slide).
+    ///
+    /// `p_start` and `p` are the pressures at the start and the end of the increment; a Δt ≤ 0
+    /// is refused when the law depends on the slip rate (k_μ or v_½ non-zero).
     #[inline]
     #[allow(clippy::too_many_arguments)]
-    pub fn slide_after<const N: usize>(
+    pub fn slide<const N: usize>(
         &self,
         sliding: Option<f64>,
         tau_start: &[f64; N],
@@ -394,17 +380,20 @@ impl Adhesive {
         dtime: f64,
         gamma_crit: f64,
     ) -> Slide<N> {
-        let (tau_s, dtau_s_dp) = self.stick_strength(sliding, p);
-        if tau_s == 0.0 {
-            return self.no_strength(predictor, sliding, p, dtime, gamma_crit);
+        let trial = Trial {
+            predictor,
+            predictor_eq: norm(predictor),
+            p,
+            dtime,
+            gamma_crit,
+        };
+        let strength = self.stick_strength(sliding, p);
+        if strength.0 == 0.0 {
+            return self.no_strength(&trial, sliding);
         }
         match self.formulation {
-            RateFormulation::RateFollowingStiffness => {
-                self.following_map(predictor, p, tau_s, dtau_s_dp, dtime, gamma_crit)
-            }
-            RateFormulation::RateFreeStiffness => {
-                self.return_map(predictor, p, tau_s, dtau_s_dp, dtime, gamma_crit)
-            }
+            RateFormulation::RateFollowingStiffness => self.following_map(&trial, strength),
+            RateFormulation::RateFreeStiffness => self.return_map(&trial, strength),
         }
     }
 
@@ -414,14 +403,14 @@ impl Adhesive {
     /// with the static strength τ_s at p (a stick increment leaves the point at rest); it is
     /// ½k_s|γ^pr|² when k_s is the static stiffness.
     #[inline]
-    fn stick<const N: usize>(
-        &self,
-        predictor: &[f64; N],
-        predictor_eq: f64,
-        (tau_k, dtau_k_dp): (f64, f64),
-        p: f64,
-        gamma_crit: f64,
-    ) -> Slide<N> {
+    fn stick<const N: usize>(&self, trial: &Trial<N>, (tau_k, dtau_k_dp): (f64, f64)) -> Slide<N> {
+        let &Trial {
+            predictor,
+            predictor_eq,
+            p,
+            gamma_crit,
+            ..
+        } = trial;
         let k_s = tau_k / gamma_crit;
         let (tau_s, _) = self.static_strength(p);
         let sed = if tau_s == tau_k || tau_s <= 0.0 {
@@ -447,66 +436,57 @@ impl Adhesive {
     /// slip held at γ_crit, Δs = |γ^pr| − γ_crit, τ = g(Δs/Δt)·n (explicit, one answer), and
     /// the tangent of Eq. 5.2.3-3: (δ − nn)·g/|γ^pr| + nn·∂g/∂Δs, ∂τ/∂p = n·∂g/∂p.
     #[inline]
-    fn following_map<const N: usize>(
-        &self,
-        predictor: &[f64; N],
-        p: f64,
-        tau_k: f64,
-        dtau_k_dp: f64,
-        dtime: f64,
-        gamma_crit: f64,
-    ) -> Slide<N> {
-        let predictor_eq = norm(predictor);
+    fn following_map<const N: usize>(&self, trial: &Trial<N>, strength: (f64, f64)) -> Slide<N> {
+        let (predictor_eq, gamma_crit) = (trial.predictor_eq, trial.gamma_crit);
         if predictor_eq <= gamma_crit * (1.0 + STICK_TEST_ROUNDING) {
-            let mut s = self.stick(predictor, predictor_eq, (tau_k, dtau_k_dp), p, gamma_crit);
+            let mut s = self.stick(trial, strength);
             if predictor_eq > gamma_crit {
                 // Within the rounding allowance: on the strength, never above it.
-                s.traction.tau = scale(&unit(predictor, predictor_eq), tau_k);
+                s.traction.tau = scale(&unit(trial.predictor, predictor_eq), strength.0);
             }
             return s;
         }
         let slip_eq = predictor_eq - gamma_crit;
-        let p_plus = p.max(0.0);
+        let p_plus = trial.p.max(0.0);
         let (mu_s, mu_d) = (self.mu_static, self.base.mu());
         // With Δt ≤ 0 (allowed only when k_μ = v_½ = 0) the sliding strength is μ_d·p⁺ + S_a.
-        let (length_half, k_per_length) = self.slip_increment_form(dtime);
+        let (length_half, k_per_length) = self.slip_increment_form(trial.dtime);
         // Δs > 0, so V + Δs > 0: the transition μ_d + (μ_s − μ_d)·V/(V + Δs) (seed 004's
         // (μ_s v_½ + μ_d Δv)/(v_½ + Δv), in a form that cannot overflow).
         let denom = length_half + slip_eq;
         let share = length_half / denom;
         let transition = mu_d + (mu_s - mu_d) * share;
         let tau_eq =
-            self.pressure_strength(transition, slip_eq, p_plus, dtime) + self.shear_adhesion;
+            self.pressure_strength(transition, slip_eq, p_plus, trial.dtime) + self.shear_adhesion;
         // ∂g/∂Δs = ((μ_d − μ_s)·V/(V + Δs)² + K)·p⁺ and ∂g/∂p.
         let g_s = ((mu_d - mu_s) * (share / denom) + k_per_length) * p_plus;
-        let g_p = if p < 0.0 {
+        let g_p = if trial.p < 0.0 {
             0.0
         } else {
             transition + k_per_length * slip_eq
         };
-        let n = unit(predictor, predictor_eq);
+        let n = unit(trial.predictor, predictor_eq);
         let transverse = tau_eq / predictor_eq;
         let ddtddg = radial_transverse(&n, g_s, transverse);
         // ½|τ|·γ_crit: the elastic slip is γ_crit.
         let sed = 0.5 * tau_eq * gamma_crit;
         let traction = Traction::sliding(&n, tau_eq, ddtddg, g_p, slip_eq, sed);
-        sliding(traction, slip_eq, dtime, tau_eq / gamma_crit)
+        sliding(traction, slip_eq, trial.dtime, tau_eq / gamma_crit)
     }
 
     #[inline]
-    fn return_map<const N: usize>(
-        &self,
-        predictor: &[f64; N],
-        p: f64,
-        tau_s: f64,
-        dtau_s_dp: f64,
-        dtime: f64,
-        gamma_crit: f64,
-    ) -> Slide<N> {
-        let predictor_eq = norm(predictor);
+    fn return_map<const N: usize>(&self, trial: &Trial<N>, strength: (f64, f64)) -> Slide<N> {
+        let (tau_s, dtau_s_dp) = strength;
+        let Trial {
+            predictor,
+            predictor_eq,
+            p,
+            dtime,
+            gamma_crit,
+        } = *trial;
         if predictor_eq <= gamma_crit {
             // Stick (Eq. 5.2.3-1) with the static stiffness: τ_s here is the static strength.
-            return self.stick(predictor, predictor_eq, (tau_s, dtau_s_dp), p, gamma_crit);
+            return self.stick(trial, strength);
         }
         let k_s = tau_s / gamma_crit;
         let p_plus = p.max(0.0);
@@ -600,17 +580,16 @@ impl Adhesive {
     /// τ_s = 0 (no pressure and no adhesion): no shear is carried. At p = 0 with μ_s > 0 and
     /// S_a = 0 every stress is proportional to p, so ∂τ/∂p⁺ is the answer at p = 1.
     #[cold]
-    fn no_strength<const N: usize>(
-        &self,
-        predictor: &[f64; N],
-        sliding: Option<f64>,
-        p: f64,
-        dtime: f64,
-        gamma_crit: f64,
-    ) -> Slide<N> {
+    fn no_strength<const N: usize>(&self, trial: &Trial<N>, sliding: Option<f64>) -> Slide<N> {
+        let &Trial {
+            predictor,
+            predictor_eq,
+            p,
+            dtime,
+            gamma_crit,
+        } = trial;
         let unit_pressure = (p == 0.0 && self.stick_strength(sliding, 1.0).0 > 0.0)
             .then(|| self.map(predictor, sliding, 1.0, dtime, gamma_crit));
-        let predictor_eq = norm(predictor);
         let slip_eq = (predictor_eq - gamma_crit).max(0.0);
         let (ddtddp, dslip, branch) = match unit_pressure {
             Some(s) => (s.traction.tau, s.traction.dslip, s.branch),
@@ -660,7 +639,7 @@ impl Adhesive {
         let gamma_crit = self.critical_slip_for(inc.characteristic_length)?;
         // The memory of the rate-following formulation: the previous increment's slip.
         let sliding = (state.status == FrictionStatus::Slip).then_some(state.slip_rate);
-        let s = self.slide_after(
+        let s = self.slide(
             sliding,
             &inc.tau,
             &inc.dgam,
@@ -765,6 +744,18 @@ pub(crate) fn check_finite<const N: usize>(t: &Traction<N>) -> Result<(), LawErr
     }
 }
 
+/// What the stick test and both return maps read: the elastic predictor γ^pr and its length
+/// |γ^pr|, the pressure at the end of the increment, Δt and γ_crit (one list for the two
+/// maps and the stick answer).
+#[derive(Clone, Copy)]
+struct Trial<'a, const N: usize> {
+    predictor: &'a [f64; N],
+    predictor_eq: f64,
+    p: f64,
+    dtime: f64,
+    gamma_crit: f64,
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -792,18 +783,14 @@ mod tests {
         let (p, dt, v) = (100.0, 0.5, 0.4);
         let g = ((0.5 * 0.1 + 0.3 * v) / (0.1 + v) + 0.05 * v) * p + 2.0;
         // After a slip at v the elastic slip of τ̄ = g(v) is γ_crit: all of Δγ slides.
-        let s = l
-            .slide_after(Some(v), &[g], &[v * dt], p, p, dt, 1e-3)
-            .unwrap();
+        let s = l.slide(Some(v), &[g], &[v * dt], p, p, dt, 1e-3).unwrap();
         assert_eq!(s.branch, SlideBranch::Slip);
         assert!((s.traction.tau[0] - g).abs() < 1e-12 * g, "{s:?} vs {g}");
         assert!((s.slip_rate - v).abs() < 1e-12);
         // The earlier formulation has the same fixed point (its trial stress less k_s·vΔt is
         // g(v)); what differs is whether driving converges to it (docs/props.md, scene F7).
         let old = l.with_rate_formulation(RateFormulation::RateFreeStiffness);
-        let s = old
-            .slide_after(Some(v), &[g], &[v * dt], p, p, dt, 1e-3)
-            .unwrap();
+        let s = old.slide(Some(v), &[g], &[v * dt], p, p, dt, 1e-3).unwrap();
         assert!((s.traction.tau[0] - g).abs() < 1e-12 * g, "{s:?} vs {g}");
         assert!((s.slip_rate - v).abs() < 1e-12);
     }
@@ -814,7 +801,7 @@ mod tests {
         // |γ^pr| = 5e-4 < γ_crit: τ = k_s γ^pr, ∂τ/∂p = γ^pr·μ_s/γ_crit, SED = ½k_s|γ^pr|².
         let l = law(RATE_DEPENDENT).with_rate_formulation(RateFormulation::RateFreeStiffness);
         let s = l
-            .slide(&[0.0, 0.0], &[3e-4, 4e-4], 10.0, 10.0, 0.5, 1e-3)
+            .slide(None, &[0.0, 0.0], &[3e-4, 4e-4], 10.0, 10.0, 0.5, 1e-3)
             .unwrap();
         assert_eq!(s.branch, SlideBranch::Stick);
         for (a, g) in [3e-4, 4e-4].into_iter().enumerate() {
@@ -836,11 +823,15 @@ mod tests {
             ..AdhesiveParameters::default()
         });
         // k_s = (0.5·10 + 2)/1e-3 = 7000; γ^pr = γ_crit exactly: still stick at τ = 7.
-        let s = l.slide(&[0.0], &[1e-3], 10.0, 10.0, 1.0, 1e-3).unwrap();
+        let s = l
+            .slide(None, &[0.0], &[1e-3], 10.0, 10.0, 1.0, 1e-3)
+            .unwrap();
         assert_eq!(s.branch, SlideBranch::Stick);
         assert!((s.traction.tau[0] - 7.0).abs() < 1e-12);
         // Just past it: slides at the dynamic strength 0.3·10 + 2 (v_½ = 0, instantaneous drop).
-        let s = l.slide(&[0.0], &[1.001e-3], 10.0, 10.0, 1.0, 1e-3).unwrap();
+        let s = l
+            .slide(None, &[0.0], &[1.001e-3], 10.0, 10.0, 1.0, 1e-3)
+            .unwrap();
         assert_eq!(s.branch, SlideBranch::Slip);
         assert!((s.traction.tau[0] - 5.0).abs() < 1e-12);
     }

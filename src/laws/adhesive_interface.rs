@@ -22,7 +22,7 @@
 //! State (`STATEV(1..3)`): accumulated slip, slip rate, and the status below.
 
 use super::adhesive::{Adhesive, SlideBranch};
-use super::coulomb::Traction;
+use super::coulomb::{PointState, StatusCode, Traction};
 use super::friction_coefficient::RateFormulation;
 use super::interface_heat::MechanicalAnswer;
 use super::parameter_range::positive;
@@ -44,57 +44,16 @@ pub enum InterfaceStatus {
     Open = 4,
 }
 
-/// The interface's state: three scalars in `STATEV(1..3)`.
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
-pub struct InterfaceState {
-    /// Σ|Δs| (path length of frictional slip).
-    pub accumulated_slip: f64,
-    /// Slip rate of the last increment.
-    pub slip_rate: f64,
-    /// Status of the last increment.
-    pub status: InterfaceStatus,
-}
+/// The interface's state: three scalars in `STATEV(1..3)`, as the Coulomb law's with the
+/// interface's statuses.
+pub type InterfaceState = PointState<InterfaceStatus>;
 
-impl InterfaceState {
-    /// Number of `STATEV` entries used.
-    pub const NSTATV: usize = 3;
-
-    /// Reads `STATEV(1..3)`; a status code other than 1, 3 or 4 reads as stick (0).
-    pub fn from_statev(statev: &[f64]) -> Result<Self, LawError> {
-        let [s, rate, status, ..] = statev else {
-            return Err(LawError::Input(format!(
-                "NSTATV = {} but the adhesive interface needs {}",
-                statev.len(),
-                Self::NSTATV
-            )));
-        };
-        if !s.is_finite() || !rate.is_finite() {
-            return Err(LawError::Input(
-                "STATEV(1..2) are not finite (state corrupted by the caller?)".into(),
-            ));
-        }
-        let status = match *status {
-            1.0 => InterfaceStatus::Slip,
-            3.0 => InterfaceStatus::Bonded,
-            4.0 => InterfaceStatus::Open,
-            _ => InterfaceStatus::Stick,
-        };
-        Ok(InterfaceState {
-            accumulated_slip: *s,
-            slip_rate: *rate,
-            status,
-        })
-    }
-
-    /// Writes `STATEV(1..3)` (nothing else).
-    pub fn write_statev(&self, statev: &mut [f64]) {
-        if let [s, rate, status, ..] = statev {
-            *s = self.accumulated_slip;
-            *rate = self.slip_rate;
-            *status = self.status as i32 as f64;
-        }
-    }
-}
+// A code other than 1, 3 or 4 reads as stick (0).
+status_codes!(
+    InterfaceStatus,
+    "the adhesive interface",
+    1.0 => Slip, 3.0 => Bonded, 4.0 => Open
+);
 
 /// One increment of an interface point with N tangential directions (NDIR = N + 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -224,7 +183,7 @@ impl AdhesiveInterface {
         let sliding = (state.status == InterfaceStatus::Slip).then_some(state.slip_rate);
         let response = if h > 0.0 {
             let p = k_n * h;
-            let s = self.law.slide_after(
+            let s = self.law.slide(
                 sliding,
                 &inc.shear_start,
                 &inc.dgam,

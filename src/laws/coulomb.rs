@@ -118,21 +118,38 @@ pub enum FrictionStatus {
     ExactStick = 2,
 }
 
-/// The law's state: three scalars, stored in `STATEV(1..3)`. No vector is kept, so the rotation
-/// `DROT` of the tangent directions needs no treatment (the host rotates `TAU` itself).
+/// How a point's status is stored in `STATEV(3)`: [`FrictionStatus`] for the Coulomb laws,
+/// `InterfaceStatus` for the adhesive interface (which adds bonded and open).
+pub trait StatusCode: Copy {
+    /// The law, as a message about too short a `STATEV` names it.
+    const LAW: &'static str;
+    /// The status stored as `code`; an unknown code reads as stick.
+    fn from_code(code: f64) -> Self;
+    /// The code stored for the status.
+    fn code(self) -> f64;
+}
+
+status_codes!(FrictionStatus, "the Coulomb law", 1.0 => Slip, 2.0 => ExactStick);
+
+/// A point's state: three scalars, stored in `STATEV(1..3)`. No vector is kept, so the
+/// rotation `DROT` of the tangent directions needs no treatment (the host rotates `TAU`
+/// itself). The laws differ only in the statuses `S` they record.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
-pub struct CoulombState {
+pub struct PointState<S> {
     /// Accumulated equivalent slip Σ|Δγ^sl| (path length of inelastic slip); saturates at
     /// f64::MAX.
     pub accumulated_slip: f64,
     /// Equivalent slip rate of the last increment, |Δγ^sl|/Δt (0 when Δt ≤ 0); saturates at
     /// f64::MAX.
     pub slip_rate: f64,
-    /// Stick, slip or exact stick in the last increment.
-    pub status: FrictionStatus,
+    /// What the point did in the last increment (stick, slip, …).
+    pub status: S,
 }
 
-impl CoulombState {
+/// The Coulomb laws' state: stick, slip or exact stick in the last increment.
+pub type CoulombState = PointState<FrictionStatus>;
+
+impl<S: StatusCode> PointState<S> {
     /// Number of `STATEV` entries the law uses.
     pub const NSTATV: usize = 3;
 
@@ -140,7 +157,7 @@ impl CoulombState {
     #[inline(always)]
     pub fn from_statev(statev: &[f64]) -> Result<Self, LawError> {
         let [s, rate, status, ..] = statev else {
-            return Err(short_statev(statev.len()));
+            return Err(short_statev(statev.len(), S::LAW));
         };
         Self::from_values(*s, *rate, *status).ok_or_else(corrupt_statev)
     }
@@ -163,15 +180,10 @@ impl CoulombState {
         slip_rate: f64,
         status: f64,
     ) -> Self {
-        let status = match status {
-            1.0 => FrictionStatus::Slip,
-            2.0 => FrictionStatus::ExactStick,
-            _ => FrictionStatus::Stick,
-        };
-        CoulombState {
+        PointState {
             accumulated_slip,
             slip_rate,
-            status,
+            status: S::from_code(status),
         }
     }
 
@@ -187,6 +199,18 @@ impl CoulombState {
         self.accumulated_slip * 0.0 + self.slip_rate * 0.0
     }
 
+    /// Writes the state into the first [`Self::NSTATV`] entries of `statev` (nothing else).
+    #[inline(always)]
+    pub fn write_statev(&self, statev: &mut [f64]) {
+        if let [s, rate, status, ..] = statev {
+            *s = self.accumulated_slip;
+            *rate = self.slip_rate;
+            *status = self.status.code();
+        }
+    }
+}
+
+impl CoulombState {
     /// The state after an increment held by Lagrange multipliers (`LM = 1`): no slip, no rate.
     #[inline(always)]
     #[must_use]
@@ -222,16 +246,6 @@ impl CoulombState {
             } else {
                 FrictionStatus::Stick
             },
-        }
-    }
-
-    /// Writes the state into the first [`Self::NSTATV`] entries of `statev` (nothing else).
-    #[inline(always)]
-    pub fn write_statev(&self, statev: &mut [f64]) {
-        if let [s, rate, status, ..] = statev {
-            *s = self.accumulated_slip;
-            *rate = self.slip_rate;
-            *status = self.status as i32 as f64;
         }
     }
 }
@@ -394,11 +408,9 @@ impl Coulomb {
         Ok(self)
     }
 
-    /// Chooses how stick is enforced.
-    #[must_use]
-    pub fn with_stick(mut self, stick: StickMode) -> Self {
-        self.stick = stick;
-        self
+    field_setters! {
+        /// Chooses how stick is enforced.
+        with_stick(stick: StickMode);
     }
 
     /// The friction coefficient μ.
@@ -950,9 +962,9 @@ pub(super) fn name_bad_input<const N: usize>(inc: Increment<N>, stick: StickMode
 
 #[cold]
 #[inline(never)]
-fn short_statev(n: usize) -> LawError {
+fn short_statev(n: usize, law: &str) -> LawError {
     LawError::Input(format!(
-        "NSTATV = {n} but the Coulomb law needs {}",
+        "NSTATV = {n} but {law} needs {}",
         CoulombState::NSTATV
     ))
 }
@@ -1021,16 +1033,27 @@ mod tests {
         motion(l.update(inc, &CoulombState::default()).unwrap().contact)
     }
 
+    /// An increment with relative motion (Δt = 1): start stress `tau`, slip `dgam`, end
+    /// pressure `pressure` after the change `dpressure`.
+    fn moving<const N: usize>(
+        tau: [f64; N],
+        dgam: [f64; N],
+        pressure: f64,
+        dpressure: f64,
+    ) -> Increment<N> {
+        Increment {
+            tau,
+            dgam,
+            pressure,
+            dpressure,
+            ..Increment::default()
+        }
+    }
+
     #[test]
     fn first_contact_gives_stick_stiffness_times_slip() {
         // p = 10, μ = 0.5 → τ_crit = 5, k_s = 500; Δγ = 0.004 < γ_crit → τ = 2.
-        let inc = Increment::<1> {
-            dgam: [0.004],
-            pressure: 10.0,
-            dpressure: 10.0,
-            ..Increment::default()
-        };
-        let t = from_rest(&law(), &inc);
+        let t = from_rest(&law(), &moving([0.0], [0.004], 10.0, 10.0));
         assert!((t.tau[0] - 2.0).abs() < 1e-14);
         assert!((t.ddtddg[0][0] - 500.0).abs() < 1e-11);
         // ∂τ/∂p = γ^pr μ/γ_crit = 0.004·0.5/0.01 = 0.2.
@@ -1041,24 +1064,13 @@ mod tests {
     fn start_elastic_slip_uses_start_pressure() {
         // Start: p = 10, τ = 2 → γ̄^el = 2/500 = 0.004. End: p = 20 (k_s = 1000), Δγ = 0.
         // τ = 1000·0.004 = 4. Recovering γ̄^el with the end pressure would give τ = 2.
-        let inc = Increment::<1> {
-            tau: [2.0],
-            pressure: 20.0,
-            dpressure: 10.0,
-            ..Increment::default()
-        };
-        let t = from_rest(&law(), &inc);
+        let t = from_rest(&law(), &moving([2.0], [0.0], 20.0, 10.0));
         assert!((t.tau[0] - 4.0).abs() < 1e-13);
     }
 
     #[test]
     fn slip_sits_on_the_cone_and_dissipates() {
-        let inc = Increment::<2> {
-            dgam: [0.03, 0.04],
-            pressure: 10.0,
-            dpressure: 10.0,
-            ..Increment::default()
-        };
+        let inc = moving([0.0; 2], [0.03, 0.04], 10.0, 10.0);
         let up = law().update(&inc, &CoulombState::default()).unwrap();
         let t = motion(up.contact);
         // |γ^pr| = 0.05 → n = (0.6, 0.8), τ = 5 n, Δγ_eq^sl = 0.04, SFD = 5·0.04.
@@ -1071,13 +1083,7 @@ mod tests {
     #[test]
     fn shear_limit_caps_and_zeroes_the_pressure_tangent() {
         let l = law().with_shear_limit(3.0).unwrap();
-        let inc = Increment::<1> {
-            dgam: [1.0],
-            pressure: 10.0,
-            dpressure: 0.0,
-            ..Increment::default()
-        };
-        let t = from_rest(&l, &inc);
+        let t = from_rest(&l, &moving([0.0], [1.0], 10.0, 0.0));
         assert_eq!(t.tau[0], 3.0);
         assert_eq!(t.ddtddp[0], 0.0);
     }

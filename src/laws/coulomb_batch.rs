@@ -251,23 +251,15 @@ impl<const N: usize, const W: usize> Lanes<N, W> {
     /// `None` when a lane leaves the common path.
     #[inline(always)]
     fn answer(&self, stick: Le<W>, dtime: f64) -> Option<ChunkOutput<N, W>> {
-        let Lanes {
-            accumulated_slip,
-            gamma_crit,
-            predictor,
-            predictor_eq,
-            tau_crit,
-            dtau_crit_dp,
-            stiffness,
-            probe,
-        } = *self;
-        let stick_tau: [[f64; W]; N] = per_row(|a| map2(predictor[a], stiffness, |x, k| x * k));
+        let stick_tau: [[f64; W]; N] =
+            per_row(|a| map2(self.predictor[a], self.stiffness, |x, k| x * k));
 
         // Slip (Eq. 5.2.3-2): n = γ^pr/γ_eq^pr, Δγ_eq^sl = γ_eq^pr − γ_crit.
-        let n: [[f64; W]; N] = per_row(|a| map2(predictor[a], predictor_eq, |x, e| x / e));
-        let slip_eq = map2(predictor_eq, gamma_crit, |e, g| e - g);
-        let transverse = map2(tau_crit, predictor_eq, |t, e| t / e);
-        let stick_dp = map2(dtau_crit_dp, gamma_crit, |d, g| d / g);
+        let n: [[f64; W]; N] =
+            per_row(|a| map2(self.predictor[a], self.predictor_eq, |x, e| x / e));
+        let slip_eq = map2(self.predictor_eq, self.gamma_crit, |e, g| e - g);
+        let transverse = map2(self.tau_crit, self.predictor_eq, |t, e| t / e);
+        let stick_dp = map2(self.dtau_crit_dp, self.gamma_crit, |d, g| d / g);
         let mut out = ChunkOutput {
             tau: [[0.0; W]; N],
             ddtddg: [[[0.0; W]; N]; N],
@@ -280,12 +272,12 @@ impl<const N: usize, const W: usize> Lanes<N, W> {
         for a in 0..N {
             // Stick: τ = k_s γ^pr (Eq. 5.2.3-1; a subnormal k_s declined the chunk below);
             // slip: τ = n τ_crit (Eq. 5.2.3-2).
-            out.tau[a] = select(stick, stick_tau[a], map2(n[a], tau_crit, |x, t| x * t));
+            out.tau[a] = select(stick, stick_tau[a], map2(n[a], self.tau_crit, |x, t| x * t));
             // Stick: γ^pr (∂τ_crit/∂p)/γ_crit (Eq. 5.2.3-1); slip: n ∂τ_crit/∂p (Eq. 5.2.3-3).
             out.ddtddp[a] = select(
                 stick,
-                map2(predictor[a], stick_dp, |x, d| x * d),
-                map2(n[a], dtau_crit_dp, |x, d| x * d),
+                map2(self.predictor[a], stick_dp, |x, d| x * d),
+                map2(n[a], self.dtau_crit_dp, |x, d| x * d),
             );
             out.dslip[a] = select(stick, [0.0; W], map2(n[a], slip_eq, |x, s| x * s));
             for b in 0..N {
@@ -297,22 +289,22 @@ impl<const N: usize, const W: usize> Lanes<N, W> {
                 } else {
                     map3(transverse, n[a], n[b], |t, x, y| t * (delta - x * y))
                 };
-                let stick_tangent = if a == b { stiffness } else { [0.0; W] };
+                let stick_tangent = if a == b { self.stiffness } else { [0.0; W] };
                 out.ddtddg[a][b] = select(stick, stick_tangent, slip_tangent);
             }
         }
         // Stick: k_s|γ^pr|²/2 as τ·γ^pr/2 (the scalar `dot`, from 0.0 in the same order);
         // slip: |τ|²/(2k_s) with |τ| = τ_crit. Dissipation τ_crit Δγ_eq^sl.
         let mut stick_work = [0.0; W];
-        for a in 0..N {
-            stick_work = map3(stick_work, stick_tau[a], predictor[a], |w, t, x| w + t * x);
+        for (tau, x) in stick_tau.iter().zip(&self.predictor) {
+            stick_work = map3(stick_work, *tau, *x, |w, t, x| w + t * x);
         }
         out.sed = select(
             stick,
             stick_work.map(|w| 0.5 * w),
-            map2(tau_crit, gamma_crit, |t, g| 0.5 * t * g),
+            map2(self.tau_crit, self.gamma_crit, |t, g| 0.5 * t * g),
         );
-        out.sfd = select(stick, [0.0; W], map2(tau_crit, slip_eq, |t, s| t * s));
+        out.sfd = select(stick, [0.0; W], map2(self.tau_crit, slip_eq, |t, s| t * s));
 
         // The scalar law's careful test of its results (`Coulomb::elastic_stick_checked`): the
         // few scalars that bound every result, the same values lane by lane, so the kernel
@@ -321,17 +313,17 @@ impl<const N: usize, const W: usize> Lanes<N, W> {
         // A subnormal k_s declines the chunk: the scalar law then forms the stick stress
         // differently (`Coulomb::update`).
         let subnormal = select(
-            Le(stiffness, [0.0; W]),
+            Le(self.stiffness, [0.0; W]),
             [0.0; W],
             select(
-                Le([f64::MIN_POSITIVE; W], stiffness),
+                Le([f64::MIN_POSITIVE; W], self.stiffness),
                 [0.0; W],
                 [f64::NAN; W],
             ),
         );
         let common: [f64; W] = lanes(|l| {
-            (gamma_crit[l] * 0.0 + (tau_crit[l] * HEADROOM) * 0.0)
-                + ((stiffness[l] * HEADROOM) * 0.0 + (dtau_crit_dp[l] * HEADROOM) * 0.0)
+            (self.gamma_crit[l] * 0.0 + (self.tau_crit[l] * HEADROOM) * 0.0)
+                + ((self.stiffness[l] * HEADROOM) * 0.0 + (self.dtau_crit_dp[l] * HEADROOM) * 0.0)
                 + subnormal[l]
         });
         let branch = select(
@@ -345,7 +337,7 @@ impl<const N: usize, const W: usize> Lanes<N, W> {
         // End state from the return map's slip Δγ_eq^sl (0 in stick), as the scalar path:
         // accumulated slip and slip rate, both saturating at f64::MAX.
         let slip = select(stick, [0.0; W], slip_eq);
-        out.statev[0] = map2(accumulated_slip, slip, |s, d| saturate(s + d));
+        out.statev[0] = map2(self.accumulated_slip, slip, |s, d| saturate(s + d));
         out.statev[1] = slip.map(|d| {
             if dtime > 0.0 {
                 saturate(d / dtime)
@@ -357,7 +349,7 @@ impl<const N: usize, const W: usize> Lanes<N, W> {
 
         // Every probe term is ±0 or NaN, so their sum is 0 exactly when no term is NaN, in any
         // order: lane by lane (a SIMD compare and one mask test) rather than one running sum.
-        let terms = map2(probe, probe_out, |q, r| q + r);
+        let terms = map2(self.probe, probe_out, |q, r| q + r);
         (dtime * 0.0 == 0.0 && all_zero(terms)).then_some(out)
     }
 }

@@ -339,11 +339,9 @@ impl ExtendedCoulomb {
         }
     }
 
-    /// Viscous stick for steady-state transport instead of elastic or exact stick.
-    #[must_use]
-    pub fn with_steady_transport(mut self, transport: Option<SteadyTransport>) -> Self {
-        self.transport = transport;
-        self
+    field_setters! {
+        /// Viscous stick for steady-state transport instead of elastic or exact stick.
+        with_steady_transport(transport: Option<SteadyTransport>);
     }
 
     /// The steady-transport parameters, if that mode is on.
@@ -365,42 +363,20 @@ impl ExtendedCoulomb {
         Ok(self)
     }
 
-    /// μ(γ̇, p, θ̄) factors.
-    #[must_use]
-    pub fn with_coefficient_law(mut self, law: CoefficientLaw) -> Self {
-        self.coefficient = law;
-        self
-    }
-
-    /// Freeze μ at its start-of-increment value (explicit in the slip rate).
-    #[must_use]
-    pub fn with_frozen_coefficient(mut self, frozen: bool) -> Self {
-        self.frozen = frozen;
-        self
-    }
-
-    /// Dynamics with HHT time integration.
-    #[must_use]
-    pub fn with_hht(mut self, hht: Option<Hht>) -> Self {
-        self.hht = hht;
-        self
-    }
-
-    /// Viscous tangential damping.
-    #[must_use]
-    pub fn with_damping(mut self, damping: Option<Damping>) -> Self {
-        self.damping = damping;
-        self
-    }
-
-    /// How a rate-dependent μ enters the return map: the default
-    /// [`RateFormulation::RateFollowingStiffness`], or the earlier rate-free stick stiffness
-    /// (for comparisons only: it is unstable under velocity weakening, docs/props.md). No
-    /// `PROPS` entry selects it.
-    #[must_use]
-    pub fn with_rate_formulation(mut self, formulation: RateFormulation) -> Self {
-        self.formulation = formulation;
-        self
+    field_setters! {
+        /// μ(γ̇, p, θ̄) factors.
+        with_coefficient_law(coefficient: CoefficientLaw);
+        /// Freeze μ at its start-of-increment value (explicit in the slip rate).
+        with_frozen_coefficient(frozen: bool);
+        /// Dynamics with HHT time integration.
+        with_hht(hht: Option<Hht>);
+        /// Viscous tangential damping.
+        with_damping(damping: Option<Damping>);
+        /// How a rate-dependent μ enters the return map: the default
+        /// [`RateFormulation::RateFollowingStiffness`], or the earlier rate-free stick stiffness
+        /// (for comparisons only: it is unstable under velocity weakening, docs/props.md). No
+        /// `PROPS` entry selects it.
+        with_rate_formulation(formulation: RateFormulation);
     }
 
     /// The rate formulation in use.
@@ -1009,16 +985,9 @@ impl ExtendedCoulomb {
         s: &Scaled<N>,
         gamma_crit: f64,
     ) -> Option<ScaledTraction<N>> {
-        let &Scaled {
-            mbar,
-            theta,
-            rate_dt,
-            start_rate,
-            ..
-        } = s;
         let p = inc.pressure;
         let frozen = self.frozen && self.coefficient.is_rate_dependent();
-        let stick_crit = self.critical(mbar, if frozen { start_rate } else { 0.0 }, p, theta);
+        let stick_crit = self.critical(s.mbar, if frozen { s.start_rate } else { 0.0 }, p, s.theta);
         let direction_source = match inc.entry {
             EntryFlag::ExactStick => {
                 if norm(&s.taulm) <= stick_crit.value {
@@ -1044,12 +1013,16 @@ impl ExtendedCoulomb {
         let slip_eq = norm(&s.dgam);
         let rate_law = self.coefficient.is_rate_dependent() && !frozen;
         let crit = if rate_law {
-            self.critical(mbar, slip_eq / rate_dt, p, theta)
+            self.critical(s.mbar, slip_eq / s.rate_dt, p, s.theta)
         } else {
             stick_crit
         };
         let t = crit.value;
-        let t_s = if rate_law { crit.d_rate / rate_dt } else { 0.0 };
+        let t_s = if rate_law {
+            crit.d_rate / s.rate_dt
+        } else {
+            0.0
+        };
         let m = if slip_eq > 0.0 {
             unit(&s.dgam, slip_eq)
         } else {

@@ -112,7 +112,7 @@ impl ExtendedCoulomb {
             // `critical` multiplies (μ̄·φ·π)·Θ: with Θ on, π and Θ are needed apart.
             self.critical(mbar, start_rate, p, theta)
         } else {
-            frozen_critical(factor, (r, d), mbar, p, tau_max, start_rate)
+            decay_critical::<true>(factor, (r, d), mbar, p, tau_max, start_rate)
         };
         // Rate-following: stick ⇔ |γ̄^el| ≤ γ_crit, on the slips (see `elastic_stick`).
         let sticks = if following {
@@ -148,7 +148,7 @@ impl ExtendedCoulomb {
                 let s_eq = g - gamma_crit;
                 (
                     s_eq,
-                    decay_critical(factor, (r, d), mbar, p, tau_max, s_eq * per_dt),
+                    decay_critical::<false>(factor, (r, d), mbar, p, tau_max, s_eq * per_dt),
                     0,
                 )
             } else if self.frozen {
@@ -327,7 +327,7 @@ impl ExtendedCoulomb {
 
 /// τ̄_crit(γ̇_k, p, θ̄) as `critical` forms it, from f = π·Θ and its partials, with the rate held
 /// (`scaled_mu` = μ̄·φ(γ̇_k); φ(0) = 1); 0 for p < 0. `THETA = false` leaves ∂τ̄_crit/∂θ̄ = 0
-/// without forming the product μ̄·φ·Θ'·p (for [`frozen_critical`], where Θ = 1).
+/// without forming the product μ̄·φ·Θ'·p (for [`decay_critical`]'s frozen μ, where Θ = 1).
 #[inline(always)]
 fn held_rate_critical<const THETA: bool>(
     pressure: f64,
@@ -356,29 +356,6 @@ fn held_rate_critical<const THETA: bool>(
     }
 }
 
-/// τ̄_crit(γ̇₀, p) of μ frozen at the start rate γ̇₀ without a temperature factor (Θ = 1), the
-/// value `critical` gives, inline and bit for bit: `critical` forms μ = ((μ̄·φ(γ̇₀))·π)·Θ and
-/// τ̄_crit = μ·p, ∂τ̄_crit/∂p = μ + ((μ̄·φ)·π')·Θ·p; with Θ = 1, `f` = (π, π', 0) and the
-/// products (μ̄·φ)·π and (μ̄·φ)·π' are the same numbers ((x·π)·1 = x·π). φ is `decay_phi`'s,
-/// which is the φ of `critical` (the same terms from one exponential, 1 at γ̇₀ = 0). The rate
-/// derivatives are left 0: frozen μ does not follow this increment's rate (the slip answer
-/// reads ∂τ̄_crit/∂s as 0 when frozen); ∂/∂θ̄ is 0 with Θ = 1. 0 for p < 0, as `critical`,
-/// tested before φ is formed (no exponential for a point in tension).
-#[inline(always)]
-fn frozen_critical(
-    f: [f64; 3],
-    (r, d): (f64, f64),
-    mbar: f64,
-    p: f64,
-    tau_max: f64,
-    start_rate: f64,
-) -> Critical {
-    if p < 0.0 {
-        return Critical::default();
-    }
-    held_rate_critical::<false>(p, f, mbar * decay_phi(r, d, start_rate).0, tau_max)
-}
-
 /// τ̄_crit = min(A·φ, τ_max), A = μ̄·π·Θ·p, with its partials, from φ and φ' at the rate.
 #[inline(always)]
 fn critical_from_phi(
@@ -404,10 +381,23 @@ fn critical_from_phi(
     }
 }
 
-/// The decay law's τ̄_crit(γ̇, p, θ̄) at a given rate (the rate-following slip answer), from the
-/// rate-free factor π·Θ and its partials.
+/// The decay law's τ̄_crit(γ̇, p, θ̄) at the rate `rate`, from the rate-free factor π·Θ and its
+/// partials (`factor`).
+///
+/// `FROZEN = false`: the rate-following slip answer, with the rate derivatives.
+///
+/// `FROZEN = true`: μ frozen at the start rate γ̇₀ = `rate`, without a temperature factor
+/// (Θ = 1), the value `critical` gives, inline and bit for bit: `critical` forms
+/// μ = ((μ̄·φ(γ̇₀))·π)·Θ and τ̄_crit = μ·p, ∂τ̄_crit/∂p = μ + ((μ̄·φ)·π')·Θ·p; with Θ = 1,
+/// `factor` = (π, π', 0) and the products (μ̄·φ)·π and (μ̄·φ)·π' are the same numbers
+/// ((x·π)·1 = x·π). φ is `decay_phi`'s, which is the φ of `critical` (the same terms from one
+/// exponential, 1 at γ̇₀ = 0). The rate derivatives are left 0: frozen μ does not follow this
+/// increment's rate (the slip answer reads ∂τ̄_crit/∂s as 0 when frozen); ∂/∂θ̄ is 0 with
+/// Θ = 1. 0 for p < 0, as `critical`, tested before φ is formed (no exponential for a point in
+/// tension). (`critical_from_phi` multiplies in another order, so the frozen value is formed
+/// by `held_rate_critical` instead.)
 #[inline(always)]
-fn decay_critical(
+fn decay_critical<const FROZEN: bool>(
     factor: [f64; 3],
     (r, d): (f64, f64),
     mbar: f64,
@@ -415,8 +405,15 @@ fn decay_critical(
     tau_max: f64,
     rate: f64,
 ) -> Critical {
-    let (phi, dphi, _) = decay_phi(r, d, rate);
-    critical_from_phi(factor, mbar, p, tau_max, phi, dphi)
+    if FROZEN {
+        if p < 0.0 {
+            return Critical::default();
+        }
+        held_rate_critical::<false>(p, factor, mbar * decay_phi(r, d, rate).0, tau_max)
+    } else {
+        let (phi, dphi, _) = decay_phi(r, d, rate);
+        critical_from_phi(factor, mbar, p, tau_max, phi, dphi)
+    }
 }
 
 /// The decay law's local solve F(s) = k̄_s (γ̄_eq^pr − s) − min(A·φ(s/Δt), τ_max) = 0 on the
@@ -696,7 +693,7 @@ mod tests {
             prop_assert!((phi - (exact + 0.5 * (1.0 - exact))).abs() <= 4.0 * f64::EPSILON);
         }
 
-        /// Frozen μ's inline strength (`frozen_critical`, no temperature factor) against the
+        /// Frozen μ's inline strength (`decay_critical::<true>`, no temperature factor) against the
         /// general `critical` at the same start rate: value and ∂/∂p equal bit for bit (the
         /// lean path's stresses and tangents must not move), with and without π(p) and
         /// τ_max, at rest, on both sides of `decay_terms`' switch from `exp_m1` to `exp`, for
@@ -727,7 +724,7 @@ mod tests {
             let lean = law.lean_decay::<2>().unwrap();
             let cap = tau_max_or_infinity(tau_max);
             let general = law.critical(mu, rate, p, 0.0);
-            let inline = frozen_critical(law.coefficient.rate_free(p, 0.0), lean, mu, p, cap, rate);
+            let inline = decay_critical::<true>(law.coefficient.rate_free(p, 0.0), lean, mu, p, cap, rate);
             prop_assert_eq!(inline.value.to_bits(), general.value.to_bits(), "{:?} {:?}", inline, general);
             prop_assert_eq!(
                 inline.d_pressure.to_bits(),

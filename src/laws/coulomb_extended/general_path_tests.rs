@@ -35,6 +35,20 @@ fn increment(mu: f64, p0: f64, dpf: f64, tf: [f64; 2], gf: [f64; 2], dtime: f64)
     }
 }
 
+/// What both agreement tests draw: μ, τ_max (0: none), and for [`increment`] p₀, Δp/p₀, the
+/// start-stress fractions and the slip fractions (each within ±`slip`).
+#[allow(clippy::type_complexity)]
+fn law_and_increment(slip: f64) -> impl Strategy<Value = (f64, f64, f64, f64, [f64; 2], [f64; 2])> {
+    (
+        0.05..1.0f64,
+        prop_oneof![Just(0.0), 1.0..100.0f64],
+        1.0..200.0f64,
+        -0.5..1.0f64,
+        prop::array::uniform2(-0.6..0.6f64),
+        prop::array::uniform2(-slip..slip),
+    )
+}
+
 /// The start pressure of the three-roots case.
 const P: f64 = 100.0;
 /// μ_s of the three-roots case.
@@ -47,12 +61,7 @@ proptest! {
     /// plain Coulomb law when nothing is switched on) agree with the general path to round-off.
     #[test]
     fn cheap_and_general_paths_agree(
-        mu in 0.05..1.0f64,
-        tau_max in prop_oneof![Just(0.0), 1.0..100.0f64],
-        p0 in 1.0..200.0f64,
-        dpf in -0.5..1.0f64,
-        tf in prop::array::uniform2(-0.6..0.6f64),
-        gf in prop::array::uniform2(-4.0..4.0f64),
+        (mu, tau_max, p0, dpf, tf, gf) in law_and_increment(4.0),
         exact in prop::bool::ANY,
         p_ref in prop_oneof![Just(0.0), 10.0..500.0f64],
     ) {
@@ -121,14 +130,9 @@ proptest! {
     /// τ_max, a frozen μ, μ_k above or below μ_s, and any start rate.
     #[test]
     fn lean_decay_path_agrees_with_the_general_path(
-        mu in 0.05..1.0f64,
+        (mu, tau_max, p0, dpf, tf, gf) in law_and_increment(6.0),
         ratio in prop_oneof![0.0..1.0f64, 1.0..5.0f64],
         dc in 0.1..50.0f64,
-        tau_max in prop_oneof![Just(0.0), 1.0..100.0f64],
-        p0 in 1.0..200.0f64,
-        dpf in -0.5..1.0f64,
-        tf in prop::array::uniform2(-0.6..0.6f64),
-        gf in prop::array::uniform2(-6.0..6.0f64),
         p_ref in prop_oneof![Just(0.0), 10.0..500.0f64],
         temperature in prop_oneof![Just(None), (-0.02..0.02f64, 0.0..100.0f64).prop_map(Some)],
         theta in 0.0..200.0f64,
@@ -187,20 +191,13 @@ proptest! {
 /// smallest, on the cap (s = G − τ_max/k̄_s, τ = τ_max), wherever the solve starts from.
 #[test]
 fn the_earlier_formulation_takes_the_smallest_of_three_roots() {
+    // γ_crit = 10⁻³ is `base_law`'s.
     let (tau_max, d_c, dt, gamma_crit) = (35.0, 2000.0, 0.05, 1e-3);
     let mu_k = 0.2; // r = 0.4, A = μ_s·p = 50, A·r = 20 < τ_max < A
-    let law = ExtendedCoulomb::new(
-        Coulomb::new(MU_S)
-            .and_then(|c| c.with_shear_limit(tau_max))
-            .and_then(|c| c.with_critical_slip_absolute(gamma_crit))
-            .unwrap(),
-    )
-    .with_coefficient_law(
-        CoefficientLaw::default()
-            .with_exponential_decay(mu_k / MU_S, d_c)
-            .unwrap(),
-    )
-    .with_rate_formulation(RateFormulation::RateFreeStiffness);
+    let decay = CoefficientLaw::default().with_exponential_decay(mu_k / MU_S, d_c);
+    let law = ExtendedCoulomb::new(base_law(MU_S, tau_max))
+        .with_coefficient_law(decay.unwrap())
+        .with_rate_formulation(RateFormulation::RateFreeStiffness);
     let g = 1.01e-3;
     let k = tau_max / gamma_crit;
     let f = |s: f64| {
