@@ -1,25 +1,28 @@
 //! `PROPS` layout of law 1, Coulomb friction, plain and extended (`PROPS(1) = 1`, seeds 000 and
 //! 003, section 5.2.3), described once in [`COULOMB`]: the docs/props.md table,
-//! [`CoulombBuilder`], the layout-level validity ([`COULOMB`]`.check`), the defaults (μ₂ = μ,
-//! HHT β(α) and γ(α) as the law's own functions, the slip tolerance) and the validators of
-//! `fric_`'s two fixed layouts ([`PLAIN`], [`DECAY_LEAN`], worked out at compile time) come
-//! from it.
+//! [`CoulombBuilder`], the checked parser ([`COULOMB`]`.check`, whose messages name the entry),
+//! the defaults (μ₂ = μ, HHT β(α) and γ(α) as the law's own functions, the slip tolerance) and
+//! the validators of `fric_`'s fixed layouts, worked out at compile time: [`PLAIN`] and
+//! [`DECAY_LEAN`], and [`FRICTIONAL`] and [`TRANSPORT`] behind the extended fast reader.
 //!
-//! Not derived from it (docs/architecture.md says why): the extended fast reader
-//! `coulomb_extended_fast` (any valid extended layout, not a fixed one) and the checked
-//! parser's class tests in `coulomb_extended_with_table` (src/props.rs), which go through the
-//! law constructors and their messages, which tests pin. Property tests below check that the
-//! checked parser and the schema accept the same arrays, but for the refusals that need more
-//! than the layout (listed there).
+//! Every reader ends in [`law_from_entries`], the one builder of the law from validated
+//! entries; it holds only the refusals the layout cannot say ([`Refusal`]: the decay law's
+//! μ_k/μ_s overflowing, the μ table where none is at hand) and maps the stick mode and the μ
+//! law, which the fast plans leave to it (`Fix::MappedBy`).
 
-use crate::laws::coulomb::DEFAULT_SLIP_TOLERANCE;
-use crate::laws::coulomb_extended::Hht;
+use crate::laws::coulomb::{Coulomb, DEFAULT_SLIP_TOLERANCE, StickMode};
+use crate::laws::coulomb_extended::{
+    Damping, ExtendedCoulomb, Hht, SteadyTransport, ViscousSlipReference,
+};
+use crate::laws::friction_coefficient::CoefficientLaw;
+use crate::laws::friction_table::FrictionTable;
 
 use super::schema::Default::{Derived, Described, Entry as SameAs, Required, Value};
 use super::schema::{
-    Class, Entry, FastLayout, Fix, Fixed, LawFn, Layout, Plan, Rule, Variant, props_builder,
+    Class, Entry, FastLayout, Fix, Fixed, LawFn, Layout, Plan, PropsError, Refusal, Rule, Variant,
+    props_builder,
 };
-use super::{COULOMB_NPROPS, LAW_COULOMB};
+use super::{COULOMB_EXTENDED_NPROPS, COULOMB_NPROPS, FrictionLaw, LAW_COULOMB};
 
 /// `PROPS(7)`: the stick modes.
 const STICK: Class = Class::Choice(&[
@@ -100,6 +103,8 @@ pub const COULOMB: Layout = Layout {
         Entry::new(20, "frozen", "μ's slip rate", FROZEN),
     ],
     rules: &[
+        Rule::ZeroWhen { entry: 3, on: 2, value: 0,
+            why: "no friction in direction 1: anisotropy needs μ₁ > 0" },
         Rule::ZeroWhen { entry: 5, on: 7, value: VISCOUS,
             why: "viscous stick uses the slip tolerance F_f = PROPS(6), not γ_crit" },
         Rule::PositiveWhen { entry: 2, on: 8, value: 1, why: "the exponential decay law" },
@@ -153,7 +158,8 @@ pub const STEADY_TRANSPORT: Variant = Variant {
             .note("HHT is then off"),
         Entry::new(15, "axis", "spinning axis through the origin", AXIS)
             .when_absent(Described("3 (z)")),
-        Entry::new(16, "viscous_reference", "allowable viscous slip rate", VISCOUS_REFERENCE),
+        Entry::new(16, "viscous_reference", "the allowable viscous slip rate of steady-state transport",
+            VISCOUS_REFERENCE),
     ],
 };
 
@@ -204,6 +210,112 @@ pub(crate) struct DecayLean;
 
 impl FastLayout for DecayLean {
     const PLAN: Plan = Plan::of(&COULOMB, &DECAY_LEAN, COULOMB.entries.len());
+}
+
+/// The extended fast reader's layout for the frictional stick modes: any valid law-1 layout
+/// with `PROPS(7)` 0, 1 or 2 and `PROPS(8)` 0 or 1, both mapped by [`law_from_entries`]'s
+/// matches (the μ table, `PROPS(8) = 2`, needs the interaction's table, which the fast path
+/// does not have: the checked path reads it).
+pub const FRICTIONAL: Fixed = Fixed {
+    name: "extended, frictional stick (NPROPS ≤ 20)",
+    fixed: &[(7, Fix::MappedBy(&[0, 1, 2])), (8, Fix::MappedBy(&[0, 1]))],
+};
+
+/// The validator of [`FRICTIONAL`], worked out when the crate compiles.
+pub(crate) struct Frictional;
+
+impl FastLayout for Frictional {
+    const PLAN: Plan = Plan::of(&COULOMB, &FRICTIONAL, COULOMB_EXTENDED_NPROPS);
+}
+
+/// The extended fast reader's layout for steady-state transport: `PROPS(7) = 3`, which
+/// selects [`STEADY_TRANSPORT`]'s meaning of `PROPS(14..16)`, `PROPS(8)` 0 or 1 as in
+/// [`FRICTIONAL`].
+pub const TRANSPORT: Fixed = Fixed {
+    name: "steady-state transport (NPROPS ≤ 20)",
+    fixed: &[(7, Fix::Is(VISCOUS)), (8, Fix::MappedBy(&[0, 1]))],
+};
+
+/// The validator of [`TRANSPORT`], worked out when the crate compiles.
+pub(crate) struct Transport;
+
+impl FastLayout for Transport {
+    const PLAN: Plan = Plan::of(&COULOMB, &TRANSPORT, COULOMB_EXTENDED_NPROPS);
+}
+
+/// The law of valid law-1 entries (`e[i - 1] = PROPS(i)`, absent ones 0): those
+/// [`COULOMB`]`.check` returns, or those a fast plan admitted (which leaves `PROPS(7)` and
+/// `PROPS(8)` to the matches here). The one builder of every law-1 reader but the plain and
+/// decay-lean ones, which build their fixed layout's law directly. Refuses, naming the entry,
+/// only what the layout cannot say ([`Refusal`]); `table` is the interaction's μ table for
+/// `PROPS(8) = 2` (`fric_`, `fric_coef_`). The plain [`Coulomb`] when nothing beyond it is on.
+#[inline(always)]
+pub(crate) fn law_from_entries(
+    e: &[f64; COULOMB_EXTENDED_NPROPS],
+    table: Option<&'static FrictionTable>,
+) -> Result<FrictionLaw, PropsError> {
+    let viscous = e[6] == f64::from(VISCOUS);
+    let stick = match e[6] {
+        0.0 | 3.0 => StickMode::Elastic,
+        1.0 => StickMode::Exact,
+        2.0 => StickMode::Rough,
+        _ => return Err(PropsError::out_of_class(&COULOMB, e, 7)),
+    };
+    let mu = e[1];
+    let base = Coulomb::from_validated(mu, e[3], e[4], e[5], stick);
+    let mu2 = COULOMB.resolved(e, 3);
+    if !viscous && mu2 == mu && e[7..].iter().all(|v| *v == 0.0) {
+        return Ok(FrictionLaw::Coulomb(base));
+    }
+    let coefficient = match e[7] {
+        0.0 => CoefficientLaw::from_validated(None, e[10], e[11], e[12]),
+        1.0 => {
+            // μ_k/μ_s must stay finite (a subnormal μ_s overflows it).
+            let (mu_k, decay) = (e[8], e[9]);
+            let ratio = mu_k / mu;
+            if ratio == f64::INFINITY {
+                return Err(PropsError::refused(
+                    &COULOMB,
+                    Refusal::KineticRatioOverflows { mu_k, mu_s: mu },
+                ));
+            }
+            CoefficientLaw::from_validated(Some((ratio, decay)), e[10], e[11], e[12])
+        }
+        2.0 => match table {
+            Some(table) => CoefficientLaw::table_from_validated(table, mu),
+            None => return Err(PropsError::refused(&COULOMB, Refusal::NoTable)),
+        },
+        _ => return Err(PropsError::out_of_class(&COULOMB, e, 8)),
+    };
+    let hht = (!viscous && (e[13] != 0.0 || e[14] != 0.0 || e[15] != 0.0)).then(|| Hht {
+        alpha: e[13],
+        beta: COULOMB.resolved(e, 15),
+        gamma: COULOMB.resolved(e, 16),
+    });
+    let damping = (e[16] != 0.0).then_some(Damping {
+        c0: e[16],
+        clearance: e[17],
+        fraction: e[18],
+    });
+    let transport = viscous.then(|| SteadyTransport {
+        // F_f: PROPS(6) or its default (γ_crit is not read then, a rule of the layout).
+        tolerance: COULOMB.resolved(e, 6),
+        omega: e[13],
+        axis: match e[14] {
+            1.0 => 0,
+            2.0 => 1,
+            _ => 2,
+        },
+        reference: if e[15] == 1.0 {
+            ViscousSlipReference::RelativeVelocity
+        } else {
+            ViscousSlipReference::Circumferential
+        },
+    });
+    Ok(FrictionLaw::CoulombExtended(
+        ExtendedCoulomb::from_validated(base, mu2, coefficient, e[19] == 1.0, hht, damping)
+            .with_steady_transport(transport),
+    ))
 }
 
 props_builder! {

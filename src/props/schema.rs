@@ -270,7 +270,7 @@ impl Entry {
     fn name(&self) -> String {
         if self.seed_name {
             format!("{} ({})", self.key, self.meaning)
-        } else if self.symbol.is_empty() {
+        } else if self.symbol.is_empty() || self.meaning.ends_with(self.symbol) {
             self.meaning.to_string()
         } else {
             format!("{} {}", self.meaning, self.symbol)
@@ -434,6 +434,9 @@ pub enum Cause {
         /// The value of the other entry.
         other: f64,
     },
+    /// Valid entries that a law's own condition refuses, beyond what the layout can say
+    /// (said by the law's builder from validated entries).
+    Refused(Refusal),
     /// A law refused a value that the layout admits (its message, said of `PROPS(index)`).
     Law {
         /// `PROPS(index)`.
@@ -441,6 +444,52 @@ pub enum Cause {
         /// The law's refusal.
         error: LawError,
     },
+}
+
+/// What a law's builder refuses in entries the layout admits: conditions that need more than
+/// one entry's class or a rule between two entries, or more than the `PROPS` array.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Refusal {
+    /// Law 1's decay law: μ_k/μ_s = `PROPS(9)`/`PROPS(2)` overflows (μ_s too small), both
+    /// entries valid on their own.
+    KineticRatioOverflows {
+        /// μ_k = `PROPS(9)`.
+        mu_k: f64,
+        /// μ_s = `PROPS(2)`.
+        mu_s: f64,
+    },
+    /// Law 1's `PROPS(8) = 2` where no μ table is at hand: only `fric_` and `fric_coef_` look
+    /// the interaction's table up.
+    NoTable,
+}
+
+impl Refusal {
+    /// The `PROPS` index the refusal is said of.
+    #[must_use]
+    pub const fn index(self) -> usize {
+        match self {
+            Refusal::KineticRatioOverflows { .. } => 9,
+            Refusal::NoTable => 8,
+        }
+    }
+}
+
+impl fmt::Display for Refusal {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Refusal::KineticRatioOverflows { mu_k, mu_s } => write!(
+                f,
+                "PROPS(9) = μ_k = {mu_k} over PROPS(2) = μ_s = {mu_s:e}: μ_k/μ_s = {} \
+                 overflows; μ_s is too small for the decay law",
+                mu_k / mu_s
+            ),
+            Refusal::NoTable => write!(
+                f,
+                "PROPS(8) = 2 (μ table from INTERFACIAL_CONFIG) is read by fric_ and fric_coef_ \
+                 only, which look the table up by interaction name"
+            ),
+        }
+    }
 }
 
 /// A refused `PROPS` array: the layout and the cause. Becomes a [`LawError::Parameter`] with
@@ -464,6 +513,34 @@ impl PropsError {
         }
     }
 
+    /// A builder's refusal of valid entries (`layout`'s).
+    #[cold]
+    #[inline(never)]
+    #[must_use]
+    pub fn refused(layout: &'static Layout, refusal: Refusal) -> Self {
+        PropsError {
+            layout,
+            cause: Cause::Refused(refusal),
+            entry: None,
+        }
+    }
+
+    /// `PROPS(index)` of the entries `e` outside its class: for a reader that tests a pinned
+    /// entry by its own match (`Fix::MappedBy`) and so meets the value the class refuses.
+    #[cold]
+    #[inline(never)]
+    #[must_use]
+    pub fn out_of_class(layout: &'static Layout, e: &[f64], index: usize) -> Self {
+        PropsError {
+            layout,
+            cause: Cause::OutOfClass {
+                index,
+                value: e[index - 1],
+            },
+            entry: Some(layout.entry_in(e, index)),
+        }
+    }
+
     /// The cause.
     #[must_use]
     pub fn cause(&self) -> &Cause {
@@ -475,6 +552,7 @@ impl PropsError {
     pub fn index(&self) -> Option<usize> {
         match self.cause {
             Cause::TooFew { .. } => None,
+            Cause::Refused(refusal) => Some(refusal.index()),
             Cause::Unused { index, .. }
             | Cause::OutOfClass { index, .. }
             | Cause::Broken { index, .. }
@@ -492,7 +570,10 @@ impl fmt::Display for PropsError {
                     .required()
                     .map(|e| match e.class {
                         Class::Code(c) => format!("PROPS({}) = {c}", e.index),
-                        _ => format!("PROPS({}) = {}", e.index, e.key),
+                        _ if e.seed_name || e.symbol.is_empty() => {
+                            format!("PROPS({}) = {}", e.index, e.key)
+                        }
+                        _ => format!("PROPS({}) = {}", e.index, e.symbol),
                     })
                     .collect();
                 write!(
@@ -510,8 +591,18 @@ impl fmt::Display for PropsError {
                 layout.law,
                 layout.entries.len()
             ),
+            Cause::Refused(refusal) => write!(f, "{refusal}"),
             Cause::OutOfClass { index, value } => {
                 let e = self.entry.unwrap_or_else(|| layout.entry(*index));
+                if let Class::Switch { .. } = e.class {
+                    // A switch selects one of two things: "PROPS(16) = 2 must select …".
+                    return write!(
+                        f,
+                        "PROPS({index}) = {value} must select {}: {}",
+                        e.meaning,
+                        e.class.requirement()
+                    );
+                }
                 write!(f, "PROPS({index}): {} = {value} must be ", e.name())?;
                 write!(f, "{}", e.class.requirement())?;
                 match (e.class, e.default) {

@@ -6,7 +6,9 @@
 //! the fixed layout pins to another value, or whose entry it pins to 0, holds whatever the
 //! other entries are and is dropped; a rule whose switch it pins to the rule's value becomes a
 //! class test of the entry (0, or 0 < v < ∞); only the others are tested per call. A
-//! [`Variant`](super::Variant) that the fixed layout does not rule out is a compile-time error.
+//! [`Variant`](super::Variant) whose switch the fixed layout pins to the variant's value gives
+//! its entries' classes instead of the layout's; one that the fixed layout neither rules out
+//! nor pins is a compile-time error.
 //!
 //! [`admits_fixed`] reads the plan through an associated constant ([`FastLayout::PLAN`]), so
 //! every mask is a constant in the compiled code: it is one OR of [`range_flag`]s (0 ≤ v < ∞,
@@ -50,6 +52,8 @@ pub(crate) struct Plan {
     none_or_equal: [usize; MAX],
     /// The class's own test ([`Class::admits`]).
     other: u32,
+    /// Each entry's class in this fixed layout (a variant's where it is pinned on).
+    class: [Class; MAX],
     /// The rules tested per call (bit `r` is `layout.rules[r]`).
     rules: u32,
 }
@@ -80,6 +84,7 @@ impl Plan {
             zero_or_equal: [0; MAX],
             none_or_equal: [0; MAX],
             other: 0,
+            class: [Class::Finite; MAX],
             rules: 0,
         };
         let mut k = 0;
@@ -92,6 +97,7 @@ impl Plan {
             let bit = 1 << i;
             let entry = &layout.entries[i];
             assert!(entry.index == i + 1);
+            p.class[i] = class_in(layout, fixed, entry.index);
             match fixed.pin(entry.index) {
                 Some(Fix::Zero) => p.zero |= bit,
                 Some(Fix::NoneOrEqual(j)) => {
@@ -108,7 +114,7 @@ impl Plan {
                 }
                 // Tested by the reader's match.
                 Some(Fix::MappedBy(_)) => {}
-                None => match entry.class {
+                None => match p.class[i] {
                     Class::NonNegative | Class::OffOrPositive => p.range |= bit,
                     Class::Finite | Class::FiniteOrNone => p.finite |= bit,
                     Class::Positive => p.positive |= bit,
@@ -125,7 +131,8 @@ impl Plan {
         while v < layout.variants.len() {
             let variant = &layout.variants[v];
             assert!(
-                !possible(layout, fixed, nprops, variant.on, variant.value),
+                !possible(layout, fixed, nprops, variant.on, variant.value)
+                    || matches!(pinned_value(fixed, variant.on), Some(c) if c == variant.value),
                 "the fixed layout leaves a variant possible"
             );
             v += 1;
@@ -140,8 +147,13 @@ impl Plan {
                 // 0 < v < ∞ where it needs it.
                 Rule::ZeroWhen { value, .. } | Rule::PositiveWhen { value, .. } => {
                     let zero = matches!(rule, Rule::ZeroWhen { .. });
+                    // 0 or equal to the switch, which must be 0 for the rule to apply: 0.
+                    let zero_or_switch = zero
+                        && value == 0
+                        && matches!(fixed.pin(a), Some(Fix::ZeroOrEqual(j)) if j == b);
                     if !possible(layout, fixed, nprops, b, value)
                         || (zero && always_zero(fixed, nprops, a))
+                        || zero_or_switch
                     {
                         false
                     } else if matches!(known(layout, fixed, nprops, b), Some(c) if c == value) {
@@ -217,17 +229,44 @@ const fn always_zero(fixed: &Fixed, nprops: usize, index: usize) -> bool {
     index > nprops || matches!(fixed.pin(index), Some(Fix::Zero))
 }
 
+/// The one value the fixed layout pins `PROPS(index)` to, if it does.
+const fn pinned_value(fixed: &Fixed, index: usize) -> Option<i32> {
+    match fixed.pin(index) {
+        Some(Fix::Zero) => Some(0),
+        Some(Fix::Is(c)) => Some(c),
+        Some(Fix::MappedBy(list)) if list.len() == 1 => Some(list[0]),
+        _ => None,
+    }
+}
+
+/// `PROPS(index)`'s class in this fixed layout: the entry of a variant whose switch the fixed
+/// layout pins to the variant's value, else the layout's.
+const fn class_in(layout: &Layout, fixed: &Fixed, index: usize) -> Class {
+    let mut v = 0;
+    while v < layout.variants.len() {
+        let variant = &layout.variants[v];
+        if matches!(pinned_value(fixed, variant.on), Some(c) if c == variant.value) {
+            let mut k = 0;
+            while k < variant.entries.len() {
+                if variant.entries[k].index == index {
+                    return variant.entries[k].class;
+                }
+                k += 1;
+            }
+        }
+        v += 1;
+    }
+    layout.entries[index - 1].class
+}
+
 /// The one value `PROPS(index)` can take in this fixed layout, if there is one.
 const fn known(layout: &Layout, fixed: &Fixed, nprops: usize, index: usize) -> Option<i32> {
     if index > nprops {
         return Some(0);
     }
     match fixed.pin(index) {
-        Some(Fix::Zero) => Some(0),
-        Some(Fix::Is(c)) => Some(c),
-        Some(Fix::MappedBy(list)) if list.len() == 1 => Some(list[0]),
-        Some(_) => None,
-        None => match layout.entries[index - 1].class {
+        Some(_) => pinned_value(fixed, index),
+        None => match class_in(layout, fixed, index) {
             Class::Code(c) => Some(c),
             _ => None,
         },
@@ -253,7 +292,7 @@ const fn possible(layout: &Layout, fixed: &Fixed, nprops: usize, index: usize, x
             false
         }
         Some(Fix::NoneOrEqual(_) | Fix::ZeroOrEqual(_)) => true,
-        None => match layout.entries[index - 1].class {
+        None => match class_in(layout, fixed, index) {
             Class::Code(c) => c == x,
             Class::Switch { .. } => x == 0 || x == 1,
             Class::Choice(options) => {
@@ -281,37 +320,45 @@ pub(crate) fn admits_fixed<P: FastLayout, const N: usize>(e: &[f64; N]) -> bool 
     let mut flags = 0u64;
     let mut zeros = 0u64;
     let mut ok = true;
+    // Every part of the plan is read in a `const` block: a constant, also in a debug build
+    // (where a read of `P::PLAN` itself copies the whole plan to the stack, once per read).
     unrolled!(I in [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19] {
         if I < N {
-            let bit = 1u32 << I;
             let v = e[I];
-            if P::PLAN.range & bit != 0 {
+            if const { P::PLAN.range >> I & 1 == 1 } {
                 flags |= range_flag(v);
             }
-            if P::PLAN.finite & bit != 0 {
+            if const { P::PLAN.finite >> I & 1 == 1 } {
                 flags |= range_flag(v.abs());
             }
-            if P::PLAN.positive & bit != 0 {
+            if const { P::PLAN.positive >> I & 1 == 1 } {
                 flags |= positive_flag(v);
             }
-            if P::PLAN.zero & bit != 0 {
+            if const { P::PLAN.zero >> I & 1 == 1 } {
                 zeros |= v.to_bits();
             }
-            if P::PLAN.exact & bit != 0 {
-                ok &= v == f64::from(P::PLAN.value[I]);
+            if const { P::PLAN.exact >> I & 1 == 1 } {
+                ok &= v == f64::from(const { P::PLAN.value[I] });
             }
-            if P::PLAN.none_or_equal[I] != 0 {
+            let none_or_equal = const { P::PLAN.none_or_equal[I] };
+            if none_or_equal != 0 {
                 // "None" is −∞ < v ≤ 0, i.e. 0 ≤ −v < ∞: the same top-bit test.
-                flags |= if v == e[P::PLAN.none_or_equal[I] - 1] { 0 } else { range_flag(-v) };
+                flags |= if v == e[none_or_equal - 1] { 0 } else { range_flag(-v) };
             }
-            if P::PLAN.other & bit != 0 {
-                ok &= P::PLAN.layout.entries[I].class.admits(v);
+            if const { P::PLAN.other >> I & 1 == 1 } {
+                ok &= const { P::PLAN.class[I] }.admits(v);
             }
         }
     });
     unrolled!(R in [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31] {
-        if P::PLAN.rules >> R & 1 == 1 {
-            let rule = P::PLAN.layout.rules[R];
+        let live = const {
+            if P::PLAN.rules >> R & 1 == 1 {
+                Some(P::PLAN.layout.rules[R])
+            } else {
+                None
+            }
+        };
+        if let Some(rule) = live {
             ok &= rule.holds(e[rule.entry() - 1], e[rule.other() - 1]);
         }
     });
@@ -321,9 +368,10 @@ pub(crate) fn admits_fixed<P: FastLayout, const N: usize>(e: &[f64; N]) -> bool 
     // "0 or equal to another entry" last, one branch each, 0 (isotropy's usual value) first:
     // as an `&=` it became a branch-free sequence of 4 more instructions per call.
     unrolled!(I in [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19] {
-        if I < N && P::PLAN.zero_or_equal[I] != 0 {
+        let zero_or_equal = const { P::PLAN.zero_or_equal[I] };
+        if I < N && zero_or_equal != 0 {
             let v = e[I];
-            if !(v == 0.0 || v == e[P::PLAN.zero_or_equal[I] - 1]) {
+            if !(v == 0.0 || v == e[zero_or_equal - 1]) {
                 return false;
             }
         }
