@@ -100,7 +100,7 @@ pub const COULOMB: Layout = Layout {
             .symbol("g₀").unit("length"),
         Entry::new(19, "damping_fraction", "fraction of [0, g₀] over which c = c₀", FRACTION_BELOW_ONE)
             .symbol("f"),
-        Entry::new(20, "frozen", "μ's slip rate", FROZEN),
+        Entry::new(20, "frozen", "slip rate of μ", FROZEN),
     ],
     rules: &[
         Rule::ZeroWhen { entry: 3, on: 2, value: 0,
@@ -158,8 +158,7 @@ pub const STEADY_TRANSPORT: Variant = Variant {
             .note("HHT is then off"),
         Entry::new(15, "axis", "spinning axis through the origin", AXIS)
             .when_absent(Described("3 (z)")),
-        Entry::new(16, "viscous_reference", "the allowable viscous slip rate of steady-state transport",
-            VISCOUS_REFERENCE),
+        Entry::new(16, "viscous_reference", "allowable viscous slip rate", VISCOUS_REFERENCE),
     ],
 };
 

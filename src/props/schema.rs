@@ -595,10 +595,10 @@ impl fmt::Display for PropsError {
             Cause::OutOfClass { index, value } => {
                 let e = self.entry.unwrap_or_else(|| layout.entry(*index));
                 if let Class::Switch { .. } = e.class {
-                    // A switch selects one of two things: "PROPS(16) = 2 must select …".
+                    // A switch selects one of two things: "PROPS(16) = 2 must select the …".
                     return write!(
                         f,
-                        "PROPS({index}) = {value} must select {}: {}",
+                        "PROPS({index}) = {value} must select the {}: {}",
                         e.meaning,
                         e.class.requirement()
                     );
