@@ -91,9 +91,7 @@ pub fn fast_plain_coulomb(props: &[f64]) -> Option<Coulomb> {
 #[inline(never)]
 fn plain_coulomb_other_lengths(props: &[f64]) -> Option<Coulomb> {
     match props.first() {
-        Some(&code) if code == f64::from(LAW_COULOMB) => {
-            coulomb_from_entries(coulomb_props_padded(props)?)
-        }
+        Some(&code) if code == f64::from(LAW_COULOMB) => coulomb_from_entries(padded(props)?),
         Some(&code) if code == f64::from(LAW_ADHESIVE) => {
             adhesive::adhesive_coulomb_special_case(props)
         }
@@ -123,7 +121,7 @@ pub fn fast_extended_coulomb(props: &[f64]) -> Option<ExtendedCoulomb> {
 fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
     let e = match <&[f64; COULOMB_NPROPS]>::try_from(props) {
         Ok(all) => *all,
-        Err(_) => coulomb_props_padded(props)?,
+        Err(_) => padded(props)?,
     };
     coulomb_from_entries(e)
 }
@@ -175,14 +173,16 @@ fn coulomb_from_entries(e: [f64; COULOMB_NPROPS]) -> Option<Coulomb> {
     ))
 }
 
-/// `PROPS(1..NPROPS)` with 2 ≤ NPROPS < 7, padded with zeros to the Coulomb layout; `None`
-/// for other lengths (the checked path then names the problem).
+/// `PROPS(1..NPROPS)` with 2 ≤ NPROPS ≤ N padded with zeros (the absent entries' value) to
+/// the `N` entries a fast reader reads (the plain layout's 7, the extended one's 20); `None`
+/// for other lengths (the checked path then names the problem). Out of line: hosts pass the
+/// whole layout, which the readers take as it is.
 #[inline(never)]
-fn coulomb_props_padded(props: &[f64]) -> Option<[f64; COULOMB_NPROPS]> {
-    if props.len() < 2 || props.len() > COULOMB_NPROPS {
+fn padded<const N: usize>(props: &[f64]) -> Option<[f64; N]> {
+    if props.len() < 2 || props.len() > N {
         return None;
     }
-    let mut e = [0.0; COULOMB_NPROPS];
+    let mut e = [0.0; N];
     e[..props.len()].copy_from_slice(props);
     Some(e)
 }
@@ -199,7 +199,7 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
     // out of line.
     let e = match <&[f64; COULOMB_EXTENDED_NPROPS]>::try_from(props) {
         Ok(all) => *all,
-        Err(_) => extended_props_padded(props)?,
+        Err(_) => padded(props)?,
     };
     let valid = if e[6] == 3.0 {
         admits_fixed::<coulomb::Transport, COULOMB_EXTENDED_NPROPS>(&e)
@@ -210,17 +210,6 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
         return None;
     }
     coulomb::law_from_entries(&e, None).ok()
-}
-
-/// `PROPS(1..NPROPS)` with 2 ≤ NPROPS < 20, padded with zeros; `None` for other lengths.
-#[inline(never)]
-fn extended_props_padded(props: &[f64]) -> Option<[f64; COULOMB_EXTENDED_NPROPS]> {
-    if props.len() < 2 || props.len() > COULOMB_EXTENDED_NPROPS {
-        return None;
-    }
-    let mut e = [0.0; COULOMB_EXTENDED_NPROPS];
-    e[..props.len()].copy_from_slice(props);
-    Some(e)
 }
 
 /// The decay law's lean layout (`NPROPS = 20`: isotropic, elastic stick, exponential decay,
@@ -625,7 +614,7 @@ mod tests {
         fn lean_decay_parser_agrees_with_checked_path(
             // A vector, not `uniform20`: twenty copies of the entry strategy overflow the test
             // thread's stack in a debug build.
-            entries in prop::collection::vec(extended_entry(), COULOMB_EXTENDED_NPROPS),
+            entries in prop::collection::vec(coulomb::tests::entry(), COULOMB_EXTENDED_NPROPS),
             keep in prop::array::uniform3(prop::bool::weighted(0.8)),
         ) {
             let mut props = [0.0; COULOMB_EXTENDED_NPROPS];
@@ -644,21 +633,6 @@ mod tests {
         }
     }
 
-    fn extended_entry() -> impl Strategy<Value = f64> {
-        prop_oneof![
-            4 => Just(0.0),
-            1 => Just(1.0),
-            1 => Just(2.0),
-            1 => Just(3.0),
-            1 => Just(0.5),
-            1 => Just(-0.2),
-            1 => Just(-1.0),
-            1 => Just(f64::NAN),
-            1 => Just(f64::INFINITY),
-            1 => 0.0..3.0f64,
-        ]
-    }
-
     proptest! {
         #![proptest_config(ProptestConfig { cases: 5000, failure_persistence: None, ..ProptestConfig::default() })]
 
@@ -666,7 +640,7 @@ mod tests {
         /// entries), with the same law.
         #[test]
         fn extended_fast_and_checked_paths_agree(
-            mut props in prop::collection::vec(extended_entry(), 2..23),
+            mut props in prop::collection::vec(coulomb::tests::entry(), 2..23),
             mu in prop_oneof![Just(0.0), Just(0.3), Just(-0.1), 0.0..1.0f64],
             // Steady-state transport often enough to reach its entries: PROPS(7) = 3 with
             // ω, the axis and the γ̇_crit variant (PROPS(14..16)), PROPS(5) cleared or not, the
@@ -674,9 +648,9 @@ mod tests {
             transport in prop::option::weighted(
                 0.3,
                 (
-                    prop_oneof![2 => 0.01..10.0f64, 1 => extended_entry()],
-                    prop_oneof![2 => (0..4).prop_map(f64::from), 1 => extended_entry()],
-                    prop_oneof![Just(0.0), Just(1.0), extended_entry()],
+                    prop_oneof![2 => 0.01..10.0f64, 1 => coulomb::tests::entry()],
+                    prop_oneof![2 => (0..4).prop_map(f64::from), 1 => coulomb::tests::entry()],
+                    prop_oneof![Just(0.0), Just(1.0), coulomb::tests::entry()],
                     prop::bool::ANY,
                     prop::bool::ANY,
                 ),

@@ -348,15 +348,16 @@ props_builder! {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
-    use crate::laws::coulomb_extended::Damping;
+    use crate::props::coulomb_extended;
     use crate::props::schema::Cause;
-    use crate::props::{COULOMB_EXTENDED_NPROPS, FrictionLaw, coulomb_extended};
     use proptest::prelude::*;
+    use proptest::test_runner::TestCaseError;
 
-    /// `PROPS` values around the classes' edges, mostly 0 so that many arrays are valid.
-    fn entry() -> impl Strategy<Value = f64> {
+    /// `PROPS` values around the classes' edges, mostly 0 so that many arrays are valid (also
+    /// the extended fast reader's agreement tests, src/props.rs).
+    pub(in crate::props) fn entry() -> impl Strategy<Value = f64> {
         prop_oneof![
             8 => Just(0.0),
             1 => Just(-0.0),
@@ -375,24 +376,28 @@ mod tests {
         ]
     }
 
-    /// What the checked parser refuses beyond the layout (the law's own conditions, not a
-    /// single entry's class or a rule between two entries): anisotropy needs μ₁ > 0, and the
-    /// μ table (`PROPS(8) = 2`) needs the interaction's table, which only `fric_` and
-    /// `fric_coef_` look up (never passed here); and the decay law's ratio μ_k/μ_s must be
-    /// finite (both entries valid, their ratio overflowing).
-    fn refused_beyond_the_layout(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> bool {
-        let (mu, mu2) = (e[1], e[2]);
-        (mu2 != 0.0 && mu2 != mu && mu == 0.0)
-            || e[7] == 2.0
-            || (e[7] == 1.0 && !(e[8] / mu).is_finite())
+    /// What the builder refuses beyond the layout ([`Refusal`]: the law's own conditions, not
+    /// a single entry's class or a rule between two entries), written out here: the μ table
+    /// (`PROPS(8) = 2`) needs the interaction's table, which only `fric_` and `fric_coef_`
+    /// look up (never passed here); and the decay law's ratio μ_k/μ_s must be finite (both
+    /// entries valid, their ratio overflowing).
+    fn refused_beyond_the_layout(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> Option<Refusal> {
+        match e[7] {
+            2.0 => Some(Refusal::NoTable),
+            1.0 if !(e[8] / e[1]).is_finite() => Some(Refusal::KineticRatioOverflows {
+                mu_k: e[8],
+                mu_s: e[1],
+            }),
+            _ => None,
+        }
     }
 
     proptest! {
         #![proptest_config(ProptestConfig { cases: 20000, failure_persistence: None, ..ProptestConfig::default() })]
 
-        /// The schema and the checked parser `coulomb_extended` accept the same law-1 arrays
-        /// (0 to 22 entries), but for [`refused_beyond_the_layout`]; and what the schema
-        /// refuses by an entry's class or a rule, the parser refuses too.
+        /// The checked parser `coulomb_extended` (the schema's check, then the builder) refuses
+        /// what the schema refuses, with the schema's message, and of what the schema accepts
+        /// exactly [`refused_beyond_the_layout`], with that typed cause (0 to 22 entries).
         #[test]
         fn schema_and_checked_parser_accept_the_same_arrays(
             mut props in prop::collection::vec(entry(), 0..23),
@@ -416,21 +421,30 @@ mod tests {
             if props.len() > 7 && !live.contains(&7) {
                 props[7] = mu_law;
             }
-            let old = coulomb_extended(&props);
-            let new = COULOMB.check::<COULOMB_EXTENDED_NPROPS>(&props);
-            match (&old, &new) {
-                (Ok(_), Ok(_)) | (Err(_), Err(_)) => {}
-                (Ok(law), Err(e)) => prop_assert!(false, "{props:?}: parser {law:?}, schema {e}"),
-                (Err(m), Ok(e)) => prop_assert!(
-                    refused_beyond_the_layout(e),
-                    "{props:?}: parser {m}, schema accepts"
+            let parsed = coulomb_extended(&props);
+            let checked = COULOMB.check::<COULOMB_EXTENDED_NPROPS>(&props);
+            match (&parsed, checked) {
+                (Ok(law), Ok(e)) => prop_assert!(
+                    refused_beyond_the_layout(&e).is_none(),
+                    "{props:?}: {law:?}"
                 ),
+                (Err(m), Err(e)) => prop_assert_eq!(m, &crate::LawError::from(e)),
+                (Ok(law), Err(e)) => prop_assert!(false, "{props:?}: parser {law:?}, schema {e}"),
+                (Err(m), Ok(e)) => {
+                    let Some(refusal) = refused_beyond_the_layout(&e) else {
+                        return Err(TestCaseError::fail(format!("{props:?}: {m}, schema accepts")));
+                    };
+                    let typed = law_from_entries(&e, None).unwrap_err();
+                    prop_assert_eq!(typed.cause(), &Cause::Refused(refusal));
+                    prop_assert_eq!(typed.index(), Some(refusal.index()));
+                    prop_assert_eq!(m, &crate::LawError::from(typed));
+                }
             }
         }
     }
 
-    /// The classes' edges, one entry at a time on a valid base: both readers draw the line
-    /// at the same value.
+    /// The classes' edges, one entry at a time on a valid base: the checked parser refuses
+    /// exactly what the schema refuses and [`refused_beyond_the_layout`].
     #[test]
     fn edges_agree_entry_by_entry() {
         let edges = [
@@ -480,7 +494,9 @@ mod tests {
                     props[i] = v;
                     let old = coulomb_extended(&props);
                     let new = COULOMB.check::<COULOMB_EXTENDED_NPROPS>(&props);
-                    let beyond = new.as_ref().is_ok_and(refused_beyond_the_layout);
+                    let beyond = new
+                        .as_ref()
+                        .is_ok_and(|e| refused_beyond_the_layout(e).is_some());
                     assert_eq!(
                         old.is_ok(),
                         new.is_ok() && !beyond,
@@ -559,8 +575,8 @@ mod tests {
     /// and γ(α) (`Hht::default_beta` / `default_gamma`, named by the schema), μ₂ = μ and the
     /// slip tolerance, through the extended fast reader, the checked parser and the law
     /// constructors, against the closed forms written out here. Changing the default in any
-    /// one place fails this test: the fast reader's (`coulomb_extended_fast`), the checked
-    /// path's (`Hht::new`), the schema's entry, or the law's function (the closed form).
+    /// one place fails this test: the schema's entry, the builder (`law_from_entries`, which
+    /// both readers end in), the law's function (the closed form) or `Hht::new`.
     #[test]
     fn the_defaults_are_said_once() {
         use crate::laws::coulomb::{Coulomb, CriticalSlip};
@@ -620,10 +636,37 @@ mod tests {
     }
 
     /// The fast validators' plans drop at compile time every rule their fixed layout
-    /// satisfies: none is left for the plain layout, only "θ_ref needs b_θ" (the one rule
-    /// between two free entries) for the decay law's lean layout.
+    /// satisfies: none is left for the plain layout (anisotropy's "μ₂ = 0 when μ = 0" holds for
+    /// μ₂ = 0 or μ), only "θ_ref needs b_θ" (the one rule between two free entries) for the
+    /// decay law's lean layout; the extended readers' plans keep the rules of the modes they
+    /// leave open (anisotropy, μ law 0 or 1, the temperature law, damping) and drop those of the
+    /// modes their pins rule out (the μ table; γ_crit under steady transport, whose plan tests
+    /// it as 0 instead).
     #[test]
     fn the_plans_keep_only_the_rules_that_can_fail() {
+        let open_modes = [
+            (3, 2),
+            (2, 8),
+            (9, 8),
+            (10, 8),
+            (10, 8),
+            (13, 12),
+            (18, 17),
+            (19, 17),
+            (20, 8),
+        ];
+        for plan in [Frictional::PLAN, Transport::PLAN] {
+            let live: Vec<(usize, usize)> = plan
+                .live_rules()
+                .iter()
+                .map(|r| (r.entry(), r.other()))
+                .collect();
+            assert_eq!(live, open_modes);
+            assert!(plan.live_rules().iter().all(|r| !matches!(
+                r,
+                Rule::ZeroWhen { value: 2, .. } | Rule::PositiveWhen { value: 2, .. }
+            )));
+        }
         assert!(Plain::PLAN.live_rules().is_empty());
         assert_eq!(
             DecayLean::PLAN.live_rules(),
@@ -643,6 +686,93 @@ mod tests {
         assert!(std::panic::catch_unwind(|| Plan::of(&COULOMB, &open, 7)).is_err());
         // Nor one pinning an entry past its NPROPS.
         assert!(std::panic::catch_unwind(|| Plan::of(&COULOMB, &DECAY_LEAN, 7)).is_err());
+    }
+
+    /// A plan whose pin selects a variant tests the variant's entries: [`TRANSPORT`] reads
+    /// `PROPS(14..16)` as ω (> 0), the axis (0 to 3) and the γ̇_crit variant (0 or 1), not HHT;
+    /// [`FRICTIONAL`] as HHT's α, β and γ. The same arrays through the fast reader and the
+    /// checked parser.
+    #[test]
+    fn the_transport_plan_takes_the_variants_entries() {
+        assert_eq!(Transport::PLAN.class_of(14), Class::Positive);
+        assert_eq!(
+            Transport::PLAN.class_of(15),
+            STEADY_TRANSPORT.entries[1].class
+        );
+        assert_eq!(
+            Transport::PLAN.class_of(16),
+            STEADY_TRANSPORT.entries[2].class
+        );
+        for index in 14..=16 {
+            assert_eq!(Frictional::PLAN.class_of(index), COULOMB.entry(index).class);
+        }
+        let spinning = |omega: f64, axis: f64, reference: f64| {
+            CoulombBuilder::new()
+                .mu(0.3)
+                .stick(3.0)
+                .omega(omega)
+                .axis(axis)
+                .viscous_reference(reference)
+                .build()
+        };
+        // ω = 2 is no HHT α, axis 3 no HHT β; ω = 0, axis 4 and variant 2 are refused.
+        let props = spinning(2.0, 3.0, 1.0);
+        let fast = crate::props::fast_extended_coulomb(&props);
+        // Built by hand: no HHT, the transport of ω = 2 about z (axis 3), seed 003's γ̇_crit.
+        let transport = SteadyTransport::new(DEFAULT_SLIP_TOLERANCE, 2.0, 2)
+            .unwrap()
+            .with_reference(ViscousSlipReference::RelativeVelocity);
+        let by_hand =
+            ExtendedCoulomb::new(Coulomb::new(0.3).unwrap()).with_steady_transport(Some(transport));
+        assert_eq!(fast, Some(by_hand));
+        assert_eq!(
+            coulomb_extended(&props),
+            Ok(FrictionLaw::CoulombExtended(by_hand))
+        );
+        for bad in [
+            spinning(0.0, 0.0, 0.0),
+            spinning(2.0, 4.0, 0.0),
+            spinning(2.0, 0.0, 2.0),
+        ] {
+            assert_eq!(crate::props::fast_extended_coulomb(&bad), None);
+            assert!(coulomb_extended(&bad).is_err());
+        }
+    }
+
+    /// The builder's refusals are typed causes naming the entry, with the messages the tests
+    /// of the entry points pin.
+    #[test]
+    fn the_builders_refusals_are_typed() {
+        let table = CoulombBuilder::new().mu(0.3).mu_law(2.0).build();
+        let e = COULOMB.check::<20>(&table).unwrap();
+        let refused = law_from_entries(&e, None).unwrap_err();
+        assert_eq!(refused.cause(), &Cause::Refused(Refusal::NoTable));
+        assert_eq!(refused.index(), Some(8));
+        assert!(
+            refused.to_string().starts_with("PROPS(8) = 2 (μ table"),
+            "{refused}"
+        );
+        let tiny = CoulombBuilder::new()
+            .mu(1e-310)
+            .mu_law(1.0)
+            .mu_k(0.1)
+            .decay(1.0)
+            .build();
+        let e = COULOMB.check::<20>(&tiny).unwrap();
+        let refused = law_from_entries(&e, None).unwrap_err();
+        assert_eq!(
+            refused.cause(),
+            &Cause::Refused(Refusal::KineticRatioOverflows {
+                mu_k: 0.1,
+                mu_s: 1e-310
+            })
+        );
+        assert_eq!(refused.index(), Some(9));
+        // Anisotropy with μ₁ = 0 is the layout's rule now, named by PROPS(3).
+        let anisotropic = CoulombBuilder::new().mu(0.0).mu2(0.4).build();
+        let e = COULOMB.check::<20>(&anisotropic).unwrap_err();
+        assert_eq!(e.index(), Some(3));
+        assert!(e.to_string().contains("anisotropy needs μ₁ > 0"), "{e}");
     }
 
     /// `PLAIN` leaves the stick mode to the plain reader's match: the match accepts exactly

@@ -205,6 +205,13 @@ impl Plan {
         self
     }
 
+    /// `PROPS(index)`'s class in this plan (for tests).
+    #[cfg(test)]
+    #[must_use]
+    pub(crate) fn class_of(&self, index: usize) -> Class {
+        self.class[index - 1]
+    }
+
     /// The rules tested per call (for tests).
     #[cfg(test)]
     #[must_use]
