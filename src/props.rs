@@ -18,7 +18,8 @@ pub use adhesive::{
     LAW_ADHESIVE,
 };
 pub use coulomb::{
-    COULOMB, CoulombBuilder, DECAY_LEAN, FRICTIONAL, PLAIN, STEADY_TRANSPORT, TRANSPORT,
+    COULOMB, CoulombBuilder, DECAY_LEAN, EXTENDED_CONSTANT, EXTENDED_DECAY, PLAIN,
+    STEADY_TRANSPORT, TRANSPORT,
 };
 use schema::admits_fixed;
 
@@ -107,10 +108,22 @@ pub fn fast_extended_coulomb(props: &[f64]) -> Option<ExtendedCoulomb> {
     if careful_path_only() {
         return None;
     }
-    match coulomb_extended_fast(props) {
-        Some(FrictionLaw::CoulombExtended(law)) => Some(law),
-        _ => None,
+    // As `coulomb_extended_fast`, to the extended law.
+    if props.first() != Some(&f64::from(LAW_COULOMB)) {
+        return None;
     }
+    let storage;
+    let e = match <&[f64; COULOMB_EXTENDED_NPROPS]>::try_from(props) {
+        Ok(all) => all,
+        Err(_) => {
+            storage = padded(props)?;
+            &storage
+        }
+    };
+    if !admits_extended(e) {
+        return None;
+    }
+    coulomb::extended_from_entries(e)
 }
 
 /// The common case of [`friction_law`]: a valid Coulomb `PROPS`, or `None`.
@@ -189,27 +202,40 @@ fn padded<const N: usize>(props: &[f64]) -> Option<[f64; N]> {
 
 /// The extended law-1 layout (`PROPS(3)`, `PROPS(8..20)`) when valid, else `None` (the
 /// checked path then says what is wrong). Validity is the schema's, worked out at compile time:
-/// [`FRICTIONAL`](coulomb::FRICTIONAL) (stick modes 0, 1, 2) or
-/// [`TRANSPORT`](coulomb::TRANSPORT) (`PROPS(7) = 3`) over [`COULOMB`]; the law is
+/// [`EXTENDED_CONSTANT`] and [`EXTENDED_DECAY`] (stick modes 0, 1, 2 with constant μ or the
+/// decay law) or [`TRANSPORT`] (`PROPS(7) = 3`) over [`COULOMB`]; the law is
 /// [`coulomb::law_from_entries`]'s, as on the checked path. Declines the μ table
 /// (`PROPS(8) = 2`), which needs the interaction's table.
 #[inline(always)]
 fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
-    // The full layout (NPROPS = 20) is copied as a fixed-size array; a shorter one is padded
-    // out of line.
-    let e = match <&[f64; COULOMB_EXTENDED_NPROPS]>::try_from(props) {
-        Ok(all) => *all,
-        Err(_) => padded(props)?,
-    };
-    let valid = if e[6] == 3.0 {
-        admits_fixed::<coulomb::Transport, COULOMB_EXTENDED_NPROPS>(&e)
-    } else {
-        admits_fixed::<coulomb::Frictional, COULOMB_EXTENDED_NPROPS>(&e)
-    };
-    if !valid {
+    // Law 1 only: the adhesive layout leaves here with one test.
+    if props.first() != Some(&f64::from(LAW_COULOMB)) {
         return None;
     }
-    coulomb::law_from_entries(&e, None).ok()
+    // The full layout (NPROPS = 20) is read in place; a shorter one is padded out of line.
+    let storage;
+    let e = match <&[f64; COULOMB_EXTENDED_NPROPS]>::try_from(props) {
+        Ok(all) => all,
+        Err(_) => {
+            storage = padded(props)?;
+            &storage
+        }
+    };
+    if !admits_extended(e) {
+        return None;
+    }
+    coulomb::fast_law_from_entries(e)
+}
+
+/// Whether the 20 law-1 entries `e` (absent ones 0) pass an extended fast plan: the plan of
+/// their stick mode and μ law (a value no plan takes fails the last one).
+#[inline(always)]
+fn admits_extended(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> bool {
+    match (e[6] == 3.0, e[7]) {
+        (true, _) => admits_fixed::<coulomb::Transport, COULOMB_EXTENDED_NPROPS>(e),
+        (false, 0.0) => admits_fixed::<coulomb::ExtendedConstant, COULOMB_EXTENDED_NPROPS>(e),
+        (false, _) => admits_fixed::<coulomb::ExtendedDecay, COULOMB_EXTENDED_NPROPS>(e),
+    }
 }
 
 /// The decay law's lean layout (`NPROPS = 20`: isotropic, elastic stick, exponential decay,

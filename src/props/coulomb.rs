@@ -211,25 +211,40 @@ impl FastLayout for DecayLean {
     const PLAN: Plan = Plan::of(&COULOMB, &DECAY_LEAN, COULOMB.entries.len());
 }
 
-/// The extended fast reader's layout for the frictional stick modes: any valid law-1 layout
-/// with `PROPS(7)` 0, 1 or 2 and `PROPS(8)` 0 or 1, both mapped by [`law_from_entries`]'s
-/// matches (the μ table, `PROPS(8) = 2`, needs the interaction's table, which the fast path
-/// does not have: the checked path reads it).
-pub const FRICTIONAL: Fixed = Fixed {
-    name: "extended, frictional stick (NPROPS ≤ 20)",
-    fixed: &[(7, Fix::MappedBy(&[0, 1, 2])), (8, Fix::MappedBy(&[0, 1]))],
+/// The extended fast reader's layout for the frictional stick modes with constant μ: any
+/// valid law-1 layout with `PROPS(7)` 0, 1 or 2 (mapped by [`law_from_entries`]'s match) and
+/// `PROPS(8) = 0`, so that the rules of the μ law turn into tests of single entries (μ_k, d_c
+/// and frozen μ 0).
+pub const EXTENDED_CONSTANT: Fixed = Fixed {
+    name: "extended, frictional stick, constant μ (NPROPS ≤ 20)",
+    fixed: &[(7, Fix::MappedBy(&[0, 1, 2])), (8, Fix::Is(0))],
 };
 
-/// The validator of [`FRICTIONAL`], worked out when the crate compiles.
-pub(crate) struct Frictional;
+/// The validator of [`EXTENDED_CONSTANT`], worked out when the crate compiles.
+pub(crate) struct ExtendedConstant;
 
-impl FastLayout for Frictional {
-    const PLAN: Plan = Plan::of(&COULOMB, &FRICTIONAL, COULOMB_EXTENDED_NPROPS);
+impl FastLayout for ExtendedConstant {
+    const PLAN: Plan = Plan::of(&COULOMB, &EXTENDED_CONSTANT, COULOMB_EXTENDED_NPROPS);
+}
+
+/// [`EXTENDED_CONSTANT`] with the exponential decay law, `PROPS(8) = 1` (μ_s and d_c > 0).
+/// The μ table, `PROPS(8) = 2`, has no fast plan: it needs the interaction's table, which
+/// the fast path does not have (the checked path reads it).
+pub const EXTENDED_DECAY: Fixed = Fixed {
+    name: "extended, frictional stick, decay law (NPROPS ≤ 20)",
+    fixed: &[(7, Fix::MappedBy(&[0, 1, 2])), (8, Fix::Is(1))],
+};
+
+/// The validator of [`EXTENDED_DECAY`], worked out when the crate compiles.
+pub(crate) struct ExtendedDecay;
+
+impl FastLayout for ExtendedDecay {
+    const PLAN: Plan = Plan::of(&COULOMB, &EXTENDED_DECAY, COULOMB_EXTENDED_NPROPS);
 }
 
 /// The extended fast reader's layout for steady-state transport: `PROPS(7) = 3`, which
-/// selects [`STEADY_TRANSPORT`]'s meaning of `PROPS(14..16)`, `PROPS(8)` 0 or 1 as in
-/// [`FRICTIONAL`].
+/// selects [`STEADY_TRANSPORT`]'s meaning of `PROPS(14..16)`, `PROPS(8)` 0 or 1 (mapped by
+/// [`law_from_entries`]'s match; one plan for both, steady transport being rarer).
 pub const TRANSPORT: Fixed = Fixed {
     name: "steady-state transport (NPROPS ≤ 20)",
     fixed: &[(7, Fix::Is(VISCOUS)), (8, Fix::MappedBy(&[0, 1]))],
@@ -248,17 +263,55 @@ impl FastLayout for Transport {
 /// decay-lean ones, which build their fixed layout's law directly. Refuses, naming the entry,
 /// only what the layout cannot say ([`Refusal`]); `table` is the interaction's μ table for
 /// `PROPS(8) = 2` (`fric_`, `fric_coef_`). The plain [`Coulomb`] when nothing beyond it is on.
-#[inline(always)]
 pub(crate) fn law_from_entries(
     e: &[f64; COULOMB_EXTENDED_NPROPS],
     table: Option<&'static FrictionTable>,
 ) -> Result<FrictionLaw, PropsError> {
+    build(e, table).map_err(|no| match no {
+        NoLaw::OutOfClass(index) => PropsError::out_of_class(&COULOMB, e, index),
+        NoLaw::Refused(refusal) => PropsError::refused(&COULOMB, refusal),
+    })
+}
+
+/// [`law_from_entries`] for the extended fast reader: the extended law of entries a fast plan
+/// admitted, else `None` (the plain law, the μ table, a refusal: the other paths say which).
+#[inline(always)]
+pub(crate) fn extended_from_entries(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> Option<ExtendedCoulomb> {
+    match build(e, None) {
+        Ok(FrictionLaw::CoulombExtended(law)) => Some(law),
+        _ => None,
+    }
+}
+
+/// [`law_from_entries`] for a fast reader without a μ table: the law, or `None` (the checked
+/// path then says why).
+#[inline(always)]
+pub(crate) fn fast_law_from_entries(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> Option<FrictionLaw> {
+    build(e, None).ok()
+}
+
+/// Why [`build`] gives no law: small and `Copy`, so that a fast reader's `None` costs nothing;
+/// [`law_from_entries`] makes it a [`PropsError`].
+#[derive(Clone, Copy)]
+enum NoLaw {
+    /// `PROPS(index)`, left to the builder's match, is none of its values.
+    OutOfClass(usize),
+    /// What the layout cannot say.
+    Refused(Refusal),
+}
+
+/// The body of [`law_from_entries`].
+#[inline(always)]
+fn build(
+    e: &[f64; COULOMB_EXTENDED_NPROPS],
+    table: Option<&'static FrictionTable>,
+) -> Result<FrictionLaw, NoLaw> {
     let viscous = e[6] == f64::from(VISCOUS);
     let stick = match e[6] {
         0.0 | 3.0 => StickMode::Elastic,
         1.0 => StickMode::Exact,
         2.0 => StickMode::Rough,
-        _ => return Err(PropsError::out_of_class(&COULOMB, e, 7)),
+        _ => return Err(NoLaw::OutOfClass(7)),
     };
     let mu = e[1];
     let base = Coulomb::from_validated(mu, e[3], e[4], e[5], stick);
@@ -273,24 +326,28 @@ pub(crate) fn law_from_entries(
             let (mu_k, decay) = (e[8], e[9]);
             let ratio = mu_k / mu;
             if ratio == f64::INFINITY {
-                return Err(PropsError::refused(
-                    &COULOMB,
-                    Refusal::KineticRatioOverflows { mu_k, mu_s: mu },
-                ));
+                return Err(NoLaw::Refused(Refusal::KineticRatioOverflows {
+                    mu_k,
+                    mu_s: mu,
+                }));
             }
             CoefficientLaw::from_validated(Some((ratio, decay)), e[10], e[11], e[12])
         }
         2.0 => match table {
             Some(table) => CoefficientLaw::table_from_validated(table, mu),
-            None => return Err(PropsError::refused(&COULOMB, Refusal::NoTable)),
+            None => return Err(NoLaw::Refused(Refusal::NoTable)),
         },
-        _ => return Err(PropsError::out_of_class(&COULOMB, e, 8)),
+        _ => return Err(NoLaw::OutOfClass(8)),
     };
-    let hht = (!viscous && (e[13] != 0.0 || e[14] != 0.0 || e[15] != 0.0)).then(|| Hht {
-        alpha: e[13],
-        beta: COULOMB.resolved(e, 15),
-        gamma: COULOMB.resolved(e, 16),
-    });
+    let hht = if !viscous && (e[13] != 0.0 || e[14] != 0.0 || e[15] != 0.0) {
+        Some(Hht {
+            alpha: e[13],
+            beta: COULOMB.resolved(e, 15),
+            gamma: COULOMB.resolved(e, 16),
+        })
+    } else {
+        None
+    };
     let damping = (e[16] != 0.0).then_some(Damping {
         c0: e[16],
         clearance: e[17],
