@@ -18,7 +18,7 @@ pub use adhesive::{
     LAW_ADHESIVE,
 };
 pub use coulomb::{
-    COULOMB, CoulombBuilder, DECAY_LEAN, EXTENDED_CONSTANT, EXTENDED_DECAY, PLAIN,
+    COULOMB, CoulombBuilder, DECAY_LEAN, EXTENDED_CONSTANT, EXTENDED_DECAY, PLAIN, QUASI_STATIC,
     STEADY_TRANSPORT, TRANSPORT,
 };
 use schema::admits_fixed;
@@ -228,13 +228,18 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
 }
 
 /// Whether the 20 law-1 entries `e` (absent ones 0) pass an extended fast plan: the plan of
-/// their stick mode and μ law (a value no plan takes fails the last one).
+/// their stick mode, μ law and dynamics (a value no plan takes fails the last one).
 #[inline(always)]
 fn admits_extended(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> bool {
-    match (e[6] == 3.0, e[7]) {
-        (true, _) => admits_fixed::<coulomb::Transport, COULOMB_EXTENDED_NPROPS>(e),
-        (false, 0.0) => admits_fixed::<coulomb::ExtendedConstant, COULOMB_EXTENDED_NPROPS>(e),
-        (false, _) => admits_fixed::<coulomb::ExtendedDecay, COULOMB_EXTENDED_NPROPS>(e),
+    if e[6] == 3.0 {
+        admits_fixed::<coulomb::Transport, COULOMB_EXTENDED_NPROPS>(e)
+    } else if e[7] != 0.0 {
+        admits_fixed::<coulomb::ExtendedDecay, COULOMB_EXTENDED_NPROPS>(e)
+    } else if e[13..19].iter().fold(0, |bits, v| bits | v.to_bits()) << 1 == 0 {
+        // HHT and damping off: PROPS(14..19) all ±0, one test of their bits.
+        admits_fixed::<coulomb::QuasiStatic, COULOMB_EXTENDED_NPROPS>(e)
+    } else {
+        admits_fixed::<coulomb::ExtendedConstant, COULOMB_EXTENDED_NPROPS>(e)
     }
 }
 
@@ -536,9 +541,10 @@ mod tests {
         decay
     }
 
-    /// The edges of the extended fast path's one-test ranges (PROPS(2, 4, 5, 6, 11): 0 ≤ v < ∞;
-    /// PROPS(12, 13): finite) and of its "PROPS(14..19) all ±0" test, value by value in every
-    /// position, on a decay-law layout and on a damping layout, against the checked path.
+    /// The edges of the extended fast path's tests (its plans' ranges, intervals and pins),
+    /// value by value in every position, on a layout of each plan: decay law (with and without
+    /// damping), steady transport, constant μ anisotropic (no HHT or damping) and constant μ
+    /// with HHT and damping, against the checked path.
     #[test]
     fn extended_fast_path_range_edges_agree_with_checked_path() {
         let decay = decay_layout();
@@ -547,7 +553,25 @@ mod tests {
         let mut spinning = [0.0; COULOMB_EXTENDED_NPROPS];
         spinning[..7].copy_from_slice(&[1.0, 0.6, 0.0, 0.0, 0.0, 0.0, 3.0]);
         spinning[13] = 10.0;
-        for layout in [decay, damped, spinning] {
+        let anisotropic = CoulombBuilder::new()
+            .mu(0.6)
+            .mu2(0.3)
+            .gamma_crit(1e-3)
+            .build();
+        let dynamic = CoulombBuilder::new()
+            .mu(0.6)
+            .hht_alpha(-0.1)
+            .damping(2.0)
+            .damping_clearance(0.1)
+            .damping_fraction(0.5)
+            .build();
+        let [anisotropic, dynamic] = [anisotropic, dynamic].map(|v| {
+            let mut a = [0.0; COULOMB_EXTENDED_NPROPS];
+            a.copy_from_slice(&v);
+            a
+        });
+        for layout in [decay, damped, spinning, anisotropic, dynamic] {
+            assert!(coulomb_extended_fast(&layout).is_some(), "{layout:?}");
             for position in 1..COULOMB_EXTENDED_NPROPS {
                 for v in range_edges() {
                     let mut props = layout;

@@ -214,11 +214,35 @@ impl FastLayout for DecayLean {
 /// The extended fast reader's layout for the frictional stick modes with constant μ: any
 /// valid law-1 layout with `PROPS(7)` 0, 1 or 2 (mapped by [`law_from_entries`]'s match) and
 /// `PROPS(8) = 0`, so that the rules of the μ law turn into tests of single entries (μ_k, d_c
-/// and frozen μ 0).
+/// and frozen μ 0). [`QUASI_STATIC`] when `PROPS(14..19)` are all 0.
 pub const EXTENDED_CONSTANT: Fixed = Fixed {
     name: "extended, frictional stick, constant μ (NPROPS ≤ 20)",
     fixed: &[(7, Fix::MappedBy(&[0, 1, 2])), (8, Fix::Is(0))],
 };
+
+/// [`EXTENDED_CONSTANT`] without HHT and damping (`PROPS(14..19)` ±0: anisotropy, τ_max, the
+/// pressure and temperature factors as they come), so that their entries are one test of their
+/// bits and their rules drop out.
+pub const QUASI_STATIC: Fixed = Fixed {
+    name: "extended, frictional stick, constant μ, no HHT or damping (NPROPS ≤ 20)",
+    fixed: &[
+        (7, Fix::MappedBy(&[0, 1, 2])),
+        (8, Fix::Is(0)),
+        (14, Fix::Zero),
+        (15, Fix::Zero),
+        (16, Fix::Zero),
+        (17, Fix::Zero),
+        (18, Fix::Zero),
+        (19, Fix::Zero),
+    ],
+};
+
+/// The validator of [`QUASI_STATIC`], worked out when the crate compiles.
+pub(crate) struct QuasiStatic;
+
+impl FastLayout for QuasiStatic {
+    const PLAN: Plan = Plan::of(&COULOMB, &QUASI_STATIC, COULOMB_EXTENDED_NPROPS);
+}
 
 /// The validator of [`EXTENDED_CONSTANT`], worked out when the crate compiles.
 pub(crate) struct ExtendedConstant;
@@ -316,7 +340,9 @@ fn build(
     let mu = e[1];
     let base = Coulomb::from_validated(mu, e[3], e[4], e[5], stick);
     let mu2 = COULOMB.resolved(e, 3);
-    if !viscous && mu2 == mu && e[7..].iter().all(|v| *v == 0.0) {
+    // PROPS(8..20) all ±0 in one test of their bits.
+    let rest_off = e[7..].iter().fold(0, |bits, v| bits | v.to_bits()) << 1 == 0;
+    if !viscous && mu2 == mu && rest_off {
         return Ok(FrictionLaw::Coulomb(base));
     }
     let coefficient = match e[7] {
@@ -695,33 +721,57 @@ pub(super) mod tests {
     /// The fast validators' plans drop at compile time every rule their fixed layout
     /// satisfies: none is left for the plain layout (anisotropy's "μ₂ = 0 when μ = 0" holds for
     /// μ₂ = 0 or μ), only "θ_ref needs b_θ" (the one rule between two free entries) for the
-    /// decay law's lean layout; the extended readers' plans keep the rules of the modes they
-    /// leave open (anisotropy, μ law 0 or 1, the temperature law, damping) and drop those of the
-    /// modes their pins rule out (the μ table; γ_crit under steady transport, whose plan tests
-    /// it as 0 instead).
+    /// decay law's lean layout; the extended reader's plans keep the rules of the modes they
+    /// leave open (anisotropy, the temperature law, damping; the μ law under steady transport)
+    /// and drop those their pins rule out or turn into single-entry tests (the μ table; μ_k, d_c
+    /// and frozen μ 0 with constant μ; μ_s, d_c > 0 with the decay law; γ_crit 0 under steady
+    /// transport; damping's with PROPS(17..19) pinned to 0).
     #[test]
     fn the_plans_keep_only_the_rules_that_can_fail() {
-        let open_modes = [
-            (3, 2),
-            (2, 8),
-            (9, 8),
-            (10, 8),
-            (10, 8),
-            (13, 12),
-            (18, 17),
-            (19, 17),
-            (20, 8),
-        ];
-        for plan in [Frictional::PLAN, Transport::PLAN] {
-            let live: Vec<(usize, usize)> = plan
-                .live_rules()
+        let live = |plan: Plan| -> Vec<(usize, usize)> {
+            plan.live_rules()
                 .iter()
                 .map(|r| (r.entry(), r.other()))
-                .collect();
-            assert_eq!(live, open_modes);
+                .collect()
+        };
+        // Anisotropy, θ_ref needs b_θ, damping's g₀ and f need c₀.
+        let free = [(3, 2), (13, 12), (18, 17), (19, 17)];
+        assert_eq!(live(ExtendedConstant::PLAN), free);
+        assert_eq!(live(ExtendedDecay::PLAN), free);
+        assert_eq!(live(QuasiStatic::PLAN), free[..2]);
+        // Steady transport leaves the μ law open (0 or 1): its five rules stay.
+        assert_eq!(
+            live(Transport::PLAN),
+            [
+                (3, 2),
+                (2, 8),
+                (9, 8),
+                (10, 8),
+                (10, 8),
+                (13, 12),
+                (18, 17),
+                (19, 17),
+                (20, 8)
+            ]
+        );
+        // No plan tests a rule of the μ table.
+        for plan in [
+            ExtendedConstant::PLAN,
+            ExtendedDecay::PLAN,
+            QuasiStatic::PLAN,
+            Transport::PLAN,
+        ] {
             assert!(plan.live_rules().iter().all(|r| !matches!(
                 r,
-                Rule::ZeroWhen { value: 2, .. } | Rule::PositiveWhen { value: 2, .. }
+                Rule::ZeroWhen {
+                    on: 8,
+                    value: 2,
+                    ..
+                } | Rule::PositiveWhen {
+                    on: 8,
+                    value: 2,
+                    ..
+                }
             )));
         }
         assert!(Plain::PLAN.live_rules().is_empty());
@@ -747,7 +797,7 @@ pub(super) mod tests {
 
     /// A plan whose pin selects a variant tests the variant's entries: [`TRANSPORT`] reads
     /// `PROPS(14..16)` as ω (> 0), the axis (0 to 3) and the γ̇_crit variant (0 or 1), not HHT;
-    /// [`FRICTIONAL`] as HHT's α, β and γ. The same arrays through the fast reader and the
+    /// [`EXTENDED_CONSTANT`] as HHT's α, β and γ. The same arrays through the fast reader and the
     /// checked parser.
     #[test]
     fn the_transport_plan_takes_the_variants_entries() {
@@ -761,7 +811,10 @@ pub(super) mod tests {
             STEADY_TRANSPORT.entries[2].class
         );
         for index in 14..=16 {
-            assert_eq!(Frictional::PLAN.class_of(index), COULOMB.entry(index).class);
+            assert_eq!(
+                ExtendedConstant::PLAN.class_of(index),
+                COULOMB.entry(index).class
+            );
         }
         let spinning = |omega: f64, axis: f64, reference: f64| {
             CoulombBuilder::new()

@@ -66,7 +66,10 @@ pub enum Class {
 }
 
 impl Class {
-    /// True when `v` is a valid value of this class (plain comparisons; the checked path).
+    /// True when `v` is a valid value of this class (plain comparisons; the checked path, and
+    /// the fast plans for the classes they have no bit test for, where the class is a constant
+    /// and only its own comparisons are left once inlined).
+    #[inline(always)]
     #[must_use]
     pub fn admits(self, v: f64) -> bool {
         match self {

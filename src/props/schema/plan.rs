@@ -50,6 +50,13 @@ pub(crate) struct Plan {
     zero_or_equal: [usize; MAX],
     /// "None" (≤ 0) or `PROPS(none_or_equal[i])`; 0 for none.
     none_or_equal: [usize; MAX],
+    /// In [lo, hi] (or [lo, hi) when `open_hi`) with |lo|, |hi| ≤ 1, tested as
+    /// 0 ≤ v − lo < ∞ and 0 ≤ hi − v < ∞ (0 < hi − v < ∞): [`interval_flags`].
+    interval: u32,
+    /// The bounds of `interval`'s entries.
+    lo: [f64; MAX],
+    hi: [f64; MAX],
+    open_hi: u32,
     /// The class's own test ([`Class::admits`]).
     other: u32,
     /// Each entry's class in this fixed layout (a variant's where it is pinned on).
@@ -83,6 +90,10 @@ impl Plan {
             value: [0; MAX],
             zero_or_equal: [0; MAX],
             none_or_equal: [0; MAX],
+            interval: 0,
+            lo: [0.0; MAX],
+            hi: [0.0; MAX],
+            open_hi: 0,
             other: 0,
             class: [Class::Finite; MAX],
             rules: 0,
@@ -121,6 +132,14 @@ impl Plan {
                     Class::Code(c) => {
                         p.exact |= bit;
                         p.value[i] = c;
+                    }
+                    Class::Interval { lo, hi, open_hi } if lo <= hi && -1.0 <= lo && hi <= 1.0 => {
+                        p.interval |= bit;
+                        p.lo[i] = lo;
+                        p.hi[i] = hi;
+                        if open_hi {
+                            p.open_hi |= bit;
+                        }
                     }
                     _ => p.other |= bit,
                 },
@@ -194,6 +213,7 @@ impl Plan {
                 self.finite &= !bit;
                 self.positive &= !bit;
                 self.other &= !bit;
+                self.interval &= !bit;
                 self.zero |= bit;
             }
             // 0 < v < ∞ is within 0 ≤ v < ∞; any other class keeps its own test as well.
@@ -317,6 +337,20 @@ const fn possible(layout: &Layout, fixed: &Fixed, nprops: usize, index: usize, x
     }
 }
 
+/// Top bit clear exactly when `v` is in [lo, hi] ([lo, hi) when `open_hi`), for bounds of
+/// magnitude ≤ 1: the difference of two finite doubles is 0 only when they are equal and keeps
+/// the sign of the exact difference, and with bounds this small it overflows only for an
+/// infinite `v`, which both tests refuse; NaN sets the flag.
+#[inline(always)]
+pub(crate) fn interval_flags(v: f64, lo: f64, hi: f64, open_hi: bool) -> u64 {
+    range_flag(v - lo)
+        | if open_hi {
+            positive_flag(hi - v)
+        } else {
+            range_flag(hi - v)
+        }
+}
+
 /// Whether the first `N` entries `e` (`e[i - 1] = PROPS(i)`, `N` the plan's `NPROPS`) pass the
 /// fixed layout `P`'s tests: each entry's class (a stick mode pinned `MappedBy` is left to the
 /// caller's match), its pin, and the rules that can still fail. Straight-line: every mask is
@@ -352,6 +386,10 @@ pub(crate) fn admits_fixed<P: FastLayout, const N: usize>(e: &[f64; N]) -> bool 
                 // "None" is −∞ < v ≤ 0, i.e. 0 ≤ −v < ∞: the same top-bit test.
                 flags |= if v == e[none_or_equal - 1] { 0 } else { range_flag(-v) };
             }
+            if const { P::PLAN.interval >> I & 1 == 1 } {
+                let (lo, hi) = const { (P::PLAN.lo[I], P::PLAN.hi[I]) };
+                flags |= interval_flags(v, lo, hi, const { P::PLAN.open_hi >> I & 1 == 1 });
+            }
             if const { P::PLAN.other >> I & 1 == 1 } {
                 ok &= const { P::PLAN.class[I] }.admits(v);
             }
@@ -365,8 +403,13 @@ pub(crate) fn admits_fixed<P: FastLayout, const N: usize>(e: &[f64; N]) -> bool 
                 None
             }
         };
-        if let Some(rule) = live {
-            ok &= rule.holds(e[rule.entry() - 1], e[rule.other() - 1]);
+        match live {
+            // v = 0 when w = the value: v's bits among those that must be ±0 (a select).
+            Some(Rule::ZeroWhen { entry, on, value, .. }) => {
+                zeros |= if e[on - 1] == f64::from(value) { e[entry - 1].to_bits() } else { 0 };
+            }
+            Some(rule) => ok &= rule.holds(e[rule.entry() - 1], e[rule.other() - 1]),
+            None => {}
         }
     });
     if !(ok && flags >> 63 == 0 && zeros << 1 == 0) {
@@ -389,6 +432,34 @@ pub(crate) fn admits_fixed<P: FastLayout, const N: usize>(e: &[f64; N]) -> bool 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// [`interval_flags`] against [`Class::admits`] for the intervals of the layouts and a few
+    /// more, at the f64 edges and next to each bound.
+    #[test]
+    fn interval_flags_are_the_class_test() {
+        let bounds = [
+            (-0.5, 0.0),
+            (0.0, 1.0),
+            (-1.0, 1.0),
+            (0.25, 0.75),
+            (-1.0, -0.5),
+        ];
+        for (lo, hi) in bounds {
+            for open_hi in [false, true] {
+                let class = Class::Interval { lo, hi, open_hi };
+                let near = [lo, hi]
+                    .into_iter()
+                    .flat_map(|b: f64| [b, b.next_down(), b.next_up(), -b, b * 0.5, b * 2.0]);
+                for v in crate::testing::EDGE_VALUES.into_iter().chain(near) {
+                    assert_eq!(
+                        interval_flags(v, lo, hi, open_hi) >> 63 == 0,
+                        class.admits(v),
+                        "{v:e} in {class:?}"
+                    );
+                }
+            }
+        }
+    }
 
     /// [`positive_flag`] against the plain comparisons, at the edges of 0 < v < ∞.
     #[test]
