@@ -108,22 +108,7 @@ pub fn fast_extended_coulomb(props: &[f64]) -> Option<ExtendedCoulomb> {
     if careful_path_only() {
         return None;
     }
-    // As `coulomb_extended_fast`, to the extended law.
-    if props.first() != Some(&f64::from(LAW_COULOMB)) {
-        return None;
-    }
-    let storage;
-    let e = match <&[f64; COULOMB_EXTENDED_NPROPS]>::try_from(props) {
-        Ok(all) => all,
-        Err(_) => {
-            storage = padded(props)?;
-            &storage
-        }
-    };
-    if !admits_extended(e) {
-        return None;
-    }
-    coulomb::extended_from_entries(e)
+    with_admitted_extended(props, coulomb::extended_from_entries)
 }
 
 /// The common case of [`friction_law`]: a valid Coulomb `PROPS`, or `None`.
@@ -208,11 +193,20 @@ fn padded<const N: usize>(props: &[f64]) -> Option<[f64; N]> {
 /// (`PROPS(8) = 2`), which needs the interaction's table.
 #[inline(always)]
 fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
-    // Law 1 only: the adhesive layout leaves here with one test.
+    with_admitted_extended(props, coulomb::fast_law_from_entries)
+}
+
+/// `build` of the 20 law-1 entries of `props` (absent ones 0) when an extended fast plan
+/// admits them ([`admits_extended`]), else `None`. The full layout (`NPROPS = 20`) is read in
+/// place, a shorter one padded out of line; the adhesive layout leaves with one test.
+#[inline(always)]
+fn with_admitted_extended<T>(
+    props: &[f64],
+    build: impl FnOnce(&[f64; COULOMB_EXTENDED_NPROPS]) -> Option<T>,
+) -> Option<T> {
     if props.first() != Some(&f64::from(LAW_COULOMB)) {
         return None;
     }
-    // The full layout (NPROPS = 20) is read in place; a shorter one is padded out of line.
     let storage;
     let e = match <&[f64; COULOMB_EXTENDED_NPROPS]>::try_from(props) {
         Ok(all) => all,
@@ -224,7 +218,7 @@ fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
     if !admits_extended(e) {
         return None;
     }
-    coulomb::fast_law_from_entries(e)
+    build(e)
 }
 
 /// Whether the 20 law-1 entries `e` (absent ones 0) pass an extended fast plan: the plan of

@@ -19,7 +19,7 @@ use crate::laws::friction_table::FrictionTable;
 
 use super::schema::Default::{Derived, Described, Entry as SameAs, Required, Value};
 use super::schema::{
-    Class, Entry, FastLayout, Fix, Fixed, LawFn, Layout, Plan, PropsError, Refusal, Rule, Variant,
+    Class, Entry, Fix, Fixed, LawFn, Layout, PropsError, Refusal, Rule, Variant, fast_layout,
     props_builder,
 };
 use super::{COULOMB_EXTENDED_NPROPS, COULOMB_NPROPS, FrictionLaw, LAW_COULOMB};
@@ -179,36 +179,35 @@ pub const PLAIN: Fixed = Fixed {
     fixed: &[(3, Fix::ZeroOrEqual(2)), (7, Fix::MappedBy(&[0, 1, 2]))],
 };
 
-/// The validator of [`PLAIN`], worked out when the crate compiles.
-pub(crate) struct Plain;
-
-impl FastLayout for Plain {
-    const PLAN: Plan = Plan::of(&COULOMB, &PLAIN, COULOMB_NPROPS);
+fast_layout! {
+    /// The validator of [`PLAIN`], worked out when the crate compiles.
+    pub(crate) Plain = COULOMB, PLAIN, COULOMB_NPROPS
 }
+
+/// `PROPS(14..19)` pinned to ±0: no HHT (nor steady transport's ω) and no damping.
+const NO_HHT_OR_DAMPING: [(usize, Fix); 6] = [
+    (14, Fix::Zero),
+    (15, Fix::Zero),
+    (16, Fix::Zero),
+    (17, Fix::Zero),
+    (18, Fix::Zero),
+    (19, Fix::Zero),
+];
 
 /// The decay law's lean layout, the rate law's fast path in `fric_`: `NPROPS = 20`,
 /// isotropic, elastic stick, exponential decay, `PROPS(14..19)` all ±0 (no HHT, damping or
 /// steady transport); τ_max, p_ref, b_θ, θ_ref and frozen μ as they come.
 pub const DECAY_LEAN: Fixed = Fixed {
     name: "decay law, lean (NPROPS = 20)",
-    fixed: &[
-        (3, Fix::ZeroOrEqual(2)),
-        (7, Fix::Is(0)),
-        (8, Fix::Is(1)),
-        (14, Fix::Zero),
-        (15, Fix::Zero),
-        (16, Fix::Zero),
-        (17, Fix::Zero),
-        (18, Fix::Zero),
-        (19, Fix::Zero),
-    ],
+    fixed: &Fixed::joined::<9>(
+        &[(3, Fix::ZeroOrEqual(2)), (7, Fix::Is(0)), (8, Fix::Is(1))],
+        &NO_HHT_OR_DAMPING,
+    ),
 };
 
-/// The validator of [`DECAY_LEAN`], worked out when the crate compiles.
-pub(crate) struct DecayLean;
-
-impl FastLayout for DecayLean {
-    const PLAN: Plan = Plan::of(&COULOMB, &DECAY_LEAN, COULOMB.entries.len());
+fast_layout! {
+    /// The validator of [`DECAY_LEAN`], worked out when the crate compiles.
+    pub(crate) DecayLean = COULOMB, DECAY_LEAN, COULOMB_EXTENDED_NPROPS
 }
 
 /// The extended fast reader's layout for the frictional stick modes with constant μ: any
@@ -225,30 +224,17 @@ pub const EXTENDED_CONSTANT: Fixed = Fixed {
 /// bits and their rules drop out.
 pub const QUASI_STATIC: Fixed = Fixed {
     name: "extended, frictional stick, constant μ, no HHT or damping (NPROPS ≤ 20)",
-    fixed: &[
-        (7, Fix::MappedBy(&[0, 1, 2])),
-        (8, Fix::Is(0)),
-        (14, Fix::Zero),
-        (15, Fix::Zero),
-        (16, Fix::Zero),
-        (17, Fix::Zero),
-        (18, Fix::Zero),
-        (19, Fix::Zero),
-    ],
+    fixed: &Fixed::joined::<8>(EXTENDED_CONSTANT.fixed, &NO_HHT_OR_DAMPING),
 };
 
-/// The validator of [`QUASI_STATIC`], worked out when the crate compiles.
-pub(crate) struct QuasiStatic;
-
-impl FastLayout for QuasiStatic {
-    const PLAN: Plan = Plan::of(&COULOMB, &QUASI_STATIC, COULOMB_EXTENDED_NPROPS);
+fast_layout! {
+    /// The validator of [`QUASI_STATIC`], worked out when the crate compiles.
+    pub(crate) QuasiStatic = COULOMB, QUASI_STATIC, COULOMB_EXTENDED_NPROPS
 }
 
-/// The validator of [`EXTENDED_CONSTANT`], worked out when the crate compiles.
-pub(crate) struct ExtendedConstant;
-
-impl FastLayout for ExtendedConstant {
-    const PLAN: Plan = Plan::of(&COULOMB, &EXTENDED_CONSTANT, COULOMB_EXTENDED_NPROPS);
+fast_layout! {
+    /// The validator of [`EXTENDED_CONSTANT`], worked out when the crate compiles.
+    pub(crate) ExtendedConstant = COULOMB, EXTENDED_CONSTANT, COULOMB_EXTENDED_NPROPS
 }
 
 /// [`EXTENDED_CONSTANT`] with the exponential decay law, `PROPS(8) = 1` (μ_s and d_c > 0).
@@ -259,11 +245,9 @@ pub const EXTENDED_DECAY: Fixed = Fixed {
     fixed: &[(7, Fix::MappedBy(&[0, 1, 2])), (8, Fix::Is(1))],
 };
 
-/// The validator of [`EXTENDED_DECAY`], worked out when the crate compiles.
-pub(crate) struct ExtendedDecay;
-
-impl FastLayout for ExtendedDecay {
-    const PLAN: Plan = Plan::of(&COULOMB, &EXTENDED_DECAY, COULOMB_EXTENDED_NPROPS);
+fast_layout! {
+    /// The validator of [`EXTENDED_DECAY`], worked out when the crate compiles.
+    pub(crate) ExtendedDecay = COULOMB, EXTENDED_DECAY, COULOMB_EXTENDED_NPROPS
 }
 
 /// The extended fast reader's layout for steady-state transport: `PROPS(7) = 3`, which
@@ -274,11 +258,9 @@ pub const TRANSPORT: Fixed = Fixed {
     fixed: &[(7, Fix::Is(VISCOUS)), (8, Fix::MappedBy(&[0, 1]))],
 };
 
-/// The validator of [`TRANSPORT`], worked out when the crate compiles.
-pub(crate) struct Transport;
-
-impl FastLayout for Transport {
-    const PLAN: Plan = Plan::of(&COULOMB, &TRANSPORT, COULOMB_EXTENDED_NPROPS);
+fast_layout! {
+    /// The validator of [`TRANSPORT`], worked out when the crate compiles.
+    pub(crate) Transport = COULOMB, TRANSPORT, COULOMB_EXTENDED_NPROPS
 }
 
 /// The law of valid law-1 entries (`e[i - 1] = PROPS(i)`, absent ones 0): those
@@ -434,7 +416,7 @@ props_builder! {
 pub(super) mod tests {
     use super::*;
     use crate::props::coulomb_extended;
-    use crate::props::schema::Cause;
+    use crate::props::schema::{Cause, FastLayout, Plan};
     use proptest::prelude::*;
     use proptest::test_runner::TestCaseError;
 

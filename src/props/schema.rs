@@ -690,7 +690,7 @@ fn range_flag(v: f64) -> u64 {
 }
 
 mod plan;
-pub(crate) use plan::{FastLayout, Plan, admits_fixed};
+pub(crate) use plan::{FastLayout, Plan, admits_fixed, fast_layout};
 
 impl Layout {
     /// `PROPS(index)`'s description. Panics on an index outside the layout (a programming
@@ -991,6 +991,23 @@ impl Fixed {
         name: "as given",
         fixed: &[],
     };
+
+    /// The pins `a` then `b`, `N` of them: a fixed layout's list from shared parts (a `const`
+    /// can then hold it).
+    #[must_use]
+    pub const fn joined<const N: usize>(
+        a: &[(usize, Fix)],
+        b: &[(usize, Fix)],
+    ) -> [(usize, Fix); N] {
+        assert!(a.len() + b.len() == N);
+        let mut out = [(0, Fix::Zero); N];
+        let mut k = 0;
+        while k < N {
+            out[k] = if k < a.len() { a[k] } else { b[k - a.len()] };
+            k += 1;
+        }
+        out
+    }
 
     /// What this fixed layout pins `PROPS(index)` to, if anything.
     #[inline(always)]
