@@ -42,50 +42,55 @@ pub const FALLBACK: &str = "*";
 /// Default c of the Cooper–Mikic–Yovanovich correlation.
 pub const CMY_DEFAULT_C: f64 = 1.25;
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct FileSpec {
-    #[serde(default)]
-    interactions: BTreeMap<String, Spanned<InteractionSpec>>,
+/// The file's tables as serde reads them, each refusing a key it does not know: a misspelt
+/// key is an error that names it, never a setting silently left at its default.
+macro_rules! tables {
+    ($($(#[$attr:meta])* struct $name:ident { $($body:tt)* })*) => {
+        $(
+            #[derive(Deserialize)]
+            #[serde(deny_unknown_fields)]
+            $(#[$attr])*
+            struct $name { $($body)* }
+        )*
+    };
 }
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct InteractionSpec {
-    conductance: Option<Spanned<ConductanceSpec>>,
-    radiation: Option<Spanned<RadiationSpec>>,
-    friction: Option<Spanned<FrictionSpec>>,
-}
+tables! {
+    struct FileSpec {
+        #[serde(default)]
+        interactions: BTreeMap<String, Spanned<InteractionSpec>>,
+    }
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct FrictionSpec {
-    table: Spanned<Vec<Spanned<Vec<f64>>>>,
-}
+    struct InteractionSpec {
+        conductance: Option<Spanned<ConductanceSpec>>,
+        radiation: Option<Spanned<RadiationSpec>>,
+        friction: Option<Spanned<FrictionSpec>>,
+    }
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ConductanceSpec {
-    law: Spanned<String>,
-    k: Option<Spanned<f64>>,
-    table: Option<Spanned<Vec<Vec<f64>>>>,
-    k_gas: Option<Spanned<f64>>,
-    g0: Option<Spanned<f64>>,
-    min_gap: Option<Spanned<f64>>,
-    c: Option<Spanned<f64>>,
-    k_s: Option<Spanned<f64>>,
-    m: Option<Spanned<f64>>,
-    sigma: Option<Spanned<f64>>,
-    #[serde(rename = "H_c")]
-    h_c: Option<Spanned<f64>>,
-}
+    struct FrictionSpec {
+        table: Spanned<Vec<Spanned<Vec<f64>>>>,
+    }
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RadiationSpec {
-    view_factor: Option<Spanned<f64>>,
-    stefan_boltzmann: Option<Spanned<f64>>,
-    absolute_zero: Option<Spanned<f64>>,
+    struct ConductanceSpec {
+        law: Spanned<String>,
+        k: Option<Spanned<f64>>,
+        table: Option<Spanned<Vec<Vec<f64>>>>,
+        k_gas: Option<Spanned<f64>>,
+        g0: Option<Spanned<f64>>,
+        min_gap: Option<Spanned<f64>>,
+        c: Option<Spanned<f64>>,
+        k_s: Option<Spanned<f64>>,
+        m: Option<Spanned<f64>>,
+        sigma: Option<Spanned<f64>>,
+        #[serde(rename = "H_c")]
+        h_c: Option<Spanned<f64>>,
+    }
+
+    struct RadiationSpec {
+        view_factor: Option<Spanned<f64>>,
+        stefan_boltzmann: Option<Spanned<f64>>,
+        absolute_zero: Option<Spanned<f64>>,
+    }
 }
 
 /// A validated configuration file.
@@ -622,6 +627,37 @@ table = [[0.0, 1.0], [100.0, 3.0]]
         }
         assert_eq!(k(b""), 0.0);
         assert_eq!(k(&[b' '; 80]), 0.0);
+    }
+
+    /// Every table refuses a key it does not know (`tables!`): a misspelt key in each, named
+    /// with its line.
+    #[test]
+    fn every_table_refuses_an_unknown_key() {
+        for (text, line, key) in [
+            ("interaction = 1\n", 1, "interaction"),
+            ("[interactions.A]\nconductivity = 1\n", 2, "conductivity"),
+            (
+                "[interactions.A.conductance]\nlaw = \"constant\"\nkk = 2.0\n",
+                3,
+                "kk",
+            ),
+            (
+                "[interactions.A.radiation]\nview_factor = 0.5\nstefan = 1.0\n",
+                3,
+                "stefan",
+            ),
+            (
+                "[interactions.A.friction]\ntable = [[0.3]]\ntabel = 1\n",
+                3,
+                "tabel",
+            ),
+        ] {
+            let e = parse(text).unwrap_err();
+            assert!(
+                e.contains("unknown field") && e.contains(key) && e.contains(&format!(":{line}")),
+                "{text}: {e}"
+            );
+        }
     }
 
     #[test]
