@@ -263,14 +263,12 @@ impl Config {
     /// ignoring ASCII case (never by prefix), else the `"*"` entry.
     #[must_use]
     pub fn gap_law(&self, name: &[u8]) -> Option<&GapLaw> {
-        let name = trim_fortran_name(name);
-        let key = name_key(name);
-        self.gap_keys
-            .iter()
-            .zip(&self.gap_laws)
-            .find(|(k, (n, _))| **k == key && n.as_bytes().eq_ignore_ascii_case(name))
-            .map(|(_, (_, law))| law)
-            .or(self.fallback.as_ref())
+        let entries = self.gap_keys.iter().zip(&self.gap_laws);
+        lookup(
+            entries.map(|(k, (n, law))| (n.as_str(), *k, law)),
+            name,
+            self.fallback.as_ref(),
+        )
     }
 }
 
@@ -279,14 +277,31 @@ impl Config {
     /// [`Config::gap_law`] does, else the `"*"` entry's.
     #[must_use]
     pub fn friction_table(&self, name: &[u8]) -> Option<&FrictionTable> {
-        let name = trim_fortran_name(name);
-        let key = name_key(name);
-        self.friction_tables
-            .iter()
-            .find(|(n, k, _)| *k == key && n.as_bytes().eq_ignore_ascii_case(name))
-            .map(|(_, _, t)| t)
-            .or(self.friction_fallback.as_ref())
+        lookup(
+            self.friction_tables
+                .iter()
+                .map(|(n, k, t)| (n.as_str(), *k, t)),
+            name,
+            self.friction_fallback.as_ref(),
+        )
     }
+}
+
+/// The value of `name` among `entries` (name as written, its [`name_key`], value): exact name
+/// match after trimming trailing blanks, ignoring ASCII case (never by prefix; names are
+/// compared only where the keys match), else `fallback`. The one lookup rule of every table.
+#[inline]
+fn lookup<'a, T: 'a>(
+    mut entries: impl Iterator<Item = (&'a str, u64, &'a T)>,
+    name: &[u8],
+    fallback: Option<&'a T>,
+) -> Option<&'a T> {
+    let name = trim_fortran_name(name);
+    let key = name_key(name);
+    entries
+        .find(|(n, k, _)| *k == key && n.as_bytes().eq_ignore_ascii_case(name))
+        .map(|(_, _, value)| value)
+        .or(fallback)
 }
 
 /// The μ table of `name` (a Fortran name) from the process-wide configuration, or why there is
