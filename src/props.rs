@@ -240,7 +240,7 @@ fn admits_extended(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> bool {
 /// The decay law's lean layout (`NPROPS = 20`: isotropic, elastic stick, exponential decay,
 /// `PROPS(14..19)` all ±0, so no HHT, damping or steady transport; p_ref, b_θ, θ_ref and
 /// frozen μ as they come) when valid, else `None`, whatever the reason (another layout, or a
-/// bad one: the checked path sorts that out). The law is the one [`coulomb_extended_fast`]
+/// bad one: the checked path sorts that out). The law is the one [`coulomb::law_from_entries`]
 /// builds from the same entries (a test checks it), with fewer tests: the entries this layout
 /// fixes are compared with their one accepted value. For the rate law's fast path in `fric_`.
 #[inline(always)]
@@ -324,7 +324,7 @@ pub fn coulomb_extended(props: &[f64]) -> Result<FrictionLaw, LawError> {
 /// `[interactions.NAME.friction]` of the configuration file, looked up by the caller); without
 /// one, `PROPS(8) = 2` is refused. The schema's checked parser ([`COULOMB`]`.check`: classes,
 /// rules, steady transport's variant, messages naming the entry) and the one builder
-/// [`coulomb::law_from_entries`].
+/// `law_from_entries` (src/props/coulomb.rs).
 pub fn coulomb_extended_with_table(
     props: &[f64],
     table: Option<&'static FrictionTable>,

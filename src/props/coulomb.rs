@@ -3,12 +3,14 @@
 //! [`CoulombBuilder`], the checked parser ([`COULOMB`]`.check`, whose messages name the entry),
 //! the defaults (μ₂ = μ, HHT β(α) and γ(α) as the law's own functions, the slip tolerance) and
 //! the validators of `fric_`'s fixed layouts, worked out at compile time: [`PLAIN`] and
-//! [`DECAY_LEAN`], and [`FRICTIONAL`] and [`TRANSPORT`] behind the extended fast reader.
+//! [`DECAY_LEAN`], and [`EXTENDED_CONSTANT`], [`QUASI_STATIC`], [`EXTENDED_DECAY`] and
+//! [`TRANSPORT`] behind the extended fast reader.
 //!
-//! Every reader ends in [`law_from_entries`], the one builder of the law from validated
-//! entries; it holds only the refusals the layout cannot say ([`Refusal`]: the decay law's
-//! μ_k/μ_s overflowing, the μ table where none is at hand) and maps the stick mode and the μ
-//! law, which the fast plans leave to it (`Fix::MappedBy`).
+//! The checked parser and the extended fast reader end in [`law_from_entries`], the one builder
+//! of the law from validated entries; it holds only the refusals the layout cannot say
+//! ([`Refusal`]: the decay law's μ_k/μ_s overflowing, the μ table where none is at hand) and
+//! maps the stick mode and the μ law, which some fast plans leave to it (`Fix::MappedBy`). The
+//! plain and decay-lean readers (src/props.rs) build their fixed layout's law directly.
 
 use crate::laws::coulomb::{Coulomb, DEFAULT_SLIP_TOLERANCE, StickMode};
 use crate::laws::coulomb_extended::{
@@ -211,7 +213,7 @@ fast_layout! {
 }
 
 /// The extended fast reader's layout for the frictional stick modes with constant μ: any
-/// valid law-1 layout with `PROPS(7)` 0, 1 or 2 (mapped by [`law_from_entries`]'s match) and
+/// valid law-1 layout with `PROPS(7)` 0, 1 or 2 (mapped by `law_from_entries`'s match) and
 /// `PROPS(8) = 0`, so that the rules of the μ law turn into tests of single entries (μ_k, d_c
 /// and frozen μ 0). [`QUASI_STATIC`] when `PROPS(14..19)` are all 0.
 pub const EXTENDED_CONSTANT: Fixed = Fixed {
@@ -252,7 +254,7 @@ fast_layout! {
 
 /// The extended fast reader's layout for steady-state transport: `PROPS(7) = 3`, which
 /// selects [`STEADY_TRANSPORT`]'s meaning of `PROPS(14..16)`, `PROPS(8)` 0 or 1 (mapped by
-/// [`law_from_entries`]'s match; one plan for both, steady transport being rarer).
+/// `law_from_entries`'s match; one plan for both, steady transport being rarer).
 pub const TRANSPORT: Fixed = Fixed {
     name: "steady-state transport (NPROPS ≤ 20)",
     fixed: &[(7, Fix::Is(VISCOUS)), (8, Fix::MappedBy(&[0, 1]))],

@@ -808,28 +808,6 @@ impl Layout {
         Ok(e)
     }
 
-    /// The rules about `PROPS(index)` alone, for entries `e` (`e[i - 1] = PROPS(i)`, all
-    /// the layout's): the first one broken, as [`Layout::check`] reports it. For a checked
-    /// parser that keeps its own order of checks (law 1's) but takes the rules from here.
-    pub fn rules_of(&'static self, e: &[f64], index: usize) -> Result<(), PropsError> {
-        for &rule in self.rules.iter().filter(|r| r.entry() == index) {
-            let (v, w) = (e[rule.entry() - 1], e[rule.other() - 1]);
-            if !rule.holds(v, w) {
-                return Err(PropsError {
-                    layout: self,
-                    cause: Cause::Broken {
-                        index,
-                        rule,
-                        value: v,
-                        other: w,
-                    },
-                    entry: Some(self.entry_in(e, index)),
-                });
-            }
-        }
-        Ok(())
-    }
-
     /// `PROPS(index)` of valid entries `e` with its default applied: the value the law is
     /// built with.
     #[inline(always)]
