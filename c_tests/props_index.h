@@ -28,7 +28,7 @@
 #define IFLP_COULOMB_DAMPING 16 /* PROPS(17): tangential damping coefficient at zero overclosure */
 #define IFLP_COULOMB_DAMPING_CLEARANCE 17 /* PROPS(18): clearance at which the damping coefficient vanishes */
 #define IFLP_COULOMB_DAMPING_FRACTION 18 /* PROPS(19): fraction of [0, g₀] over which c = c₀ */
-#define IFLP_COULOMB_FROZEN 19 /* PROPS(20): μ's slip rate */
+#define IFLP_COULOMB_FROZEN 19 /* PROPS(20): slip rate of μ */
 #define IFLP_COULOMB_OMEGA 13 /* PROPS(14): angular spinning velocity of steady-state transport */
 #define IFLP_COULOMB_AXIS 14 /* PROPS(15): spinning axis through the origin */
 #define IFLP_COULOMB_VISCOUS_REFERENCE 15 /* PROPS(16): allowable viscous slip rate */

@@ -42,50 +42,55 @@ pub const FALLBACK: &str = "*";
 /// Default c of the Cooper–Mikic–Yovanovich correlation.
 pub const CMY_DEFAULT_C: f64 = 1.25;
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct FileSpec {
-    #[serde(default)]
-    interactions: BTreeMap<String, Spanned<InteractionSpec>>,
+/// The file's tables as serde reads them, each refusing a key it does not know: a misspelt
+/// key is an error that names it, never a setting silently left at its default.
+macro_rules! tables {
+    ($($(#[$attr:meta])* struct $name:ident { $($body:tt)* })*) => {
+        $(
+            #[derive(Deserialize)]
+            #[serde(deny_unknown_fields)]
+            $(#[$attr])*
+            struct $name { $($body)* }
+        )*
+    };
 }
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct InteractionSpec {
-    conductance: Option<Spanned<ConductanceSpec>>,
-    radiation: Option<Spanned<RadiationSpec>>,
-    friction: Option<Spanned<FrictionSpec>>,
-}
+tables! {
+    struct FileSpec {
+        #[serde(default)]
+        interactions: BTreeMap<String, Spanned<InteractionSpec>>,
+    }
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct FrictionSpec {
-    table: Spanned<Vec<Spanned<Vec<f64>>>>,
-}
+    struct InteractionSpec {
+        conductance: Option<Spanned<ConductanceSpec>>,
+        radiation: Option<Spanned<RadiationSpec>>,
+        friction: Option<Spanned<FrictionSpec>>,
+    }
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ConductanceSpec {
-    law: Spanned<String>,
-    k: Option<Spanned<f64>>,
-    table: Option<Spanned<Vec<Vec<f64>>>>,
-    k_gas: Option<Spanned<f64>>,
-    g0: Option<Spanned<f64>>,
-    min_gap: Option<Spanned<f64>>,
-    c: Option<Spanned<f64>>,
-    k_s: Option<Spanned<f64>>,
-    m: Option<Spanned<f64>>,
-    sigma: Option<Spanned<f64>>,
-    #[serde(rename = "H_c")]
-    h_c: Option<Spanned<f64>>,
-}
+    struct FrictionSpec {
+        table: Spanned<Vec<Spanned<Vec<f64>>>>,
+    }
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RadiationSpec {
-    view_factor: Option<Spanned<f64>>,
-    stefan_boltzmann: Option<Spanned<f64>>,
-    absolute_zero: Option<Spanned<f64>>,
+    struct ConductanceSpec {
+        law: Spanned<String>,
+        k: Option<Spanned<f64>>,
+        table: Option<Spanned<Vec<Vec<f64>>>>,
+        k_gas: Option<Spanned<f64>>,
+        g0: Option<Spanned<f64>>,
+        min_gap: Option<Spanned<f64>>,
+        c: Option<Spanned<f64>>,
+        k_s: Option<Spanned<f64>>,
+        m: Option<Spanned<f64>>,
+        sigma: Option<Spanned<f64>>,
+        #[serde(rename = "H_c")]
+        h_c: Option<Spanned<f64>>,
+    }
+
+    struct RadiationSpec {
+        view_factor: Option<Spanned<f64>>,
+        stefan_boltzmann: Option<Spanned<f64>>,
+        absolute_zero: Option<Spanned<f64>>,
+    }
 }
 
 /// A validated configuration file.
@@ -258,14 +263,12 @@ impl Config {
     /// ignoring ASCII case (never by prefix), else the `"*"` entry.
     #[must_use]
     pub fn gap_law(&self, name: &[u8]) -> Option<&GapLaw> {
-        let name = trim_fortran_name(name);
-        let key = name_key(name);
-        self.gap_keys
-            .iter()
-            .zip(&self.gap_laws)
-            .find(|(k, (n, _))| **k == key && n.as_bytes().eq_ignore_ascii_case(name))
-            .map(|(_, (_, law))| law)
-            .or(self.fallback.as_ref())
+        let entries = self.gap_keys.iter().zip(&self.gap_laws);
+        lookup(
+            entries.map(|(k, (n, law))| (n.as_str(), *k, law)),
+            name,
+            self.fallback.as_ref(),
+        )
     }
 }
 
@@ -274,14 +277,31 @@ impl Config {
     /// [`Config::gap_law`] does, else the `"*"` entry's.
     #[must_use]
     pub fn friction_table(&self, name: &[u8]) -> Option<&FrictionTable> {
-        let name = trim_fortran_name(name);
-        let key = name_key(name);
-        self.friction_tables
-            .iter()
-            .find(|(n, k, _)| *k == key && n.as_bytes().eq_ignore_ascii_case(name))
-            .map(|(_, _, t)| t)
-            .or(self.friction_fallback.as_ref())
+        lookup(
+            self.friction_tables
+                .iter()
+                .map(|(n, k, t)| (n.as_str(), *k, t)),
+            name,
+            self.friction_fallback.as_ref(),
+        )
     }
+}
+
+/// The value of `name` among `entries` (name as written, its [`name_key`], value): exact name
+/// match after trimming trailing blanks, ignoring ASCII case (never by prefix; names are
+/// compared only where the keys match), else `fallback`. The one lookup rule of every table.
+#[inline]
+fn lookup<'a, T: 'a>(
+    mut entries: impl Iterator<Item = (&'a str, u64, &'a T)>,
+    name: &[u8],
+    fallback: Option<&'a T>,
+) -> Option<&'a T> {
+    let name = trim_fortran_name(name);
+    let key = name_key(name);
+    entries
+        .find(|(n, k, _)| *k == key && n.as_bytes().eq_ignore_ascii_case(name))
+        .map(|(_, _, value)| value)
+        .or(fallback)
 }
 
 /// The μ table of `name` (a Fortran name) from the process-wide configuration, or why there is
@@ -622,6 +642,37 @@ table = [[0.0, 1.0], [100.0, 3.0]]
         }
         assert_eq!(k(b""), 0.0);
         assert_eq!(k(&[b' '; 80]), 0.0);
+    }
+
+    /// Every table refuses a key it does not know (`tables!`): a misspelt key in each, named
+    /// with its line.
+    #[test]
+    fn every_table_refuses_an_unknown_key() {
+        for (text, line, key) in [
+            ("interaction = 1\n", 1, "interaction"),
+            ("[interactions.A]\nconductivity = 1\n", 2, "conductivity"),
+            (
+                "[interactions.A.conductance]\nlaw = \"constant\"\nkk = 2.0\n",
+                3,
+                "kk",
+            ),
+            (
+                "[interactions.A.radiation]\nview_factor = 0.5\nstefan = 1.0\n",
+                3,
+                "stefan",
+            ),
+            (
+                "[interactions.A.friction]\ntable = [[0.3]]\ntabel = 1\n",
+                3,
+                "tabel",
+            ),
+        ] {
+            let e = parse(text).unwrap_err();
+            assert!(
+                e.contains("unknown field") && e.contains(key) && e.contains(&format!(":{line}")),
+                "{text}: {e}"
+            );
+        }
     }
 
     #[test]

@@ -4,9 +4,7 @@
 
 use crate::LawError;
 use crate::laws::coulomb::{Coulomb, StickMode};
-use crate::laws::coulomb_extended::{
-    Damping, ExtendedCoulomb, Hht, SteadyTransport, ViscousSlipReference,
-};
+use crate::laws::coulomb_extended::ExtendedCoulomb;
 use crate::laws::friction_coefficient::CoefficientLaw;
 use crate::laws::friction_table::FrictionTable;
 use crate::switch::Path;
@@ -19,7 +17,10 @@ pub use adhesive::{
     ADHESIVE, ADHESIVE_NPROPS, AdhesiveBuilder, AdhesiveProps, COULOMB_SPECIAL_CASE, HeatExchange,
     LAW_ADHESIVE,
 };
-pub use coulomb::{COULOMB, CoulombBuilder, DECAY_LEAN, PLAIN, STEADY_TRANSPORT};
+pub use coulomb::{
+    COULOMB, CoulombBuilder, DECAY_LEAN, EXTENDED_CONSTANT, EXTENDED_DECAY, PLAIN, QUASI_STATIC,
+    STEADY_TRANSPORT, TRANSPORT,
+};
 use schema::admits_fixed;
 
 /// `PROPS(1)` code of the Coulomb family.
@@ -91,9 +92,7 @@ pub fn fast_plain_coulomb(props: &[f64]) -> Option<Coulomb> {
 #[inline(never)]
 fn plain_coulomb_other_lengths(props: &[f64]) -> Option<Coulomb> {
     match props.first() {
-        Some(&code) if code == f64::from(LAW_COULOMB) => {
-            coulomb_from_entries(coulomb_props_padded(props)?)
-        }
+        Some(&code) if code == f64::from(LAW_COULOMB) => coulomb_from_entries(padded(props)?),
         Some(&code) if code == f64::from(LAW_ADHESIVE) => {
             adhesive::adhesive_coulomb_special_case(props)
         }
@@ -109,10 +108,7 @@ pub fn fast_extended_coulomb(props: &[f64]) -> Option<ExtendedCoulomb> {
     if careful_path_only() {
         return None;
     }
-    match coulomb_extended_fast(props) {
-        Some(FrictionLaw::CoulombExtended(law)) => Some(law),
-        _ => None,
-    }
+    with_admitted_extended(props, coulomb::extended_from_entries)
 }
 
 /// The common case of [`friction_law`]: a valid Coulomb `PROPS`, or `None`.
@@ -123,7 +119,7 @@ pub fn fast_extended_coulomb(props: &[f64]) -> Option<ExtendedCoulomb> {
 fn coulomb_fast(props: &[f64]) -> Option<Coulomb> {
     let e = match <&[f64; COULOMB_NPROPS]>::try_from(props) {
         Ok(all) => *all,
-        Err(_) => coulomb_props_padded(props)?,
+        Err(_) => padded(props)?,
     };
     coulomb_from_entries(e)
 }
@@ -175,176 +171,76 @@ fn coulomb_from_entries(e: [f64; COULOMB_NPROPS]) -> Option<Coulomb> {
     ))
 }
 
-/// `PROPS(1..NPROPS)` with 2 ≤ NPROPS < 7, padded with zeros to the Coulomb layout; `None`
-/// for other lengths (the checked path then names the problem).
+/// `PROPS(1..NPROPS)` with 2 ≤ NPROPS ≤ N padded with zeros (the absent entries' value) to
+/// the `N` entries a fast reader reads (the plain layout's 7, the extended one's 20); `None`
+/// for other lengths (the checked path then names the problem). Out of line: hosts pass the
+/// whole layout, which the readers take as it is.
 #[inline(never)]
-fn coulomb_props_padded(props: &[f64]) -> Option<[f64; COULOMB_NPROPS]> {
-    if props.len() < 2 || props.len() > COULOMB_NPROPS {
+fn padded<const N: usize>(props: &[f64]) -> Option<[f64; N]> {
+    if props.len() < 2 || props.len() > N {
         return None;
     }
-    let mut e = [0.0; COULOMB_NPROPS];
+    let mut e = [0.0; N];
     e[..props.len()].copy_from_slice(props);
     Some(e)
 }
 
 /// The extended law-1 layout (`PROPS(3)`, `PROPS(8..20)`) when valid, else `None` (the
-/// checked path then says what is wrong). Decides validity with plain comparisons and builds
-/// the law from already-validated parts; a property test checks it agrees with
-/// [`coulomb_extended`].
+/// checked path then says what is wrong). Validity is the schema's, worked out at compile time:
+/// [`EXTENDED_CONSTANT`] and [`EXTENDED_DECAY`] (stick modes 0, 1, 2 with constant μ or the
+/// decay law) or [`TRANSPORT`] (`PROPS(7) = 3`) over [`COULOMB`]; the law is
+/// [`coulomb::law_from_entries`]'s, as on the checked path. Declines the μ table
+/// (`PROPS(8) = 2`), which needs the interaction's table.
 #[inline(always)]
 fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
-    // e[i] = PROPS(i), missing trailing entries 0. The full layout (NPROPS = 20) is copied as a
-    // fixed-size array; a shorter one is padded out of line.
-    let e = match <&[f64; COULOMB_EXTENDED_NPROPS]>::try_from(props) {
-        Ok(all) => {
-            let mut e = [0.0; COULOMB_EXTENDED_NPROPS + 1];
-            e[1..].copy_from_slice(all);
-            e
-        }
-        Err(_) => extended_props_padded(props)?,
-    };
-    if e[1] != f64::from(LAW_COULOMB) {
-        return None;
-    }
-    // 0 < v < ∞ in one unsigned comparison of the bits: +0 wraps to the top, negative values,
-    // ∞ and NaN are at or above the bits of ∞.
-    let positive = |v: f64| v.to_bits().wrapping_sub(1) < f64::INFINITY.to_bits().wrapping_sub(1);
-    // The ranges every layout checks, in one test of the top bit as in `coulomb_fast`:
-    // 0 ≤ v < ∞ for μ, τ_max, γ_crit, the slip tolerance and p_ref ("0 or > 0"), |v| < ∞ for
-    // b_θ and θ_ref (finite).
-    let flags = range_flag(e[2])
-        | range_flag(e[4])
-        | range_flag(e[5])
-        | range_flag(e[6])
-        | range_flag(e[11])
-        | range_flag(e[12].abs())
-        | range_flag(e[13].abs());
-    if flags >> 63 != 0 {
-        return None;
-    }
-    let off_or_positive = |v: f64| v == 0.0 || positive(v);
-    let (mu, mu2) = (e[2], e[3]);
-    let viscous = e[7] == 3.0;
-    let stick = match e[7] {
-        0.0 | 3.0 => StickMode::Elastic,
-        1.0 => StickMode::Exact,
-        2.0 => StickMode::Rough,
-        _ => return None,
-    };
-    let decay = match e[8] {
-        0.0 if e[9] == 0.0 && e[10] == 0.0 => None,
-        1.0 if positive(mu) && (0.0..f64::INFINITY).contains(&e[9]) && positive(e[10]) => {
-            // μ_k/μ_s must stay finite (a subnormal μ_s overflows it; the checked path refuses).
-            let ratio = e[9] / mu;
-            if ratio == f64::INFINITY {
-                return None;
-            }
-            Some((ratio, e[10]))
-        }
-        _ => return None,
-    };
-    // PROPS(14..19) (HHT or steady transport, damping) all ±0, the common case, in one
-    // integer test: then HHT and damping are off and, unless PROPS(7) = 3 (which needs ω in
-    // PROPS(14)), there is nothing more to check.
-    let tail_off = ((e[14].to_bits()
-        | e[15].to_bits()
-        | e[16].to_bits()
-        | e[17].to_bits()
-        | e[18].to_bits()
-        | e[19].to_bits())
-        << 1)
-        == 0;
-    let hht_on = !tail_off && !viscous && (e[14] != 0.0 || e[15] != 0.0 || e[16] != 0.0);
-    let transport_ok = !viscous
-        || (e[5] == 0.0
-            && positive(e[14])
-            && [0.0, 1.0, 2.0, 3.0].contains(&e[15])
-            && (e[16] == 0.0 || e[16] == 1.0));
-    // (μ, τ_max, γ_crit, tolerance, p_ref, b_θ, θ_ref: the `flags` above.)
-    let valid = (mu2 == 0.0 || mu2 == mu || (positive(mu2) && mu > 0.0))
-        && (e[12] != 0.0 || e[13] == 0.0)
-        && (e[20] == 0.0 || (e[20] == 1.0 && decay.is_some()))
-        && ((tail_off && !viscous)
-            || ((!hht_on
-                || ((-0.5..=0.0).contains(&e[14])
-                    && off_or_positive(e[15])
-                    && off_or_positive(e[16])))
-                && (if e[17] == 0.0 {
-                    e[18] == 0.0 && e[19] == 0.0
-                } else {
-                    positive(e[17])
-                        && (0.0..f64::INFINITY).contains(&e[18])
-                        && (0.0..1.0).contains(&e[19])
-                })
-                && transport_ok));
-    if !valid {
-        return None;
-    }
-    let base = Coulomb::from_validated(mu, e[4], e[5], e[6], stick);
-    // The defaults from the schema (μ₂ = μ, β(α), γ(α), the slip tolerance), as the checked
-    // path and the law constructors take them.
-    let given = &e[1..];
-    let mu2 = COULOMB.resolved_in(given, 3);
-    if !viscous && mu2 == mu && e[8..].iter().all(|v| *v == 0.0) {
-        return Some(FrictionLaw::Coulomb(base));
-    }
-    let hht = hht_on.then(|| {
-        let alpha = e[14];
-        Hht {
-            alpha,
-            beta: COULOMB.resolved_in(given, 15),
-            gamma: COULOMB.resolved_in(given, 16),
-        }
-    });
-    let damping = (e[17] != 0.0).then_some(Damping {
-        c0: e[17],
-        clearance: e[18],
-        fraction: e[19],
-    });
-    let transport = viscous.then(|| SteadyTransport {
-        tolerance: COULOMB.resolved_in(given, 6),
-        omega: e[14],
-        axis: match e[15] {
-            1.0 => 0,
-            2.0 => 1,
-            _ => 2,
-        },
-        // PROPS(16): 0 seed 000's γ̇_crit, 1 seed 003's.
-        reference: if e[16] == 1.0 {
-            ViscousSlipReference::RelativeVelocity
-        } else {
-            ViscousSlipReference::Circumferential
-        },
-    });
-    Some(FrictionLaw::CoulombExtended(
-        ExtendedCoulomb::from_validated(
-            base,
-            mu2,
-            CoefficientLaw::from_validated(decay, e[11], e[12], e[13]),
-            e[20] == 1.0,
-            hht,
-            damping,
-        )
-        .with_steady_transport(transport),
-    ))
+    with_admitted_extended(props, coulomb::fast_law_from_entries)
 }
 
-/// `PROPS(1..NPROPS)` with 2 ≤ NPROPS < 20 as `e[i] = PROPS(i)`, padded with zeros; `None`
-/// for other lengths.
-#[inline(never)]
-fn extended_props_padded(props: &[f64]) -> Option<[f64; COULOMB_EXTENDED_NPROPS + 1]> {
-    if props.len() < 2 || props.len() > COULOMB_EXTENDED_NPROPS {
+/// `build` of the 20 law-1 entries of `props` (absent ones 0) when an extended fast plan
+/// admits them ([`admits_extended`]), else `None`. The full layout (`NPROPS = 20`) is read in
+/// place, a shorter one padded out of line; the adhesive layout leaves with one test.
+#[inline(always)]
+fn with_admitted_extended<T>(
+    props: &[f64],
+    build: impl FnOnce(&[f64; COULOMB_EXTENDED_NPROPS]) -> Option<T>,
+) -> Option<T> {
+    if props.first() != Some(&f64::from(LAW_COULOMB)) {
         return None;
     }
-    let mut e = [0.0; COULOMB_EXTENDED_NPROPS + 1];
-    e[1..=props.len()].copy_from_slice(props);
-    Some(e)
+    let storage;
+    let e = match <&[f64; COULOMB_EXTENDED_NPROPS]>::try_from(props) {
+        Ok(all) => all,
+        Err(_) => {
+            storage = padded(props)?;
+            &storage
+        }
+    };
+    if !admits_extended(e) {
+        return None;
+    }
+    build(e)
+}
+
+/// Whether the 20 law-1 entries `e` (absent ones 0) pass an extended fast plan: the plan of
+/// their stick mode, μ law and dynamics (a value no plan takes fails the last one).
+#[inline(always)]
+fn admits_extended(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> bool {
+    if e[6] == 3.0 {
+        admits_fixed::<coulomb::Transport, COULOMB_EXTENDED_NPROPS>(e)
+    } else if e[7] != 0.0 {
+        admits_fixed::<coulomb::ExtendedDecay, COULOMB_EXTENDED_NPROPS>(e)
+    } else if e[13..19].iter().fold(0, |bits, v| bits | v.to_bits()) << 1 == 0 {
+        // HHT and damping off: PROPS(14..19) all ±0, one test of their bits.
+        admits_fixed::<coulomb::QuasiStatic, COULOMB_EXTENDED_NPROPS>(e)
+    } else {
+        admits_fixed::<coulomb::ExtendedConstant, COULOMB_EXTENDED_NPROPS>(e)
+    }
 }
 
 /// The decay law's lean layout (`NPROPS = 20`: isotropic, elastic stick, exponential decay,
 /// `PROPS(14..19)` all ±0, so no HHT, damping or steady transport; p_ref, b_θ, θ_ref and
 /// frozen μ as they come) when valid, else `None`, whatever the reason (another layout, or a
-/// bad one: the checked path sorts that out). The law is the one [`coulomb_extended_fast`]
+/// bad one: the checked path sorts that out). The law is the one [`coulomb::law_from_entries`]
 /// builds from the same entries (a test checks it), with fewer tests: the entries this layout
 /// fixes are compared with their one accepted value. For the rate law's fast path in `fric_`.
 #[inline(always)]
@@ -416,48 +312,6 @@ pub fn friction_law_checked(props: &[f64]) -> Result<FrictionLaw, LawError> {
     }
 }
 
-/// Coulomb layout: `PROPS(2)` μ, `PROPS(3)` μ₂ (0 → isotropic), `PROPS(4)` τ_max (0 → no limit),
-/// `PROPS(5)` γ_crit (0 → tolerance × CHRLNGTH), `PROPS(6)` slip tolerance (0 → 0.005),
-/// `PROPS(7)` stick mode (0 elastic, 1 exact, 2 rough).
-fn coulomb(props: &[f64]) -> Result<Coulomb, LawError> {
-    if props.len() < 2 {
-        return Err(LawError::Parameter(format!(
-            "NPROPS = {} but the Coulomb law needs at least 2 (PROPS(1) = 1, PROPS(2) = μ)",
-            props.len()
-        )));
-    }
-    let get = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
-    let mu = get(2);
-    let mut law = Coulomb::new(mu).map_err(|e| in_props(2, e))?;
-    let tau_max = get(4);
-    if tau_max != 0.0 {
-        law = law.with_shear_limit(tau_max).map_err(|e| in_props(4, e))?;
-    }
-    let gamma_crit = get(5);
-    let tolerance = get(6);
-    if tolerance != 0.0 {
-        law = law
-            .with_slip_tolerance(tolerance)
-            .map_err(|e| in_props(6, e))?;
-    }
-    if gamma_crit != 0.0 {
-        law = law
-            .with_critical_slip_absolute(gamma_crit)
-            .map_err(|e| in_props(5, e))?;
-    }
-    let stick = match get(7) {
-        0.0 => StickMode::Elastic,
-        1.0 => StickMode::Exact,
-        2.0 => StickMode::Rough,
-        other => {
-            return Err(LawError::Parameter(format!(
-                "PROPS(7) = {other} must be the stick mode 0 (elastic), 1 (exact), 2 (rough) or 3 (viscous, steady-state transport)"
-            )));
-        }
-    };
-    Ok(law.with_stick(stick))
-}
-
 /// The whole law-1 layout (`PROPS(1..20)`, docs/props.md): the base entries, then anisotropy
 /// (`PROPS(3)`), the μ law (`PROPS(8..13)`), HHT (`PROPS(14..16)`), damping (`PROPS(17..19)`)
 /// and the frozen-μ switch (`PROPS(20)`). Returns the plain [`Coulomb`] when nothing beyond it
@@ -468,190 +322,15 @@ pub fn coulomb_extended(props: &[f64]) -> Result<FrictionLaw, LawError> {
 
 /// [`coulomb_extended`] with the μ table `PROPS(8) = 2` selects (the interaction's
 /// `[interactions.NAME.friction]` of the configuration file, looked up by the caller); without
-/// one, `PROPS(8) = 2` is refused.
+/// one, `PROPS(8) = 2` is refused. The schema's checked parser ([`COULOMB`]`.check`: classes,
+/// rules, steady transport's variant, messages naming the entry) and the one builder
+/// `law_from_entries` (src/props/coulomb.rs).
 pub fn coulomb_extended_with_table(
     props: &[f64],
     table: Option<&'static FrictionTable>,
 ) -> Result<FrictionLaw, LawError> {
-    let get = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
-    if let Some((i, v)) = props
-        .iter()
-        .enumerate()
-        .skip(COULOMB_EXTENDED_NPROPS)
-        .find(|(_, v)| **v != 0.0)
-    {
-        return Err(unused_entry(
-            i + 1,
-            *v,
-            "the Coulomb law reads PROPS(1..20)",
-        ));
-    }
-    // The entries padded with zeros (absent = 0), for the rules of the schema (COULOMB), which
-    // say which entry is read when; this parser keeps its own order of checks.
-    let e: [f64; COULOMB_EXTENDED_NPROPS] = std::array::from_fn(|i| get(i + 1));
-    let rules_of = |index| COULOMB.rules_of(&e, index).map_err(LawError::from);
-    // PROPS(7) = 3: viscous stick for steady-state transport; the base law is read with an
-    // elastic-stick placeholder, and PROPS(14..16) are ω, the axis and the γ̇_crit variant
-    // instead of HHT. γ_crit (PROPS(5)) is not read then.
-    rules_of(5)?;
-    let viscous = get(7) == 3.0;
-    let base = if viscous {
-        let mut elastic = props.to_vec();
-        elastic[6] = 0.0;
-        coulomb(&elastic)?
-    } else {
-        coulomb(props)?
-    };
-    let mu = get(2);
-    let mu2 = get(3);
-    let extras = viscous
-        || (mu2 != 0.0 && mu2 != mu)
-        || (8..=COULOMB_EXTENDED_NPROPS).any(|i| get(i) != 0.0);
-    if !extras {
-        return Ok(FrictionLaw::Coulomb(base));
-    }
-    let mut law = ExtendedCoulomb::new(base);
-    if mu2 != 0.0 && mu2 != mu {
-        law = law
-            .with_second_coefficient(mu2)
-            .map_err(|e| in_props(3, e))?;
-    }
-    // μ law: PROPS(8) selector, PROPS(9) μ_k, PROPS(10) d_c.
-    let mut coefficient = CoefficientLaw::default();
-    match get(8) {
-        0.0 => {
-            rules_of(9)?;
-            rules_of(10)?;
-        }
-        1.0 => {
-            let (mu_k, decay) = (get(9), get(10));
-            // μ_s = PROPS(2) > 0 (and μ_s is finite, by the base law).
-            rules_of(2)?;
-            if !(mu_k.is_finite() && mu_k >= 0.0) {
-                return Err(LawError::Parameter(format!(
-                    "PROPS(9) = μ_k = {mu_k} must be finite and ≥ 0"
-                )));
-            }
-            // μ_k/μ_s overflows when μ_s is tiny (subnormal): the cause is the pair, not d_c.
-            let ratio = mu_k / mu;
-            if !ratio.is_finite() {
-                return Err(LawError::Parameter(format!(
-                    "PROPS(9) = μ_k = {mu_k} over PROPS(2) = μ_s = {mu:e}: μ_k/μ_s = {ratio} \
-                     overflows; μ_s is too small for the decay law"
-                )));
-            }
-            coefficient = coefficient
-                .with_exponential_decay(ratio, decay)
-                .map_err(|e| in_props(10, e))?;
-        }
-        2.0 => {
-            let Some(table) = table else {
-                return Err(LawError::Parameter(
-                    "PROPS(8) = 2 (μ table from INTERFACIAL_CONFIG) is read by fric_ and \
-                     fric_coef_ only, which look the table up by interaction name"
-                        .into(),
-                ));
-            };
-            for i in 9..=13 {
-                rules_of(i)?;
-            }
-            coefficient = coefficient
-                .with_table(table, mu)
-                .map_err(|e| in_props(2, e))?;
-        }
-        other => {
-            return Err(LawError::Parameter(format!(
-                "PROPS(8) = {other} must be the μ law 0 (constant), 1 (exponential decay) or 2 \
-                 (table)"
-            )));
-        }
-    }
-    if get(11) != 0.0 {
-        coefficient = coefficient
-            .with_pressure_reference(get(11))
-            .map_err(|e| in_props(11, e))?;
-    }
-    if get(12) != 0.0 {
-        coefficient = coefficient
-            .with_temperature(get(12), get(13))
-            .map_err(|e| in_props(12, e))?;
-    } else {
-        rules_of(13)?;
-    }
-    law = law.with_coefficient_law(coefficient);
-    if viscous {
-        // F_f = PROPS(6) or the schema's default (γ_crit is not read: the rule above).
-        let tolerance = COULOMB.resolved_in(&e, 6);
-        let axis = match get(15) {
-            0.0 | 3.0 => 2,
-            1.0 => 0,
-            2.0 => 1,
-            other => {
-                return Err(LawError::Parameter(format!(
-                    "PROPS(15) = {other} must be the spinning axis 1 (x), 2 (y) or 3 (z, default)"
-                )));
-            }
-        };
-        // PROPS(16): which seed's allowable viscous slip rate γ̇_crit (docs/props.md).
-        let reference = match get(16) {
-            0.0 => ViscousSlipReference::Circumferential,
-            1.0 => ViscousSlipReference::RelativeVelocity,
-            other => {
-                return Err(LawError::Parameter(format!(
-                    "PROPS(16) = {other} must select the allowable viscous slip rate of \
-                     steady-state transport: 0 (γ̇_crit = 2·F_f·ω·R, seed 000) or 1 \
-                     (γ̇_crit = F_f·ω·R, seed 003)"
-                )));
-            }
-        };
-        let transport = SteadyTransport::new(tolerance, get(14), axis)
-            .map_err(|e| in_props(14, e))?
-            .with_reference(reference);
-        law = law.with_steady_transport(Some(transport));
-    } else if (14..=16).any(|i| get(i) != 0.0) {
-        // HHT: on when any of PROPS(14..16) is non-zero.
-        let hht = Hht::new(get(14), get(15), get(16)).map_err(|e| in_props(14, e))?;
-        law = law.with_hht(Some(hht));
-    }
-    // Damping: PROPS(17) c₀, PROPS(18) g₀, PROPS(19) f.
-    if get(17) != 0.0 {
-        let d = Damping::new(get(17), get(18), get(19)).map_err(|e| in_props(17, e))?;
-        law = law.with_damping(Some(d));
-    } else {
-        rules_of(18)?;
-        rules_of(19)?;
-    }
-    match get(20) {
-        0.0 => {}
-        1.0 if coefficient.is_rate_dependent() => law = law.with_frozen_coefficient(true),
-        1.0 => {
-            // PROPS(8) = 0 (the schema's rule), or a μ table without a rate column.
-            rules_of(20)?;
-            return Err(unused_entry(20, 1.0, "μ does not depend on the slip rate"));
-        }
-        other => {
-            return Err(LawError::Parameter(format!(
-                "PROPS(20) = {other} must be 0 (μ at the end-of-increment rate) or 1 (μ frozen \
-                 at the start of the increment)"
-            )));
-        }
-    }
-    Ok(FrictionLaw::CoulombExtended(law))
-}
-
-#[cold]
-#[inline(never)]
-fn unused_entry(index: usize, v: f64, why: &str) -> LawError {
-    LawError::Parameter(format!(
-        "PROPS({index}) = {v} is not read ({why}); refusing to ignore it"
-    ))
-}
-
-fn in_props(index: usize, e: LawError) -> LawError {
-    match e {
-        LawError::Parameter(m) => LawError::Parameter(format!("PROPS({index}): {m}")),
-        other => other,
-    }
+    let e = COULOMB.check::<COULOMB_EXTENDED_NPROPS>(props)?;
+    Ok(coulomb::law_from_entries(&e, table)?)
 }
 
 #[cfg(test)]
@@ -856,9 +535,10 @@ mod tests {
         decay
     }
 
-    /// The edges of the extended fast path's one-test ranges (PROPS(2, 4, 5, 6, 11): 0 ≤ v < ∞;
-    /// PROPS(12, 13): finite) and of its "PROPS(14..19) all ±0" test, value by value in every
-    /// position, on a decay-law layout and on a damping layout, against the checked path.
+    /// The edges of the extended fast path's tests (its plans' ranges, intervals and pins),
+    /// value by value in every position, on a layout of each plan: decay law (with and without
+    /// damping), steady transport, constant μ anisotropic (no HHT or damping) and constant μ
+    /// with HHT and damping, against the checked path.
     #[test]
     fn extended_fast_path_range_edges_agree_with_checked_path() {
         let decay = decay_layout();
@@ -867,7 +547,25 @@ mod tests {
         let mut spinning = [0.0; COULOMB_EXTENDED_NPROPS];
         spinning[..7].copy_from_slice(&[1.0, 0.6, 0.0, 0.0, 0.0, 0.0, 3.0]);
         spinning[13] = 10.0;
-        for layout in [decay, damped, spinning] {
+        let anisotropic = CoulombBuilder::new()
+            .mu(0.6)
+            .mu2(0.3)
+            .gamma_crit(1e-3)
+            .build();
+        let dynamic = CoulombBuilder::new()
+            .mu(0.6)
+            .hht_alpha(-0.1)
+            .damping(2.0)
+            .damping_clearance(0.1)
+            .damping_fraction(0.5)
+            .build();
+        let [anisotropic, dynamic] = [anisotropic, dynamic].map(|v| {
+            let mut a = [0.0; COULOMB_EXTENDED_NPROPS];
+            a.copy_from_slice(&v);
+            a
+        });
+        for layout in [decay, damped, spinning, anisotropic, dynamic] {
+            assert!(coulomb_extended_fast(&layout).is_some(), "{layout:?}");
             for position in 1..COULOMB_EXTENDED_NPROPS {
                 for v in range_edges() {
                     let mut props = layout;
@@ -960,7 +658,7 @@ mod tests {
         fn lean_decay_parser_agrees_with_checked_path(
             // A vector, not `uniform20`: twenty copies of the entry strategy overflow the test
             // thread's stack in a debug build.
-            entries in prop::collection::vec(extended_entry(), COULOMB_EXTENDED_NPROPS),
+            entries in prop::collection::vec(coulomb::tests::entry(), COULOMB_EXTENDED_NPROPS),
             keep in prop::array::uniform3(prop::bool::weighted(0.8)),
         ) {
             let mut props = [0.0; COULOMB_EXTENDED_NPROPS];
@@ -979,21 +677,6 @@ mod tests {
         }
     }
 
-    fn extended_entry() -> impl Strategy<Value = f64> {
-        prop_oneof![
-            4 => Just(0.0),
-            1 => Just(1.0),
-            1 => Just(2.0),
-            1 => Just(3.0),
-            1 => Just(0.5),
-            1 => Just(-0.2),
-            1 => Just(-1.0),
-            1 => Just(f64::NAN),
-            1 => Just(f64::INFINITY),
-            1 => 0.0..3.0f64,
-        ]
-    }
-
     proptest! {
         #![proptest_config(ProptestConfig { cases: 5000, failure_persistence: None, ..ProptestConfig::default() })]
 
@@ -1001,7 +684,7 @@ mod tests {
         /// entries), with the same law.
         #[test]
         fn extended_fast_and_checked_paths_agree(
-            mut props in prop::collection::vec(extended_entry(), 2..23),
+            mut props in prop::collection::vec(coulomb::tests::entry(), 2..23),
             mu in prop_oneof![Just(0.0), Just(0.3), Just(-0.1), 0.0..1.0f64],
             // Steady-state transport often enough to reach its entries: PROPS(7) = 3 with
             // ω, the axis and the γ̇_crit variant (PROPS(14..16)), PROPS(5) cleared or not, the
@@ -1009,9 +692,9 @@ mod tests {
             transport in prop::option::weighted(
                 0.3,
                 (
-                    prop_oneof![2 => 0.01..10.0f64, 1 => extended_entry()],
-                    prop_oneof![2 => (0..4).prop_map(f64::from), 1 => extended_entry()],
-                    prop_oneof![Just(0.0), Just(1.0), extended_entry()],
+                    prop_oneof![2 => 0.01..10.0f64, 1 => coulomb::tests::entry()],
+                    prop_oneof![2 => (0..4).prop_map(f64::from), 1 => coulomb::tests::entry()],
+                    prop_oneof![Just(0.0), Just(1.0), coulomb::tests::entry()],
                     prop::bool::ANY,
                     prop::bool::ANY,
                 ),
@@ -1155,7 +838,7 @@ mod tests {
                 &[
                     1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0,
                 ][..],
-                "PROPS(14)",
+                "PROPS(15)",
             ),
             (
                 &[
@@ -1176,7 +859,7 @@ mod tests {
                     1.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
                     1.0, 1.0, 1.5,
                 ][..],
-                "PROPS(17)",
+                "PROPS(19)",
             ),
             (
                 &[

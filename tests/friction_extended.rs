@@ -748,9 +748,9 @@ fn bad_extended_input_is_refused_cleanly() {
             "PROPS(12)",
         ),
         ("HHT α > 0", |c| set_entry(c, 14, 0.2), "PROPS(14)"),
-        ("HHT β < 0", |c| set_entry(c, 15, -0.2), "PROPS(14)"),
+        ("HHT β < 0", |c| set_entry(c, 15, -0.2), "PROPS(15)"),
         ("c₀ < 0", |c| set_entry(c, 17, -1.0), "PROPS(17)"),
-        ("f ≥ 1", |c| set_entry(c, 19, 1.0), "PROPS(17)"),
+        ("f ≥ 1", |c| set_entry(c, 19, 1.0), "PROPS(19)"),
         ("freeze 2", |c| set_entry(c, 20, 2.0), "PROPS(20)"),
         (
             "PROPS(21)",

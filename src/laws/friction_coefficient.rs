@@ -147,6 +147,21 @@ impl CoefficientLaw {
         }
     }
 
+    /// The μ table of `PROPS(8) = 2`, from entries already checked by the caller (`props.rs`):
+    /// μ_ref = `PROPS(2)` > 0 and no pressure or temperature factor (the table carries them),
+    /// what [`CoefficientLaw::with_table`] checks.
+    #[inline]
+    #[must_use]
+    pub(crate) fn table_from_validated(table: &'static FrictionTable, mu_ref: f64) -> Self {
+        CoefficientLaw {
+            rate: RateLaw::Table {
+                table,
+                inv_mu_ref: 1.0 / mu_ref,
+            },
+            ..CoefficientLaw::default()
+        }
+    }
+
     /// Exponential decay with r = μ_k/μ_s ≥ 0 and d_c > 0.
     pub fn with_exponential_decay(
         mut self,

@@ -1,25 +1,30 @@
 //! `PROPS` layout of law 1, Coulomb friction, plain and extended (`PROPS(1) = 1`, seeds 000 and
 //! 003, section 5.2.3), described once in [`COULOMB`]: the docs/props.md table,
-//! [`CoulombBuilder`], the layout-level validity ([`COULOMB`]`.check`), the defaults (μ₂ = μ,
-//! HHT β(α) and γ(α) as the law's own functions, the slip tolerance) and the validators of
-//! `fric_`'s two fixed layouts ([`PLAIN`], [`DECAY_LEAN`], worked out at compile time) come
-//! from it.
+//! [`CoulombBuilder`], the checked parser ([`COULOMB`]`.check`, whose messages name the entry),
+//! the defaults (μ₂ = μ, HHT β(α) and γ(α) as the law's own functions, the slip tolerance) and
+//! the validators of `fric_`'s fixed layouts, worked out at compile time: [`PLAIN`] and
+//! [`DECAY_LEAN`], and [`EXTENDED_CONSTANT`], [`QUASI_STATIC`], [`EXTENDED_DECAY`] and
+//! [`TRANSPORT`] behind the extended fast reader.
 //!
-//! Not derived from it (docs/architecture.md says why): the extended fast reader
-//! `coulomb_extended_fast` (any valid extended layout, not a fixed one) and the checked
-//! parser's class tests in `coulomb_extended_with_table` (src/props.rs), which go through the
-//! law constructors and their messages, which tests pin. Property tests below check that the
-//! checked parser and the schema accept the same arrays, but for the refusals that need more
-//! than the layout (listed there).
+//! The checked parser and the extended fast reader end in [`law_from_entries`], the one builder
+//! of the law from validated entries; it holds only the refusals the layout cannot say
+//! ([`Refusal`]: the decay law's μ_k/μ_s overflowing, the μ table where none is at hand) and
+//! maps the stick mode and the μ law, which some fast plans leave to it (`Fix::MappedBy`). The
+//! plain and decay-lean readers (src/props.rs) build their fixed layout's law directly.
 
-use crate::laws::coulomb::DEFAULT_SLIP_TOLERANCE;
-use crate::laws::coulomb_extended::Hht;
+use crate::laws::coulomb::{Coulomb, DEFAULT_SLIP_TOLERANCE, StickMode};
+use crate::laws::coulomb_extended::{
+    Damping, ExtendedCoulomb, Hht, SteadyTransport, ViscousSlipReference,
+};
+use crate::laws::friction_coefficient::CoefficientLaw;
+use crate::laws::friction_table::FrictionTable;
 
 use super::schema::Default::{Derived, Described, Entry as SameAs, Required, Value};
 use super::schema::{
-    Class, Entry, FastLayout, Fix, Fixed, LawFn, Layout, Plan, Rule, Variant, props_builder,
+    Class, Entry, Fix, Fixed, LawFn, Layout, PropsError, Refusal, Rule, Variant, fast_layout,
+    props_builder,
 };
-use super::{COULOMB_NPROPS, LAW_COULOMB};
+use super::{COULOMB_EXTENDED_NPROPS, COULOMB_NPROPS, FrictionLaw, LAW_COULOMB};
 
 /// `PROPS(7)`: the stick modes.
 const STICK: Class = Class::Choice(&[
@@ -97,9 +102,11 @@ pub const COULOMB: Layout = Layout {
             .symbol("g₀").unit("length"),
         Entry::new(19, "damping_fraction", "fraction of [0, g₀] over which c = c₀", FRACTION_BELOW_ONE)
             .symbol("f"),
-        Entry::new(20, "frozen", "μ's slip rate", FROZEN),
+        Entry::new(20, "frozen", "slip rate of μ", FROZEN),
     ],
     rules: &[
+        Rule::ZeroWhen { entry: 3, on: 2, value: 0,
+            why: "no friction in direction 1: anisotropy needs μ₁ > 0" },
         Rule::ZeroWhen { entry: 5, on: 7, value: VISCOUS,
             why: "viscous stick uses the slip tolerance F_f = PROPS(6), not γ_crit" },
         Rule::PositiveWhen { entry: 2, on: 8, value: 1, why: "the exponential decay law" },
@@ -174,36 +181,207 @@ pub const PLAIN: Fixed = Fixed {
     fixed: &[(3, Fix::ZeroOrEqual(2)), (7, Fix::MappedBy(&[0, 1, 2]))],
 };
 
-/// The validator of [`PLAIN`], worked out when the crate compiles.
-pub(crate) struct Plain;
-
-impl FastLayout for Plain {
-    const PLAN: Plan = Plan::of(&COULOMB, &PLAIN, COULOMB_NPROPS);
+fast_layout! {
+    /// The validator of [`PLAIN`], worked out when the crate compiles.
+    pub(crate) Plain = COULOMB, PLAIN, COULOMB_NPROPS
 }
+
+/// `PROPS(14..19)` pinned to ±0: no HHT (nor steady transport's ω) and no damping.
+const NO_HHT_OR_DAMPING: [(usize, Fix); 6] = [
+    (14, Fix::Zero),
+    (15, Fix::Zero),
+    (16, Fix::Zero),
+    (17, Fix::Zero),
+    (18, Fix::Zero),
+    (19, Fix::Zero),
+];
 
 /// The decay law's lean layout, the rate law's fast path in `fric_`: `NPROPS = 20`,
 /// isotropic, elastic stick, exponential decay, `PROPS(14..19)` all ±0 (no HHT, damping or
 /// steady transport); τ_max, p_ref, b_θ, θ_ref and frozen μ as they come.
 pub const DECAY_LEAN: Fixed = Fixed {
     name: "decay law, lean (NPROPS = 20)",
-    fixed: &[
-        (3, Fix::ZeroOrEqual(2)),
-        (7, Fix::Is(0)),
-        (8, Fix::Is(1)),
-        (14, Fix::Zero),
-        (15, Fix::Zero),
-        (16, Fix::Zero),
-        (17, Fix::Zero),
-        (18, Fix::Zero),
-        (19, Fix::Zero),
-    ],
+    fixed: &Fixed::joined::<9>(
+        &[(3, Fix::ZeroOrEqual(2)), (7, Fix::Is(0)), (8, Fix::Is(1))],
+        &NO_HHT_OR_DAMPING,
+    ),
 };
 
-/// The validator of [`DECAY_LEAN`], worked out when the crate compiles.
-pub(crate) struct DecayLean;
+fast_layout! {
+    /// The validator of [`DECAY_LEAN`], worked out when the crate compiles.
+    pub(crate) DecayLean = COULOMB, DECAY_LEAN, COULOMB_EXTENDED_NPROPS
+}
 
-impl FastLayout for DecayLean {
-    const PLAN: Plan = Plan::of(&COULOMB, &DECAY_LEAN, COULOMB.entries.len());
+/// The extended fast reader's layout for the frictional stick modes with constant μ: any
+/// valid law-1 layout with `PROPS(7)` 0, 1 or 2 (mapped by `law_from_entries`'s match) and
+/// `PROPS(8) = 0`, so that the rules of the μ law turn into tests of single entries (μ_k, d_c
+/// and frozen μ 0). [`QUASI_STATIC`] when `PROPS(14..19)` are all 0.
+pub const EXTENDED_CONSTANT: Fixed = Fixed {
+    name: "extended, frictional stick, constant μ (NPROPS ≤ 20)",
+    fixed: &[(7, Fix::MappedBy(&[0, 1, 2])), (8, Fix::Is(0))],
+};
+
+/// [`EXTENDED_CONSTANT`] without HHT and damping (`PROPS(14..19)` ±0: anisotropy, τ_max, the
+/// pressure and temperature factors as they come), so that their entries are one test of their
+/// bits and their rules drop out.
+pub const QUASI_STATIC: Fixed = Fixed {
+    name: "extended, frictional stick, constant μ, no HHT or damping (NPROPS ≤ 20)",
+    fixed: &Fixed::joined::<8>(EXTENDED_CONSTANT.fixed, &NO_HHT_OR_DAMPING),
+};
+
+fast_layout! {
+    /// The validator of [`QUASI_STATIC`], worked out when the crate compiles.
+    pub(crate) QuasiStatic = COULOMB, QUASI_STATIC, COULOMB_EXTENDED_NPROPS
+}
+
+fast_layout! {
+    /// The validator of [`EXTENDED_CONSTANT`], worked out when the crate compiles.
+    pub(crate) ExtendedConstant = COULOMB, EXTENDED_CONSTANT, COULOMB_EXTENDED_NPROPS
+}
+
+/// [`EXTENDED_CONSTANT`] with the exponential decay law, `PROPS(8) = 1` (μ_s and d_c > 0).
+/// The μ table, `PROPS(8) = 2`, has no fast plan: it needs the interaction's table, which
+/// the fast path does not have (the checked path reads it).
+pub const EXTENDED_DECAY: Fixed = Fixed {
+    name: "extended, frictional stick, decay law (NPROPS ≤ 20)",
+    fixed: &[(7, Fix::MappedBy(&[0, 1, 2])), (8, Fix::Is(1))],
+};
+
+fast_layout! {
+    /// The validator of [`EXTENDED_DECAY`], worked out when the crate compiles.
+    pub(crate) ExtendedDecay = COULOMB, EXTENDED_DECAY, COULOMB_EXTENDED_NPROPS
+}
+
+/// The extended fast reader's layout for steady-state transport: `PROPS(7) = 3`, which
+/// selects [`STEADY_TRANSPORT`]'s meaning of `PROPS(14..16)`, `PROPS(8)` 0 or 1 (mapped by
+/// `law_from_entries`'s match; one plan for both, steady transport being rarer).
+pub const TRANSPORT: Fixed = Fixed {
+    name: "steady-state transport (NPROPS ≤ 20)",
+    fixed: &[(7, Fix::Is(VISCOUS)), (8, Fix::MappedBy(&[0, 1]))],
+};
+
+fast_layout! {
+    /// The validator of [`TRANSPORT`], worked out when the crate compiles.
+    pub(crate) Transport = COULOMB, TRANSPORT, COULOMB_EXTENDED_NPROPS
+}
+
+/// The law of valid law-1 entries (`e[i - 1] = PROPS(i)`, absent ones 0): those
+/// [`COULOMB`]`.check` returns, or those a fast plan admitted (which leaves `PROPS(7)` and
+/// `PROPS(8)` to the matches here). The one builder of every law-1 reader but the plain and
+/// decay-lean ones, which build their fixed layout's law directly. Refuses, naming the entry,
+/// only what the layout cannot say ([`Refusal`]); `table` is the interaction's μ table for
+/// `PROPS(8) = 2` (`fric_`, `fric_coef_`). The plain [`Coulomb`] when nothing beyond it is on.
+pub(crate) fn law_from_entries(
+    e: &[f64; COULOMB_EXTENDED_NPROPS],
+    table: Option<&'static FrictionTable>,
+) -> Result<FrictionLaw, PropsError> {
+    build(e, table).map_err(|no| match no {
+        NoLaw::OutOfClass(index) => PropsError::out_of_class(&COULOMB, e, index),
+        NoLaw::Refused(refusal) => PropsError::refused(&COULOMB, refusal),
+    })
+}
+
+/// [`law_from_entries`] for the extended fast reader: the extended law of entries a fast plan
+/// admitted, else `None` (the plain law, the μ table, a refusal: the other paths say which).
+#[inline(always)]
+pub(crate) fn extended_from_entries(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> Option<ExtendedCoulomb> {
+    match build(e, None) {
+        Ok(FrictionLaw::CoulombExtended(law)) => Some(law),
+        _ => None,
+    }
+}
+
+/// [`law_from_entries`] for a fast reader without a μ table: the law, or `None` (the checked
+/// path then says why).
+#[inline(always)]
+pub(crate) fn fast_law_from_entries(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> Option<FrictionLaw> {
+    build(e, None).ok()
+}
+
+/// Why [`build`] gives no law: small and `Copy`, so that a fast reader's `None` costs nothing;
+/// [`law_from_entries`] makes it a [`PropsError`].
+#[derive(Clone, Copy)]
+enum NoLaw {
+    /// `PROPS(index)`, left to the builder's match, is none of its values.
+    OutOfClass(usize),
+    /// What the layout cannot say.
+    Refused(Refusal),
+}
+
+/// The body of [`law_from_entries`].
+#[inline(always)]
+fn build(
+    e: &[f64; COULOMB_EXTENDED_NPROPS],
+    table: Option<&'static FrictionTable>,
+) -> Result<FrictionLaw, NoLaw> {
+    let viscous = e[6] == f64::from(VISCOUS);
+    let stick = match e[6] {
+        0.0 | 3.0 => StickMode::Elastic,
+        1.0 => StickMode::Exact,
+        2.0 => StickMode::Rough,
+        _ => return Err(NoLaw::OutOfClass(7)),
+    };
+    let mu = e[1];
+    let base = Coulomb::from_validated(mu, e[3], e[4], e[5], stick);
+    let mu2 = COULOMB.resolved(e, 3);
+    // PROPS(8..20) all ±0 in one test of their bits.
+    let rest_off = e[7..].iter().fold(0, |bits, v| bits | v.to_bits()) << 1 == 0;
+    if !viscous && mu2 == mu && rest_off {
+        return Ok(FrictionLaw::Coulomb(base));
+    }
+    let coefficient = match e[7] {
+        0.0 => CoefficientLaw::from_validated(None, e[10], e[11], e[12]),
+        1.0 => {
+            // μ_k/μ_s must stay finite (a subnormal μ_s overflows it).
+            let (mu_k, decay) = (e[8], e[9]);
+            let ratio = mu_k / mu;
+            if ratio == f64::INFINITY {
+                return Err(NoLaw::Refused(Refusal::KineticRatioOverflows {
+                    mu_k,
+                    mu_s: mu,
+                }));
+            }
+            CoefficientLaw::from_validated(Some((ratio, decay)), e[10], e[11], e[12])
+        }
+        2.0 => match table {
+            Some(table) => CoefficientLaw::table_from_validated(table, mu),
+            None => return Err(NoLaw::Refused(Refusal::NoTable)),
+        },
+        _ => return Err(NoLaw::OutOfClass(8)),
+    };
+    let hht = if !viscous && (e[13] != 0.0 || e[14] != 0.0 || e[15] != 0.0) {
+        Some(Hht {
+            alpha: e[13],
+            beta: COULOMB.resolved(e, 15),
+            gamma: COULOMB.resolved(e, 16),
+        })
+    } else {
+        None
+    };
+    let damping = (e[16] != 0.0).then_some(Damping {
+        c0: e[16],
+        clearance: e[17],
+        fraction: e[18],
+    });
+    let transport = viscous.then(|| SteadyTransport {
+        // F_f: PROPS(6) or its default (γ_crit is not read then, a rule of the layout).
+        tolerance: COULOMB.resolved(e, 6),
+        omega: e[13],
+        axis: match e[14] {
+            1.0 => 0,
+            2.0 => 1,
+            _ => 2,
+        },
+        reference: if e[15] == 1.0 {
+            ViscousSlipReference::RelativeVelocity
+        } else {
+            ViscousSlipReference::Circumferential
+        },
+    });
+    Ok(FrictionLaw::CoulombExtended(
+        ExtendedCoulomb::from_validated(base, mu2, coefficient, e[19] == 1.0, hht, damping)
+            .with_steady_transport(transport),
+    ))
 }
 
 props_builder! {
@@ -237,15 +415,16 @@ props_builder! {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
-    use crate::laws::coulomb_extended::Damping;
-    use crate::props::schema::Cause;
-    use crate::props::{COULOMB_EXTENDED_NPROPS, FrictionLaw, coulomb_extended};
+    use crate::props::coulomb_extended;
+    use crate::props::schema::{Cause, FastLayout, Plan};
     use proptest::prelude::*;
+    use proptest::test_runner::TestCaseError;
 
-    /// `PROPS` values around the classes' edges, mostly 0 so that many arrays are valid.
-    fn entry() -> impl Strategy<Value = f64> {
+    /// `PROPS` values around the classes' edges, mostly 0 so that many arrays are valid (also
+    /// the extended fast reader's agreement tests, src/props.rs).
+    pub(in crate::props) fn entry() -> impl Strategy<Value = f64> {
         prop_oneof![
             8 => Just(0.0),
             1 => Just(-0.0),
@@ -264,24 +443,28 @@ mod tests {
         ]
     }
 
-    /// What the checked parser refuses beyond the layout (the law's own conditions, not a
-    /// single entry's class or a rule between two entries): anisotropy needs μ₁ > 0, and the
-    /// μ table (`PROPS(8) = 2`) needs the interaction's table, which only `fric_` and
-    /// `fric_coef_` look up (never passed here); and the decay law's ratio μ_k/μ_s must be
-    /// finite (both entries valid, their ratio overflowing).
-    fn refused_beyond_the_layout(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> bool {
-        let (mu, mu2) = (e[1], e[2]);
-        (mu2 != 0.0 && mu2 != mu && mu == 0.0)
-            || e[7] == 2.0
-            || (e[7] == 1.0 && !(e[8] / mu).is_finite())
+    /// What the builder refuses beyond the layout ([`Refusal`]: the law's own conditions, not
+    /// a single entry's class or a rule between two entries), written out here: the μ table
+    /// (`PROPS(8) = 2`) needs the interaction's table, which only `fric_` and `fric_coef_`
+    /// look up (never passed here); and the decay law's ratio μ_k/μ_s must be finite (both
+    /// entries valid, their ratio overflowing).
+    fn refused_beyond_the_layout(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> Option<Refusal> {
+        match e[7] {
+            2.0 => Some(Refusal::NoTable),
+            1.0 if !(e[8] / e[1]).is_finite() => Some(Refusal::KineticRatioOverflows {
+                mu_k: e[8],
+                mu_s: e[1],
+            }),
+            _ => None,
+        }
     }
 
     proptest! {
         #![proptest_config(ProptestConfig { cases: 20000, failure_persistence: None, ..ProptestConfig::default() })]
 
-        /// The schema and the checked parser `coulomb_extended` accept the same law-1 arrays
-        /// (0 to 22 entries), but for [`refused_beyond_the_layout`]; and what the schema
-        /// refuses by an entry's class or a rule, the parser refuses too.
+        /// The checked parser `coulomb_extended` (the schema's check, then the builder) refuses
+        /// what the schema refuses, with the schema's message, and of what the schema accepts
+        /// exactly [`refused_beyond_the_layout`], with that typed cause (0 to 22 entries).
         #[test]
         fn schema_and_checked_parser_accept_the_same_arrays(
             mut props in prop::collection::vec(entry(), 0..23),
@@ -305,21 +488,30 @@ mod tests {
             if props.len() > 7 && !live.contains(&7) {
                 props[7] = mu_law;
             }
-            let old = coulomb_extended(&props);
-            let new = COULOMB.check::<COULOMB_EXTENDED_NPROPS>(&props);
-            match (&old, &new) {
-                (Ok(_), Ok(_)) | (Err(_), Err(_)) => {}
-                (Ok(law), Err(e)) => prop_assert!(false, "{props:?}: parser {law:?}, schema {e}"),
-                (Err(m), Ok(e)) => prop_assert!(
-                    refused_beyond_the_layout(e),
-                    "{props:?}: parser {m}, schema accepts"
+            let parsed = coulomb_extended(&props);
+            let checked = COULOMB.check::<COULOMB_EXTENDED_NPROPS>(&props);
+            match (&parsed, checked) {
+                (Ok(law), Ok(e)) => prop_assert!(
+                    refused_beyond_the_layout(&e).is_none(),
+                    "{props:?}: {law:?}"
                 ),
+                (Err(m), Err(e)) => prop_assert_eq!(m, &crate::LawError::from(e)),
+                (Ok(law), Err(e)) => prop_assert!(false, "{props:?}: parser {law:?}, schema {e}"),
+                (Err(m), Ok(e)) => {
+                    let Some(refusal) = refused_beyond_the_layout(&e) else {
+                        return Err(TestCaseError::fail(format!("{props:?}: {m}, schema accepts")));
+                    };
+                    let typed = law_from_entries(&e, None).unwrap_err();
+                    prop_assert_eq!(typed.cause(), &Cause::Refused(refusal));
+                    prop_assert_eq!(typed.index(), Some(refusal.index()));
+                    prop_assert_eq!(m, &crate::LawError::from(typed));
+                }
             }
         }
     }
 
-    /// The classes' edges, one entry at a time on a valid base: both readers draw the line
-    /// at the same value.
+    /// The classes' edges, one entry at a time on a valid base: the checked parser refuses
+    /// exactly what the schema refuses and [`refused_beyond_the_layout`].
     #[test]
     fn edges_agree_entry_by_entry() {
         let edges = [
@@ -369,7 +561,9 @@ mod tests {
                     props[i] = v;
                     let old = coulomb_extended(&props);
                     let new = COULOMB.check::<COULOMB_EXTENDED_NPROPS>(&props);
-                    let beyond = new.as_ref().is_ok_and(refused_beyond_the_layout);
+                    let beyond = new
+                        .as_ref()
+                        .is_ok_and(|e| refused_beyond_the_layout(e).is_some());
                     assert_eq!(
                         old.is_ok(),
                         new.is_ok() && !beyond,
@@ -448,8 +642,8 @@ mod tests {
     /// and γ(α) (`Hht::default_beta` / `default_gamma`, named by the schema), μ₂ = μ and the
     /// slip tolerance, through the extended fast reader, the checked parser and the law
     /// constructors, against the closed forms written out here. Changing the default in any
-    /// one place fails this test: the fast reader's (`coulomb_extended_fast`), the checked
-    /// path's (`Hht::new`), the schema's entry, or the law's function (the closed form).
+    /// one place fails this test: the schema's entry, the builder (`law_from_entries`, which
+    /// both readers end in), the law's function (the closed form) or `Hht::new`.
     #[test]
     fn the_defaults_are_said_once() {
         use crate::laws::coulomb::{Coulomb, CriticalSlip};
@@ -509,10 +703,61 @@ mod tests {
     }
 
     /// The fast validators' plans drop at compile time every rule their fixed layout
-    /// satisfies: none is left for the plain layout, only "θ_ref needs b_θ" (the one rule
-    /// between two free entries) for the decay law's lean layout.
+    /// satisfies: none is left for the plain layout (anisotropy's "μ₂ = 0 when μ = 0" holds for
+    /// μ₂ = 0 or μ), only "θ_ref needs b_θ" (the one rule between two free entries) for the
+    /// decay law's lean layout; the extended reader's plans keep the rules of the modes they
+    /// leave open (anisotropy, the temperature law, damping; the μ law under steady transport)
+    /// and drop those their pins rule out or turn into single-entry tests (the μ table; μ_k, d_c
+    /// and frozen μ 0 with constant μ; μ_s, d_c > 0 with the decay law; γ_crit 0 under steady
+    /// transport; damping's with PROPS(17..19) pinned to 0).
     #[test]
     fn the_plans_keep_only_the_rules_that_can_fail() {
+        let live = |plan: Plan| -> Vec<(usize, usize)> {
+            plan.live_rules()
+                .iter()
+                .map(|r| (r.entry(), r.other()))
+                .collect()
+        };
+        // Anisotropy, θ_ref needs b_θ, damping's g₀ and f need c₀.
+        let free = [(3, 2), (13, 12), (18, 17), (19, 17)];
+        assert_eq!(live(ExtendedConstant::PLAN), free);
+        assert_eq!(live(ExtendedDecay::PLAN), free);
+        assert_eq!(live(QuasiStatic::PLAN), free[..2]);
+        // Steady transport leaves the μ law open (0 or 1): its five rules stay.
+        assert_eq!(
+            live(Transport::PLAN),
+            [
+                (3, 2),
+                (2, 8),
+                (9, 8),
+                (10, 8),
+                (10, 8),
+                (13, 12),
+                (18, 17),
+                (19, 17),
+                (20, 8)
+            ]
+        );
+        // No plan tests a rule of the μ table.
+        for plan in [
+            ExtendedConstant::PLAN,
+            ExtendedDecay::PLAN,
+            QuasiStatic::PLAN,
+            Transport::PLAN,
+        ] {
+            assert!(plan.live_rules().iter().all(|r| !matches!(
+                r,
+                Rule::ZeroWhen {
+                    on: 8,
+                    value: 2,
+                    ..
+                } | Rule::PositiveWhen {
+                    on: 8,
+                    value: 2,
+                    ..
+                }
+            )));
+        }
         assert!(Plain::PLAN.live_rules().is_empty());
         assert_eq!(
             DecayLean::PLAN.live_rules(),
@@ -532,6 +777,96 @@ mod tests {
         assert!(std::panic::catch_unwind(|| Plan::of(&COULOMB, &open, 7)).is_err());
         // Nor one pinning an entry past its NPROPS.
         assert!(std::panic::catch_unwind(|| Plan::of(&COULOMB, &DECAY_LEAN, 7)).is_err());
+    }
+
+    /// A plan whose pin selects a variant tests the variant's entries: [`TRANSPORT`] reads
+    /// `PROPS(14..16)` as ω (> 0), the axis (0 to 3) and the γ̇_crit variant (0 or 1), not HHT;
+    /// [`EXTENDED_CONSTANT`] as HHT's α, β and γ. The same arrays through the fast reader and the
+    /// checked parser.
+    #[test]
+    fn the_transport_plan_takes_the_variants_entries() {
+        assert_eq!(Transport::PLAN.class_of(14), Class::Positive);
+        assert_eq!(
+            Transport::PLAN.class_of(15),
+            STEADY_TRANSPORT.entries[1].class
+        );
+        assert_eq!(
+            Transport::PLAN.class_of(16),
+            STEADY_TRANSPORT.entries[2].class
+        );
+        for index in 14..=16 {
+            assert_eq!(
+                ExtendedConstant::PLAN.class_of(index),
+                COULOMB.entry(index).class
+            );
+        }
+        let spinning = |omega: f64, axis: f64, reference: f64| {
+            CoulombBuilder::new()
+                .mu(0.3)
+                .stick(3.0)
+                .omega(omega)
+                .axis(axis)
+                .viscous_reference(reference)
+                .build()
+        };
+        // ω = 2 is no HHT α, axis 3 no HHT β; ω = 0, axis 4 and variant 2 are refused.
+        let props = spinning(2.0, 3.0, 1.0);
+        let fast = crate::props::fast_extended_coulomb(&props);
+        // Built by hand: no HHT, the transport of ω = 2 about z (axis 3), seed 003's γ̇_crit.
+        let transport = SteadyTransport::new(DEFAULT_SLIP_TOLERANCE, 2.0, 2)
+            .unwrap()
+            .with_reference(ViscousSlipReference::RelativeVelocity);
+        let by_hand =
+            ExtendedCoulomb::new(Coulomb::new(0.3).unwrap()).with_steady_transport(Some(transport));
+        assert_eq!(fast, Some(by_hand));
+        assert_eq!(
+            coulomb_extended(&props),
+            Ok(FrictionLaw::CoulombExtended(by_hand))
+        );
+        for bad in [
+            spinning(0.0, 0.0, 0.0),
+            spinning(2.0, 4.0, 0.0),
+            spinning(2.0, 0.0, 2.0),
+        ] {
+            assert_eq!(crate::props::fast_extended_coulomb(&bad), None);
+            assert!(coulomb_extended(&bad).is_err());
+        }
+    }
+
+    /// The builder's refusals are typed causes naming the entry, with the messages the tests
+    /// of the entry points pin.
+    #[test]
+    fn the_builders_refusals_are_typed() {
+        let table = CoulombBuilder::new().mu(0.3).mu_law(2.0).build();
+        let e = COULOMB.check::<20>(&table).unwrap();
+        let refused = law_from_entries(&e, None).unwrap_err();
+        assert_eq!(refused.cause(), &Cause::Refused(Refusal::NoTable));
+        assert_eq!(refused.index(), Some(8));
+        assert!(
+            refused.to_string().starts_with("PROPS(8) = 2 (μ table"),
+            "{refused}"
+        );
+        let tiny = CoulombBuilder::new()
+            .mu(1e-310)
+            .mu_law(1.0)
+            .mu_k(0.1)
+            .decay(1.0)
+            .build();
+        let e = COULOMB.check::<20>(&tiny).unwrap();
+        let refused = law_from_entries(&e, None).unwrap_err();
+        assert_eq!(
+            refused.cause(),
+            &Cause::Refused(Refusal::KineticRatioOverflows {
+                mu_k: 0.1,
+                mu_s: 1e-310
+            })
+        );
+        assert_eq!(refused.index(), Some(9));
+        // Anisotropy with μ₁ = 0 is the layout's rule now, named by PROPS(3).
+        let anisotropic = CoulombBuilder::new().mu(0.0).mu2(0.4).build();
+        let e = COULOMB.check::<20>(&anisotropic).unwrap_err();
+        assert_eq!(e.index(), Some(3));
+        assert!(e.to_string().contains("anisotropy needs μ₁ > 0"), "{e}");
     }
 
     /// `PLAIN` leaves the stick mode to the plain reader's match: the match accepts exactly

@@ -66,7 +66,10 @@ pub enum Class {
 }
 
 impl Class {
-    /// True when `v` is a valid value of this class (plain comparisons; the checked path).
+    /// True when `v` is a valid value of this class (plain comparisons; the checked path, and
+    /// the fast plans for the classes they have no bit test for, where the class is a constant
+    /// and only its own comparisons are left once inlined).
+    #[inline(always)]
     #[must_use]
     pub fn admits(self, v: f64) -> bool {
         match self {
@@ -270,7 +273,7 @@ impl Entry {
     fn name(&self) -> String {
         if self.seed_name {
             format!("{} ({})", self.key, self.meaning)
-        } else if self.symbol.is_empty() {
+        } else if self.symbol.is_empty() || self.meaning.ends_with(self.symbol) {
             self.meaning.to_string()
         } else {
             format!("{} {}", self.meaning, self.symbol)
@@ -434,6 +437,9 @@ pub enum Cause {
         /// The value of the other entry.
         other: f64,
     },
+    /// Valid entries that a law's own condition refuses, beyond what the layout can say
+    /// (said by the law's builder from validated entries).
+    Refused(Refusal),
     /// A law refused a value that the layout admits (its message, said of `PROPS(index)`).
     Law {
         /// `PROPS(index)`.
@@ -441,6 +447,52 @@ pub enum Cause {
         /// The law's refusal.
         error: LawError,
     },
+}
+
+/// What a law's builder refuses in entries the layout admits: conditions that need more than
+/// one entry's class or a rule between two entries, or more than the `PROPS` array.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Refusal {
+    /// Law 1's decay law: μ_k/μ_s = `PROPS(9)`/`PROPS(2)` overflows (μ_s too small), both
+    /// entries valid on their own.
+    KineticRatioOverflows {
+        /// μ_k = `PROPS(9)`.
+        mu_k: f64,
+        /// μ_s = `PROPS(2)`.
+        mu_s: f64,
+    },
+    /// Law 1's `PROPS(8) = 2` where no μ table is at hand: only `fric_` and `fric_coef_` look
+    /// the interaction's table up.
+    NoTable,
+}
+
+impl Refusal {
+    /// The `PROPS` index the refusal is said of.
+    #[must_use]
+    pub const fn index(self) -> usize {
+        match self {
+            Refusal::KineticRatioOverflows { .. } => 9,
+            Refusal::NoTable => 8,
+        }
+    }
+}
+
+impl fmt::Display for Refusal {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Refusal::KineticRatioOverflows { mu_k, mu_s } => write!(
+                f,
+                "PROPS(9) = μ_k = {mu_k} over PROPS(2) = μ_s = {mu_s:e}: μ_k/μ_s = {} \
+                 overflows; μ_s is too small for the decay law",
+                mu_k / mu_s
+            ),
+            Refusal::NoTable => write!(
+                f,
+                "PROPS(8) = 2 (μ table from INTERFACIAL_CONFIG) is read by fric_ and fric_coef_ \
+                 only, which look the table up by interaction name"
+            ),
+        }
+    }
 }
 
 /// A refused `PROPS` array: the layout and the cause. Becomes a [`LawError::Parameter`] with
@@ -464,6 +516,34 @@ impl PropsError {
         }
     }
 
+    /// A builder's refusal of valid entries (`layout`'s).
+    #[cold]
+    #[inline(never)]
+    #[must_use]
+    pub fn refused(layout: &'static Layout, refusal: Refusal) -> Self {
+        PropsError {
+            layout,
+            cause: Cause::Refused(refusal),
+            entry: None,
+        }
+    }
+
+    /// `PROPS(index)` of the entries `e` outside its class: for a reader that tests a pinned
+    /// entry by its own match (`Fix::MappedBy`) and so meets the value the class refuses.
+    #[cold]
+    #[inline(never)]
+    #[must_use]
+    pub fn out_of_class(layout: &'static Layout, e: &[f64], index: usize) -> Self {
+        PropsError {
+            layout,
+            cause: Cause::OutOfClass {
+                index,
+                value: e[index - 1],
+            },
+            entry: Some(layout.entry_in(e, index)),
+        }
+    }
+
     /// The cause.
     #[must_use]
     pub fn cause(&self) -> &Cause {
@@ -475,6 +555,7 @@ impl PropsError {
     pub fn index(&self) -> Option<usize> {
         match self.cause {
             Cause::TooFew { .. } => None,
+            Cause::Refused(refusal) => Some(refusal.index()),
             Cause::Unused { index, .. }
             | Cause::OutOfClass { index, .. }
             | Cause::Broken { index, .. }
@@ -492,7 +573,10 @@ impl fmt::Display for PropsError {
                     .required()
                     .map(|e| match e.class {
                         Class::Code(c) => format!("PROPS({}) = {c}", e.index),
-                        _ => format!("PROPS({}) = {}", e.index, e.key),
+                        _ if e.seed_name || e.symbol.is_empty() => {
+                            format!("PROPS({}) = {}", e.index, e.key)
+                        }
+                        _ => format!("PROPS({}) = {}", e.index, e.symbol),
                     })
                     .collect();
                 write!(
@@ -510,8 +594,18 @@ impl fmt::Display for PropsError {
                 layout.law,
                 layout.entries.len()
             ),
+            Cause::Refused(refusal) => write!(f, "{refusal}"),
             Cause::OutOfClass { index, value } => {
                 let e = self.entry.unwrap_or_else(|| layout.entry(*index));
+                if let Class::Switch { .. } = e.class {
+                    // A switch selects one of two things: "PROPS(16) = 2 must select the …".
+                    return write!(
+                        f,
+                        "PROPS({index}) = {value} must select the {}: {}",
+                        e.meaning,
+                        e.class.requirement()
+                    );
+                }
                 write!(f, "PROPS({index}): {} = {value} must be ", e.name())?;
                 write!(f, "{}", e.class.requirement())?;
                 match (e.class, e.default) {
@@ -596,7 +690,7 @@ fn range_flag(v: f64) -> u64 {
 }
 
 mod plan;
-pub(crate) use plan::{FastLayout, Plan, admits_fixed};
+pub(crate) use plan::{FastLayout, Plan, admits_fixed, fast_layout};
 
 impl Layout {
     /// `PROPS(index)`'s description. Panics on an index outside the layout (a programming
@@ -712,28 +806,6 @@ impl Layout {
             }
         }
         Ok(e)
-    }
-
-    /// The rules about `PROPS(index)` alone, for entries `e` (`e[i - 1] = PROPS(i)`, all
-    /// the layout's): the first one broken, as [`Layout::check`] reports it. For a checked
-    /// parser that keeps its own order of checks (law 1's) but takes the rules from here.
-    pub fn rules_of(&'static self, e: &[f64], index: usize) -> Result<(), PropsError> {
-        for &rule in self.rules.iter().filter(|r| r.entry() == index) {
-            let (v, w) = (e[rule.entry() - 1], e[rule.other() - 1]);
-            if !rule.holds(v, w) {
-                return Err(PropsError {
-                    layout: self,
-                    cause: Cause::Broken {
-                        index,
-                        rule,
-                        value: v,
-                        other: w,
-                    },
-                    entry: Some(self.entry_in(e, index)),
-                });
-            }
-        }
-        Ok(())
     }
 
     /// `PROPS(index)` of valid entries `e` with its default applied: the value the law is
@@ -897,6 +969,23 @@ impl Fixed {
         name: "as given",
         fixed: &[],
     };
+
+    /// The pins `a` then `b`, `N` of them: a fixed layout's list from shared parts (a `const`
+    /// can then hold it).
+    #[must_use]
+    pub const fn joined<const N: usize>(
+        a: &[(usize, Fix)],
+        b: &[(usize, Fix)],
+    ) -> [(usize, Fix); N] {
+        assert!(a.len() + b.len() == N);
+        let mut out = [(0, Fix::Zero); N];
+        let mut k = 0;
+        while k < N {
+            out[k] = if k < a.len() { a[k] } else { b[k - a.len()] };
+            k += 1;
+        }
+        out
+    }
 
     /// What this fixed layout pins `PROPS(index)` to, if anything.
     #[inline(always)]

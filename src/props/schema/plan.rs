@@ -6,7 +6,9 @@
 //! the fixed layout pins to another value, or whose entry it pins to 0, holds whatever the
 //! other entries are and is dropped; a rule whose switch it pins to the rule's value becomes a
 //! class test of the entry (0, or 0 < v < ∞); only the others are tested per call. A
-//! [`Variant`](super::Variant) that the fixed layout does not rule out is a compile-time error.
+//! [`Variant`](super::Variant) whose switch the fixed layout pins to the variant's value gives
+//! its entries' classes instead of the layout's; one that the fixed layout neither rules out
+//! nor pins is a compile-time error.
 //!
 //! [`admits_fixed`] reads the plan through an associated constant ([`FastLayout::PLAN`]), so
 //! every mask is a constant in the compiled code: it is one OR of [`range_flag`]s (0 ≤ v < ∞,
@@ -48,11 +50,35 @@ pub(crate) struct Plan {
     zero_or_equal: [usize; MAX],
     /// "None" (≤ 0) or `PROPS(none_or_equal[i])`; 0 for none.
     none_or_equal: [usize; MAX],
+    /// In [lo, hi] (or [lo, hi) when `open_hi`) with |lo|, |hi| ≤ 1, tested as
+    /// 0 ≤ v − lo < ∞ and 0 ≤ hi − v < ∞ (0 < hi − v < ∞): [`interval_flags`].
+    interval: u32,
+    /// The bounds of `interval`'s entries.
+    lo: [f64; MAX],
+    hi: [f64; MAX],
+    open_hi: u32,
     /// The class's own test ([`Class::admits`]).
     other: u32,
+    /// Each entry's class in this fixed layout (a variant's where it is pinned on).
+    class: [Class; MAX],
     /// The rules tested per call (bit `r` is `layout.rules[r]`).
     rules: u32,
 }
+
+/// `$vis struct $name;` whose [`FastLayout::PLAN`] is `Plan::of(&$layout, &$fixed, $nprops)`:
+/// a fast path's validator in one declaration.
+macro_rules! fast_layout {
+    ($(#[$attr:meta])* $vis:vis $name:ident = $layout:expr, $fixed:expr, $nprops:expr) => {
+        $(#[$attr])*
+        $vis struct $name;
+
+        impl $crate::props::schema::FastLayout for $name {
+            const PLAN: $crate::props::schema::Plan =
+                $crate::props::schema::Plan::of(&$layout, &$fixed, $nprops);
+        }
+    };
+}
+pub(crate) use fast_layout;
 
 /// A named fixed layout whose validator is worked out at compile time: a unit type per fast
 /// path, `impl FastLayout for Plain { const PLAN: Plan = Plan::of(&COULOMB, &PLAIN, 7); }`.
@@ -79,7 +105,12 @@ impl Plan {
             value: [0; MAX],
             zero_or_equal: [0; MAX],
             none_or_equal: [0; MAX],
+            interval: 0,
+            lo: [0.0; MAX],
+            hi: [0.0; MAX],
+            open_hi: 0,
             other: 0,
+            class: [Class::Finite; MAX],
             rules: 0,
         };
         let mut k = 0;
@@ -92,6 +123,7 @@ impl Plan {
             let bit = 1 << i;
             let entry = &layout.entries[i];
             assert!(entry.index == i + 1);
+            p.class[i] = class_in(layout, fixed, entry.index);
             match fixed.pin(entry.index) {
                 Some(Fix::Zero) => p.zero |= bit,
                 Some(Fix::NoneOrEqual(j)) => {
@@ -108,13 +140,21 @@ impl Plan {
                 }
                 // Tested by the reader's match.
                 Some(Fix::MappedBy(_)) => {}
-                None => match entry.class {
+                None => match p.class[i] {
                     Class::NonNegative | Class::OffOrPositive => p.range |= bit,
                     Class::Finite | Class::FiniteOrNone => p.finite |= bit,
                     Class::Positive => p.positive |= bit,
                     Class::Code(c) => {
                         p.exact |= bit;
                         p.value[i] = c;
+                    }
+                    Class::Interval { lo, hi, open_hi } if lo <= hi && -1.0 <= lo && hi <= 1.0 => {
+                        p.interval |= bit;
+                        p.lo[i] = lo;
+                        p.hi[i] = hi;
+                        if open_hi {
+                            p.open_hi |= bit;
+                        }
                     }
                     _ => p.other |= bit,
                 },
@@ -125,7 +165,8 @@ impl Plan {
         while v < layout.variants.len() {
             let variant = &layout.variants[v];
             assert!(
-                !possible(layout, fixed, nprops, variant.on, variant.value),
+                !possible(layout, fixed, nprops, variant.on, variant.value)
+                    || matches!(pinned_value(fixed, variant.on), Some(c) if c == variant.value),
                 "the fixed layout leaves a variant possible"
             );
             v += 1;
@@ -140,8 +181,13 @@ impl Plan {
                 // 0 < v < ∞ where it needs it.
                 Rule::ZeroWhen { value, .. } | Rule::PositiveWhen { value, .. } => {
                     let zero = matches!(rule, Rule::ZeroWhen { .. });
+                    // 0 or equal to the switch, which must be 0 for the rule to apply: 0.
+                    let zero_or_switch = zero
+                        && value == 0
+                        && matches!(fixed.pin(a), Some(Fix::ZeroOrEqual(j)) if j == b);
                     if !possible(layout, fixed, nprops, b, value)
                         || (zero && always_zero(fixed, nprops, a))
+                        || zero_or_switch
                     {
                         false
                     } else if matches!(known(layout, fixed, nprops, b), Some(c) if c == value) {
@@ -182,6 +228,7 @@ impl Plan {
                 self.finite &= !bit;
                 self.positive &= !bit;
                 self.other &= !bit;
+                self.interval &= !bit;
                 self.zero |= bit;
             }
             // 0 < v < ∞ is within 0 ≤ v < ∞; any other class keeps its own test as well.
@@ -191,6 +238,13 @@ impl Plan {
             }
         }
         self
+    }
+
+    /// `PROPS(index)`'s class in this plan (for tests).
+    #[cfg(test)]
+    #[must_use]
+    pub(crate) fn class_of(&self, index: usize) -> Class {
+        self.class[index - 1]
     }
 
     /// The rules tested per call (for tests).
@@ -217,17 +271,44 @@ const fn always_zero(fixed: &Fixed, nprops: usize, index: usize) -> bool {
     index > nprops || matches!(fixed.pin(index), Some(Fix::Zero))
 }
 
+/// The one value the fixed layout pins `PROPS(index)` to, if it does.
+const fn pinned_value(fixed: &Fixed, index: usize) -> Option<i32> {
+    match fixed.pin(index) {
+        Some(Fix::Zero) => Some(0),
+        Some(Fix::Is(c)) => Some(c),
+        Some(Fix::MappedBy(list)) if list.len() == 1 => Some(list[0]),
+        _ => None,
+    }
+}
+
+/// `PROPS(index)`'s class in this fixed layout: the entry of a variant whose switch the fixed
+/// layout pins to the variant's value, else the layout's.
+const fn class_in(layout: &Layout, fixed: &Fixed, index: usize) -> Class {
+    let mut v = 0;
+    while v < layout.variants.len() {
+        let variant = &layout.variants[v];
+        if matches!(pinned_value(fixed, variant.on), Some(c) if c == variant.value) {
+            let mut k = 0;
+            while k < variant.entries.len() {
+                if variant.entries[k].index == index {
+                    return variant.entries[k].class;
+                }
+                k += 1;
+            }
+        }
+        v += 1;
+    }
+    layout.entries[index - 1].class
+}
+
 /// The one value `PROPS(index)` can take in this fixed layout, if there is one.
 const fn known(layout: &Layout, fixed: &Fixed, nprops: usize, index: usize) -> Option<i32> {
     if index > nprops {
         return Some(0);
     }
     match fixed.pin(index) {
-        Some(Fix::Zero) => Some(0),
-        Some(Fix::Is(c)) => Some(c),
-        Some(Fix::MappedBy(list)) if list.len() == 1 => Some(list[0]),
-        Some(_) => None,
-        None => match layout.entries[index - 1].class {
+        Some(_) => pinned_value(fixed, index),
+        None => match class_in(layout, fixed, index) {
             Class::Code(c) => Some(c),
             _ => None,
         },
@@ -253,7 +334,7 @@ const fn possible(layout: &Layout, fixed: &Fixed, nprops: usize, index: usize, x
             false
         }
         Some(Fix::NoneOrEqual(_) | Fix::ZeroOrEqual(_)) => true,
-        None => match layout.entries[index - 1].class {
+        None => match class_in(layout, fixed, index) {
             Class::Code(c) => c == x,
             Class::Switch { .. } => x == 0 || x == 1,
             Class::Choice(options) => {
@@ -271,6 +352,20 @@ const fn possible(layout: &Layout, fixed: &Fixed, nprops: usize, index: usize, x
     }
 }
 
+/// Top bit clear exactly when `v` is in [lo, hi] ([lo, hi) when `open_hi`), for bounds of
+/// magnitude ≤ 1: the difference of two finite doubles is 0 only when they are equal and keeps
+/// the sign of the exact difference, and with bounds this small it overflows only for an
+/// infinite `v`, which both tests refuse; NaN sets the flag.
+#[inline(always)]
+pub(crate) fn interval_flags(v: f64, lo: f64, hi: f64, open_hi: bool) -> u64 {
+    range_flag(v - lo)
+        | if open_hi {
+            positive_flag(hi - v)
+        } else {
+            range_flag(hi - v)
+        }
+}
+
 /// Whether the first `N` entries `e` (`e[i - 1] = PROPS(i)`, `N` the plan's `NPROPS`) pass the
 /// fixed layout `P`'s tests: each entry's class (a stick mode pinned `MappedBy` is left to the
 /// caller's match), its pin, and the rules that can still fail. Straight-line: every mask is
@@ -281,38 +376,55 @@ pub(crate) fn admits_fixed<P: FastLayout, const N: usize>(e: &[f64; N]) -> bool 
     let mut flags = 0u64;
     let mut zeros = 0u64;
     let mut ok = true;
+    // Every part of the plan is read in a `const` block: a constant, also in a debug build
+    // (where a read of `P::PLAN` itself copies the whole plan to the stack, once per read).
     unrolled!(I in [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19] {
         if I < N {
-            let bit = 1u32 << I;
             let v = e[I];
-            if P::PLAN.range & bit != 0 {
+            if const { P::PLAN.range >> I & 1 == 1 } {
                 flags |= range_flag(v);
             }
-            if P::PLAN.finite & bit != 0 {
+            if const { P::PLAN.finite >> I & 1 == 1 } {
                 flags |= range_flag(v.abs());
             }
-            if P::PLAN.positive & bit != 0 {
+            if const { P::PLAN.positive >> I & 1 == 1 } {
                 flags |= positive_flag(v);
             }
-            if P::PLAN.zero & bit != 0 {
+            if const { P::PLAN.zero >> I & 1 == 1 } {
                 zeros |= v.to_bits();
             }
-            if P::PLAN.exact & bit != 0 {
-                ok &= v == f64::from(P::PLAN.value[I]);
+            if const { P::PLAN.exact >> I & 1 == 1 } {
+                ok &= v == f64::from(const { P::PLAN.value[I] });
             }
-            if P::PLAN.none_or_equal[I] != 0 {
+            let none_or_equal = const { P::PLAN.none_or_equal[I] };
+            if none_or_equal != 0 {
                 // "None" is −∞ < v ≤ 0, i.e. 0 ≤ −v < ∞: the same top-bit test.
-                flags |= if v == e[P::PLAN.none_or_equal[I] - 1] { 0 } else { range_flag(-v) };
+                flags |= if v == e[none_or_equal - 1] { 0 } else { range_flag(-v) };
             }
-            if P::PLAN.other & bit != 0 {
-                ok &= P::PLAN.layout.entries[I].class.admits(v);
+            if const { P::PLAN.interval >> I & 1 == 1 } {
+                let (lo, hi) = const { (P::PLAN.lo[I], P::PLAN.hi[I]) };
+                flags |= interval_flags(v, lo, hi, const { P::PLAN.open_hi >> I & 1 == 1 });
+            }
+            if const { P::PLAN.other >> I & 1 == 1 } {
+                ok &= const { P::PLAN.class[I] }.admits(v);
             }
         }
     });
     unrolled!(R in [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31] {
-        if P::PLAN.rules >> R & 1 == 1 {
-            let rule = P::PLAN.layout.rules[R];
-            ok &= rule.holds(e[rule.entry() - 1], e[rule.other() - 1]);
+        let live = const {
+            if P::PLAN.rules >> R & 1 == 1 {
+                Some(P::PLAN.layout.rules[R])
+            } else {
+                None
+            }
+        };
+        match live {
+            // v = 0 when w = the value: v's bits among those that must be ±0 (a select).
+            Some(Rule::ZeroWhen { entry, on, value, .. }) => {
+                zeros |= if e[on - 1] == f64::from(value) { e[entry - 1].to_bits() } else { 0 };
+            }
+            Some(rule) => ok &= rule.holds(e[rule.entry() - 1], e[rule.other() - 1]),
+            None => {}
         }
     });
     if !(ok && flags >> 63 == 0 && zeros << 1 == 0) {
@@ -321,9 +433,10 @@ pub(crate) fn admits_fixed<P: FastLayout, const N: usize>(e: &[f64; N]) -> bool 
     // "0 or equal to another entry" last, one branch each, 0 (isotropy's usual value) first:
     // as an `&=` it became a branch-free sequence of 4 more instructions per call.
     unrolled!(I in [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19] {
-        if I < N && P::PLAN.zero_or_equal[I] != 0 {
+        let zero_or_equal = const { P::PLAN.zero_or_equal[I] };
+        if I < N && zero_or_equal != 0 {
             let v = e[I];
-            if !(v == 0.0 || v == e[P::PLAN.zero_or_equal[I] - 1]) {
+            if !(v == 0.0 || v == e[zero_or_equal - 1]) {
                 return false;
             }
         }
@@ -334,6 +447,34 @@ pub(crate) fn admits_fixed<P: FastLayout, const N: usize>(e: &[f64; N]) -> bool 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// [`interval_flags`] against [`Class::admits`] for the intervals of the layouts and a few
+    /// more, at the f64 edges and next to each bound.
+    #[test]
+    fn interval_flags_are_the_class_test() {
+        let bounds = [
+            (-0.5, 0.0),
+            (0.0, 1.0),
+            (-1.0, 1.0),
+            (0.25, 0.75),
+            (-1.0, -0.5),
+        ];
+        for (lo, hi) in bounds {
+            for open_hi in [false, true] {
+                let class = Class::Interval { lo, hi, open_hi };
+                let near = [lo, hi]
+                    .into_iter()
+                    .flat_map(|b: f64| [b, b.next_down(), b.next_up(), -b, b * 0.5, b * 2.0]);
+                for v in crate::testing::EDGE_VALUES.into_iter().chain(near) {
+                    assert_eq!(
+                        interval_flags(v, lo, hi, open_hi) >> 63 == 0,
+                        class.admits(v),
+                        "{v:e} in {class:?}"
+                    );
+                }
+            }
+        }
+    }
 
     /// [`positive_flag`] against the plain comparisons, at the edges of 0 < v < ∞.
     #[test]
