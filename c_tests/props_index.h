@@ -12,22 +12,22 @@
 #define IFLP_COULOMB_CODE 0 /* PROPS(1): law code */
 #define IFLP_COULOMB_MU 1 /* PROPS(2): friction coefficient */
 #define IFLP_COULOMB_MU2 2 /* PROPS(3): second-direction coefficient */
-#define IFLP_COULOMB_TAU_MAX 3 /* PROPS(4): shear stress limit, τ_crit = min(μp, τ_max) */
+#define IFLP_COULOMB_TAU_MAX 3 /* PROPS(4): shear stress limit */
 #define IFLP_COULOMB_GAMMA_CRIT 4 /* PROPS(5): allowable elastic slip */
 #define IFLP_COULOMB_SLIP_TOLERANCE 5 /* PROPS(6): slip tolerance */
-#define IFLP_COULOMB_STICK 6 /* PROPS(7): stick */
+#define IFLP_COULOMB_STICK 6 /* PROPS(7): stick mode */
 #define IFLP_COULOMB_MU_LAW 7 /* PROPS(8): μ law */
 #define IFLP_COULOMB_MU_K 8 /* PROPS(9): kinetic coefficient (direction 1) of the decay law */
 #define IFLP_COULOMB_DECAY 9 /* PROPS(10): decay coefficient */
-#define IFLP_COULOMB_P_REF 10 /* PROPS(11): pressure dependence μ ← μ/(1 + p/p_ref) */
-#define IFLP_COULOMB_B_THETA 11 /* PROPS(12): temperature dependence μ ← μ·exp(−b_θ(θ̄ − θ_ref)) */
+#define IFLP_COULOMB_P_REF 10 /* PROPS(11): reference pressure of μ */
+#define IFLP_COULOMB_B_THETA 11 /* PROPS(12): temperature coefficient of μ */
 #define IFLP_COULOMB_THETA_REF 12 /* PROPS(13): reference temperature of `PROPS(12)` */
-#define IFLP_COULOMB_HHT_ALPHA 13 /* PROPS(14): HHT α: dynamics; slip rates use Δt_rate = β·Δt/γ */
+#define IFLP_COULOMB_HHT_ALPHA 13 /* PROPS(14): HHT α */
 #define IFLP_COULOMB_HHT_BETA 14 /* PROPS(15): HHT β */
 #define IFLP_COULOMB_HHT_GAMMA 15 /* PROPS(16): HHT γ */
 #define IFLP_COULOMB_DAMPING 16 /* PROPS(17): tangential damping coefficient at zero overclosure */
 #define IFLP_COULOMB_DAMPING_CLEARANCE 17 /* PROPS(18): clearance at which the damping coefficient vanishes */
-#define IFLP_COULOMB_DAMPING_FRACTION 18 /* PROPS(19): fraction of [0, g₀] over which c = c₀ */
+#define IFLP_COULOMB_DAMPING_FRACTION 18 /* PROPS(19): damping plateau fraction */
 #define IFLP_COULOMB_FROZEN 19 /* PROPS(20): slip rate of μ */
 #define IFLP_COULOMB_OMEGA 13 /* PROPS(14): angular spinning velocity of steady-state transport */
 #define IFLP_COULOMB_AXIS 14 /* PROPS(15): spinning axis through the origin */

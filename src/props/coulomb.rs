@@ -37,15 +37,10 @@ const STICK: Class = Class::Choice(&[
 /// `PROPS(8)`: the μ laws.
 const MU_LAW: Class = Class::Choice(&[
     (0, "constant"),
-    (
-        1,
-        "exponential decay μ = μ_k + (μ_s − μ_k)·exp(−d_c·γ̇_eq) with μ_s = `PROPS(2)`",
-    ),
+    (1, "exponential decay μ = μ_k + (μ_s − μ_k)·exp(−d_c·γ̇_eq)"),
     (
         2,
-        "table μ(γ̇_eq, p, θ̄) of the interaction (`CINAME`) from `INTERFACIAL_CONFIG` \
-         ([config.md](config.md#friction-tables-interactionsnamefriction)); `PROPS(2)` > 0 is \
-         then only the reference of the anisotropy ratio μ₂/μ₁ = `PROPS(3)`/`PROPS(2)`",
+        "table μ(γ̇_eq, p, θ̄) of the interaction (`CINAME`) from `INTERFACIAL_CONFIG`",
     ),
 ]);
 
@@ -66,31 +61,34 @@ pub const COULOMB: Layout = Layout {
         Entry::new(3, "mu2", "second-direction coefficient", Class::OffOrPositive)
             .symbol("μ₂").when_absent(SameAs(2))
             .note("anisotropy; μ = `PROPS(2)` is μ₁, which must then be > 0 unless μ₂ = μ₁"),
-        Entry::new(4, "tau_max", "shear stress limit, τ_crit = min(μp, τ_max)", Class::OffOrPositive)
-            .symbol("τ_max").unit("stress").when_absent(Described("no limit")),
+        Entry::new(4, "tau_max", "shear stress limit", Class::OffOrPositive)
+            .symbol("τ_max").unit("stress").when_absent(Described("no limit"))
+            .note("τ_crit = min(μp, τ_max)"),
         Entry::new(5, "gamma_crit", "allowable elastic slip", Class::OffOrPositive)
             .symbol("γ_crit").unit("length").when_absent(Described("`PROPS(6)` × `CHRLNGTH`"))
             .note("absolute; wins over `PROPS(6)`"),
         Entry::new(6, "slip_tolerance", "slip tolerance", Class::OffOrPositive)
             .when_absent(Value(DEFAULT_SLIP_TOLERANCE))
             .note("γ_crit = tolerance × `CHRLNGTH`; F_f of steady transport"),
-        Entry::new(7, "stick", "stick", STICK),
-        Entry::new(8, "mu_law", "μ law", MU_LAW),
+        Entry::new(7, "stick", "stick mode", STICK),
+        Entry::new(8, "mu_law", "μ law", MU_LAW)
+            .note("decay: μ_s = `PROPS(2)`; table: see [config.md](config.md#friction-tables-interactionsnamefriction), \
+                   `PROPS(2)` > 0 is then only the reference of the anisotropy ratio μ₂/μ₁ = `PROPS(3)`/`PROPS(2)`"),
         Entry::new(9, "mu_k", "kinetic coefficient (direction 1) of the decay law", Class::NonNegative)
             .symbol("μ_k").note("0 is a valid μ_k"),
         Entry::new(10, "decay", "decay coefficient", Class::OffOrPositive)
             .symbol("d_c").unit("time/length").when_absent(Described("— (required by the decay law)")),
-        Entry::new(11, "p_ref", "pressure dependence μ ← μ/(1 + p/p_ref)", Class::OffOrPositive)
+        Entry::new(11, "p_ref", "reference pressure of μ", Class::OffOrPositive)
             .symbol("p_ref").unit("stress").when_absent(Described("none"))
-            .note("μp saturates at μ·p_ref"),
-        Entry::new(12, "b_theta", "temperature dependence μ ← μ·exp(−b_θ(θ̄ − θ_ref))", Class::Finite)
+            .note("μ ← μ/(1 + p/p_ref): μp saturates at μ·p_ref"),
+        Entry::new(12, "b_theta", "temperature coefficient of μ", Class::Finite)
             .symbol("b_θ").unit("1/temperature").when_absent(Described("none (`TEMP` not read)"))
-            .note("θ̄ = (`TEMP(1)`+`TEMP(2)`)/2"),
+            .note("μ ← μ·exp(−b_θ(θ̄ − θ_ref)), θ̄ = (`TEMP(1)`+`TEMP(2)`)/2"),
         Entry::new(13, "theta_ref", "reference temperature of `PROPS(12)`", Class::Finite)
             .symbol("θ_ref").unit("temperature"),
-        Entry::new(14, "hht_alpha", "HHT α: dynamics; slip rates use Δt_rate = β·Δt/γ", HHT_ALPHA)
+        Entry::new(14, "hht_alpha", "HHT α", HHT_ALPHA)
             .symbol("α").when_absent(Described("static (Δt_rate = Δt)"))
-            .note("HHT is on when any of `PROPS(14..16)` is non-zero"),
+            .note("dynamics: slip rates use Δt_rate = β·Δt/γ; HHT is on when any of `PROPS(14..16)` is non-zero"),
         Entry::new(15, "hht_beta", "HHT β", Class::OffOrPositive)
             .symbol("β").when_absent(Derived { of: 14, value: LawFn(Hht::default_beta), text: "(1 − α)²/4" }),
         Entry::new(16, "hht_gamma", "HHT γ", Class::OffOrPositive)
@@ -100,8 +98,8 @@ pub const COULOMB: Layout = Layout {
             .note("τ_v = c·γ̇ added to the friction stress"),
         Entry::new(18, "damping_clearance", "clearance at which the damping coefficient vanishes", Class::NonNegative)
             .symbol("g₀").unit("length"),
-        Entry::new(19, "damping_fraction", "fraction of [0, g₀] over which c = c₀", FRACTION_BELOW_ONE)
-            .symbol("f"),
+        Entry::new(19, "damping_fraction", "damping plateau fraction", FRACTION_BELOW_ONE)
+            .symbol("f").note("c = c₀ over the fraction f of [0, g₀]"),
         Entry::new(20, "frozen", "slip rate of μ", FROZEN),
     ],
     rules: &[
