@@ -906,11 +906,7 @@ pub(super) mod tests {
                 value: 0.5
             }
         );
-        assert_eq!(
-            e.to_string(),
-            "PROPS(14): HHT α: dynamics; slip rates use Δt_rate = β·Δt/γ α = 0.5 must be in \
-             [−1/2, 0]"
-        );
+        assert_eq!(e.to_string(), "PROPS(14): HHT α = 0.5 must be in [−1/2, 0]");
         let viscous = CoulombBuilder::new().mu(0.3).stick(3.0).build();
         let e = COULOMB.check::<20>(&viscous).unwrap_err();
         assert_eq!(
