@@ -1,22 +1,5 @@
 //! The contact-interface laws, one per file, each in the field's words and free of `unsafe`.
 
-/// Builder setters that only store their argument in the field of the same name:
-/// `field_setters! { /// doc \n with_x(field: Type); … }` writes, per line, the documented
-/// `#[must_use] pub fn with_x(mut self, field: Type) -> Self`. A setter that validates its
-/// argument is written out.
-macro_rules! field_setters {
-    ($($(#[$attr:meta])* $name:ident($field:ident: $ty:ty);)*) => {
-        $(
-            $(#[$attr])*
-            #[must_use]
-            pub fn $name(mut self, $field: $ty) -> Self {
-                self.$field = $field;
-                self
-            }
-        )*
-    };
-}
-
 /// The [`coulomb::StatusCode`] of a status enum: the law a short `STATEV` message names, and
 /// the codes other than 0 (stick, also what an unknown code reads as):
 /// `status_codes!(Enum, "the law", 1.0 => Variant, …)`. The stored code is the discriminant.

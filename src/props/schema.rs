@@ -240,32 +240,16 @@ impl Entry {
         self
     }
 
-    /// The symbol.
-    #[must_use]
-    pub const fn symbol(mut self, symbol: &'static str) -> Self {
-        self.symbol = symbol;
-        self
-    }
-
-    /// The unit.
-    #[must_use]
-    pub const fn unit(mut self, unit: &'static str) -> Self {
-        self.unit = unit;
-        self
-    }
-
-    /// What 0 or absent means (instead of the value 0).
-    #[must_use]
-    pub const fn when_absent(mut self, default: Default) -> Self {
-        self.default = default;
-        self
-    }
-
-    /// The docs table's extra words.
-    #[must_use]
-    pub const fn note(mut self, note: &'static str) -> Self {
-        self.note = note;
-        self
+    field_setters! {
+        const;
+        /// The symbol.
+        symbol(symbol: &'static str);
+        /// The unit.
+        unit(unit: &'static str);
+        /// What 0 or absent means (instead of the value 0).
+        when_absent(default: Default);
+        /// The docs table's extra words.
+        note(note: &'static str);
     }
 
     /// How messages name the entry: `key (meaning)` for a seed name, `meaning symbol`
