@@ -3,6 +3,7 @@
 //! test`; they name each other by `super::`, which is this crate's root here and that module
 //! there.
 
+pub mod args;
 pub mod batch_case;
 pub mod bytes;
 pub mod config_case;
