@@ -12,7 +12,8 @@ use std::fmt;
 use std::ops::{Index, IndexMut};
 
 use super::bytes::{Bytes, bits, len};
-use super::contract::{UNWRITTEN, unwritten};
+use super::contract::{Names, UNWRITTEN, last_error, unwritten};
+use interfacial::abi::ifl_clear_error;
 
 /// How many entries an array has, from the counts already drawn.
 #[derive(Clone, Copy, Debug)]
@@ -202,6 +203,28 @@ impl Args {
         };
         self.ints == other.ints && reals(self) == reals(other)
     }
+}
+
+/// One call as every case makes it: `call` gets copies of `args` and `names` to pass as inputs
+/// and the arguments to pass as outputs (`args.outputs(kept, fresh)`); afterwards every input
+/// must be bit for bit what it was (never written), and what the call wrote comes back with
+/// its message. `Err` when an input was written.
+pub fn call(
+    args: &Args,
+    names: &Names,
+    kept: &[&'static str],
+    fresh: &[(&'static str, Len)],
+    call: impl FnOnce(&Args, &Names, &mut Args),
+) -> Result<Outputs, String> {
+    let (inputs, input_names) = (args.clone(), names.clone());
+    let mut out = args.outputs(kept, fresh);
+    ifl_clear_error();
+    call(&inputs, &input_names, &mut out);
+    let message = last_error();
+    if !inputs.same(args) || input_names != *names {
+        return Err("an input argument was written".into());
+    }
+    Ok(Outputs { args: out, message })
 }
 
 impl Index<&str> for Args {

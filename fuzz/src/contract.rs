@@ -38,6 +38,15 @@ impl Names {
         }
     }
 
+    /// No names (an entry point without `CHARACTER` arguments).
+    pub fn none() -> Names {
+        Names {
+            interaction: Vec::new(),
+            secondary: Vec::new(),
+            main: Vec::new(),
+        }
+    }
+
     /// The three pointers, in argument order.
     pub fn pointers(&self) -> [*const c_char; 3] {
         [&self.interaction, &self.secondary, &self.main].map(|n| n.as_ptr().cast::<c_char>())

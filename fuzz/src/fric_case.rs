@@ -4,11 +4,11 @@
 //!
 //! Shared by the `fric` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
 
-use super::args::{Args, Draw, Len, ONE, Outputs, Row, of};
+use super::args::{Args, Draw, Len, ONE, Outputs, Row, call, of};
 use super::bytes::{Bytes, bits, len};
-use super::contract::{Names, last_error, pnewdt_refusal};
+use super::contract::{Names, pnewdt_refusal};
 use Draw::{Int, Large, Number, Pick, Reals};
-use interfacial::abi::{fric_, ifl_clear_error};
+use interfacial::abi::fric_;
 
 pub use super::contract::UNWRITTEN;
 
@@ -166,69 +166,60 @@ impl FricCase {
 
     /// Calls `fric_` and checks every property; `Err` names the first one violated.
     pub fn check(&self) -> Result<Outputs, String> {
-        let c = self.clone();
-        let a = &c.args;
-        let mut out = a.outputs(&IN_OUT, &OUTPUTS);
-        let o = &mut out;
-        let null = c.null_optional;
+        let null = self.null_optional;
         let opt = |p: *mut f64| if null { std::ptr::null_mut() } else { p };
-        let [ci, sl, ms] = c.names.pointers();
-        let [ci_len, sl_len, ms_len] = c.names.lengths();
-        ifl_clear_error();
-        // SAFETY: every array has exactly the length the call declares (NFDIR, NFDIR², 2·NFDIR,
-        // NSTATV, NPROPS, MCRD, 2·NPRED, the hidden name lengths; scalars one entry).
-        let message = unsafe {
-            fric_(
-                o.int_ptr_mut("LM"),
-                o.ptr_mut("TAU"),
-                o.ptr_mut("DDTDDG"),
-                o.ptr_mut("DDTDDP"),
-                opt(o.ptr_mut("DSLIP")),
-                opt(o.ptr_mut("SED")),
-                opt(o.ptr_mut("SFD")),
-                opt(o.ptr_mut("DDTDDT")),
-                o.ptr_mut("PNEWDT"),
-                o.ptr_mut("STATEV"),
-                a.ptr("DGAM"),
-                a.ptr("TAULM"),
-                a.ptr("PRESS"),
-                a.ptr("DPRESS"),
-                a.ptr("DDPDDH"),
-                a.ptr("SLIP"),
-                a.int_ptr("KSTEP"),
-                a.int_ptr("KINC"),
-                a.ptr("TIME"),
-                a.ptr("DTIME"),
-                a.int_ptr("NOEL"),
-                ci,
-                sl,
-                ms,
-                a.int_ptr("NPT"),
-                a.int_ptr("NODE"),
-                a.int_ptr("NPATCH"),
-                a.ptr("COORDS"),
-                a.ptr("RCOORD"),
-                a.ptr("DROT"),
-                a.ptr("TEMP"),
-                a.ptr("PREDEF"),
-                a.int_ptr("NFDIR"),
-                a.int_ptr("MCRD"),
-                a.int_ptr("NPRED"),
-                a.int_ptr("NSTATV"),
-                a.ptr("CHRLNGTH"),
-                a.ptr("PROPS"),
-                a.int_ptr("NPROPS"),
-                ci_len,
-                sl_len,
-                ms_len,
-            );
-            last_error()
-        };
-        // The input arguments are never written (LM, TAU, PNEWDT, STATEV went to `out`).
-        if !a.same(&self.args) || c.names != self.names {
-            return Err("an input argument was written".into());
-        }
-        let out = Outputs { args: out, message };
+        let out = call(&self.args, &self.names, &IN_OUT, &OUTPUTS, |a, names, o| {
+            let [ci, sl, ms] = names.pointers();
+            let [ci_len, sl_len, ms_len] = names.lengths();
+            // SAFETY: every array has exactly the length the call declares (NFDIR, NFDIR², 2·NFDIR,
+            // NSTATV, NPROPS, MCRD, 2·NPRED, the hidden name lengths; scalars one entry).
+            unsafe {
+                fric_(
+                    o.int_ptr_mut("LM"),
+                    o.ptr_mut("TAU"),
+                    o.ptr_mut("DDTDDG"),
+                    o.ptr_mut("DDTDDP"),
+                    opt(o.ptr_mut("DSLIP")),
+                    opt(o.ptr_mut("SED")),
+                    opt(o.ptr_mut("SFD")),
+                    opt(o.ptr_mut("DDTDDT")),
+                    o.ptr_mut("PNEWDT"),
+                    o.ptr_mut("STATEV"),
+                    a.ptr("DGAM"),
+                    a.ptr("TAULM"),
+                    a.ptr("PRESS"),
+                    a.ptr("DPRESS"),
+                    a.ptr("DDPDDH"),
+                    a.ptr("SLIP"),
+                    a.int_ptr("KSTEP"),
+                    a.int_ptr("KINC"),
+                    a.ptr("TIME"),
+                    a.ptr("DTIME"),
+                    a.int_ptr("NOEL"),
+                    ci,
+                    sl,
+                    ms,
+                    a.int_ptr("NPT"),
+                    a.int_ptr("NODE"),
+                    a.int_ptr("NPATCH"),
+                    a.ptr("COORDS"),
+                    a.ptr("RCOORD"),
+                    a.ptr("DROT"),
+                    a.ptr("TEMP"),
+                    a.ptr("PREDEF"),
+                    a.int_ptr("NFDIR"),
+                    a.int_ptr("MCRD"),
+                    a.int_ptr("NPRED"),
+                    a.int_ptr("NSTATV"),
+                    a.ptr("CHRLNGTH"),
+                    a.ptr("PROPS"),
+                    a.int_ptr("NPROPS"),
+                    ci_len,
+                    sl_len,
+                    ms_len,
+                )
+            };
+        })?;
         self.check_outputs(&out)?;
         Ok(out)
     }
