@@ -25,6 +25,8 @@ pub enum Len {
     Times(usize, &'static str),
     /// The count named, squared (`ALOCALDIR(MCRD,MCRD)`).
     Square(&'static str),
+    /// The product of the two counts named (`fieldAvg(nBlock,nFields)`).
+    Product(&'static str, &'static str),
 }
 
 /// A scalar.
@@ -91,6 +93,7 @@ impl Args {
             Len::Fixed(k) => k,
             Len::Times(k, count) => k * self.len_of(count),
             Len::Square(count) => self.len_of(count) * self.len_of(count),
+            Len::Product(a, b) => self.len_of(a) * self.len_of(b),
         }
     }
 
