@@ -168,8 +168,8 @@ fn gapcon_checker_accepts_every_configured_law() {
     // The gapcon target found nothing; this proves its check passes on good calls of each law.
     for (i, name) in gapcon_case::NAMES.iter().enumerate() {
         let mut case = gapcon_case::GapconCase::decode(&[i as u8]);
-        case.d = [1e-4, 50.0];
-        case.temp = [300.0, 290.0];
+        case.args["D"] = vec![1e-4, 50.0];
+        case.args["TEMP"] = vec![300.0, 290.0];
         let k = case.check().unwrap_or_else(|e| panic!("{name}: {e}"));
         if *name == "NONE" {
             assert_eq!(k, 0.0);
