@@ -1,13 +1,12 @@
 //! What every entry point owes its host, checked the same way by every case: the message of a
-//! call ([`last_error`]), the input arguments left alone ([`input_bits`], [`Names`]), what it
-//! wrote ([`UNWRITTEN`]), and for the Abaqus routines that refuse by lowering `PNEWDT` (FRIC,
-//! UINTER) the refusal itself ([`pnewdt_refusal`]).
+//! call ([`last_error`]), the `CHARACTER` arguments ([`Names`]), what it wrote ([`UNWRITTEN`]),
+//! and for the Abaqus routines that refuse by lowering `PNEWDT` (FRIC, UINTER) the refusal
+//! itself ([`pnewdt_refusal`]). That the inputs are left alone is checked once, by
+//! [`super::args::call`].
 
 use std::ffi::{CStr, c_char};
 
 use interfacial::abi::ifl_last_error;
-
-use super::bytes::bits;
 
 /// Written into every output before the call, to see what the call wrote.
 pub const UNWRITTEN: f64 = -7.77e77;
@@ -65,16 +64,6 @@ pub fn last_error() -> String {
     unsafe { CStr::from_ptr(ifl_last_error()) }
         .to_string_lossy()
         .into_owned()
-}
-
-/// The bit patterns of a call's real inputs, scalars then arrays, to see that none was
-/// written (NaN payloads and signed zeros included).
-pub fn input_bits(scalars: &[f64], arrays: &[&[f64]]) -> Vec<u64> {
-    let mut v = bits(scalars);
-    for a in arrays {
-        v.extend(bits(a));
-    }
-    v
 }
 
 /// Whether a call of `routine` (FRIC, UINTER) refused, `PNEWDT` having gone from `before` to
