@@ -11,7 +11,7 @@ use std::ffi::c_int;
 use std::fmt;
 use std::ops::{Index, IndexMut};
 
-use super::bytes::{Bytes, bits, len};
+use super::bytes::{Bytes, len};
 use super::contract::{Names, UNWRITTEN, last_error, unwritten};
 use interfacial::abi::ifl_clear_error;
 
@@ -55,11 +55,51 @@ pub enum Draw {
 /// One row of a decoding table: these arguments, each drawn so, in this order.
 pub type Row = (&'static [&'static str], Draw);
 
+/// Arrays by name, in the order first set.
+#[derive(Clone, PartialEq)]
+struct Table<T>(Vec<(&'static str, Vec<T>)>);
+
+impl<T> Default for Table<T> {
+    fn default() -> Self {
+        Table(Vec::new())
+    }
+}
+
+impl<T> Table<T> {
+    /// Where `name` is. Names are the tables' `&'static str`s, so the same literal usually
+    /// matches by address before any byte is compared.
+    fn slot(&self, name: &str) -> Option<usize> {
+        let same = |n: &&str| std::ptr::eq(*n, name) || *n == name;
+        self.0.iter().position(|(n, _)| same(n))
+    }
+
+    fn get(&self, name: &str, kind: &str) -> &Vec<T> {
+        match self.slot(name) {
+            Some(i) => &self.0[i].1,
+            None => panic!("no {kind} argument {name}"),
+        }
+    }
+
+    fn get_mut(&mut self, name: &str, kind: &str) -> &mut Vec<T> {
+        match self.slot(name) {
+            Some(i) => &mut self.0[i].1,
+            None => panic!("no {kind} argument {name}"),
+        }
+    }
+
+    fn put(&mut self, name: &'static str, values: Vec<T>) {
+        match self.slot(name) {
+            Some(i) => self.0[i].1 = values,
+            None => self.0.push((name, values)),
+        }
+    }
+}
+
 /// The arguments of one call by name: integers and reals, each an array.
 #[derive(Clone, Default)]
 pub struct Args {
-    ints: Vec<(&'static str, Vec<c_int>)>,
-    reals: Vec<(&'static str, Vec<f64>)>,
+    ints: Table<c_int>,
+    reals: Table<f64>,
 }
 
 impl Args {
@@ -104,18 +144,12 @@ impl Args {
 
     /// Sets (or adds) the real array `name`.
     pub fn put(&mut self, name: &'static str, values: Vec<f64>) {
-        match self.reals.iter_mut().find(|(n, _)| *n == name) {
-            Some((_, v)) => *v = values,
-            None => self.reals.push((name, values)),
-        }
+        self.reals.put(name, values);
     }
 
     /// Sets (or adds) the integer array `name`.
     pub fn put_ints(&mut self, name: &'static str, values: Vec<c_int>) {
-        match self.ints.iter_mut().find(|(n, _)| *n == name) {
-            Some((_, v)) => *v = values,
-            None => self.ints.push((name, values)),
-        }
+        self.ints.put(name, values);
     }
 
     /// Sets (or adds) the integer scalar `name`.
@@ -125,18 +159,12 @@ impl Args {
 
     /// The integer array `name`; panics naming it when there is none (a typo in a case).
     pub fn ints(&self, name: &str) -> &Vec<c_int> {
-        match self.ints.iter().find(|(n, _)| *n == name) {
-            Some((_, v)) => v,
-            None => panic!("no integer argument {name}"),
-        }
+        self.ints.get(name, "integer")
     }
 
     /// The integer array `name`, to change it.
     pub fn ints_mut(&mut self, name: &str) -> &mut Vec<c_int> {
-        match self.ints.iter_mut().find(|(n, _)| *n == name) {
-            Some((_, v)) => v,
-            None => panic!("no integer argument {name}"),
-        }
+        self.ints.get_mut(name, "integer")
     }
 
     /// The integer scalar `name`.
@@ -151,7 +179,7 @@ impl Args {
 
     /// Whether a real argument `name` exists.
     pub fn has(&self, name: &str) -> bool {
-        self.reals.iter().any(|(n, _)| *n == name)
+        self.reals.slot(name).is_some()
     }
 
     /// The real argument `name` as the host passes an input.
@@ -201,10 +229,13 @@ impl Args {
     /// included), the two holding the same names in the same order (a clone, or two values
     /// built alike): an input left alone, a call that wrote what was expected.
     pub fn same(&self, other: &Args) -> bool {
-        let reals = |a: &Args| -> Vec<(&str, Vec<u64>)> {
-            a.reals.iter().map(|(n, v)| (*n, bits(v))).collect()
+        let same_bits = |a: &[f64], b: &[f64]| {
+            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
         };
-        self.ints == other.ints && reals(self) == reals(other)
+        self.ints == other.ints
+            && self.reals.0.len() == other.reals.0.len()
+            && (self.reals.0.iter().zip(&other.reals.0))
+                .all(|((n, a), (m, b))| n == m && same_bits(a, b))
     }
 }
 
@@ -235,27 +266,21 @@ impl Index<&str> for Args {
 
     /// The real array `name`; panics naming it when there is none (a typo in a case).
     fn index(&self, name: &str) -> &Vec<f64> {
-        match self.reals.iter().find(|(n, _)| *n == name) {
-            Some((_, v)) => v,
-            None => panic!("no real argument {name}"),
-        }
+        self.reals.get(name, "real")
     }
 }
 
 impl IndexMut<&str> for Args {
     fn index_mut(&mut self, name: &str) -> &mut Vec<f64> {
-        match self.reals.iter_mut().find(|(n, _)| *n == name) {
-            Some((_, v)) => v,
-            None => panic!("no real argument {name}"),
-        }
+        self.reals.get_mut(name, "real")
     }
 }
 
 /// `{NFDIR: [2], …, TAU: [0.5, -0.0], …}`: integers, then reals, each in the order drawn.
 impl fmt::Debug for Args {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let ints = self.ints.iter().map(|(n, v)| (n, v as &dyn fmt::Debug));
-        let reals = self.reals.iter().map(|(n, v)| (n, v as &dyn fmt::Debug));
+        let ints = self.ints.0.iter().map(|(n, v)| (n, v as &dyn fmt::Debug));
+        let reals = self.reals.0.iter().map(|(n, v)| (n, v as &dyn fmt::Debug));
         f.debug_map().entries(ints.chain(reals)).finish()
     }
 }
