@@ -266,18 +266,10 @@ impl VfricCase {
         let null = self.null;
         let unread = null == VfricNull::Unread;
         let ro = |p: *const f64, which: VfricNull| {
-            if null == which || (unread && which == VfricNull::Unread) {
-                std::ptr::null()
-            } else {
-                p
-            }
+            if null == which { std::ptr::null() } else { p }
         };
         let io = |p: *const c_int, which: VfricNull| {
-            if null == which || (unread && which == VfricNull::Unread) {
-                std::ptr::null()
-            } else {
-                p
-            }
+            if null == which { std::ptr::null() } else { p }
         };
         let out = call(&self.args, &self.names, &[], &[], |a, names, o| {
             let guard = vec![UNWRITTEN; GUARD];
@@ -295,10 +287,12 @@ impl VfricCase {
                 // SAFETY: as above.
                 unsafe { o.ptr_mut("statev").add(GUARD) }
             };
-            let u = a.ptr("unread");
-            let (one, two, four): (c_int, c_int, c_int) = (1, 2, 4);
-            let ip = a.int_ptr("unreadInts");
-            let ndir = a.int("nFricDir").saturating_add(1);
+            // The arguments VFRIC does not read, each NULL with `VfricNull::Unread`: the sizes
+            // it does not use (1, 2, 4, nFricDir + 1), and shared buffers for the arrays.
+            let sizes: [c_int; 4] = [1, 2, 4, a.int("nFricDir").saturating_add(1)];
+            let [one, two, four, ndir] = sizes.each_ref().map(|n| io(n, VfricNull::Unread));
+            let ip = io(a.int_ptr("unreadInts"), VfricNull::Unread);
+            let u = ro(a.ptr("unread"), VfricNull::Unread);
             let [surf_int, surf_sec, surf_main] = names.pointers();
             let [int_len, sec_len, main_len] = names.lengths();
             // SAFETY: every array the call reads has exactly the length it declares (nContact,
@@ -309,46 +303,46 @@ impl VfricCase {
                 vfric_(
                     ftan,
                     statev,
-                    io(&one, VfricNull::Unread),
-                    io(&one, VfricNull::Unread),
+                    one,
+                    one,
                     io(a.int_ptr("nContact"), VfricNull::NContact),
-                    io(&four, VfricNull::Unread),
+                    four,
                     io(a.int_ptr("nSlvNod"), VfricNull::NSlvNod),
-                    io(&four, VfricNull::Unread),
+                    four,
                     io(a.int_ptr("nFricDir"), VfricNull::NFricDir),
-                    io(&ndir, VfricNull::Unread),
-                    io(&two, VfricNull::Unread),
+                    ndir,
+                    two,
                     io(a.int_ptr("nProps"), VfricNull::NProps),
-                    io(&one, VfricNull::Unread),
-                    io(&one, VfricNull::Unread),
-                    io(&one, VfricNull::Unread),
-                    io(ip, VfricNull::Unread),
-                    io(ip, VfricNull::Unread),
+                    one,
+                    one,
+                    one,
+                    ip,
+                    ip,
                     io(a.int_ptr("jConSlvid"), VfricNull::JConSlvid),
-                    io(ip, VfricNull::Unread),
-                    ro(u, VfricNull::Unread),
-                    ro(u, VfricNull::Unread),
-                    ro(u, VfricNull::Unread),
+                    ip,
+                    u,
+                    u,
+                    u,
                     surf_int,
                     surf_sec,
                     surf_main,
-                    io(ip, VfricNull::Unread),
-                    ro(u, VfricNull::Unread),
+                    ip,
+                    u,
                     ro(a.ptr("fStickForce"), VfricNull::FStickForce),
-                    ro(u, VfricNull::Unread),
+                    u,
                     ro(a.ptr("fNormal"), VfricNull::FNormal),
-                    ro(u, VfricNull::Unread),
-                    ro(u, VfricNull::Unread),
-                    ro(u, VfricNull::Unread),
-                    ro(u, VfricNull::Unread),
-                    ro(u, VfricNull::Unread),
-                    ro(u, VfricNull::Unread),
+                    u,
+                    u,
+                    u,
+                    u,
+                    u,
+                    u,
                     ro(a.ptr("props"), VfricNull::Props),
                     ro(a.ptr("areaSlv"), VfricNull::AreaSlv),
-                    ro(u, VfricNull::Unread),
-                    ro(u, VfricNull::Unread),
-                    ro(u, VfricNull::Unread),
-                    ro(u, VfricNull::Unread),
+                    u,
+                    u,
+                    u,
+                    u,
                     int_len,
                     sec_len,
                     main_len,
