@@ -93,3 +93,28 @@ pub fn pnewdt_refusal(
     }
     Ok(refused)
 }
+
+/// The Euclidean norm of `v`, formed without overflow or underflow of the squares.
+pub fn norm(v: &[f64]) -> f64 {
+    v.iter().fold(0.0f64, |s, x| s.hypot(*x))
+}
+
+/// The adhesive law's strength parameters (`PROPS(1) = 2`, docs/props.md): μ_d, μ_s, S_a, k_μ
+/// = `PROPS(2)`, `PROPS(3)`, `PROPS(4)`, `PROPS(6)`, each 0 when absent.
+pub fn adhesive_props(props: &[f64]) -> [f64; 4] {
+    [1, 2, 3, 5].map(|i| props.get(i).copied().unwrap_or(0.0))
+}
+
+/// The slip rate an adhesive-law call's strength is judged at (seed 004): the rate the call
+/// reports in `STATEV(2)`, and after a slip (start status `STATEV(3)` = 1) at least the start
+/// rate, since a stick increment keeps the stiffness of the start rate (docs/props.md, the
+/// rate-dependent formulation): its strength is g(start rate). `statev0` on entry, `statev` on
+/// exit.
+pub fn adhesive_rate(statev0: &[f64], statev: &[f64]) -> f64 {
+    let start_rate = if statev0.get(2) == Some(&1.0) {
+        statev0.get(1).copied().unwrap_or(0.0).max(0.0)
+    } else {
+        0.0
+    };
+    statev[1].max(start_rate)
+}

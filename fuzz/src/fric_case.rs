@@ -6,7 +6,7 @@
 
 use super::args::{Args, Draw, Len, ONE, Outputs, Row, call, of};
 use super::bytes::{Bytes, bits, len};
-use super::contract::{Names, pnewdt_refusal};
+use super::contract::{Names, adhesive_props, adhesive_rate, norm, pnewdt_refusal};
 use Draw::{Int, Large, Number, Pick, Reals};
 use interfacial::abi::fric_;
 
@@ -316,7 +316,7 @@ impl FricCase {
         } else {
             (mu * press).min(tau_max)
         };
-        let magnitude = out["TAU"].iter().fold(0.0f64, |s, x| s.hypot(*x));
+        let magnitude = norm(&out["TAU"]);
         // A few ulps, and a few hundred subnormal steps where τ_crit itself is tiny.
         let tol = tau_crit * 1e-12 + 1e-321;
         if magnitude > tau_crit + tol {
@@ -338,30 +338,21 @@ impl FricCase {
     /// `STATEV(2)` (the sliding stress at any rate, and the static strength in stick). S_a is
     /// carried at any pressure, negative included.
     fn check_adhesive_strength(&self, out: &Outputs) -> Result<(), String> {
-        let get = |i: usize| self.prop(i);
-        let (mu_d, mu_s, s_a, k_mu) = (get(1), get(2), get(3), get(5));
-        let (statev0, statev) = (&self.args["STATEV"], &out["STATEV"]);
+        let [mu_d, mu_s, s_a, k_mu] = adhesive_props(&self.args["PROPS"]);
         let dtime = self.args.real("DTIME");
         let p_plus = self.args.real("PRESS").max(0.0);
         // The rate term from STATEV(2), and again from |DSLIP|·(p/Δt): STATEV(2) can be
         // subnormal (few significant bits) while the law's own k_μ/Δt is not.
-        // After a slip (start status 1) a stick increment keeps the stiffness of the start rate
-        // (docs/props.md, the rate-dependent formulation): its strength is g(start rate).
-        let start_rate = if statev0.get(2) == Some(&1.0) {
-            statev0.get(1).copied().unwrap_or(0.0).max(0.0)
-        } else {
-            0.0
-        };
-        let via_state = k_mu * statev[1].max(start_rate) * p_plus;
+        let rate = adhesive_rate(&self.args["STATEV"], &out["STATEV"]);
+        let via_state = k_mu * rate * p_plus;
         let dslip = &out["DSLIP"];
-        let slip = dslip.iter().fold(0.0f64, |s, x| s.hypot(*x));
         let via_slip = if dtime > 0.0 && !dslip.contains(&UNWRITTEN) {
-            k_mu * slip * (p_plus / dtime)
+            k_mu * norm(dslip) * (p_plus / dtime)
         } else {
             0.0
         };
         // A rate saturated at f64::MAX with k_μ > 0: no finite bound to check.
-        if statev[1].max(start_rate) == f64::MAX && k_mu > 0.0 {
+        if rate == f64::MAX && k_mu > 0.0 {
             return Ok(());
         }
         let rate_term = if via_slip.is_finite() {
@@ -370,7 +361,7 @@ impl FricCase {
             via_state
         };
         let strength = mu_d.max(mu_s) * p_plus + rate_term + s_a;
-        let magnitude = out["TAU"].iter().fold(0.0f64, |s, x| s.hypot(*x));
+        let magnitude = norm(&out["TAU"]);
         if magnitude > strength * (1.0 + 1e-12) + 1e-321 {
             return Err(format!(
                 "adhesive law: |TAU| = {magnitude:e} above its strength {strength:e}: {out:?}"

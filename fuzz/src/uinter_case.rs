@@ -10,7 +10,7 @@ use std::ffi::c_int;
 
 use super::args::{Args, Draw, Len, ONE, Outputs, Row, call, of};
 use super::bytes::{Bytes, bits, len};
-use super::contract::{Names, pnewdt_refusal, unwritten};
+use super::contract::{Names, adhesive_props, adhesive_rate, norm, pnewdt_refusal, unwritten};
 use super::gapcon_case::NAMES;
 use Draw::{Int, Large, Number, Pick, Reals};
 use interfacial::abi::uinter_;
@@ -327,7 +327,7 @@ impl UinterCase {
             ));
         }
         let p = stress[0];
-        let tau = stress[1..].iter().fold(0.0f64, |s, x| s.hypot(*x));
+        let tau = norm(&stress[1..]);
         match code {
             4 if p != 0.0 || tau != 0.0 => {
                 return Err(format!("open but STRESS = {stress:?}"));
@@ -370,21 +370,12 @@ impl UinterCase {
     /// |τ| ≤ (max(μ_s, μ_d) + k_μ·Δv)·p⁺ + S_a (seed 004: the static strength in stick, the
     /// rate-dependent strength while sliding, below S_a while bonded, 0 when open).
     fn check_strength(&self, out: &Outputs, tau: f64) -> Result<(), String> {
-        let get = |i: usize| self.prop(i);
-        let (mu_d, mu_s, s_a, k_mu) = (get(1), get(2), get(3), get(5));
+        let [mu_d, mu_s, s_a, k_mu] = adhesive_props(&self.args["PROPS"]);
         let mu = if mu_s > 0.0 { mu_s.max(mu_d) } else { mu_d };
         let p_plus = out["STRESS"][0].max(0.0);
-        let statev0 = &self.args["STATEV"];
         // A slip rate saturated at f64::MAX (a slip over a subnormal DTIME) no longer tells
         // the rate the law used: no bound then for a rate-dependent law.
-        // After a slip (start status 1) a stick increment keeps the stiffness of the start rate
-        // (docs/props.md, the rate-dependent formulation): its strength is g(start rate).
-        let start_rate = if statev0.get(2) == Some(&1.0) {
-            statev0.get(1).copied().unwrap_or(0.0).max(0.0)
-        } else {
-            0.0
-        };
-        let rate = out["STATEV"][1].max(start_rate);
+        let rate = adhesive_rate(&self.args["STATEV"], &out["STATEV"]);
         let bound = if rate == f64::MAX && k_mu > 0.0 {
             f64::INFINITY
         } else {
