@@ -216,9 +216,7 @@ impl FricCoefCase {
             &self.names,
             &[],
             &COEF_OUTPUTS,
-            |a, names, o| {
-                let [ci, sl, ms] = names.pointers();
-                let [ci_len, sl_len, ms_len] = names.lengths();
+            |a, o, [ci, sl, ms], [ci_len, sl_len, ms_len]| {
                 // SAFETY: every array has exactly the length the call declares (2·nBlock,
                 // 40·nBlock, nProps, 6·nBlock, nBlock, nBlock, nBlock·nFields, the hidden name
                 // lengths); scalars one entry; NULL where `null` says so.
@@ -458,7 +456,7 @@ impl ForcedSlidingCase {
             &Names::none(),
             &[],
             &SLIDE_OUTPUTS,
-            |a, _, o| {
+            |a, o, _, _| {
                 // SAFETY: arrays of exactly nprops, nfdir, nfdir² entries; NULL where `null` says
                 // so.
                 let status = unsafe {
