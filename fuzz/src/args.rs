@@ -7,7 +7,7 @@
 //! it. The case files keep only what differs between entry points: the tables, the entries a
 //! table cannot say (`PROPS`, status codes, names), the call and the property checks.
 
-use std::ffi::{c_char, c_int};
+use std::ffi::c_int;
 use std::fmt;
 use std::ops::{Index, IndexMut};
 
@@ -239,27 +239,21 @@ impl Args {
     }
 }
 
-/// One call as every case makes it: `call` gets a copy of `args` to pass as inputs, the
-/// arguments to pass as outputs (`args.outputs(kept, fresh)`), and the three names of a copy of
-/// `names` as the host passes them (pointers, then hidden lengths); afterwards every input must
-/// be bit for bit what it was (never written), and what the call wrote comes back with its
-/// message. `Err` when an input was written.
+/// One call as every case makes it: `call` gets copies of `args` and `names` to pass as inputs
+/// and the arguments to pass as outputs (`args.outputs(kept, fresh)`); afterwards every input
+/// must be bit for bit what it was (never written), and what the call wrote comes back with
+/// its message. `Err` when an input was written.
 pub fn call(
     args: &Args,
     names: &Names,
     kept: &[&'static str],
     fresh: &[(&'static str, Len)],
-    call: impl FnOnce(&Args, &mut Args, [*const c_char; 3], [usize; 3]),
+    call: impl FnOnce(&Args, &Names, &mut Args),
 ) -> Result<Outputs, String> {
     let (inputs, input_names) = (args.clone(), names.clone());
     let mut out = args.outputs(kept, fresh);
     ifl_clear_error();
-    call(
-        &inputs,
-        &mut out,
-        input_names.pointers(),
-        input_names.lengths(),
-    );
+    call(&inputs, &input_names, &mut out);
     let message = last_error();
     if !inputs.same(args) || input_names != *names {
         return Err("an input argument was written".into());

@@ -174,7 +174,7 @@ impl BatchCase {
             }
         };
         let kept = ["lm", "tau", "statev", "pnewdt"];
-        call(&self.args, &Names::none(), &kept, &[], |a, o, _, _| {
+        call(&self.args, &Names::none(), &kept, &[], |a, _, o| {
             for (name, rows) in OUTPUTS {
                 o.put(name, vec![UNWRITTEN; self.entries(rows)]);
             }

@@ -168,62 +168,58 @@ impl FricCase {
     pub fn check(&self) -> Result<Outputs, String> {
         let null = self.null_optional;
         let opt = |p: *mut f64| if null { std::ptr::null_mut() } else { p };
-        let out = call(
-            &self.args,
-            &self.names,
-            &IN_OUT,
-            &OUTPUTS,
-            |a, o, [ci, sl, ms], [ci_len, sl_len, ms_len]| {
-                // SAFETY: every array has exactly the length the call declares (NFDIR, NFDIR², 2·NFDIR,
-                // NSTATV, NPROPS, MCRD, 2·NPRED, the hidden name lengths; scalars one entry).
-                unsafe {
-                    fric_(
-                        o.int_ptr_mut("LM"),
-                        o.ptr_mut("TAU"),
-                        o.ptr_mut("DDTDDG"),
-                        o.ptr_mut("DDTDDP"),
-                        opt(o.ptr_mut("DSLIP")),
-                        opt(o.ptr_mut("SED")),
-                        opt(o.ptr_mut("SFD")),
-                        opt(o.ptr_mut("DDTDDT")),
-                        o.ptr_mut("PNEWDT"),
-                        o.ptr_mut("STATEV"),
-                        a.ptr("DGAM"),
-                        a.ptr("TAULM"),
-                        a.ptr("PRESS"),
-                        a.ptr("DPRESS"),
-                        a.ptr("DDPDDH"),
-                        a.ptr("SLIP"),
-                        a.int_ptr("KSTEP"),
-                        a.int_ptr("KINC"),
-                        a.ptr("TIME"),
-                        a.ptr("DTIME"),
-                        a.int_ptr("NOEL"),
-                        ci,
-                        sl,
-                        ms,
-                        a.int_ptr("NPT"),
-                        a.int_ptr("NODE"),
-                        a.int_ptr("NPATCH"),
-                        a.ptr("COORDS"),
-                        a.ptr("RCOORD"),
-                        a.ptr("DROT"),
-                        a.ptr("TEMP"),
-                        a.ptr("PREDEF"),
-                        a.int_ptr("NFDIR"),
-                        a.int_ptr("MCRD"),
-                        a.int_ptr("NPRED"),
-                        a.int_ptr("NSTATV"),
-                        a.ptr("CHRLNGTH"),
-                        a.ptr("PROPS"),
-                        a.int_ptr("NPROPS"),
-                        ci_len,
-                        sl_len,
-                        ms_len,
-                    )
-                };
-            },
-        )?;
+        let out = call(&self.args, &self.names, &IN_OUT, &OUTPUTS, |a, names, o| {
+            let [ci, sl, ms] = names.pointers();
+            let [ci_len, sl_len, ms_len] = names.lengths();
+            // SAFETY: every array has exactly the length the call declares (NFDIR, NFDIR², 2·NFDIR,
+            // NSTATV, NPROPS, MCRD, 2·NPRED, the hidden name lengths; scalars one entry).
+            unsafe {
+                fric_(
+                    o.int_ptr_mut("LM"),
+                    o.ptr_mut("TAU"),
+                    o.ptr_mut("DDTDDG"),
+                    o.ptr_mut("DDTDDP"),
+                    opt(o.ptr_mut("DSLIP")),
+                    opt(o.ptr_mut("SED")),
+                    opt(o.ptr_mut("SFD")),
+                    opt(o.ptr_mut("DDTDDT")),
+                    o.ptr_mut("PNEWDT"),
+                    o.ptr_mut("STATEV"),
+                    a.ptr("DGAM"),
+                    a.ptr("TAULM"),
+                    a.ptr("PRESS"),
+                    a.ptr("DPRESS"),
+                    a.ptr("DDPDDH"),
+                    a.ptr("SLIP"),
+                    a.int_ptr("KSTEP"),
+                    a.int_ptr("KINC"),
+                    a.ptr("TIME"),
+                    a.ptr("DTIME"),
+                    a.int_ptr("NOEL"),
+                    ci,
+                    sl,
+                    ms,
+                    a.int_ptr("NPT"),
+                    a.int_ptr("NODE"),
+                    a.int_ptr("NPATCH"),
+                    a.ptr("COORDS"),
+                    a.ptr("RCOORD"),
+                    a.ptr("DROT"),
+                    a.ptr("TEMP"),
+                    a.ptr("PREDEF"),
+                    a.int_ptr("NFDIR"),
+                    a.int_ptr("MCRD"),
+                    a.int_ptr("NPRED"),
+                    a.int_ptr("NSTATV"),
+                    a.ptr("CHRLNGTH"),
+                    a.ptr("PROPS"),
+                    a.int_ptr("NPROPS"),
+                    ci_len,
+                    sl_len,
+                    ms_len,
+                )
+            };
+        })?;
         self.check_outputs(&out)?;
         Ok(out)
     }

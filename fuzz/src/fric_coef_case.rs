@@ -216,7 +216,9 @@ impl FricCoefCase {
             &self.names,
             &[],
             &COEF_OUTPUTS,
-            |a, o, [ci, sl, ms], [ci_len, sl_len, ms_len]| {
+            |a, names, o| {
+                let [ci, sl, ms] = names.pointers();
+                let [ci_len, sl_len, ms_len] = names.lengths();
                 // SAFETY: every array has exactly the length the call declares (2·nBlock,
                 // 40·nBlock, nProps, 6·nBlock, nBlock, nBlock, nBlock·nFields, the hidden name
                 // lengths); scalars one entry; NULL where `null` says so.
@@ -456,7 +458,7 @@ impl ForcedSlidingCase {
             &Names::none(),
             &[],
             &SLIDE_OUTPUTS,
-            |a, o, _, _| {
+            |a, _, o| {
                 // SAFETY: arrays of exactly nprops, nfdir, nfdir² entries; NULL where `null` says
                 // so.
                 let status = unsafe {

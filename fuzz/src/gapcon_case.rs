@@ -96,7 +96,9 @@ impl GapconCase {
             &self.names,
             &[],
             &[("AK", Len::Fixed(5))],
-            |a, o, [ci, sl, ms], [ci_len, sl_len, ms_len]| {
+            |a, names, o| {
+                let [ci, sl, ms] = names.pointers();
+                let [ci_len, sl_len, ms_len] = names.lengths();
                 let (kstep, kinc) = (1i32, 1i32);
                 // SAFETY: AK(5), D(2), TEMP(2) and the names with their exact hidden lengths; the
                 // unread arrays have their declared lengths too.

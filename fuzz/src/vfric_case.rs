@@ -271,88 +271,84 @@ impl VfricCase {
         let io = |p: *const c_int, which: VfricNull| {
             if null == which { std::ptr::null() } else { p }
         };
-        let out = call(
-            &self.args,
-            &self.names,
-            &[],
-            &[],
-            |a, o, [surf_int, surf_sec, surf_main], [int_len, sec_len, main_len]| {
-                let guard = vec![UNWRITTEN; GUARD];
-                o.put("fTangential", vec![UNWRITTEN; nf * n + 2 * GUARD]);
-                o.put("statev", [&guard[..], &a["statev"], &guard].concat());
-                let ftan = if null == VfricNull::FTangential {
-                    std::ptr::null_mut()
-                } else {
-                    // SAFETY: GUARD < the array's length.
-                    unsafe { o.ptr_mut("fTangential").add(GUARD) }
-                };
-                let statev = if unread {
-                    std::ptr::null_mut()
-                } else {
-                    // SAFETY: as above.
-                    unsafe { o.ptr_mut("statev").add(GUARD) }
-                };
-                // The arguments VFRIC does not read, each NULL with `VfricNull::Unread`: the sizes
-                // it does not use (1, 2, 4, nFricDir + 1), and shared buffers for the arrays.
-                let sizes: [c_int; 4] = [1, 2, 4, a.int("nFricDir").saturating_add(1)];
-                let [one, two, four, ndir] = sizes.each_ref().map(|n| io(n, VfricNull::Unread));
-                let ip = io(a.int_ptr("unreadInts"), VfricNull::Unread);
-                let u = ro(a.ptr("unread"), VfricNull::Unread);
-                // SAFETY: every array the call reads has exactly the length it declares (nContact,
-                // nSlvNod, nProps, the name's hidden length), fTangential(nFricDir, nContact) and
-                // statev(2, nContact) lie inside their guards; the arrays VFRIC does not read point
-                // to buffers longer than any of them; NULL where `null` says so.
-                unsafe {
-                    vfric_(
-                        ftan,
-                        statev,
-                        one,
-                        one,
-                        io(a.int_ptr("nContact"), VfricNull::NContact),
-                        four,
-                        io(a.int_ptr("nSlvNod"), VfricNull::NSlvNod),
-                        four,
-                        io(a.int_ptr("nFricDir"), VfricNull::NFricDir),
-                        ndir,
-                        two,
-                        io(a.int_ptr("nProps"), VfricNull::NProps),
-                        one,
-                        one,
-                        one,
-                        ip,
-                        ip,
-                        io(a.int_ptr("jConSlvid"), VfricNull::JConSlvid),
-                        ip,
-                        u,
-                        u,
-                        u,
-                        surf_int,
-                        surf_sec,
-                        surf_main,
-                        ip,
-                        u,
-                        ro(a.ptr("fStickForce"), VfricNull::FStickForce),
-                        u,
-                        ro(a.ptr("fNormal"), VfricNull::FNormal),
-                        u,
-                        u,
-                        u,
-                        u,
-                        u,
-                        u,
-                        ro(a.ptr("props"), VfricNull::Props),
-                        ro(a.ptr("areaSlv"), VfricNull::AreaSlv),
-                        u,
-                        u,
-                        u,
-                        u,
-                        int_len,
-                        sec_len,
-                        main_len,
-                    );
-                }
-            },
-        )?;
+        let out = call(&self.args, &self.names, &[], &[], |a, names, o| {
+            let guard = vec![UNWRITTEN; GUARD];
+            o.put("fTangential", vec![UNWRITTEN; nf * n + 2 * GUARD]);
+            o.put("statev", [&guard[..], &a["statev"], &guard].concat());
+            let ftan = if null == VfricNull::FTangential {
+                std::ptr::null_mut()
+            } else {
+                // SAFETY: GUARD < the array's length.
+                unsafe { o.ptr_mut("fTangential").add(GUARD) }
+            };
+            let statev = if unread {
+                std::ptr::null_mut()
+            } else {
+                // SAFETY: as above.
+                unsafe { o.ptr_mut("statev").add(GUARD) }
+            };
+            // The arguments VFRIC does not read, each NULL with `VfricNull::Unread`: the sizes
+            // it does not use (1, 2, 4, nFricDir + 1), and shared buffers for the arrays.
+            let sizes: [c_int; 4] = [1, 2, 4, a.int("nFricDir").saturating_add(1)];
+            let [one, two, four, ndir] = sizes.each_ref().map(|n| io(n, VfricNull::Unread));
+            let ip = io(a.int_ptr("unreadInts"), VfricNull::Unread);
+            let u = ro(a.ptr("unread"), VfricNull::Unread);
+            let [surf_int, surf_sec, surf_main] = names.pointers();
+            let [int_len, sec_len, main_len] = names.lengths();
+            // SAFETY: every array the call reads has exactly the length it declares (nContact,
+            // nSlvNod, nProps, the name's hidden length), fTangential(nFricDir, nContact) and
+            // statev(2, nContact) lie inside their guards; the arrays VFRIC does not read point
+            // to buffers longer than any of them; NULL where `null` says so.
+            unsafe {
+                vfric_(
+                    ftan,
+                    statev,
+                    one,
+                    one,
+                    io(a.int_ptr("nContact"), VfricNull::NContact),
+                    four,
+                    io(a.int_ptr("nSlvNod"), VfricNull::NSlvNod),
+                    four,
+                    io(a.int_ptr("nFricDir"), VfricNull::NFricDir),
+                    ndir,
+                    two,
+                    io(a.int_ptr("nProps"), VfricNull::NProps),
+                    one,
+                    one,
+                    one,
+                    ip,
+                    ip,
+                    io(a.int_ptr("jConSlvid"), VfricNull::JConSlvid),
+                    ip,
+                    u,
+                    u,
+                    u,
+                    surf_int,
+                    surf_sec,
+                    surf_main,
+                    ip,
+                    u,
+                    ro(a.ptr("fStickForce"), VfricNull::FStickForce),
+                    u,
+                    ro(a.ptr("fNormal"), VfricNull::FNormal),
+                    u,
+                    u,
+                    u,
+                    u,
+                    u,
+                    u,
+                    ro(a.ptr("props"), VfricNull::Props),
+                    ro(a.ptr("areaSlv"), VfricNull::AreaSlv),
+                    u,
+                    u,
+                    u,
+                    u,
+                    int_len,
+                    sec_len,
+                    main_len,
+                );
+            }
+        })?;
         let statev = &out["statev"];
         if bits(&statev[GUARD..GUARD + 2 * n]) != bits(&self.args["statev"])
             || statev[..GUARD]
