@@ -66,11 +66,12 @@ impl<T> Default for Table<T> {
 }
 
 impl<T> Table<T> {
-    /// Where `name` is. Names are the tables' `&'static str`s, so the same literal usually
-    /// matches by address before any byte is compared.
+    /// Where `name` is. Names are `&'static str` literals, and the same literal is mostly the
+    /// same object: it is looked for by address first, and only then by its bytes, so a lookup
+    /// seldom compares strings (each string comparison is also a hook in the fuzzer).
     fn slot(&self, name: &str) -> Option<usize> {
-        let same = |n: &&str| std::ptr::eq(*n, name) || *n == name;
-        self.0.iter().position(|(n, _)| same(n))
+        let names = || self.0.iter().map(|(n, _)| *n);
+        (names().position(|n| std::ptr::eq(n, name))).or_else(|| names().position(|n| n == name))
     }
 
     fn get(&self, name: &str, kind: &str) -> &Vec<T> {
@@ -93,6 +94,13 @@ impl<T> Table<T> {
             None => self.0.push((name, values)),
         }
     }
+
+    /// Adds `name`, which a table draws or a call writes once (checked in the tests' debug
+    /// builds): no search, so a decoder does not compare every new name with all before it.
+    fn add(&mut self, name: &'static str, values: Vec<T>) {
+        debug_assert!(self.slot(name).is_none(), "argument {name} twice");
+        self.0.push((name, values));
+    }
 }
 
 /// The arguments of one call by name: integers and reals, each an array.
@@ -114,14 +122,14 @@ impl Args {
         for &(names, how) in table {
             for &name in names {
                 match how {
-                    Draw::Pick(list) => self.set_int(name, b.pick(list)),
-                    Draw::Number => self.set_int(name, c_int::from(b.u16())),
-                    Draw::Int(v) => self.set_int(name, v),
+                    Draw::Pick(list) => self.ints.add(name, vec![b.pick(list)]),
+                    Draw::Number => self.ints.add(name, vec![c_int::from(b.u16())]),
+                    Draw::Int(v) => self.ints.add(name, vec![v]),
                     Draw::Reals(n) => {
                         let n = self.count(n);
-                        self.put(name, b.reals(n));
+                        self.reals.add(name, b.reals(n));
                     }
-                    Draw::Large => self.put(name, vec![b.large()]),
+                    Draw::Large => self.reals.add(name, vec![b.large()]),
                 }
             }
         }
@@ -208,13 +216,13 @@ impl Args {
         let mut out = Args::new();
         for &name in kept {
             if self.has(name) {
-                out.put(name, self[name].clone());
+                out.reals.add(name, self[name].clone());
             } else {
-                out.put_ints(name, self.ints(name).clone());
+                out.ints.add(name, self.ints(name).clone());
             }
         }
         for &(name, n) in fresh {
-            out.put(name, vec![UNWRITTEN; self.count(n)]);
+            out.reals.add(name, vec![UNWRITTEN; self.count(n)]);
         }
         out
     }
