@@ -9,10 +9,11 @@
 mod fuzz_cases;
 use fuzz_cases::{batch_case, gapcon_case, uinter_case};
 
-use batch_case::{BatchCase, BatchOutputs};
+use batch_case::BatchCase;
+use fuzz_cases::args::Outputs;
 use interfacial::abi::IflStatus;
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
-use uinter_case::{UinterCase, UinterOutputs};
+use uinter_case::UinterCase;
 
 const BAD: [f64; 3] = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
 
@@ -38,18 +39,18 @@ fn uinter_law() -> AdhesiveBuilder {
 fn uinter_base() -> UinterCase {
     gapcon_case::setup();
     let mut c = UinterCase::decode(&[]);
-    c.ndir = 3;
-    c.nstatv = 5;
-    c.nprops = 13;
-    c.props = uinter_law().build();
-    c.stress = vec![20.0, 1.0, 2.0];
-    c.statev = vec![0.1, 0.01, 1.0, 7.0, 8.0];
-    c.rdisp = vec![2e-3, 0.5, 0.5];
-    c.drdisp = vec![0.0, 0.03, -0.04];
-    c.temp = vec![300.0, 20.0];
-    c.dtime = 0.5;
-    c.chrlngth = 1.0;
-    c.pnewdt = 1e36;
+    c.args.set_int("NDIR", 3);
+    c.args.set_int("NSTATV", 5);
+    c.args.set_int("NPROPS", 13);
+    c.args["PROPS"] = uinter_law().build();
+    c.args["STRESS"] = vec![20.0, 1.0, 2.0];
+    c.args["STATEV"] = vec![0.1, 0.01, 1.0, 7.0, 8.0];
+    c.args["RDISP"] = vec![2e-3, 0.5, 0.5];
+    c.args["DRDISP"] = vec![0.0, 0.03, -0.04];
+    c.args["TEMP"] = vec![300.0, 20.0];
+    c.args["DTIME"][0] = 0.5;
+    c.args["CHRLNGTH"][0] = 1.0;
+    c.args["PNEWDT"][0] = 1e36;
     let mut name = b"PTAB".to_vec();
     name.resize(80, b' ');
     c.names.interaction = name;
@@ -57,13 +58,13 @@ fn uinter_base() -> UinterCase {
     c
 }
 
-fn run(c: &UinterCase) -> UinterOutputs {
+fn run(c: &UinterCase) -> Outputs {
     c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"))
 }
 
 fn refused(c: &UinterCase, needle: &str) {
     let out = run(c);
-    assert_eq!(out.pnewdt, 0.25, "not refused ({needle}): {c:?}");
+    assert_eq!(out.real("PNEWDT"), 0.25, "not refused ({needle}): {c:?}");
     assert!(
         out.message.contains("UINTER")
             && out.message.contains("'PTAB'")
@@ -79,16 +80,16 @@ fn uinter_non_finite_in_every_real_argument() {
     let base = uinter_base();
     let clean = run(&base);
     assert!(clean.message.is_empty(), "{}", clean.message);
-    assert_eq!(clean.statev[2], 1.0, "the base point slides");
-    assert!(clean.flux[0] != 0.0, "the base point conducts");
+    assert_eq!(clean["STATEV"][2], 1.0, "the base point slides");
+    assert!(clean["FLUX"][0] != 0.0, "the base point conducts");
     type Field = fn(&mut UinterCase) -> &mut Vec<f64>;
     // Read arrays: (name, field, entries read, message needle).
     let read: [(&str, Field, &[usize], &str); 5] = [
-        ("STRESS", |c| &mut c.stress, &[0, 1, 2], "STRESS"),
-        ("RDISP", |c| &mut c.rdisp, &[0], "RDISP(1)"),
-        ("DRDISP", |c| &mut c.drdisp, &[1, 2], "DRDISP"),
-        ("STATEV", |c| &mut c.statev, &[0, 1], "STATEV"),
-        ("TEMP", |c| &mut c.temp, &[0, 1], "TEMP"),
+        ("STRESS", |c| &mut c.args["STRESS"], &[0, 1, 2], "STRESS"),
+        ("RDISP", |c| &mut c.args["RDISP"], &[0], "RDISP(1)"),
+        ("DRDISP", |c| &mut c.args["DRDISP"], &[1, 2], "DRDISP"),
+        ("STATEV", |c| &mut c.args["STATEV"], &[0, 1], "STATEV"),
+        ("TEMP", |c| &mut c.args["TEMP"], &[0, 1], "TEMP"),
     ];
     for (name, field, entries, needle) in read {
         for &i in entries {
@@ -102,27 +103,27 @@ fn uinter_non_finite_in_every_real_argument() {
     }
     for v in BAD {
         let mut c = base.clone();
-        c.dtime = v;
+        c.args["DTIME"][0] = v;
         refused(&c, "DTIME");
         let mut c = base.clone();
-        c.chrlngth = v;
+        c.args["CHRLNGTH"][0] = v;
         refused(&c, "CHRLNGTH");
         for k in 0..13 {
             let mut c = base.clone();
-            c.props[k] = v;
+            c.args["PROPS"][k] = v;
             refused(&c, &format!("PROPS({})", k + 1));
         }
     }
     // Not read: no effect at all (every output bit identical to the clean call).
     let unread: [Field; 8] = [
-        |c| &mut c.dtemp,
-        |c| &mut c.predef,
-        |c| &mut c.dpred,
-        |c| &mut c.time,
-        |c| &mut c.coords,
-        |c| &mut c.alocaldir,
-        |c| &mut c.drot,
-        |c| &mut c.rdisp,
+        |c| &mut c.args["DTEMP"],
+        |c| &mut c.args["PREDEF"],
+        |c| &mut c.args["DPRED"],
+        |c| &mut c.args["TIME"],
+        |c| &mut c.args["COORDS"],
+        |c| &mut c.args["ALOCALDIR"],
+        |c| &mut c.args["DROT"],
+        |c| &mut c.args["RDISP"],
     ];
     for (n, field) in unread.into_iter().enumerate() {
         let len = field(&mut base.clone()).len();
@@ -135,16 +136,16 @@ fn uinter_non_finite_in_every_real_argument() {
                 field(&mut c)[i] = v;
                 let out = run(&c);
                 assert!(out.message.is_empty(), "{}", out.message);
-                let bits = |o: &UinterOutputs| format!("{o:?}");
+                let bits = |o: &Outputs| format!("{o:?}");
                 assert_eq!(bits(&out), bits(&clean), "unread argument {n}[{i}] = {v}");
             }
         }
     }
     for v in BAD {
         for set in [
-            (|c: &mut UinterCase, v| c.freqr = v) as fn(&mut UinterCase, f64),
-            |c, v| c.area = v,
-            |c, v| c.drdisp[0] = v,
+            (|c: &mut UinterCase, v| c.args["FREQR"][0] = v) as fn(&mut UinterCase, f64),
+            |c, v| c.args["AREA"][0] = v,
+            |c, v| c.args["DRDISP"][0] = v,
         ] {
             let mut c = base.clone();
             set(&mut c, v);
@@ -153,9 +154,9 @@ fn uinter_non_finite_in_every_real_argument() {
     }
     // TEMP is not read without conduction.
     let mut c = base.clone();
-    c.props = uinter_law().conductance(false).build();
+    c.args["PROPS"] = uinter_law().conductance(false).build();
     let plain = run(&c);
-    c.temp = vec![f64::NAN, f64::INFINITY];
+    c.args["TEMP"] = vec![f64::NAN, f64::INFINITY];
     assert_eq!(format!("{:?}", run(&c)), format!("{plain:?}"));
 }
 
@@ -165,17 +166,17 @@ fn uinter_sizes_and_codes_out_of_range() {
     let base = uinter_base();
     for ndir in [-1, 0, 1, 4] {
         let mut c = base.clone();
-        c.ndir = ndir;
+        c.args.set_int("NDIR", ndir);
         let n = usize::try_from(ndir).unwrap_or(0);
-        c.stress.resize(n, 0.0);
-        c.rdisp.resize(n, 0.0);
-        c.drdisp.resize(n, 0.0);
+        c.args["STRESS"].resize(n, 0.0);
+        c.args["RDISP"].resize(n, 0.0);
+        c.args["DRDISP"].resize(n, 0.0);
         refused(&c, &format!("NDIR = {ndir}"));
     }
     for nstatv in [-1, 0, 2] {
         let mut c = base.clone();
-        c.nstatv = nstatv;
-        c.statev.truncate(usize::try_from(nstatv).unwrap_or(0));
+        c.args.set_int("NSTATV", nstatv);
+        c.args["STATEV"].truncate(usize::try_from(nstatv).unwrap_or(0));
         refused(&c, &format!("NSTATV = {nstatv}"));
     }
     for (nprops, needle) in [
@@ -185,19 +186,19 @@ fn uinter_sizes_and_codes_out_of_range() {
         (9, "PROPS(10)"),
     ] {
         let mut c = base.clone();
-        c.nprops = nprops;
-        c.props.truncate(usize::try_from(nprops).unwrap_or(0));
+        c.args.set_int("NPROPS", nprops);
+        c.args["PROPS"].truncate(usize::try_from(nprops).unwrap_or(0));
         refused(&c, needle);
     }
     for code in [0.0, 1.0, 3.0, 1.5, -2.0] {
         let mut c = base.clone();
-        c.props[0] = code;
+        c.args["PROPS"][0] = code;
         refused(&c, "PROPS(1)");
     }
     // A non-zero entry past the law's 13.
     let mut c = base.clone();
-    c.nprops = 14;
-    c.props.push(1.0);
+    c.args.set_int("NPROPS", 14);
+    c.args["PROPS"].push(1.0);
     refused(&c, "PROPS(14)");
     // Parameters out of range (rows 44-46 list them; one of each kind here).
     for (k, v) in [
@@ -211,7 +212,7 @@ fn uinter_sizes_and_codes_out_of_range() {
         (12, 1.5),
     ] {
         let mut c = base.clone();
-        c.props[k] = v;
+        c.args["PROPS"][k] = v;
         refused(&c, &format!("PROPS({})", k + 1));
     }
 }
@@ -222,13 +223,13 @@ fn uinter_sizes_and_codes_out_of_range() {
 fn uinter_zero_or_negative_dtime() {
     for dt in [0.0, -1.0] {
         let mut c = uinter_base();
-        c.dtime = dt;
+        c.args["DTIME"][0] = dt;
         refused(&c, "DTIME");
         // No rate law and no frictional heat: nothing reads DTIME.
-        c.props = uinter_law().kmu(0.0).vhalf(0.0).heat_fraction(0.0).build();
+        c.args["PROPS"] = uinter_law().kmu(0.0).vhalf(0.0).heat_fraction(0.0).build();
         let out = run(&c);
         assert!(out.message.is_empty(), "{}", out.message);
-        assert_eq!(out.statev[1], 0.0);
+        assert_eq!(out["STATEV"][1], 0.0);
     }
 }
 
@@ -254,7 +255,7 @@ fn uinter_names_of_every_shape() {
         let mut c = base.clone();
         c.names.interaction = name;
         let out = run(&c);
-        assert_eq!(out.pnewdt, 0.25);
+        assert_eq!(out.real("PNEWDT"), 0.25);
         assert!(
             out.message.contains("UINTER: interaction ''")
                 && out.message.contains("[interactions."),
@@ -269,12 +270,12 @@ fn uinter_names_of_every_shape() {
 #[test]
 fn uinter_apart_is_not_an_error() {
     let mut c = uinter_base();
-    c.rdisp[0] = -1.0;
+    c.args["RDISP"][0] = -1.0;
     let out = run(&c);
     assert!(out.message.is_empty());
-    assert_eq!(out.statev[2], 4.0);
-    assert_eq!(out.stress, vec![0.0; 3]);
-    assert_eq!(out.lopenclose, 0);
+    assert_eq!(out["STATEV"][2], 4.0);
+    assert_eq!(out["STRESS"], vec![0.0; 3]);
+    assert_eq!(out.int("LOPENCLOSE"), 0);
 }
 
 // ---- ifl_fric_batch --------------------------------------------------------------------
@@ -290,15 +291,15 @@ fn batch_base() -> BatchCase {
     let mut c = BatchCase::decode(&[]);
     c.npoints = 4;
     c.ld = 6;
-    c.nfdir = 2;
-    c.nstatv = 4;
-    c.props = batch_law().build_first(7);
-    c.dtime = 0.5;
-    c.pnewdt = 1e36;
+    c.args.set_int("nfdir", 2);
+    c.args.set_int("nstatv", 4);
+    c.args["props"] = batch_law().build_first(7);
+    c.args["dtime"][0] = 0.5;
+    c.args["pnewdt"][0] = 1e36;
     c.null_optional = false;
     c.null_taulm = false;
     c.null_required = None;
-    c.lm = vec![0, 0, 0, 1, 0, 0];
+    c.args.put_ints("lm", vec![0, 0, 0, 1, 0, 0]);
     let ld = c.ld;
     let fill = |rows: usize, f: &dyn Fn(usize, usize) -> f64| {
         let mut v = vec![-1.0; ld * (rows - 1) + 4];
@@ -309,19 +310,19 @@ fn batch_base() -> BatchCase {
         }
         v
     };
-    c.tau = fill(2, &|r, i| 0.1 * (r + i) as f64);
-    c.dgam = fill(2, &|r, i| {
+    c.args["tau"] = fill(2, &|r, i| 0.1 * (r + i) as f64);
+    c.args["dgam"] = fill(2, &|r, i| {
         1e-3 * (1.0 + i as f64) * if r == 0 { 1.0 } else { -0.5 }
     });
-    c.taulm = fill(2, &|r, _| 0.5 + r as f64);
-    c.statev = fill(4, &|r, _| [0.1, 0.0, 0.0, 9.0][r]);
-    c.press = fill(1, &|_, i| 10.0 + i as f64);
-    c.dpress = fill(1, &|_, _| 0.1);
-    c.chrlngth = fill(1, &|_, _| 1.0);
+    c.args["taulm"] = fill(2, &|r, _| 0.5 + r as f64);
+    c.args["statev"] = fill(4, &|r, _| [0.1, 0.0, 0.0, 9.0][r]);
+    c.args["press"] = fill(1, &|_, i| 10.0 + i as f64);
+    c.args["dpress"] = fill(1, &|_, _| 0.1);
+    c.args["chrlngth"] = fill(1, &|_, _| 1.0);
     c
 }
 
-fn run_batch(c: &BatchCase) -> BatchOutputs {
+fn run_batch(c: &BatchCase) -> Outputs {
     c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"))
 }
 
@@ -331,16 +332,21 @@ fn run_batch(c: &BatchCase) -> BatchOutputs {
 fn batch_non_finite_in_every_real_argument() {
     let base = batch_base();
     let clean = run_batch(&base);
-    assert_eq!(clean.status, IflStatus::Ok as i32, "{}", clean.message);
+    assert_eq!(
+        clean.int("status"),
+        IflStatus::Ok as i32,
+        "{}",
+        clean.message
+    );
     type Field = fn(&mut BatchCase) -> &mut Vec<f64>;
     let fields: [(Field, usize, usize, &str); 7] = [
-        (|c| &mut c.tau, 2, 1, "TAU"),
-        (|c| &mut c.dgam, 2, 1, "DGAM"),
-        (|c| &mut c.taulm, 2, 3, "TAULM"),
-        (|c| &mut c.statev, 2, 1, "STATEV"),
-        (|c| &mut c.press, 1, 1, "PRESS"),
-        (|c| &mut c.dpress, 1, 1, "DPRESS"),
-        (|c| &mut c.chrlngth, 1, 1, "CHRLNGTH"),
+        (|c| &mut c.args["tau"], 2, 1, "TAU"),
+        (|c| &mut c.args["dgam"], 2, 1, "DGAM"),
+        (|c| &mut c.args["taulm"], 2, 3, "TAULM"),
+        (|c| &mut c.args["statev"], 2, 1, "STATEV"),
+        (|c| &mut c.args["press"], 1, 1, "PRESS"),
+        (|c| &mut c.args["dpress"], 1, 1, "DPRESS"),
+        (|c| &mut c.args["chrlngth"], 1, 1, "CHRLNGTH"),
     ];
     for (field, rows, point, needle) in fields {
         for r in 0..rows {
@@ -348,7 +354,7 @@ fn batch_non_finite_in_every_real_argument() {
                 let mut c = base.clone();
                 let clean = if needle == "TAULM" {
                     // TAULM is read only by exact stick (PROPS(7) = 1) with LM = 1 on entry.
-                    c.props = batch_law().stick(1.0).build_first(7);
+                    c.args["props"] = batch_law().stick(1.0).build_first(7);
                     run_batch(&c)
                 } else {
                     clean.clone()
@@ -357,12 +363,12 @@ fn batch_non_finite_in_every_real_argument() {
                 field(&mut c)[point + r * ld] = v;
                 let out = run_batch(&c);
                 assert_eq!(
-                    out.status,
+                    out.int("status"),
                     IflStatus::BadInput as i32,
                     "{needle}: {}",
                     out.message
                 );
-                assert_eq!(out.pnewdt, 0.25);
+                assert_eq!(out.real("pnewdt"), 0.25);
                 assert!(
                     out.message.contains(&format!("batch point {point}"))
                         && out.message.contains(needle),
@@ -370,9 +376,9 @@ fn batch_non_finite_in_every_real_argument() {
                     out.message
                 );
                 for i in (0..4).filter(|i| *i != point) {
-                    assert_eq!(out.lm[i], clean.lm[i]);
-                    assert_eq!(out.tau[i].to_bits(), clean.tau[i].to_bits());
-                    assert_eq!(out.statev[i].to_bits(), clean.statev[i].to_bits());
+                    assert_eq!(out.args.ints("lm")[i], clean.args.ints("lm")[i]);
+                    assert_eq!(out["tau"][i].to_bits(), clean["tau"][i].to_bits());
+                    assert_eq!(out["statev"][i].to_bits(), clean["statev"][i].to_bits());
                 }
             }
         }
@@ -380,16 +386,16 @@ fn batch_non_finite_in_every_real_argument() {
     // DTIME is shared: every point fails. PROPS entries: the whole batch is refused.
     for v in BAD {
         let mut c = base.clone();
-        c.dtime = v;
+        c.args["dtime"][0] = v;
         let out = run_batch(&c);
-        assert_eq!(out.status, IflStatus::BadInput as i32);
+        assert_eq!(out.int("status"), IflStatus::BadInput as i32);
         assert!(out.message.contains("DTIME"), "{}", out.message);
         for k in 0..7 {
             let mut c = base.clone();
-            c.props[k] = v;
+            c.args["props"][k] = v;
             let out = run_batch(&c);
             assert_eq!(
-                out.status,
+                out.int("status"),
                 IflStatus::BadParameter as i32,
                 "PROPS({}) = {v}",
                 k + 1
@@ -417,55 +423,49 @@ fn batch_sizes_out_of_range() {
         (2, 4, 3, "ld = 3 is less than npoints = 4"),
     ] {
         let mut c = base.clone();
-        c.nfdir = nfdir;
-        c.nstatv = nstatv;
+        c.args.set_int("nfdir", nfdir);
+        c.args.set_int("nstatv", nstatv);
         c.ld = ld;
         let out = run_batch(&c);
-        assert_eq!(out.status, IflStatus::BadParameter as i32);
+        assert_eq!(out.int("status"), IflStatus::BadParameter as i32);
         assert!(out.message.contains(needle), "{needle}: {}", out.message);
     }
     for nprops in [0usize, 1] {
         let mut c = base.clone();
-        c.props.truncate(nprops);
+        c.args["props"].truncate(nprops);
         let out = run_batch(&c);
         assert_eq!(
-            out.status,
+            out.int("status"),
             IflStatus::BadParameter as i32,
             "NPROPS = {nprops}"
         );
     }
     // The adhesive law has no batch kernel.
     let mut c = base.clone();
-    c.props = AdhesiveBuilder::new().coeff(0.3).sa(1.0).build_first(4);
+    c.args["props"] = AdhesiveBuilder::new().coeff(0.3).sa(1.0).build_first(4);
     let out = run_batch(&c);
-    assert_eq!(out.status, IflStatus::BadParameter as i32);
+    assert_eq!(out.int("status"), IflStatus::BadParameter as i32);
     // LM out of range: that point fails.
     for lm in [-1, 3] {
         let mut c = base.clone();
-        c.lm[2] = lm;
+        c.args.ints_mut("lm")[2] = lm;
         let out = run_batch(&c);
-        assert_eq!(out.status, IflStatus::BadInput as i32);
+        assert_eq!(out.int("status"), IflStatus::BadInput as i32);
         assert!(out.message.contains("batch point 2") && out.message.contains("LM"));
     }
     // Empty batch.
     let mut c = base.clone();
     c.npoints = 0;
     c.ld = 0;
-    for v in [
-        &mut c.tau,
-        &mut c.dgam,
-        &mut c.taulm,
-        &mut c.statev,
-        &mut c.press,
-        &mut c.dpress,
-        &mut c.chrlngth,
+    for name in [
+        "tau", "dgam", "taulm", "statev", "press", "dpress", "chrlngth",
     ] {
-        v.clear();
+        c.args[name].clear();
     }
-    c.lm.clear();
+    c.args.ints_mut("lm").clear();
     let out = run_batch(&c);
-    assert_eq!(out.status, IflStatus::Ok as i32);
-    assert_eq!(out.pnewdt, 1e36);
+    assert_eq!(out.int("status"), IflStatus::Ok as i32);
+    assert_eq!(out.real("pnewdt"), 1e36);
 }
 
 /// One point through `ifl_fric_batch` on scratch arrays of 4 entries (`NPROPS` 5, `NSTATV` 3,
@@ -530,7 +530,7 @@ fn batch_null_pointers() {
         let mut c = base.clone();
         c.null_required = Some(k);
         let out = run_batch(&c);
-        assert_eq!(out.status, IflStatus::BadInput as i32, "{name}");
+        assert_eq!(out.int("status"), IflStatus::BadInput as i32, "{name}");
         assert!(
             out.message.contains(&format!("{name} is a NULL pointer")),
             "{}",
@@ -543,7 +543,7 @@ fn batch_null_pointers() {
     let mut c = base.clone();
     c.null_taulm = true;
     let out = run_batch(&c);
-    assert_eq!(out.status, IflStatus::BadInput as i32);
+    assert_eq!(out.int("status"), IflStatus::BadInput as i32);
     assert!(
         out.message.contains("batch point 3") && out.message.contains("LM = 1 on entry but TAULM")
     );

@@ -11,9 +11,8 @@ mod laws;
 use fuzz_cases::fric_coef_case;
 use laws::every_mu_law;
 
-use fric_coef_case::{
-    CoefNull, CoefOutputs, ForcedSlidingCase, FricCoefCase, SlideNull, SlideOutputs,
-};
+use fric_coef_case::{CoefNull, Coefficients, ForcedSlidingCase, FricCoefCase, SlideNull};
+use fuzz_cases::args::{Args, Outputs};
 use interfacial::abi::IflStatus;
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 
@@ -50,12 +49,12 @@ fn block(props: &[f64]) -> FricCoefCase {
     )
 }
 
-fn run(case: &FricCoefCase) -> CoefOutputs {
+fn run(case: &FricCoefCase) -> Outputs {
     case.check()
         .unwrap_or_else(|e| panic!("{e}\ninput: {case:?}"))
 }
 
-fn refused(case: &FricCoefCase, needle: &str) -> CoefOutputs {
+fn refused(case: &FricCoefCase, needle: &str) -> Outputs {
     let out = run(case);
     let prefix = "interfacial: FRIC_COEF: interaction 'SI1' (block): ";
     assert_message(&out.message, prefix, needle);
@@ -71,15 +70,19 @@ fn assert_message(message: &str, prefix: &str, needle: &str) {
     assert!(message.contains(needle), "{message:?} lacks {needle:?}");
 }
 
-fn accepted(case: &FricCoefCase) -> CoefOutputs {
+fn accepted(case: &FricCoefCase) -> Outputs {
     let out = run(case);
     assert!(out.message.is_empty(), "refused: {}", out.message);
     out
 }
 
-fn same_bits(a: &CoefOutputs, b: &CoefOutputs) -> bool {
-    let bits = |o: &CoefOutputs| -> Vec<u64> {
-        o.coef.iter().chain(&o.deriv).map(|x| x.to_bits()).collect()
+fn same_bits(a: &Outputs, b: &Outputs) -> bool {
+    let bits = |o: &Outputs| -> Vec<u64> {
+        o["fCoef"]
+            .iter()
+            .chain(&o["fCoefDeriv"])
+            .map(|x| x.to_bits())
+            .collect()
     };
     bits(a) == bits(b)
 }
@@ -90,7 +93,7 @@ fn fric_coef_bad_slip_rate_is_refused() {
     for k in 0..3 {
         for x in BAD.into_iter().chain([-1e-300, -2.0]) {
             let mut c = block(&all_laws());
-            c.slip[k] = x;
+            c.args["slipData"][k] = x;
             refused(&c, &format!("slipData({}, 1) = ", k + 1));
         }
     }
@@ -102,7 +105,7 @@ fn fric_coef_non_finite_pressure_is_refused() {
     for k in 0..3 {
         for x in BAD {
             let mut c = block(&all_laws());
-            c.pressure[k] = x;
+            c.args["pressure"][k] = x;
             refused(&c, &format!("pressure({}) = ", k + 1));
         }
     }
@@ -118,10 +121,10 @@ fn fric_coef_non_finite_temperature() {
     for k in 0..3 {
         for x in BAD {
             let mut c = block(&all_laws());
-            c.temp[k] = x;
+            c.args["tempAvg"][k] = x;
             refused(&c, &format!("tempAvg({}) = ", k + 1));
             let mut c = block(&constant);
-            c.temp[k] = x;
+            c.args["tempAvg"][k] = x;
             assert!(same_bits(&accepted(&c), &clean));
         }
     }
@@ -134,12 +137,12 @@ fn fric_coef_unread_reals_have_no_effect() {
     let clean = accepted(&block(&all_laws()));
     for x in BAD {
         let mut c = block(&all_laws());
-        for v in &mut c.slip[3..] {
+        for v in &mut c.args["slipData"][3..] {
             *v = x;
         }
-        c.rdata = vec![x; 3];
-        c.nfields = 2;
-        c.field = vec![x; 6];
+        c.args["rData"] = vec![x; 3];
+        c.args.set_int("nFields", 2);
+        c.args["fieldAvg"] = vec![x; 6];
         assert!(same_bits(&accepted(&c), &clean));
     }
 }
@@ -166,7 +169,11 @@ fn fric_coef_null_pointers() {
         c.null = null;
         let out = refused(&c, &format!("{argument} is a NULL pointer"));
         if null == NBlock {
-            assert!(out.coef.iter().all(|x| *x == fric_coef_case::UNWRITTEN));
+            assert!(
+                out["fCoef"]
+                    .iter()
+                    .all(|x| *x == fuzz_cases::contract::UNWRITTEN)
+            );
         }
     }
     let mut constant = all_laws();
@@ -185,11 +192,11 @@ fn fric_coef_null_pointers() {
 fn fric_coef_block_sizes() {
     let mut c = FricCoefCase::block(&all_laws(), &[], &[], &[]);
     accepted(&c);
-    c.props[1] = -0.5;
+    c.args["props"][1] = -0.5;
     refused(&c, "PROPS(2)");
     for n in [-1, -1000, i32::MIN] {
         let mut c = FricCoefCase::block(&all_laws(), &[], &[], &[]);
-        c.nblock = n;
+        c.args.set_int("nBlock", n);
         refused(&c, &format!("nBlock = {n} is negative"));
     }
 }
@@ -199,7 +206,7 @@ fn fric_coef_block_sizes() {
 fn fric_coef_temperature_law_needs_ntemp() {
     for nt in [0, -1] {
         let mut c = block(&all_laws());
-        c.ntemp = nt;
+        c.args.set_int("nTemp", nt);
         refused(&c, &format!("nTemp = {nt}"));
     }
 }
@@ -209,13 +216,13 @@ fn fric_coef_temperature_law_needs_ntemp() {
 #[test]
 fn fric_coef_bad_props() {
     let mut short = block(&[1.0]);
-    short.nprops = 1;
+    short.args.set_int("nProps", 1);
     refused(&short, "NPROPS");
     let mut none = block(&[]);
-    none.nprops = 0;
+    none.args.set_int("nProps", 0);
     refused(&none, "NPROPS");
     let mut negative = block(&[]);
-    negative.nprops = -3;
+    negative.args.set_int("nProps", -3);
     refused(&negative, "nProps = -3 is negative");
     for i in 0..13 {
         for x in BAD {
@@ -257,7 +264,7 @@ fn fric_coef_bad_props() {
 #[test]
 fn fric_coef_overflow_is_refused() {
     let mut c = block(&all_laws());
-    c.temp[1] = -1e6;
+    c.args["tempAvg"][1] = -1e6;
     refused(&c, "overflowed");
 }
 
@@ -278,25 +285,30 @@ fn fric_coef_negative_pressure_uses_zero() {
 // ---- ifl_forced_sliding ----------------------------------------------------------------------
 
 fn slide(props: &[f64], nfdir: i32) -> ForcedSlidingCase {
+    let mut args = Args::new();
+    args.set_int("nfdir", nfdir);
+    args.set_int("nprops", props.len() as i32);
+    args.put("props", props.to_vec());
+    args.put(
+        "velocity",
+        [0.3, -0.4][..nfdir.clamp(0, 2) as usize].to_vec(),
+    );
+    args.put("pressure", vec![40.0]);
+    args.put("temperature", vec![30.0]);
     ForcedSlidingCase {
-        props: props.to_vec(),
-        nprops: props.len() as i32,
-        nfdir,
-        velocity: [0.3, -0.4][..nfdir.clamp(0, 2) as usize].to_vec(),
-        pressure: 40.0,
-        temperature: 30.0,
+        args,
         null: SlideNull::None,
     }
 }
 
-fn slide_run(case: &ForcedSlidingCase) -> SlideOutputs {
+fn slide_run(case: &ForcedSlidingCase) -> Outputs {
     case.check()
         .unwrap_or_else(|e| panic!("{e}\ninput: {case:?}"))
 }
 
 fn slide_refused(case: &ForcedSlidingCase, status: IflStatus, needle: &str) {
     let out = slide_run(case);
-    assert_eq!(out.status, status, "{}", out.message);
+    assert_eq!(out.int("status"), status as i32, "{}", out.message);
     assert_message(&out.message, "interfacial: ifl_forced_sliding: ", needle);
 }
 
@@ -308,9 +320,9 @@ fn forced_sliding_non_finite_inputs() {
             for which in 0..(nfdir as usize + 2) {
                 let mut c = slide(&all_laws(), nfdir);
                 match which {
-                    0 => c.pressure = x,
-                    1 => c.temperature = x,
-                    a => c.velocity[a - 2] = x,
+                    0 => c.args["pressure"][0] = x,
+                    1 => c.args["temperature"][0] = x,
+                    a => c.args["velocity"][a - 2] = x,
                 }
                 slide_refused(&c, IflStatus::BadInput, "NaN or infinite");
             }
@@ -343,7 +355,7 @@ fn forced_sliding_bad_sizes() {
         slide_refused(&slide(&all_laws(), nfdir), IflStatus::BadParameter, "nfdir");
     }
     let mut c = slide(&all_laws(), 2);
-    c.nprops = -1;
+    c.args.set_int("nprops", -1);
     slide_refused(&c, IflStatus::BadParameter, "nprops = -1 is negative");
 }
 
@@ -371,23 +383,23 @@ fn forced_sliding_bad_props() {
 #[test]
 fn forced_sliding_edge_values() {
     let mut c = slide(&all_laws(), 2);
-    c.velocity = vec![0.0, -0.0];
+    c.args["velocity"] = vec![0.0, -0.0];
     let out = slide_run(&c);
-    assert_eq!(out.status, IflStatus::Ok);
+    assert_eq!(out.int("status"), IflStatus::Ok as i32);
     assert!(
-        out.tau
+        out["tau"]
             .iter()
-            .chain(&out.damping)
-            .chain(&out.stiffness)
+            .chain(&out["damping"])
+            .chain(&out["stiffness"])
             .all(|x| *x == 0.0)
     );
     let mut c = slide(&all_laws(), 2);
-    c.pressure = -10.0;
+    c.args["pressure"][0] = -10.0;
     let out = slide_run(&c);
-    assert_eq!(out.status, IflStatus::Ok);
-    assert!(out.tau.iter().all(|x| *x == 0.0));
+    assert_eq!(out.int("status"), IflStatus::Ok as i32);
+    assert!(out["tau"].iter().all(|x| *x == 0.0));
     // μ = 10 at p = 1e308 overflows τ = μp.
     let mut c = slide(&CoulombBuilder::new().mu(10.0).build_first(2), 2);
-    c.pressure = 1e308;
+    c.args["pressure"][0] = 1e308;
     slide_refused(&c, IflStatus::NumericalFailure, "overflowed");
 }

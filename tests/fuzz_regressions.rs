@@ -9,28 +9,32 @@
 mod fuzz_cases;
 use fuzz_cases::{batch_case, fric_case, gapcon_case, uinter_case};
 
-use fric_case::{FricCase, FricOutputs};
+use fric_case::FricCase;
+use fuzz_cases::args::Outputs;
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 
 /// Runs the fuzzer's property check and returns the outputs; fails the test with the property
 /// that was violated.
-fn checked(case: &FricCase) -> FricOutputs {
+fn checked(case: &FricCase) -> Outputs {
     case.check()
         .unwrap_or_else(|e| panic!("{e}\ninput: {case:?}"))
 }
 
 /// A recorded `fric` input that must still decode to the adhesive law (`PROPS(1) = 2`), through
 /// the property check.
-fn adhesive_replay(bytes: &[u8]) -> (FricCase, FricOutputs) {
+fn adhesive_replay(bytes: &[u8]) -> (FricCase, Outputs) {
     let case = FricCase::decode(bytes);
-    assert_eq!(case.props[0], 2.0, "the decoder changed: {case:?}");
+    assert_eq!(case.args["PROPS"][0], 2.0, "the decoder changed: {case:?}");
     let out = checked(&case);
     (case, out)
 }
 
-fn succeeded(case: &FricCase, out: &FricOutputs) {
+fn succeeded(case: &FricCase, out: &Outputs) {
     assert!(out.message.is_empty(), "refused: {}", out.message);
-    assert_eq!(out.pnewdt.to_bits(), case.pnewdt.to_bits());
+    assert_eq!(
+        out.real("PNEWDT").to_bits(),
+        case.args["PNEWDT"][0].to_bits()
+    );
 }
 
 fn close(a: f64, b: f64, rel: f64) -> bool {
@@ -49,13 +53,13 @@ const CRASH_SLIP_RATE: [u8; 46] = [
 fn crash_1_replays_clean() {
     let case = FricCase::decode(&CRASH_SLIP_RATE);
     assert_eq!(
-        case.dtime,
+        case.args["DTIME"][0],
         f64::MIN_POSITIVE,
         "the decoder changed: {case:?}"
     );
     let out = checked(&case);
     succeeded(&case, &out);
-    assert_eq!(out.statev[1], f64::MAX);
+    assert_eq!(out["STATEV"][1], f64::MAX);
 }
 
 #[test]
@@ -63,18 +67,18 @@ fn slip_rate_over_a_subnormal_dtime_saturates_and_the_state_stays_usable() {
     // μ = 0.3, γ_crit = 1e-3, p = 10: slip of 1 − 1e-3 in 2-D over Δt = 5e-324.
     let props = CoulombBuilder::new().mu(0.3).gamma_crit(1e-3);
     let mut c = FricCase::coulomb(2, &props.build_first(7));
-    c.press = 10.0;
-    c.dgam = vec![0.6, 0.8];
-    c.dtime = 5e-324;
+    c.args["PRESS"][0] = 10.0;
+    c.args["DGAM"] = vec![0.6, 0.8];
+    c.args["DTIME"][0] = 5e-324;
     let out = checked(&c);
     succeeded(&c, &out);
-    assert!(close(out.statev[0], 1.0 - 1e-3, 1e-15));
-    assert_eq!(out.statev[1], f64::MAX);
-    assert_eq!(out.statev[2], 1.0);
+    assert!(close(out["STATEV"][0], 1.0 - 1e-3, 1e-15));
+    assert_eq!(out["STATEV"][1], f64::MAX);
+    assert_eq!(out["STATEV"][2], 1.0);
     // The next increment accepts the state it was given.
     let mut next = c.clone();
-    next.statev = out.statev.clone();
-    next.dtime = 1.0;
+    next.args["STATEV"] = out["STATEV"].clone();
+    next.args["DTIME"][0] = 1.0;
     succeeded(&next, &checked(&next));
 }
 
@@ -82,14 +86,14 @@ fn slip_rate_over_a_subnormal_dtime_saturates_and_the_state_stays_usable() {
 fn accumulated_slip_near_f64_max_saturates() {
     let props = CoulombBuilder::new().mu(0.3).gamma_crit(1e-3);
     let mut c = FricCase::coulomb(1, &props.build_first(5));
-    c.press = 10.0;
-    c.dgam = vec![1e300];
-    c.statev = vec![f64::MAX, 0.0, 1.0];
+    c.args["PRESS"][0] = 10.0;
+    c.args["DGAM"] = vec![1e300];
+    c.args["STATEV"] = vec![f64::MAX, 0.0, 1.0];
     let out = checked(&c);
     succeeded(&c, &out);
-    assert_eq!(out.statev[0], f64::MAX);
+    assert_eq!(out["STATEV"][0], f64::MAX);
     // Slip rate 1e300 − 1e-3 over Δt = 1: finite, unchanged by the saturation.
-    assert_eq!(out.statev[1], 1e300);
+    assert_eq!(out["STATEV"][1], 1e300);
 }
 
 /// Crash 2 (fric, found again in 3 minutes with the norm fix reverted): in 2-D the predictor
@@ -109,26 +113,26 @@ const CRASH_NORM_UNDERFLOW: [u8; 181] = [
 #[test]
 fn crash_2_replays_clean() {
     let case = FricCase::decode(&CRASH_NORM_UNDERFLOW);
-    assert_eq!(case.nfdir, 2, "the decoder changed: {case:?}");
+    assert_eq!(case.args.int("NFDIR"), 2, "the decoder changed: {case:?}");
     let out = checked(&case);
     succeeded(&case, &out);
     // It slips now: the predictor is far longer than γ_crit.
-    assert_eq!(out.statev[2], 1.0);
+    assert_eq!(out["STATEV"][2], 1.0);
 }
 
 /// 2-D slip at 45° with τ_crit = μp = p/2: the expected answer at every scale of Δγ.
-fn slip_at_45_degrees(dgam: f64, gamma_crit: f64, p: f64) -> FricOutputs {
+fn slip_at_45_degrees(dgam: f64, gamma_crit: f64, p: f64) -> Outputs {
     let props = CoulombBuilder::new().mu(0.5).gamma_crit(gamma_crit);
     let mut c = FricCase::coulomb(2, &props.build_first(5));
-    c.press = p;
-    c.dgam = vec![dgam, dgam];
+    c.args["PRESS"][0] = p;
+    c.args["DGAM"] = vec![dgam, dgam];
     let out = checked(&c);
     succeeded(&c, &out);
     let h = std::f64::consts::FRAC_1_SQRT_2;
-    assert_eq!(out.lm, 0);
-    assert_eq!(out.statev[2], 1.0, "slipping");
+    assert_eq!(out.int("LM"), 0);
+    assert_eq!(out["STATEV"][2], 1.0, "slipping");
     for a in 0..2 {
-        assert!(close(out.tau[a], 0.5 * p * h, 1e-15), "{out:?}");
+        assert!(close(out["TAU"][a], 0.5 * p * h, 1e-15), "{out:?}");
     }
     out
 }
@@ -137,18 +141,18 @@ fn slip_at_45_degrees(dgam: f64, gamma_crit: f64, p: f64) -> FricOutputs {
 fn tiny_slip_whose_square_underflows_sits_on_the_cone() {
     // |Δγ| = √2·1e-170 > γ_crit = 1e-300; (1e-170)² underflows.
     let out = slip_at_45_degrees(1e-170, 1e-300, 1.0);
-    assert!(close(out.dslip[0], 1e-170, 1e-15));
-    assert!(close(out.statev[0], 2f64.sqrt() * 1e-170, 1e-15));
+    assert!(close(out["DSLIP"][0], 1e-170, 1e-15));
+    assert!(close(out["STATEV"][0], 2f64.sqrt() * 1e-170, 1e-15));
 }
 
 #[test]
 fn huge_slip_whose_square_overflows_is_accepted_and_exact() {
     // |Δγ| = √2·1e200: the squares overflow, the norm does not. Was refused as an overflow.
     let out = slip_at_45_degrees(1e200, 1e-3, 1.0);
-    assert!(close(out.dslip[1], 1e200, 1e-15));
+    assert!(close(out["DSLIP"][1], 1e200, 1e-15));
     let slip = 2f64.sqrt() * 1e200;
-    assert!(close(out.statev[0], slip, 1e-15));
-    assert!(close(out.sfd, 0.5 * slip, 1e-15));
+    assert!(close(out["STATEV"][0], slip, 1e-15));
+    assert!(close(out.real("SFD"), 0.5 * slip, 1e-15));
 }
 
 #[test]
@@ -164,8 +168,8 @@ fn gapcon_checker_accepts_every_configured_law() {
     // The gapcon target found nothing; this proves its check passes on good calls of each law.
     for (i, name) in gapcon_case::NAMES.iter().enumerate() {
         let mut case = gapcon_case::GapconCase::decode(&[i as u8]);
-        case.d = [1e-4, 50.0];
-        case.temp = [300.0, 290.0];
+        case.args["D"] = vec![1e-4, 50.0];
+        case.args["TEMP"] = vec![300.0, 290.0];
         let k = case.check().unwrap_or_else(|e| panic!("{name}: {e}"));
         if *name == "NONE" {
             assert_eq!(k, 0.0);
@@ -191,12 +195,12 @@ fn fric_adhesive_cancellation_replays_clean() {
     let (case, out) = adhesive_replay(&CRASH_ADHESIVE_CANCELLATION);
     succeeded(&case, &out);
     // Seed 004 with μ_s = μ_d = μ, S_a = k_μ = 0: sliding stress μp whatever the rate.
-    let mu_p = case.props[1] * case.press;
-    assert_eq!(out.lm, 0);
+    let mu_p = case.args["PROPS"][1] * case.args["PRESS"][0];
+    assert_eq!(out.int("LM"), 0);
     assert!(
-        close(out.tau[0].abs(), mu_p, 1e-13),
+        close(out["TAU"][0].abs(), mu_p, 1e-13),
         "{} vs {mu_p}",
-        out.tau[0]
+        out["TAU"][0]
     );
 }
 
@@ -215,14 +219,14 @@ const CRASH_EXTENDED_SLIP_RATE: [u8; 96] = [
 fn fric_extended_slip_rate_replays_clean() {
     let case = FricCase::decode(&CRASH_EXTENDED_SLIP_RATE);
     assert_eq!(
-        (case.nfdir, case.dtime),
+        (case.args.int("NFDIR"), case.args["DTIME"][0]),
         (2, f64::MIN_POSITIVE),
         "the decoder changed: {case:?}"
     );
-    assert!(case.props[2] != 0.0 && case.props[2] != case.props[1]);
+    assert!(case.args["PROPS"][2] != 0.0 && case.args["PROPS"][2] != case.args["PROPS"][1]);
     let out = checked(&case);
     succeeded(&case, &out);
-    assert_eq!(out.statev[1], f64::MAX);
+    assert_eq!(out["STATEV"][1], f64::MAX);
 }
 
 /// Found by fuzz target `fric`: the adhesive law (PROPS(1) = 2) slipping over
@@ -238,7 +242,7 @@ const CRASH_ADHESIVE_SLIP_RATE: [u8; 65] = [
 fn fric_adhesive_slip_rate_replays_clean() {
     let (case, out) = adhesive_replay(&CRASH_ADHESIVE_SLIP_RATE);
     succeeded(&case, &out);
-    assert_eq!((out.statev[0], out.statev[1]), (f64::MAX, f64::MAX));
+    assert_eq!((out["STATEV"][0], out["STATEV"][1]), (f64::MAX, f64::MAX));
 }
 
 /// Found by fuzz target `fric`: the adhesive law with μ_d = 0, k_μ = 2, p = Δt = f64::MAX.
@@ -257,12 +261,13 @@ fn fric_adhesive_subnormal_rate_replays_clean() {
     let (case, out) = adhesive_replay(&CRASH_ADHESIVE_SUBNORMAL_RATE);
     succeeded(&case, &out);
     // Seed 004 with μ_s = μ_d = 0: τ = k_μ·(Δs/Δt)·p + S_a.
-    let (s_a, k_mu) = (case.props[3], case.props[5]);
-    let expected = k_mu * out.dslip[0].abs() * (case.press / case.dtime) + s_a;
+    let (s_a, k_mu) = (case.args["PROPS"][3], case.args["PROPS"][5]);
+    let expected =
+        k_mu * out["DSLIP"][0].abs() * (case.args["PRESS"][0] / case.args["DTIME"][0]) + s_a;
     assert!(
-        close(out.tau[0].abs(), expected, 1e-13),
+        close(out["TAU"][0].abs(), expected, 1e-13),
         "{} vs {expected}",
-        out.tau[0]
+        out["TAU"][0]
     );
 }
 
@@ -279,12 +284,12 @@ const CRASH_UINTER_STRENGTH: [u8; 61] = [
 #[test]
 fn crash_4_replays_clean() {
     let case = uinter_case::UinterCase::decode(&CRASH_UINTER_STRENGTH);
-    assert_eq!(case.ndir, 2, "the decoder changed: {case:?}");
+    assert_eq!(case.args.int("NDIR"), 2, "the decoder changed: {case:?}");
     let out = case
         .check()
         .unwrap_or_else(|e| panic!("{e}\ninput: {case:?}"));
     assert!(out.message.is_empty(), "refused: {}", out.message);
-    assert_eq!(out.statev[2], 1.0, "slipping");
+    assert_eq!(out["STATEV"][2], 1.0, "slipping");
 }
 
 /// A sliding point far past the stick limit (trial stress 10⁶·g and 10¹²·g): the shear
@@ -295,25 +300,25 @@ fn uinter_shear_far_past_the_stick_limit_is_the_strength() {
         // μ_d = 0.5, S_a = 2, K_n = 1000, γ_crit = 1e-6 (absolute), h = 0.01: p = 10.
         let props = sliding_uinter_law(0.5).sa(2.0).build_first(10);
         let mut c = uinter_case::UinterCase::decode(&[]);
-        c.ndir = 3;
-        c.nstatv = 3;
-        c.nprops = 10;
-        c.props = props.to_vec();
-        c.stress = vec![10.0, 0.0, 0.0];
-        c.statev = vec![0.0; 3];
-        c.rdisp = vec![0.01, 0.0, 0.0];
+        c.args.set_int("NDIR", 3);
+        c.args.set_int("NSTATV", 3);
+        c.args.set_int("NPROPS", 10);
+        c.args["PROPS"] = props.to_vec();
+        c.args["STRESS"] = vec![10.0, 0.0, 0.0];
+        c.args["STATEV"] = vec![0.0; 3];
+        c.args["RDISP"] = vec![0.01, 0.0, 0.0];
         let g = 0.5 * 10.0 + 2.0;
-        c.drdisp = vec![0.0, 0.6 * ratio * 1e-6, 0.8 * ratio * 1e-6];
-        c.dtime = 1.0;
-        c.chrlngth = 1.0;
-        c.pnewdt = 1e36;
+        c.args["DRDISP"] = vec![0.0, 0.6 * ratio * 1e-6, 0.8 * ratio * 1e-6];
+        c.args["DTIME"][0] = 1.0;
+        c.args["CHRLNGTH"][0] = 1.0;
+        c.args["PNEWDT"][0] = 1e36;
         let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
         assert!(out.message.is_empty(), "refused: {}", out.message);
-        let tau = out.stress[1].hypot(out.stress[2]);
+        let tau = out["STRESS"][1].hypot(out["STRESS"][2]);
         assert!(tau <= g * (1.0 + 4.0 * f64::EPSILON), "{tau} above {g}");
         assert!((tau - g).abs() <= 4.0 * f64::EPSILON * g, "{tau} != {g}");
-        assert_eq!(out.statev[2], 1.0);
-        assert_eq!(out.stress[0], 10.0);
+        assert_eq!(out["STATEV"][2], 1.0);
+        assert_eq!(out["STRESS"][0], 10.0);
     }
 }
 
@@ -355,44 +360,44 @@ fn sliding_uinter_law(mu: f64) -> AdhesiveBuilder {
 /// A closed, sliding `uinter_` point: μ_d = 0.5, K_n = 1000, h = 0.01 (p = 10), γ_crit = 1e-6.
 fn sliding_uinter(mu: f64) -> uinter_case::UinterCase {
     let mut c = uinter_case::UinterCase::decode(&[]);
-    c.ndir = 2;
-    c.nstatv = 3;
-    c.nprops = 10;
-    c.props = sliding_uinter_law(mu).build_first(10);
-    c.stress = vec![10.0, 0.0];
-    c.statev = vec![0.0; 3];
-    c.rdisp = vec![0.01, 0.0];
-    c.drdisp = vec![0.0, 1.0];
-    c.dtime = 1.0;
-    c.chrlngth = 1.0;
-    c.pnewdt = 1e36;
+    c.args.set_int("NDIR", 2);
+    c.args.set_int("NSTATV", 3);
+    c.args.set_int("NPROPS", 10);
+    c.args["PROPS"] = sliding_uinter_law(mu).build_first(10);
+    c.args["STRESS"] = vec![10.0, 0.0];
+    c.args["STATEV"] = vec![0.0; 3];
+    c.args["RDISP"] = vec![0.01, 0.0];
+    c.args["DRDISP"] = vec![0.0, 1.0];
+    c.args["DTIME"][0] = 1.0;
+    c.args["CHRLNGTH"][0] = 1.0;
+    c.args["PNEWDT"][0] = 1e36;
     c
 }
 
 #[test]
 fn uinter_accumulated_slip_near_f64_max_saturates() {
     let mut c = sliding_uinter(0.5);
-    c.statev[0] = f64::MAX;
+    c.args["STATEV"][0] = f64::MAX;
     let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
     assert!(out.message.is_empty(), "refused: {}", out.message);
-    assert_eq!(out.statev[0], f64::MAX);
-    assert_eq!(out.statev[2], 1.0);
+    assert_eq!(out["STATEV"][0], f64::MAX);
+    assert_eq!(out["STATEV"][2], 1.0);
     // Δs = 1 − γ_crit: the rate is Δs/Δt.
-    assert!((out.statev[1] - (1.0 - 1e-6)).abs() < 1e-15);
+    assert!((out["STATEV"][1] - (1.0 - 1e-6)).abs() < 1e-15);
 }
 
 #[test]
 fn uinter_slip_rate_over_a_subnormal_dtime_saturates() {
     for mu in [0.0, 0.5] {
         let mut c = sliding_uinter(mu);
-        c.dtime = 5e-324;
+        c.args["DTIME"][0] = 5e-324;
         let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
         assert!(out.message.is_empty(), "refused: {}", out.message);
-        assert_eq!(out.statev[1], f64::MAX, "μ = {mu}");
-        assert!((out.statev[0] - (1.0 - 1e-6)).abs() < 1e-15);
+        assert_eq!(out["STATEV"][1], f64::MAX, "μ = {mu}");
+        assert!((out["STATEV"][0] - (1.0 - 1e-6)).abs() < 1e-15);
         // The next increment accepts the state.
         let mut next = sliding_uinter(mu);
-        next.statev = out.statev.clone();
+        next.args["STATEV"] = out["STATEV"].clone();
         let again = next.check().unwrap_or_else(|e| panic!("{e}"));
         assert!(again.message.is_empty(), "refused: {}", again.message);
     }
@@ -414,8 +419,8 @@ fn fric_adhesive_at_negative_pressure_replays_clean() {
     let (case, out) = adhesive_replay(&FRIC_ADHESIVE_NEGATIVE_PRESSURE);
     succeeded(&case, &out);
     // Sliding at p < 0: the stress is the shear adhesive strength S_a = PROPS(4).
-    assert_eq!(out.statev[2], 1.0);
-    assert_eq!(out.tau[0].abs(), case.props[3]);
+    assert_eq!(out["STATEV"][2], 1.0);
+    assert_eq!(out["TAU"][0].abs(), case.args["PROPS"][3]);
 }
 
 /// Crash 7 (`fric`, adhesive law, 60 s run): a slip increment near f64::MAX with γ_crit near
@@ -433,10 +438,10 @@ const CRASH_ADHESIVE_TRANSITION: [u8; 96] = [
 #[test]
 fn crash_7_replays_clean() {
     let (case, out) = adhesive_replay(&CRASH_ADHESIVE_TRANSITION);
-    if out.message.is_empty() && out.lm == 0 && case.press < 0.0 {
+    if out.message.is_empty() && out.int("LM") == 0 && case.args["PRESS"][0] < 0.0 {
         // Sliding at p < 0: the stress is S_a.
-        let tau = out.tau.iter().fold(0.0f64, |s, x| s.hypot(*x));
-        assert!(tau <= case.props[3] * (1.0 + 1e-12), "{tau}");
+        let tau = out["TAU"].iter().fold(0.0f64, |s, x| s.hypot(*x));
+        assert!(tau <= case.args["PROPS"][3] * (1.0 + 1e-12), "{tau}");
     }
 }
 
@@ -450,7 +455,9 @@ const BATCH_EXTENDED_LAW: [u8; 13] = [26, 255, 255, 49, 0, 255, 0, 0, 255, 255, 
 fn batch_refuses_the_extended_law_as_a_whole() {
     let case = batch_case::BatchCase::decode(&BATCH_EXTENDED_LAW);
     assert!(
-        case.props[0] == 1.0 && case.props[2] != 0.0 && case.props[2] != case.props[1],
+        case.args["props"][0] == 1.0
+            && case.args["props"][2] != 0.0
+            && case.args["props"][2] != case.args["props"][1],
         "the decoder changed: {case:?}"
     );
     let out = case
@@ -461,7 +468,7 @@ fn batch_refuses_the_extended_law_as_a_whole() {
         "{}",
         out.message
     );
-    assert_eq!(out.pnewdt, 0.25);
+    assert_eq!(out.real("pnewdt"), 0.25);
 }
 
 /// Found by fuzz target `fric` on a clean checkout (seed 1, ~274 000 inputs): the adhesive law
@@ -474,9 +481,10 @@ fn fric_adhesive_subnormal_rate_coefficient_replays_clean() {
     ));
     succeeded(&case, &out);
     // μ_d = 0, v_½ = 0: sliding stress k_μ·(Δs/Δt)·p + S_a, with the exact slip rate.
-    let slip = out.dslip[0].hypot(out.dslip[1]);
-    let expected = case.props[5] * (slip / case.dtime) * case.press + case.props[3];
-    let tau = out.tau[0].hypot(out.tau[1]);
+    let slip = out["DSLIP"][0].hypot(out["DSLIP"][1]);
+    let expected = case.args["PROPS"][5] * (slip / case.args["DTIME"][0]) * case.args["PRESS"][0]
+        + case.args["PROPS"][3];
+    let tau = out["TAU"][0].hypot(out["TAU"][1]);
     assert!(close(tau, expected, 1e-13), "{tau} vs {expected}");
 }
 
@@ -486,30 +494,30 @@ fn fric_adhesive_subnormal_rate_coefficient_replays_clean() {
 #[test]
 fn uinter_breaking_bond_passes_the_spd_property() {
     let mut c = uinter_case::UinterCase::decode(&[]);
-    c.ndir = 2;
-    c.nstatv = 3;
-    c.nprops = 10;
-    c.props = AdhesiveBuilder::new()
+    c.args.set_int("NDIR", 2);
+    c.args.set_int("NSTATV", 3);
+    c.args.set_int("NPROPS", 10);
+    c.args["PROPS"] = AdhesiveBuilder::new()
         .coeff(0.3)
         .sa(4.0)
         .na(10.0)
         .gamma_crit(1e-3)
         .normal_stiffness(1e4)
         .build_first(10);
-    c.stress = vec![-8.0, 3.0];
-    c.statev = vec![0.0, 0.0, 3.0];
-    c.rdisp = vec![-9.0 / 1e4, 0.0];
-    c.drdisp = vec![0.0, 0.0];
-    c.dtime = 1.0;
-    c.chrlngth = 1.0;
-    c.pnewdt = 1e36;
+    c.args["STRESS"] = vec![-8.0, 3.0];
+    c.args["STATEV"] = vec![0.0, 0.0, 3.0];
+    c.args["RDISP"] = vec![-9.0 / 1e4, 0.0];
+    c.args["DRDISP"] = vec![0.0, 0.0];
+    c.args["DTIME"][0] = 1.0;
+    c.args["CHRLNGTH"][0] = 1.0;
+    c.args["PNEWDT"][0] = 1e36;
     c.null_optional = false;
     let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
     let want = 0.5 * 9.0 * 1e-3 / 4.0 + 0.5 * 64.0 / 1e4;
-    assert!(close(out.energies[2], want, 1e-14), "{:?}", out.energies);
-    c.statev[2] = 4.0;
+    assert!(close(out.real("SPD"), want, 1e-14), "{out:?}");
+    c.args["STATEV"][2] = 4.0;
     let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
-    assert_eq!(out.energies[2], 0.0);
+    assert_eq!(out.real("SPD"), 0.0);
 }
 
 /// Crash 15 (uinter, CI run of 2026-11-23 after the decoder learnt SPD): sliding with k_μ > 0
@@ -528,7 +536,7 @@ fn uinter_tangent_overflow_is_refused() {
         .check()
         .unwrap_or_else(|e| panic!("{e}\ninput: {case:?}"));
     assert!(out.message.contains("overflowed"), "{}", out.message);
-    assert!(out.pnewdt < 1.0);
+    assert!(out.real("PNEWDT") < 1.0);
 }
 
 /// The same defect without the byte encoding: a start shear of 1000 against a strength
@@ -538,23 +546,23 @@ fn uinter_tangent_overflow_is_refused() {
 #[test]
 fn uinter_tangent_overflow_of_the_pressure_column_is_a_cut_back() {
     let mut c = sliding_uinter(0.5);
-    c.props = AdhesiveBuilder::new()
+    c.args["PROPS"] = AdhesiveBuilder::new()
         .coeff(0.5)
         .sa(1.0)
         .kmu(1.0)
         .gamma_crit(1e-3)
         .normal_stiffness(1e10)
         .build_first(10);
-    c.rdisp = vec![1e-310, 0.0];
-    c.stress = vec![1e-300, 1000.0];
-    c.drdisp = vec![0.0, 0.0];
-    c.dtime = 1e-300;
+    c.args["RDISP"] = vec![1e-310, 0.0];
+    c.args["STRESS"] = vec![1e-300, 1000.0];
+    c.args["DRDISP"] = vec![0.0, 0.0];
+    c.args["DTIME"][0] = 1e-300;
     let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
     assert!(out.message.contains("overflowed"), "{}", out.message);
-    assert!(out.pnewdt < 1.0);
-    assert_eq!(out.statev, c.statev, "STATEV unchanged");
+    assert!(out.real("PNEWDT") < 1.0);
+    assert_eq!(out["STATEV"], c.args["STATEV"], "STATEV unchanged");
     // With an ordinary step the same point is computed.
-    c.dtime = 1.0;
+    c.args["DTIME"][0] = 1.0;
     let out = c.check().unwrap_or_else(|e| panic!("{e}\ninput: {c:?}"));
     assert!(out.message.is_empty(), "{}", out.message);
 }
@@ -575,13 +583,17 @@ const FRIC_SUBNORMAL_STIFFNESS: [u8; 98] = [
 fn fric_stick_with_a_subnormal_stiffness_stays_on_the_cone() {
     let case = FricCase::decode(&FRIC_SUBNORMAL_STIFFNESS);
     assert_eq!(
-        case.props[3],
+        case.args["PROPS"][3],
         f64::MIN_POSITIVE,
         "the decoder changed: {case:?}"
     );
     let out = checked(&case);
     succeeded(&case, &out);
-    assert!(out.tau[0].abs() <= f64::MIN_POSITIVE, "{}", out.tau[0]);
+    assert!(
+        out["TAU"][0].abs() <= f64::MIN_POSITIVE,
+        "{}",
+        out["TAU"][0]
+    );
 }
 
 /// Found by fuzz target `fric` (random seed, session 6) on a change that was then reverted: the
@@ -595,5 +607,5 @@ fn fric_adhesive_vanishing_start_strength_stays_within_the_property() {
     let (_, out) = adhesive_replay(include_bytes!(
         "../fuzz/regressions/fric-adhesive-vanishing-start-strength"
     ));
-    assert_eq!(out.pnewdt, 0.25, "{out:?}");
+    assert_eq!(out.real("PNEWDT"), 0.25, "{out:?}");
 }

@@ -10,7 +10,7 @@
 mod fuzz_cases;
 use fuzz_cases::fric_coef_case;
 
-use fric_coef_case::{CoefCall, CoefNull, FricCoefCase};
+use fric_coef_case::{CoefCall, CoefNull, Coefficients, FricCoefCase};
 use interfacial::props::CoulombBuilder;
 
 /// Crash C1 (first seconds of fuzzing): a valid block of 2 points with `fCoef` NULL. The call
@@ -72,9 +72,9 @@ fn null_output_arrays_are_refused_and_the_other_array_zeroed() {
         };
         assert!(out.message.contains(name), "{}", out.message);
         let other = if null == CoefNull::FCoef {
-            &out.deriv
+            &out["fCoefDeriv"]
         } else {
-            &out.coef
+            &out["fCoef"]
         };
         assert!(other.iter().all(|x| *x == 0.0), "{other:?}");
     }
@@ -85,13 +85,13 @@ fn crash_c2_replays_clean() {
     let CoefCall::Coef(case) = replay(&CRASH_C2) else {
         panic!("the decoder changed: not a fric_coef_ call");
     };
-    assert_eq!(case.props[7], 1.0, "the decoder changed: {case:?}");
+    assert_eq!(case.args["props"][7], 1.0, "the decoder changed: {case:?}");
     assert!(
-        case.props[8] / case.props[1] > 1e20,
+        case.args["props"][8] / case.args["props"][1] > 1e20,
         "the decoder changed: {case:?}"
     );
     assert!(
-        case.props[9] > 0.0 && case.slip[0] == 0.0,
+        case.args["props"][9] > 0.0 && case.args["slipData"][0] == 0.0,
         "the decoder changed: {case:?}"
     );
 }
@@ -142,7 +142,9 @@ fn crash_c3_replays_clean() {
         panic!("the decoder changed: not a fric_coef_ call");
     };
     assert!(
-        case.props[1] > 1e270 && case.props[7] == 1.0 && case.props[11] > 0.0,
+        case.args["props"][1] > 1e270
+            && case.args["props"][7] == 1.0
+            && case.args["props"][11] > 0.0,
         "the decoder changed: {case:?}"
     );
 }

@@ -14,10 +14,11 @@
 mod fuzz_cases;
 use fuzz_cases::vfric_case;
 
+use fuzz_cases::args::Outputs;
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
-use vfric_case::{VfricCase, VfricNull, VfricOutputs};
+use vfric_case::{Tangential, VfricCase, VfricNull};
 
-fn replay(data: &[u8]) -> (VfricCase, VfricOutputs) {
+fn replay(data: &[u8]) -> (VfricCase, Outputs) {
     let case = VfricCase::decode(data);
     match case.check() {
         Ok(out) => (case, out),
@@ -38,16 +39,23 @@ fn stick_and_slip() {
     d.extend([0, 0, 0, 0, 0, 4, 9, 4, 9, 2, 9, 1, 9, 7, 0, 1, 9, 1, 9, 1]);
     let (case, out) = replay(&d);
     assert_eq!(
-        (case.ncontact, case.nfricdir, case.null),
+        (
+            case.args.int("nContact"),
+            case.args.int("nFricDir"),
+            case.null
+        ),
         (2, 2, VfricNull::None)
     );
     assert_eq!(
-        (case.normal.as_slice(), case.stick.as_slice()),
+        (
+            case.args["fNormal"].as_slice(),
+            case.args["fStickForce"].as_slice()
+        ),
         (&[4.0, 2.0][..], &[1.0, 7.0][..])
     );
     assert!(out.message.is_empty(), "{}", out.message);
     assert_eq!(out.force(2, 0, 0), -1.0);
-    assert_eq!(out.force(2, 1, 0), -(case.props[1] * 2.0));
+    assert_eq!(out.force(2, 1, 0), -(case.args["props"][1] * 2.0));
     assert_eq!(out.force(2, 1, 1).to_bits(), 0);
 }
 
@@ -62,8 +70,22 @@ fn shear_cap_and_bad_points() {
     ]);
     d.extend([16, 0, 0, 11]);
     let (case, out) = replay(&d);
-    assert_eq!((case.ncontact, case.nfricdir, case.nslvnod), (3, 1, 1));
-    assert_eq!((case.props[3], case.area[0], case.slave[2]), (1.0, 0.1, 2));
+    assert_eq!(
+        (
+            case.args.int("nContact"),
+            case.args.int("nFricDir"),
+            case.args.int("nSlvNod")
+        ),
+        (3, 1, 1)
+    );
+    assert_eq!(
+        (
+            case.args["props"][3],
+            case.args["areaSlv"][0],
+            case.args.ints("jConSlvid")[2]
+        ),
+        (1.0, 0.1, 2)
+    );
     assert_eq!(out.force(1, 0, 0), -0.1);
     assert_eq!(out.force(1, 1, 0).to_bits(), 0);
     assert_eq!(out.force(1, 2, 0).to_bits(), 0);
@@ -77,10 +99,10 @@ fn anisotropic_props_refused() {
     d.extend(MU_0_55);
     d.extend([6, 9, 3, 0, 0, 0, 0, 4, 9, 4, 9, 4, 9, 1, 9, 1]);
     let (case, out) = replay(&d);
-    assert_eq!(case.props[2], 3.0);
+    assert_eq!(case.args["props"][2], 3.0);
     assert!(out.message.contains("(block)"), "{}", out.message);
     assert!(
-        out.tangential[vfric_case::GUARD..][..4]
+        out["fTangential"][vfric_case::GUARD..][..4]
             .iter()
             .all(|x| x.to_bits() == 0)
     );
@@ -90,9 +112,13 @@ fn anisotropic_props_refused() {
 #[test]
 fn nfricdir_out_of_range_writes_nothing() {
     let (case, out) = replay(&[1, 9, 0, 0, 255]);
-    assert_eq!(case.nfricdir, 3);
+    assert_eq!(case.args.int("nFricDir"), 3);
     assert!(out.message.contains("nFricDir = 3"), "{}", out.message);
-    assert!(out.tangential.iter().all(|x| *x == vfric_case::UNWRITTEN));
+    assert!(
+        out["fTangential"]
+            .iter()
+            .all(|x| *x == vfric_case::UNWRITTEN)
+    );
 }
 
 /// Rough friction (PROPS(7) = 2) with τ_max set and every unread pointer (and statev) NULL:
@@ -104,7 +130,11 @@ fn rough_friction_with_unread_pointers_null() {
     d.extend([0, 4, 0, 0, 6, 0, 0, 4, 4, 9, 4, 9, 7, 240]);
     let (case, out) = replay(&d);
     assert_eq!(
-        (case.null, case.props[6], case.slave[0]),
+        (
+            case.null,
+            case.args["props"][6],
+            case.args.ints("jConSlvid")[0]
+        ),
         (VfricNull::Unread, 2.0, i32::MIN)
     );
     assert!(out.message.is_empty(), "{}", out.message);
@@ -126,7 +156,7 @@ fn null_output_and_empty_block() {
     let mut d = vec![11, 0, 0, 0, 255, 0];
     d.extend(MU_0_55);
     let (case, out) = replay(&d);
-    assert_eq!(case.ncontact, 0);
+    assert_eq!(case.args.int("nContact"), 0);
     assert!(out.message.is_empty(), "{}", out.message);
 }
 
@@ -136,7 +166,7 @@ fn adhesive_props_refused() {
     let mut d = vec![0, 0, 0, 0, 255, 7, 9, 2];
     d.extend(MU_0_55);
     let (case, out) = replay(&d);
-    assert_eq!(case.props[0], 2.0);
+    assert_eq!(case.args["props"][0], 2.0);
     assert!(out.message.contains("(block)"), "{}", out.message);
     assert_eq!(out.force(1, 0, 0).to_bits(), 0);
 }

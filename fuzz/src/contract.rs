@@ -1,13 +1,12 @@
 //! What every entry point owes its host, checked the same way by every case: the message of a
-//! call ([`last_error`]), the input arguments left alone ([`input_bits`], [`Names`]), what it
-//! wrote ([`UNWRITTEN`]), and for the Abaqus routines that refuse by lowering `PNEWDT` (FRIC,
-//! UINTER) the refusal itself ([`pnewdt_refusal`]).
+//! call ([`last_error`]), the `CHARACTER` arguments ([`Names`]), what it wrote ([`UNWRITTEN`]),
+//! and for the Abaqus routines that refuse by lowering `PNEWDT` (FRIC, UINTER) the refusal
+//! itself ([`pnewdt_refusal`]). That the inputs are left alone is checked once, by
+//! [`super::args::call`].
 
 use std::ffi::{CStr, c_char};
 
 use interfacial::abi::ifl_last_error;
-
-use super::bytes::bits;
 
 /// Written into every output before the call, to see what the call wrote.
 pub const UNWRITTEN: f64 = -7.77e77;
@@ -38,6 +37,15 @@ impl Names {
         }
     }
 
+    /// No names (an entry point without `CHARACTER` arguments).
+    pub fn none() -> Names {
+        Names {
+            interaction: Vec::new(),
+            secondary: Vec::new(),
+            main: Vec::new(),
+        }
+    }
+
     /// The three pointers, in argument order.
     pub fn pointers(&self) -> [*const c_char; 3] {
         [&self.interaction, &self.secondary, &self.main].map(|n| n.as_ptr().cast::<c_char>())
@@ -56,16 +64,6 @@ pub fn last_error() -> String {
     unsafe { CStr::from_ptr(ifl_last_error()) }
         .to_string_lossy()
         .into_owned()
-}
-
-/// The bit patterns of a call's real inputs, scalars then arrays, to see that none was
-/// written (NaN payloads and signed zeros included).
-pub fn input_bits(scalars: &[f64], arrays: &[&[f64]]) -> Vec<u64> {
-    let mut v = bits(scalars);
-    for a in arrays {
-        v.extend(bits(a));
-    }
-    v
 }
 
 /// Whether a call of `routine` (FRIC, UINTER) refused, `PNEWDT` having gone from `before` to
@@ -94,4 +92,29 @@ pub fn pnewdt_refusal(
         }
     }
     Ok(refused)
+}
+
+/// The Euclidean norm of `v`, formed without overflow or underflow of the squares.
+pub fn norm(v: &[f64]) -> f64 {
+    v.iter().fold(0.0f64, |s, x| s.hypot(*x))
+}
+
+/// The adhesive law's strength parameters (`PROPS(1) = 2`, docs/props.md): μ_d, μ_s, S_a, k_μ
+/// = `PROPS(2)`, `PROPS(3)`, `PROPS(4)`, `PROPS(6)`, each 0 when absent.
+pub fn adhesive_props(props: &[f64]) -> [f64; 4] {
+    [1, 2, 3, 5].map(|i| props.get(i).copied().unwrap_or(0.0))
+}
+
+/// The slip rate an adhesive-law call's strength is judged at (seed 004): the rate the call
+/// reports in `STATEV(2)`, and after a slip (start status `STATEV(3)` = 1) at least the start
+/// rate, since a stick increment keeps the stiffness of the start rate (docs/props.md, the
+/// rate-dependent formulation): its strength is g(start rate). `statev0` on entry, `statev` on
+/// exit.
+pub fn adhesive_rate(statev0: &[f64], statev: &[f64]) -> f64 {
+    let start_rate = if statev0.get(2) == Some(&1.0) {
+        statev0.get(1).copied().unwrap_or(0.0).max(0.0)
+    } else {
+        0.0
+    };
+    statev[1].max(start_rate)
 }

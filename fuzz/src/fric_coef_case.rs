@@ -5,16 +5,55 @@
 //! Shared by the `fric_coef` fuzz target and `tests/fuzz_regressions_coef.rs` (included there by
 //! path).
 
-use std::ffi::c_int;
-
-use super::bytes::{Bytes, bits, len};
-use super::contract::{Names, input_bits, last_error, unwritten};
-use interfacial::abi::{IflStatus, fric_coef_, ifl_clear_error, ifl_forced_sliding};
-
-pub use super::contract::UNWRITTEN;
+use super::args::{Args, Draw, Len, ONE, Outputs, Row, call, of};
+use super::bytes::Bytes;
+use super::contract::{Names, unwritten};
+use Draw::{Pick, Reals};
+use interfacial::abi::{IflStatus, fric_coef_, ifl_forced_sliding};
 
 /// Derivative slots per point and direction: `fCoefDeriv(nBlock,20,2)`.
 const NDERIV: usize = 20;
+
+/// The counts of a `fric_coef_` block, drawn first: mostly a valid block, but nBlock ≤ 0,
+/// nProps out of range and nTemp ≤ 0 stay reachable.
+const COEF_COUNTS: [Row; 4] = [
+    (
+        &["nBlock"],
+        Pick(&[1, 1, 2, 3, 4, 5, 8, 17, 1, 2, 3, 0, -1]),
+    ),
+    (
+        &["nProps"],
+        Pick(&[13, 13, 13, 13, 10, 8, 20, 2, 3, 7, 12, 21, 1, 0, -1]),
+    ),
+    (&["nTemp"], Pick(&[1, 1, 1, 1, 2, 0, -1])),
+    (&["nFields"], Pick(&[0, 0, 1, 2, -1])),
+];
+
+/// After `iData` (one byte, in `decode`): the block's other arrays.
+const COEF_BLOCK: [Row; 3] = [
+    (&["rData"], Reals(Len::Fixed(3))),
+    (&["pressure", "tempAvg"], Reals(of("nBlock"))),
+    (&["fieldAvg"], Reals(Len::Product("nBlock", "nFields"))),
+];
+
+/// What `fric_coef_` writes: `fCoef(nBlock,2)`, `fCoefDeriv(nBlock,20,2)`.
+const COEF_OUTPUTS: [(&str, Len); 2] = [
+    ("fCoef", Len::Times(2, "nBlock")),
+    ("fCoefDeriv", Len::Times(2 * NDERIV, "nBlock")),
+];
+
+/// After `PROPS`: the point of an `ifl_forced_sliding` call.
+const SLIDE_POINT: [Row; 2] = [
+    (&["velocity"], Reals(of("nfdir"))),
+    (&["pressure", "temperature"], Reals(ONE)),
+];
+
+/// What `ifl_forced_sliding` writes: τ(nfdir), the damping matrix (nfdir²), the stiffness.
+const SLIDE_OUTPUTS: [(&str, Len); 3] = [
+    ("tau", of("nfdir")),
+    ("damping", Len::Square("nfdir")),
+    ("stiffness", of("nfdir")),
+];
 
 /// A law-1 `PROPS` of `nprops` entries favouring valid μ laws (docs/props.md): `PROPS(1) = 1`,
 /// μ ≥ 0, `PROPS(3)` 0 or μ, `PROPS(4..7)` 0, the decay law, p_ref and the temperature law each
@@ -62,49 +101,31 @@ pub enum CoefNull {
     TempAvg,
 }
 
-/// Every `fric_coef_` argument. Arrays have exactly their declared lengths.
+/// Every `fric_coef_` argument: `args` by Abaqus name (`nBlock`, `props`, `slipData(nBlock,6)`,
+/// `pressure(nBlock)`, `tempAvg(nBlock)`, `fieldAvg(nBlock,nFields)`, `iData(3)`, `rData(3)`,
+/// the last two not read by the library), each array of exactly its declared length.
 #[derive(Clone, Debug)]
 pub struct FricCoefCase {
-    pub nblock: i32,
-    pub nprops: i32,
-    pub ntemp: i32,
-    pub nfields: i32,
-    /// `iData(3)`, `rData(3)`: not read by the library.
-    pub idata: Vec<i32>,
-    pub rdata: Vec<f64>,
-    /// `PROPS(NPROPS)`.
-    pub props: Vec<f64>,
-    /// `slipData(nBlock,6)`.
-    pub slip: Vec<f64>,
-    /// `pressure(nBlock)`.
-    pub pressure: Vec<f64>,
-    /// `tempAvg(nBlock)`.
-    pub temp: Vec<f64>,
-    /// `fieldAvg(nBlock,nFields)`.
-    pub field: Vec<f64>,
+    pub args: Args,
     /// `surfInt`, `surfSec`, `surfMain`.
     pub names: Names,
     pub null: CoefNull,
 }
 
-/// What `fric_coef_` wrote, and its message (empty on success).
-#[derive(Clone, Debug)]
-pub struct CoefOutputs {
-    /// `fCoef(nBlock,2)`.
-    pub coef: Vec<f64>,
-    /// `fCoefDeriv(nBlock,20,2)`.
-    pub deriv: Vec<f64>,
-    pub message: String,
+/// The block `fric_coef_` wrote, read by point.
+pub trait Coefficients {
+    /// μ of point k (0-based) in direction d (0, 1) of a block of `n` points.
+    fn mu(&self, n: usize, k: usize, d: usize) -> f64;
+    /// `fCoefDeriv(k+1, j+1, d+1)`.
+    fn deriv(&self, n: usize, k: usize, j: usize, d: usize) -> f64;
 }
 
-impl CoefOutputs {
-    /// μ of point k (0-based) in direction d (0, 1).
-    pub fn mu(&self, n: usize, k: usize, d: usize) -> f64 {
-        self.coef[k + n * d]
+impl Coefficients for Outputs {
+    fn mu(&self, n: usize, k: usize, d: usize) -> f64 {
+        self["fCoef"][k + n * d]
     }
-    /// `fCoefDeriv(k+1, j+1, d+1)`.
-    pub fn deriv(&self, n: usize, k: usize, j: usize, d: usize) -> f64 {
-        self.deriv[k + n * (j + NDERIV * d)]
+    fn deriv(&self, n: usize, k: usize, j: usize, d: usize) -> f64 {
+        self["fCoefDeriv"][k + n * (j + NDERIV * d)]
     }
 }
 
@@ -113,20 +134,22 @@ impl FricCoefCase {
     /// `nTemp = 1`, no fields, interaction `"SI1"` (80 bytes).
     pub fn block(props: &[f64], rate: &[f64], pressure: &[f64], temp: &[f64]) -> Self {
         let n = rate.len();
+        let mut a = Args::new();
+        a.set_int("nBlock", i32::try_from(n).unwrap_or(i32::MAX));
+        a.set_int("nProps", i32::try_from(props.len()).unwrap_or(i32::MAX));
+        a.set_int("nTemp", 1);
+        a.set_int("nFields", 0);
+        a.put_ints("iData", vec![1; 3]);
+        a.put("rData", vec![0.0; 3]);
+        a.put("props", props.to_vec());
         let mut slip = vec![0.0; 6 * n];
         slip[..n].copy_from_slice(rate);
+        a.put("slipData", slip);
+        a.put("pressure", pressure.to_vec());
+        a.put("tempAvg", temp.to_vec());
+        a.put("fieldAvg", Vec::new());
         FricCoefCase {
-            nblock: i32::try_from(n).unwrap_or(i32::MAX),
-            nprops: i32::try_from(props.len()).unwrap_or(i32::MAX),
-            ntemp: 1,
-            nfields: 0,
-            idata: vec![1; 3],
-            rdata: vec![0.0; 3],
-            props: props.to_vec(),
-            slip,
-            pressure: pressure.to_vec(),
-            temp: temp.to_vec(),
-            field: Vec::new(),
+            args: a,
             names: Names::padded("SI1"),
             null: CoefNull::None,
         }
@@ -135,10 +158,8 @@ impl FricCoefCase {
     /// Decodes any byte string; most inputs are a valid block with a valid μ law, but every bad
     /// shape (nBlock ≤ 0, nProps out of range, nTemp = 0, NULL pointers) stays reachable.
     pub fn decode(b: &mut Bytes) -> Self {
-        let nblock = b.pick(&[1, 1, 2, 3, 4, 5, 8, 17, 1, 2, 3, 0, -1]);
-        let nprops = b.pick(&[13, 13, 13, 13, 10, 8, 20, 2, 3, 7, 12, 21, 1, 0, -1]);
-        let ntemp = b.pick(&[1, 1, 1, 1, 2, 0, -1]);
-        let nfields = b.pick(&[0, 0, 1, 2, -1]);
+        let mut a = Args::new();
+        a.draw(b, &COEF_COUNTS);
         let null = match b.u8() {
             0 => CoefNull::FCoef,
             1 => CoefNull::FCoefDeriv,
@@ -151,28 +172,19 @@ impl FricCoefCase {
             8 => CoefNull::TempAvg,
             _ => CoefNull::None,
         };
-        let n = len(nblock);
-        let props = decode_props(b, len(nprops));
+        a.put("props", decode_props(b, a.len_of("nProps")));
+        a.draw(b, &[(&["slipData"], Reals(Len::Times(6, "nBlock")))]);
         // Slip rates: mostly finite and ≥ 0 (slipData(k,1) is a magnitude).
-        let mut slip = b.reals(6 * n);
-        let flags = b.u8();
-        if flags & 1 == 0 {
-            for x in &mut slip[..n] {
+        let n = a.len_of("nBlock");
+        if b.u8() & 1 == 0 {
+            for x in &mut a["slipData"][..n] {
                 *x = x.abs();
             }
         }
+        a.put_ints("iData", vec![b.u8().into(); 3]);
+        a.draw(b, &COEF_BLOCK);
         FricCoefCase {
-            nblock,
-            nprops,
-            ntemp,
-            nfields,
-            idata: vec![b.u8().into(); 3],
-            rdata: b.reals(3),
-            props,
-            slip,
-            pressure: b.reals(n),
-            temp: b.reals(n),
-            field: b.reals(n * len(nfields)),
+            args: a,
             names: Names {
                 interaction: b.name(),
                 secondary: b.name(),
@@ -184,16 +196,8 @@ impl FricCoefCase {
 
     /// Calls `fric_coef_` through its real symbol and checks every property; `Err` names the
     /// first one violated.
-    pub fn check(&self) -> Result<CoefOutputs, String> {
-        let before = self.clone();
-        let c = self.clone();
-        let n = len(self.nblock);
-        let mut out = CoefOutputs {
-            coef: vec![UNWRITTEN; 2 * n],
-            deriv: vec![UNWRITTEN; 2 * NDERIV * n],
-            message: String::new(),
-        };
-        let null = c.null;
+    pub fn check(&self) -> Result<Outputs, String> {
+        let null = self.null;
         let mo = |p: *mut f64, which: CoefNull| {
             if null == which {
                 std::ptr::null_mut()
@@ -204,50 +208,53 @@ impl FricCoefCase {
         let ro = |p: *const f64, which: CoefNull| {
             if null == which { std::ptr::null() } else { p }
         };
-        let io = |p: *const c_int, which: CoefNull| {
+        let io = |p: *const i32, which: CoefNull| {
             if null == which { std::ptr::null() } else { p }
         };
-        let [ci, sl, ms] = c.names.pointers();
-        let [ci_len, sl_len, ms_len] = c.names.lengths();
-        ifl_clear_error();
-        // SAFETY: every array has exactly the length the call declares (2·nBlock, 40·nBlock,
-        // nProps, 6·nBlock, nBlock, nBlock, nBlock·nFields, the hidden name lengths); scalars
-        // are locals; NULL where `null` says so.
-        unsafe {
-            fric_coef_(
-                mo(out.coef.as_mut_ptr(), CoefNull::FCoef),
-                mo(out.deriv.as_mut_ptr(), CoefNull::FCoefDeriv),
-                io(&c.nblock, CoefNull::NBlock),
-                io(&c.nprops, CoefNull::NProps),
-                io(&c.ntemp, CoefNull::NTemp),
-                &c.nfields,
-                c.idata.as_ptr(),
-                c.rdata.as_ptr(),
-                ci,
-                sl,
-                ms,
-                ro(c.props.as_ptr(), CoefNull::Props),
-                ro(c.slip.as_ptr(), CoefNull::SlipData),
-                ro(c.pressure.as_ptr(), CoefNull::Pressure),
-                ro(c.temp.as_ptr(), CoefNull::TempAvg),
-                c.field.as_ptr(),
-                ci_len,
-                sl_len,
-                ms_len,
-            );
-            out.message = last_error();
-        }
-        if !same_coef(&c, &before) {
-            return Err("an input argument was written".into());
-        }
+        let out = call(
+            &self.args,
+            &self.names,
+            &[],
+            &COEF_OUTPUTS,
+            |a, names, o| {
+                let [ci, sl, ms] = names.pointers();
+                let [ci_len, sl_len, ms_len] = names.lengths();
+                // SAFETY: every array has exactly the length the call declares (2·nBlock,
+                // 40·nBlock, nProps, 6·nBlock, nBlock, nBlock, nBlock·nFields, the hidden name
+                // lengths); scalars one entry; NULL where `null` says so.
+                unsafe {
+                    fric_coef_(
+                        mo(o.ptr_mut("fCoef"), CoefNull::FCoef),
+                        mo(o.ptr_mut("fCoefDeriv"), CoefNull::FCoefDeriv),
+                        io(a.int_ptr("nBlock"), CoefNull::NBlock),
+                        io(a.int_ptr("nProps"), CoefNull::NProps),
+                        io(a.int_ptr("nTemp"), CoefNull::NTemp),
+                        a.int_ptr("nFields"),
+                        a.int_ptr("iData"),
+                        a.ptr("rData"),
+                        ci,
+                        sl,
+                        ms,
+                        ro(a.ptr("props"), CoefNull::Props),
+                        ro(a.ptr("slipData"), CoefNull::SlipData),
+                        ro(a.ptr("pressure"), CoefNull::Pressure),
+                        ro(a.ptr("tempAvg"), CoefNull::TempAvg),
+                        a.ptr("fieldAvg"),
+                        ci_len,
+                        sl_len,
+                        ms_len,
+                    )
+                };
+            },
+        )?;
         self.check_outputs(&out)?;
         Ok(out)
     }
 
-    fn check_outputs(&self, out: &CoefOutputs) -> Result<(), String> {
-        let n = len(self.nblock);
+    fn check_outputs(&self, out: &Outputs) -> Result<(), String> {
+        let n = self.args.len_of("nBlock");
         let written = |v: &[f64]| !v.iter().all(unwritten);
-        let all = out.coef.iter().chain(&out.deriv);
+        let all = out["fCoef"].iter().chain(&out["fCoefDeriv"]);
         if !out.message.is_empty() {
             // Refused: one message naming the routine; the block zeroed when nBlock is
             // readable and ≥ 0 (and the array not NULL), nothing written otherwise.
@@ -261,13 +268,15 @@ impl FricCoefCase {
                 ));
             }
             if self.null == CoefNull::NBlock {
-                if written(&out.coef) || written(&out.deriv) {
+                if written(&out["fCoef"]) || written(&out["fCoefDeriv"]) {
                     return Err("nBlock NULL but an output was written".into());
                 }
                 return Ok(());
             }
             let zeroed = |v: &[f64], which| self.null == which || v.iter().all(|x| *x == 0.0);
-            if !zeroed(&out.coef, CoefNull::FCoef) || !zeroed(&out.deriv, CoefNull::FCoefDeriv) {
+            if !zeroed(&out["fCoef"], CoefNull::FCoef)
+                || !zeroed(&out["fCoefDeriv"], CoefNull::FCoefDeriv)
+            {
                 return Err(format!(
                     "refused ({}) but the block is not zeroed",
                     out.message
@@ -285,7 +294,7 @@ impl FricCoefCase {
         if let Some(x) = all.clone().find(|x| !x.is_finite()) {
             return Err(format!("success with a non-finite output {x}"));
         }
-        if n > 0 && !(written(&out.coef) && written(&out.deriv)) {
+        if n > 0 && !(written(&out["fCoef"]) && written(&out["fCoefDeriv"])) {
             return Err("success but the block was not written".into());
         }
         // PROPS(1) = 2 is accepted only where the adhesive law is the plain Coulomb law
@@ -293,7 +302,7 @@ impl FricCoefCase {
         let adhesive = self.prop(0) == 2.0;
         let isotropic = adhesive || self.prop(2) == 0.0;
         for k in 0..n {
-            let (rate, p) = (self.slip[k], self.pressure[k]);
+            let (rate, p) = (self.args["slipData"][k], self.args["pressure"][k]);
             if !(rate.is_finite() && rate >= 0.0 && p.is_finite()) {
                 return Err(format!(
                     "point {k}: bad rate {rate} or pressure {p} accepted"
@@ -340,7 +349,7 @@ impl FricCoefCase {
 
     /// `PROPS(i+1)`, 0 when absent.
     fn prop(&self, i: usize) -> f64 {
-        self.props.get(i).copied().unwrap_or(0.0)
+        self.args["props"].get(i).copied().unwrap_or(0.0)
     }
 
     /// A law-1 temperature law (`PROPS(12)` of law 2 is a heat fraction, not read here).
@@ -360,7 +369,7 @@ impl FricCoefCase {
         } else {
             mu1
         };
-        let (rate, p) = (self.slip[k], self.pressure[k].max(0.0));
+        let (rate, p) = (self.args["slipData"][k], self.args["pressure"][k].max(0.0));
         let (e, one_minus_e, mu_k1) = if self.prop(7) == 1.0 {
             let x = self.prop(9) * rate;
             ((-x).exp(), -(-x).exp_m1(), self.prop(8))
@@ -381,7 +390,7 @@ impl FricCoefCase {
             1.0
         };
         let theta = if self.reads_temperature() {
-            (-self.prop(11) * (self.temp[k] - self.prop(12))).exp()
+            (-self.prop(11) * (self.args["tempAvg"][k] - self.prop(12))).exp()
         } else {
             1.0
         };
@@ -392,19 +401,6 @@ impl FricCoefCase {
         let products = [mu1 * e, mu_k1 * one_minus_e, mu2 * e, mu_k2 * one_minus_e];
         (parts_ok && products.iter().all(|x| normal(*x))).then_some([m1, m2])
     }
-}
-
-fn same_coef(a: &FricCoefCase, b: &FricCoefCase) -> bool {
-    let reals = |c: &FricCoefCase| {
-        input_bits(
-            &c.rdata,
-            &[&c.props, &c.slip, &c.pressure, &c.temp, &c.field],
-        )
-    };
-    reals(a) == reals(b)
-        && [a.nblock, a.nprops, a.ntemp, a.nfields] == [b.nblock, b.nprops, b.ntemp, b.nfields]
-        && a.idata == b.idata
-        && a.names == b.names
 }
 
 /// Which pointer argument of `ifl_forced_sliding` is passed as NULL.
@@ -418,33 +414,20 @@ pub enum SlideNull {
     Stiffness,
 }
 
-/// Every `ifl_forced_sliding` argument; arrays of exactly `nfdir` (`nfdir²`) entries.
+/// Every `ifl_forced_sliding` argument: `args` by name (`nfdir`, `nprops`, `props`,
+/// `velocity(nfdir)`, `pressure`, `temperature`).
 #[derive(Clone, Debug)]
 pub struct ForcedSlidingCase {
-    pub props: Vec<f64>,
-    pub nprops: i32,
-    pub nfdir: i32,
-    pub velocity: Vec<f64>,
-    pub pressure: f64,
-    pub temperature: f64,
+    pub args: Args,
     pub null: SlideNull,
-}
-
-/// What `ifl_forced_sliding` wrote.
-#[derive(Clone, Debug)]
-pub struct SlideOutputs {
-    pub status: IflStatus,
-    pub tau: Vec<f64>,
-    pub damping: Vec<f64>,
-    pub stiffness: Vec<f64>,
-    pub message: String,
 }
 
 impl ForcedSlidingCase {
     /// Decodes any byte string (mostly nfdir 1 or 2 and a valid law-1 `PROPS`).
     pub fn decode(b: &mut Bytes) -> Self {
-        let nfdir = b.pick(&[1, 2, 1, 2, 1, 2, 0, 3, -1]);
-        let nprops = b.pick(&[13, 13, 10, 8, 4, 2, 20, 21, 1, 0, -1]);
+        let mut a = Args::new();
+        a.set_int("nfdir", b.pick(&[1, 2, 1, 2, 1, 2, 0, 3, -1]));
+        a.set_int("nprops", b.pick(&[13, 13, 10, 8, 4, 2, 20, 21, 1, 0, -1]));
         let null = match b.u8() {
             0 => SlideNull::Props,
             1 => SlideNull::Velocity,
@@ -453,29 +436,14 @@ impl ForcedSlidingCase {
             4 => SlideNull::Stiffness,
             _ => SlideNull::None,
         };
-        let props = decode_props(b, len(nprops));
-        ForcedSlidingCase {
-            props,
-            nprops,
-            nfdir,
-            velocity: b.reals(len(nfdir)),
-            pressure: b.real(),
-            temperature: b.real(),
-            null,
-        }
+        a.put("props", decode_props(b, a.len_of("nprops")));
+        a.draw(b, &SLIDE_POINT);
+        ForcedSlidingCase { args: a, null }
     }
 
-    /// Calls `ifl_forced_sliding` and checks every property.
-    pub fn check(&self) -> Result<SlideOutputs, String> {
-        let before = self.clone();
-        let n = len(self.nfdir);
-        let mut out = SlideOutputs {
-            status: IflStatus::Ok,
-            tau: vec![UNWRITTEN; n],
-            damping: vec![UNWRITTEN; n * n],
-            stiffness: vec![UNWRITTEN; n],
-            message: String::new(),
-        };
+    /// Calls `ifl_forced_sliding` and checks every property: what it wrote, and its status as
+    /// the integer `status`.
+    pub fn check(&self) -> Result<Outputs, String> {
         let null = self.null;
         let mo = |p: *mut f64, which| {
             if null == which {
@@ -485,45 +453,48 @@ impl ForcedSlidingCase {
             }
         };
         let ro = |p: *const f64, which| if null == which { std::ptr::null() } else { p };
-        ifl_clear_error();
-        // SAFETY: arrays of exactly nprops, nfdir, nfdir² entries; NULL where `null` says so.
-        unsafe {
-            out.status = ifl_forced_sliding(
-                ro(self.props.as_ptr(), SlideNull::Props),
-                self.nprops,
-                self.nfdir,
-                ro(self.velocity.as_ptr(), SlideNull::Velocity),
-                self.pressure,
-                self.temperature,
-                mo(out.tau.as_mut_ptr(), SlideNull::Tau),
-                mo(out.damping.as_mut_ptr(), SlideNull::Damping),
-                mo(out.stiffness.as_mut_ptr(), SlideNull::Stiffness),
-            );
-            out.message = last_error();
-        }
-        let unchanged = bits(&self.props) == bits(&before.props)
-            && bits(&self.velocity) == bits(&before.velocity);
-        if !unchanged {
-            return Err("an input was written".into());
-        }
+        let out = call(
+            &self.args,
+            &Names::none(),
+            &[],
+            &SLIDE_OUTPUTS,
+            |a, _, o| {
+                // SAFETY: arrays of exactly nprops, nfdir, nfdir² entries; NULL where `null` says
+                // so.
+                let status = unsafe {
+                    ifl_forced_sliding(
+                        ro(a.ptr("props"), SlideNull::Props),
+                        a.int("nprops"),
+                        a.int("nfdir"),
+                        ro(a.ptr("velocity"), SlideNull::Velocity),
+                        a.real("pressure"),
+                        a.real("temperature"),
+                        mo(o.ptr_mut("tau"), SlideNull::Tau),
+                        mo(o.ptr_mut("damping"), SlideNull::Damping),
+                        mo(o.ptr_mut("stiffness"), SlideNull::Stiffness),
+                    )
+                };
+                o.set_int("status", status as i32);
+            },
+        )?;
         self.check_outputs(&out)?;
         Ok(out)
     }
 
-    fn check_outputs(&self, out: &SlideOutputs) -> Result<(), String> {
-        let n = len(self.nfdir);
-        if (out.status == IflStatus::Ok) != out.message.is_empty() {
-            return Err(format!(
-                "status {:?} with message {:?}",
-                out.status, out.message
-            ));
+    fn check_outputs(&self, out: &Outputs) -> Result<(), String> {
+        let a = &self.args;
+        let n = a.len_of("nfdir");
+        let status = out.int("status");
+        let ok = status == IflStatus::Ok as i32;
+        if ok != out.message.is_empty() {
+            return Err(format!("status {status} with message {:?}", out.message));
         }
         let outputs = [
-            (&out.tau, SlideNull::Tau),
-            (&out.damping, SlideNull::Damping),
-            (&out.stiffness, SlideNull::Stiffness),
+            ("tau", SlideNull::Tau),
+            ("damping", SlideNull::Damping),
+            ("stiffness", SlideNull::Stiffness),
         ];
-        if out.status != IflStatus::Ok {
+        if !ok {
             if !out.message.starts_with("interfacial: ifl_forced_sliding: ") {
                 return Err(format!(
                     "message does not name the routine: {:?}",
@@ -531,9 +502,9 @@ impl ForcedSlidingCase {
                 ));
             }
             // Outputs zeroed when nfdir is 1 or 2 (and the pointer not NULL).
-            let valid = self.nfdir == 1 || self.nfdir == 2;
-            for (v, which) in outputs {
-                if valid && self.null != which && v.iter().any(|x| *x != 0.0) {
+            let valid = matches!(a.int("nfdir"), 1 | 2);
+            for (name, which) in outputs {
+                if valid && self.null != which && out[name].iter().any(|x| *x != 0.0) {
                     return Err(format!(
                         "refused ({}) but {which:?} not zeroed",
                         out.message
@@ -545,26 +516,23 @@ impl ForcedSlidingCase {
         if self.null != SlideNull::None {
             return Err(format!("a NULL {:?} was accepted", self.null));
         }
-        for (v, which) in outputs {
-            if let Some(x) = v.iter().find(|x| !x.is_finite() || unwritten(x)) {
+        for (name, which) in outputs {
+            if let Some(x) = out[name].iter().find(|x| !x.is_finite() || unwritten(x)) {
                 return Err(format!("success but {which:?} holds {x}"));
             }
         }
         // τ is parallel to the (scaled) velocity component by component: τ_a·v_a ≥ 0, and
         // zero with no pressure or no velocity.
-        for a in 0..n {
-            if out.tau[a] * self.velocity[a] < 0.0 {
-                return Err(format!(
-                    "τ({a}) = {} against v = {}",
-                    out.tau[a], self.velocity[a]
-                ));
+        let (tau, velocity, pressure) = (&out["tau"], &a["velocity"], a.real("pressure"));
+        for k in 0..n {
+            if tau[k] * velocity[k] < 0.0 {
+                return Err(format!("τ({k}) = {} against v = {}", tau[k], velocity[k]));
             }
         }
-        let still = self.velocity.iter().all(|v| *v == 0.0);
-        if (self.pressure <= 0.0 || still) && out.tau.iter().any(|t| *t != 0.0) {
+        let still = velocity.iter().all(|v| *v == 0.0);
+        if (pressure <= 0.0 || still) && tau.iter().any(|t| *t != 0.0) {
             return Err(format!(
-                "τ = {:?} with p = {} and v = {:?}",
-                out.tau, self.pressure, self.velocity
+                "τ = {tau:?} with p = {pressure} and v = {velocity:?}"
             ));
         }
         Ok(())

@@ -6,9 +6,10 @@
 use std::ffi::CString;
 use std::sync::Once;
 
-use super::bytes::{Bytes, bits};
-use super::contract::{Names, UNWRITTEN, last_error};
-use interfacial::abi::{IflConductance, IflStatus, gapcon_, ifl_clear_error, ifl_gap_conductance};
+use super::args::{Args, Len, Outputs, call};
+use super::bytes::Bytes;
+use super::contract::{Names, UNWRITTEN};
+use interfacial::abi::{IflConductance, IflStatus, gapcon_, ifl_gap_conductance};
 
 /// The configuration every `gapcon_` case runs against: one interaction per law, radiation in
 /// kelvin and in °C, and no `"*"` entry, so unknown names take the error path.
@@ -40,23 +41,14 @@ pub fn setup() {
     });
 }
 
-/// Every `gapcon_` argument the library may touch, and the rest.
+/// Every `gapcon_` argument: `args` by Fortran name (`D(2)`: clearance, pressure; `TEMP(2)`;
+/// `NOEL`, `NODE`, `NPRED`; `FLOWM(2)`, `PREDEF(2,NPRED)`, `TIME(2)`, `COORDS(3)`, never read,
+/// all NaN).
 #[derive(Clone, Debug)]
 pub struct GapconCase {
-    /// `D(2)`: clearance, pressure.
-    pub d: [f64; 2],
-    /// `TEMP(2)`.
-    pub temp: [f64; 2],
+    pub args: Args,
     /// `CINAME`, `SLNAME`, `MSNAME`.
     pub names: Names,
-    /// `FLOWM(2)`, `PREDEF(2,NPRED)`, `TIME(2)`, `COORDS(3)`: never read.
-    pub flowm: Vec<f64>,
-    pub predef: Vec<f64>,
-    pub time: Vec<f64>,
-    pub coords: Vec<f64>,
-    pub noel: i32,
-    pub node: i32,
-    pub npred: i32,
 }
 
 impl GapconCase {
@@ -77,67 +69,68 @@ impl GapconCase {
         let pad = usize::from(b.u8());
         let filler = if pad & 0x80 == 0 { b' ' } else { 0 };
         ciname.resize(ciname.len() + (pad & 0x7f), filler);
-        let npred = b.pick(&[1, 0, 2]);
-        GapconCase {
-            d: [b.real(), b.real()],
-            temp: [b.real(), b.real()],
-            names: Names {
-                interaction: ciname,
-                secondary: vec![b' '; 80],
-                main: vec![b' '; usize::from(b.u8() % 81)],
-            },
-            flowm: vec![f64::NAN; 2],
-            predef: vec![f64::NAN; 2 * usize::try_from(npred).unwrap_or(0)],
-            time: vec![f64::NAN; 2],
-            coords: vec![f64::NAN; 3],
-            noel: i32::from(b.u16()),
-            node: i32::from(b.u16()),
-            npred,
+        let mut a = Args::new();
+        a.set_int("NPRED", b.pick(&[1, 0, 2]));
+        a.put("D", b.reals(2));
+        a.put("TEMP", b.reals(2));
+        let names = Names {
+            interaction: ciname,
+            secondary: vec![b' '; 80],
+            main: vec![b' '; usize::from(b.u8() % 81)],
+        };
+        a.set_int("NOEL", i32::from(b.u16()));
+        a.set_int("NODE", i32::from(b.u16()));
+        for (name, n) in [("FLOWM", 2), ("TIME", 2), ("COORDS", 3)] {
+            a.put(name, vec![f64::NAN; n]);
         }
+        a.put("PREDEF", vec![f64::NAN; a.count(Len::Times(2, "NPRED"))]);
+        GapconCase { args: a, names }
     }
 
     /// Calls `gapcon_` and checks: `AK(1)` finite and ≥ 0 on success, 0 with a message naming
     /// GAPCON on failure; `AK(2..5)` and every input left alone. Returns `AK(1)`.
     pub fn check(&self) -> Result<f64, String> {
         setup();
-        let mut ak = vec![UNWRITTEN; 5];
-        let c = self.clone();
-        let (kstep, kinc) = (1i32, 1i32);
-        let [ci, sl, ms] = c.names.pointers();
-        let [ci_len, sl_len, ms_len] = c.names.lengths();
-        ifl_clear_error();
-        // SAFETY: AK(5), D(2), TEMP(2) and the names with their exact hidden lengths; the
-        // unread arrays have their declared lengths too.
-        let message = unsafe {
-            gapcon_(
-                ak.as_mut_ptr(),
-                c.d.as_ptr(),
-                c.flowm.as_ptr(),
-                c.temp.as_ptr(),
-                c.predef.as_ptr(),
-                c.time.as_ptr(),
-                ci,
-                sl,
-                ms,
-                c.coords.as_ptr(),
-                &c.noel,
-                &c.node,
-                &c.npred,
-                &kstep,
-                &kinc,
-                // AREA, never read (CalculiX's variant only).
-                #[cfg(feature = "calculix")]
-                &f64::NAN,
-                ci_len,
-                sl_len,
-                ms_len,
-            );
-            last_error()
-        };
-        if bits(&c.d) != bits(&self.d) || bits(&c.temp) != bits(&self.temp) || c.names != self.names
-        {
-            return Err("an input argument was written".into());
-        }
+        let out = call(
+            &self.args,
+            &self.names,
+            &[],
+            &[("AK", Len::Fixed(5))],
+            |a, names, o| {
+                let [ci, sl, ms] = names.pointers();
+                let [ci_len, sl_len, ms_len] = names.lengths();
+                let (kstep, kinc) = (1i32, 1i32);
+                // SAFETY: AK(5), D(2), TEMP(2) and the names with their exact hidden lengths; the
+                // unread arrays have their declared lengths too.
+                unsafe {
+                    gapcon_(
+                        o.ptr_mut("AK"),
+                        a.ptr("D"),
+                        a.ptr("FLOWM"),
+                        a.ptr("TEMP"),
+                        a.ptr("PREDEF"),
+                        a.ptr("TIME"),
+                        ci,
+                        sl,
+                        ms,
+                        a.ptr("COORDS"),
+                        a.int_ptr("NOEL"),
+                        a.int_ptr("NODE"),
+                        a.int_ptr("NPRED"),
+                        &kstep,
+                        &kinc,
+                        // AREA, never read (CalculiX's variant only).
+                        #[cfg(feature = "calculix")]
+                        &f64::NAN,
+                        ci_len,
+                        sl_len,
+                        ms_len,
+                    )
+                };
+            },
+        )?;
+        let Outputs { args, message } = &out;
+        let ak = &args["AK"];
         if ak[1..].iter().any(|x| *x != UNWRITTEN) {
             return Err(format!("AK(2..5) written: {ak:?}"));
         }
@@ -177,8 +170,8 @@ impl GapconCase {
             k: UNWRITTEN,
             ..IflConductance::default()
         };
-        let [clearance, pressure] = self.d;
-        let [theta_a, theta_b] = self.temp;
+        let [clearance, pressure] = [0, 1].map(|i| self.args["D"][i]);
+        let [theta_a, theta_b] = [0, 1].map(|i| self.args["TEMP"][i]);
         // SAFETY: a NUL-terminated name; `out` writable, or NULL (which must be refused with
         // nothing written).
         let native = |out: *mut IflConductance| unsafe {

@@ -1,8 +1,10 @@
 //! Decoders and property checks of the fuzz targets. The modules are also compiled into the
 //! tests by path (`tests/common/fuzz_cases.rs`), so a crash input replays as a plain `cargo
 //! test`; they name each other by `super::`, which is this crate's root here and that module
-//! there.
+//! there. Each case describes its entry point's arguments as a table read by [`args`], the one
+//! decoder, holder and caller every case shares (docs/fuzzing.md).
 
+pub mod args;
 pub mod batch_case;
 pub mod bytes;
 pub mod config_case;

@@ -8,59 +8,74 @@
 
 use std::ffi::c_int;
 
+use super::args::{Args, Draw, Len, ONE, Outputs, Row, call, of};
 use super::bytes::{Bytes, bits, len};
-use super::contract::{Names, input_bits, last_error, pnewdt_refusal, unwritten};
+use super::contract::{Names, adhesive_props, adhesive_rate, norm, pnewdt_refusal, unwritten};
 use super::gapcon_case::NAMES;
-use interfacial::abi::{ifl_clear_error, uinter_};
+use Draw::{Int, Large, Number, Pick, Reals};
+use interfacial::abi::uinter_;
 
-pub use super::contract::UNWRITTEN;
-/// The same, for the integer outputs.
-pub const UNWRITTEN_INT: c_int = -7777;
+/// The counts, drawn first. The choices favour valid calls (NDIR 2 or 3, NSTATV ≥ 3, NPROPS
+/// 9–14) so most inputs reach the law, but every bad shape stays reachable.
+const COUNTS: [Row; 5] = [
+    (
+        &["NDIR"],
+        Pick(&[2, 3, 2, 3, 2, 3, 2, 3, 2, 3, 1, 4, 0, -1]),
+    ),
+    (&["NSTATV"], Pick(&[3, 3, 3, 3, 4, 5, 8, 2, 0, -1])),
+    (
+        &["NPROPS"],
+        Pick(&[10, 11, 13, 13, 13, 13, 13, 12, 9, 14, 2, 1, 0, -1]),
+    ),
+    (&["MCRD"], Pick(&[3, 2, 1, 0])),
+    (&["NPRED"], Pick(&[1, 0, 2])),
+];
 
-/// Every `uinter_` argument. Arrays have exactly their declared lengths.
+/// After `PROPS`, two bytes (flags, the configured name) and `STATEV`: the rest of the point.
+const POINT: [Row; 17] = [
+    (&["NODE"], Number),
+    (&["KSTEP", "KINC", "KIT"], Int(1)),
+    (&["LINPER", "LPRINT"], Int(0)),
+    (&["LOPENCLOSE"], Pick(&[-1, 0, 1, 2])),
+    (&["LSTATE"], Pick(&[-1, 0, 1, 3, 4])),
+    (&["LSDI"], Int(0)),
+    (&["STRESS"], Reals(of("NDIR"))),
+    (&["PNEWDT"], Large),
+    (&["RDISP", "DRDISP"], Reals(of("NDIR"))),
+    (&["TEMP", "DTEMP"], Reals(Len::Fixed(2))),
+    (&["PREDEF", "DPRED"], Reals(Len::Times(2, "NPRED"))),
+    (&["TIME"], Reals(Len::Fixed(2))),
+    (&["DTIME", "FREQR"], Reals(ONE)),
+    (&["COORDS"], Reals(of("MCRD"))),
+    (&["ALOCALDIR"], Reals(Len::Square("MCRD"))),
+    (&["DROT"], Reals(Len::Fixed(4))),
+    (&["AREA", "CHRLNGTH"], Reals(ONE)),
+];
+
+/// The arguments `uinter_` may write and has read: kept as on entry.
+const IN_OUT: [&str; 6] = ["STRESS", "STATEV", "PNEWDT", "LOPENCLOSE", "LSTATE", "LSDI"];
+
+/// The arguments `uinter_` only writes (all but `DDSDDR` optional), with their lengths.
+const OUTPUTS: [(&str, Len); 12] = [
+    ("DDSDDR", Len::Square("NDIR")),
+    ("DVISCOUS", Len::Square("NDIR")),
+    ("DSTRUCTURAL", Len::Square("NDIR")),
+    ("FLUX", Len::Fixed(2)),
+    ("DDFDDT", Len::Fixed(4)),
+    ("DDSDDT", Len::Times(2, "NDIR")),
+    ("DDFDDR", Len::Times(2, "NDIR")),
+    ("SED", ONE),
+    ("SFD", ONE),
+    ("SPD", ONE),
+    ("SVD", ONE),
+    ("SCD", ONE),
+];
+
+/// Every `uinter_` argument: `args` by Fortran name (`STRESS(NDIR)`, `PROPS(NPROPS)`, …), each
+/// array of exactly its declared length.
 #[derive(Clone, Debug)]
 pub struct UinterCase {
-    pub ndir: i32,
-    pub nstatv: i32,
-    pub npred: i32,
-    pub nprops: i32,
-    pub mcrd: i32,
-    pub node: i32,
-    pub kstep: i32,
-    pub kinc: i32,
-    pub kit: i32,
-    pub linper: i32,
-    pub lprint: i32,
-    /// `LOPENCLOSE`, `LSTATE`, `LSDI` on entry.
-    pub lopenclose: i32,
-    pub lstate: i32,
-    pub lsdi: i32,
-    /// `STRESS(NDIR)`, start of increment.
-    pub stress: Vec<f64>,
-    /// `STATEV(NSTATV)`.
-    pub statev: Vec<f64>,
-    pub pnewdt: f64,
-    /// `RDISP(NDIR)`, `DRDISP(NDIR)`.
-    pub rdisp: Vec<f64>,
-    pub drdisp: Vec<f64>,
-    /// `TEMP(2)`, `DTEMP(2)`.
-    pub temp: Vec<f64>,
-    pub dtemp: Vec<f64>,
-    /// `PREDEF(2,NPRED)`, `DPRED(2,NPRED)`.
-    pub predef: Vec<f64>,
-    pub dpred: Vec<f64>,
-    /// `TIME(2)`.
-    pub time: Vec<f64>,
-    pub dtime: f64,
-    pub freqr: f64,
-    /// `PROPS(NPROPS)`.
-    pub props: Vec<f64>,
-    /// `COORDS(MCRD)`, `ALOCALDIR(MCRD,MCRD)`, `DROT(2,2)`.
-    pub coords: Vec<f64>,
-    pub alocaldir: Vec<f64>,
-    pub drot: Vec<f64>,
-    pub area: f64,
-    pub chrlngth: f64,
+    pub args: Args,
     /// `CINAME`, `SLNAME`, `MSNAME`.
     pub names: Names,
     /// Pass NULL for every optional output (`DVISCOUS`, `DSTRUCTURAL`, `FLUX`, `DDFDDT`,
@@ -68,54 +83,56 @@ pub struct UinterCase {
     pub null_optional: bool,
 }
 
+/// An adhesive-favouring `PROPS` of `NPROPS` entries, with a positive K_n mostly.
+fn decode_props(b: &mut Bytes, nprops: i32) -> Vec<f64> {
+    let mut props: Vec<f64> = Vec::with_capacity(len(nprops));
+    for i in 0..len(nprops) {
+        let sel = b.u8() % 8;
+        let v = match (i, sel) {
+            (_, 7) => b.real(),
+            // PROPS(1): the adhesive code, sometimes Coulomb.
+            (0, 6) => 1.0,
+            (0, _) => 2.0,
+            // μ_d, and μ_s none / equal / above.
+            (1, 0) => 0.0,
+            (1, _) => b.unit(),
+            (2, 0..=2) => 0.0,
+            (2, 3) => -1.0,
+            (2, _) => props[1] + b.unit(),
+            // S_a, N_a: 0 or positive.
+            (3 | 4, 0 | 1) => 0.0,
+            (3 | 4, _) => b.positive(),
+            // k_μ, v_½: mostly 0 (rate independent).
+            (5 | 6, 0..=3) => 0.0,
+            (5 | 6, _) => b.positive(),
+            // γ_crit, tolerance: 0 (default) or positive.
+            (7 | 8, 0..=2) => 0.0,
+            (7 | 8, _) => b.positive(),
+            // K_n: positive, sometimes 0 (refused).
+            (9, 0) => 0.0,
+            (9, _) => b.positive(),
+            // Conduction: 0 or 1.
+            (10, 0..=3) => 0.0,
+            (10, _) => 1.0,
+            // η, f: in [0, 1].
+            (11 | 12, 0 | 1) => 0.0,
+            (11 | 12, _) => b.unit(),
+            _ => 0.0,
+        };
+        props.push(v);
+    }
+    props
+}
+
 impl UinterCase {
     /// Decodes any byte string. The choices favour valid calls (NDIR 2 or 3, NSTATV ≥ 3, an
     /// adhesive `PROPS` with a positive K_n) so most inputs reach the law, but every bad shape
     /// stays reachable.
     pub fn decode(data: &[u8]) -> Self {
-        let mut b = Bytes::new(data);
-        let ndir = b.pick(&[2, 3, 2, 3, 2, 3, 2, 3, 2, 3, 1, 4, 0, -1]);
-        let nstatv = b.pick(&[3, 3, 3, 3, 4, 5, 8, 2, 0, -1]);
-        let nprops = b.pick(&[10, 11, 13, 13, 13, 13, 13, 12, 9, 14, 2, 1, 0, -1]);
-        let mcrd = b.pick(&[3, 2, 1, 0]);
-        let npred = b.pick(&[1, 0, 2]);
-        let n = len(ndir);
-        let mut props: Vec<f64> = Vec::with_capacity(len(nprops));
-        for i in 0..len(nprops) {
-            let sel = b.u8() % 8;
-            let v = match (i, sel) {
-                (_, 7) => b.real(),
-                // PROPS(1): the adhesive code, sometimes Coulomb.
-                (0, 6) => 1.0,
-                (0, _) => 2.0,
-                // μ_d, and μ_s none / equal / above.
-                (1, 0) => 0.0,
-                (1, _) => b.unit(),
-                (2, 0..=2) => 0.0,
-                (2, 3) => -1.0,
-                (2, _) => props[1] + b.unit(),
-                // S_a, N_a: 0 or positive.
-                (3 | 4, 0 | 1) => 0.0,
-                (3 | 4, _) => b.positive(),
-                // k_μ, v_½: mostly 0 (rate independent).
-                (5 | 6, 0..=3) => 0.0,
-                (5 | 6, _) => b.positive(),
-                // γ_crit, tolerance: 0 (default) or positive.
-                (7 | 8, 0..=2) => 0.0,
-                (7 | 8, _) => b.positive(),
-                // K_n: positive, sometimes 0 (refused).
-                (9, 0) => 0.0,
-                (9, _) => b.positive(),
-                // Conduction: 0 or 1.
-                (10, 0..=3) => 0.0,
-                (10, _) => 1.0,
-                // η, f: in [0, 1].
-                (11 | 12, 0 | 1) => 0.0,
-                (11 | 12, _) => b.unit(),
-                _ => 0.0,
-            };
-            props.push(v);
-        }
+        let b = &mut Bytes::new(data);
+        let mut a = Args::new();
+        a.draw(b, &COUNTS);
+        a.put("PROPS", decode_props(b, a.int("NPROPS")));
         let flags = b.u8();
         let configured = b.u8();
         let name = |b: &mut Bytes, configured: Option<&str>| {
@@ -133,220 +150,162 @@ impl UinterCase {
             v
         };
         let ci = (configured < 224).then(|| NAMES[usize::from(configured) % NAMES.len()]);
-        let statev = {
-            let mut s = b.reals(len(nstatv));
-            // STATEV(3) is a status code; keep it one of the law's mostly.
-            if let Some(x) = s.get_mut(2) {
-                let k = b.u8();
-                if k < 224 {
-                    *x = [0.0, 1.0, 3.0, 4.0][usize::from(k % 4)];
-                }
+        a.draw(b, &[(&["STATEV"], Reals(of("NSTATV")))]);
+        let statev = &mut a["STATEV"];
+        // STATEV(3) is a status code; keep it one of the law's mostly.
+        if let Some(x) = statev.get_mut(2) {
+            let k = b.u8();
+            if k < 224 {
+                *x = [0.0, 1.0, 3.0, 4.0][usize::from(k % 4)];
             }
-            if flags & 0x10 == 0 {
-                // A state the law could have written: slip and rate finite, ≥ 0.
-                for x in s.iter_mut().take(2) {
-                    *x = if x.is_finite() { x.abs() } else { 0.0 };
-                }
+        }
+        if flags & 0x10 == 0 {
+            // A state the law could have written: slip and rate finite, ≥ 0.
+            for x in statev.iter_mut().take(2) {
+                *x = if x.is_finite() { x.abs() } else { 0.0 };
             }
-            s
-        };
+        }
+        a.draw(b, &POINT);
         UinterCase {
-            ndir,
-            nstatv,
-            npred,
-            nprops,
-            mcrd,
-            node: i32::from(b.u16()),
-            kstep: 1,
-            kinc: 1,
-            kit: 1,
-            linper: 0,
-            lprint: 0,
-            lopenclose: b.pick(&[-1, 0, 1, 2]),
-            lstate: b.pick(&[-1, 0, 1, 3, 4]),
-            lsdi: 0,
-            stress: b.reals(n),
-            statev,
-            pnewdt: b.large(),
-            rdisp: b.reals(n),
-            drdisp: b.reals(n),
-            temp: b.reals(2),
-            dtemp: b.reals(2),
-            predef: b.reals(2 * len(npred)),
-            dpred: b.reals(2 * len(npred)),
-            time: b.reals(2),
-            dtime: b.real(),
-            freqr: b.real(),
-            props,
-            coords: b.reals(len(mcrd)),
-            alocaldir: b.reals(len(mcrd) * len(mcrd)),
-            drot: b.reals(4),
-            area: b.real(),
-            chrlngth: b.real(),
+            args: a,
             names: Names {
-                interaction: name(&mut b, ci),
-                secondary: name(&mut b, None),
-                main: name(&mut b, None),
+                interaction: name(b, ci),
+                secondary: name(b, None),
+                main: name(b, None),
             },
             null_optional: flags & 0x80 != 0,
         }
     }
 
     /// Calls `uinter_` and checks every property; `Err` names the first one violated.
-    pub fn check(&self) -> Result<UinterOutputs, String> {
-        let before = self.clone();
-        let c = self.clone();
-        let n = len(self.ndir);
-        let mut out = UinterOutputs {
-            stress: c.stress.clone(),
-            ddsddr: vec![UNWRITTEN; n * n],
-            dviscous: vec![UNWRITTEN; n * n],
-            dstructural: vec![UNWRITTEN; n * n],
-            flux: vec![UNWRITTEN; 2],
-            ddfddt: vec![UNWRITTEN; 4],
-            ddsddt: vec![UNWRITTEN; 2 * n],
-            ddfddr: vec![UNWRITTEN; 2 * n],
-            statev: c.statev.clone(),
-            energies: [UNWRITTEN; 5],
-            pnewdt: c.pnewdt,
-            lopenclose: c.lopenclose,
-            lstate: c.lstate,
-            lsdi: c.lsdi,
-            message: String::new(),
-        };
-        let null = c.null_optional;
+    pub fn check(&self) -> Result<Outputs, String> {
+        let null = self.null_optional;
         let opt = |p: *mut f64| if null { std::ptr::null_mut() } else { p };
-        let [sed, sfd, spd, svd, scd] = out.energies.each_mut().map(|p| opt(p));
-        let lstate: *mut c_int = if null {
-            std::ptr::null_mut()
-        } else {
-            &mut out.lstate
-        };
-        let [ci, sl, ms] = c.names.pointers();
-        let [ci_len, sl_len, ms_len] = c.names.lengths();
-        ifl_clear_error();
-        // SAFETY: every array has exactly the length the call declares (NDIR, NDIR², 2, 4,
-        // 2·NDIR, NSTATV, 2·NPRED, NPROPS, MCRD, MCRD², the hidden name lengths); scalars are
-        // locals; optional outputs are NULL or valid.
-        unsafe {
-            uinter_(
-                out.stress.as_mut_ptr(),
-                out.ddsddr.as_mut_ptr(),
-                opt(out.dviscous.as_mut_ptr()),
-                opt(out.dstructural.as_mut_ptr()),
-                opt(out.flux.as_mut_ptr()),
-                opt(out.ddfddt.as_mut_ptr()),
-                opt(out.ddsddt.as_mut_ptr()),
-                opt(out.ddfddr.as_mut_ptr()),
-                out.statev.as_mut_ptr(),
-                sed,
-                sfd,
-                spd,
-                svd,
-                scd,
-                &mut out.pnewdt,
-                c.rdisp.as_ptr(),
-                c.drdisp.as_ptr(),
-                c.temp.as_ptr(),
-                c.dtemp.as_ptr(),
-                c.predef.as_ptr(),
-                c.dpred.as_ptr(),
-                c.time.as_ptr(),
-                &c.dtime,
-                &c.freqr,
-                ci,
-                sl,
-                ms,
-                c.props.as_ptr(),
-                c.coords.as_ptr(),
-                c.alocaldir.as_ptr(),
-                c.drot.as_ptr(),
-                &c.area,
-                &c.chrlngth,
-                &c.node,
-                &c.ndir,
-                &c.nstatv,
-                &c.npred,
-                &c.nprops,
-                &c.mcrd,
-                &c.kstep,
-                &c.kinc,
-                &c.kit,
-                &c.linper,
-                &mut out.lopenclose,
-                lstate,
-                &mut out.lsdi,
-                &c.lprint,
-                ci_len,
-                sl_len,
-                ms_len,
-            );
-            out.message = last_error();
-        }
-        if !same(&c, &before) {
-            return Err("an input argument was written".into());
-        }
+        let out = call(&self.args, &self.names, &IN_OUT, &OUTPUTS, |a, names, o| {
+            let lstate: *mut c_int = if null {
+                std::ptr::null_mut()
+            } else {
+                o.int_ptr_mut("LSTATE")
+            };
+            let [ci, sl, ms] = names.pointers();
+            let [ci_len, sl_len, ms_len] = names.lengths();
+            // SAFETY: every array has exactly the length the call declares (NDIR, NDIR², 2, 4,
+            // 2·NDIR, NSTATV, 2·NPRED, NPROPS, MCRD, MCRD², the hidden name lengths; scalars one
+            // entry); optional outputs are NULL or valid.
+            unsafe {
+                uinter_(
+                    o.ptr_mut("STRESS"),
+                    o.ptr_mut("DDSDDR"),
+                    opt(o.ptr_mut("DVISCOUS")),
+                    opt(o.ptr_mut("DSTRUCTURAL")),
+                    opt(o.ptr_mut("FLUX")),
+                    opt(o.ptr_mut("DDFDDT")),
+                    opt(o.ptr_mut("DDSDDT")),
+                    opt(o.ptr_mut("DDFDDR")),
+                    o.ptr_mut("STATEV"),
+                    opt(o.ptr_mut("SED")),
+                    opt(o.ptr_mut("SFD")),
+                    opt(o.ptr_mut("SPD")),
+                    opt(o.ptr_mut("SVD")),
+                    opt(o.ptr_mut("SCD")),
+                    o.ptr_mut("PNEWDT"),
+                    a.ptr("RDISP"),
+                    a.ptr("DRDISP"),
+                    a.ptr("TEMP"),
+                    a.ptr("DTEMP"),
+                    a.ptr("PREDEF"),
+                    a.ptr("DPRED"),
+                    a.ptr("TIME"),
+                    a.ptr("DTIME"),
+                    a.ptr("FREQR"),
+                    ci,
+                    sl,
+                    ms,
+                    a.ptr("PROPS"),
+                    a.ptr("COORDS"),
+                    a.ptr("ALOCALDIR"),
+                    a.ptr("DROT"),
+                    a.ptr("AREA"),
+                    a.ptr("CHRLNGTH"),
+                    a.int_ptr("NODE"),
+                    a.int_ptr("NDIR"),
+                    a.int_ptr("NSTATV"),
+                    a.int_ptr("NPRED"),
+                    a.int_ptr("NPROPS"),
+                    a.int_ptr("MCRD"),
+                    a.int_ptr("KSTEP"),
+                    a.int_ptr("KINC"),
+                    a.int_ptr("KIT"),
+                    a.int_ptr("LINPER"),
+                    o.int_ptr_mut("LOPENCLOSE"),
+                    lstate,
+                    o.int_ptr_mut("LSDI"),
+                    a.int_ptr("LPRINT"),
+                    ci_len,
+                    sl_len,
+                    ms_len,
+                )
+            };
+        })?;
         self.check_outputs(&out)?;
         Ok(out)
     }
 
-    fn check_outputs(&self, out: &UinterOutputs) -> Result<(), String> {
-        if out.lsdi != self.lsdi {
+    fn check_outputs(&self, out: &Outputs) -> Result<(), String> {
+        let a = &self.args;
+        if out.int("LSDI") != a.int("LSDI") {
             return Err("LSDI was written".into());
         }
-        let refused = pnewdt_refusal(self.pnewdt, out.pnewdt, &out.message, "UINTER")?;
-        let state_kept = bits(&out.stress) == bits(&self.stress)
-            && bits(&out.statev) == bits(&self.statev)
-            && out.lopenclose == self.lopenclose
-            && out.lstate == self.lstate;
+        let refused = pnewdt_refusal(a.real("PNEWDT"), out.real("PNEWDT"), &out.message, "UINTER")?;
+        let kept = |name: &str| bits(&out[name]) == bits(&a[name]);
+        let state_kept = kept("STRESS")
+            && kept("STATEV")
+            && out.int("LOPENCLOSE") == a.int("LOPENCLOSE")
+            && out.int("LSTATE") == a.int("LSTATE");
+        let written = out.args.written(&OUTPUTS.map(|(name, _)| name));
         if refused {
             if !state_kept {
                 return Err("refused but STRESS, STATEV, LOPENCLOSE or LSTATE changed".into());
             }
-            if let Some(x) = out.written().iter().find(|x| **x != 0.0) {
+            if let Some(x) = written.iter().find(|x| **x != 0.0) {
                 return Err(format!("refused but an output was set to {x}, not zeroed"));
             }
             return Ok(());
         }
         // Success: only a valid shape gets here.
-        let n = len(self.ndir);
-        if !(2..=3).contains(&n) || self.nstatv < 3 {
+        let n = a.len_of("NDIR");
+        if !(2..=3).contains(&n) || a.int("NSTATV") < 3 {
             return Err(format!(
                 "accepted NDIR = {}, NSTATV = {}",
-                self.ndir, self.nstatv
+                a.int("NDIR"),
+                a.int("NSTATV")
             ));
         }
-        let mut all = out.written();
-        all.extend(&out.stress);
-        all.extend(&out.statev[..3]);
+        let (stress, statev, statev0) = (&out["STRESS"], &out["STATEV"], &a["STATEV"]);
+        let mut all = written;
+        all.extend(stress);
+        all.extend(&statev[..3]);
         if let Some(x) = all.iter().find(|x| !x.is_finite()) {
             return Err(format!("success with a non-finite output {x}: {out:?}"));
         }
-        if out.ddsddr.iter().any(unwritten) {
+        if out["DDSDDR"].iter().any(unwritten) {
             return Err("DDSDDR not fully written".into());
         }
-        if !self.null_optional {
-            let everything = [
-                &out.dviscous,
-                &out.dstructural,
-                &out.flux,
-                &out.ddfddt,
-                &out.ddsddt,
-                &out.ddfddr,
-            ];
-            let unwritten = everything.iter().any(|v| v.iter().any(unwritten))
-                || out.energies.iter().any(unwritten);
-            if unwritten {
-                return Err("an output was left unwritten".into());
-            }
+        let optional = &OUTPUTS[1..];
+        if !self.null_optional
+            && optional
+                .iter()
+                .any(|(name, _)| out[*name].iter().any(unwritten))
+        {
+            return Err("an output was left unwritten".into());
         }
-        if bits(&out.statev[3..]) != bits(&self.statev[3..]) {
+        if bits(&statev[3..]) != bits(&statev0[3..]) {
             return Err("STATEV past the law's 3 entries was written".into());
         }
-        let [slip0, _, _] = [self.statev[0], self.statev[1], self.statev[2]];
-        let [slip, rate, status] = [out.statev[0], out.statev[1], out.statev[2]];
+        let [slip0, _, _] = [statev0[0], statev0[1], statev0[2]];
+        let [slip, rate, status] = [statev[0], statev[1], statev[2]];
         if rate < 0.0 || slip < slip0 {
-            return Err(format!("bad slip state {:?}", &out.statev[..3]));
+            return Err(format!("bad slip state {:?}", &statev[..3]));
         }
         let code = match status {
             0.0 => 0,
@@ -355,70 +314,68 @@ impl UinterCase {
             4.0 => 4,
             _ => return Err(format!("status STATEV(3) = {status}")),
         };
-        if !self.null_optional && out.lstate != code {
-            return Err(format!("LSTATE = {} but STATEV(3) = {status}", out.lstate));
-        }
-        if out.lopenclose != c_int::from(code != 4) {
+        if !self.null_optional && out.int("LSTATE") != code {
             return Err(format!(
-                "LOPENCLOSE = {} with status {code}",
-                out.lopenclose
+                "LSTATE = {} but STATEV(3) = {status}",
+                out.int("LSTATE")
             ));
         }
-        let p = out.stress[0];
-        let tau = out.stress[1..].iter().fold(0.0f64, |s, x| s.hypot(*x));
+        if out.int("LOPENCLOSE") != c_int::from(code != 4) {
+            return Err(format!(
+                "LOPENCLOSE = {} with status {code}",
+                out.int("LOPENCLOSE")
+            ));
+        }
+        let p = stress[0];
+        let tau = norm(&stress[1..]);
         match code {
             4 if p != 0.0 || tau != 0.0 => {
-                return Err(format!("open but STRESS = {:?}", out.stress));
+                return Err(format!("open but STRESS = {stress:?}"));
             }
-            3 if p > 0.0 => return Err(format!("bonded in compression: {:?}", out.stress)),
-            0 | 1 if p < 0.0 => return Err(format!("closed in tension: {:?}", out.stress)),
+            3 if p > 0.0 => return Err(format!("bonded in compression: {stress:?}")),
+            0 | 1 if p < 0.0 => return Err(format!("closed in tension: {stress:?}")),
             _ => {}
         }
         self.check_strength(out, tau)?;
         if !self.null_optional {
-            let [sed, sfd, spd, svd, scd] = out.energies;
+            let [sed, sfd, spd, svd, scd] =
+                ["SED", "SFD", "SPD", "SVD", "SCD"].map(|e| out.real(e));
             if sed < 0.0 || sfd < 0.0 || spd < 0.0 || [svd, scd] != [0.0; 2] {
-                return Err(format!("energies {:?}", out.energies));
+                return Err(format!("energies {:?}", [sed, sfd, spd, svd, scd]));
             }
             // SPD is the energy of a bond breaking in this increment: a point not open at the
             // start (STATEV(3) ≠ 4), apart at the end (RDISP(1) ≤ 0), open after the call, with
             // separation adhesion (S_a, N_a > 0). Zero in every other increment.
-            let get = |i: usize| self.props.get(i).copied().unwrap_or(0.0);
-            let broke = self.statev[2] != 4.0
+            let broke = statev0[2] != 4.0
                 && code == 4
-                && self.rdisp[0] <= 0.0
-                && get(3) > 0.0
-                && get(4) > 0.0;
+                && a["RDISP"][0] <= 0.0
+                && self.prop(3) > 0.0
+                && self.prop(4) > 0.0;
             if spd != 0.0 && !broke {
                 return Err(format!("SPD = {spd:e} without a bond breaking: {out:?}"));
             }
-            if bits(&out.dviscous) != bits(&vec![0.0; n * n])
-                || bits(&out.dstructural) != bits(&vec![0.0; n * n])
-                || bits(&out.ddsddt) != bits(&vec![0.0; 2 * n])
-            {
+            let zero = |name: &str| out[name].iter().all(|x| x.to_bits() == 0);
+            if !(zero("DVISCOUS") && zero("DSTRUCTURAL") && zero("DDSDDT")) {
                 return Err("DVISCOUS, DSTRUCTURAL or DDSDDT not zero".into());
             }
         }
         Ok(())
     }
 
+    /// `PROPS(i+1)`, 0 when absent.
+    fn prop(&self, i: usize) -> f64 {
+        self.args["PROPS"].get(i).copied().unwrap_or(0.0)
+    }
+
     /// |τ| ≤ (max(μ_s, μ_d) + k_μ·Δv)·p⁺ + S_a (seed 004: the static strength in stick, the
     /// rate-dependent strength while sliding, below S_a while bonded, 0 when open).
-    fn check_strength(&self, out: &UinterOutputs, tau: f64) -> Result<(), String> {
-        let get = |i: usize| self.props.get(i).copied().unwrap_or(0.0);
-        let (mu_d, mu_s, s_a, k_mu) = (get(1), get(2), get(3), get(5));
+    fn check_strength(&self, out: &Outputs, tau: f64) -> Result<(), String> {
+        let [mu_d, mu_s, s_a, k_mu] = adhesive_props(&self.args["PROPS"]);
         let mu = if mu_s > 0.0 { mu_s.max(mu_d) } else { mu_d };
-        let p_plus = out.stress[0].max(0.0);
+        let p_plus = out["STRESS"][0].max(0.0);
         // A slip rate saturated at f64::MAX (a slip over a subnormal DTIME) no longer tells
         // the rate the law used: no bound then for a rate-dependent law.
-        // After a slip (start status 1) a stick increment keeps the stiffness of the start rate
-        // (docs/props.md, the rate-dependent formulation): its strength is g(start rate).
-        let start_rate = if self.statev.get(2) == Some(&1.0) {
-            self.statev.get(1).copied().unwrap_or(0.0).max(0.0)
-        } else {
-            0.0
-        };
-        let rate = out.statev[1].max(start_rate);
+        let rate = adhesive_rate(&self.args["STATEV"], &out["STATEV"]);
         let bound = if rate == f64::MAX && k_mu > 0.0 {
             f64::INFINITY
         } else {
@@ -432,90 +389,4 @@ impl UinterCase {
         }
         Ok(())
     }
-}
-
-/// What `uinter_` wrote, and its message (empty on success).
-#[derive(Clone, Debug)]
-pub struct UinterOutputs {
-    pub stress: Vec<f64>,
-    pub ddsddr: Vec<f64>,
-    pub dviscous: Vec<f64>,
-    pub dstructural: Vec<f64>,
-    pub flux: Vec<f64>,
-    pub ddfddt: Vec<f64>,
-    pub ddsddt: Vec<f64>,
-    pub ddfddr: Vec<f64>,
-    pub statev: Vec<f64>,
-    /// `SED`, `SFD`, `SPD`, `SVD`, `SCD`.
-    pub energies: [f64; 5],
-    pub pnewdt: f64,
-    pub lopenclose: i32,
-    pub lstate: i32,
-    pub lsdi: i32,
-    pub message: String,
-}
-
-impl UinterOutputs {
-    /// The entries of the tangents, fluxes and energies that the call wrote.
-    pub fn written(&self) -> Vec<f64> {
-        let arrays = [
-            &self.ddsddr,
-            &self.dviscous,
-            &self.dstructural,
-            &self.flux,
-            &self.ddfddt,
-            &self.ddsddt,
-            &self.ddfddr,
-        ];
-        arrays
-            .into_iter()
-            .flatten()
-            .chain(&self.energies)
-            .copied()
-            .filter(|x| !unwritten(x))
-            .collect()
-    }
-}
-
-/// Bitwise equality of every input.
-fn same(a: &UinterCase, b: &UinterCase) -> bool {
-    let reals = |c: &UinterCase| {
-        input_bits(
-            &[c.pnewdt, c.dtime, c.freqr, c.area, c.chrlngth],
-            &[
-                &c.stress,
-                &c.statev,
-                &c.rdisp,
-                &c.drdisp,
-                &c.temp,
-                &c.dtemp,
-                &c.predef,
-                &c.dpred,
-                &c.time,
-                &c.props,
-                &c.coords,
-                &c.alocaldir,
-                &c.drot,
-            ],
-        )
-    };
-    let ints = |c: &UinterCase| {
-        [
-            c.ndir,
-            c.nstatv,
-            c.npred,
-            c.nprops,
-            c.mcrd,
-            c.node,
-            c.kstep,
-            c.kinc,
-            c.kit,
-            c.linper,
-            c.lprint,
-            c.lopenclose,
-            c.lstate,
-            c.lsdi,
-        ]
-    };
-    reals(a) == reals(b) && ints(a) == ints(b) && a.names == b.names
 }

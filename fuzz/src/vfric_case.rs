@@ -5,11 +5,13 @@
 //! Shared by the `vfric` fuzz target and `tests/fuzz_regressions_vfric.rs` (included there by
 //! path).
 
-use std::ffi::{c_char, c_int};
+use std::ffi::c_int;
 
+use super::args::{Args, Draw, Outputs, Row, call};
 use super::bytes::{Bytes, bits, len};
-use super::contract::{last_error, unwritten};
-use interfacial::abi::{ifl_clear_error, vfric_};
+use super::contract::{Names, unwritten};
+use Draw::Pick;
+use interfacial::abi::vfric_;
 
 /// Written into every output entry and guard before the call, to see what the call wrote.
 pub use super::contract::UNWRITTEN;
@@ -40,43 +42,53 @@ pub enum VfricNull {
     Unread,
 }
 
-/// Every argument of one VFRIC call that the library may read, plus the unread ones as shared
-/// buffers. Arrays have exactly their declared lengths.
+/// The counts, drawn first: mostly a valid block, but nContact ≤ 0, nFricDir ∉ {1, 2}, nSlvNod
+/// ≤ 0 and any nProps stay reachable.
+const COUNTS: [Row; 4] = [
+    (
+        &["nContact"],
+        Pick(&[1, 1, 2, 3, 4, 5, 8, 17, 1, 2, 3, 0, -1]),
+    ),
+    (&["nFricDir"], Pick(&[1, 2, 1, 2, 1, 2, 1, 2, 0, 3, -1])),
+    (&["nSlvNod"], Pick(&[1, 2, 3, 4, 8, 17, 2, 3, 0, -1])),
+    (
+        &["nProps"],
+        Pick(&[7, 7, 7, 7, 7, 7, 2, 3, 4, 5, 6, 8, 13, 20, 21, 1, 0, -1]),
+    ),
+];
+
+/// Every argument of one VFRIC call that the library may read, by name (`nContact`,
+/// `nFricDir`, `nSlvNod`, `nProps`, `jConSlvid(nContact)`; `fNormal(nContact)`,
+/// `fStickForce(nContact)`, `areaSlv(nSlvNod)`, `props(nProps)`, `statev(2, nContact)`), plus
+/// `unread`, the stand-in for every real array VFRIC does not read, and `unreadInts`, for the
+/// integer ones. Arrays have exactly their declared lengths.
 #[derive(Clone, Debug)]
 pub struct VfricCase {
-    pub ncontact: i32,
-    pub nfricdir: i32,
-    pub nslvnod: i32,
-    pub nprops: i32,
-    /// `fNormal(nContact)`, `fStickForce(nContact)`, `jConSlvid(nContact)`.
-    pub normal: Vec<f64>,
-    pub stick: Vec<f64>,
-    pub slave: Vec<i32>,
-    /// `areaSlv(nSlvNod)`.
-    pub area: Vec<f64>,
-    /// `PROPS(nProps)`.
-    pub props: Vec<f64>,
-    /// `statev(nStateVar, nContact)` with nStateVar = 2.
-    pub statev: Vec<f64>,
-    /// Stand-in for every real array VFRIC does not read.
-    pub unread: Vec<f64>,
-    pub surf_int: Vec<u8>,
+    pub args: Args,
+    /// `surfInt` (and blank `surfSec`, `surfMain` of 8 bytes).
+    pub names: Names,
     pub null: VfricNull,
 }
 
-/// What the call wrote: `fTangential` with `GUARD` entries each side, `statev` likewise, and
-/// the message (empty when none).
-#[derive(Clone, Debug)]
-pub struct VfricOutputs {
-    pub tangential: Vec<f64>,
-    pub statev: Vec<f64>,
-    pub message: String,
+/// What the call wrote, read by point: `fTangential` and `statev` each with `GUARD` entries
+/// either side.
+pub trait Tangential {
+    /// `fTangential(d+1, k+1)` for `nFricDir = nf`.
+    fn force(&self, nf: usize, k: usize, d: usize) -> f64;
 }
 
-impl VfricOutputs {
-    /// `fTangential(d+1, k+1)` for `nFricDir = nf`.
-    pub fn force(&self, nf: usize, k: usize, d: usize) -> f64 {
-        self.tangential[GUARD + k * nf + d]
+impl Tangential for Outputs {
+    fn force(&self, nf: usize, k: usize, d: usize) -> f64 {
+        self["fTangential"][GUARD + k * nf + d]
+    }
+}
+
+/// `surfInt` as given, and blank `surfSec`, `surfMain` of 8 bytes.
+fn names(surf_int: Vec<u8>) -> Names {
+    Names {
+        interaction: surf_int,
+        secondary: vec![b' '; 8],
+        main: vec![b' '; 8],
     }
 }
 
@@ -150,21 +162,25 @@ impl VfricCase {
         area: &[f64],
     ) -> Self {
         let n = normal.len();
+        let count = |len: usize| i32::try_from(len).unwrap_or(i32::MAX);
+        let mut a = Args::new();
+        a.set_int("nContact", count(n));
+        a.set_int("nFricDir", nf);
+        a.set_int("nSlvNod", count(area.len()));
+        a.set_int("nProps", count(props.len()));
+        a.put("props", props.to_vec());
+        a.put("fNormal", normal.to_vec());
+        a.put("fStickForce", stick.to_vec());
+        a.put_ints("jConSlvid", slave.to_vec());
+        a.put("areaSlv", area.to_vec());
+        a.put("statev", vec![3.25; 2 * n]);
+        a.put("unread", vec![0.5; UNREAD_LEN]);
+        a.put_ints("unreadInts", vec![1; 64]);
         let mut surf_int = b"VF1".to_vec();
         surf_int.resize(80, b' ');
         VfricCase {
-            ncontact: i32::try_from(n).unwrap_or(i32::MAX),
-            nfricdir: nf,
-            nslvnod: i32::try_from(area.len()).unwrap_or(i32::MAX),
-            nprops: i32::try_from(props.len()).unwrap_or(i32::MAX),
-            normal: normal.to_vec(),
-            stick: stick.to_vec(),
-            slave: slave.to_vec(),
-            area: area.to_vec(),
-            props: props.to_vec(),
-            statev: vec![3.25; 2 * n],
-            unread: vec![0.5; UNREAD_LEN],
-            surf_int,
+            args: a,
+            names: names(surf_int),
             null: VfricNull::None,
         }
     }
@@ -173,12 +189,9 @@ impl VfricCase {
     /// bad shape (nContact ≤ 0, nFricDir ∉ {1, 2}, bad PROPS, slave nodes out of range, NULL
     /// pointers) stays reachable.
     pub fn decode(data: &[u8]) -> Self {
-        let mut b = Bytes::new(data);
-        let b = &mut b;
-        let ncontact = b.pick(&[1, 1, 2, 3, 4, 5, 8, 17, 1, 2, 3, 0, -1]);
-        let nfricdir = b.pick(&[1, 2, 1, 2, 1, 2, 1, 2, 0, 3, -1]);
-        let nslvnod = b.pick(&[1, 2, 3, 4, 8, 17, 2, 3, 0, -1]);
-        let nprops = b.pick(&[7, 7, 7, 7, 7, 7, 2, 3, 4, 5, 6, 8, 13, 20, 21, 1, 0, -1]);
+        let b = &mut Bytes::new(data);
+        let mut a = Args::new();
+        a.draw(b, &COUNTS);
         let null = match b.u8() {
             0 => VfricNull::FTangential,
             1 => VfricNull::FNormal,
@@ -193,13 +206,13 @@ impl VfricCase {
             10..=40 => VfricNull::Unread,
             _ => VfricNull::None,
         };
-        let (n, nodes) = (len(ncontact), len(nslvnod));
-        let props = decode_props(b, len(nprops));
+        let (n, nodes) = (a.len_of("nContact"), a.len_of("nSlvNod"));
+        let props = decode_props(b, a.len_of("nProps"));
         // Forces of every class; the flags make them mostly physical (F_N ≥ 0, F_stick ≥ 0)
         // and, now and then, put μ·F_N and F_stick close together.
         let flags = b.u8();
-        let mut normal: Vec<f64> = (0..n).map(|_| b.real()).collect();
-        let mut stick: Vec<f64> = (0..n).map(|_| b.real()).collect();
+        let mut normal = b.reals(n);
+        let mut stick = b.reals(n);
         if flags & 1 == 0 {
             normal.iter_mut().for_each(|x| *x = x.abs());
         }
@@ -213,6 +226,7 @@ impl VfricCase {
                 *s = mu * f * 2.0 * b.unit();
             }
         }
+        let nslvnod = a.int("nSlvNod");
         let slave = (0..n)
             .map(|_| match b.u8() {
                 x @ 0..=199 => 1 + i32::from(x) % nslvnod.max(1),
@@ -224,160 +238,127 @@ impl VfricCase {
                 _ => nslvnod,
             })
             .collect();
-        let mut area: Vec<f64> = (0..nodes).map(|_| b.real()).collect();
+        let mut area = b.reals(nodes);
         if flags & 16 == 0 {
             area.iter_mut().for_each(|x| *x = x.abs());
         }
+        a.put("props", props);
+        a.put("fNormal", normal);
+        a.put("fStickForce", stick);
+        a.put_ints("jConSlvid", slave);
+        a.put("areaSlv", area);
+        a.put("statev", b.reals(2 * n));
+        a.put("unread", b.reals(UNREAD_LEN));
+        a.put_ints("unreadInts", vec![1; 64]);
         VfricCase {
-            ncontact,
-            nfricdir,
-            nslvnod,
-            nprops,
-            normal,
-            stick,
-            slave,
-            area,
-            props,
-            statev: (0..2 * n).map(|_| b.real()).collect(),
-            unread: (0..UNREAD_LEN).map(|_| b.real()).collect(),
-            surf_int: b.name(),
+            args: a,
+            names: names(b.name()),
             null,
         }
     }
 
     /// Calls `vfric_` through its real symbol and checks every property; `Err` names the first
-    /// one violated.
-    pub fn check(&self) -> Result<VfricOutputs, String> {
-        let before = self.clone();
-        let c = self.clone();
-        let n = len(c.ncontact);
-        let nf = len(c.nfricdir);
-        let mut out = VfricOutputs {
-            tangential: vec![UNWRITTEN; nf * n + 2 * GUARD],
-            statev: [
-                vec![UNWRITTEN; GUARD],
-                c.statev.clone(),
-                vec![UNWRITTEN; GUARD],
-            ]
-            .concat(),
-            message: String::new(),
-        };
-        let null = c.null;
+    /// one violated. What it wrote: `fTangential` and `statev`, each with `GUARD` entries either
+    /// side.
+    pub fn check(&self) -> Result<Outputs, String> {
+        let n = self.args.len_of("nContact");
+        let nf = self.args.len_of("nFricDir");
+        let null = self.null;
         let unread = null == VfricNull::Unread;
         let ro = |p: *const f64, which: VfricNull| {
-            if null == which || (unread && which == VfricNull::Unread) {
-                std::ptr::null()
-            } else {
-                p
-            }
+            if null == which { std::ptr::null() } else { p }
         };
         let io = |p: *const c_int, which: VfricNull| {
-            if null == which || (unread && which == VfricNull::Unread) {
-                std::ptr::null()
+            if null == which { std::ptr::null() } else { p }
+        };
+        let out = call(&self.args, &self.names, &[], &[], |a, names, o| {
+            let guard = vec![UNWRITTEN; GUARD];
+            o.put("fTangential", vec![UNWRITTEN; nf * n + 2 * GUARD]);
+            o.put("statev", [&guard[..], &a["statev"], &guard].concat());
+            let ftan = if null == VfricNull::FTangential {
+                std::ptr::null_mut()
             } else {
-                p
-            }
-        };
-        let ftan = if null == VfricNull::FTangential {
-            std::ptr::null_mut()
-        } else {
-            // SAFETY: GUARD < the vector's length.
-            unsafe { out.tangential.as_mut_ptr().add(GUARD) }
-        };
-        let statev = if unread {
-            std::ptr::null_mut()
-        } else {
-            // SAFETY: as above.
-            unsafe { out.statev.as_mut_ptr().add(GUARD) }
-        };
-        let u = c.unread.as_ptr();
-        let (one, two, four): (c_int, c_int, c_int) = (1, 2, 4);
-        let ints: [c_int; 64] = [1; 64];
-        let ip = ints.as_ptr();
-        let blank = [b' '; 8];
-        let ndir = c.nfricdir.saturating_add(1);
-        ifl_clear_error();
-        // SAFETY: every array the call reads has exactly the length it declares (nContact,
-        // nSlvNod, nProps, the name's hidden length), fTangential(nFricDir, nContact) and
-        // statev(2, nContact) lie inside their guards; the arrays VFRIC does not read point to
-        // buffers longer than any of them; NULL where `null` says so.
-        unsafe {
-            vfric_(
-                ftan,
-                statev,
-                io(&one, VfricNull::Unread),
-                io(&one, VfricNull::Unread),
-                io(&c.ncontact, VfricNull::NContact),
-                io(&four, VfricNull::Unread),
-                io(&c.nslvnod, VfricNull::NSlvNod),
-                io(&four, VfricNull::Unread),
-                io(&c.nfricdir, VfricNull::NFricDir),
-                io(&ndir, VfricNull::Unread),
-                io(&two, VfricNull::Unread),
-                io(&c.nprops, VfricNull::NProps),
-                io(&one, VfricNull::Unread),
-                io(&one, VfricNull::Unread),
-                io(&one, VfricNull::Unread),
-                io(ip, VfricNull::Unread),
-                io(ip, VfricNull::Unread),
-                io(c.slave.as_ptr(), VfricNull::JConSlvid),
-                io(ip, VfricNull::Unread),
-                ro(u, VfricNull::Unread),
-                ro(u, VfricNull::Unread),
-                ro(u, VfricNull::Unread),
-                c.surf_int.as_ptr().cast::<c_char>(),
-                blank.as_ptr().cast::<c_char>(),
-                blank.as_ptr().cast::<c_char>(),
-                io(ip, VfricNull::Unread),
-                ro(u, VfricNull::Unread),
-                ro(c.stick.as_ptr(), VfricNull::FStickForce),
-                ro(u, VfricNull::Unread),
-                ro(c.normal.as_ptr(), VfricNull::FNormal),
-                ro(u, VfricNull::Unread),
-                ro(u, VfricNull::Unread),
-                ro(u, VfricNull::Unread),
-                ro(u, VfricNull::Unread),
-                ro(u, VfricNull::Unread),
-                ro(u, VfricNull::Unread),
-                ro(c.props.as_ptr(), VfricNull::Props),
-                ro(c.area.as_ptr(), VfricNull::AreaSlv),
-                ro(u, VfricNull::Unread),
-                ro(u, VfricNull::Unread),
-                ro(u, VfricNull::Unread),
-                ro(u, VfricNull::Unread),
-                c.surf_int.len(),
-                blank.len(),
-                blank.len(),
-            );
-            out.message = last_error();
-        }
-        let unchanged = bits(&c.normal) == bits(&before.normal)
-            && bits(&c.stick) == bits(&before.stick)
-            && c.slave == before.slave
-            && bits(&c.area) == bits(&before.area)
-            && bits(&c.props) == bits(&before.props)
-            && bits(&c.unread) == bits(&before.unread)
-            && c.surf_int == before.surf_int
-            && ints.iter().all(|x| *x == 1)
-            && (c.ncontact, c.nfricdir, c.nslvnod, c.nprops)
-                == (
-                    before.ncontact,
-                    before.nfricdir,
-                    before.nslvnod,
-                    before.nprops,
+                // SAFETY: GUARD < the array's length.
+                unsafe { o.ptr_mut("fTangential").add(GUARD) }
+            };
+            let statev = if unread {
+                std::ptr::null_mut()
+            } else {
+                // SAFETY: as above.
+                unsafe { o.ptr_mut("statev").add(GUARD) }
+            };
+            // The arguments VFRIC does not read, each NULL with `VfricNull::Unread`: the sizes
+            // it does not use (1, 2, 4, nFricDir + 1), and shared buffers for the arrays.
+            let sizes: [c_int; 4] = [1, 2, 4, a.int("nFricDir").saturating_add(1)];
+            let [one, two, four, ndir] = sizes.each_ref().map(|n| io(n, VfricNull::Unread));
+            let ip = io(a.int_ptr("unreadInts"), VfricNull::Unread);
+            let u = ro(a.ptr("unread"), VfricNull::Unread);
+            let [surf_int, surf_sec, surf_main] = names.pointers();
+            let [int_len, sec_len, main_len] = names.lengths();
+            // SAFETY: every array the call reads has exactly the length it declares (nContact,
+            // nSlvNod, nProps, the name's hidden length), fTangential(nFricDir, nContact) and
+            // statev(2, nContact) lie inside their guards; the arrays VFRIC does not read point
+            // to buffers longer than any of them; NULL where `null` says so.
+            unsafe {
+                vfric_(
+                    ftan,
+                    statev,
+                    one,
+                    one,
+                    io(a.int_ptr("nContact"), VfricNull::NContact),
+                    four,
+                    io(a.int_ptr("nSlvNod"), VfricNull::NSlvNod),
+                    four,
+                    io(a.int_ptr("nFricDir"), VfricNull::NFricDir),
+                    ndir,
+                    two,
+                    io(a.int_ptr("nProps"), VfricNull::NProps),
+                    one,
+                    one,
+                    one,
+                    ip,
+                    ip,
+                    io(a.int_ptr("jConSlvid"), VfricNull::JConSlvid),
+                    ip,
+                    u,
+                    u,
+                    u,
+                    surf_int,
+                    surf_sec,
+                    surf_main,
+                    ip,
+                    u,
+                    ro(a.ptr("fStickForce"), VfricNull::FStickForce),
+                    u,
+                    ro(a.ptr("fNormal"), VfricNull::FNormal),
+                    u,
+                    u,
+                    u,
+                    u,
+                    u,
+                    u,
+                    ro(a.ptr("props"), VfricNull::Props),
+                    ro(a.ptr("areaSlv"), VfricNull::AreaSlv),
+                    u,
+                    u,
+                    u,
+                    u,
+                    int_len,
+                    sec_len,
+                    main_len,
                 );
-        if !unchanged {
-            return Err("an input argument was written".into());
-        }
-        if bits(&out.statev[GUARD..GUARD + 2 * n]) != bits(&self.statev)
-            || out.statev[..GUARD]
+            }
+        })?;
+        let statev = &out["statev"];
+        if bits(&statev[GUARD..GUARD + 2 * n]) != bits(&self.args["statev"])
+            || statev[..GUARD]
                 .iter()
-                .chain(&out.statev[GUARD + 2 * n..])
+                .chain(&statev[GUARD + 2 * n..])
                 .any(|x| !unwritten(x))
         {
             return Err("statev (or around it) was written".into());
         }
-        let t = &out.tangential;
+        let t = &out["fTangential"];
         if t[..GUARD]
             .iter()
             .chain(&t[t.len() - GUARD..])
@@ -391,7 +372,7 @@ impl VfricCase {
 
     /// `PROPS(i)`, 0 when absent.
     fn prop(&self, i: usize) -> f64 {
-        self.props.get(i - 1).copied().unwrap_or(0.0)
+        self.args["props"].get(i - 1).copied().unwrap_or(0.0)
     }
 
     fn rough(&self) -> bool {
@@ -408,8 +389,8 @@ impl VfricCase {
         use VfricNull as N;
         let null = self.null;
         if matches!(null, N::NContact | N::NFricDir)
-            || self.ncontact < 0
-            || !(self.nfricdir == 1 || self.nfricdir == 2)
+            || self.args.int("nContact") < 0
+            || !(self.args.int("nFricDir") == 1 || self.args.int("nFricDir") == 2)
         {
             return Expect::RefusedUnwritten;
         }
@@ -419,13 +400,13 @@ impl VfricCase {
             Expect::RefusedZeroed
         };
         let props_ok = null != N::NProps
-            && self.nprops >= 0
-            && (null != N::Props || self.nprops == 0)
-            && plain_law(&self.props);
+            && self.args.int("nProps") >= 0
+            && (null != N::Props || self.args.int("nProps") == 0)
+            && plain_law(&self.args["props"]);
         if !props_ok {
             return refused;
         }
-        if self.ncontact == 0 {
+        if self.args.int("nContact") == 0 {
             return Expect::Empty;
         }
         if matches!(null, N::FTangential | N::FNormal | N::FStickForce) {
@@ -433,8 +414,8 @@ impl VfricCase {
         }
         if self.needs_area()
             && (matches!(null, N::NSlvNod | N::JConSlvid)
-                || self.nslvnod < 0
-                || (null == N::AreaSlv && self.nslvnod > 0))
+                || self.args.int("nSlvNod") < 0
+                || (null == N::AreaSlv && self.args.int("nSlvNod") > 0))
         {
             return refused;
         }
@@ -446,7 +427,7 @@ impl VfricCase {
     /// whose message is optional (a bad area at a point in tension, where the area is not
     /// needed).
     pub fn expected_force(&self, k: usize) -> Result<f64, bool> {
-        let (fnormal, fstick) = (self.normal[k], self.stick[k]);
+        let (fnormal, fstick) = (self.args["fNormal"][k], self.args["fStickForce"][k]);
         if !(fnormal.is_finite() && fstick.is_finite() && fstick >= 0.0) {
             return Err(true);
         }
@@ -454,13 +435,13 @@ impl VfricCase {
             return Ok(fstick);
         }
         let cap = if self.needs_area() {
-            let node = usize::try_from(self.slave[k])
+            let node = usize::try_from(self.args.ints("jConSlvid")[k])
                 .ok()
-                .filter(|i| (1..=len(self.nslvnod)).contains(i));
+                .filter(|i| (1..=len(self.args.int("nSlvNod"))).contains(i));
             let Some(node) = node else {
                 return Err(true);
             };
-            let a = self.area[node - 1];
+            let a = self.args["areaSlv"][node - 1];
             if !(a.is_finite() && a >= 0.0) {
                 return Err(fnormal >= 0.0);
             }
@@ -474,10 +455,10 @@ impl VfricCase {
         Ok((self.prop(2) * fnormal).min(cap).min(fstick))
     }
 
-    fn check_outputs(&self, out: &VfricOutputs) -> Result<(), String> {
-        let n = len(self.ncontact);
-        let nf = len(self.nfricdir);
-        let block = &out.tangential[GUARD..GUARD + nf * n];
+    fn check_outputs(&self, out: &Outputs) -> Result<(), String> {
+        let n = len(self.args.int("nContact"));
+        let nf = len(self.args.int("nFricDir"));
+        let block = &out["fTangential"][GUARD..GUARD + nf * n];
         let names = out.message.starts_with("interfacial: VFRIC: interaction '");
         match self.expect() {
             Expect::RefusedUnwritten | Expect::RefusedZeroed => {
@@ -519,7 +500,7 @@ impl VfricCase {
                     }
                     let want = match self.expected_force(k) {
                         Ok(f) => {
-                            if !(f1 >= -self.stick[k] && f1 <= 0.0) {
+                            if !(f1 >= -self.args["fStickForce"][k] && f1 <= 0.0) {
                                 return Err(format!(
                                     "fTangential(1,{}) = {f1} outside [-fStickForce, 0]",
                                     k + 1
@@ -539,8 +520,8 @@ impl VfricCase {
                             "fTangential(1,{}) = {f1:e}, closed form {want:e} (F_N {:e}, \
                              F_stick {:e})",
                             k + 1,
-                            self.normal[k],
-                            self.stick[k]
+                            self.args["fNormal"][k],
+                            self.args["fStickForce"][k]
                         ));
                     }
                 }

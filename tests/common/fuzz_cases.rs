@@ -5,6 +5,8 @@
 // Each test uses its own subset.
 #![allow(dead_code)]
 
+#[path = "../../fuzz/src/args.rs"]
+pub mod args;
 #[path = "../../fuzz/src/batch_case.rs"]
 pub mod batch_case;
 #[path = "../../fuzz/src/bytes.rs"]
