@@ -810,7 +810,7 @@ impl ExtendedCoulomb {
         let k0 = self.critical(mbar, stiffness_rate, p0, theta);
         // γ̄^el = τ̄/k̄_s(p₀); its θ̄-derivative (the start uses the same θ̄: FRIC has no ΔTEMP).
         let trial = ElasticTrial::new(&s.tau, &s.dgam, gamma_crit, &k0, true);
-        let (predictor, g) = (trial.predictor, trial.g);
+        let g = trial.g;
         let stiffness = k.value / gamma_crit;
         let (stiffness_p, stiffness_theta) =
             (k.d_pressure / gamma_crit, k.d_temperature / gamma_crit);
@@ -828,7 +828,7 @@ impl ExtendedCoulomb {
         }
 
         // Slip: k̄_s (γ̄_eq^pr − s) = τ̄_crit(s/Δt, p, θ̄).
-        let n = unit(&predictor, g);
+        let n = unit(&trial.predictor, g);
         let (slip_eq, crit, iterations) = if following {
             // Eq. 5.2.3-2: the elastic slip stays γ_crit, Δγ̄_eq^sl = γ̄_eq^pr − γ_crit, and
             // τ̄ = τ̄_crit(Δγ̄_eq^sl/Δt, p, θ̄)·n: explicit, one answer (also with τ_max).
@@ -1065,6 +1065,7 @@ fn frictionless_slip<const N: usize>(
 /// The elastic predictor of the scaled problem, γ̄^pr = γ̄^el + Δγ̄ with γ̄^el from the start
 /// stress ([`elastic_start`]), its length `g` = |γ̄^pr| and ∂γ̄^el/∂θ̄; what the stick test and
 /// the answers without slip read (the general and the decay paths).
+#[derive(Clone, Copy)]
 struct ElasticTrial<const N: usize> {
     predictor: [f64; N],
     g: f64,
@@ -1118,7 +1119,7 @@ impl<const N: usize> ElasticTrial<N> {
     /// stiffness); `rest` is called only for a stick answer.
     #[inline(always)]
     fn no_slip(
-        &self,
+        self,
         following: bool,
         k: &Critical,
         rest: impl FnOnce() -> Option<f64>,
@@ -1156,7 +1157,7 @@ impl<const N: usize> ElasticTrial<N> {
     /// along n: dt/dθ̄ = (∂τ̄_crit/∂s)·(∂s/∂G·n·v + ∂s/∂θ̄) + ∂τ̄_crit/∂θ̄.
     #[inline(always)]
     fn slip_temperature_tangent(
-        &self,
+        self,
         n: &[f64; N],
         transverse: f64,
         t_s: f64,

@@ -97,7 +97,7 @@ impl ExtendedCoulomb {
         );
         // γ^el = τ/k_s(p₀) and its θ̄-derivative (as in `elastic_stick`).
         let trial = ElasticTrial::new(&inc.tau, &inc.dgam, gamma_crit, &k0, with_theta);
-        let (predictor, g) = (trial.predictor, trial.g);
+        let g = trial.g;
         let stiffness = k.value / gamma_crit;
         let stiffness_p = k.d_pressure / gamma_crit;
         let stiffness_theta = k.d_temperature / gamma_crit;
@@ -159,7 +159,7 @@ impl ExtendedCoulomb {
             };
             // (After the solve in the code, so that its division does not queue in front of
             // those on the way to the first exp.)
-            let n = unit(&predictor, g);
+            let n = unit(&trial.predictor, g);
             let t = crit.value;
             // ∂τ_crit/∂s = (∂τ_crit/∂γ̇)/Δt (0 when frozen).
             let t_s = if self.frozen {
