@@ -302,20 +302,20 @@ impl ExtendedCoulomb {
     /// The extended law with everything off: behaves exactly as `base`.
     #[must_use]
     pub fn new(base: Coulomb) -> Self {
-        ExtendedCoulomb {
+        // Isotropic (μ₂ = μ₁), constant μ, not frozen, no HHT, no damping.
+        Self::from_validated(
             base,
-            mu2: base.mu(),
-            coefficient: CoefficientLaw::default(),
-            frozen: false,
-            hht: None,
-            damping: None,
-            transport: None,
-            general: false,
-            formulation: RateFormulation::RateFollowingStiffness,
-        }
+            base.mu(),
+            CoefficientLaw::default(),
+            false,
+            None,
+            None,
+        )
     }
 
     /// From parts already validated by the caller (`props.rs`); `mu2` equals μ₁ when isotropic.
+    /// The one struct literal: the modes no `PROPS` entry sets (steady transport, the general
+    /// path, the rate formulation) take their defaults here.
     #[inline]
     #[must_use]
     pub(crate) fn from_validated(
