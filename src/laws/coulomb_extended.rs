@@ -1064,7 +1064,9 @@ fn frictionless_slip<const N: usize>(
 
 /// The elastic predictor of the scaled problem, γ̄^pr = γ̄^el + Δγ̄ with γ̄^el from the start
 /// stress ([`elastic_start`]), its length `g` = |γ̄^pr| and ∂γ̄^el/∂θ̄; what the stick test and
-/// the answers without slip read (the general and the decay paths).
+/// the answers without slip read (the general and the decay paths). `Copy`, and the answers take
+/// it by value: by reference it was kept in a stack slot of its own (a few instructions per
+/// call on the rate law's hot path, docs/architecture.md).
 #[derive(Clone, Copy)]
 struct ElasticTrial<const N: usize> {
     predictor: [f64; N],
@@ -1152,9 +1154,10 @@ impl<const N: usize> ElasticTrial<N> {
         )
     }
 
-    /// ∂τ̄/∂θ̄ of the slip answer τ̄ = t·n: through the start elastic slip's v = ∂γ̄^pr/∂θ̄ (`d_elastic_dtheta`), which turns
-    /// n (the transverse part (t/γ̄_eq^pr)·(v − n(n·v)), 0 in 2-D), and through t = τ̄_crit(s, θ̄)
-    /// along n: dt/dθ̄ = (∂τ̄_crit/∂s)·(∂s/∂G·n·v + ∂s/∂θ̄) + ∂τ̄_crit/∂θ̄.
+    /// ∂τ̄/∂θ̄ of the slip answer τ̄ = t·n: through the start elastic slip, v = ∂γ̄^pr/∂θ̄
+    /// (`d_elastic_dtheta`), which turns n (the transverse part (t/γ̄_eq^pr)·(v − n(n·v)), 0 in
+    /// 2-D), and through t = τ̄_crit(s, θ̄) along n:
+    /// dt/dθ̄ = (∂τ̄_crit/∂s)·(∂s/∂G·n·v + ∂s/∂θ̄) + ∂τ̄_crit/∂θ̄.
     #[inline(always)]
     fn slip_temperature_tangent(
         self,
