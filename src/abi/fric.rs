@@ -6,8 +6,8 @@ use std::ffi::{c_char, c_int};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::{
-    bad_lm, boundary, count, cut_back, fortran_name_bytes, host_number, host_site, null_pointer,
-    read, read_array, slice, write, write_array, write_matrix, write_zeros,
+    bad_lm, boundary_outlined, count, cut_back, fortran_name_bytes, host_number, host_site,
+    null_pointer, read, read_array, slice, write, write_array, write_matrix, write_zeros,
 };
 use crate::LawError;
 use crate::config::friction_table_for;
@@ -78,9 +78,9 @@ mod rate;
               slname_len, msname_len),
     twin =
         /// `fric_` for everything but the plain law, inside the export's boundary
-        /// (`abi::boundary`: an error or a panic gets the safe outputs of `FricArgs::fail` and
-        /// one report). Out of line and `cold` (code layout and register allocation of the
-        /// plain path).
+        /// (`abi::boundary_outlined`: an error or a panic gets the safe outputs of
+        /// `FricArgs::fail` and one report; a call, never inlined here). Out of line and `cold`
+        /// (code layout and register allocation of the plain path).
         ///
         /// It has `fric_`'s parameter list on purpose: `fric_` ends in a sibling call (a jump,
         /// the arguments left where the host put them). Packing them into one view passed by
@@ -93,7 +93,7 @@ mod rate;
         #[cold]
         #[inline(never)]
         fric_general {
-            let _ = boundary(
+            let _ = boundary_outlined(
                 // SAFETY (all three closures): the host's pointers, valid per the contract above.
                 || unsafe { args.site() },
                 || {

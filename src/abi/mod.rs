@@ -108,6 +108,20 @@ pub(crate) fn boundary(
     Err(fault)
 }
 
+/// [`boundary`] in a function of its own, never inlined into its caller: for an export whose
+/// body is only a call to it (`fric_general`). Inlined there, the catch and the whole law came
+/// into the caller's frame, whose prologue then cost ~34 instructions per call (`bench_rate`
+/// decay +2.8 %, issue 19); `#[inline(never)]` on `boundary` itself cost `uinter_` +4.5 %, so
+/// the choice is made per call site.
+#[inline(never)]
+pub(crate) fn boundary_outlined(
+    site: impl FnOnce() -> Site,
+    body: impl FnOnce() -> Result<(), LawError>,
+    on_fault: impl FnOnce(),
+) -> Result<(), Fault> {
+    boundary(site, body, on_fault)
+}
+
 #[cold]
 #[inline(never)]
 pub(crate) fn null_pointer(name: &str) -> LawError {

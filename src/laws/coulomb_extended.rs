@@ -302,20 +302,20 @@ impl ExtendedCoulomb {
     /// The extended law with everything off: behaves exactly as `base`.
     #[must_use]
     pub fn new(base: Coulomb) -> Self {
-        ExtendedCoulomb {
+        // Isotropic (μ₂ = μ₁), constant μ, not frozen, no HHT, no damping.
+        Self::from_validated(
             base,
-            mu2: base.mu(),
-            coefficient: CoefficientLaw::default(),
-            frozen: false,
-            hht: None,
-            damping: None,
-            transport: None,
-            general: false,
-            formulation: RateFormulation::RateFollowingStiffness,
-        }
+            base.mu(),
+            CoefficientLaw::default(),
+            false,
+            None,
+            None,
+        )
     }
 
     /// From parts already validated by the caller (`props.rs`); `mu2` equals μ₁ when isotropic.
+    /// The one struct literal: the modes no `PROPS` entry sets (steady transport, the general
+    /// path, the rate formulation) take their defaults here.
     #[inline]
     #[must_use]
     pub(crate) fn from_validated(
@@ -809,12 +809,8 @@ impl ExtendedCoulomb {
         let k = self.critical(mbar, stiffness_rate, p, theta);
         let k0 = self.critical(mbar, stiffness_rate, p0, theta);
         // γ̄^el = τ̄/k̄_s(p₀); its θ̄-derivative (the start uses the same θ̄: FRIC has no ΔTEMP).
-        let (elastic_start, d_elastic_dtheta) = elastic_start(&s.tau, gamma_crit, &k0, true);
-        let mut predictor = elastic_start;
-        for i in 0..N {
-            predictor[i] += s.dgam[i];
-        }
-        let g = norm(&predictor);
+        let trial = ElasticTrial::new(&s.tau, &s.dgam, gamma_crit, &k0, true);
+        let g = trial.g;
         let stiffness = k.value / gamma_crit;
         let (stiffness_p, stiffness_theta) =
             (k.d_pressure / gamma_crit, k.d_temperature / gamma_crit);
@@ -824,32 +820,15 @@ impl ExtendedCoulomb {
         } else {
             k
         };
-        // Rate-following: τ̄_eq ≤ τ̄_crit ⇔ |γ̄^el| ≤ γ_crit, tested on the slips (exact: the
-        // slip of the increment is then γ̄_eq^pr − γ_crit > 0, never a rounded 0 or below).
-        let sticks = if following {
-            g <= gamma_crit * (1.0 + STICK_TEST_ROUNDING)
-        } else {
-            stiffness * g <= stick_crit.value
-        };
-        if sticks || stiffness <= 0.0 {
-            if stiffness <= 0.0 && g > gamma_crit {
-                return Ok(frictionless_slip(&predictor, g, gamma_crit, k.d_pressure));
-            }
-            let rest =
-                (following && start_rate > 0.0).then(|| self.critical(mbar, 0.0, p, theta).value);
-            return Ok(stick_answer(
-                &predictor,
-                g,
-                &d_elastic_dtheta,
-                following,
-                gamma_crit,
-                &k,
-                rest,
-            ));
+        if trial.sticks(following, stiffness, stick_crit.value) || stiffness <= 0.0 {
+            let rest = || {
+                (following && start_rate > 0.0).then(|| self.critical(mbar, 0.0, p, theta).value)
+            };
+            return Ok(trial.no_slip(following, &k, rest));
         }
 
         // Slip: k̄_s (γ̄_eq^pr − s) = τ̄_crit(s/Δt, p, θ̄).
-        let n = unit(&predictor, g);
+        let n = unit(&trial.predictor, g);
         let (slip_eq, crit, iterations) = if following {
             // Eq. 5.2.3-2: the elastic slip stays γ_crit, Δγ̄_eq^sl = γ̄_eq^pr − γ_crit, and
             // τ̄ = τ̄_crit(Δγ̄_eq^sl/Δt, p, θ̄)·n: explicit, one answer (also with τ_max).
@@ -961,9 +940,8 @@ impl ExtendedCoulomb {
         // Eq. 5.2.3-3 in this formulation: (δ − nn) τ̄_crit/γ̄_eq^pr + nn (∂τ̄_crit/∂s) ∂s/∂G.
         let ddtddg = rate_slip_tangent(&n, transverse, t_s, ds_dg);
         let dtau_dp = t_s * ds_dp + crit.d_pressure;
-        let ddtdtheta = slip_temperature_tangent(
+        let ddtdtheta = trial.slip_temperature_tangent(
             &n,
-            &d_elastic_dtheta,
             transverse,
             t_s,
             (ds_dg, ds_dtheta),
@@ -1084,65 +1062,121 @@ fn frictionless_slip<const N: usize>(
     )
 }
 
-/// Elastic stick (Eq. 5.2.3-1) in scaled variables, from the predictor γ̄^pr (|γ̄^pr| = `g`) and
-/// k̄_s = τ̄_crit(γ̇_k, p, θ̄)/γ_crit with `k` = τ̄_crit and its partials: τ̄ = k̄_s·γ̄^pr
-/// ([`on_strength`], on the strength beyond γ_crit when `following`), ∂τ̄/∂Δγ̄ = k̄_s·δ,
-/// ∂τ̄/∂p = γ̄^pr·∂k̄_s/∂p and ∂τ̄/∂θ̄ = γ̄^pr·∂k̄_s/∂θ̄ + k̄_s·∂γ̄^el/∂θ̄ (`d_elastic_dtheta`).
-/// `SED` = ½k̄_s|γ̄^pr|², or with `rest` = Some(τ̄_crit at rest) as the next increment reads
-/// τ̄ ([`rest_energy`]: the point ends at rest but k̄_s is not the rate-free stiffness).
-#[inline(always)]
-fn stick_answer<const N: usize>(
-    predictor: &[f64; N],
+/// The elastic predictor of the scaled problem, γ̄^pr = γ̄^el + Δγ̄ with γ̄^el from the start
+/// stress ([`elastic_start`]), its length `g` = |γ̄^pr| and ∂γ̄^el/∂θ̄; what the stick test and
+/// the answers without slip read (the general and the decay paths). `Copy`, and the answers take
+/// it by value: by reference it was kept in a stack slot of its own (a few instructions per
+/// call on the rate law's hot path, docs/architecture.md).
+#[derive(Clone, Copy)]
+struct ElasticTrial<const N: usize> {
+    predictor: [f64; N],
     g: f64,
-    d_elastic_dtheta: &[f64; N],
-    following: bool,
+    d_elastic_dtheta: [f64; N],
     gamma_crit: f64,
-    k: &Critical,
-    rest: Option<f64>,
-) -> ScaledTraction<N> {
-    let stiffness = k.value / gamma_crit;
-    let (stiffness_p, stiffness_theta) = (k.d_pressure / gamma_crit, k.d_temperature / gamma_crit);
-    let sed = match rest {
-        Some(rest_strength) => rest_energy(stiffness * g, rest_strength, gamma_crit),
-        None => 0.5 * stiffness * g * g,
-    };
-    let beyond = following && g > gamma_crit;
-    let mut ddtdtheta = scale(predictor, stiffness_theta);
-    for i in 0..N {
-        ddtdtheta[i] += stiffness * d_elastic_dtheta[i];
-    }
-    ScaledTraction::closed_form(
-        Traction::sticking(
-            on_strength(predictor, beyond, stiffness, k.value),
-            diagonal(stiffness),
-            scale(predictor, stiffness_p),
-            sed,
-        ),
-        ddtdtheta,
-        0.0,
-    )
 }
 
-/// ∂τ̄/∂θ̄ of the slip answer τ̄ = t·n: through the start elastic slip v = ∂γ̄^pr/∂θ̄, which turns
-/// n (the transverse part (t/γ̄_eq^pr)·(v − n(n·v)), 0 in 2-D), and through t = τ̄_crit(s, θ̄)
-/// along n: dt/dθ̄ = (∂τ̄_crit/∂s)·(∂s/∂G·n·v + ∂s/∂θ̄) + ∂τ̄_crit/∂θ̄.
-#[inline(always)]
-fn slip_temperature_tangent<const N: usize>(
-    n: &[f64; N],
-    v: &[f64; N],
-    transverse: f64,
-    t_s: f64,
-    (ds_dg, ds_dtheta): (f64, f64),
-    dcrit_dtheta: f64,
-) -> [f64; N] {
-    let nv = dot(n, v);
-    let dt_dtheta = t_s * (ds_dg * nv + ds_dtheta) + dcrit_dtheta;
-    let mut ddtdtheta = [0.0; N];
-    for i in 0..N {
-        let proj_v = if N == 1 { 0.0 } else { v[i] - n[i] * nv };
-        ddtdtheta[i] = transverse * proj_v + n[i] * dt_dtheta;
+impl<const N: usize> ElasticTrial<N> {
+    /// γ̄^pr from the start stress `tau` (with k̄_s(p₀) = `start`/γ_crit) and the motion `dgam`.
+    #[inline(always)]
+    fn new(
+        tau: &[f64; N],
+        dgam: &[f64; N],
+        gamma_crit: f64,
+        start: &Critical,
+        with_theta: bool,
+    ) -> Self {
+        let (elastic_start, d_elastic_dtheta) = elastic_start(tau, gamma_crit, start, with_theta);
+        let mut predictor = elastic_start;
+        for i in 0..N {
+            predictor[i] += dgam[i];
+        }
+        ElasticTrial {
+            g: norm(&predictor),
+            predictor,
+            d_elastic_dtheta,
+            gamma_crit,
+        }
     }
-    ddtdtheta
+
+    /// The stick test with k̄_s = `stiffness`. Rate-following: τ̄_eq ≤ τ̄_crit ⇔ |γ̄^el| ≤ γ_crit,
+    /// tested on the slips (exact: the slip of the increment is then γ̄_eq^pr − γ_crit > 0,
+    /// never a rounded 0 or below); otherwise k̄_s·|γ̄^pr| ≤ `stick_crit` (τ̄_crit at zero rate,
+    /// or frozen at the start rate).
+    #[inline(always)]
+    fn sticks(&self, following: bool, stiffness: f64, stick_crit: f64) -> bool {
+        if following {
+            self.g <= self.gamma_crit * (1.0 + STICK_TEST_ROUNDING)
+        } else {
+            stiffness * self.g <= stick_crit
+        }
+    }
+
+    /// The answer without frictional slip, where the stick test passes or k̄_s ≤ 0: with
+    /// k̄_s ≤ 0 and |γ̄^pr| > γ_crit, [`frictionless_slip`]; otherwise elastic stick
+    /// (Eq. 5.2.3-1) with k̄_s = τ̄_crit(γ̇_k, p, θ̄)/γ_crit, `k` = τ̄_crit and its partials:
+    /// τ̄ = k̄_s·γ̄^pr ([`on_strength`], on the strength beyond γ_crit when `following`),
+    /// ∂τ̄/∂Δγ̄ = k̄_s·δ, ∂τ̄/∂p = γ̄^pr·∂k̄_s/∂p and ∂τ̄/∂θ̄ = γ̄^pr·∂k̄_s/∂θ̄ + k̄_s·∂γ̄^el/∂θ̄.
+    /// `SED` = ½k̄_s|γ̄^pr|², or with `rest()` = Some(τ̄_crit at rest) as the next increment
+    /// reads τ̄ ([`rest_energy`]: the point ends at rest but k̄_s is not the rate-free
+    /// stiffness); `rest` is called only for a stick answer.
+    #[inline(always)]
+    fn no_slip(
+        self,
+        following: bool,
+        k: &Critical,
+        rest: impl FnOnce() -> Option<f64>,
+    ) -> ScaledTraction<N> {
+        let (predictor, g, gamma_crit) = (&self.predictor, self.g, self.gamma_crit);
+        let stiffness = k.value / gamma_crit;
+        if stiffness <= 0.0 && g > gamma_crit {
+            return frictionless_slip(predictor, g, gamma_crit, k.d_pressure);
+        }
+        let (stiffness_p, stiffness_theta) =
+            (k.d_pressure / gamma_crit, k.d_temperature / gamma_crit);
+        let sed = match rest() {
+            Some(rest_strength) => rest_energy(stiffness * g, rest_strength, gamma_crit),
+            None => 0.5 * stiffness * g * g,
+        };
+        let beyond = following && g > gamma_crit;
+        let mut ddtdtheta = scale(predictor, stiffness_theta);
+        for i in 0..N {
+            ddtdtheta[i] += stiffness * self.d_elastic_dtheta[i];
+        }
+        ScaledTraction::closed_form(
+            Traction::sticking(
+                on_strength(predictor, beyond, stiffness, k.value),
+                diagonal(stiffness),
+                scale(predictor, stiffness_p),
+                sed,
+            ),
+            ddtdtheta,
+            0.0,
+        )
+    }
+
+    /// ∂τ̄/∂θ̄ of the slip answer τ̄ = t·n: through the start elastic slip, v = ∂γ̄^pr/∂θ̄
+    /// (`d_elastic_dtheta`), which turns n (the transverse part (t/γ̄_eq^pr)·(v − n(n·v)), 0 in
+    /// 2-D), and through t = τ̄_crit(s, θ̄) along n:
+    /// dt/dθ̄ = (∂τ̄_crit/∂s)·(∂s/∂G·n·v + ∂s/∂θ̄) + ∂τ̄_crit/∂θ̄.
+    #[inline(always)]
+    fn slip_temperature_tangent(
+        self,
+        n: &[f64; N],
+        transverse: f64,
+        t_s: f64,
+        (ds_dg, ds_dtheta): (f64, f64),
+        dcrit_dtheta: f64,
+    ) -> [f64; N] {
+        let v = &self.d_elastic_dtheta;
+        let nv = dot(n, v);
+        let dt_dtheta = t_s * (ds_dg * nv + ds_dtheta) + dcrit_dtheta;
+        let mut ddtdtheta = [0.0; N];
+        for i in 0..N {
+            let proj_v = if N == 1 { 0.0 } else { v[i] - n[i] * nv };
+            ddtdtheta[i] = transverse * proj_v + n[i] * dt_dtheta;
+        }
+        ddtdtheta
+    }
 }
 
 /// The stick stress k̄_s·γ̄^pr; with `beyond` (rate-following, |γ̄^pr| within the rounding

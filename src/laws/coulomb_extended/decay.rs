@@ -96,13 +96,8 @@ impl ExtendedCoulomb {
             tau_max,
         );
         // γ^el = τ/k_s(p₀) and its θ̄-derivative (as in `elastic_stick`).
-        let (elastic_start, d_elastic_dtheta) =
-            elastic_start(&inc.tau, gamma_crit, &k0, with_theta);
-        let mut predictor = elastic_start;
-        for i in 0..N {
-            predictor[i] += inc.dgam[i];
-        }
-        let g = norm(&predictor);
+        let trial = ElasticTrial::new(&inc.tau, &inc.dgam, gamma_crit, &k0, with_theta);
+        let g = trial.g;
         let stiffness = k.value / gamma_crit;
         let stiffness_p = k.d_pressure / gamma_crit;
         let stiffness_theta = k.d_temperature / gamma_crit;
@@ -114,33 +109,16 @@ impl ExtendedCoulomb {
         } else {
             decay_critical::<true>(factor, (r, d), mbar, p, tau_max, start_rate)
         };
-        // Rate-following: stick ⇔ |γ̄^el| ≤ γ_crit, on the slips (see `elastic_stick`).
-        let sticks = if following {
-            g <= gamma_crit * (1.0 + STICK_TEST_ROUNDING)
-        } else {
-            stiffness * g <= stick_crit.value
-        };
+        let sticks = trial.sticks(following, stiffness, stick_crit.value);
         let ScaledTraction {
             traction,
             ddtdtheta,
             slip_eq,
             iterations,
         } = if sticks || stiffness <= 0.0 {
-            if stiffness <= 0.0 && g > gamma_crit {
-                frictionless_slip(&predictor, g, gamma_crit, k.d_pressure)
-            } else {
-                // As the next increment reads τ: at rest (see `rest_energy`).
-                let rest = (phi_k != 1.0).then(|| (mbar * factor[0] * p).min(tau_max));
-                stick_answer(
-                    &predictor,
-                    g,
-                    &d_elastic_dtheta,
-                    following,
-                    gamma_crit,
-                    &k,
-                    rest,
-                )
-            }
+            // As the next increment reads τ: at rest (see `rest_energy`).
+            let rest = || (phi_k != 1.0).then(|| (mbar * factor[0] * p).min(tau_max));
+            trial.no_slip(following, &k, rest)
         } else {
             // Slip: k_s (γ_eq^pr − s) = τ_crit(s/Δt, p, θ̄).
             let (slip_eq, crit, iterations) = if following {
@@ -181,7 +159,7 @@ impl ExtendedCoulomb {
             };
             // (After the solve in the code, so that its division does not queue in front of
             // those on the way to the first exp.)
-            let n = unit(&predictor, g);
+            let n = unit(&trial.predictor, g);
             let t = crit.value;
             // ∂τ_crit/∂s = (∂τ_crit/∂γ̇)/Δt (0 when frozen).
             let t_s = if self.frozen {
@@ -209,9 +187,8 @@ impl ExtendedCoulomb {
             let dtau_dp = t_s * ds_dp + crit.d_pressure;
             let ddtdtheta = if with_theta {
                 let ds_dtheta = (stiffness_theta * (g - slip_eq) - crit.d_temperature) * per_dd;
-                slip_temperature_tangent(
+                trial.slip_temperature_tangent(
                     &n,
-                    &d_elastic_dtheta,
                     transverse,
                     t_s,
                     (ds_dg, ds_dtheta),
