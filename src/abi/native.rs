@@ -91,7 +91,7 @@ impl From<Result<(), super::Fault>> for IflStatus {
 }
 
 /// Gap conductance and its derivatives, as the native calls write them: the law's own
-/// [`ConductanceResponse`](crate::laws::gap_conductance::ConductanceResponse) (`#[repr(C)]`),
+/// [`ConductanceResponse`] (`#[repr(C)]`),
 /// named `IflConductance` in the header (cbindgen.toml's `[export.rename]`).
 pub use crate::laws::gap_conductance::ConductanceResponse as IflConductance;
 use crate::laws::gap_conductance::ConductanceResponse;
