@@ -278,14 +278,22 @@ pub(crate) fn fast_decay_lean(props: &[f64; COULOMB_EXTENDED_NPROPS]) -> Option<
     if ratio == f64::INFINITY {
         return None;
     }
-    Some(ExtendedCoulomb::from_validated(
-        Coulomb::from_validated(mu, tau_max, gamma_crit, tolerance, StickMode::Elastic),
-        mu,
-        CoefficientLaw::from_validated(Some((ratio, d_c)), p_ref, b_theta, theta_ref),
-        frozen == 1.0,
-        None,
-        None,
-    ))
+    Some(
+        ExtendedCoulomb::new(Coulomb::from_validated(
+            mu,
+            tau_max,
+            gamma_crit,
+            tolerance,
+            StickMode::Elastic,
+        ))
+        .with_coefficient_law(CoefficientLaw::from_validated(
+            Some((ratio, d_c)),
+            p_ref,
+            b_theta,
+            theta_ref,
+        ))
+        .with_frozen_coefficient(frozen == 1.0),
+    )
 }
 
 /// The slow path of [`friction_law`], which says what is wrong.

@@ -299,40 +299,19 @@ impl<const N: usize> ScaledTraction<N> {
 }
 
 impl ExtendedCoulomb {
-    /// The extended law with everything off: behaves exactly as `base`.
+    /// The extended law with everything off: behaves exactly as `base`. The one struct
+    /// literal: the parts are switched on by the `with_*` setters (`PROPS` readers, whose
+    /// entries are already validated, use the ones that only store their argument).
     #[must_use]
     pub fn new(base: Coulomb) -> Self {
         // Isotropic (μ₂ = μ₁), constant μ, not frozen, no HHT, no damping.
-        Self::from_validated(
-            base,
-            base.mu(),
-            CoefficientLaw::default(),
-            false,
-            None,
-            None,
-        )
-    }
-
-    /// From parts already validated by the caller (`props.rs`); `mu2` equals μ₁ when isotropic.
-    /// The one struct literal: the modes no `PROPS` entry sets (steady transport, the general
-    /// path, the rate formulation) take their defaults here.
-    #[inline]
-    #[must_use]
-    pub(crate) fn from_validated(
-        base: Coulomb,
-        mu2: f64,
-        coefficient: CoefficientLaw,
-        frozen: bool,
-        hht: Option<Hht>,
-        damping: Option<Damping>,
-    ) -> Self {
         ExtendedCoulomb {
             base,
-            mu2,
-            coefficient,
-            frozen,
-            hht,
-            damping,
+            mu2: base.mu(),
+            coefficient: CoefficientLaw::default(),
+            frozen: false,
+            hht: None,
+            damping: None,
             transport: None,
             general: false,
             formulation: RateFormulation::RateFollowingStiffness,
@@ -342,6 +321,14 @@ impl ExtendedCoulomb {
     field_setters! {
         /// Viscous stick for steady-state transport instead of elastic or exact stick.
         with_steady_transport(transport: Option<SteadyTransport>);
+    }
+
+    /// μ₂ already validated by the caller (a `PROPS` reader: μ₂ = μ₁ when isotropic);
+    /// [`Self::with_second_coefficient`] checks it.
+    #[must_use]
+    pub(crate) fn with_validated_mu2(mut self, mu2: f64) -> Self {
+        self.mu2 = mu2;
+        self
     }
 
     /// The steady-transport parameters, if that mode is on.

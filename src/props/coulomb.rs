@@ -377,7 +377,12 @@ fn build(
         },
     });
     Ok(FrictionLaw::CoulombExtended(
-        ExtendedCoulomb::from_validated(base, mu2, coefficient, e[19] == 1.0, hht, damping)
+        ExtendedCoulomb::new(base)
+            .with_validated_mu2(mu2)
+            .with_coefficient_law(coefficient)
+            .with_frozen_coefficient(e[19] == 1.0)
+            .with_hht(hht)
+            .with_damping(damping)
             .with_steady_transport(transport),
     ))
 }
