@@ -724,9 +724,13 @@ impl ExtendedCoulomb {
         if probe == 0.0 && state.coulomb.slip_rate >= 0.0 {
             return Ok(());
         }
+        // An input the law does not read (TEMP without a temperature law, DROT without damping)
+        // may be what upset the probe: then there is nothing to refuse.
         self.name_bad_input(inc, conditions, state)
+            .map_or(Ok(()), Err)
     }
 
+    /// The first input the law reads that is NaN, infinite or out of range, as the refusal.
     #[cold]
     #[inline(never)]
     fn name_bad_input<const N: usize>(
@@ -734,7 +738,7 @@ impl ExtendedCoulomb {
         inc: &Increment<N>,
         conditions: &Conditions,
         state: &ExtendedState<N>,
-    ) -> Result<(), LawError> {
+    ) -> Option<LawError> {
         let named = [
             ("PRESS", inc.pressure.is_finite()),
             ("DPRESS", inc.dpressure.is_finite()),
@@ -760,12 +764,10 @@ impl ExtendedCoulomb {
                 state.coulomb.slip_rate >= 0.0,
             ),
         ];
-        match named.iter().find(|(_, ok)| !ok) {
-            None => Ok(()),
-            Some((what, _)) => Err(LawError::Input(format!(
-                "{what} is NaN, infinite or out of range"
-            ))),
-        }
+        named
+            .iter()
+            .find(|(_, ok)| !ok)
+            .map(|(what, _)| LawError::Input(format!("{what} is NaN, infinite or out of range")))
     }
 
     /// Elastic stick with the rate-dependent return map, in scaled variables.

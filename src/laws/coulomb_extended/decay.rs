@@ -56,7 +56,9 @@ impl ExtendedCoulomb {
                 temperature: theta,
                 ..Conditions::default()
             };
-            self.name_bad_input(inc, &conditions, state)?;
+            if let Some(refusal) = self.name_bad_input(inc, &conditions, state) {
+                return Err(refusal);
+            }
         }
         // The time increment for rates (`rate_increment`): a rate law needs it > 0 unless μ
         // is frozen.
