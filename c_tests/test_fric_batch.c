@@ -2,7 +2,9 @@
  * ifl_fric_batch against fric_ called once per point (the host of harness.h): on random points
  * (stick, slip, exact stick, LM = 0/1/2, NFDIR 1 and 2, a padded leading dimension) every
  * output must be bit for bit what fric_ writes (memcmp), and nothing is written in the padding.
- * A point with a NaN input gets fric_'s failure outputs while the others are still computed.
+ * A point with a NaN input gets fric_'s failure outputs while the others are still computed;
+ * NFDIR = 3 is refused as a whole (nothing written but PNEWDT). Mirrored by
+ * fortran_tests/test_fric_batch.f90 (same generator, seed and sizes).
  */
 #define _POSIX_C_SOURCE 200809L /* thread_harness.h declares pthread barriers */
 #include <stdint.h>
@@ -167,6 +169,16 @@ int main(void)
         FH_CHECK(memcmp(&want, &got, sizeof want) == 0);
         FH_CONTAINS(ifl_last_error(), "ifl_fric_batch");
         FH_CONTAINS(ifl_last_error(), "batch point 99");
+    }
+    /* A fault of the whole batch: refused, nothing written but PNEWDT. */
+    fh_context("NFDIR = 3");
+    random_batch(&in, 2, 2e-3);
+    got = in;
+    {
+        double pb = FH_PNEWDT_IN;
+        FH_CHECK(batch_call(&got, 3, elastic, 7, 0.1, &pb) == IFL_STATUS_BAD_PARAMETER);
+        FH_EXACT(pb, FH_CUTBACK);
+        FH_CHECK(memcmp(&in, &got, sizeof in) == 0);
     }
     /* A stick point and a slip point keep their closed forms: τ = k_s·Δγ, |τ| = μp. */
     fh_context("closed forms through the batch");
