@@ -347,3 +347,20 @@ C     A and B the same bit for bit (a NaN equals that same NaN).
       IB = TRANSFER(B, IB)
       SAMEB = IA .EQ. IB
       END
+
+C-----------------------------------------------------------------------
+C     SCENE(NDIR, IA, IB) for NDIR = 1 and 2 and each setting of two
+C     on/off switches IA and IB (0 or 1: the variants a harness
+C     crosses, e.g. exact stick and frozen rate), NDIR outermost, then
+C     IA: the twin of fh_each_nfdir_and_switches (c_tests/harness.h).
+C-----------------------------------------------------------------------
+      SUBROUTINE EACHSW(SCENE)
+      EXTERNAL SCENE
+      DO 30 NDIR = 1, 2
+        DO 20 IA = 0, 1
+          DO 10 IB = 0, 1
+            CALL SCENE(NDIR, IA, IB)
+   10     CONTINUE
+   20   CONTINUE
+   30 CONTINUE
+      END

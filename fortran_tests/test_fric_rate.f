@@ -11,25 +11,25 @@ C       mu(v) = mu_k + (mu_s - mu_k) exp(-d_c v).
 C     Slip at v = 0.05, 0.5, 0.2, 1.5 with DGAM = v DTIME E; once
 C     steady |tau| = mu(v) p and STATEV(2) = v; FRIC_COEF returns
 C     fCoef(1,1) = mu(v), fCoefDeriv(1,1,1) = -d_c (mu_s-mu_k)
-C     exp(-d_c v).  NFDIR = 1 and 2, elastic and exact stick.
+C     exp(-d_c v).  NFDIR = 1 and 2, elastic and exact stick, mu at the
+C     end-of-increment rate and frozen (PROPS(20) = 1), crossed by
+C     EACHSW as the C twin crosses them.
 C
-C     The tally (CHECK with K = the velocity step) and HOSTIN come from
-C     harness_f77.f.
+C     The tally (CHECK with K = the velocity step), HOSTIN and EACHSW
+C     come from harness_f77.f.
 C
 C=======================================================================
       PROGRAM TFRATE
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
+      EXTERNAL STEPS
       CALL TALLY0
-      DO 20 NDIR = 1, 2
-        DO 10 LMODE = 0, 1
-          CALL STEPS(NDIR, LMODE)
-   10   CONTINUE
-   20 CONTINUE
+      CALL EACHSW(STEPS)
       CALL TALLYE
       END
 
-      SUBROUTINE STEPS(NDIR, LMODE)
+C     LMODE = PROPS(7): 0 elastic, 1 exact stick; IFROZ = PROPS(20).
+      SUBROUTINE STEPS(NDIR, LMODE, IFROZ)
       INCLUDE 'ABA_PARAM.INC'
       INCLUDE 'props_index.inc'
       CHARACTER*80 CINAME,SLNAME,MSNAME
@@ -43,8 +43,8 @@ C=======================================================================
      4 FAVG(1,1),IDATA(6),RDATA(8)
       DATA V /0.05D0, 0.5D0, 0.2D0, 1.5D0/
 C
-      WRITE (CASE,'(A,I1,A,I1)') 'F4 rate NFDIR=', NDIR,
-     1 ' exact stick=', LMODE
+      WRITE (CASE,'(A,I1,A,I1,A,I1)') 'F4 rate NFDIR=', NDIR,
+     1 ' exact stick=', LMODE, ' frozen=', IFROZ
       XMUS = 0.6D0
       XMUK = 0.3D0
       DC = 4.0D0
@@ -61,6 +61,7 @@ C     Exponential decay from mu_s = PROPS(2) to mu_k.
       PROPS(KPC_MU_LAW) = 1.0D0
       PROPS(KPC_MU_K) = XMUK
       PROPS(KPC_DECAY) = DC
+      PROPS(KPC_FROZEN) = DBLE(IFROZ)
       NPROPS = KPC_N
       NFDIR = NDIR
       NSTATV = 3

@@ -30,15 +30,9 @@ program test_fric_steady
 
   ! The FRIC arguments of one contact point (module harness_fric_host).
   type(fric_args) :: h
-  integer :: nd, variant, decay
 
-  do nd = 1, 2
-    do variant = 0, 1
-      do decay = 0, 1
-        call run_scene(nd, variant, decay)
-      end do
-    end do
-  end do
+  ! NFDIR, PROPS(16) = 0 / 1 (seed 000's / seed 003's rate_crit), constant / decaying mu.
+  call each_nfdir_and_switches(run_scene)
   call bad_input()
   call finish()
 
