@@ -364,3 +364,70 @@ C-----------------------------------------------------------------------
    20   CONTINUE
    30 CONTINUE
       END
+
+C-----------------------------------------------------------------------
+C     The slip tangent of the host point (fric_host.inc) along the unit
+C     direction E (NFDIR entries) against a central difference of
+C     FRIC's own TAU: E . DDTDDG . E at the current increment against
+C     E . (TAU(DGAM + HG E) - TAU(DGAM - HG E))/(2 HG), HG = 1e-9, to
+C     the absolute tolerance ATOL (K: the tally's number); the twin of
+C     fh_check_tangent_along (c_tests/harness.h).  Three calls that
+C     must succeed, each from the state on entry (LM, TAU, STATEV),
+C     which is put back afterwards with DGAM, so the host's history
+C     goes on as if they had not been made.
+C-----------------------------------------------------------------------
+      SUBROUTINE TANGNT(E, ATOL, K)
+      INCLUDE 'ABA_PARAM.INC'
+      INCLUDE 'fric_host.inc'
+      DIMENSION E(*),TAU0(MG),SV0(MSV),DG0(MG),TPLUS(MG),SGN(3)
+      DATA SGN /0.0D0, 1.0D0, -1.0D0/
+      HG = 1.0D-9
+      LM0 = LM
+      DO 10 I = 1, MG
+        TAU0(I) = TAU(I)
+        DG0(I) = DGAM(I)
+   10 CONTINUE
+      DO 15 I = 1, MSV
+        SV0(I) = STATEV(I)
+   15 CONTINUE
+      AN = 0.0D0
+      FD = 0.0D0
+C     Call 1 at DGAM (the tangent), 2 at DGAM + HG E, 3 at DGAM - HG E.
+      DO 50 IC = 1, 3
+        LM = LM0
+        DO 20 I = 1, MG
+          TAU(I) = TAU0(I)
+          DGAM(I) = DG0(I)
+   20   CONTINUE
+        DO 25 I = 1, MSV
+          STATEV(I) = SV0(I)
+   25   CONTINUE
+        DO 30 I = 1, NFDIR
+          DGAM(I) = DG0(I) + SGN(IC)*HG*E(I)
+   30   CONTINUE
+        PNEWDT = BIG
+        CALL FRICH
+        CALL CHECK(PNEWDT .EQ. BIG, 'tangent: PNEWDT not lowered', K)
+        DO 40 I = 1, NFDIR
+          IF (IC .EQ. 1) THEN
+            DO 35 J = 1, NFDIR
+              AN = AN + E(I)*DDTDDG(I + (J-1)*NFDIR)*E(J)
+   35       CONTINUE
+          ELSE IF (IC .EQ. 2) THEN
+            TPLUS(I) = TAU(I)
+          ELSE
+            FD = FD + E(I)*(TPLUS(I) - TAU(I))/(2.0D0*HG)
+          END IF
+   40   CONTINUE
+   50 CONTINUE
+      LM = LM0
+      DO 60 I = 1, MG
+        TAU(I) = TAU0(I)
+        DGAM(I) = DG0(I)
+   60 CONTINUE
+      DO 65 I = 1, MSV
+        STATEV(I) = SV0(I)
+   65 CONTINUE
+      CALL CHKNR(AN, FD, ATOL, 'tangent along the slip = central FD',
+     1 K)
+      END
