@@ -200,5 +200,41 @@ int main(void)
         FH_EXACT(in.tau[1], 30.0);
         FH_NEAR(in.sfd[1], 30.0 * 4e-3, 1e-14, 0.0);
     }
+    /* Every point at first contact, NFDIR = 2 (as the Fortran twin): odd points (1-based)
+     * stick with |dgam| = 0.5 gc, tau = k_s dgam and DDTDDG = k_s I; even points slip with
+     * |dgam| = 3 gc, |tau| = mu p along dgam, SFD = mu p (3 gc - gc). */
+    fh_context("closed forms at every point, NFDIR = 2");
+    random_batch(&in, 2, 1e-3);
+    for (i = 0; i < NP; i++) {
+        const int sticks = i % 2 == 0;
+        in.lm[i] = 0;
+        in.press[i] = 100.0;
+        in.dpress[i] = 0.0;
+        in.tau[i] = in.tau[i + LD] = 0.0;
+        in.statev[i] = in.statev[i + LD] = in.statev[i + 2 * LD] = 0.0;
+        in.dgam[i] = (sticks ? 0.3 : 1.8) * 1e-3;
+        in.dgam[i + LD] = (sticks ? -0.4 : 2.4) * 1e-3;
+    }
+    {
+        const double ks = 0.3 * 100.0 / 1e-3;
+        double pb = FH_PNEWDT_IN;
+        FH_CHECK(batch_call(&in, 2, elastic, 7, 0.1, &pb) == IFL_STATUS_OK);
+        for (i = 0; i < NP; i++) {
+            const double t1 = in.tau[i], t2 = in.tau[i + LD];
+            const double g1 = in.dgam[i], g2 = in.dgam[i + LD];
+            if (i % 2 == 0) {
+                FH_NEAR(t1, ks * g1, 1e-12, 0.0);
+                FH_NEAR(t2, ks * g2, 1e-12, 0.0);
+                FH_NEAR(in.ddtddg[i], ks, 1e-12, 0.0);
+                FH_EXACT(in.ddtddg[i + LD], 0.0);
+                FH_EXACT(in.ddtddg[i + 2 * LD], 0.0);
+                FH_NEAR(in.ddtddg[i + 3 * LD], ks, 1e-12, 0.0);
+            } else {
+                FH_NEAR(hypot(t1, t2), 30.0, 1e-12, 0.0);
+                FH_NEAR(t1 * g2 - t2 * g1, 0.0, 0.0, 1e-12 * 30.0 * 1e-3);
+                FH_NEAR(in.sfd[i], 30.0 * 2e-3, 1e-12, 0.0);
+            }
+        }
+    }
     return fh_finish();
 }

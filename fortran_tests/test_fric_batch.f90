@@ -232,6 +232,8 @@ program test_fric_batch
                'slip: |tau| = mu p')
     call check(abs(got%tau(i, 1)*got%dgam(i, 2) - got%tau(i, 2)*got%dgam(i, 1)) &
                <= 1.0e-12_dp*30*gc, 'slip: tau along dgam')
+    ! From tau = 0 the first gc of |dgam| = 3 gc is elastic: SFD = mu p (3 gc - gc).
+    call check(abs(got%sfd(i) - mu*100*2*gc) <= 1.0e-12_dp*mu*100*2*gc, 'slip: SFD = mu p 2 gc')
   end do
 
   ! Bad input at two points (C's points 3 and 99, 0-based): FRIC's failure outputs there, the
