@@ -36,7 +36,7 @@ C     (cases 1, 2) are bad for either host dimension: run them once.
 C     Case 6 is the table of inputs that must be finite (INPUT 1..4:
 C     PRESS, DPRESS, DGAM(NFDIR), TAU(NFDIR)), each with NaN, +Inf and
 C     -Inf in turn (IVAL 1..3), as non_finite_inputs of the C twin.
-      DO 30 ICASE = 0, 10
+      DO 30 ICASE = 0, 19
         DO 20 NDIR = 1, 2
           IF ((ICASE .EQ. 1 .OR. ICASE .EQ. 2) .AND. NDIR .EQ. 1)
      1     GO TO 20
@@ -66,6 +66,14 @@ C                                   had already asked for a smaller
 C                                   increment (PNEWDT = 0.1 on entry):
 C                                   PNEWDT is only ever lowered, so it
 C                                   stays 0.1
+C       11 NPROPS = 0            16 CHRLNGTH < 0 with PROPS(5) = 0
+C       12 PROPS(1) = 1.5 (the   17 DTIME = NaN
+C          law code an integer)  18 STATEV(1) = NaN
+C       13 PROPS(3) = mu2 < 0    19 TAULM(1) = NaN with exact stick
+C       14 PROPS(7) = 5             held (PROPS(7) = 1, LM = 1 on
+C       15 PROPS(8) = 1e-3 with     entry: TAULM is read)
+C          NPROPS = 8
+C     (the C twin's catalogue).
 C     The inputs of case 6, each of which must be finite: PRESS, DPRESS,
 C     DGAM(NFDIR), TAU(NFDIR) (an array gets the value in its last
 C     component, so that a check of the first one only would miss it);
@@ -77,15 +85,18 @@ C-----------------------------------------------------------------------
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
       INCLUDE 'fric_host.inc'
-      DIMENSION TAUIN(MG),SVIN(MSV),DGIN(MG),PRIN(7),XNONF(3)
-      CHARACTER*12 KEY(0:10),NFKEY(4)
+      DIMENSION TAUIN(MG),SVIN(MSV),DGIN(MG),PRIN(8),XNONF(3)
+      CHARACTER*16 KEY(0:19)
+      CHARACTER*12 NFKEY(4)
       CHARACTER*4 NFVAL(3)
       CHARACTER*200 EXPECT
       CHARACTER*512 MSG
       LOGICAL VALID,SAMEX
       DATA KEY /' ', 'NFDIR = 0', 'NFDIR = 3', 'NPROPS = 1',
      1 'PROPS(1)', 'PROPS(2)', ' ', 'NSTATV = 2',
-     2 'CHRLNGTH', 'LM = 5', 'PROPS(2)'/
+     2 'CHRLNGTH', 'LM = 5', 'PROPS(2)', 'NPROPS = 0',
+     3 'PROPS(1) = 1.5', 'PROPS(3)', 'PROPS(7)', 'PROPS(8)',
+     4 'CHRLNGTH', 'DTIME', 'STATEV', 'TAULM'/
       DATA NFKEY /' PRESS', 'DPRESS', 'DGAM', 'TAU'/
       DATA NFVAL /'NaN', '+Inf', '-Inf'/
       XNONF(1) = XNAN
@@ -134,6 +145,31 @@ C
         PROPS(5) = 0.0D0
       END IF
       IF (ICASE .EQ. 9) LM = 5
+      IF (ICASE .EQ. 11) NPROPS = 0
+      IF (ICASE .EQ. 12) PROPS(1) = 1.5D0
+      IF (ICASE .EQ. 13) PROPS(3) = -0.4D0
+C     Cases 14, 15 and 19 give PROPS(6..7) (and 8) a meaning.
+      IF (ICASE .EQ. 14 .OR. ICASE .EQ. 15 .OR. ICASE .EQ. 19) THEN
+        PROPS(6) = 0.0D0
+        PROPS(7) = 0.0D0
+        NPROPS = 7
+      END IF
+      IF (ICASE .EQ. 14) PROPS(7) = 5.0D0
+      IF (ICASE .EQ. 15) THEN
+        PROPS(8) = 1.0D-3
+        NPROPS = 8
+      END IF
+      IF (ICASE .EQ. 16) THEN
+        CHRLNGTH = -0.2D0
+        PROPS(5) = 0.0D0
+      END IF
+      IF (ICASE .EQ. 17) DTIME = XNAN
+      IF (ICASE .EQ. 18) STATEV(1) = XNAN
+      IF (ICASE .EQ. 19) THEN
+        PROPS(7) = 1.0D0
+        LM = 1
+        TAULM(1) = XNAN
+      END IF
       PNWANT = 0.25D0
       IF (ICASE .EQ. 10) THEN
         PNEWDT = 0.1D0
@@ -149,7 +185,7 @@ C
       DO 13 I = 1, MSV
         SVIN(I) = STATEV(I)
    13 CONTINUE
-      DO 14 I = 1, 7
+      DO 14 I = 1, 8
         PRIN(I) = PROPS(I)
    14 CONTINUE
 C
@@ -176,9 +212,14 @@ C
       CALL CHECK(LM .EQ. LMIN, 'LM unchanged', 0)
       CALL SAME(TAU, TAUIN, MG, 'TAU unchanged (all entries)')
       CALL SAME(STATEV, SVIN, MSV, 'STATEV unchanged (all entries)')
-      CALL SAME(PROPS, PRIN, 7, 'PROPS not written')
+      CALL SAME(PROPS, PRIN, 8, 'PROPS not written')
       CALL SAME(DGAM, DGIN, MG, 'DGAM not written')
-      CALL GUARD1(TAULM, 1, MG, 'TAULM not written', 0)
+      IF (ICASE .EQ. 19) THEN
+        CALL CHECK(TAULM(1) .NE. TAULM(1), 'TAULM (NaN) not written', 0)
+        CALL GUARD1(TAULM, 2, MG, 'TAULM not written', 0)
+      ELSE
+        CALL GUARD1(TAULM, 1, MG, 'TAULM not written', 0)
+      END IF
       CALL ZEROS(SLIP, MG, 'SLIP not written')
       CALL CHECK(SAMEX(PRESS, PRSIN), 'PRESS not written', 0)
       CALL CHECK(SAMEX(DPRESS, DPRIN), 'DPRESS not written', 0)
