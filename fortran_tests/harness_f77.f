@@ -383,25 +383,19 @@ C-----------------------------------------------------------------------
       DATA SGN /0.0D0, 1.0D0, -1.0D0/
       HG = 1.0D-9
       LM0 = LM
-      DO 10 I = 1, MG
-        TAU0(I) = TAU(I)
-        DG0(I) = DGAM(I)
-   10 CONTINUE
-      DO 15 I = 1, MSV
-        SV0(I) = STATEV(I)
-   15 CONTINUE
+      CALL COPYV(TAU, TAU0, MG)
+      CALL COPYV(DGAM, DG0, MG)
+      CALL COPYV(STATEV, SV0, MSV)
       AN = 0.0D0
       FD = 0.0D0
-C     Call 1 at DGAM (the tangent), 2 at DGAM + HG E, 3 at DGAM - HG E.
-      DO 50 IC = 1, 3
+C     Call 1 at DGAM (the tangent), 2 at DGAM + HG E, 3 at DGAM - HG E,
+C     each from the state on entry; IC = 4 only puts that state back.
+      DO 50 IC = 1, 4
         LM = LM0
-        DO 20 I = 1, MG
-          TAU(I) = TAU0(I)
-          DGAM(I) = DG0(I)
-   20   CONTINUE
-        DO 25 I = 1, MSV
-          STATEV(I) = SV0(I)
-   25   CONTINUE
+        CALL COPYV(TAU0, TAU, MG)
+        CALL COPYV(DG0, DGAM, MG)
+        CALL COPYV(SV0, STATEV, MSV)
+        IF (IC .EQ. 4) GO TO 50
         DO 30 I = 1, NFDIR
           DGAM(I) = DG0(I) + SGN(IC)*HG*E(I)
    30   CONTINUE
@@ -420,14 +414,15 @@ C     Call 1 at DGAM (the tangent), 2 at DGAM + HG E, 3 at DGAM - HG E.
           END IF
    40   CONTINUE
    50 CONTINUE
-      LM = LM0
-      DO 60 I = 1, MG
-        TAU(I) = TAU0(I)
-        DGAM(I) = DG0(I)
-   60 CONTINUE
-      DO 65 I = 1, MSV
-        STATEV(I) = SV0(I)
-   65 CONTINUE
       CALL CHKNR(AN, FD, ATOL, 'tangent along the slip = central FD',
      1 K)
+      END
+
+C     TO(1..N) = FROM(1..N).
+      SUBROUTINE COPYV(FROM, TO, N)
+      INCLUDE 'ABA_PARAM.INC'
+      DIMENSION FROM(N), TO(N)
+      DO 10 I = 1, N
+        TO(I) = FROM(I)
+   10 CONTINUE
       END

@@ -17,8 +17,8 @@ C     names (old user code) checks that the hidden length is trusted.
 C
 C     The tally (TALLY0, CHECK, CHKNR, TALLYE: last line "<n> passed,
 C     <m> failed"), GUARD1, SENTAL, F1HOST, FRICH (the plain CALL FRIC
-C     of the host point), HOSTIN, F1PT, NANINF and GETMSG come from
-C     harness_f77.f, the host point (COMMON) from fric_host.inc.
+C     of the host point), HOSTIN, F1PT, NANINF, GETMSG and COPYV come
+C     from harness_f77.f, the host point (COMMON) from fric_host.inc.
 C
 C=======================================================================
       PROGRAM TFBAD
@@ -178,16 +178,10 @@ C     Cases 14, 15 and 19 give PROPS(6..7) (and 8) a meaning.
       LMIN = LM
       PRSIN = PRESS
       DPRIN = DPRESS
-      DO 12 I = 1, MG
-        TAUIN(I) = TAU(I)
-        DGIN(I) = DGAM(I)
-   12 CONTINUE
-      DO 13 I = 1, MSV
-        SVIN(I) = STATEV(I)
-   13 CONTINUE
-      DO 14 I = 1, 8
-        PRIN(I) = PROPS(I)
-   14 CONTINUE
+      CALL COPYV(TAU, TAUIN, MG)
+      CALL COPYV(DGAM, DGIN, MG)
+      CALL COPYV(STATEV, SVIN, MSV)
+      CALL COPYV(PROPS, PRIN, 8)
 C
       CALL FRICH
 C

@@ -15,24 +15,20 @@ C     Output arrays are declared longer than NFDIR (STATEV longer than
 C     NSTATV); their tails hold a sentinel that must survive each call.
 C
 C     TALLY0, CHECK, CHKNR, TALLYE (the tally and its last line), GUARD1,
-C     SENTAL, SENTOU, HOSTPT, F1HOST and FRICH come from harness_f77.f,
+C     SENTAL, SENTOU, HOSTPT, F1HOST, FRICH and EACHSW come from
+C     harness_f77.f,
 C     the host point (COMMON) from fric_host.inc.
 C
 C=======================================================================
       PROGRAM TFRIC1
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
+      EXTERNAL PULL
       CALL TALLY0
-C     NDIR: NFDIR = 1 (2-D) and 2 (3-D).  IGSRC = 1: gamma_crit from
-C     PROPS(5); IGSRC = 2: the default 0.005*CHRLNGTH.  ICAP = 0: no
-C     shear limit; ICAP = 1: tau_max = 20 < mu p = 30.
-      DO 30 NDIR = 1, 2
-        DO 20 IGSRC = 1, 2
-          DO 10 ICAP = 0, 1
-            CALL PULL(NDIR, IGSRC, ICAP)
-   10     CONTINUE
-   20   CONTINUE
-   30 CONTINUE
+C     NDIR: NFDIR = 1 (2-D) and 2 (3-D).  IGSRC = 0: gamma_crit from
+C     PROPS(5); IGSRC = 1: the default 0.005*CHRLNGTH.  ICAP = 0: no
+C     shear limit; ICAP = 1: tau_max = 20 < mu p = 30.  (EACHSW.)
+      CALL EACHSW(PULL)
       CALL LMTWO
       CALL ROUGH
       CALL TALLYE
@@ -74,7 +70,7 @@ C
       PROPS(2) = XMU
       PROPS(3) = 0.0D0
       PROPS(4) = TMAX
-      IF (IGSRC .EQ. 1) THEN
+      IF (IGSRC .EQ. 0) THEN
 C       Absolute gamma_crit, PROPS(6..7) omitted (NPROPS = 5).  They
 C       hold an invalid sentinel: reading past NPROPS would fail.
 C       CHRLNGTH = 1 would give 0.005 /= gc if it were used.
