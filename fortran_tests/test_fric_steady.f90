@@ -179,9 +179,18 @@ contains
     scene = 'steady transport: PROPS(16) = 2'
     call point(2, 2, 0)
     call refused('PROPS(16) = 2 must select')
+    scene = 'steady transport: PROPS(16) = 0.5'
+    call point(2, 0, 0)
+    h%props(kpc_viscous_reference) = 0.5_dp
+    call refused('PROPS(16) = 0.5 must select')
     scene = 'steady transport: omega = 0'
     call point(2, 1, 0)
     h%props(kpc_omega) = 0
     call refused('PROPS(14)')
+    ! On the axis R = 0, so seed 003's rate_crit F_f omega R is 0.
+    scene = 'steady transport: a point on the axis, seed 003'
+    call point(2, 1, 0)
+    h%coords(1:2) = 0
+    call refused('F_f·ω·R must be > 0')
   end subroutine bad_input
 end program test_fric_steady
