@@ -96,7 +96,7 @@ static double per_point(batch_t *b, int nfdir, const double *props, int nprops, 
         for (a = 0; a < NSTATV; a++) {
             h.statev[a] = b->statev[i + a * LD];
         }
-        fh_call_raw(&h);
+        fh_call(&h); /* guard slots and inputs checked unchanged */
         if (h.pnewdt < pnewdt) {
             pnewdt = h.pnewdt;
         }

@@ -214,6 +214,7 @@ C
       ELSE
         CALL GUARD1(TAULM, 1, MG, 'TAULM not written', 0)
       END IF
+      CALL CHECK(SED .EQ. SENT, 'SED not written', 0)
       CALL ZEROS(SLIP, MG, 'SLIP not written')
       CALL CHECK(SAMEX(PRESS, PRSIN), 'PRESS not written', 0)
       CALL CHECK(SAMEX(DPRESS, DPRIN), 'DPRESS not written', 0)

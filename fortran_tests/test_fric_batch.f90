@@ -46,7 +46,7 @@ module batch_points
   use, intrinsic :: iso_fortran_env, only: int64
   use harness_tally, only: dp, finish, scene, check
   use harness_threads, only: lehmer_uniform => uniform
-  use harness_fric_host, only: fric_args, new_point, fric_call
+  use harness_fric_host, only: fric_args, new_point, fric_call, check_tails
   implicit none
   integer, parameter :: np = 500, ld = 512, nsv = 3
   real(dp), parameter :: unset = 12345.678_dp, big = 1.0e36_dp
@@ -122,11 +122,12 @@ contains
       a%dslip(1:n) = b%dslip(i, 1:n)
       a%ddtddg(1:n2) = b%ddtddg(i, 1:n2)
       a%statev(1:nsv) = b%statev(i, :)
-      a%ddtddt = 0
+      a%ddtddt(1:2*n) = 0
       a%press = b%press(i)
       a%dpress = b%dpress(i)
       a%chrlngth = b%chr(i)
       call fric_call(a, keep_outputs=.true.)
+      call check_tails(a)
       pnewdt = min(pnewdt, a%pnewdt)
       b%lm(i) = a%lm
       b%sed(i) = a%sed
