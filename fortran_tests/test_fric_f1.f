@@ -28,7 +28,13 @@ C=======================================================================
 C     NDIR: NFDIR = 1 (2-D) and 2 (3-D).  IGSRC = 0: gamma_crit from
 C     PROPS(5); IGSRC = 1: the default 0.005*CHRLNGTH.  ICAP = 0: no
 C     shear limit; ICAP = 1: tau_max = 20 < mu p = 30.  (EACHSW.)
+C     IGSRC = 2, gamma_crit = PROPS(6) x CHRLNGTH, the C twin's third
+C     source, for both NFDIR and both ICAP.
       CALL EACHSW(PULL)
+      DO 10 NDIR = 1, 2
+        CALL PULL(NDIR, 2, 0)
+        CALL PULL(NDIR, 2, 1)
+   10 CONTINUE
       CALL LMTWO
       CALL ROUGH
       CALL TALLYE
@@ -79,13 +85,21 @@ C       CHRLNGTH = 1 would give 0.005 /= gc if it were used.
         PROPS(7) = SENT
         NPROPS = 5
         CHRLNGTH = 1.0D0
-      ELSE
+      ELSE IF (IGSRC .EQ. 1) THEN
 C       gamma_crit = 0.005 * CHRLNGTH = 0.005 * 0.2 = gc.
         PROPS(5) = 0.0D0
         PROPS(6) = 0.0D0
         PROPS(7) = 0.0D0
         NPROPS = 7
         CHRLNGTH = 0.2D0
+      ELSE
+C       gamma_crit = PROPS(6) * CHRLNGTH = 0.01 * 0.1 = gc (the
+C       default tolerance would give 0.005 * 0.1 /= gc).
+        PROPS(5) = 0.0D0
+        PROPS(6) = 0.01D0
+        PROPS(7) = 0.0D0
+        NPROPS = 7
+        CHRLNGTH = 0.1D0
       END IF
 C     tau_crit = min(mu p, tau_max) and d tau_crit/dp (0 on the cap).
       TAUC = XMU*P
