@@ -1,7 +1,7 @@
-! test_fric_scenes.f90 -- scenes F2 (circle), F5 (pressure ramp while sliding) and F1 with exact
-! stick (a spring host) through FRIC, from free-form Fortran. FRIC is called the way a user's own
-! Fortran 90 host would: a plain `call fric(...)` with the 39 Abaqus arguments, no interface
-! block, no ISO_C_BINDING.
+! test_fric_scenes.f90 -- scenes F2 (circle), F3 (friction ellipse), F5 (pressure ramp while
+! sliding) and F1 with exact stick (a spring host) through FRIC, from free-form Fortran. FRIC is
+! called the way a user's own Fortran 90 host would: a plain `call fric(...)` with the 39 Abaqus
+! arguments, no interface block, no ISO_C_BINDING.
 !
 ! Every assertion is a closed form (shared/design/scenes.md; the law in the common brief), a
 ! central finite difference of TAU from repeated FRIC calls, or an invariant (SFD >= 0, guard
@@ -168,6 +168,65 @@ contains
     call check_near(a%statev(1), sumsfd/tauc, 1.0e-10_dp*a%statev(1), &
                     'STATEV(1) = sum SFD / (mu p) (every slip at |tau| = mu p)', n*nturns)
   end subroutine scene_f2
+
+  ! Scene F3, the friction ellipse, the twin of c_tests/test_fric_f3.c: NFDIR = 2, mu1 = 0.5
+  ! (PROPS(2)), mu2 = 0.2 (PROPS(3)), p = 100, gc = 1e-3, steady slip DGAM = 0.3 gc d per
+  ! increment along d at twelve angles. Once sliding the stress is on the ellipse
+  ! (tau1/mu1)^2 + (tau2/mu2)^2 = p^2 and parallel to (mu1^2 d1, mu2^2 d2), same sense; the
+  ! tangents against central differences. In stick k_i = (mu_i/mubar)^2 kbar_s with
+  ! mubar = sqrt((mu1^2 + mu2^2)/2), kbar_s = mubar p/gc, and SED = sum tau_i^2/(2 k_i).
+  subroutine scene_f3()
+    real(dp), parameter :: mu1 = 0.5_dp, mu2 = 0.2_dp, p = 100.0_dp
+    real(dp), parameter :: mbar2 = (mu1**2 + mu2**2)/2
+    type(fric_args) :: a, a0
+    real(dp) :: angle, d(2), w(2), kbar, k1, k2
+    integer :: j, inc
+    kbar = sqrt(mbar2)*p/gc
+    do j = 0, 11
+      angle = j*pi/6 + 0.1_dp
+      d = [cos(angle), sin(angle)]
+      w = [mu1**2*d(1), mu2**2*d(2)]
+      write (scene, '(a,f6.3)') 'F3 ellipse, angle ', angle
+      a = new_point(2, [1.0_dp, mu1, mu2, 0.0_dp, gc], 'F3-ELLIPSE')
+      a%press = p
+      a%dpress = p
+      do inc = 1, 60
+        a%dgam(1:2) = 0.3_dp*gc*d
+        a0 = a
+        call fric_call(a)
+        call check(a%lm == 0, 'LM = 0', inc)
+        call check_call(a, inc)
+        a%dpress = 0
+      end do
+      call check_near(hypot(a%tau(1)/mu1, a%tau(2)/mu2), p, 1.0e-13_dp*p, &
+                      'on the ellipse (tau1/mu1)^2 + (tau2/mu2)^2 = p^2', j)
+      call check_near(a%tau(1)*w(2) - a%tau(2)*w(1), 0.0_dp, 1.0e-11_dp*p*mu1**2, &
+                      'tau parallel to (mu1^2 d1, mu2^2 d2)', j)
+      call check(a%tau(1)*w(1) + a%tau(2)*w(2) > 0, 'tau in the sense of (mu1^2 d1, mu2^2 d2)', j)
+      call check(a%statev(3) == 1, 'STATEV(3) = 1 (slip)', j)
+      call check(a%sfd > 0, 'SFD > 0 in slip', j)
+      call check_tangents_fd(a0, a, gc, kbar, mu1, j)
+    end do
+
+    scene = 'F3 stick stiffnesses'
+    k1 = mu1**2/mbar2*kbar
+    k2 = mu2**2/mbar2*kbar
+    a = new_point(2, [1.0_dp, mu1, mu2, 0.0_dp, gc], 'F3-ELLIPSE')
+    a%press = p
+    a%dpress = p
+    a%dgam(1:2) = [1.0e-5_dp, -2.0e-5_dp]
+    call fric_call(a)
+    call check(a%lm == 0, 'LM = 0', 0)
+    call check_call(a, 0)
+    call check_near(a%ddtddg(1), k1, 1.0e-13_dp*k1, 'stick k1 = (mu1/mubar)^2 kbar_s', 0)
+    call check_near(a%ddtddg(4), k2, 1.0e-13_dp*k2, 'stick k2 = (mu2/mubar)^2 kbar_s', 0)
+    call check(a%ddtddg(2) == 0 .and. a%ddtddg(3) == 0, 'stick DDTDDG diagonal', 0)
+    call check_near(a%tau(1), k1*1.0e-5_dp, 1.0e-13_dp*k1*1.0e-5_dp, 'stick tau1 = k1 DGAM(1)', 0)
+    call check_near(a%tau(2), -k2*2.0e-5_dp, 1.0e-13_dp*k2*2.0e-5_dp, 'stick tau2 = k2 DGAM(2)', 0)
+    call check_near(a%sed, a%tau(1)**2/(2*k1) + a%tau(2)**2/(2*k2), &
+                    1.0e-13_dp*(a%tau(1)**2/(2*k1) + a%tau(2)**2/(2*k2)), &
+                    'SED = sum tau_i^2/(2 k_i)', 0)
+  end subroutine scene_f3
 
   ! Scene F5, pressure ramp while sliding, along a fixed direction e (NFDIR = 1; NFDIR = 2 at
   ! -40 degrees). Phase 1: first contact at p = 40 (DPRESS = 40 on the first increment, so the
@@ -413,6 +472,7 @@ program test_fric_scenes
   scene = 'F2 convergence'
   call check(err1000/err5000 > 4.5_dp .and. err1000/err5000 < 5.5_dp, &
              'lag error first order in the step: err(1000)/err(5000) ~ 5', 0)
+  call scene_f3()
   do nfdir = 1, 2
     call scene_f5(nfdir, 0.0_dp)
     call scene_f5(nfdir, 20.0_dp)
