@@ -14,7 +14,8 @@ C     fCoef(1,1) = mu(v), fCoefDeriv(1,1,1) = -d_c (mu_s-mu_k)
 C     exp(-d_c v); the slip tangent along the slip against a central
 C     difference (TANGNT).  NFDIR = 1 and 2, elastic and exact stick,
 C     mu at the end-of-increment rate and frozen (PROPS(20) = 1),
-C     crossed by EACHSW as the C twin crosses them.
+C     crossed by EACHSW as the C twin crosses them.  A rate law with
+C     DTIME = 0 refused (BADDT).
 C
 C     The tally (CHECK with K = the velocity step), HOSTPT, FRICH (the
 C     plain CALL FRIC of the host point), TANGNT and EACHSW come from
@@ -27,6 +28,7 @@ C=======================================================================
       EXTERNAL STEPS
       CALL TALLY0
       CALL EACHSW(STEPS)
+      CALL BADDT
       CALL TALLYE
       END
 
@@ -129,4 +131,55 @@ C       FRIC_COEF for the same rate and pressure.
 C       d tau/d DGAM along E against a central difference.
         CALL TANGNT(E, 1.0D-5*XMUS*P/GC, IS)
    40 CONTINUE
+      END
+
+C-----------------------------------------------------------------------
+C     The rate law with DTIME = 0 (no slip rate) is refused, as in the
+C     C twin's bad_dtime: PNEWDT < 1, the message names DTIME, TAU and
+C     STATEV unchanged.
+C-----------------------------------------------------------------------
+      SUBROUTINE BADDT
+      INCLUDE 'ABA_PARAM.INC'
+      INCLUDE 'fric_host.inc'
+      INCLUDE 'props_index.inc'
+      CHARACTER*512 MSG
+      CALL HOSTPT('F4-RATE-DT0')
+      CASE = 'rate law with DTIME = 0'
+      DO 5 I = 1, KPC_N
+        PROPS(I) = 0.0D0
+    5 CONTINUE
+      PROPS(KPC_CODE) = DBLE(LAW_COULOMB)
+      PROPS(KPC_MU) = 0.6D0
+      PROPS(KPC_GAMMA_CRIT) = 1.0D-3
+      PROPS(KPC_MU_LAW) = 1.0D0
+      PROPS(KPC_MU_K) = 0.3D0
+      PROPS(KPC_DECAY) = 4.0D0
+      NPROPS = KPC_N
+      NFDIR = 2
+      NSTATV = 3
+      CALL SENTAL(TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,
+     1 STATEV,DGAM,TAULM,MG,MSV)
+      PRESS = 50.0D0
+      DPRESS = 0.0D0
+      DTIME = 0.0D0
+      CHRLNGTH = 1.0D0
+      LM = 0
+      STATEV(1) = 0.5D0
+      STATEV(2) = 0.25D0
+      STATEV(3) = 1.0D0
+      TAU(1) = 3.0D0
+      TAU(2) = 0.0D0
+      DGAM(1) = 1.0D-3
+      DGAM(2) = 0.0D0
+      TAULM(1) = 0.0D0
+      TAULM(2) = 0.0D0
+      CALL FRICH
+      CALL CHECK(PNEWDT .LT. 1.0D0, 'PNEWDT < 1', 0)
+      CALL GETMSG(MSG, L)
+      CALL CHECK(INDEX(MSG(1:L), 'DTIME') .GT. 0,
+     1 'message names DTIME', 0)
+      CALL CHECK(TAU(1) .EQ. 3.0D0 .AND. TAU(2) .EQ. 0.0D0,
+     1 'TAU unchanged', 0)
+      CALL CHECK(STATEV(1) .EQ. 0.5D0 .AND. STATEV(2) .EQ. 0.25D0
+     1 .AND. STATEV(3) .EQ. 1.0D0, 'STATEV unchanged', 0)
       END
