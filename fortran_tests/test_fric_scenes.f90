@@ -229,6 +229,19 @@ contains
                     'SED = sum tau_i^2/(2 k_i)', 0)
   end subroutine scene_f3
 
+  ! Law 1 with mu_c and gc in the first n entries of PROPS, every other one 0 (props_coulomb of
+  ! c_tests/test_fric_f4.c).
+  function props_coulomb(mu_c, n) result(props)
+    real(dp), intent(in) :: mu_c
+    integer, intent(in) :: n
+    real(dp) :: props(n)
+    include 'props_index.inc'
+    props = 0
+    props(kpc_code) = law_coulomb
+    props(kpc_mu) = mu_c
+    props(kpc_gamma_crit) = gc
+  end function props_coulomb
+
   ! Tangential damping, the twin of damping in c_tests/test_fric_f4.c: mu = 0.6, gc = 1e-3,
   ! p = 50, DTIME = 0.01, c0 = PROPS(17) = 2, NSTATV = 3 + NFDIR (the damping stress kept in
   ! STATEV(4..)). First stick increment DGAM(1) = 1e-5: tau = (k_s + c0/DTIME) DGAM, the same
@@ -242,10 +255,7 @@ contains
     type(fric_args) :: a
     integer :: k
     write (scene, '(a,i0)') 'damping, first stick increment, NFDIR=', nfdir
-    props = 0
-    props(kpc_code) = law_coulomb
-    props(kpc_mu) = mu_s
-    props(kpc_gamma_crit) = gc
+    props = props_coulomb(mu_s, kpc_n)
     props(kpc_damping) = c0
     ks = mu_s*p/gc
     d = [1.0_dp, 0.0_dp]
@@ -291,10 +301,7 @@ contains
     type(fric_args) :: a
     integer :: k, ia
     write (scene, '(a,i0)') 'F5 pressure-dependent mu, NFDIR=', nfdir
-    props = 0
-    props(kpc_code) = law_coulomb
-    props(kpc_mu) = mu0
-    props(kpc_gamma_crit) = gc
+    props = props_coulomb(mu0, kpc_p_ref)
     props(kpc_tau_max) = tau_max
     props(kpc_p_ref) = p_ref
     d = [1.0_dp, 0.0_dp]
