@@ -351,18 +351,25 @@ static inline void fh_call_raw(fh_fric *h)
 }
 
 /*
- * One call from the host: PNEWDT set large as Abaqus does, guards refreshed, then after the
- * call the guard slots and every input argument are checked unchanged.
+ * One call from a host that passes PNEWDT = pnewdt_in (FH_PNEWDT_IN, or less when another routine
+ * of the increment already asked for a smaller one), guards refreshed, then after the call the
+ * guard slots and every input argument are checked unchanged.
  */
-static inline void fh_call(fh_fric *h)
+static inline void fh_call_from(fh_fric *h, double pnewdt_in)
 {
     fh_fric before;
-    h->pnewdt = FH_PNEWDT_IN;
+    h->pnewdt = pnewdt_in;
     fh_set_guards(h);
     before = *h;
     fh_call_raw(h);
     FH_CHECK(fh_guards_intact(h));
     FH_CHECK(fh_inputs_same(h, &before));
+}
+
+/* One call from the host: PNEWDT set large as Abaqus does (fh_call_from). */
+static inline void fh_call(fh_fric *h)
+{
+    fh_call_from(h, FH_PNEWDT_IN);
 }
 
 /*

@@ -89,11 +89,13 @@ static int valid_nfdir(int n)
 }
 
 /*
- * Calls the broken point twice and checks the documented failure outputs each time.
- * `name` is how the interaction must appear in the message; `cause` and `cause2` (may be
- * NULL) are words the cause must contain.
+ * Calls the broken point twice, PNEWDT = pnewdt_in on entry, and checks the documented failure
+ * outputs each time; PNEWDT is only ever lowered, so it must end at the smaller of pnewdt_in and
+ * the cut-back. `name` is how the interaction must appear in the message; `cause` and `cause2`
+ * (may be NULL) are words the cause must contain.
  */
-static void expect_refused(fh_fric *h, const char *name, const char *cause, const char *cause2)
+static void expect_refused_from(fh_fric *h, double pnewdt_in, const char *name, const char *cause,
+                                const char *cause2)
 {
     char quoted[128];
     char msg[MESSAGE_LEN];
@@ -118,9 +120,9 @@ static void expect_refused(fh_fric *h, const char *name, const char *cause, cons
         before = *h;
         ifl_clear_error();
 
-        fh_call(h); /* guards and inputs checked in there */
+        fh_call_from(h, pnewdt_in); /* guards and inputs checked in there */
 
-        FH_EXACT(h->pnewdt, FH_CUTBACK);
+        FH_EXACT(h->pnewdt, pnewdt_in < FH_CUTBACK ? pnewdt_in : FH_CUTBACK);
         FH_CHECK(h->pnewdt < 1.0);
         FH_CHECK(memcmp(&h->lm, &before.lm, sizeof h->lm) == 0);
         FH_CHECK(memcmp(h->tau, before.tau, sizeof h->tau) == 0);
@@ -153,6 +155,12 @@ static void expect_refused(fh_fric *h, const char *name, const char *cause, cons
         remember_message(msg);
     }
     expect_good(valid_nfdir(n) ? n : 2, msg);
+}
+
+/* expect_refused_from a host passing PNEWDT as Abaqus does, large. */
+static void expect_refused(fh_fric *h, const char *name, const char *cause, const char *cause2)
+{
+    expect_refused_from(h, FH_PNEWDT_IN, name, cause, cause2);
 }
 
 /* ---- the catalogue -------------------------------------------------------------------- */
@@ -269,6 +277,19 @@ static void non_finite_inputs(int nfdir)
     }
 }
 
+/*
+ * mu < 0 from a host that had already asked for a smaller increment (PNEWDT = 0.1 on entry):
+ * PNEWDT is only ever lowered, so it stays 0.1; every other failure output as always.
+ */
+static void lowered_pnewdt(int nfdir)
+{
+    fh_fric h;
+    fh_context("mu < 0 with PNEWDT = 0.1 on entry, NFDIR=%d", nfdir);
+    good_point(&h, nfdir);
+    mu_negative(&h);
+    expect_refused_from(&h, 0.1, "SI_PAD", "PROPS(2)", NULL);
+}
+
 /* Old host code: CHARACTER*8 CINAME. The bytes after the 8 are not part of the name. */
 static void short_name(fh_fric *h)
 {
@@ -380,6 +401,7 @@ int main(int argc, char **argv)
             expect_refused(&h, "SI_PAD", CATALOGUE[c].cause, CATALOGUE[c].cause2);
         }
         non_finite_inputs(nfdir);
+        lowered_pnewdt(nfdir);
     }
     name_cases();
     native_api();

@@ -2,7 +2,9 @@
  * ifl_fric_batch against fric_ called once per point (the host of harness.h): on random points
  * (stick, slip, exact stick, LM = 0/1/2, NFDIR 1 and 2, a padded leading dimension) every
  * output must be bit for bit what fric_ writes (memcmp), and nothing is written in the padding.
- * A point with a NaN input gets fric_'s failure outputs while the others are still computed.
+ * A point with a NaN input gets fric_'s failure outputs while the others are still computed;
+ * NFDIR = 3 is refused as a whole (nothing written but PNEWDT). Mirrored by
+ * fortran_tests/test_fric_batch.f90 (same generator, seed and sizes).
  */
 #define _POSIX_C_SOURCE 200809L /* thread_harness.h declares pthread barriers */
 #include <stdint.h>
@@ -94,7 +96,7 @@ static double per_point(batch_t *b, int nfdir, const double *props, int nprops, 
         for (a = 0; a < NSTATV; a++) {
             h.statev[a] = b->statev[i + a * LD];
         }
-        fh_call_raw(&h);
+        fh_call(&h); /* guard slots and inputs checked unchanged */
         if (h.pnewdt < pnewdt) {
             pnewdt = h.pnewdt;
         }
@@ -168,6 +170,16 @@ int main(void)
         FH_CONTAINS(ifl_last_error(), "ifl_fric_batch");
         FH_CONTAINS(ifl_last_error(), "batch point 99");
     }
+    /* A fault of the whole batch: refused, nothing written but PNEWDT. */
+    fh_context("NFDIR = 3");
+    random_batch(&in, 2, 2e-3);
+    got = in;
+    {
+        double pb = FH_PNEWDT_IN;
+        FH_CHECK(batch_call(&got, 3, elastic, 7, 0.1, &pb) == IFL_STATUS_BAD_PARAMETER);
+        FH_EXACT(pb, FH_CUTBACK);
+        FH_CHECK(memcmp(&in, &got, sizeof in) == 0);
+    }
     /* A stick point and a slip point keep their closed forms: τ = k_s·Δγ, |τ| = μp. */
     fh_context("closed forms through the batch");
     random_batch(&in, 1, 1e-3);
@@ -187,6 +199,42 @@ int main(void)
         FH_NEAR(in.ddtddg[0], 3e4, 1e-14, 0.0);
         FH_EXACT(in.tau[1], 30.0);
         FH_NEAR(in.sfd[1], 30.0 * 4e-3, 1e-14, 0.0);
+    }
+    /* Every point at first contact, NFDIR = 2 (as the Fortran twin): odd points (1-based)
+     * stick with |dgam| = 0.5 gc, tau = k_s dgam and DDTDDG = k_s I; even points slip with
+     * |dgam| = 3 gc, |tau| = mu p along dgam, SFD = mu p (3 gc - gc). */
+    fh_context("closed forms at every point, NFDIR = 2");
+    random_batch(&in, 2, 1e-3);
+    for (i = 0; i < NP; i++) {
+        const int sticks = i % 2 == 0;
+        in.lm[i] = 0;
+        in.press[i] = 100.0;
+        in.dpress[i] = 0.0;
+        in.tau[i] = in.tau[i + LD] = 0.0;
+        in.statev[i] = in.statev[i + LD] = in.statev[i + 2 * LD] = 0.0;
+        in.dgam[i] = (sticks ? 0.3 : 1.8) * 1e-3;
+        in.dgam[i + LD] = (sticks ? -0.4 : 2.4) * 1e-3;
+    }
+    {
+        const double ks = 0.3 * 100.0 / 1e-3;
+        double pb = FH_PNEWDT_IN;
+        FH_CHECK(batch_call(&in, 2, elastic, 7, 0.1, &pb) == IFL_STATUS_OK);
+        for (i = 0; i < NP; i++) {
+            const double t1 = in.tau[i], t2 = in.tau[i + LD];
+            const double g1 = in.dgam[i], g2 = in.dgam[i + LD];
+            if (i % 2 == 0) {
+                FH_NEAR(t1, ks * g1, 1e-12, 0.0);
+                FH_NEAR(t2, ks * g2, 1e-12, 0.0);
+                FH_NEAR(in.ddtddg[i], ks, 1e-12, 0.0);
+                FH_EXACT(in.ddtddg[i + LD], 0.0);
+                FH_EXACT(in.ddtddg[i + 2 * LD], 0.0);
+                FH_NEAR(in.ddtddg[i + 3 * LD], ks, 1e-12, 0.0);
+            } else {
+                FH_NEAR(hypot(t1, t2), 30.0, 1e-12, 0.0);
+                FH_NEAR(t1 * g2 - t2 * g1, 0.0, 0.0, 1e-12 * 30.0 * 1e-3);
+                FH_NEAR(in.sfd[i], 30.0 * 2e-3, 1e-12, 0.0);
+            }
+        }
     }
     return fh_finish();
 }

@@ -347,3 +347,82 @@ C     A and B the same bit for bit (a NaN equals that same NaN).
       IB = TRANSFER(B, IB)
       SAMEB = IA .EQ. IB
       END
+
+C-----------------------------------------------------------------------
+C     SCENE(NDIR, IA, IB) for NDIR = 1 and 2 and each setting of two
+C     on/off switches IA and IB (0 or 1: the variants a harness
+C     crosses, e.g. exact stick and frozen rate), NDIR outermost, then
+C     IA: the twin of fh_each_nfdir_and_switches (c_tests/harness.h).
+C-----------------------------------------------------------------------
+      SUBROUTINE EACHSW(SCENE)
+      EXTERNAL SCENE
+      DO 30 NDIR = 1, 2
+        DO 20 IA = 0, 1
+          DO 10 IB = 0, 1
+            CALL SCENE(NDIR, IA, IB)
+   10     CONTINUE
+   20   CONTINUE
+   30 CONTINUE
+      END
+
+C-----------------------------------------------------------------------
+C     The slip tangent of the host point (fric_host.inc) along the unit
+C     direction E (NFDIR entries) against a central difference of
+C     FRIC's own TAU: E . DDTDDG . E at the current increment against
+C     E . (TAU(DGAM + HG E) - TAU(DGAM - HG E))/(2 HG), HG = 1e-9, to
+C     the absolute tolerance ATOL (K: the tally's number); the twin of
+C     fh_check_tangent_along (c_tests/harness.h).  Three calls that
+C     must succeed, each from the state on entry (LM, TAU, STATEV),
+C     which is put back afterwards with DGAM, so the host's history
+C     goes on as if they had not been made.
+C-----------------------------------------------------------------------
+      SUBROUTINE TANGNT(E, ATOL, K)
+      INCLUDE 'ABA_PARAM.INC'
+      INCLUDE 'fric_host.inc'
+      DIMENSION E(*),TAU0(MG),SV0(MSV),DG0(MG),TPLUS(MG),SGN(3)
+      DATA SGN /0.0D0, 1.0D0, -1.0D0/
+      HG = 1.0D-9
+      LM0 = LM
+      CALL COPYV(TAU, TAU0, MG)
+      CALL COPYV(DGAM, DG0, MG)
+      CALL COPYV(STATEV, SV0, MSV)
+      AN = 0.0D0
+      FD = 0.0D0
+C     Call 1 at DGAM (the tangent), 2 at DGAM + HG E, 3 at DGAM - HG E,
+C     each from the state on entry; IC = 4 only puts that state back.
+      DO 50 IC = 1, 4
+        LM = LM0
+        CALL COPYV(TAU0, TAU, MG)
+        CALL COPYV(DG0, DGAM, MG)
+        CALL COPYV(SV0, STATEV, MSV)
+        IF (IC .EQ. 4) GO TO 50
+        DO 30 I = 1, NFDIR
+          DGAM(I) = DG0(I) + SGN(IC)*HG*E(I)
+   30   CONTINUE
+        PNEWDT = BIG
+        CALL FRICH
+        CALL CHECK(PNEWDT .EQ. BIG, 'tangent: PNEWDT not lowered', K)
+        DO 40 I = 1, NFDIR
+          IF (IC .EQ. 1) THEN
+            DO 35 J = 1, NFDIR
+              AN = AN + E(I)*DDTDDG(I + (J-1)*NFDIR)*E(J)
+   35       CONTINUE
+          ELSE IF (IC .EQ. 2) THEN
+            TPLUS(I) = TAU(I)
+          ELSE
+            FD = FD + E(I)*(TPLUS(I) - TAU(I))/(2.0D0*HG)
+          END IF
+   40   CONTINUE
+   50 CONTINUE
+      CALL CHKNR(AN, FD, ATOL, 'tangent along the slip = central FD',
+     1 K)
+      END
+
+C     TO(1..N) = FROM(1..N).
+      SUBROUTINE COPYV(FROM, TO, N)
+      INCLUDE 'ABA_PARAM.INC'
+      DIMENSION FROM(N), TO(N)
+      DO 10 I = 1, N
+        TO(I) = FROM(I)
+   10 CONTINUE
+      END

@@ -12,6 +12,7 @@ module harness_fric_host
   implicit none
   private
   public :: fric_args, new_point, at_c_twin_point, fric_call, check_tails, sentinel, big, mg, msv
+  public :: each_nfdir_and_switches, switch_scene
 
   real(dp), parameter :: sentinel = -999.25_dp, big = 1.0e36_dp
   integer, parameter :: mg = 8, msv = 8
@@ -36,6 +37,13 @@ module harness_fric_host
     real(dp) :: chrlngth = 1.0_dp, props(20) = sentinel
     integer :: nprops = 0
   end type fric_args
+
+  ! A scene crossed by each_nfdir_and_switches: NFDIR and two switches a, b (0 off, 1 on).
+  abstract interface
+    subroutine switch_scene(nfdir, a, b)
+      integer, intent(in) :: nfdir, a, b
+    end subroutine switch_scene
+  end interface
 
 contains
 
@@ -109,4 +117,19 @@ contains
     call check(all(a%ddtddt(2*n + 1:) == sentinel), 'DDTDDT past 2 NFDIR untouched')
     call check(all(a%statev(a%nstatv + 1:) == sentinel), 'STATEV past NSTATV untouched')
   end subroutine check_tails
+
+  ! scene(nfdir, a, b) for NFDIR = 1 and 2 and each setting of two on/off switches a and b (the
+  ! variants a harness crosses, e.g. exact stick and frozen rate), NFDIR outermost, then a: the
+  ! twin of fh_each_nfdir_and_switches (c_tests/harness.h).
+  subroutine each_nfdir_and_switches(scene)
+    procedure(switch_scene) :: scene
+    integer :: nfdir, a, b
+    do nfdir = 1, 2
+      do a = 0, 1
+        do b = 0, 1
+          call scene(nfdir, a, b)
+        end do
+      end do
+    end do
+  end subroutine each_nfdir_and_switches
 end module harness_fric_host

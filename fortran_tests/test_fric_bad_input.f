@@ -17,8 +17,8 @@ C     names (old user code) checks that the hidden length is trusted.
 C
 C     The tally (TALLY0, CHECK, CHKNR, TALLYE: last line "<n> passed,
 C     <m> failed"), GUARD1, SENTAL, F1HOST, FRICH (the plain CALL FRIC
-C     of the host point), HOSTIN, F1PT, NANINF and GETMSG come from
-C     harness_f77.f, the host point (COMMON) from fric_host.inc.
+C     of the host point), HOSTIN, F1PT, NANINF, GETMSG and COPYV come
+C     from harness_f77.f, the host point (COMMON) from fric_host.inc.
 C
 C=======================================================================
       PROGRAM TFBAD
@@ -33,13 +33,22 @@ C
 C     Case 0 is the untouched baseline (it must succeed, so that every
 C     failure below comes from its one bad argument).  NFDIR = 0 and 3
 C     (cases 1, 2) are bad for either host dimension: run them once.
-      DO 20 ICASE = 0, 11
-        DO 10 NDIR = 1, 2
+C     Case 6 is the table of inputs that must be finite (INPUT 1..4:
+C     PRESS, DPRESS, DGAM(NFDIR), TAU(NFDIR)), each with NaN, +Inf and
+C     -Inf in turn (IVAL 1..3), as non_finite_inputs of the C twin.
+      DO 30 ICASE = 0, 19
+        DO 20 NDIR = 1, 2
           IF ((ICASE .EQ. 1 .OR. ICASE .EQ. 2) .AND. NDIR .EQ. 1)
-     1     GO TO 10
-          CALL BADONE(ICASE, NDIR, XNAN, XINF)
-   10   CONTINUE
-   20 CONTINUE
+     1     GO TO 20
+          IF (ICASE .NE. 6) CALL BADONE(ICASE, NDIR, 0, 0, XNAN, XINF)
+          IF (ICASE .NE. 6) GO TO 20
+          DO 15 INPUT = 1, 4
+            DO 10 IVAL = 1, 3
+              CALL BADONE(ICASE, NDIR, INPUT, IVAL, XNAN, XINF)
+   10       CONTINUE
+   15     CONTINUE
+   20   CONTINUE
+   30 CONTINUE
       CALL OLDUSR
       CALL TALLYE
       END
@@ -47,34 +56,63 @@ C     (cases 1, 2) are bad for either host dimension: run them once.
 C-----------------------------------------------------------------------
 C     One FRIC call from a good baseline (mu = 0.3, p = 100, gc = 1e-3,
 C     mid-slip state) with the bad argument of case ICASE:
-C        0 none (baseline)       6 PRESS = NaN
-C        1 NFDIR = 0             7 DGAM(1) = +Inf
-C        2 NFDIR = 3             8 NSTATV = 2
-C        3 NPROPS = 1            9 CHRLNGTH = 0 with PROPS(5) = 0
-C        4 PROPS(1) = 3         10 LM = 5 on entry
-C        5 PROPS(2) = mu < 0    11 PROPS(2) = mu < 0 from a host that
-C                                  had already asked for a smaller
-C                                  increment (PNEWDT = 0.1 on entry):
-C                                  PNEWDT is only ever lowered, so it
-C                                  stays 0.1
+C        0 none (baseline)        6 input INPUT of the table below
+C        1 NFDIR = 0                 = value IVAL of the table below
+C        2 NFDIR = 3              7 NSTATV = 2
+C        3 NPROPS = 1             8 CHRLNGTH = 0 with PROPS(5) = 0
+C        4 PROPS(1) = 3           9 LM = 5 on entry
+C        5 PROPS(2) = mu < 0     10 PROPS(2) = mu < 0 from a host that
+C                                   had already asked for a smaller
+C                                   increment (PNEWDT = 0.1 on entry):
+C                                   PNEWDT is only ever lowered, so it
+C                                   stays 0.1
+C       11 NPROPS = 0            16 CHRLNGTH < 0 with PROPS(5) = 0
+C       12 PROPS(1) = 1.5 (the   17 DTIME = NaN
+C          law code an integer)  18 STATEV(1) = NaN
+C       13 PROPS(3) = mu2 < 0    19 TAULM(1) = NaN with exact stick
+C       14 PROPS(7) = 5             held (PROPS(7) = 1, LM = 1 on
+C       15 PROPS(8) = 1e-3 with     entry: TAULM is read)
+C          NPROPS = 8
+C     (the C twin's catalogue).
+C     The inputs of case 6, each of which must be finite: PRESS, DPRESS,
+C     DGAM(NFDIR), TAU(NFDIR) (an array gets the value in its last
+C     component, so that a check of the first one only would miss it);
+C     the values: NaN, +Inf, -Inf.  The cause names the input (' PRESS'
+C     with its blank, so that DPRESS does not count) and says NaN for
+C     all three values.
 C-----------------------------------------------------------------------
-      SUBROUTINE BADONE(ICASE, NDIR, XNAN, XINF)
+      SUBROUTINE BADONE(ICASE, NDIR, INPUT, IVAL, XNAN, XINF)
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
       INCLUDE 'fric_host.inc'
-      DIMENSION TAUIN(MG),SVIN(MSV),DGIN(MG),PRIN(7)
-      CHARACTER*12 KEY(0:11)
+      DIMENSION TAUIN(MG),SVIN(MSV),DGIN(MG),PRIN(8),XNONF(3)
+      CHARACTER*16 KEY(0:19)
+      CHARACTER*12 NFKEY(4)
+      CHARACTER*4 NFVAL(3)
       CHARACTER*200 EXPECT
       CHARACTER*512 MSG
-      LOGICAL VALID
+      LOGICAL VALID,SAMEX
       DATA KEY /' ', 'NFDIR = 0', 'NFDIR = 3', 'NPROPS = 1',
-     1 'PROPS(1)', 'PROPS(2)', 'PRESS', 'DGAM', 'NSTATV = 2',
-     2 'CHRLNGTH', 'LM = 5', 'PROPS(2)'/
+     1 'PROPS(1)', 'PROPS(2)', ' ', 'NSTATV = 2',
+     2 'CHRLNGTH', 'LM = 5', 'PROPS(2)', 'NPROPS = 0',
+     3 'PROPS(1) = 1.5', 'PROPS(3)', 'PROPS(7)', 'PROPS(8)',
+     4 'CHRLNGTH', 'DTIME', 'STATEV', 'TAULM'/
+      DATA NFKEY /' PRESS', 'DPRESS', 'DGAM', 'TAU'/
+      DATA NFVAL /'NaN', '+Inf', '-Inf'/
+      XNONF(1) = XNAN
+      XNONF(2) = XINF
+      XNONF(3) = -XINF
 C
-      WRITE (CASE,'(A,I0,A,I0)') 'bad input case ', ICASE,
-     1 ' host NFDIR=', NDIR
+      IF (INPUT .EQ. 0) THEN
+        WRITE (CASE,'(A,I0,A,I0)') 'bad input case ', ICASE,
+     1   ' host NFDIR=', NDIR
+      ELSE
+        WRITE (CASE,'(4A,I0)') TRIM(ADJUSTL(NFKEY(INPUT))), ' = ',
+     1   TRIM(NFVAL(IVAL)), ', host NFDIR=', NDIR
+      END IF
       CALL F1HOST(' ')
-      WRITE (CINAME,'(A,I2.2,A,I1)') 'CP-BAD', ICASE, '-', NDIR
+      WRITE (CINAME,'(A,I2.2,A,2I1,A,I1)') 'CP-BAD', ICASE, '-',
+     1 INPUT, IVAL, '-', NDIR
       NFDIR = NDIR
       PROPS(6) = SENT
       PROPS(7) = SENT
@@ -96,31 +134,54 @@ C
       IF (ICASE .EQ. 2) NFDIR = 3
       IF (ICASE .EQ. 3) NPROPS = 1
       IF (ICASE .EQ. 4) PROPS(1) = 3.0D0
-      IF (ICASE .EQ. 5 .OR. ICASE .EQ. 11) PROPS(2) = -0.3D0
-      IF (ICASE .EQ. 6) PRESS = XNAN
-      IF (ICASE .EQ. 7) DGAM(1) = XINF
-      IF (ICASE .EQ. 8) NSTATV = 2
-      IF (ICASE .EQ. 9) THEN
+      IF (ICASE .EQ. 5 .OR. ICASE .EQ. 10) PROPS(2) = -0.3D0
+      IF (INPUT .EQ. 1) PRESS = XNONF(IVAL)
+      IF (INPUT .EQ. 2) DPRESS = XNONF(IVAL)
+      IF (INPUT .EQ. 3) DGAM(NDIR) = XNONF(IVAL)
+      IF (INPUT .EQ. 4) TAU(NDIR) = XNONF(IVAL)
+      IF (ICASE .EQ. 7) NSTATV = 2
+      IF (ICASE .EQ. 8) THEN
         CHRLNGTH = 0.0D0
         PROPS(5) = 0.0D0
       END IF
-      IF (ICASE .EQ. 10) LM = 5
+      IF (ICASE .EQ. 9) LM = 5
+      IF (ICASE .EQ. 11) NPROPS = 0
+      IF (ICASE .EQ. 12) PROPS(1) = 1.5D0
+      IF (ICASE .EQ. 13) PROPS(3) = -0.4D0
+C     Cases 14, 15 and 19 give PROPS(6..7) (and 8) a meaning.
+      IF (ICASE .EQ. 14 .OR. ICASE .EQ. 15 .OR. ICASE .EQ. 19) THEN
+        PROPS(6) = 0.0D0
+        PROPS(7) = 0.0D0
+        NPROPS = 7
+      END IF
+      IF (ICASE .EQ. 14) PROPS(7) = 5.0D0
+      IF (ICASE .EQ. 15) THEN
+        PROPS(8) = 1.0D-3
+        NPROPS = 8
+      END IF
+      IF (ICASE .EQ. 16) THEN
+        CHRLNGTH = -0.2D0
+        PROPS(5) = 0.0D0
+      END IF
+      IF (ICASE .EQ. 17) DTIME = XNAN
+      IF (ICASE .EQ. 18) STATEV(1) = XNAN
+      IF (ICASE .EQ. 19) THEN
+        PROPS(7) = 1.0D0
+        LM = 1
+        TAULM(1) = XNAN
+      END IF
       PNWANT = 0.25D0
-      IF (ICASE .EQ. 11) THEN
+      IF (ICASE .EQ. 10) THEN
         PNEWDT = 0.1D0
         PNWANT = 0.1D0
       END IF
       LMIN = LM
-      DO 12 I = 1, MG
-        TAUIN(I) = TAU(I)
-        DGIN(I) = DGAM(I)
-   12 CONTINUE
-      DO 13 I = 1, MSV
-        SVIN(I) = STATEV(I)
-   13 CONTINUE
-      DO 14 I = 1, 7
-        PRIN(I) = PROPS(I)
-   14 CONTINUE
+      PRSIN = PRESS
+      DPRIN = DPRESS
+      CALL COPYV(TAU, TAUIN, MG)
+      CALL COPYV(DGAM, DGIN, MG)
+      CALL COPYV(STATEV, SVIN, MSV)
+      CALL COPYV(PROPS, PRIN, 8)
 C
       CALL FRICH
 C
@@ -145,20 +206,18 @@ C
       CALL CHECK(LM .EQ. LMIN, 'LM unchanged', 0)
       CALL SAME(TAU, TAUIN, MG, 'TAU unchanged (all entries)')
       CALL SAME(STATEV, SVIN, MSV, 'STATEV unchanged (all entries)')
-      CALL SAME(PROPS, PRIN, 7, 'PROPS not written')
-      IF (ICASE .EQ. 7) THEN
-        CALL CHECK(DGAM(1) .EQ. XINF, 'DGAM not written', 0)
-        CALL SAME(DGAM(2), DGIN(2), MG-1, 'DGAM not written')
+      CALL SAME(PROPS, PRIN, 8, 'PROPS not written')
+      CALL SAME(DGAM, DGIN, MG, 'DGAM not written')
+      IF (ICASE .EQ. 19) THEN
+        CALL CHECK(TAULM(1) .NE. TAULM(1), 'TAULM (NaN) not written', 0)
+        CALL GUARD1(TAULM, 2, MG, 'TAULM not written', 0)
       ELSE
-        CALL SAME(DGAM, DGIN, MG, 'DGAM not written')
+        CALL GUARD1(TAULM, 1, MG, 'TAULM not written', 0)
       END IF
-      CALL GUARD1(TAULM, 1, MG, 'TAULM not written', 0)
+      CALL CHECK(SED .EQ. SENT, 'SED not written', 0)
       CALL ZEROS(SLIP, MG, 'SLIP not written')
-      IF (ICASE .EQ. 6) THEN
-        CALL CHECK(PRESS .NE. PRESS, 'PRESS (NaN) not written', 0)
-      ELSE
-        CALL CHECK(PRESS .EQ. 100.0D0, 'PRESS not written', 0)
-      END IF
+      CALL CHECK(SAMEX(PRESS, PRSIN), 'PRESS not written', 0)
+      CALL CHECK(SAMEX(DPRESS, DPRIN), 'DPRESS not written', 0)
       VALID = NFDIR .EQ. 1 .OR. NFDIR .EQ. 2
       IF (VALID) THEN
         CALL ZEROS(DDTDDG, NFDIR*NFDIR, 'DDTDDG zeroed')
@@ -187,8 +246,16 @@ C
      1 'message length sensible', 0)
       CALL CHECK(INDEX(MSG(1:L), EXPECT(1:LE)) .EQ. 1,
      1 'message names FRIC, the interaction and the point', 0)
-      CALL CHECK(INDEX(MSG(LE+1:L), TRIM(KEY(ICASE))) .GT. 0,
-     1 'message names the bad argument', 0)
+      IF (INPUT .EQ. 0) THEN
+        CALL CHECK(INDEX(MSG(LE+1:L), TRIM(KEY(ICASE))) .GT. 0,
+     1   'message names the bad argument', 0)
+      ELSE
+C       From LE, the blank before the cause: ' PRESS' may open it.
+        CALL CHECK(INDEX(MSG(LE:L), TRIM(NFKEY(INPUT))) .GT. 0,
+     1   'message names the non-finite input', 0)
+        CALL CHECK(INDEX(MSG(LE:L), 'NaN') .GT. 0,
+     1   'message says NaN (for NaN and both Infs)', 0)
+      END IF
       IF (NFAIL .GT. NF0 .AND. NFAIL .LE. 40) WRITE (*,'(2A)')
      1 '   message: ', MSG(1:MIN(L,200))
       END
@@ -273,16 +340,23 @@ C       gc = 1e-3: tau = k_s DGAM with k_s = mu p/gc = 3e4.
    40 CONTINUE
       END
 
+C     A(1..N) the same as B(1..N), a NaN the same as a NaN.
       SUBROUTINE SAME(A, B, N, WHAT)
       INCLUDE 'ABA_PARAM.INC'
       DIMENSION A(N), B(N)
       CHARACTER*(*) WHAT
-      LOGICAL OK
+      LOGICAL OK,SAMEX
       OK = .TRUE.
       DO 10 I = 1, N
-        IF (A(I) .NE. B(I)) OK = .FALSE.
+        IF (.NOT. SAMEX(A(I), B(I))) OK = .FALSE.
    10 CONTINUE
       CALL CHECK(OK, WHAT, 0)
+      END
+
+C     A and B equal, or both NaN (an input left as the host set it).
+      LOGICAL FUNCTION SAMEX(A, B)
+      INCLUDE 'ABA_PARAM.INC'
+      SAMEX = A .EQ. B .OR. (A .NE. A .AND. B .NE. B)
       END
 
       SUBROUTINE ZEROS(A, N, WHAT)

@@ -9,10 +9,13 @@
 !   rows past NPOINTS are never written.
 ! - Closed forms at first contact: stick tau = (mu p/gc) dgam, DDTDDG = mu p/gc on the diagonal;
 !   slip |tau| = mu p.
-! - A point with a NaN input gets FRIC's failure outputs (DDTDDG, DDTDDP, DSLIP, SFD zero; LM,
-!   TAU, STATEV unchanged), the others are still computed, the status is IFL_STATUS_BAD_INPUT
-!   and PNEWDT is lowered to 0.25; NFDIR = 3 is refused as a whole (IFL_STATUS_BAD_PARAMETER,
-!   nothing written but PNEWDT).
+! - A point with a NaN DGAM and one with an infinite PRESS get FRIC's failure outputs (DDTDDG,
+!   DDTDDP, DSLIP, SFD zero; LM, TAU, STATEV unchanged; the same as FRIC per point), the others
+!   are still computed, the status is IFL_STATUS_BAD_INPUT, PNEWDT is lowered to 0.25 and the
+!   message names ifl_fric_batch and the point (0-based, as C counts); NFDIR = 3 is refused as a
+!   whole (IFL_STATUS_BAD_PARAMETER, nothing written but PNEWDT).
+! The points come from the harnesses' MINSTD generator (harness_threads: uniform) with the C
+! twin's seed and sizes, so both draw the same batches.
 !
 ! Last line printed: "<n> passed, <m> failed"; ERROR STOP on a failure.
 
@@ -40,12 +43,15 @@ module batch_api
 end module batch_api
 
 module batch_points
+  use, intrinsic :: iso_fortran_env, only: int64
   use harness_tally, only: dp, finish, scene, check
-  use harness_fric_host, only: fric_args, new_point, fric_call
+  use harness_threads, only: lehmer_uniform => uniform
+  use harness_fric_host, only: fric_args, new_point, fric_call, check_tails
   implicit none
-  integer, parameter :: np = 33, ld = 37, nsv = 3
+  integer, parameter :: np = 500, ld = 512, nsv = 3
   real(dp), parameter :: unset = 12345.678_dp, big = 1.0e36_dp
-  real(dp) :: seed = 4711.0_dp
+  ! The generator's state: one stream from a fixed seed, the C twin's.
+  integer(int64) :: rng_state = 20240601_int64
 
   ! One batch: every array LD rows, the rows past NP are padding.
   type :: batch
@@ -58,12 +64,10 @@ module batch_points
 
 contains
 
-  ! Park-Miller minimal standard generator, exact in double precision: a value in [a, b).
-  function uniform(a, b) result(x)
+  ! A draw in [a, b) from the stream.
+  real(dp) function uniform(a, b)
     real(dp), intent(in) :: a, b
-    real(dp) :: x
-    seed = mod(seed*16807.0_dp, 2147483647.0_dp)
-    x = a + (b - a)*seed/2147483647.0_dp
+    uniform = lehmer_uniform(rng_state, a, b)
   end function uniform
 
   subroutine random_batch(b, nfdir, gc)
@@ -118,11 +122,12 @@ contains
       a%dslip(1:n) = b%dslip(i, 1:n)
       a%ddtddg(1:n2) = b%ddtddg(i, 1:n2)
       a%statev(1:nsv) = b%statev(i, :)
-      a%ddtddt = 0
+      a%ddtddt(1:2*n) = 0
       a%press = b%press(i)
       a%dpress = b%dpress(i)
       a%chrlngth = b%chr(i)
       call fric_call(a, keep_outputs=.true.)
+      call check_tails(a)
       pnewdt = min(pnewdt, a%pnewdt)
       b%lm(i) = a%lm
       b%sed(i) = a%sed
@@ -167,8 +172,10 @@ contains
 end module batch_points
 
 program test_fric_batch
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
   use batch_api
   use batch_points
+  use harness_tally, only: quiet_nan, last_error, check_contains, ifl_clear_error
   implicit none
   real(dp), parameter :: mu = 0.3_dp, gc = 1.0e-3_dp
   real(dp) :: variants(7, 3), pw, pb, ks
@@ -226,36 +233,37 @@ program test_fric_batch
                'slip: |tau| = mu p')
     call check(abs(got%tau(i, 1)*got%dgam(i, 2) - got%tau(i, 2)*got%dgam(i, 1)) &
                <= 1.0e-12_dp*30*gc, 'slip: tau along dgam')
+    ! From tau = 0 the first gc of |dgam| = 3 gc is elastic: SFD = mu p (3 gc - gc).
+    call check(abs(got%sfd(i) - mu*100*2*gc) <= 1.0e-12_dp*mu*100*2*gc, 'slip: SFD = mu p 2 gc')
   end do
 
-  ! A NaN input in point 5: FRIC's failure outputs there, the others computed.
-  scene = 'NaN in point 5'
-  call random_batch(in, 2, 2.0e-3_dp)
-  in%lm(1:np) = 0
+  ! Bad input at two points (C's points 3 and 99, 0-based): FRIC's failure outputs there, the
+  ! others computed.
+  scene = 'NaN DGAM at point 4, infinite PRESS at point 100'
+  call random_batch(in, 2, gc)
+  in%lm(4) = 0
+  in%dgam(4, 1) = quiet_nan()
+  in%lm(100) = 0
+  in%press(100) = ieee_value(1.0_dp, ieee_positive_inf)
   want = in
   got = in
   pw = per_point(want, 2, variants(:, 1), 0.1_dp)
-  in%press(5) = ieee_nan()
-  got%press(5) = in%press(5)
   pb = big
+  call ifl_clear_error()
   status = batch_call(got, 2, variants(:, 1), 0.1_dp, pb)
   call check(status == ifl_status_bad_input, 'status BAD_INPUT')
+  call check(pw == 0.25_dp, 'FRIC per point: PNEWDT lowered to 0.25')
   call check(pb == 0.25_dp, 'PNEWDT lowered to 0.25')
-  call check(all(got%ddtddg(5, :) == 0) .and. all(got%ddtddp(5, 1:2) == 0) &
-             .and. all(got%dslip(5, 1:2) == 0) .and. got%sfd(5) == 0, &
-             'failed point: tangents, DSLIP, SFD zero')
-  call check(all(got%tau(5, :) == in%tau(5, :)) .and. all(got%statev(5, :) == in%statev(5, :)) &
-             .and. got%lm(5) == in%lm(5), 'failed point: TAU, STATEV, LM unchanged')
-  ! The other points as FRIC gives them (point 5 copied from the batch for the comparison).
-  want%tau(5, :) = got%tau(5, :)
-  want%ddtddg(5, :) = got%ddtddg(5, :)
-  want%ddtddp(5, :) = got%ddtddp(5, :)
-  want%dslip(5, :) = got%dslip(5, :)
-  want%sed(5) = got%sed(5)
-  want%sfd(5) = got%sfd(5)
-  want%statev(5, :) = got%statev(5, :)
-  want%lm(5) = got%lm(5)
-  call check(same(want, got), 'other points equal FRIC per point')
+  call check(same(want, got), 'every output equals FRIC per point, the failed points too')
+  do i = 4, 100, 96
+    call check(all(got%ddtddg(i, :) == 0) .and. all(got%ddtddp(i, 1:2) == 0) &
+               .and. all(got%dslip(i, 1:2) == 0) .and. got%sfd(i) == 0, &
+               'failed point: tangents, DSLIP, SFD zero')
+    call check(all(got%tau(i, :) == in%tau(i, :)) .and. all(got%statev(i, :) == in%statev(i, :)) &
+               .and. got%lm(i) == in%lm(i), 'failed point: TAU, STATEV, LM unchanged')
+  end do
+  call check_contains(last_error(), 'ifl_fric_batch')
+  call check_contains(last_error(), 'batch point 99')
 
   ! A fault of the whole batch: nothing written but PNEWDT.
   scene = 'NFDIR = 3'
@@ -268,13 +276,5 @@ program test_fric_batch
   call check(same(in, got), 'nothing written')
 
   call finish()
-
-contains
-
-  function ieee_nan() result(x)
-    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-    real(dp) :: x
-    x = ieee_value(x, ieee_quiet_nan)
-  end function ieee_nan
 
 end program test_fric_batch

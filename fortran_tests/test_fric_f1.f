@@ -15,24 +15,26 @@ C     Output arrays are declared longer than NFDIR (STATEV longer than
 C     NSTATV); their tails hold a sentinel that must survive each call.
 C
 C     TALLY0, CHECK, CHKNR, TALLYE (the tally and its last line), GUARD1,
-C     SENTAL, SENTOU, HOSTPT, F1HOST and FRICH come from harness_f77.f,
+C     SENTAL, SENTOU, HOSTPT, F1HOST, FRICH and EACHSW come from
+C     harness_f77.f,
 C     the host point (COMMON) from fric_host.inc.
 C
 C=======================================================================
       PROGRAM TFRIC1
       INCLUDE 'ABA_PARAM.INC'
       COMMON /TALLY/ NPASS,NFAIL
+      EXTERNAL PULL
       CALL TALLY0
-C     NDIR: NFDIR = 1 (2-D) and 2 (3-D).  IGSRC = 1: gamma_crit from
-C     PROPS(5); IGSRC = 2: the default 0.005*CHRLNGTH.  ICAP = 0: no
-C     shear limit; ICAP = 1: tau_max = 20 < mu p = 30.
-      DO 30 NDIR = 1, 2
-        DO 20 IGSRC = 1, 2
-          DO 10 ICAP = 0, 1
-            CALL PULL(NDIR, IGSRC, ICAP)
-   10     CONTINUE
-   20   CONTINUE
-   30 CONTINUE
+C     NDIR: NFDIR = 1 (2-D) and 2 (3-D).  IGSRC = 0: gamma_crit from
+C     PROPS(5); IGSRC = 1: the default 0.005*CHRLNGTH.  ICAP = 0: no
+C     shear limit; ICAP = 1: tau_max = 20 < mu p = 30.  (EACHSW.)
+C     IGSRC = 2, gamma_crit = PROPS(6) x CHRLNGTH, the C twin's third
+C     source, for both NFDIR and both ICAP.
+      CALL EACHSW(PULL)
+      DO 10 NDIR = 1, 2
+        CALL PULL(NDIR, 2, 0)
+        CALL PULL(NDIR, 2, 1)
+   10 CONTINUE
       CALL LMTWO
       CALL ROUGH
       CALL TALLYE
@@ -74,7 +76,7 @@ C
       PROPS(2) = XMU
       PROPS(3) = 0.0D0
       PROPS(4) = TMAX
-      IF (IGSRC .EQ. 1) THEN
+      IF (IGSRC .EQ. 0) THEN
 C       Absolute gamma_crit, PROPS(6..7) omitted (NPROPS = 5).  They
 C       hold an invalid sentinel: reading past NPROPS would fail.
 C       CHRLNGTH = 1 would give 0.005 /= gc if it were used.
@@ -83,13 +85,21 @@ C       CHRLNGTH = 1 would give 0.005 /= gc if it were used.
         PROPS(7) = SENT
         NPROPS = 5
         CHRLNGTH = 1.0D0
-      ELSE
+      ELSE IF (IGSRC .EQ. 1) THEN
 C       gamma_crit = 0.005 * CHRLNGTH = 0.005 * 0.2 = gc.
         PROPS(5) = 0.0D0
         PROPS(6) = 0.0D0
         PROPS(7) = 0.0D0
         NPROPS = 7
         CHRLNGTH = 0.2D0
+      ELSE
+C       gamma_crit = PROPS(6) * CHRLNGTH = 0.01 * 0.1 = gc (the
+C       default tolerance would give 0.005 * 0.1 /= gc).
+        PROPS(5) = 0.0D0
+        PROPS(6) = 0.01D0
+        PROPS(7) = 0.0D0
+        NPROPS = 7
+        CHRLNGTH = 0.1D0
       END IF
 C     tau_crit = min(mu p, tau_max) and d tau_crit/dp (0 on the cap).
       TAUC = XMU*P

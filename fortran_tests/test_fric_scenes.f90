@@ -1,7 +1,8 @@
-! test_fric_scenes.f90 -- scenes F2 (circle), F5 (pressure ramp while sliding) and F1 with exact
-! stick (a spring host) through FRIC, from free-form Fortran. FRIC is called the way a user's own
-! Fortran 90 host would: a plain `call fric(...)` with the 39 Abaqus arguments, no interface
-! block, no ISO_C_BINDING.
+! test_fric_scenes.f90 -- scenes F2 (circle), F3 (friction ellipse), F5 (pressure ramp while
+! sliding; also with a pressure-dependent mu), tangential damping and F1 with exact stick (a
+! spring host) through FRIC, from free-form Fortran. FRIC is called the way a user's own Fortran
+! 90 host would: a plain `call fric(...)` with the 39 Abaqus arguments, no interface block, no
+! ISO_C_BINDING.
 !
 ! Every assertion is a closed form (shared/design/scenes.md; the law in the common brief), a
 ! central finite difference of TAU from repeated FRIC calls, or an invariant (SFD >= 0, guard
@@ -168,6 +169,168 @@ contains
     call check_near(a%statev(1), sumsfd/tauc, 1.0e-10_dp*a%statev(1), &
                     'STATEV(1) = sum SFD / (mu p) (every slip at |tau| = mu p)', n*nturns)
   end subroutine scene_f2
+
+  ! Scene F3, the friction ellipse, the twin of c_tests/test_fric_f3.c: NFDIR = 2, mu1 = 0.5
+  ! (PROPS(2)), mu2 = 0.2 (PROPS(3)), p = 100, gc = 1e-3, steady slip DGAM = 0.3 gc d per
+  ! increment along d at twelve angles. Once sliding the stress is on the ellipse
+  ! (tau1/mu1)^2 + (tau2/mu2)^2 = p^2 and parallel to (mu1^2 d1, mu2^2 d2), same sense; the
+  ! tangents against central differences. In stick k_i = (mu_i/mubar)^2 kbar_s with
+  ! mubar = sqrt((mu1^2 + mu2^2)/2), kbar_s = mubar p/gc, and SED = sum tau_i^2/(2 k_i).
+  subroutine scene_f3()
+    real(dp), parameter :: mu1 = 0.5_dp, mu2 = 0.2_dp, p = 100.0_dp
+    real(dp), parameter :: mbar2 = (mu1**2 + mu2**2)/2
+    type(fric_args) :: a, a0
+    real(dp) :: angle, d(2), w(2), kbar, k1, k2
+    integer :: j, inc
+    kbar = sqrt(mbar2)*p/gc
+    do j = 0, 11
+      angle = j*pi/6 + 0.1_dp
+      d = [cos(angle), sin(angle)]
+      w = [mu1**2*d(1), mu2**2*d(2)]
+      write (scene, '(a,f6.3)') 'F3 ellipse, angle ', angle
+      a = new_point(2, [1.0_dp, mu1, mu2, 0.0_dp, gc], 'F3-ELLIPSE')
+      a%press = p
+      a%dpress = p
+      do inc = 1, 60
+        a%dgam(1:2) = 0.3_dp*gc*d
+        a0 = a
+        call fric_call(a)
+        call check(a%lm == 0, 'LM = 0', inc)
+        call check_call(a, inc)
+        a%dpress = 0
+      end do
+      call check_near(hypot(a%tau(1)/mu1, a%tau(2)/mu2), p, 1.0e-13_dp*p, &
+                      'on the ellipse (tau1/mu1)^2 + (tau2/mu2)^2 = p^2', j)
+      call check_near(a%tau(1)*w(2) - a%tau(2)*w(1), 0.0_dp, 1.0e-11_dp*p*mu1**2, &
+                      'tau parallel to (mu1^2 d1, mu2^2 d2)', j)
+      call check(a%tau(1)*w(1) + a%tau(2)*w(2) > 0, 'tau in the sense of (mu1^2 d1, mu2^2 d2)', j)
+      call check(a%statev(3) == 1, 'STATEV(3) = 1 (slip)', j)
+      call check(a%sfd > 0, 'SFD > 0 in slip', j)
+      call check_tangents_fd(a0, a, gc, kbar, mu1, j)
+    end do
+
+    scene = 'F3 stick stiffnesses'
+    k1 = mu1**2/mbar2*kbar
+    k2 = mu2**2/mbar2*kbar
+    a = new_point(2, [1.0_dp, mu1, mu2, 0.0_dp, gc], 'F3-ELLIPSE')
+    a%press = p
+    a%dpress = p
+    a%dgam(1:2) = [1.0e-5_dp, -2.0e-5_dp]
+    call fric_call(a)
+    call check(a%lm == 0, 'LM = 0', 0)
+    call check_call(a, 0)
+    call check_near(a%ddtddg(1), k1, 1.0e-13_dp*k1, 'stick k1 = (mu1/mubar)^2 kbar_s', 0)
+    call check_near(a%ddtddg(4), k2, 1.0e-13_dp*k2, 'stick k2 = (mu2/mubar)^2 kbar_s', 0)
+    call check(a%ddtddg(2) == 0 .and. a%ddtddg(3) == 0, 'stick DDTDDG diagonal', 0)
+    call check_near(a%tau(1), k1*1.0e-5_dp, 1.0e-13_dp*k1*1.0e-5_dp, 'stick tau1 = k1 DGAM(1)', 0)
+    call check_near(a%tau(2), -k2*2.0e-5_dp, 1.0e-13_dp*k2*2.0e-5_dp, 'stick tau2 = k2 DGAM(2)', 0)
+    call check_near(a%sed, a%tau(1)**2/(2*k1) + a%tau(2)**2/(2*k2), &
+                    1.0e-13_dp*(a%tau(1)**2/(2*k1) + a%tau(2)**2/(2*k2)), &
+                    'SED = sum tau_i^2/(2 k_i)', 0)
+  end subroutine scene_f3
+
+  ! Law 1 with mu_c and gc in the first n entries of PROPS, every other one 0 (props_coulomb of
+  ! c_tests/test_fric_f4.c).
+  function props_coulomb(mu_c, n) result(props)
+    real(dp), intent(in) :: mu_c
+    integer, intent(in) :: n
+    real(dp) :: props(n)
+    include 'props_index.inc'
+    props = 0
+    props(kpc_code) = law_coulomb
+    props(kpc_mu) = mu_c
+    props(kpc_gamma_crit) = gc
+  end function props_coulomb
+
+  ! Tangential damping, the twin of damping in c_tests/test_fric_f4.c: mu = 0.6, gc = 1e-3,
+  ! p = 50, DTIME = 0.01, c0 = PROPS(17) = 2, NSTATV = 3 + NFDIR (the damping stress kept in
+  ! STATEV(4..)). First stick increment DGAM(1) = 1e-5: tau = (k_s + c0/DTIME) DGAM, the same
+  ! tangent, STATEV(4) = c0/DTIME DGAM; steady sliding at v = 0.4 along d:
+  ! |tau| = mu p + c0 v and SFD = (mu p + c0 v) v DTIME.
+  subroutine scene_damping(nfdir)
+    integer, intent(in) :: nfdir
+    include 'props_index.inc'
+    real(dp), parameter :: mu_s = 0.6_dp, p = 50.0_dp, dt = 0.01_dp, c0 = 2.0_dp, v = 0.4_dp
+    real(dp) :: props(kpc_n), d(2), ks, teq
+    type(fric_args) :: a
+    integer :: k
+    write (scene, '(a,i0)') 'damping, first stick increment, NFDIR=', nfdir
+    props = props_coulomb(mu_s, kpc_n)
+    props(kpc_damping) = c0
+    ks = mu_s*p/gc
+    d = [1.0_dp, 0.0_dp]
+    if (nfdir == 2) d = [0.6_dp, 0.8_dp]
+    a = new_point(nfdir, props, 'F4-DAMPING')
+    a%nstatv = 3 + nfdir
+    a%statev(4:3 + nfdir) = 0
+    a%press = p
+    a%dpress = p
+    a%dtime = dt
+    a%dgam(1:nfdir) = 0
+    a%dgam(1) = 1.0e-5_dp
+    call fric_call(a)
+    call check_call(a, 1)
+    call check_near(a%tau(1), (ks + c0/dt)*1.0e-5_dp, 1.0e-13_dp*(ks + c0/dt)*1.0e-5_dp, &
+                    'stick tau = (k_s + c0/DTIME) DGAM', 1)
+    call check_near(a%ddtddg(1), ks + c0/dt, 1.0e-13_dp*(ks + c0/dt), &
+                    'stick DDTDDG(1,1) = k_s + c0/DTIME', 1)
+    call check_near(a%statev(4), c0/dt*1.0e-5_dp, 1.0e-13_dp*c0/dt*1.0e-5_dp, &
+                    'STATEV(4) = damping stress c0/DTIME DGAM', 1)
+    write (scene, '(a,i0)') 'damping, steady sliding at v = 0.4, NFDIR=', nfdir
+    a%dpress = 0
+    do k = 1, 50
+      a%dgam(1:nfdir) = v*dt*d(1:nfdir)
+      call fric_call(a)
+      call check_call(a, k)
+    end do
+    teq = sqrt(sum(a%tau(1:nfdir)**2))
+    call check_near(teq, mu_s*p + c0*v, 1.0e-12_dp*(mu_s*p + c0*v), '|tau| = mu p + c0 v', 50)
+    call check_near(a%sfd, (mu_s*p + c0*v)*v*dt, 1.0e-10_dp*(mu_s*p + c0*v)*v*dt, &
+                    'SFD = (mu p + c0 v) v DTIME', 50)
+  end subroutine scene_damping
+
+  ! F5 with a pressure-dependent mu, the twin of f5_pressure_mu in c_tests/test_fric_f4.c:
+  ! mu(p) = mu0/(1 + p/p_ref) (mu0 = 0.5, p_ref = PROPS(11) = 100), tau_max = 30, gc = 1e-3,
+  ! p = 2.5, 4.5, ..., 400.5 while sliding 0.5 gc per increment along d: after five increments
+  ! tau = min(mu(p) p, tau_max) d and DDTDDP = d(mu p)/dp d = mu0/(1 + p/p_ref)^2 d, 0 on the cap.
+  subroutine scene_f5_pressure_mu(nfdir)
+    integer, intent(in) :: nfdir
+    include 'props_index.inc'
+    real(dp), parameter :: mu0 = 0.5_dp, p_ref = 100.0_dp, tau_max = 30.0_dp
+    real(dp) :: props(kpc_p_ref), d(2), p, p_before, mu_p, tc, slope
+    type(fric_args) :: a
+    integer :: k, ia
+    write (scene, '(a,i0)') 'F5 pressure-dependent mu, NFDIR=', nfdir
+    props = props_coulomb(mu0, kpc_p_ref)
+    props(kpc_tau_max) = tau_max
+    props(kpc_p_ref) = p_ref
+    d = [1.0_dp, 0.0_dp]
+    if (nfdir == 2) d = [0.8_dp, -0.6_dp]
+    a = new_point(nfdir, props, 'F5-MU-OF-P')
+    p_before = 0
+    do k = 1, 200
+      ! Never exactly on the cap mu(p) p = 30 (p = 150).
+      p = 2.0_dp*k + 0.5_dp
+      mu_p = mu0*p/(1 + p/p_ref)
+      a%press = p
+      a%dpress = p - p_before
+      p_before = p
+      a%dgam(1:nfdir) = 0.5_dp*gc*d(1:nfdir)
+      call fric_call(a)
+      call check_call(a, k)
+      if (k > 5) then
+        tc = min(mu_p, tau_max)
+        slope = 0
+        if (mu_p < tau_max) slope = mu0/(1 + p/p_ref)**2
+        do ia = 1, nfdir
+          call check_near(a%tau(ia), tc*d(ia), 1.0e-12_dp*tc + 1.0e-13_dp, &
+                          'tau = min(mu(p) p, tau_max) d', k)
+          call check_near(a%ddtddp(ia), slope*d(ia), 1.0e-14_dp, &
+                          'DDTDDP = d(mu(p) p)/dp d, 0 on the cap', k)
+        end do
+      end if
+    end do
+  end subroutine scene_f5_pressure_mu
 
   ! Scene F5, pressure ramp while sliding, along a fixed direction e (NFDIR = 1; NFDIR = 2 at
   ! -40 degrees). Phase 1: first contact at p = 40 (DPRESS = 40 on the first increment, so the
@@ -413,10 +576,13 @@ program test_fric_scenes
   scene = 'F2 convergence'
   call check(err1000/err5000 > 4.5_dp .and. err1000/err5000 < 5.5_dp, &
              'lag error first order in the step: err(1000)/err(5000) ~ 5', 0)
+  call scene_f3()
   do nfdir = 1, 2
     call scene_f5(nfdir, 0.0_dp)
     call scene_f5(nfdir, 20.0_dp)
     call scene_spring(nfdir)
+    call scene_damping(nfdir)
+    call scene_f5_pressure_mu(nfdir)
   end do
   call finish()
 end program test_fric_scenes

@@ -30,15 +30,9 @@ program test_fric_steady
 
   ! The FRIC arguments of one contact point (module harness_fric_host).
   type(fric_args) :: h
-  integer :: nd, variant, decay
 
-  do nd = 1, 2
-    do variant = 0, 1
-      do decay = 0, 1
-        call run_scene(nd, variant, decay)
-      end do
-    end do
-  end do
+  ! NFDIR, PROPS(16) = 0 / 1 (seed 000's / seed 003's rate_crit), constant / decaying mu.
+  call each_nfdir_and_switches(run_scene)
   call bad_input()
   call finish()
 
@@ -185,9 +179,18 @@ contains
     scene = 'steady transport: PROPS(16) = 2'
     call point(2, 2, 0)
     call refused('PROPS(16) = 2 must select')
+    scene = 'steady transport: PROPS(16) = 0.5'
+    call point(2, 0, 0)
+    h%props(kpc_viscous_reference) = 0.5_dp
+    call refused('PROPS(16) = 0.5 must select')
     scene = 'steady transport: omega = 0'
     call point(2, 1, 0)
     h%props(kpc_omega) = 0
     call refused('PROPS(14)')
+    ! On the axis R = 0, so seed 003's rate_crit F_f omega R is 0.
+    scene = 'steady transport: a point on the axis, seed 003'
+    call point(2, 1, 0)
+    h%coords(1:2) = 0
+    call refused('F_f·ω·R must be > 0')
   end subroutine bad_input
 end program test_fric_steady

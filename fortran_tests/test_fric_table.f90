@@ -78,8 +78,7 @@ contains
 
   ! Scene F4: velocity steps, 40 increments at each rate, then the closed forms.
   subroutine steps(nfdir, exact, frozen)
-    integer, intent(in) :: nfdir
-    logical, intent(in) :: exact, frozen
+    integer, intent(in) :: nfdir, exact, frozen
     real(dp), parameter :: rates(5) = [0.05_dp, 0.5_dp, 0.2_dp, 1.5_dp, 0.8_dp]
     real(dp), parameter :: hg = 1.0e-9_dp
     type(fric_args) :: h, base, plus, minus
@@ -87,12 +86,12 @@ contains
     integer :: s, k, ia, ib
     d = [1.0_dp, 0.0_dp]
     if (nfdir == 2) d = [0.6_dp, 0.8_dp]
-    h = table_point(nfdir, props_table(exact, frozen))
+    h = table_point(nfdir, props_table(exact == 1, frozen == 1))
     h%press = p
     h%dpress = p
     do s = 1, size(rates)
       v = rates(s)
-      write (scene, '(a,i0,a,l1,a,l1,a,g0.3)') 'F4 table NFDIR=', nfdir, ' exact=', exact, &
+      write (scene, '(a,i0,a,i0,a,i0,a,g0.3)') 'F4 table NFDIR=', nfdir, ' exact=', exact, &
         ' frozen=', frozen, ' v=', v
       do k = 1, 40
         h%dgam(1:nfdir) = v*dt*d(1:nfdir)
@@ -103,7 +102,7 @@ contains
       call check_near(sqrt(sum(h%tau(1:nfdir)**2)), mu_tab(v)*p, 1.0e-11_dp, 0.0_dp, &
                       'steady |tau| = mu_tab(v) p')
       call check_near(h%statev(2), v, 1.0e-11_dp, 0.0_dp, 'STATEV(2) = v')
-      if (.not. exact) then
+      if (exact == 0) then
         ! d tau/d DGAM along the slip direction against a central difference of TAU, all three
         ! calls from the same steady start.
         base = h
@@ -199,7 +198,7 @@ program test_fric_table
   character(len=16) :: mode
   character(len=1024) :: config
   character(len=1200) :: where
-  integer :: nfdir, exact, frozen, clen
+  integer :: clen
 
   mode = 'good'
   if (command_argument_count() >= 1) call get_command_argument(1, mode)
@@ -213,13 +212,7 @@ program test_fric_table
     h = table_point(2, props_table(.false., .false.))
     call refused(h, [character(len=1200) :: where, 'slip rates must be strictly increasing'])
   else
-    do nfdir = 1, 2
-      do exact = 0, 1
-        do frozen = 0, 1
-          call steps(nfdir, exact == 1, frozen == 1)
-        end do
-      end do
-    end do
+    call each_nfdir_and_switches(steps)
     call coef_brake()
     scene = 'interaction without a table'
     h = table_point(2, props_table(.false., .false.))

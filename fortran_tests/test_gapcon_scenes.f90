@@ -29,6 +29,10 @@ module gapcon_host
   ! Radiation of RADK, RADC, GASRAD; gas gap of GASRAD.
   real(dp), parameter :: f_view = 0.8_dp, sigma_sb = 5.670374419e-8_dp
   real(dp), parameter :: k_gas = 0.026_dp, g0 = 1.0e-5_dp, min_gap = 1.0e-6_dp
+  ! T1GAS (gas gap) and T1CMY, T1CMY_C1 (cmy with c = 1.25 and 1), as c_gapcon_t1's.
+  real(dp), parameter :: t1_k_gas = 0.03_dp, t1_g0 = 2.0e-5_dp, t1_min_gap = 1.0e-5_dp
+  real(dp), parameter :: cmy_ks = 2*k_a*k_b/(k_a + k_b), cmy_m = 0.1_dp, cmy_sigma = 2.0e-6_dp
+  real(dp), parameter :: cmy_hc = 1.5e9_dp
   real(dp), parameter :: kelvin_zero = 0.0_dp, celsius_zero = -273.15_dp
   real(dp), parameter :: sentinel = -999.25_dp
   integer :: npoint = 0
@@ -328,6 +332,71 @@ contains
     end if
   end subroutine fd_derivatives
 
+  ! Scene T1's gas-gap and cmy regimes, the twin of gas_gap_and_cmy in c_tests/test_gapcon_t1.c.
+  ! Gas gap: k = k_gas/(max(d, min_gap) + g0), dk/dd = -k_gas/(d + g0)^2 above min_gap and 0
+  ! below (the gap taken as min_gap: k exactly constant in d there), dk/dp = dk/dtm = 0. cmy:
+  ! k = c (k_s m/sigma)(p/H_c)^0.95 with c = 1.25 (T1CMY) or 1 (T1CMY_C1), dk/dp = 0.95 k/p,
+  ! dk/dd = dk/dtm = 0; k = dk/dp = 0 for p <= 0. Derivatives also against central differences.
+  subroutine scene_t1_gas_cmy()
+    real(dp), parameter :: gaps(4) = [1.0e-4_dp, 3.0e-5_dp, 2.0e-3_dp, 1.5e-5_dp]
+    real(dp), parameter :: closed(3) = [5.0e-6_dp, 0.0_dp, -1.0e-4_dp]
+    real(dp), parameter :: pressures(4) = [1.0e6_dp, 3.0e5_dp, 2.0e8_dp, 1.0_dp]
+    real(dp), parameter :: nonpositive(2) = [0.0_dp, -5.0e5_dp]
+    type(ifl_conductance) :: c, cp, cm
+    real(dp) :: d, p, h, hd
+    integer :: i
+    do i = 1, size(gaps)
+      d = gaps(i)
+      write (scene, '(a,es10.3)') 'T1 gas gap at d =', d
+      call gas_gap_point(d, t1_k_gas/(d + t1_g0), -t1_k_gas/(d + t1_g0)**2, 1.0e-4_dp*d, i)
+    end do
+    do i = 1, size(closed)
+      d = closed(i)
+      write (scene, '(a,es10.3,a)') 'T1 gas gap at d =', d, ' (below min_gap)'
+      call gas_gap_point(d, t1_k_gas/(t1_min_gap + t1_g0), 0.0_dp, 0.0_dp, i)
+      hd = 1.0e-3_dp*(t1_min_gap - 5.0e-6_dp)
+      c = native('T1GAS', d, 40.0_dp, 300.0_dp, 280.0_dp)
+      cp = native('T1GAS', d + hd, 40.0_dp, 300.0_dp, 280.0_dp)
+      cm = native('T1GAS', d - hd, 40.0_dp, 300.0_dp, 280.0_dp)
+      call check(cp%k == c%k .and. cm%k == c%k, 'T1GAS: k exactly constant in d below min_gap', i)
+    end do
+    do i = 1, size(pressures)
+      p = pressures(i)
+      write (scene, '(a,es10.3)') 'T1 cmy at p =', p
+      h = 1.25_dp*(cmy_ks*cmy_m/cmy_sigma)*(p/cmy_hc)**0.95_dp
+      c = both('T1CMY', 1.0e-4_dp, p, 300.0_dp, 280.0_dp)
+      call check_near(c%k, h, 1.0e-14_dp*h, 'T1CMY: k = 1.25 (k_s m/sigma)(p/H_c)^0.95', i)
+      call check_near(c%dk_dp, 0.95_dp*h/p, 1.0e-14_dp*0.95_dp*h/p, 'T1CMY: dk/dp = 0.95 k/p', i)
+      call check(c%dk_dd == 0, 'T1CMY: dk/dd = 0', i)
+      call check(c%dk_dtheta_mean == 0, 'T1CMY: dk/dtm = 0', i)
+      call fd_derivatives('T1CMY', 1.0e-4_dp, p, 300.0_dp, 280.0_dp, 1.0e-6_dp, 1.0e-5_dp*p, &
+                          0.5_dp, i)
+      c = both('T1CMY_C1', 1.0e-4_dp, p, 300.0_dp, 280.0_dp)
+      call check_near(c%k, h/1.25_dp, 1.0e-14_dp*h, 'T1CMY_C1: c = 1 gives k/1.25', i)
+    end do
+    do i = 1, size(nonpositive)
+      p = nonpositive(i)
+      write (scene, '(a,es10.3)') 'T1 cmy at p =', p
+      c = both('T1CMY', 1.0e-4_dp, p, 300.0_dp, 280.0_dp)
+      call check(c%k == 0 .and. c%dk_dp == 0, 'T1CMY: k = dk/dp = 0 for p <= 0', i)
+    end do
+  contains
+    ! T1GAS at gap d against its closed form: k and dk/dd as given, dk/dp = dk/dtm = 0, and the
+    ! derivatives against central differences (of d only where hd > 0).
+    subroutine gas_gap_point(d, k, dkdd, hd, n)
+      real(dp), intent(in) :: d, k, dkdd, hd
+      integer, intent(in) :: n
+      type(ifl_conductance) :: c
+      c = both('T1GAS', d, 40.0_dp, 300.0_dp, 280.0_dp)
+      call check_near(c%k, k, 1.0e-15_dp*k, 'T1GAS: k = k_gas/(max(d, min_gap) + g0)', n)
+      call check_near(c%dk_dd, dkdd, 1.0e-14_dp*abs(dkdd), &
+                      'T1GAS: dk/dd = -k_gas/(d + g0)^2 above min_gap, else 0', n)
+      call check(c%dk_dp == 0, 'T1GAS: dk/dp = 0', n)
+      call check(c%dk_dtheta_mean == 0, 'T1GAS: dk/dtm = 0', n)
+      call fd_derivatives('T1GAS', d, 40.0_dp, 300.0_dp, 280.0_dp, hd, 1.0_dp, 0.5_dp, n)
+    end subroutine gas_gap_point
+  end subroutine scene_t1_gas_cmy
+
   ! Scene T2 at imposed surface temperatures: AK(1) (theta_A - theta_B) must be the radiated
   ! flux F sigma ((theta_A - theta_Z)^4 - (theta_B - theta_Z)^4), plus gas conduction
   ! k_gas/(max(d, min_gap) + g0) (theta_A - theta_B) for GASRAD; AK(1) itself is
@@ -387,7 +456,11 @@ contains
                              0.0_dp, i)
       call check_derivatives('GASRAD', 1.0e-4_dp, tk(1), tk(2), a, b, &
                              -k_gas/(1.0e-4_dp + g0)**2, i)
+      ! Closed gaps (below min_gap, touching, overlapping) as the C twin's: the gap is taken as
+      ! min_gap, so dk/dd = 0, and dk/dp = 0, dk/dtm the radiation's alone.
       call check_derivatives('GASRAD', 5.0e-7_dp, tk(1), tk(2), a, b, 0.0_dp, i)
+      call check_derivatives('GASRAD', 0.0_dp, tk(1), tk(2), a, b, 0.0_dp, i)
+      call check_derivatives('GASRAD', -1.0e-4_dp, tk(1), tk(2), a, b, 0.0_dp, i)
     end do
   contains
     ! Radiation: dq/dtheta_A = 4 F sigma a^3, dq/dtheta_B = -4 F sigma b^3 (exact), and with
@@ -479,6 +552,7 @@ program test_gapcon_scenes
   implicit none
   real(dp) :: qk, qc, qg
   call scene_t1temp()
+  call scene_t1_gas_cmy()
   call scene_t2_points()
   call scene_t2_steady('RADK', 1.0e-3_dp, kelvin_zero, qk)
   call scene_t2_steady('RADC', 1.0e-3_dp, celsius_zero, qc)
