@@ -354,9 +354,12 @@ macro_rules! multiversioned {
             $baseline::<N>($($p),*)
         }
 
+        // `unsafe fn`: a safe `#[target_feature]` function needs Rust 1.86, above the MSRV.
+        /// # Safety
+        /// The processor supports AVX2.
         #[cfg(target_arch = "x86_64")]
         #[target_feature(enable = "avx2")]
-        fn $avx2<const N: usize>($($p: $t),*) -> $ret {
+        unsafe fn $avx2<const N: usize>($($p: $t),*) -> $ret {
             $baseline::<N>($($p),*)
         }
 
