@@ -1,5 +1,5 @@
-//! The procedural macro of interfacial's ABI shell (docs/architecture.md, "The shell's shared
-//! pieces").
+//! The procedural macro of interfacial's ABI shell (docs/architecture.md, "Written
+//! once, and the copies kept").
 //!
 //! [`with_twin`] writes an export's out-of-line twin and its argument view from the export's
 //! own text, so the parameter list is written once in the source (where cbindgen, which expands

@@ -16,7 +16,8 @@ use crate::report::{Site, report};
 /// [`boundary`] with the site closure `$site`, the view's `run` as the body and its `fail` as
 /// the safe outputs; the fault is dropped (these routines return nothing). A macro rather than
 /// a trait method, so each export compiles as if it were written out: one trait for the views
-/// cost `uinter_` 3.1 % (docs/architecture.md, "Tried and not kept").
+/// cost `uinter_` 3.1 % (docs/architecture.md, "Written once, and the copies kept", its "Tried and
+/// not kept").
 macro_rules! fortran_boundary {
     ($args:ident, $site:expr) => {
         let _ = $crate::abi::boundary(
