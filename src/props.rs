@@ -56,7 +56,7 @@ pub fn friction_law(props: &[f64]) -> Result<FrictionLaw, LawError> {
     }
     match coulomb_fast(props) {
         Some(law) => Ok(FrictionLaw::Coulomb(law)),
-        None => match coulomb_extended_fast(props) {
+        None => match fast_extended_friction_law(props) {
             Some(law) => Ok(law),
             None => match adhesive::adhesive_fast(props) {
                 Some(law) => Ok(law),
@@ -192,7 +192,7 @@ fn padded<const N: usize>(props: &[f64]) -> Option<[f64; N]> {
 /// [`coulomb::law_from_entries`]'s, as on the checked path. Declines the μ table
 /// (`PROPS(8) = 2`), which needs the interaction's table.
 #[inline(always)]
-fn coulomb_extended_fast(props: &[f64]) -> Option<FrictionLaw> {
+fn fast_extended_friction_law(props: &[f64]) -> Option<FrictionLaw> {
     with_admitted_extended(props, coulomb::fast_law_from_entries)
 }
 
@@ -573,12 +573,12 @@ mod tests {
             a
         });
         for layout in [decay, damped, spinning, anisotropic, dynamic] {
-            assert!(coulomb_extended_fast(&layout).is_some(), "{layout:?}");
+            assert!(fast_extended_friction_law(&layout).is_some(), "{layout:?}");
             for position in 1..COULOMB_EXTENDED_NPROPS {
                 for v in range_edges() {
                     let mut props = layout;
                     props[position] = v;
-                    let fast = coulomb_extended_fast(&props);
+                    let fast = fast_extended_friction_law(&props);
                     match coulomb_extended(&props) {
                         Ok(law) => assert_eq!(fast, Some(law), "PROPS({}) = {v:e}", position + 1),
                         Err(e) => assert!(
@@ -730,7 +730,7 @@ mod tests {
                     }
                 }
             }
-            let fast = coulomb_extended_fast(&props);
+            let fast = fast_extended_friction_law(&props);
             let checked = coulomb_extended(&props);
             match (fast, checked) {
                 (Some(f), Ok(c)) => prop_assert_eq!(f, c),

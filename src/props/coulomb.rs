@@ -651,7 +651,7 @@ pub(super) mod tests {
     fn the_defaults_are_said_once() {
         use crate::laws::coulomb::{Coulomb, CriticalSlip};
         use crate::laws::coulomb_extended::ExtendedCoulomb;
-        use crate::props::coulomb_extended_fast;
+        use crate::props::fast_extended_friction_law;
         for alpha in [-0.5f64, -0.3, -0.1, -1e-300, -0.0, 0.0] {
             // The closed forms of Abaqus's HHT relations.
             let (beta, gamma) = (0.25 * (1.0 - alpha).powi(2), 0.5 - alpha);
@@ -672,13 +672,16 @@ pub(super) mod tests {
                 by_hand.with_hht(Some(Hht { alpha, beta, gamma }))
             };
             let expected = Some(FrictionLaw::CoulombExtended(by_hand));
-            assert_eq!(coulomb_extended_fast(&props), expected, "α = {alpha}");
+            assert_eq!(fast_extended_friction_law(&props), expected, "α = {alpha}");
             assert_eq!(coulomb_extended(&props).ok(), expected, "α = {alpha}");
         }
         // μ₂ absent is μ₂ = μ (isotropic), with any extended entry on.
         let props = CoulombBuilder::new().mu(0.3).hht_alpha(-0.1).build();
         assert_eq!(COULOMB.resolved_in(&props, 3), 0.3);
-        for law in [coulomb_extended_fast(&props), coulomb_extended(&props).ok()] {
+        for law in [
+            fast_extended_friction_law(&props),
+            coulomb_extended(&props).ok(),
+        ] {
             let Some(FrictionLaw::CoulombExtended(law)) = law else {
                 panic!("{law:?}")
             };
@@ -697,7 +700,10 @@ pub(super) mod tests {
             Some(CriticalSlip::Tolerance(0.005))
         );
         let props = CoulombBuilder::new().mu(0.3).stick(3.0).omega(2.0).build();
-        for law in [coulomb_extended_fast(&props), coulomb_extended(&props).ok()] {
+        for law in [
+            fast_extended_friction_law(&props),
+            coulomb_extended(&props).ok(),
+        ] {
             let Some(FrictionLaw::CoulombExtended(law)) = law else {
                 panic!("{law:?}")
             };
