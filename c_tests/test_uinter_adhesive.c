@@ -14,6 +14,7 @@
  *       work done on the interface (from STRESS and RDISP only) equals SED + sum SPD after
  *       every increment; SPD = 1/2 S0^2/k_s + 1/2 N_last^2/K_n at the break (the energy held at
  *       the last bonded increment), 1/2 (0.99 N_a)^2/K_n at the second break, 0 otherwise.
+ *   gamma_crit = 2 exactly: read as gamma_crit, as 2.0000001 is (law 1's mu-table switch value).
  *   Bad input: negative strengths, coeffStatic < coeff, NaN -> PNEWDT = 0.25, outputs kept,
  *       one message naming the routine and the entry.
  *
@@ -345,12 +346,40 @@ static void bad_input(void)
     }
 }
 
+/*
+ * gamma_crit = 2 exactly (PROPS(8) = 2, law 1's mu-table switch in the other layout) is read as
+ * gamma_crit: fric_ sticks with tau = k_s dgam, k_s = (mu_s p + S_a)/2, like gamma_crit = 2.0000001.
+ */
+static void gamma_crit_two(void)
+{
+    const double g[2] = {2.0, 2.0000001};
+    double tau[2];
+    int i, nfdir;
+    for (nfdir = 1; nfdir <= 2; nfdir++) {
+        for (i = 0; i < 2; i++) {
+            const double props[8] = {2.0, MU_D, MU_S, SA, NA, 0.0, 0.0, g[i]};
+            fh_fric h;
+            fh_init(&h, nfdir, props, 8);
+            h.press = P;
+            h.dpress = P;
+            h.dtime = DT;
+            h.dgam[0] = 0.5;
+            fh_context("gamma_crit = %.7f, NFDIR %d", g[i], nfdir);
+            fh_call_ok(&h);
+            FH_NEAR(h.tau[0], (MU_S * P + SA) / g[i] * 0.5, 1e-12, 0.0);
+            tau[i] = h.tau[0];
+        }
+        FH_NEAR(tau[0], tau[1], 1e-6, 0.0);
+    }
+}
+
 int main(void)
 {
     f4_fric(1);
     f4_fric(2);
     f4_uinter();
     onset();
+    gamma_crit_two();
     pull_off();
     bad_input();
     return fh_finish();

@@ -9,6 +9,7 @@
 !       with its energy balance: the work done on the interface (from STRESS and RDISP only)
 !       equals SED + sum SPD after every increment; SPD = 1/2 S0^2/k_s + 1/2 N_last^2/K_n at
 !       the break, 1/2 (0.99 N_a)^2/K_n at the second break, 0 otherwise;
+!   gamma_crit = 2 exactly read as gamma_crit, as 2.0000001 (FRIC, NFDIR 1 and 2);
 !   bad input: negative S_a, coeffStatic < coeff, NaN -> PNEWDT = 0.25, STRESS unchanged.
 ! Parameters: mu_d = 0.3, mu_s = 0.5, S_a = 4, N_a = 10, k_mu = 0.2, v_half = 0.1,
 ! gamma_crit = 1e-3, K_n = 1e4, p = 100, DTIME = 0.1.
@@ -31,6 +32,7 @@ program test_uinter_adhesive
   call f4_uinter()
   call f4_fric()
   call onset()
+  call gamma_crit_two()
   call pull_off()
   call bad_input()
 
@@ -84,6 +86,32 @@ contains
     a%dpress = p
     a%dtime = dt
   end function fric_point
+
+  ! gamma_crit = 2 exactly (PROPS(8) = 2, law 1's mu-table switch in the other layout) is read as
+  ! gamma_crit: fric_ sticks with tau = k_s dgam, k_s = (mu_s p + S_a)/2, like 2.0000001.
+  subroutine gamma_crit_two()
+    real(dp), parameter :: gs(2) = [2.0_dp, 2.0000001_dp]
+    real(dp) :: taus(2)
+    integer :: i, nfdir
+    type(fric_args) :: a
+    scene = 'gamma_crit = 2 FRIC'
+    do nfdir = 1, 2
+      do i = 1, 2
+        a = new_point(nfdir, [2.0_dp, mud, mus, sa, na, 0.0_dp, 0.0_dp, gs(i)], 'ADHESIVE')
+        a%press = p
+        a%dpress = p
+        a%dtime = dt
+        a%dgam(1) = 0.5_dp
+        call fric_call(a)
+        call check_tails(a)
+        call check(a%pnewdt == big, 'PNEWDT not lowered')
+        call check_abs(a%tau(1), (mus*p + sa)/gs(i)*0.5_dp, 1.0e-12_dp*a%tau(1), &
+                       'stick: tau = k_s dgam')
+        taus(i) = a%tau(1)
+      end do
+      call check_abs(taus(1), taus(2), 1.0e-6_dp*taus(1), 'continuous in gamma_crit')
+    end do
+  end subroutine gamma_crit_two
 
   subroutine f4_fric()
     integer :: r, k

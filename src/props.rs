@@ -341,6 +341,21 @@ pub fn coulomb_extended_with_table(
     Ok(coulomb::law_from_entries(&e, table)?)
 }
 
+/// The friction law `props` select, for a routine that can look the interaction's μ table up
+/// (`fric_`, `fric_coef_`): `table` is called only when the law asks for one (law 1 with its μ
+/// table, [`coulomb::selects_mu_table`]), so the caller reads no `PROPS` entry itself. Every
+/// other law and layout is [`friction_law`]'s.
+pub fn friction_law_with_table(
+    props: &[f64],
+    table: impl FnOnce() -> Result<&'static FrictionTable, LawError>,
+) -> Result<FrictionLaw, LawError> {
+    if props.first() == Some(&f64::from(LAW_COULOMB)) && coulomb::selects_mu_table(props) {
+        coulomb_extended_with_table(props, Some(table()?))
+    } else {
+        friction_law(props)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -17,8 +17,7 @@ use crate::laws::coulomb_extended::{
     Conditions, ExtendedCoulomb, ExtendedState, mean_surface_temperature,
 };
 use crate::props::{
-    FrictionLaw, coulomb_extended_with_table, fast_extended_coulomb, fast_plain_coulomb,
-    friction_law,
+    FrictionLaw, fast_extended_coulomb, fast_plain_coulomb, friction_law_with_table,
 };
 use crate::report::Site;
 
@@ -432,14 +431,12 @@ impl FricArgs {
             if let Some(law) = fast_extended_coulomb(props) {
                 return self.on_nfdir(Law::Extended(&law), entry);
             }
-            let law = if props.get(7) == Some(&2.0) {
-                // μ table (PROPS(8) = 2): the interaction's, from the configuration file.
-                // A NULL name or an implausible hidden length (an address) reads as no name.
-                let name = fortran_name_bytes(self.ciname, self.ciname_len);
-                coulomb_extended_with_table(props, Some(friction_table_for(name)?))?
-            } else {
-                friction_law(props)?
-            };
+            // The μ table (law 1's, when its PROPS ask for one) is the interaction's, from the
+            // configuration file. A NULL name or an implausible hidden length (an address) reads
+            // as no name.
+            let law = friction_law_with_table(props, || {
+                friction_table_for(fortran_name_bytes(self.ciname, self.ciname_len))
+            })?;
             match &law {
                 FrictionLaw::Coulomb(law) => self.on_nfdir(Law::Coulomb(law), entry),
                 FrictionLaw::CoulombExtended(law) => self.on_nfdir(Law::Extended(law), entry),

@@ -7,7 +7,7 @@ use super::{count, fortran_name_bytes, host_site, null_pointer, read, slice};
 use crate::LawError;
 use crate::config::friction_table_for;
 use crate::laws::coulomb_extended::ExtendedCoulomb;
-use crate::props::{FrictionLaw, coulomb_extended_with_table, friction_law};
+use crate::props::{FrictionLaw, friction_law_with_table};
 
 /// Number of derivative slots per point and direction in `fCoefDeriv(nBlock,20,2)`.
 pub const FRIC_COEF_NDERIV: usize = 20;
@@ -80,14 +80,12 @@ impl CoefArgs {
             let n = count("nBlock", read(self.nblock, "nBlock")?)?;
             let nprops = count("nProps", read(self.nprops, "nProps")?)?;
             let props = slice(self.props, nprops, "props")?;
-            let law = if props.get(7) == Some(&2.0) {
-                // μ table (PROPS(8) = 2): the interaction's, from the configuration file.
-                // A NULL name or an implausible hidden length (an address) reads as no name.
-                let name = fortran_name_bytes(self.surf_int, self.surf_int_len);
-                coulomb_extended_with_table(props, Some(friction_table_for(name)?))?
-            } else {
-                friction_law(props)?
-            };
+            // The μ table (law 1's, when its PROPS ask for one) is the interaction's, from the
+            // configuration file. A NULL name or an implausible hidden length (an address) reads
+            // as no name.
+            let law = friction_law_with_table(props, || {
+                friction_table_for(fortran_name_bytes(self.surf_int, self.surf_int_len))
+            })?;
             let law = match law {
                 FrictionLaw::Coulomb(base) => ExtendedCoulomb::new(base),
                 FrictionLaw::CoulombExtended(law) => law,

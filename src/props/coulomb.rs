@@ -263,6 +263,13 @@ fast_layout! {
     pub(crate) Transport = COULOMB, TRANSPORT, COULOMB_EXTENDED_NPROPS
 }
 
+/// Whether law-1 `PROPS` select the interaction's μ table (`PROPS(8)`, the μ law, = 2): the
+/// one law-1 setting that needs something beyond `PROPS` (a table looked up by `CINAME` in the
+/// configuration file). Said of law 1 only: the caller has matched `PROPS(1)` first.
+pub(crate) fn selects_mu_table(props: &[f64]) -> bool {
+    props.get(7) == Some(&2.0)
+}
+
 /// The law of valid law-1 entries (`e[i - 1] = PROPS(i)`, absent ones 0): those
 /// [`COULOMB`]`.check` returns, or those a fast plan admitted (which leaves `PROPS(7)` and
 /// `PROPS(8)` to the matches here). The one builder of every law-1 reader but the plain and
