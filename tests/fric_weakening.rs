@@ -794,3 +794,70 @@ fn a_sliding_point_separates_freely_a_stuck_one_bonds() {
         }
     }
 }
+
+/// The earlier formulation's several-root case, τ_max between A·r and A (r = μ_k/μ_s < 1,
+/// A = μ_s·p): the strength is capped at τ_max up to the slip s* where A·φ(s*/Δt) = τ_max,
+/// φ(v) = r + (1 − r)·e^(−d_c·v), and the return map takes the smallest root of
+/// F(s) = k_s·(G − s) − min(τ_max, A·φ(s/Δt)). With d_c/Δt = 15 (not 1, so s* depends on which
+/// of d_c and Δt divides): one trial slip G whose root is on the cap (G − τ_max/k_s ≤ s*) and
+/// one whose root lies past s*, each against the smallest root found here by a scan and
+/// bisection of F, with k_s measured from a sticking increment.
+#[test]
+fn the_earlier_formulation_takes_the_smallest_root_under_a_cap() {
+    let (mu_k, d_c, dtime, tau_max) = (0.25, 3.0, 0.2, 40.0);
+    let law = ExtendedCoulomb::new(
+        Coulomb::new(MU_S)
+            .and_then(|c| c.with_critical_slip_absolute(GAMMA_CRIT))
+            .and_then(|c| c.with_shear_limit(tau_max))
+            .unwrap(),
+    )
+    .with_coefficient_law(
+        CoefficientLaw::default()
+            .with_exponential_decay(mu_k / MU_S, d_c)
+            .unwrap(),
+    )
+    .with_rate_formulation(RateFormulation::RateFreeStiffness);
+    let from_rest = |g: f64| {
+        let inc = Increment::<1> {
+            tau: [0.0],
+            dgam: [g],
+            pressure: P,
+            dpressure: 0.0,
+            dtime,
+            characteristic_length: 1.0,
+            ..Increment::default()
+        };
+        let up = law
+            .update(&inc, &Conditions::default(), &ExtendedState::<1>::default())
+            .unwrap();
+        let interfacial::laws::coulomb::Contact::Motion(t) = up.contact else {
+            panic!("no exact stick here")
+        };
+        t.tau[0]
+    };
+    let (a, r) = (MU_S * P, mu_k / MU_S);
+    assert!(a * r < tau_max && tau_max < a, "the several-root case");
+    let k_s = from_rest(1e-6) / 1e-6;
+    let strength = |s: f64| tau_max.min(a * (r + (1.0 - r) * (-d_c * s / dtime).exp()));
+    let s_star = -((tau_max / a - r) / (1.0 - r)).ln() * dtime / d_c;
+    for (g, on_cap) in [(0.02, true), (0.1, false)] {
+        let f = |s: f64| k_s * (g - s) - strength(s);
+        // The first sign change of F on a fine grid, then bisection.
+        let n = 200_000;
+        let h = g / n as f64;
+        let i = (1..=n).find(|&i| f(i as f64 * h) <= 0.0).unwrap();
+        let (mut lo, mut hi) = ((i - 1) as f64 * h, i as f64 * h);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if f(mid) > 0.0 { lo = mid } else { hi = mid }
+        }
+        let s = 0.5 * (lo + hi);
+        assert_eq!(s <= s_star, on_cap, "G = {g}: s = {s}, s* = {s_star}");
+        let want = strength(s);
+        let got = from_rest(g);
+        assert!(
+            (got - want).abs() <= 1e-9 * want,
+            "G = {g}: τ = {got}, smallest root {want}"
+        );
+    }
+}

@@ -1321,3 +1321,40 @@ fn a_vanishing_start_pressure_is_answered() {
         }
     }
 }
+
+/// The decay law with a temperature-dependent μ on its lean path (isotropic, elastic stick,
+/// `NPROPS = 20`, no damping: `fric_`'s rate fast path): a NaN or infinite temperature is
+/// refused by name (`TEMP`), with PNEWDT < 1 and TAU, STATEV unchanged — not reported as a
+/// numerical failure of the local solve.
+#[test]
+fn decay_law_names_a_bad_temperature() {
+    let props = CoulombBuilder::new()
+        .mu(0.5)
+        .gamma_crit(1e-3)
+        .mu_law(1.0)
+        .mu_k(0.2)
+        .decay(2.0)
+        .b_theta(0.01)
+        .theta_ref(20.0)
+        .build_first(20);
+    for bad in [f64::NAN, f64::INFINITY] {
+        for nfdir in [1, 2] {
+            let mut c = FricCall::new(nfdir, &props);
+            c.press = 100.0;
+            c.dpress = 0.0;
+            c.dgam = [2e-3, 1e-3, 0.0];
+            c.dtime = 0.1;
+            let mut ok = c.clone();
+            ok.call();
+            assert_eq!(ok.pnewdt, 1e36, "{}", FricCall::last_error());
+            c.temp[1] = bad;
+            let before = c.clone();
+            c.call();
+            let msg = FricCall::last_error();
+            assert!(c.pnewdt < 1.0, "TEMP {bad} not refused");
+            assert!(msg.contains("TEMP") && msg.contains("FRIC"), "{msg}");
+            assert_eq!(c.tau, before.tau);
+            assert_eq!(c.statev[..3], before.statev[..3]);
+        }
+    }
+}
