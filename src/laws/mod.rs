@@ -37,6 +37,7 @@ pub mod gap_radiation;
 pub mod interface_heat;
 mod parameter_range;
 pub mod pore_pressure;
+pub mod rate_state;
 pub mod scalar_root;
 mod small_vec;
 pub mod table;
