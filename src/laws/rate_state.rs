@@ -129,7 +129,7 @@ impl RateStateState {
     pub fn from_statev(statev: &[f64], theta_initial: f64) -> Result<Self, LawError> {
         let point = CoulombState::from_statev(statev)?;
         let theta = match statev.get(3) {
-            Some(&t) if t == 0.0 => theta_initial,
+            Some(&0.0) => theta_initial,
             Some(&t) if t.is_finite() && t > 0.0 => t,
             Some(&t) => {
                 return Err(LawError::Input(format!(
