@@ -50,4 +50,19 @@
 #define IFLP_ADHESIVE_HEAT_FRACTION 11 /* PROPS(12): fraction of the frictional dissipation converted into heat */
 #define IFLP_ADHESIVE_SLAVE_FRACTION 12 /* PROPS(13): part of that heat flowing into the slave surface, 1 − f into the master */
 
+/* law 3: the rate-and-state law */
+#define IFLP_LAW_RATE_STATE 3
+#define IFLP_RATE_STATE_NPROPS 11
+#define IFLP_RATE_STATE_CODE 0 /* PROPS(1): law code */
+#define IFLP_RATE_STATE_MU0 1 /* PROPS(2): steady-state friction coefficient at V₀ */
+#define IFLP_RATE_STATE_A 2 /* PROPS(3): direct-effect coefficient */
+#define IFLP_RATE_STATE_B 3 /* PROPS(4): evolution-effect coefficient */
+#define IFLP_RATE_STATE_V0 4 /* PROPS(5): reference slip rate */
+#define IFLP_RATE_STATE_L 5 /* PROPS(6): characteristic slip distance of the state evolution */
+#define IFLP_RATE_STATE_EVOLUTION 6 /* PROPS(7): state evolution law */
+#define IFLP_RATE_STATE_FORM 7 /* PROPS(8): expression of μ */
+#define IFLP_RATE_STATE_GAMMA_CRIT 8 /* PROPS(9): allowable elastic slip */
+#define IFLP_RATE_STATE_SLIP_TOLERANCE 9 /* PROPS(10): slip tolerance */
+#define IFLP_RATE_STATE_THETA0 10 /* PROPS(11): initial state θ (read when `STATEV(4)` = 0) */
+
 #endif

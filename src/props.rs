@@ -7,10 +7,12 @@ use crate::laws::coulomb::{Coulomb, StickMode};
 use crate::laws::coulomb_extended::ExtendedCoulomb;
 use crate::laws::friction_coefficient::CoefficientLaw;
 use crate::laws::friction_table::FrictionTable;
+use crate::laws::rate_state::RateState;
 use crate::switch::Path;
 
 mod adhesive;
 mod coulomb;
+mod rate_state;
 pub mod schema;
 pub(crate) use adhesive::adhesive_props;
 pub use adhesive::{
@@ -21,6 +23,7 @@ pub use coulomb::{
     COULOMB, CoulombBuilder, DECAY_LEAN, EXTENDED_CONSTANT, EXTENDED_DECAY, PLAIN, QUASI_STATIC,
     STEADY_TRANSPORT, TRANSPORT,
 };
+pub use rate_state::{LAW_RATE_STATE, RATE_STATE, RATE_STATE_NPROPS, RateStateBuilder, rate_state};
 use schema::admits_fixed;
 
 /// `PROPS(1)` code of the Coulomb family.
@@ -42,6 +45,22 @@ pub enum FrictionLaw {
     Adhesive(AdhesiveProps),
     /// `PROPS(1) = 1` with anisotropy, a μ law, HHT or damping (`PROPS(3)`, `PROPS(8..20)`).
     CoulombExtended(ExtendedCoulomb),
+    /// `PROPS(1) = 3`: rate-and-state friction (Dieterich–Ruina).
+    RateState(RateState),
+}
+
+impl FrictionLaw {
+    /// The law as messages name it, with its code: "PROPS(1) = 3 (rate-and-state law)".
+    #[must_use]
+    pub fn name(&self) -> &'static str {
+        match self {
+            FrictionLaw::Coulomb(_) | FrictionLaw::CoulombExtended(_) => {
+                "PROPS(1) = 1 (Coulomb law)"
+            }
+            FrictionLaw::Adhesive(_) => "PROPS(1) = 2 (adhesive law)",
+            FrictionLaw::RateState(_) => "PROPS(1) = 3 (rate-and-state law)",
+        }
+    }
 }
 
 /// Reads `PROPS(1)` (the law code) and the law's parameters.
@@ -296,26 +315,31 @@ pub(crate) fn fast_decay_lean(props: &[f64; COULOMB_EXTENDED_NPROPS]) -> Option<
     )
 }
 
+/// The law codes `PROPS(1)` may take, for messages.
+const LAW_CODES: &str = "1 = Coulomb, 2 = adhesive, 3 = rate-and-state";
+
 /// The slow path of [`friction_law`], which says what is wrong.
 #[cold]
 #[inline(never)]
 pub fn friction_law_checked(props: &[f64]) -> Result<FrictionLaw, LawError> {
     let Some(&code) = props.first() else {
-        return Err(LawError::Parameter(
-            "NPROPS = 0: PROPS(1) must select a law (1 = Coulomb, 2 = adhesive)".into(),
-        ));
+        return Err(LawError::Parameter(format!(
+            "NPROPS = 0: PROPS(1) must select a law ({LAW_CODES})"
+        )));
     };
     if code == f64::from(LAW_COULOMB) {
         coulomb_extended(props)
     } else if code == f64::from(LAW_ADHESIVE) {
         adhesive::adhesive(props).map(AdhesiveProps::into_friction_law)
+    } else if code == f64::from(LAW_RATE_STATE) {
+        rate_state(props).map(FrictionLaw::RateState)
     } else if code.is_finite() && code.fract() == 0.0 {
         Err(LawError::Parameter(format!(
-            "PROPS(1) = {code} is not a known law code (1 = Coulomb, 2 = adhesive)"
+            "PROPS(1) = {code} is not a known law code ({LAW_CODES})"
         )))
     } else {
         Err(LawError::Parameter(format!(
-            "PROPS(1) = {code} must be an integer law code (1 = Coulomb, 2 = adhesive)"
+            "PROPS(1) = {code} must be an integer law code ({LAW_CODES})"
         )))
     }
 }

@@ -5,7 +5,7 @@
 use std::path::Path;
 
 use interfacial::props::schema::Layout;
-use interfacial::props::{ADHESIVE, COULOMB};
+use interfacial::props::{ADHESIVE, COULOMB, RATE_STATE};
 
 /// The marker pair around the table of `law` in docs/props.md.
 fn markers(law: &str) -> (String, String) {
@@ -52,7 +52,7 @@ fn check(layouts: &[(&str, &Layout)]) {
 
 #[test]
 fn props_tables_are_up_to_date() {
-    check(&[("law 1", &COULOMB), ("law 2", &ADHESIVE)]);
+    check(&[("law 1", &COULOMB), ("law 2", &ADHESIVE), ("law 3", &RATE_STATE)]);
 }
 
 /// The check itself can fail: a table that differs from the schema by one character is caught,

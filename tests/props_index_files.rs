@@ -10,11 +10,15 @@ use std::collections::HashSet;
 use std::path::Path;
 
 use interfacial::props::schema::{Entry, Layout};
-use interfacial::props::{ADHESIVE, COULOMB};
+use interfacial::props::{ADHESIVE, COULOMB, RATE_STATE};
 
 /// The layouts, under the word that names them in the generated identifiers.
-fn layouts() -> [(&'static str, &'static Layout); 2] {
-    [("COULOMB", &COULOMB), ("ADHESIVE", &ADHESIVE)]
+fn layouts() -> [(&'static str, &'static Layout); 3] {
+    [
+        ("COULOMB", &COULOMB),
+        ("ADHESIVE", &ADHESIVE),
+        ("RATE_STATE", &RATE_STATE),
+    ]
 }
 
 /// Every entry of a layout with its own index, then the entries its variants give another
@@ -116,11 +120,12 @@ fn render(
     }
 }
 
-/// One letter per law in the Fortran names (they must stay within 31 characters): C, A.
+/// One letter per law in the Fortran names (they must stay within 31 characters): C, A, R.
 fn law_letter(law: &str) -> &'static str {
     match law {
         "COULOMB" => "C",
         "ADHESIVE" => "A",
+        "RATE_STATE" => "R",
         other => panic!("no Fortran letter for {other}"),
     }
 }

@@ -141,6 +141,13 @@ pub fn fric_batch(
                     .into(),
             )));
         }
+        Ok(other @ FrictionLaw::RateState(_)) => {
+            lower(pnewdt, CUTBACK_RATIO);
+            return Err(whole(LawError::Parameter(format!(
+                "{}: the batch entry runs law 1 (Coulomb) only; call fric_ per point",
+                other.name()
+            ))));
+        }
         Err(e) => {
             lower(pnewdt, CUTBACK_RATIO);
             return Err(e);

@@ -57,6 +57,12 @@ pub unsafe extern "C" fn ifl_forced_sliding(
                     "PROPS(1) = 2 (adhesive): only law 1 (Coulomb) is provided here".into(),
                 ));
             }
+            other @ FrictionLaw::RateState(_) => {
+                return Err(LawError::Parameter(format!(
+                    "{}: only law 1 (Coulomb) is provided here",
+                    other.name()
+                )));
+            }
         };
         // SAFETY (both arms): arrays of nfdir and nfdir² entries by contract.
         unsafe {

@@ -16,6 +16,8 @@ use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment,
 use crate::laws::coulomb_extended::{
     Conditions, ExtendedCoulomb, ExtendedState, mean_surface_temperature,
 };
+use crate::laws::point_law::PointLaw;
+use crate::laws::rate_state::RateState;
 use crate::props::{
     FrictionLaw, fast_extended_coulomb, fast_plain_coulomb, friction_law_with_table,
 };
@@ -225,6 +227,7 @@ enum Law<'a> {
     Coulomb(&'a Coulomb),
     Extended(&'a ExtendedCoulomb),
     Adhesive(&'a Adhesive),
+    RateState(&'a RateState),
 }
 
 impl FricArgs {
@@ -442,6 +445,7 @@ impl FricArgs {
                 FrictionLaw::CoulombExtended(law) => self.on_nfdir(Law::Extended(law), entry),
                 // (S_a = k_μ = v_½ = 0, μ_s = μ_d comes as the Coulomb law.)
                 FrictionLaw::Adhesive(a) => self.on_nfdir(Law::Adhesive(&a.law), entry),
+                FrictionLaw::RateState(law) => self.on_nfdir(Law::RateState(law), entry),
             }
         }
     }
@@ -506,22 +510,41 @@ impl FricArgs {
                     self.write_answer(&up.contact, end, &up.ddtddt_column());
                     self.lower_pnewdt(up.outcome.step_ratio);
                 }
-                // Elastic stick only: `LM = 1` on entry (a host that starts the increment
-                // "sticking") reads as `LM = 0`, and the answer is always `LM = 0`.
-                Law::Adhesive(law) => {
-                    let inc = self.increment::<N, LawError>(EntryFlag::Motion)?;
-                    let state = CoulombState::from_statev(slice(self.statev, nstatv, "STATEV")?)?;
-                    let up = law.update(&inc, &state)?;
-                    if up.contact == Contact::ExactStick {
-                        return Err(LawError::Numerical(
-                            "the adhesive law answered exact stick (a bug; please report it)"
-                                .into(),
-                        ));
-                    }
-                    // DDTDDT(NFDIR,2): the law does not depend on temperature.
-                    self.write_answer(&up.contact, &coulomb_statev(&up.state), &[0.0; N]);
-                }
+                Law::Adhesive(law) => self.point_law::<N, _>(law, entry, nstatv)?,
+                Law::RateState(law) => self.point_law::<N, _>(law, entry, nstatv)?,
             }
+            Ok(())
+        }
+    }
+
+    /// One point through the law interface ([`PointLaw`]): `NSTATV` as the law needs it, the
+    /// increment (an `LM = 1` on entry read as 0 by a law without exact stick), the update,
+    /// the answer written.
+    ///
+    /// # Safety
+    /// As `fric_`, N = NFDIR, `NSTATV` equal to `nstatv`.
+    unsafe fn point_law<const N: usize, L: PointLaw>(
+        &self,
+        law: &L,
+        entry: EntryFlag,
+        nstatv: usize,
+    ) -> Result<(), LawError> {
+        // SAFETY (whole body): arrays of N, N·N, 2N and NSTATV entries per the FRIC contract.
+        unsafe {
+            let needed = law.nstatv(N);
+            if nstatv < needed {
+                return Err(short_nstatv_law(nstatv, needed));
+            }
+            let entry = if law.exact_stick() {
+                entry
+            } else {
+                EntryFlag::Motion
+            };
+            let inc = self.increment::<N, LawError>(entry)?;
+            let up = law.update_point(&inc, slice(self.statev, nstatv, "STATEV")?)?;
+            let half = up.dtau_dtheta.map(|d| 0.5 * d);
+            self.write_answer(&up.contact, &up.statev[..up.statev_len], &half);
+            self.lower_pnewdt(up.step_ratio);
             Ok(())
         }
     }
@@ -619,6 +642,15 @@ fn short_nstatv(nstatv: c_int) -> LawError {
         "NSTATV = {nstatv} but the Coulomb law needs {} state variables (*DEPVAR / the NSTATV \
          of *FRICTION, USER)",
         CoulombState::NSTATV
+    ))
+}
+
+#[cold]
+#[inline(never)]
+fn short_nstatv_law(nstatv: usize, needed: usize) -> LawError {
+    LawError::Parameter(format!(
+        "NSTATV = {nstatv} but the law of PROPS(1) needs {needed} state variables (*DEPVAR / \
+         the DEPVAR of *FRICTION, USER)"
     ))
 }
 

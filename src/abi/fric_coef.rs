@@ -94,6 +94,15 @@ impl CoefArgs {
                         "PROPS(1) = 2 (adhesive): only law 1 (Coulomb) is provided here".into(),
                     ));
                 }
+                // μ of rate-and-state friction depends on the state θ, which FRIC_COEF does
+                // not carry (no STATEV): fric_ serves it (docs/props.md, "Law 3").
+                other @ FrictionLaw::RateState(_) => {
+                    return Err(LawError::Parameter(format!(
+                        "{}: μ depends on the state variable θ, which FRIC_COEF has no STATEV \
+                         for; use FRIC (fric_)",
+                        other.name()
+                    )));
+                }
             };
             if n == 0 {
                 return Ok(());

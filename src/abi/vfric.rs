@@ -165,6 +165,12 @@ impl VfricArgs {
                     ));
                 }
                 FrictionLaw::Adhesive(_) => return Err(adhesive_refused()),
+                other @ FrictionLaw::RateState(_) => {
+                    return Err(LawError::Parameter(format!(
+                        "{}: VFRIC runs law 1 (Coulomb) only (docs/vfric.md)",
+                        other.name()
+                    )));
+                }
             };
             if n == 0 {
                 return Ok(());

@@ -36,6 +36,7 @@ pub mod gap_conductance;
 pub mod gap_radiation;
 pub mod interface_heat;
 mod parameter_range;
+pub mod point_law;
 pub mod pore_pressure;
 pub mod rate_state;
 pub mod scalar_root;
