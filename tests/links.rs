@@ -3,9 +3,11 @@
 //! nothing beside it has no design notes or source documents next to it, so a reference that
 //! climbs out of the checkout (`../../somewhere`) or names a file that is not here is a defect.
 //!
-//! What is scanned: the top-level `*.md`, everything under `docs/` (but charts), and every file
-//! under `src/`, `examples/`, `c_tests/`, `fortran_tests/`, `include/`, `tests/` (comments and
-//! strings alike; not this file, whose examples of bad references are not references). What is checked, per file:
+//! What is scanned: the top-level `*.md` and build files, everything under `docs/` (but
+//! charts), and every file under `src/`, `examples/`, `c_tests/`, `fortran_tests/`,
+//! `include/`, `tests/`, `macros/`, `bench/`, `mpi_tests/`, `scripts/`, `cmake/`, `fortran/`,
+//! `.ci/` and the fuzz targets' sources (comments and strings alike; not this file, whose
+//! examples of bad references are not references). What is checked, per file:
 //!
 //! 1. markdown links `[text](target)` in `.md` files: a target that is not a URL must name an
 //!    existing file or folder, resolved from the file's folder, inside the repository; an
@@ -46,7 +48,16 @@ const EXTENSIONS: &[&str] = &[
 ];
 
 /// Folders of an install prefix or of the build, named by the docs but not in the repository.
-const NOT_IN_THE_REPOSITORY: &[&str] = &["target/", "build/", "lib/", "share/", "include/"];
+/// (`fuzz/artifacts/` and `fuzz/corpus/` are written by `cargo fuzz`.)
+const NOT_IN_THE_REPOSITORY: &[&str] = &[
+    "target/",
+    "build/",
+    "lib/",
+    "share/",
+    "include/",
+    "fuzz/artifacts/",
+    "fuzz/corpus/",
+];
 
 /// Every file and folder of the repository (not `target/`, `build/`, `.git/`), by their paths
 /// from the root with `/` separators, folders ending in `/`.
@@ -331,6 +342,13 @@ fn collect(dir: &Path, out: &mut Vec<PathBuf>) {
     for entry in entries.flatten() {
         let path = entry.path();
         if path.is_dir() {
+            // Made by the build, not part of the repository.
+            if path
+                .file_name()
+                .is_some_and(|n| n == "target" || n == "build")
+            {
+                continue;
+            }
             collect(&path, out);
         } else {
             out.push(path);
@@ -350,6 +368,9 @@ fn scanned_files(root: &Path) -> Vec<PathBuf> {
             files.push(path);
         }
     }
+    for file in ["CMakeLists.txt", "Cargo.toml", "build.rs", "cbindgen.toml"] {
+        files.push(root.join(file));
+    }
     for dir in [
         "docs",
         "src",
@@ -358,6 +379,15 @@ fn scanned_files(root: &Path) -> Vec<PathBuf> {
         "fortran_tests",
         "include",
         "tests",
+        "macros",
+        "bench",
+        "mpi_tests",
+        "scripts",
+        "cmake",
+        "fortran",
+        ".ci",
+        "fuzz/src",
+        "fuzz/fuzz_targets",
     ] {
         collect(&root.join(dir), &mut files);
     }
