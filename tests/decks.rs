@@ -8,11 +8,18 @@
 //! Each committed fragment is then read back as a solver would read it (keyword lines, their
 //! parameters, the data lines after them; comments skipped) and checked by the library itself:
 //! the `PROPS` by the checked parser (`friction_law_checked`, the one that names the entry), the
-//! number of data values against `PROPERTIES=`, and for FRIC and UINTER one increment through
-//! the entry point with `NSTATV = DEPVAR` and the deck's interaction name, which must not be
-//! refused; GAPCON's interaction must have a law in the example configuration file.
+//! number of data values against `PROPERTIES=`, and one call of the entry point the fragment
+//! selects, which must not be refused: FRIC and UINTER one increment with `NSTATV = DEPVAR` and
+//! the deck's interaction name (UINTER's normal stress K_n·h), FRIC_COEF one point (μ against
+//! its closed form), VFRIC one point (the force μ·F_N); GAPCON's interaction must have a law in
+//! the example configuration file.
 
 use std::path::Path;
+
+#[path = "common/fric_coef.rs"]
+mod fric_coef_common;
+#[path = "common/vfric.rs"]
+mod vfric_common;
 
 use interfacial::abi::host::FricCall;
 use interfacial::abi::ifl_clear_error;
@@ -498,7 +505,8 @@ fn validate(routine: Routine, text: &str, config: &Config) -> Result<(), String>
                 Routine::Vfric if !matches!(law, FrictionLaw::Coulomb(_)) => {
                     Err("VFRIC takes the plain law-1 entries only (docs/vfric.md)".into())
                 }
-                _ => Ok(()),
+                Routine::Vfric => vfric_block(&props),
+                _ => fric_coef_block(&name, &props),
             }
         }
         Routine::Uinter => {
@@ -553,6 +561,74 @@ fn fric_increment(name: &str, props: &[f64], depvar: usize) -> Result<(), String
             call.lm,
             &call.tau[..2]
         ));
+    }
+    Ok(())
+}
+
+/// One point through `fric_coef_`: with the decay law (`PROPS(8) = 1`) μ must be its closed
+/// form μ_k + (μ_s − μ_k)·exp(−d_c·v) at the slip rate v, from the deck's own values; with
+/// constant μ, `PROPS(2)`.
+fn fric_coef_block(name: &str, props: &[f64]) -> Result<(), String> {
+    let entry = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
+    let rate = 0.25;
+    let mut coef = [0.0; 2];
+    let mut deriv = [0.0; 40];
+    let mut slip = [0.0; 6];
+    slip[0] = rate;
+    slip[1] = rate;
+    ifl_clear_error();
+    fric_coef_common::fric_coef_call(
+        &mut coef,
+        &mut deriv,
+        props,
+        &slip,
+        &[100.0],
+        &[20.0],
+        name.as_bytes(),
+    );
+    let error = FricCall::last_error();
+    if !error.is_empty() {
+        return Err(error);
+    }
+    let expected = if entry(8) == 1.0 {
+        entry(9) + (entry(2) - entry(9)) * (-entry(10) * rate).exp()
+    } else {
+        entry(2)
+    };
+    if (coef[0] - expected).abs() > 1e-14 * expected.abs() {
+        return Err(format!(
+            "FRIC_COEF answered mu = {}, expected {expected}",
+            coef[0]
+        ));
+    }
+    Ok(())
+}
+
+/// One contact point through `vfric_`: F = min(μ·F_N, F_stick) against the slip
+/// (docs/vfric.md), here with F_stick large so that it slips at μ·F_N.
+fn vfric_block(props: &[f64]) -> Result<(), String> {
+    use vfric_common::{Block, call};
+    type Real = interfacial::abi::vfric::IflReal;
+    let real: Vec<Real> = props.iter().map(|&v| v as Real).collect();
+    let (f_normal, f_stick): (Real, Real) = (100.0, 1000.0);
+    let expected = -(real[1] * f_normal).min(f_stick);
+    let block = Block {
+        nfricdir: 2,
+        props: real,
+        f_normal: vec![f_normal],
+        f_stick: vec![f_stick],
+        area: vec![1.0],
+        jconslvid: vec![1],
+    };
+    ifl_clear_error();
+    let ftan = call(&block);
+    let error = FricCall::last_error();
+    if !error.is_empty() {
+        return Err(error);
+    }
+    // Relative 1e-6: single precision with the explicit-single build.
+    if (ftan[0] - expected).abs() > 1e-6 * expected.abs() {
+        return Err(format!("VFRIC answered {}, expected {expected}", ftan[0]));
     }
     Ok(())
 }
