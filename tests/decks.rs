@@ -472,8 +472,16 @@ fn validate(routine: Routine, text: &str, config: &Config) -> Result<(), String>
             if gap.param("USER") != Some(None) || !gap.data.is_empty() {
                 return Err("*GAP CONDUCTANCE must be USER with no data lines".into());
             }
-            if config.gap_law(name.as_bytes()).is_none() {
+            let Some(law) = config.gap_law(name.as_bytes()) else {
                 return Err(format!("{CONFIG} has no conductance law for {name}"));
+            };
+            // A closed point at 1 MPa: a usable conductance.
+            let k = law
+                .evaluate(0.0, 1e6, 300.0, 290.0)
+                .map_err(|e| e.to_string())?
+                .k;
+            if !(k.is_finite() && k > 0.0) {
+                return Err(format!("{name}: conductance {k} at a closed point"));
             }
             Ok(())
         }
