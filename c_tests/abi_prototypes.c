@@ -1,6 +1,6 @@
 /*
  * Compile-time check of include/interfacial.h against the ABI written down by hand in
- * shared/design/abi.md: every exported function is redeclared here from the document, and C
+ * docs/calling-conventions.md: every exported function is redeclared here from the document, and C
  * requires a redeclaration to be compatible with the header's ("conflicting types" otherwise),
  * so a header that drifts from the Fortran calling convention breaks the build of ALL.
  *

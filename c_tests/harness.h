@@ -6,7 +6,7 @@
  * everything by reference, the three names as blank-padded CHARACTER buffers with their hidden
  * lengths (80 for CHARACTER*80) after the 39 explicit arguments.
  *
- * Every fh_call() also checks two invariants of the contract (shared/design/abi.md,
+ * Every fh_call() also checks two invariants of the contract (docs/calling-conventions.md,
  * docs/fric.md): nothing is written past NFDIR / NFDIR^2 / 2*NFDIR / NSTATV (guard slots keep
  * FH_GUARD), and no input argument is written.
  *

@@ -1,5 +1,5 @@
 /*
- * Scene F1, pull to plateau (shared/design/scenes.md), driven through fric_ the way a
+ * Scene F1, pull to plateau (docs/scene-definitions.md), driven through fric_ the way a
  * quasi-static host drives one contact point: increment k passes TAU = the stress returned by
  * increment k-1, DGAM = gamma(t_k) - gamma(t_{k-1}), STATEV from increment k-1, PNEWDT = 1e36.
  *

@@ -1,5 +1,5 @@
 /*
- * Scene F2, circle (shared/design/scenes.md), NFDIR = 2, driven through fric_ as a
+ * Scene F2, circle (docs/scene-definitions.md), NFDIR = 2, driven through fric_ as a
  * quasi-static host: the imposed slip follows a circle of radius R,
  *   gamma(theta) = R (cos theta, sin theta),  theta_k = k dtheta,  dtheta = 2 pi / N,
  * so DGAM_k = gamma(theta_k) - gamma(theta_{k-1}), a chord of length c = 2 R sin(dtheta/2)

@@ -1,5 +1,5 @@
 /*
- * Scene F3, the friction ellipse (shared/design/scenes.md; seed 000, anisotropic friction),
+ * Scene F3, the friction ellipse (docs/scene-definitions.md; seed 000, anisotropic friction),
  * NFDIR = 2, driven through fric_: mu1 = 0.5 (PROPS(2)), mu2 = 0.2 (PROPS(3)), p = 100,
  * gamma_crit = 1e-3, steady imposed slip DGAM = 0.3 gamma_crit d per increment along d at
  * twelve angles.

@@ -1,5 +1,5 @@
 /*
- * Scene F4, velocity steps (shared/design/scenes.md), driven through fric_ for the exponential
+ * Scene F4, velocity steps (docs/scene-definitions.md), driven through fric_ for the exponential
  * decay law mu(v) = mu_k + (mu_s - mu_k) exp(-d_c v) (PROPS(8) = 1, PROPS(9) = mu_k,
  * PROPS(10) = d_c): slip at piecewise-constant rates v = 0.05, 0.5, 0.2, 1.5 (DGAM = v DTIME d
  * per increment), NFDIR = 1 and 2, elastic and exact stick, mu at the end-of-increment rate

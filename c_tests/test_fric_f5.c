@@ -1,5 +1,5 @@
 /*
- * Scene F5, pressure ramp while sliding (shared/design/scenes.md), NFDIR = 1 and 2, driven
+ * Scene F5, pressure ramp while sliding (docs/scene-definitions.md), NFDIR = 1 and 2, driven
  * through fric_ as a quasi-static host: PRESS = p(t_k), DPRESS = p(t_k) - p(t_{k-1}), TAU and
  * STATEV carried over, steady imposed slip DGAM = 0.6 gamma_crit d per increment along a fixed
  * direction d (1-D, or 30 degrees in the tangent plane).

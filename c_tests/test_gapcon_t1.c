@@ -1,5 +1,5 @@
 /*
- * Scene T1, two bars in contact, steady (shared/design/scenes.md), solved the way a host FE
+ * Scene T1, two bars in contact, steady (docs/scene-definitions.md), solved the way a host FE
  * code solves it: Newton on the two interface temperatures (theta_A, theta_B), with the gap
  * conductance AK(1) from gapcon_ (Abaqus signature, CHARACTER*80 names, hidden lengths 80) and
  * the flux derivatives from ifl_gap_conductance.

@@ -1,5 +1,5 @@
 /*
- * Scene T2, radiating gap (shared/design/scenes.md), through gapcon_ (Abaqus signature) and
+ * Scene T2, radiating gap (docs/scene-definitions.md), through gapcon_ (Abaqus signature) and
  * ifl_gap_conductance.
  *
  * Two parallel plates at fixed surface temperatures theta_A, theta_B exchange

@@ -3,7 +3,7 @@ C     test_fric_bad_input.f -- fixed-form twin of the C bad-input
 C     harness: every documented bad input reaches FRIC from legacy
 C     Fortran 77 (INCLUDE 'ABA_PARAM.INC', plain CALL FRIC, no
 C     interface block), and each one must give the documented failure
-C     output (the common brief, "Failure"):
+C     output (docs/fric.md, "Bad input"):
 C       PNEWDT = 0.25 (only ever lowered); LM, TAU, STATEV unchanged;
 C       DDTDDG, DDTDDP, DSLIP, DDTDDT zeroed and SFD = 0 when NFDIR is
 C       1 or 2, no array written otherwise; entries past NFDIR / NSTATV

@@ -8,7 +8,7 @@ C     no interface block, no ISO_C_BINDING.  The library's fric_ has
 C     to link and answer unchanged.
 C
 C     Expected values are closed forms of the Coulomb law with elastic
-C     stick (shared/design/scenes.md, F1; the law in the common brief):
+C     stick (docs/scene-definitions.md, F1; docs/source-model.md):
 C       tau_crit = min(mu p, tau_max),  k_s = tau_crit/gamma_crit,
 C       stick: tau = k_s gamma_el,  slip: |tau| = tau_crit.
 C     Output arrays are declared longer than NFDIR (STATEV longer than

@@ -4,7 +4,7 @@
 ! 90 host would: a plain `call fric(...)` with the 39 Abaqus arguments, no interface block, no
 ! ISO_C_BINDING.
 !
-! Every assertion is a closed form (shared/design/scenes.md; the law in the common brief), a
+! Every assertion is a closed form (docs/scene-definitions.md; the law: docs/source-model.md), a
 ! central finite difference of TAU from repeated FRIC calls, or an invariant (SFD >= 0, guard
 ! entries untouched, PNEWDT never lowered). Symbols: p pressure, mu friction coefficient,
 ! gc = gamma_crit, k_s = tau_crit/gc, tau_crit = min(mu p, tau_max).

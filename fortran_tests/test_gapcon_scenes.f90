@@ -4,7 +4,7 @@
 ! native C function ifl_gap_conductance (derivatives GAPCON cannot return) and the last error
 ! are called through the ISO_C_BINDING interfaces of harness_tally.
 !
-! Scenario (shared/design/scenes.md, T1/T2; laws from configs/gapcon_good.toml, named by CTest's
+! Scenario (docs/scene-definitions.md, T1/T2; laws from configs/gapcon_good.toml, named by CTest's
 ! INTERFACIAL_CONFIG): bar A (L_A = 0.1, k_A = 50) held at theta_H = 400, bar B (L_B = 0.2,
 ! k_B = 15) at theta_C = 300, gap between the interface temperatures theta_A and theta_B.
 !

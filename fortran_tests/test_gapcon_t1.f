@@ -5,7 +5,7 @@ C     Fortran 77, INCLUDE 'ABA_PARAM.INC', CHARACTER*80 names and a
 C     plain CALL GAPCON(...) with the 15 Abaqus arguments; no interface
 C     block, no ISO_C_BINDING.
 C
-C     Scene T1 (shared/design/scenes.md): bar A (L_A = 0.1, k_A = 50)
+C     Scene T1 (docs/scene-definitions.md): bar A (L_A = 0.1, k_A = 50)
 C     held at theta_H = 400 on its far end, bar B (L_B = 0.2, k_B = 15)
 C     at theta_C = 300, gap conductance h between the interface
 C     temperatures theta_A, theta_B.  The host solves the steady state

@@ -4,9 +4,9 @@
 //! shell of Abaqus-compatible, Fortran-callable entry points (`fric_`, …) and a native C API
 //! (`ifl_*`).
 //!
-//! The physics follows the source documents in `shared/seeds/` (section 5.2.3 "Coulomb
-//! friction" for [`laws::coulomb`]). Each law lives in one file under [`laws`]; the entry points
-//! live in `abi`, the only module allowed to use `unsafe`.
+//! The physics follows the source documents restated in `docs/source-model.md` (seed 000,
+//! section 5.2.3 "Coulomb friction" for [`laws::coulomb`]). Each law lives in one file under
+//! [`laws`]; the entry points live in `abi`, the only module allowed to use `unsafe`.
 //!
 //! ```
 //! use interfacial::laws::coulomb::{Coulomb, CoulombState, Increment, Contact};

@@ -1,5 +1,5 @@
 //! The checked-in C header must be exactly what cbindgen generates from the sources, and the
-//! exported functions must have the signatures of `shared/design/abi.md`.
+//! exported functions must have the signatures of `docs/calling-conventions.md`.
 
 use std::ffi::{c_char, c_int};
 use std::path::Path;

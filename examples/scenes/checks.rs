@@ -1,4 +1,4 @@
-//! Closed-form checks: the friction, thermal and adhesive scenes of `shared/design/scenes.md`
+//! Closed-form checks: the friction, thermal and adhesive scenes of `docs/scene-definitions.md`
 //! driven increment by increment through `fric_`, `gapcon_` and `uinter_` (the entry points a
 //! Fortran host calls), one row per checked quantity, each compared with its closed-form answer.
 

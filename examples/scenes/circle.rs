@@ -1,4 +1,4 @@
-//! F2, the circle (`shared/design/scenes.md`): constant pressure, slip imposed along a circle of
+//! F2, the circle (`docs/scene-definitions.md`): constant pressure, slip imposed along a circle of
 //! radius R ≫ γ_crit with N increments per turn (NFDIR = 2). In the steady state |τ| = μp and τ
 //! lags behind the slip direction by φ, sin φ = γ_crit/R; the backward-Euler return map reaches
 //! it at first order in the step Δθ = 2π/N.

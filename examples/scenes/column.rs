@@ -1,4 +1,4 @@
-//! Scene P1 (shared/design/scenes.md): a 1-D column of two porous layers joined by the interface
+//! Scene P1 (docs/scene-definitions.md): a 1-D column of two porous layers joined by the interface
 //! pore-pressure kernel (`ifl_pore_pressure`, seed 000), with a small host of its own:
 //! - linear 1-D u–p elements (settlement w and excess pore pressure p at every node; Terzaghi's
 //!   assumptions: incompressible grains and fluid, constrained modulus M, Darcy flux

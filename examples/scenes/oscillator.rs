@@ -1,4 +1,4 @@
-//! F6, the stick-slip oscillator (`shared/design/scenes.md`): a block of mass m on a belt moving
+//! F6, the stick-slip oscillator (`docs/scene-definitions.md`): a block of mass m on a belt moving
 //! at v₀, a spring k to a wall, normal force N, static μ_s and kinetic μ_k. The friction force
 //! comes from `fric_` (unit contact area, so τ is a force and PRESS = N); the host integrates
 //! m·ẍ = −k·x + τ with the relative slip γ = v₀·t − x (belt minus block).

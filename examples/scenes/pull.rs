@@ -1,4 +1,4 @@
-//! F1 with a host (`shared/design/scenes.md`, pull to plateau): a spring of stiffness K pulls
+//! F1 with a host (`docs/scene-definitions.md`, pull to plateau): a spring of stiffness K pulls
 //! the slider, its far end driven quasi-statically to u = +U and back to −U, at constant pressure
 //! p. The host solves equilibrium K(u − γ) = τ(γ) for the slider displacement γ each increment
 //! (Newton with `DDTDDG` for elastic stick; Lagrange multiplier = spring force for exact stick).

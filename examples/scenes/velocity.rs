@@ -1,4 +1,4 @@
-//! F4, velocity steps (`shared/design/scenes.md`): constant pressure, slip driven at
+//! F4, velocity steps (`docs/scene-definitions.md`): constant pressure, slip driven at
 //! piecewise-constant rates v₁, v₂, … (each held for `hold` time units, NFDIR = 1), with a
 //! rate-dependent law. Rigid-stick closed form: τ(t) = τ_law(v(t)) at every instant, with
 //!

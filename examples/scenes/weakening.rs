@@ -1,4 +1,4 @@
-//! F7, steady sliding under velocity weakening (`shared/design/scenes.md`, issue 16): one point
+//! F7, steady sliding under velocity weakening (`docs/scene-definitions.md`, issue 16): one point
 //! driven at a constant slip velocity v with increments Δγ = r·γ_crit at constant pressure p,
 //! law 1 with the exponential decay law μ(v) = μ_k + (μ_s − μ_k)·exp(−d_c·v). The answer is
 //! steady sliding at τ = μ(v)·p for every r. Compared: the library's formulation (rate-following
