@@ -34,6 +34,7 @@ mod findings;
 mod oscillator;
 mod pull;
 mod rate_map;
+mod rate_state;
 mod scene;
 mod stability;
 mod velocity;
@@ -344,6 +345,16 @@ fn main() {
         progress.tick("closed-form checks (F1-F5, T1, T2, A1)");
         match checks::run() {
             Ok(rows) => check_rows = rows,
+            Err(e) => {
+                eprintln!("\nscenes: {e}");
+                std::process::exit(2);
+            }
+        }
+    }
+    // R1 and R2, rate-and-state friction (examples/scenes/rate_state.rs): rows join the checks.
+    if opts.point.is_none() {
+        match rate_state::run(&opts.out, opts.quick) {
+            Ok(rows) => check_rows.extend(rows),
             Err(e) => {
                 eprintln!("\nscenes: {e}");
                 std::process::exit(2);
