@@ -16,7 +16,7 @@
 ! the object with libinterfacial. docs/install.md has the details.
 module interfacial
   use, intrinsic :: iso_c_binding, only: c_char, c_double, c_int, c_null_ptr, &
-    c_ptr, c_size_t, c_associated, c_f_pointer, c_loc, c_null_char
+    c_ptr, c_size_t, c_associated, c_f_pointer, c_loc, c_null_char, c_funptr
   implicit none
   private
 
@@ -66,6 +66,48 @@ module interfacial
   public :: ifl_props_law_count, ifl_props_law_code, ifl_props_entry_count, ifl_props_entry_c, &
     ifl_props_check
   public :: ifl_props_check_text, ifl_c_string
+
+  ! struct IflFricInput / IflFricOutput: one FRIC point by FRIC's argument names (docs/c-api.md).
+  ! Arrays sized for NFDIR = 2, column-major; interaction is c_loc of a NUL-terminated name or
+  ! c_null_ptr, props and statev c_loc of the arrays (statev written on success).
+  type, bind(C), public :: ifl_fric_input
+    integer(c_int) :: lm = 0
+    integer(c_int) :: nfdir = 2
+    real(c_double) :: tau(2) = 0
+    real(c_double) :: dgam(2) = 0
+    real(c_double) :: taulm(2) = 0
+    real(c_double) :: press = 0
+    real(c_double) :: dpress = 0
+    real(c_double) :: dtime = 1
+    real(c_double) :: chrlngth = 1
+    real(c_double) :: temp(2) = 0
+    real(c_double) :: drot(4) = [1.0_c_double, 0.0_c_double, 0.0_c_double, 1.0_c_double]
+    real(c_double) :: coords(3) = 0
+    integer(c_int) :: mcrd = 3
+    integer(c_int) :: noel = 0
+    integer(c_int) :: npt = 0
+    integer(c_int) :: node = 0
+    type(c_ptr) :: interaction = c_null_ptr
+    type(c_ptr) :: props = c_null_ptr
+    integer(c_int) :: nprops = 0
+    type(c_ptr) :: statev = c_null_ptr
+    integer(c_int) :: nstatv = 0
+    real(c_double) :: pnewdt = 1.0e36_c_double
+  end type ifl_fric_input
+
+  type, bind(C), public :: ifl_fric_output
+    integer(c_int) :: lm = 0
+    real(c_double) :: tau(2) = 0
+    real(c_double) :: ddtddg(4) = 0
+    real(c_double) :: ddtddp(2) = 0
+    real(c_double) :: dslip(2) = 0
+    real(c_double) :: sed = 0
+    real(c_double) :: sfd = 0
+    real(c_double) :: ddtddt(4) = 0
+    real(c_double) :: pnewdt = 0
+  end type ifl_fric_output
+
+  public :: ifl_fric_point, ifl_set_message_handler
   public :: ifl_fric_batch, ifl_forced_sliding, ifl_version, ifl_last_error, &
     ifl_last_error_copy, ifl_clear_error, ifl_gap_conductance_c, ifl_gap_conductance_n, &
     ifl_pore_pressure_c, ifl_pore_pressure_n
@@ -205,6 +247,23 @@ module interfacial
       integer(c_size_t), intent(out) :: message_len
       integer(c_int) :: status
     end function ifl_props_check
+
+    ! One FRIC point with named inputs and outputs: fric_ itself, bit for bit.
+    function ifl_fric_point(input, output) result(status) bind(C, name='ifl_fric_point')
+      import :: c_int, ifl_fric_input, ifl_fric_output
+      type(ifl_fric_input), intent(in) :: input
+      type(ifl_fric_output), intent(out) :: output
+      integer(c_int) :: status
+    end function ifl_fric_point
+
+    ! handler: c_funloc of a bind(C) subroutine (msg, len, user) with msg type(c_ptr), value
+    ! (NUL-terminated), len integer(c_size_t), value, user type(c_ptr), value; or c_null_funptr
+    ! to send messages to stderr (or INTERFACIAL_LOG) again.
+    subroutine ifl_set_message_handler(handler, user) bind(C, name='ifl_set_message_handler')
+      import :: c_funptr, c_ptr
+      type(c_funptr), value :: handler
+      type(c_ptr), value :: user
+    end subroutine ifl_set_message_handler
   end interface
 
   ! The thermal law of an interaction by its Fortran name (blank-padded, no NUL).
