@@ -13,6 +13,7 @@ pub fn bases() -> Vec<Vec<f64>> {
             .gamma_crit(1e-3)
             .build_first(5),
         CoulombBuilder::new().mu(0.3).build_first(7),
+        CoulombBuilder::new().mu(0.3).stick(1.0).build_first(7),
         CoulombBuilder::new().mu(0.4).mu2(0.2).build(),
         CoulombBuilder::new()
             .mu(0.5)
