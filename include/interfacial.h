@@ -291,7 +291,7 @@ typedef struct IflPropsEntry {
    */
   double default_value;
   /**
-   * 1 when the entry must be given (`NPROPS` must reach it), else 0.
+   * 1 when the entry must be given (`NPROPS` must reach it) where this row holds, else 0.
    */
   int required;
   /**
