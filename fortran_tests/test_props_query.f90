@@ -60,5 +60,7 @@ program test_props_query
   call check(index(fric_msg, '): '//msg) > 0 .and. &
     len_trim(fric_msg) == index(fric_msg, '): '//msg) + 2 + len(msg), &
     'FRIC''s message ends with the check''s')
+  ! A main program's allocatable is not freed at its end (valgrind would call it lost).
+  deallocate (msg)
   call finish()
 end program test_props_query
