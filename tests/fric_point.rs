@@ -10,6 +10,8 @@ use proptest::prelude::*;
 
 #[path = "common/drawn_props.rs"]
 mod drawn_props;
+#[path = "common/laws.rs"]
+mod laws;
 use drawn_props::{VALUES, bases};
 
 /// One drawn point: the `fric_` call (as a host makes it) that `ifl_fric_point` must match.
@@ -55,18 +57,36 @@ fn by_fric(p: &Point) -> (Vec<u64>, String) {
     c.dslip = [0.0; 4];
     ifl_clear_error();
     c.call();
-    let n = p.nfdir.clamp(0, 2) as usize;
-    let mut bits = vec![u64::from(c.lm as u32)];
+    // fric_'s arrays have FRIC's layout (stride NFDIR), as the struct's do.
+    let mut out = IflFricOutput {
+        lm: c.lm,
+        sed: c.sed,
+        sfd: c.sfd,
+        pnewdt: c.pnewdt,
+        ..IflFricOutput::default()
+    };
+    out.tau.copy_from_slice(&c.tau[..2]);
+    out.ddtddg.copy_from_slice(&c.ddtddg[..4]);
+    out.ddtddp.copy_from_slice(&c.ddtddp[..2]);
+    out.dslip.copy_from_slice(&c.dslip[..2]);
+    out.ddtddt.copy_from_slice(&c.ddtddt[..4]);
+    (bits(&out, p.nfdir, &c.statev), FricCall::last_error())
+}
+
+/// What a point's answer holds for `nfdir` directions, and `STATEV`, as bits.
+fn bits(out: &IflFricOutput, nfdir: i32, statev: &[f64]) -> Vec<u64> {
+    let n = nfdir.clamp(0, 2) as usize;
+    let mut bits = vec![u64::from(out.lm as u32)];
     let mut put = |v: &[f64]| bits.extend(v.iter().map(|x| x.to_bits()));
-    put(&c.tau[..n]);
-    put(&c.ddtddg[..n * n]);
-    put(&c.ddtddp[..n]);
-    put(&c.dslip[..n]);
-    put(&[c.sed, c.sfd]);
-    put(&c.ddtddt[..2 * n]);
-    put(&[c.pnewdt]);
-    put(&c.statev);
-    (bits, FricCall::last_error())
+    put(&out.tau[..n]);
+    put(&out.ddtddg[..n * n]);
+    put(&out.ddtddp[..n]);
+    put(&out.dslip[..n]);
+    put(&[out.sed, out.sfd]);
+    put(&out.ddtddt[..2 * n]);
+    put(&[out.pnewdt]);
+    put(statev);
+    bits
 }
 
 /// The `ifl_fric_point` answer, in the same order, with its status.
@@ -101,18 +121,7 @@ fn by_point(p: &Point) -> (Vec<u64>, String, IflStatus) {
     ifl_clear_error();
     // SAFETY: PROPS and STATEV hold NPROPS and NSTATV entries; the name is NUL-terminated.
     let st = unsafe { ifl_fric_point(&input, &mut out) };
-    let n = p.nfdir.clamp(0, 2) as usize;
-    let mut bits = vec![u64::from(out.lm as u32)];
-    let mut put = |v: &[f64]| bits.extend(v.iter().map(|x| x.to_bits()));
-    put(&out.tau[..n]);
-    put(&out.ddtddg[..n * n]);
-    put(&out.ddtddp[..n]);
-    put(&out.dslip[..n]);
-    put(&[out.sed, out.sfd]);
-    put(&out.ddtddt[..2 * n]);
-    put(&[out.pnewdt]);
-    put(&statev);
-    (bits, FricCall::last_error(), st)
+    (bits(&out, p.nfdir, &statev), FricCall::last_error(), st)
 }
 
 #[track_caller]

@@ -16,6 +16,8 @@ use proptest::prelude::*;
 
 #[path = "common/drawn_props.rs"]
 mod drawn_props;
+#[path = "common/laws.rs"]
+mod laws;
 use drawn_props::{VALUES, bases};
 
 fn text(p: *const c_char) -> String {

@@ -1,7 +1,7 @@
 //! `PROPS` arrays the property tests of the C API draw (tests/props_query.rs,
 //! tests/fric_point.rs; included by path): a valid base of either law, one per kind of layout
 //! the readers tell apart, with a few entries set to values valid in some entries and not in
-//! others.
+//! others. The including test also includes `common/laws.rs` as `laws`.
 
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 
@@ -21,15 +21,7 @@ pub fn bases() -> Vec<Vec<f64>> {
             .mu_k(0.2)
             .decay(2.0)
             .build(),
-        CoulombBuilder::new()
-            .mu(0.5)
-            .mu_law(1.0)
-            .mu_k(0.2)
-            .decay(2.0)
-            .p_ref(100.0)
-            .b_theta(0.01)
-            .theta_ref(20.0)
-            .build(),
+        super::laws::every_mu_law(0.5, 0.0).build(),
         CoulombBuilder::new().mu(0.3).mu_law(2.0).build(),
         CoulombBuilder::new()
             .mu(0.3)
