@@ -251,7 +251,9 @@ module interfacial
     ! One FRIC point with named inputs and outputs: fric_ itself, bit for bit.
     function ifl_fric_point(input, output) result(status) bind(C, name='ifl_fric_point')
       import :: c_int, ifl_fric_input, ifl_fric_output
-      type(ifl_fric_input), intent(in) :: input
+      ! No intent(in): the callee writes STATEV through input%statev (with intent(in) gfortran may
+      ! take what the struct points to as unchanged by the call).
+      type(ifl_fric_input) :: input
       type(ifl_fric_output), intent(out) :: output
       integer(c_int) :: status
     end function ifl_fric_point
