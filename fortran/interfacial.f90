@@ -8,14 +8,15 @@
 !   module gets a compile-time type mismatch instead of corrupted integers;
 ! - Fortran wrappers that take character(*) names (no NUL needed) and return text as
 !   character(:), allocatable: ifl_gap_conductance(name, ...), ifl_pore_pressure(name, ...),
-!   ifl_last_error_message(), ifl_version_string().
+!   ifl_last_error_message(), ifl_version_string(), ifl_props_check_text(props, nprops, name,
+!   message), and ifl_c_string(p) for the C texts of an ifl_props_entry.
 !
 ! Installed as interfacial.mod (for the gfortran that built it) next to interfacial.h, and as
 ! this source in share/interfacial/fortran/ for other compilers: compile it with yours and link
 ! the object with libinterfacial. docs/install.md has the details.
 module interfacial
   use, intrinsic :: iso_c_binding, only: c_char, c_double, c_int, c_null_ptr, &
-    c_ptr, c_size_t, c_associated, c_f_pointer, c_loc
+    c_ptr, c_size_t, c_associated, c_f_pointer, c_loc, c_null_char, c_funptr
   implicit none
   private
 
@@ -46,6 +47,67 @@ module interfacial
     integer(c_int) :: per_side = 0
   end type ifl_pore_pressure_variant
 
+  ! struct IflPropsEntry: one row of a law's PROPS table (docs/props.md); the texts are C
+  ! pointers to static NUL-terminated UTF-8 (ifl_c_string(p) gives them as Fortran text).
+  type, bind(C), public :: ifl_props_entry
+    integer(c_int) :: index = 0
+    type(c_ptr) :: key = c_null_ptr
+    integer(c_int) :: seed_name = 0
+    type(c_ptr) :: symbol = c_null_ptr
+    type(c_ptr) :: unit = c_null_ptr
+    type(c_ptr) :: meaning = c_null_ptr
+    type(c_ptr) :: default_text = c_null_ptr
+    real(c_double) :: default_value = 0
+    integer(c_int) :: required = 0
+    type(c_ptr) :: valid = c_null_ptr
+    type(c_ptr) :: when = c_null_ptr
+  end type ifl_props_entry
+
+  public :: ifl_props_law_count, ifl_props_law_code, ifl_props_entry_count, ifl_props_entry_c, &
+    ifl_props_check
+  public :: ifl_props_check_text, ifl_c_string
+
+  ! struct IflFricInput / IflFricOutput: one FRIC point by FRIC's argument names (docs/c-api.md).
+  ! Arrays sized for NFDIR = 2, column-major; interaction is c_loc of a NUL-terminated name or
+  ! c_null_ptr, props and statev c_loc of the arrays (statev written on success).
+  type, bind(C), public :: ifl_fric_input
+    integer(c_int) :: lm = 0
+    integer(c_int) :: nfdir = 2
+    real(c_double) :: tau(2) = 0
+    real(c_double) :: dgam(2) = 0
+    real(c_double) :: taulm(2) = 0
+    real(c_double) :: press = 0
+    real(c_double) :: dpress = 0
+    real(c_double) :: dtime = 1
+    real(c_double) :: chrlngth = 1
+    real(c_double) :: temp(2) = 0
+    real(c_double) :: drot(4) = [1.0_c_double, 0.0_c_double, 0.0_c_double, 1.0_c_double]
+    real(c_double) :: coords(3) = 0
+    integer(c_int) :: mcrd = 3
+    integer(c_int) :: noel = 0
+    integer(c_int) :: npt = 0
+    integer(c_int) :: node = 0
+    type(c_ptr) :: interaction = c_null_ptr
+    type(c_ptr) :: props = c_null_ptr
+    integer(c_int) :: nprops = 0
+    type(c_ptr) :: statev = c_null_ptr
+    integer(c_int) :: nstatv = 0
+    real(c_double) :: pnewdt = 1.0e36_c_double
+  end type ifl_fric_input
+
+  type, bind(C), public :: ifl_fric_output
+    integer(c_int) :: lm = 0
+    real(c_double) :: tau(2) = 0
+    real(c_double) :: ddtddg(4) = 0
+    real(c_double) :: ddtddp(2) = 0
+    real(c_double) :: dslip(2) = 0
+    real(c_double) :: sed = 0
+    real(c_double) :: sfd = 0
+    real(c_double) :: ddtddt(4) = 0
+    real(c_double) :: pnewdt = 0
+  end type ifl_fric_output
+
+  public :: ifl_fric_point, ifl_set_message_handler
   public :: ifl_fric_batch, ifl_forced_sliding, ifl_version, ifl_last_error, &
     ifl_last_error_copy, ifl_clear_error, ifl_gap_conductance_c, ifl_gap_conductance_n, &
     ifl_pore_pressure_c, ifl_pore_pressure_n
@@ -145,6 +207,65 @@ module interfacial
       real(c_double), intent(out) :: residual(4), tangent(4, 4), geometric(4)
       integer(c_int) :: status
     end function ifl_pore_pressure_n
+
+    ! The PROPS layouts (docs/c-api.md): laws, rows of a law's table, a check without an
+    ! increment. law is the code PROPS(1); i counts from 0.
+    function ifl_props_law_count() result(n) bind(C, name='ifl_props_law_count')
+      import :: c_int
+      integer(c_int) :: n
+    end function ifl_props_law_count
+
+    function ifl_props_law_code(i) result(code) bind(C, name='ifl_props_law_code')
+      import :: c_int
+      integer(c_int), value :: i
+      integer(c_int) :: code
+    end function ifl_props_law_code
+
+    function ifl_props_entry_count(law) result(n) bind(C, name='ifl_props_entry_count')
+      import :: c_int
+      integer(c_int), value :: law
+      integer(c_int) :: n
+    end function ifl_props_entry_count
+
+    ! ifl_props_entry in C (a Fortran name would clash with the type ifl_props_entry).
+    function ifl_props_entry_c(law, i, out) result(status) bind(C, name='ifl_props_entry')
+      import :: c_int, ifl_props_entry
+      integer(c_int), value :: law, i
+      type(ifl_props_entry), intent(inout) :: out
+      integer(c_int) :: status
+    end function ifl_props_entry_c
+
+    ! interaction: c_loc of a NUL-terminated name or c_null_ptr; message: c_loc of capacity
+    ! writable characters or c_null_ptr. ifl_props_check_text below does all of that.
+    function ifl_props_check(props, nprops, interaction, message, capacity, message_len) &
+        result(status) bind(C, name='ifl_props_check')
+      import :: c_double, c_int, c_ptr, c_size_t
+      real(c_double), intent(in) :: props(*)
+      integer(c_int), value :: nprops
+      type(c_ptr), value :: interaction, message
+      integer(c_size_t), value :: capacity
+      integer(c_size_t), intent(out) :: message_len
+      integer(c_int) :: status
+    end function ifl_props_check
+
+    ! One FRIC point with named inputs and outputs: fric_ itself, bit for bit.
+    function ifl_fric_point(input, output) result(status) bind(C, name='ifl_fric_point')
+      import :: c_int, ifl_fric_input, ifl_fric_output
+      ! No intent(in): the callee writes STATEV through input%statev (with intent(in) gfortran may
+      ! take what the struct points to as unchanged by the call).
+      type(ifl_fric_input) :: input
+      type(ifl_fric_output), intent(out) :: output
+      integer(c_int) :: status
+    end function ifl_fric_point
+
+    ! handler: c_funloc of a bind(C) subroutine (msg, len, user) with msg type(c_ptr), value
+    ! (NUL-terminated), len integer(c_size_t), value, user type(c_ptr), value; or c_null_funptr
+    ! to send messages to stderr (or INTERFACIAL_LOG) again.
+    subroutine ifl_set_message_handler(handler, user) bind(C, name='ifl_set_message_handler')
+      import :: c_funptr, c_ptr
+      type(c_funptr), value :: handler
+      type(c_ptr), value :: user
+    end subroutine ifl_set_message_handler
   end interface
 
   ! The thermal law of an interaction by its Fortran name (blank-padded, no NUL).
@@ -284,6 +405,40 @@ contains
       text(i:i) = buf(i)
     end do
   end function ifl_last_error_message
+
+  !> ifl_props_check_text(props, nprops, name, message): checks PROPS(1:nprops) as FRIC reads
+  !> it for interaction `name` (trailing blanks ignored); returns an IFL_STATUS_* value and, in
+  !> message, '' or the cause FRIC would report, word for word.
+  function ifl_props_check_text(props, nprops, interaction, message) result(status)
+    real(c_double), intent(in) :: props(*)
+    integer(c_int), intent(in) :: nprops
+    character(len=*), intent(in) :: interaction
+    character(len=:), allocatable, intent(out) :: message
+    integer(c_int) :: status
+    character(kind=c_char), target :: name(len_trim(interaction) + 1)
+    character(kind=c_char), allocatable, target :: buf(:)
+    integer(c_size_t) :: n, got
+    integer :: i
+    n = 0
+    do i = 1, len_trim(interaction)
+      name(i) = interaction(i:i)
+    end do
+    name(size(name)) = c_null_char
+    status = ifl_props_check(props, nprops, c_loc(name), c_null_ptr, 0_c_size_t, n)
+    allocate (buf(n + 1))
+    status = ifl_props_check(props, nprops, c_loc(name), c_loc(buf), n + 1, got)
+    allocate (character(len=n) :: message)
+    do i = 1, int(n)
+      message(i:i) = buf(i)
+    end do
+  end function ifl_props_check_text
+
+  !> A NUL-terminated C text (an ifl_props_entry's fields) as Fortran text; '' for NULL.
+  function ifl_c_string(p) result(text)
+    type(c_ptr), intent(in) :: p
+    character(len=:), allocatable :: text
+    text = from_c(p)
+  end function ifl_c_string
 
   !> The library version, e.g. '0.1.0' ('0.1.0+calculix' for the CalculiX variant).
   function ifl_version_string() result(text)

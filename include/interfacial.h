@@ -40,6 +40,157 @@ typedef enum IflStatus {
 } IflStatus;
 
 /**
+ * The inputs of one `fric_` point, by FRIC's argument names (lower case). Arrays are
+ * column-major as in Fortran, sized for `NFDIR = 2`; with `nfdir = 1` only the first entry of
+ * each direction is read. `statev` is read and, on success, written with the end-of-increment
+ * state.
+ */
+typedef struct IflFricInput {
+  /**
+   * `LM` on entry: 0 relative motion, 1 exact stick (then `taulm` is read), 2 frictionless
+   * (nothing is computed or written).
+   */
+  int lm;
+  /**
+   * `NFDIR`: 1 (2-D) or 2 (3-D).
+   */
+  int nfdir;
+  /**
+   * `TAU(NFDIR)` at the start of the increment.
+   */
+  double tau[2];
+  /**
+   * `DGAM(NFDIR)`: the slip increment.
+   */
+  double dgam[2];
+  /**
+   * `TAULM(NFDIR)`: the stick stress the host's Lagrange multiplier gives (read with `LM = 1`).
+   */
+  double taulm[2];
+  /**
+   * `PRESS`: contact pressure at the end of the increment.
+   */
+  double press;
+  /**
+   * `DPRESS`: its increment.
+   */
+  double dpress;
+  /**
+   * `DTIME`: time increment.
+   */
+  double dtime;
+  /**
+   * `CHRLNGTH`: characteristic length of the contact surface.
+   */
+  double chrlngth;
+  /**
+   * `TEMP(2)`: surface temperatures (read when μ depends on temperature).
+   */
+  double temp[2];
+  /**
+   * `DROT(2,2)`: rotation increment, column-major (read only with damping, `PROPS(17)` > 0).
+   */
+  double drot[4];
+  /**
+   * `COORDS(MCRD)`: the point's coordinates (read only by steady-state transport).
+   */
+  double coords[3];
+  /**
+   * `MCRD`: how many of `coords` are given (1 to 3).
+   */
+  int mcrd;
+  /**
+   * `NOEL`, `NPT`, `NODE`: where the point is, for messages.
+   */
+  int noel;
+  /**
+   * See `noel`.
+   */
+  int npt;
+  /**
+   * See `noel`.
+   */
+  int node;
+  /**
+   * `CINAME`: the interaction, NUL-terminated (its μ table with `PROPS(8) = 2`); NULL for a
+   * blank name.
+   */
+  const char *interaction;
+  /**
+   * `PROPS(NPROPS)` (docs/props.md).
+   */
+  const double *props;
+  /**
+   * `NPROPS`.
+   */
+  int nprops;
+  /**
+   * `STATEV(NSTATV)`: read, and written on success.
+   */
+  double *statev;
+  /**
+   * `NSTATV`.
+   */
+  int nstatv;
+  /**
+   * `PNEWDT` on entry (the host's current ratio; `fric_` only ever lowers it).
+   */
+  double pnewdt;
+} IflFricInput;
+
+/**
+ * The outputs of one `fric_` point, by FRIC's argument names. `ifl_fric_point` first sets
+ * `lm`, `tau` and `pnewdt` to the inputs' values and everything else to 0, then lets `fric_`
+ * write what it writes (docs/fric.md): what `fric_` leaves alone (with `LM = 1` or 2, or on a
+ * failure) keeps those values.
+ */
+typedef struct IflFricOutput {
+  /**
+   * `LM` on exit.
+   */
+  int lm;
+  /**
+   * `TAU(NFDIR)` at the end of the increment.
+   */
+  double tau[2];
+  /**
+   * `DDTDDG(NFDIR,NFDIR)`: `DDTDDG(a,b)` at `[(a-1) + (b-1)*nfdir]`.
+   */
+  double ddtddg[4];
+  /**
+   * `DDTDDP(NFDIR)`.
+   */
+  double ddtddp[2];
+  /**
+   * `DSLIP(NFDIR)`.
+   */
+  double dslip[2];
+  /**
+   * `SED`: elastic energy density.
+   */
+  double sed;
+  /**
+   * `SFD`: frictional dissipation increment.
+   */
+  double sfd;
+  /**
+   * `DDTDDT(NFDIR,2)`: `DDTDDT(a,b)` at `[(a-1) + (b-1)*nfdir]`.
+   */
+  double ddtddt[4];
+  /**
+   * `PNEWDT` on exit.
+   */
+  double pnewdt;
+} IflFricOutput;
+
+/**
+ * A host's receiver of messages: `msg` is one whole message, NUL-terminated UTF-8 without a
+ * newline, `len` its length in bytes without the NUL, `user` the pointer given to
+ * `ifl_set_message_handler`. `msg` is valid only during the call: copy it to keep it.
+ */
+typedef void (*IflMessageHandler)(const char *msg, size_t len, void *user);
+
+/**
  * Gap conductance and its derivatives (seed 000, section 5.2.4): q = k·(θ_A − θ_B).
  */
 typedef struct IflConductance {
@@ -97,6 +248,61 @@ typedef struct IflPorePressureVariant {
    */
   int per_side;
 } IflPorePressureVariant;
+
+/**
+ * One row of a law's `PROPS` table (docs/props.md), as `ifl_props_entry` writes it. Every text
+ * is NUL-terminated UTF-8 in static storage: valid for the program's life, never freed. An
+ * entry whose meaning depends on another entry (law 1's `PROPS(14..16)` under steady-state
+ * transport) has one row per meaning, `when` saying which holds.
+ */
+typedef struct IflPropsEntry {
+  /**
+   * `PROPS(index)`, numbered from 1 as in Fortran.
+   */
+  int index;
+  /**
+   * The entry's name: the builders' and the decks' key, the seed's own name when
+   * `seed_name` is 1.
+   */
+  const char *key;
+  /**
+   * 1 when `key` is the seed's parameter name, else 0.
+   */
+  int seed_name;
+  /**
+   * The symbol ("μ_s"), or "" for none.
+   */
+  const char *symbol;
+  /**
+   * The unit (dimension: "stress", "1/time"), or "" for a pure number.
+   */
+  const char *unit;
+  /**
+   * What the entry is, with what each value of a switch means and a note.
+   */
+  const char *meaning;
+  /**
+   * What 0 or absent means, in words ("0.005", "μ₂ = μ", "— (required)").
+   */
+  const char *default_text;
+  /**
+   * The number 0 or absent stands for, when it is one number; NaN otherwise (the entry is
+   * required, or its default is another entry or a function of one: see `default_text`).
+   */
+  double default_value;
+  /**
+   * 1 when the entry must be given (`NPROPS` must reach it) where this row holds, else 0.
+   */
+  int required;
+  /**
+   * The values it accepts, with the rules that tie it to other entries.
+   */
+  const char *valid;
+  /**
+   * When this meaning holds: "PROPS(7) = 3", "PROPS(7) ≠ 3", or "" for always.
+   */
+  const char *when;
+} IflPropsEntry;
 
 #if !defined(INTERFACIAL_EXPLICIT_SINGLE)
 /**
@@ -315,6 +521,19 @@ void fric_coef_(double *fcoef,
                 size_t surf_sec_len,
                 size_t surf_main_len);
 
+/**
+ * One friction point: `fric_` with the arguments named in `*input`, its answer in `*output`.
+ * Bit for bit what `fric_` gives for the same arguments (it is the same call), refusals,
+ * `PNEWDT` and messages included; the messages name FRIC. Returns `IFL_STATUS_OK`, or the cause
+ * of `fric_`'s failure (reported as `fric_` reports it; `ifl_last_error`). A NULL `input` or
+ * `output` is `IFL_STATUS_BAD_INPUT` (nothing is written).
+ *
+ * # Safety
+ * `input` and `output` are NULL or valid; `input->props` holds `nprops` doubles and
+ * `input->statev` `nstatv` (writable); `input->interaction` is NULL or NUL-terminated.
+ */
+enum IflStatus ifl_fric_point(const struct IflFricInput *input, struct IflFricOutput *output);
+
 #if !defined(INTERFACIAL_CALCULIX)
 /**
  * Abaqus/Standard `GAPCON`: gap conductance `AK(1)` of one point, callable from Fortran as
@@ -390,6 +609,27 @@ void gapcon_(double *ak,
              size_t slname_len,
              size_t msname_len);
 #endif
+
+/**
+ * Sends every later message of the library (each failure's line, the "further messages
+ * suppressed" line, `INTERFACIAL_STRICT`'s last words) to `handler(msg, len, user)` instead of
+ * stderr or the `INTERFACIAL_LOG` file; `handler` NULL sends them there again. `ifl_last_error`
+ * is kept as before, whatever the handler.
+ *
+ * The handler is called on the thread that reports, one call at a time across all threads
+ * (the library holds a lock around each call), with one whole message per call: messages from
+ * several threads all arrive, none cut or mixed. When `ifl_set_message_handler` returns, the
+ * previous handler is not running and is never called again, so its `user` data may be freed.
+ * Calling it from inside the handler takes effect when the handler returns. A message that the
+ * handler itself causes (by calling the library) goes to stderr or the file, not back to the
+ * handler.
+ *
+ * # Safety
+ * `handler` is NULL or a function safe to call from any thread that calls the library, with
+ * `user` (any value, never dereferenced by the library), until it is replaced; it must not
+ * unwind.
+ */
+void ifl_set_message_handler(IflMessageHandler handler, void *user);
 
 /**
  * The library version as a NUL-terminated string: `"0.1.0"` for the default build,
@@ -526,6 +766,61 @@ enum IflStatus ifl_pore_pressure_n(const char *interaction,
                                    double *residual,
                                    double *tangent,
                                    double *geometric);
+
+/**
+ * How many laws `ifl_props_law_code` lists (3: Coulomb, adhesive and rate-and-state friction).
+ */
+int ifl_props_law_count(void);
+
+/**
+ * The law code (`PROPS(1)`) of the `i`-th law, `i` from 0 to `ifl_props_law_count() - 1`;
+ * 0 for any other `i`.
+ */
+int ifl_props_law_code(int i);
+
+/**
+ * The number of rows of law `law`'s `PROPS` table (`law` is the code `PROPS(1)`: 1 Coulomb,
+ * 2 adhesive): one per entry, plus one per other meaning of an entry (`when`). 0 for a code
+ * that is not a law's.
+ */
+int ifl_props_entry_count(int law);
+
+/**
+ * Writes row `i` (from 0 to `ifl_props_entry_count(law) - 1`, in docs/props.md's order) of law
+ * `law`'s `PROPS` table into `*out` and returns `IFL_STATUS_OK`. An unknown law or a row out of
+ * range is `IFL_STATUS_BAD_PARAMETER`, a NULL `out` `IFL_STATUS_BAD_INPUT`; both are reported
+ * like any failure (`ifl_last_error`) and leave `*out` as it was.
+ *
+ * # Safety
+ * `out` is NULL or points to a writable `IflPropsEntry`.
+ */
+enum IflStatus ifl_props_entry(int law, int i, struct IflPropsEntry *out);
+
+/**
+ * Checks a `PROPS` array of `nprops` entries as `fric_` reads it, without an increment, for
+ * the interaction named `interaction` (NUL-terminated, as `CINAME` without its blanks; NULL
+ * for a blank name), whose μ table `PROPS(8) = 2` reads from `INTERFACIAL_CONFIG` as `fric_`
+ * does. Returns `IFL_STATUS_OK` when `fric_` would take it, otherwise the status and, in
+ * `message`, the cause `fric_` would report, word for word ("bad parameter: PROPS(2): …", the
+ * part after the interaction and the place in `fric_`'s line).
+ *
+ * `message` (capacity `capacity` bytes) receives the text NUL-terminated, truncated to fit
+ * (nothing past `capacity` is written; nothing at all when `message` is NULL or `capacity` is
+ * 0); "" when `PROPS` is fine. `*message_len`, when `message_len` is not NULL, receives the
+ * whole text's length in bytes without the NUL. A question, not a failure: nothing is printed
+ * and the thread's last error is left as it was.
+ *
+ * # Safety
+ * `props` is NULL or points to `nprops` readable doubles; `interaction` is NULL or
+ * NUL-terminated; `message` is NULL or points to `capacity` writable bytes; `message_len` is
+ * NULL or writable.
+ */
+enum IflStatus ifl_props_check(const double *props,
+                               int nprops,
+                               const char *interaction,
+                               char *message,
+                               size_t capacity,
+                               size_t *message_len);
 
 /**
  * Abaqus/Standard `UINTER`: the full constitutive behaviour of one interface point, callable

@@ -1,5 +1,6 @@
 //! Error reporting shared by every entry point: one line per distinct cause to stderr (or the
-//! file named by `INTERFACIAL_LOG`), the last message of each thread kept for `ifl_last_error`,
+//! file named by `INTERFACIAL_LOG`, or the host's handler set by `ifl_set_message_handler`), the
+//! last message of each thread kept for `ifl_last_error`,
 //! and `INTERFACIAL_STRICT=1` to abort on the first error.
 //!
 //! The last error is sticky, like `errno`: [`report`] replaces it, [`clear_last_error`]
@@ -10,11 +11,11 @@
 //! (a mutex, touched only on the error path, at most [`MAX_CAUSES`] entries) and the
 //! environment read once.
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::collections::HashSet;
 use std::ffi::CString;
 use std::io::Write;
-use std::sync::{Mutex, OnceLock};
+use std::sync::{Mutex, OnceLock, PoisonError};
 
 /// Where a message comes from: the routine and what the host told us about the point.
 #[derive(Clone, Debug, Default)]
@@ -119,7 +120,56 @@ enum Verdict {
     Suppress,
 }
 
+/// A host's receiver of every message (`ifl_set_message_handler`, src/abi/message_hook.rs),
+/// given each message whole, without its newline.
+pub(crate) type Sink = Box<dyn Fn(&str) + Send + Sync>;
+
+/// The host's sink, when one is set; its lock also makes the calls one at a time.
+static SINK: Mutex<Option<Sink>> = Mutex::new(None);
+
+thread_local! {
+    /// True while this thread runs the sink (a message it raises goes to stderr or the file).
+    static IN_SINK: Cell<bool> = const { Cell::new(false) };
+    /// A sink set from inside the sink on this thread, put in place once it returns.
+    static SINK_REPLACEMENT: RefCell<Option<Option<Sink>>> = const { RefCell::new(None) };
+}
+
+/// Sends every later message to `sink` instead of stderr or the file (`None`: back to them).
+/// When it returns, the previous sink is not running on any thread and is never called again;
+/// called from inside the sink, the change takes effect as the sink returns.
+pub(crate) fn set_sink(sink: Option<Sink>) {
+    if IN_SINK.get() {
+        SINK_REPLACEMENT.with(|r| *r.borrow_mut() = Some(sink));
+        return;
+    }
+    let old = std::mem::replace(
+        &mut *SINK.lock().unwrap_or_else(PoisonError::into_inner),
+        sink,
+    );
+    drop(old);
+}
+
 fn emit(s: &Settings, line: &str) {
+    if IN_SINK.get() {
+        // The sink called into the library, which reported: not back into the sink.
+        write_out(s, line);
+        return;
+    }
+    let mut sink = SINK.lock().unwrap_or_else(PoisonError::into_inner);
+    if let Some(f) = sink.as_ref() {
+        IN_SINK.set(true);
+        f(line);
+        IN_SINK.set(false);
+        if let Some(replacement) = SINK_REPLACEMENT.with(|r| r.borrow_mut().take()) {
+            *sink = replacement;
+        }
+        return;
+    }
+    write_out(s, line);
+}
+
+/// Writes a message to the `INTERFACIAL_LOG` file or stderr.
+fn write_out(s: &Settings, line: &str) {
     // One write of the whole line, under a lock: messages from several threads never interleave.
     static EMIT: Mutex<()> = Mutex::new(());
     let _serial = EMIT.lock();

@@ -5,6 +5,7 @@
 //! Every exported body runs inside `boundary`, which catches unwinding, turns an error or a
 //! panic into the routine's documented failure output, and reports it.
 
+use std::cell::Cell;
 use std::ffi::{c_char, c_int};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
@@ -33,10 +34,13 @@ pub mod batch;
 pub mod forced_sliding;
 pub mod fric;
 pub mod fric_coef;
+pub mod fric_point;
 pub mod gapcon;
 pub mod host;
+pub mod message_hook;
 pub mod native;
 pub mod pore_pressure;
+pub mod props_query;
 pub mod uinter;
 pub mod uinter_host;
 pub mod vfric;
@@ -45,12 +49,18 @@ pub use batch::{FricBatch, fric_batch, ifl_fric_batch};
 pub use forced_sliding::ifl_forced_sliding;
 pub use fric::fric_;
 pub use fric_coef::fric_coef_;
+pub use fric_point::{IflFricInput, IflFricOutput, ifl_fric_point};
 pub use gapcon::gapcon_;
+pub use message_hook::{IflMessageHandler, ifl_set_message_handler};
 pub use native::{
     IflConductance, IflStatus, ifl_clear_error, ifl_gap_conductance, ifl_gap_conductance_n,
     ifl_last_error, ifl_last_error_copy, ifl_version,
 };
 pub use pore_pressure::{IflPorePressureVariant, ifl_pore_pressure, ifl_pore_pressure_n};
+pub use props_query::{
+    IflPropsEntry, ifl_props_check, ifl_props_entry, ifl_props_entry_count, ifl_props_law_code,
+    ifl_props_law_count,
+};
 pub use uinter::uinter_;
 pub use vfric::vfric_;
 
@@ -100,6 +110,7 @@ pub(crate) fn boundary(
             )
         }
     };
+    LAST_FAULT.set(Some(fault));
     // The failure path must not unwind either (a panic in a host-supplied name conversion, an
     // allocation failure while formatting): swallow it, the safe outputs are already written.
     let _ = catch_unwind(AssertUnwindSafe(|| {
@@ -107,6 +118,17 @@ pub(crate) fn boundary(
         report(&site(), &cause, fault != Fault::Config);
     }));
     Err(fault)
+}
+
+thread_local! {
+    /// The fault of the last [`boundary`] that failed on this thread, until [`take_fault`]
+    /// takes it: how `ifl_fric_point` learns the status of the `fric_` call it made.
+    static LAST_FAULT: Cell<Option<Fault>> = const { Cell::new(None) };
+}
+
+/// Takes (and forgets) the fault of the last failed [`boundary`] on this thread.
+pub(crate) fn take_fault() -> Option<Fault> {
+    LAST_FAULT.take()
 }
 
 /// [`boundary`] in a function of its own, never inlined into its caller: for an export whose

@@ -817,34 +817,113 @@ impl Layout {
         }
     }
 
-    /// The docs/props.md table of this layout (GitHub markdown).
+    /// The rows of the docs/props.md table, in order: per entry, each variant's meaning of it
+    /// first, then the layout's own, each saying when it holds. The one listing of the layout's
+    /// entries for readers outside the crate: the markdown table ([`Layout::markdown_table`])
+    /// and the C API (`ifl_props_entry`) are both written from it.
+    #[must_use]
+    pub fn table_rows(&self) -> Vec<TableRow> {
+        let mut out = Vec::new();
+        for base in self.entries {
+            for variant in self.variants {
+                if let Some(e) = variant.entries.iter().find(|x| x.index == base.index) {
+                    out.push(self.table_row(e, vec![(variant.on, variant.value, true)]));
+                }
+            }
+            let otherwise = self
+                .variants
+                .iter()
+                .filter(|v| v.entries.iter().any(|x| x.index == base.index))
+                .map(|v| (v.on, v.value, false))
+                .collect();
+            out.push(self.table_row(base, otherwise));
+        }
+        out
+    }
+
+    /// The docs/props.md table of this layout (GitHub markdown), from [`Layout::table_rows`].
     #[must_use]
     pub fn markdown_table(&self) -> String {
         let mut out = String::from(
             "| entry | seed name | symbol | meaning | units | default (0 or absent) | valid |\n\
              |---|---|---|---|---|---|---|\n",
         );
-        for base in self.entries {
-            // A variant's meaning of this entry first, then the layout's, each row saying
-            // when it holds.
-            let mut rows: Vec<(String, &Entry)> = Vec::new();
-            for variant in self.variants {
-                if let Some(e) = variant.entries.iter().find(|x| x.index == base.index) {
-                    rows.push((format!(" (`PROPS({}) = {}`)", variant.on, variant.value), e));
-                }
-            }
-            let otherwise: Vec<String> = self
-                .variants
-                .iter()
-                .filter(|v| v.entries.iter().any(|x| x.index == base.index))
-                .map(|v| format!(" (`PROPS({})` ≠ {})", v.on, v.value))
-                .collect();
-            rows.push((otherwise.concat(), base));
-            for (when, e) in rows {
-                out += &self.markdown_row(e, &when);
-            }
+        for row in self.table_rows() {
+            out += &row.markdown();
         }
         out
+    }
+}
+
+/// One row of a layout's table ([`Layout::table_rows`]): an entry, in one meaning, with the
+/// table's texts.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TableRow {
+    /// The entry in this meaning (a variant's entry, or the layout's own).
+    pub entry: Entry,
+    /// When this meaning holds: `(on, value, equal)` for `PROPS(on) = value` (`equal`) or
+    /// `PROPS(on) ≠ value`, all of them; empty for always.
+    pub when: Vec<(usize, i32, bool)>,
+    /// What 0 or absent means, as the table says it.
+    pub default: String,
+    /// The value 0 or absent stands for, when it is one number (`Default::Value`); `None` when
+    /// the entry is required or its default is another entry or a function of one.
+    pub default_value: Option<f64>,
+    /// The meaning, with what each value of a switch or choice means and the entry's note.
+    pub meaning: String,
+    /// The values it accepts, with the rules about it.
+    pub valid: String,
+}
+
+impl TableRow {
+    /// The condition in plain text: "PROPS(7) = 3", "PROPS(7) ≠ 3" (joined by ", "), or "".
+    #[must_use]
+    pub fn when_text(&self) -> String {
+        let each: Vec<String> = self
+            .when
+            .iter()
+            .map(|&(on, value, equal)| {
+                format!("PROPS({on}) {} {value}", if equal { "=" } else { "≠" })
+            })
+            .collect();
+        each.join(", ")
+    }
+
+    /// The row in the docs table's markdown.
+    fn markdown(&self) -> String {
+        let dash = |s: &str| {
+            if s.is_empty() {
+                "—".to_string()
+            } else {
+                s.to_string()
+            }
+        };
+        let when: String = self
+            .when
+            .iter()
+            .map(|&(on, value, equal)| {
+                if equal {
+                    format!(" (`PROPS({on}) = {value}`)")
+                } else {
+                    format!(" (`PROPS({on})` ≠ {value})")
+                }
+            })
+            .collect();
+        let e = &self.entry;
+        format!(
+            "| `PROPS({})`{when} | {} | {} | {} | {} | {} | {} |\n",
+            e.index,
+            if e.seed_name {
+                format!("`{}`", e.key)
+            } else {
+                "—".into()
+            },
+            dash(e.symbol),
+            self.meaning,
+            dash(e.unit),
+            self.default,
+            self.valid
+        )
     }
 }
 
@@ -881,15 +960,8 @@ impl Layout {
 }
 
 impl Layout {
-    /// One row of [`Layout::markdown_table`]: entry `e`, `when` after its name.
-    fn markdown_row(&self, e: &Entry, when: &str) -> String {
-        let dash = |s: &str| {
-            if s.is_empty() {
-                "—".to_string()
-            } else {
-                s.to_string()
-            }
-        };
+    /// One row of [`Layout::table_rows`]: entry `e`, holding `when`.
+    fn table_row(&self, e: &Entry, when: Vec<(usize, i32, bool)>) -> TableRow {
         let default = match e.default {
             Default::Required if matches!(e.class, Class::Code(_)) => "—".to_string(),
             Default::Required => "— (required)".to_string(),
@@ -929,20 +1001,17 @@ impl Layout {
         if !e.note.is_empty() {
             meaning += &format!(" ({})", e.note);
         }
-        format!(
-            "| `PROPS({})`{when} | {} | {} | {} | {} | {} | {} |\n",
-            e.index,
-            if e.seed_name {
-                format!("`{}`", e.key)
-            } else {
-                "—".into()
-            },
-            dash(e.symbol),
-            meaning,
-            dash(e.unit),
+        TableRow {
+            entry: *e,
+            when,
             default,
-            valid
-        )
+            default_value: match e.default {
+                Default::Value(d) => Some(d),
+                _ => None,
+            },
+            meaning,
+            valid,
+        }
     }
 }
 
