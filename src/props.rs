@@ -367,7 +367,7 @@ pub fn coulomb_extended_with_table(
 
 /// The friction law `props` select, for a routine that can look the interaction's μ table up
 /// (`fric_`, `fric_coef_`): `table` is called only when the law asks for one (law 1 with its μ
-/// table, [`coulomb::selects_mu_table`]), so the caller reads no `PROPS` entry itself. Every
+/// table, `PROPS(8) = 2` as law 1's layout says), so the caller reads no `PROPS` entry itself. Every
 /// other law and layout is [`friction_law`]'s.
 pub fn friction_law_with_table(
     props: &[f64],

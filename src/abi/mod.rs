@@ -36,12 +36,14 @@ pub mod fric;
 pub mod fric_coef;
 pub mod fric_point;
 pub mod gapcon;
+#[cfg(any(test, feature = "test-hosts"))]
 pub mod host;
 pub mod message_hook;
 pub mod native;
 pub mod pore_pressure;
 pub mod props_query;
 pub mod uinter;
+#[cfg(any(test, feature = "test-hosts"))]
 pub mod uinter_host;
 pub mod vfric;
 
