@@ -97,4 +97,53 @@ for fetch in OFF ON; do
   cmake --build "$work/sub-$fetch" -j"$jobs" >/dev/null
   run "$work/sub-$fetch/host"
 done
+# The staged library must be the file cargo built in DIR: its stamp (cmake/cargo_build.cmake)
+# names that file and its SHA-256, and the staged .so is a byte copy.
+staged_from() { # BUILD_DIR CARGO_DIR
+  local a="$2/release/libinterfacial.a" so="$2/release/libinterfacial.so"
+  [ "$(cat "$1/lib/libinterfacial.a.source")" = "$(sha256sum "$a" | cut -d' ' -f1) $a" ] &&
+    cmp -s "$1/lib/libinterfacial.so.$version" "$so" &&
+    [ "$(cat "$1/lib/libinterfacial_calculix.a.source")" = \
+      "$(sha256sum "$2/calculix/release/libinterfacial.a" | cut -d' ' -f1) $2/calculix/release/libinterfacial.a" ] ||
+    { echo "$1/lib was not staged from $2:"; cat "$1"/lib/*.source; exit 1; }
+}
+step "cargo's target directory from an exported CARGO_TARGET_DIR, then from the option"
+tdir=$(sed -n 's/^INTERFACIAL_CARGO_TARGET_DIR:PATH=//p' build-consumers/CMakeCache.txt)
+mkdir "$work/cargo-env"
+cp -a "$tdir/release" "$tdir/calculix" "$work/cargo-env/" # copies that cargo finds fresh
+td_opts=(-DCMAKE_BUILD_TYPE=Release -DINTERFACIAL_BUILD_TESTS=OFF -DINTERFACIAL_FORTRAN_MODULE=OFF
+  -DINTERFACIAL_INSTALL=OFF)
+CARGO_TARGET_DIR=$work/cargo-env cmake -S . -B "$work/td" "${td_opts[@]}" >/dev/null
+CARGO_TARGET_DIR=$work/cargo-env cmake --build "$work/td" >/dev/null
+staged_from "$work/td" "$work/cargo-env"
+echo "CARGO_TARGET_DIR: built and staged from $work/cargo-env"
+# The option wins over a variable exported at build time, whose directory holds a newer decoy
+# library where the staging used to look: cargo must not build there, nor the decoy be staged.
+mv "$work/cargo-env" "$work/cargo-opt"
+mkdir -p "$work/cargo-env/release"
+echo decoy >"$work/cargo-env/release/libinterfacial.a"
+touch -d tomorrow "$work/cargo-env/release/libinterfacial.a"
+CARGO_TARGET_DIR=$work/cargo-env cmake -S . -B "$work/td" "${td_opts[@]}" \
+  -DINTERFACIAL_CARGO_TARGET_DIR="$work/cargo-opt" >/dev/null
+CARGO_TARGET_DIR=$work/cargo-env cmake --build "$work/td" >/dev/null
+staged_from "$work/td" "$work/cargo-opt"
+[ "$(ls -A "$work/cargo-env/release")" = libinterfacial.a ] ||
+  { echo "cargo wrote into the exported CARGO_TARGET_DIR:"; ls -A "$work/cargo-env/release"; exit 1; }
+echo "INTERFACIAL_CARGO_TARGET_DIR: built and staged from $work/cargo-opt; decoy left alone"
+rm -rf "$work/cargo-env" "$work/cargo-opt" "$work/td"
+
+step "scripts/test-harnesses.sh on a build directory configured with the harnesses OFF"
+cmake -S . -B "$work/h" -DCMAKE_BUILD_TYPE=Release -DINTERFACIAL_BUILD_TESTS=OFF >/dev/null
+if ctest --test-dir "$work/h" --no-tests=error >/dev/null 2>&1; then
+  echo "ctest --no-tests=error passed with no test"; exit 1
+fi
+out=$(scripts/test-harnesses.sh "$work/h" -R '^(c_f1|f_f1|cargo_build_stages_what_cargo_reported)$' 2>&1) ||
+  { echo "$out"; exit 1; }
+echo "$out" | grep -x '100% tests passed, 0 tests failed out of 3' ||
+  { echo "$out"; echo "the harnesses did not run"; exit 1; }
+if scripts/test-harnesses.sh "$work/h" -R '^no_such_test$' >/dev/null 2>&1; then
+  echo "scripts/test-harnesses.sh passed with no test run"; exit 1
+fi
+echo "no test run: scripts/test-harnesses.sh fails"
+rm -rf "$work/h"
 echo "consumers: all passed"
