@@ -9,8 +9,11 @@ cargo clippy --locked --workspace --all-targets -- -D warnings
 cargo clippy --locked --all-targets --features calculix -- -D warnings
 echo "== cargo doc (no warnings)"
 RUSTDOCFLAGS=-Dwarnings cargo doc --locked --workspace --no-deps
-echo "== Rust tests"
-cargo test --locked --workspace
+echo "== Rust tests (and nothing left in their own TMPDIR)"
+tmp=$(mktemp -d)
+TMPDIR=$tmp cargo test --locked --workspace
+[ -z "$(ls -A "$tmp")" ] || { echo "cargo test left in TMPDIR:" "$tmp"/*; exit 1; }
+rmdir "$tmp"
 echo "== Rust tests of the CalculiX variant (gapcon_ with AREA)"
 cargo test --locked --features calculix --test gapcon_abi --test header --test last_error
 echo "== Rust tests of the single-precision Explicit build (vfric_ with REAL*4, docs/vfric.md)"
