@@ -89,6 +89,38 @@ run "$work/f77/host_own_shared" own-fric
 step "CalculiX: docs/install.md's steps on a stand-in for a stock build (ccx_2.22.a)"
 run examples/consumers/calculix_recipe/recipe.sh "$prefix" "$work/ccx"
 
+step "find_package(Interfacial COMPONENTS ...): per-component _FOUND, and what is missing named"
+mkdir "$work/comp"
+cat >"$work/comp/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.21)
+project(components LANGUAGES C)
+find_package(Interfacial 0.1 REQUIRED ${HOW} ${COMPS})
+foreach(c Fortran static shared calculix)
+  message(STATUS "found ${c}: ${Interfacial_${c}_FOUND}")
+endforeach()
+CMAKE
+components() { # PREFIX HOW COMPS: prints cmake's output, one line per message (wraps joined)
+  cmake -S "$work/comp" -B "$work/comp/b-$RANDOM" -DCMAKE_PREFIX_PATH="$1" -DHOW="$2" \
+    -DCOMPS="$3" -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF 2>&1 | tr -s ' \n' ' '
+}
+out=$(components "$prefix" COMPONENTS "Fortran;static;shared;calculix")
+for c in Fortran static shared calculix; do
+  echo "$out" | grep -q "found $c: TRUE" || { echo "$out"; echo "component $c not found"; exit 1; }
+done
+cp -a "$prefix" "$work/prefix-nofortran"
+rm "$(find "$work/prefix-nofortran" -name libinterfacial_fortran.a)" \
+  "$work/prefix-nofortran/include/interfacial.mod"
+out=$(components "$work/prefix-nofortran" COMPONENTS Fortran) &&
+  { echo "$out"; echo "found without the Fortran module"; exit 1; }
+echo "$out" | grep -q "Component Fortran is not in this installation: .*libinterfacial_fortran.a, .*interfacial.mod missing" ||
+  { echo "$out"; echo "no message naming the missing module files"; exit 1; }
+out=$(components "$work/prefix-nofortran" OPTIONAL_COMPONENTS Fortran) || { echo "$out"; exit 1; }
+echo "$out" | grep -q "found Fortran: FALSE" || { echo "$out"; exit 1; }
+out=$(components "$prefix" COMPONENTS Python) && { echo "$out"; exit 1; }
+echo "$out" | grep -q "Unknown component 'Python'" || { echo "$out"; exit 1; }
+rm -rf "$work/prefix-nofortran" "$work/comp"
+echo "components: all found when installed; a missing Fortran module and an unknown one named"
+
 for fetch in OFF ON; do
   step "C host, the source tree as a subproject (FetchContent: $fetch; add_subdirectory otherwise)"
   cmake -S examples/consumers/c_add_subdirectory -B "$work/sub-$fetch" \
