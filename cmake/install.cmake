@@ -5,6 +5,8 @@
 #   lib/cmake/Interfacial/InterfacialConfig.cmake, InterfacialConfigVersion.cmake
 #   lib/pkgconfig/interfacial.pc, interfacial-fortran.pc, interfacial_calculix.pc
 #   share/interfacial/fortran/interfacial.f90
+#   share/doc/interfacial/: README.md, CHANGELOG.md, the licences and docs/ (the pages the
+#   library's messages name, e.g. docs/config.md, are share/doc/interfacial/docs/config.md)
 set(_ifl_lib "${INTERFACIAL_LIB_DIR}")
 set(_ifl_v "${PROJECT_VERSION}")
 set(_ifl_so "${INTERFACIAL_SOVERSION}")
@@ -78,3 +80,11 @@ if(INTERFACIAL_INSTALLS_FORTRAN)
   install(FILES "${PROJECT_BINARY_DIR}/pkgconfig/interfacial-fortran.pc"
     DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
 endif()
+
+# The documentation, laid out as in the source tree so README's links and the messages'
+# "docs/config.md" hold below share/doc/interfacial.
+install(FILES "${PROJECT_SOURCE_DIR}/README.md" "${PROJECT_SOURCE_DIR}/CHANGELOG.md"
+              "${PROJECT_SOURCE_DIR}/LICENSE-MIT" "${PROJECT_SOURCE_DIR}/LICENSE-APACHE"
+  DESTINATION "${CMAKE_INSTALL_DOCDIR}")
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/docs/" DESTINATION "${CMAKE_INSTALL_DOCDIR}/docs"
+  FILES_MATCHING PATTERN "*.md" PATTERN "*.svg")

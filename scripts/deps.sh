@@ -10,10 +10,11 @@ command -v gfortran >/dev/null 2>&1 || missing+=(gfortran)
 command -v cmake >/dev/null 2>&1 || missing+=(cmake)
 command -v valgrind >/dev/null 2>&1 || missing+=(valgrind)
 # The consumer suite (scripts/test-consumers.sh): make and pkg-config for the Makefile host,
-# objcopy and readelf (binutils) for the weak entry points and the SONAME checks.
+# objcopy, readelf and strings (binutils) for the weak entry points, the SONAME checks and the
+# pages messages name.
 command -v make >/dev/null 2>&1 || missing+=(make)
 command -v pkg-config >/dev/null 2>&1 || missing+=(pkg-config)
-{ command -v objcopy && command -v readelf; } >/dev/null 2>&1 || missing+=(binutils)
+{ command -v objcopy && command -v readelf && command -v strings; } >/dev/null 2>&1 || missing+=(binutils)
 [ "${INTERFACIAL_MPI:-ON}" = OFF ] || { command -v mpif90 && command -v mpirun; } >/dev/null 2>&1 ||
   missing+=(openmpi-bin libopenmpi-dev)
 # The MPI harness needs MPI's Fortran module: `use mpi` must compile with mpif90.

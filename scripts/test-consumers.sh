@@ -47,6 +47,14 @@ libdir=$(dirname "$pcdir")
 for f in include/interfacial.h include/interfacial.mod share/interfacial/fortran/interfacial.f90; do
   [ -f "$prefix/$f" ] || { echo "not installed: $f"; exit 1; }
 done
+# Every page the library's messages name (docs/NAME.md) is installed, under share/doc/interfacial.
+pages=$(strings "$libdir/libinterfacial.so.$version" "$libdir/libinterfacial_calculix.so.$version" |
+  grep -o 'docs/[a-z-]*\.md' | sort -u)
+[ -n "$pages" ] || { echo "no docs/*.md named in the library's strings"; exit 1; }
+for page in $pages; do
+  [ -f "$prefix/share/doc/interfacial/$page" ] || { echo "messages name $page: not installed"; exit 1; }
+done
+echo "pages named by messages, installed under share/doc/interfacial:" $pages
 [ "$(readlink "$libdir/libinterfacial.so")" = libinterfacial.so.0 ] &&
   [ "$(readlink "$libdir/libinterfacial.so.0")" = "libinterfacial.so.$version" ] ||
   { echo "libinterfacial.so link chain:"; ls -l "$libdir"; exit 1; }
