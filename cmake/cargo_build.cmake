@@ -4,8 +4,9 @@
 #
 # then the files cargo *reported* for the `interfacial` library (its compiler-artifact message,
 # printed whether it rebuilt them or found them fresh) are staged under their installed names:
-#   libinterfacial.a   -> TO/STEM.a, with the WEAK symbols made weak (objcopy)
-#   libinterfacial.so  -> TO/STEM.so.VERSION, links TO/STEM.so.SOVERSION and TO/STEM.so
+#   libinterfacial.a   -> TO/STEM.a: WEAK symbols made weak, no debug information, no bitcode
+#   libinterfacial.so  -> TO/STEM.so.VERSION stripped, TO/STEM.so.VERSION.debug its debug
+#                         information, links TO/STEM.so.SOVERSION and TO/STEM.so
 # Nothing is looked up by a guessed path, so a library left in some directory by an older build
 # is never staged: either cargo names the file of this build or the build fails saying so.
 # A staged file is copied again whenever its source's content differs from the last copy
@@ -92,14 +93,27 @@ function(stage_needed in out result)
   if(EXISTS "${out}" AND EXISTS "${out}.source")
     file(READ "${out}.source" stamp)
   endif()
-  if(stamp STREQUAL "${hash} ${in}")
+  # (The stamp's last word names this recipe: a change to what staging does restages.)
+  if(stamp STREQUAL "${hash} ${in} stripped-1")
     set(${result} FALSE PARENT_SCOPE)
   else()
     set(${result} TRUE PARENT_SCOPE)
   endif()
-  set(stage_stamp "${hash} ${in}" PARENT_SCOPE)
+  set(stage_stamp "${hash} ${in} stripped-1" PARENT_SCOPE)
 endfunction()
 
+function(run_objcopy)
+  execute_process(COMMAND "${OBJCOPY}" ${ARGN} RESULT_VARIABLE orc)
+  if(NOT orc EQUAL 0)
+    message(FATAL_ERROR "cargo_build.cmake: ${OBJCOPY} ${ARGN} failed (${orc})")
+  endif()
+endfunction()
+
+# The archive as installed: the WEAK entry points weak, no debug information (34 MB -> under
+# 6 MB) and no LLVM bitcode. With lto = "fat" rustc embeds the crate's bitcode (.llvmbc) beside
+# the machine code; no C or Fortran linker uses it, but binutils' nm and ar hand such a member
+# to an LLVM plugin, which fails ("no symbols") when its LLVM is older than rustc's. The
+# machine code is left as cargo built it (tests: the consumer suite compares fric_'s).
 set(a_out "${TO}/${STEM}.a")
 stage_needed("${a_in}" "${a_out}" copy)
 if(copy)
@@ -111,26 +125,33 @@ if(copy)
     # definitions are weak, so the linker takes the host's strong one without a "multiple
     # definition" error, and still pulls the archive member for the entry points the host
     # does not define.
-    set(objcopy_args "")
+    set(objcopy_args --strip-debug --remove-section=.llvmbc --remove-section=.llvmcmd)
     string(REPLACE "," ";" WEAK "${WEAK}")
     foreach(sym IN LISTS WEAK)
       list(APPEND objcopy_args "--weaken-symbol=${sym}")
     endforeach()
-    execute_process(COMMAND "${OBJCOPY}" ${objcopy_args} "${tmp}" RESULT_VARIABLE orc)
-    if(NOT orc EQUAL 0)
-      message(FATAL_ERROR "cargo_build.cmake: ${OBJCOPY} ${objcopy_args} ${tmp} failed (${orc})")
-    endif()
+    run_objcopy(${objcopy_args} "${tmp}")
   endif()
   file(RENAME "${tmp}" "${a_out}")
   file(WRITE "${a_out}.source" "${stage_stamp}")
 endif()
 
+# The shared library stripped, its debug information in STEM.so.VERSION.debug beside it (found
+# by gdb through the .gnu_debuglink section; installed apart, docs/install.md).
 if(NOT so_in STREQUAL "")
   set(so_out "${TO}/${STEM}.so.${VERSION}")
   stage_needed("${so_in}" "${so_out}" copy)
-  if(copy)
+  if(copy OR NOT EXISTS "${so_out}.debug")
     message(STATUS "interfacial: staging ${so_in} as ${so_out}")
-    file(COPY_FILE "${so_in}" "${so_out}")
+    if(OBJCOPY)
+      run_objcopy(--only-keep-debug "${so_in}" "${so_out}.debug")
+      run_objcopy(--strip-unneeded "--add-gnu-debuglink=${so_out}.debug" "${so_in}"
+        "${so_out}.tmp")
+      file(RENAME "${so_out}.tmp" "${so_out}")
+    else()
+      file(COPY_FILE "${so_in}" "${so_out}")
+      file(COPY_FILE "${so_in}" "${so_out}.debug")
+    endif()
     file(WRITE "${so_out}.source" "${stage_stamp}")
   endif()
   file(CREATE_LINK "${STEM}.so.${VERSION}" "${TO}/${STEM}.so.${SOVERSION}" SYMBOLIC)

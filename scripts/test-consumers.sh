@@ -10,7 +10,16 @@
 #   - docs/install.md's CalculiX steps on a stand-in for a stock CalculiX build;
 # and, from the source tree, a C host via add_subdirectory and via FetchContent. Each host
 # asserts closed forms and error texts and prints "N passed, M failed".
+#
+#   scripts/test-consumers.sh                 build and install from the source tree first
+#   scripts/test-consumers.sh --prefix DIR    an existing installation (an unpacked package,
+#                                             scripts/test-packages.sh): no build, no cargo, and
+#                                             none of the source-tree steps
 set -euo pipefail
+given=
+if [ "${1:-}" = --prefix ]; then
+  given=$(cd "${2:?--prefix needs a directory}" && pwd)
+fi
 cd "$(dirname "$0")/.."
 root=$PWD
 version=$(sed -n 's/^version = "\([0-9.]*\)"$/\1/p' Cargo.toml | head -n 1)
@@ -35,13 +44,18 @@ expect_not_needed() {
   if needed "$1" | grep -q "$2"; then echo "$1 loads $2 (should be static)"; exit 1; fi
 }
 
-step "build and install (build-consumers/ -> $work/stage, then moved to $work/prefix)"
-cmake -S . -B build-consumers -DCMAKE_BUILD_TYPE=Release -DINTERFACIAL_BUILD_TESTS=OFF \
-  -DINTERFACIAL_FORTRAN_MODULE=ON -DINTERFACIAL_INSTALL=ON >/dev/null
-cmake --build build-consumers -j"$jobs" >/dev/null
-cmake --install build-consumers --prefix "$work/stage" >/dev/null
-mv "$work/stage" "$work/prefix"
-prefix=$work/prefix
+if [ -n "$given" ]; then
+  step "the installation in $given (no cargo: $(command -v cargo || echo none on PATH))"
+  prefix=$given
+else
+  step "build and install (build-consumers/ -> $work/stage, then moved to $work/prefix)"
+  cmake -S . -B build-consumers -DCMAKE_BUILD_TYPE=Release -DINTERFACIAL_BUILD_TESTS=OFF \
+    -DINTERFACIAL_FORTRAN_MODULE=ON -DINTERFACIAL_INSTALL=ON >/dev/null
+  cmake --build build-consumers -j"$jobs" >/dev/null
+  cmake --install build-consumers --prefix "$work/stage" >/dev/null
+  mv "$work/stage" "$work/prefix"
+  prefix=$work/prefix
+fi
 pcdir=$(dirname "$(find "$prefix" -name interfacial.pc)")
 libdir=$(dirname "$pcdir")
 for f in include/interfacial.h include/interfacial.mod share/interfacial/fortran/interfacial.f90; do
@@ -55,6 +69,21 @@ for page in $pages; do
   [ -f "$prefix/share/doc/interfacial/$page" ] || { echo "messages name $page: not installed"; exit 1; }
 done
 echo "pages named by messages, installed under share/doc/interfacial:" $pages
+# The installed archive is plain object code: binutils' nm lists its entry points (weak) with no
+# LTO-plugin error, and its debug information is gone (cmake/cargo_build.cmake).
+syms=$(nm "$libdir/libinterfacial.a" 2>&1)
+if grep -qi plugin <<<"$syms"; then grep -i plugin <<<"$syms"; exit 1; fi
+for sym in fric_ gapcon_ uinter_ fric_coef_ vfric_; do
+  grep -qx "[0-9a-f]* W $sym" <<<"$syms" || { echo "nm: $sym is not a weak definition"; exit 1; }
+done
+grep -qx '[0-9a-f]* T ifl_fric_batch' <<<"$syms" || { echo "nm: no ifl_fric_batch"; exit 1; }
+if readelf -S "$libdir/libinterfacial.a" | grep -q '\.debug_\|\.llvmbc'; then
+  echo "libinterfacial.a keeps debug information or bitcode"; exit 1
+fi
+if readelf -S "$libdir/libinterfacial.so.$version" | grep -q '\.debug_\|\.symtab'; then
+  echo "libinterfacial.so.$version is not stripped"; exit 1
+fi
+echo "nm libinterfacial.a: entry points listed, weak; no debug information, no bitcode"
 [ "$(readlink "$libdir/libinterfacial.so")" = libinterfacial.so.0 ] &&
   [ "$(readlink "$libdir/libinterfacial.so.0")" = "libinterfacial.so.$version" ] ||
   { echo "libinterfacial.so link chain:"; ls -l "$libdir"; exit 1; }
@@ -129,6 +158,12 @@ echo "$out" | grep -q "Unknown component 'Python'" || { echo "$out"; exit 1; }
 rm -rf "$work/prefix-nofortran" "$work/comp"
 echo "components: all found when installed; a missing Fortran module and an unknown one named"
 
+if [ -n "$given" ]; then
+  echo "consumers: all passed"
+  exit 0
+fi
+
+# From here on, the source tree.
 for fetch in OFF ON; do
   step "C host, the source tree as a subproject (FetchContent: $fetch; add_subdirectory otherwise)"
   cmake -S examples/consumers/c_add_subdirectory -B "$work/sub-$fetch" \
@@ -137,14 +172,25 @@ for fetch in OFF ON; do
   cmake --build "$work/sub-$fetch" -j"$jobs" >/dev/null
   run "$work/sub-$fetch/host"
 done
-# The staged library must be the file cargo built in DIR: its stamp (cmake/cargo_build.cmake)
-# names that file and its SHA-256, and the staged .so is a byte copy.
+step "the staged archive's machine code is cargo's: fric_ and ifl_fric_batch disassembled alike"
+cargo_dir=$(sed -n 's/^INTERFACIAL_CARGO_TARGET_DIR:PATH=//p' build-consumers/CMakeCache.txt)
+for fn in fric_ ifl_fric_batch; do
+  a=$(objdump -d --no-show-raw-insn --disassemble="$fn" "$cargo_dir/release/libinterfacial.a" 2>/dev/null |
+    sed -n "/<$fn>:/,\$p")
+  b=$(objdump -d --no-show-raw-insn --disassemble="$fn" "$libdir/libinterfacial.a" |
+    sed -n "/<$fn>:/,\$p")
+  [ "$(echo "$a" | wc -l)" -gt 20 ] && [ "$a" = "$b" ] ||
+    { echo "$fn: staged code differs from cargo's (or was not found)"; exit 1; }
+done
+echo "fric_, ifl_fric_batch: same instructions as cargo's archive"
+
+# The staged libraries must be the files cargo built in DIR: each stamp (cmake/cargo_build.cmake)
+# names its source file and that file's SHA-256.
+stamp_is() { [ "$(cut -d' ' -f1,2 "$1.source")" = "$(sha256sum "$2" | cut -d' ' -f1) $2" ]; }
 staged_from() { # BUILD_DIR CARGO_DIR
-  local a="$2/release/libinterfacial.a" so="$2/release/libinterfacial.so"
-  [ "$(cat "$1/lib/libinterfacial.a.source")" = "$(sha256sum "$a" | cut -d' ' -f1) $a" ] &&
-    cmp -s "$1/lib/libinterfacial.so.$version" "$so" &&
-    [ "$(cat "$1/lib/libinterfacial_calculix.a.source")" = \
-      "$(sha256sum "$2/calculix/release/libinterfacial.a" | cut -d' ' -f1) $2/calculix/release/libinterfacial.a" ] ||
+  stamp_is "$1/lib/libinterfacial.a" "$2/release/libinterfacial.a" &&
+    stamp_is "$1/lib/libinterfacial.so.$version" "$2/release/libinterfacial.so" &&
+    stamp_is "$1/lib/libinterfacial_calculix.a" "$2/calculix/release/libinterfacial.a" ||
     { echo "$1/lib was not staged from $2:"; cat "$1"/lib/*.source; exit 1; }
 }
 step "cargo's target directory from an exported CARGO_TARGET_DIR, then from the option"
