@@ -6,8 +6,8 @@
 #        libinterfacial-dev    Development: header, Fortran module, static libraries, the .so
 #                              links, CMake and pkg-config files, documentation
 #        libinterfacial0-dbg   Debug: the shared libraries' debug information (by build ID)
-#   TGZ  interfacial-<v>-Linux-<arch>.tar.gz        Runtime + Development, relocatable
-#        interfacial-<v>-Linux-<arch>-debug.tar.gz  Debug
+#   TGZ  interfacial-<v>-linux-<machine>.tar.gz        Runtime + Development, relocatable
+#        interfacial-<v>-linux-<machine>-debug.tar.gz  Debug
 set(CPACK_PACKAGE_NAME "interfacial")
 set(CPACK_PACKAGE_VENDOR "interfacial")
 set(INTERFACIAL_PACKAGE_CONTACT "interfacial maintainers <interfacial@example.org>" CACHE STRING
@@ -65,6 +65,11 @@ set(CPACK_DEBIAN_ENABLE_COMPONENT_DEPENDS ON)
 # The tarball: relocatable (the CMake package and the .pc files find their files relative to
 # themselves), one for Runtime + Development and one for Debug.
 set(CPACK_ARCHIVE_COMPONENT_INSTALL ON)
+execute_process(COMMAND uname -m OUTPUT_VARIABLE _ifl_machine OUTPUT_STRIP_TRAILING_WHITESPACE)
+# (Also the tarballs' top directory: the debug one unpacks into the same.)
+set(CPACK_PACKAGE_FILE_NAME "interfacial-${PROJECT_VERSION}-linux-${_ifl_machine}")
+set(CPACK_ARCHIVE_MAIN_FILE_NAME "${CPACK_PACKAGE_FILE_NAME}")
+set(CPACK_ARCHIVE_DEBUG_FILE_NAME "interfacial-${PROJECT_VERSION}-linux-${_ifl_machine}-debug")
 
 # Per generator (read by cpack): groups for the tarballs, one package per component for Debian,
 # and /usr as the Debian prefix.
@@ -78,6 +83,7 @@ else()
   set(CPACK_COMPONENTS_GROUPING ONE_PER_GROUP)
   set(CPACK_PACKAGING_INSTALL_PREFIX /)
   set(CPACK_INCLUDE_TOPLEVEL_DIRECTORY ON)
+  set(CPACK_COMPONENT_INCLUDE_TOPLEVEL_DIRECTORY ON)
   set(ENV{INTERFACIAL_DEBIAN_DOCS} 0)
 endif()
 ")

@@ -45,7 +45,7 @@ expect_not_needed() {
 }
 
 if [ -n "$given" ]; then
-  step "the installation in $given (no cargo: $(command -v cargo || echo none on PATH))"
+  step "the installation in $given (cargo on PATH: $(command -v cargo || echo none))"
   prefix=$given
 else
   step "build and install (build-consumers/ -> $work/stage, then moved to $work/prefix)"

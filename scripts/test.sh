@@ -23,6 +23,8 @@ echo "== C and Fortran harnesses (forced on; zero tests run is a failure)"
 scripts/test-harnesses.sh build
 echo "== instruction counts: the docs' figures (within 2 %) and the rate law's bound (< 3x)"
 scripts/count-instructions.sh --check
+echo "== binary packages (DEB, tarball): lintian, then the consumer suite on each, without cargo"
+scripts/test-packages.sh
 # Optional stages, each owned by its own script: run when present.
 for stage in scripts/test-consumers.sh scripts/test-sanitizers.sh scripts/fuzz-ci.sh; do
   if [ -x "$stage" ]; then
