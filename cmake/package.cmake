@@ -42,7 +42,6 @@ set(CPACK_DEB_COMPONENT_INSTALL ON)
 set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE "${_ifl_deb_arch}")
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_MAINTAINER "${CPACK_PACKAGE_CONTACT}")
-set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://localhost/interfacial")
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME "libinterfacial${INTERFACIAL_SOVERSION}")
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SECTION libs)
@@ -107,6 +106,7 @@ string(REGEX REPLACE "\n\n" "\n.\n" _ifl_mit "${_ifl_mit}")
 string(REGEX REPLACE "\n([^\n])" "\n \\1" _ifl_mit " ${_ifl_mit}")
 file(APPEND "${_ifl_copyright}" "${_ifl_mit}")
 find_program(INTERFACIAL_GZIP gzip)
+string(TIMESTAMP _ifl_date "%a, %d %b %Y %H:%M:%S +0000" UTC)
 foreach(_ifl_comp Runtime Development Debug)
   string(TOUPPER "${_ifl_comp}" _ifl_up)
   set(_ifl_pkg "${CPACK_DEBIAN_${_ifl_up}_PACKAGE_NAME}")
@@ -118,7 +118,7 @@ foreach(_ifl_comp Runtime Development Debug)
 
   * Binary package of interfacial ${PROJECT_VERSION} (CHANGELOG.md in libinterfacial-dev).
 
- -- ${CPACK_PACKAGE_CONTACT}  Thu, 01 Jan 2026 00:00:00 +0000
+ -- ${CPACK_PACKAGE_CONTACT}  ${_ifl_date}
 \")
       execute_process(COMMAND \"${INTERFACIAL_GZIP}\" -9nf \"\${dir}/changelog\"
         COMMAND_ERROR_IS_FATAL ANY)
