@@ -34,7 +34,13 @@ install(FILES "${_ifl_lib}/libinterfacial.so" "${_ifl_lib}/libinterfacial_calcul
 # build ID (under /usr/lib/debug for a /usr install; elsewhere `set debug-file-directory
 # <prefix>/lib/debug`). The ID is read when installing, from the staged .debug file.
 find_program(INTERFACIAL_READELF NAMES readelf "${CMAKE_READELF}")
-foreach(_ifl_stem libinterfacial libinterfacial_calculix)
+if(NOT INTERFACIAL_READELF)
+  message(WARNING "interfacial: no readelf (binutils); the debug information is not installed")
+  set(_ifl_debug_stems "")
+else()
+  set(_ifl_debug_stems libinterfacial libinterfacial_calculix)
+endif()
+foreach(_ifl_stem IN LISTS _ifl_debug_stems)
   install(CODE "
     set(dbg \"${_ifl_lib}/${_ifl_stem}.so.${_ifl_v}.debug\")
     execute_process(COMMAND \"${INTERFACIAL_READELF}\" -n \"\${dbg}\" OUTPUT_VARIABLE notes
