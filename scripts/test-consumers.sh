@@ -211,8 +211,10 @@ echo decoy >"$work/cargo-env/release/libinterfacial.a"
 touch -d tomorrow "$work/cargo-env/release/libinterfacial.a"
 CARGO_TARGET_DIR=$work/cargo-env cmake -S . -B "$work/td" "${td_opts[@]}" \
   -DINTERFACIAL_CARGO_TARGET_DIR="$work/cargo-opt" >/dev/null
-CARGO_TARGET_DIR=$work/cargo-env cmake --build "$work/td" >/dev/null
+out=$(CARGO_TARGET_DIR=$work/cargo-env cmake --build "$work/td" 2>&1) || { echo "$out"; exit 1; }
 staged_from "$work/td" "$work/cargo-opt"
+grep -q "CARGO_TARGET_DIR=$work/cargo-env is ignored" <<<"$out" ||
+  { echo "$out"; echo "no note that the exported CARGO_TARGET_DIR is ignored"; exit 1; }
 [ "$(ls -A "$work/cargo-env/release")" = libinterfacial.a ] ||
   { echo "cargo wrote into the exported CARGO_TARGET_DIR:"; ls -A "$work/cargo-env/release"; exit 1; }
 echo "INTERFACIAL_CARGO_TARGET_DIR: built and staged from $work/cargo-opt; decoy left alone"
