@@ -669,7 +669,7 @@ void ifl_clear_error(void);
  * the `INTERFACIAL_CONFIG` file, evaluated at clearance `d`, contact pressure `p` and surface
  * temperatures `theta_a`, `theta_b`. On success writes `*out` and returns `IFL_STATUS_OK`; on
  * failure writes `*out` as all zeros (when `out` is not NULL), reports, and returns the cause.
- * [`ifl_gap_conductance_n`] takes the name with its length instead (no NUL needed).
+ * `ifl_gap_conductance_n` takes the name with its length instead (no NUL needed).
  *
  * # Safety
  * `interaction` is NULL or a NUL-terminated string; `out` is NULL or writable.
@@ -682,7 +682,7 @@ enum IflStatus ifl_gap_conductance(const char *interaction,
                                    struct IflConductance *out);
 
 /**
- * [`ifl_gap_conductance`] with the name given as `interaction_len` bytes at `interaction`, as
+ * `ifl_gap_conductance` with the name given as `interaction_len` bytes at `interaction`, as
  * Fortran passes a `CHARACTER` (blank-padded, no NUL): nothing past `interaction_len` is read,
  * trailing blanks and NULs are ignored. For Fortran, the `interfacial` module's
  * `ifl_gap_conductance(name, ...)` calls it with `len(name)`.
@@ -719,7 +719,7 @@ enum IflStatus ifl_gap_conductance_n(const char *interaction,
  *   geometry; all zeros in small sliding.
  *
  * `interaction` (NUL-terminated, may be NULL) only names the caller in error messages;
- * [`ifl_pore_pressure_n`] takes it with its length instead (no NUL needed).
+ * `ifl_pore_pressure_n` takes it with its length instead (no NUL needed).
  * Returns `IFL_STATUS_OK`; on a NaN or infinite input or `dt <= 0` in a transient analysis
  * `IFL_STATUS_BAD_INPUT`, on a flag other than 0 or 1 `IFL_STATUS_BAD_PARAMETER`, on an
  * overflow of finite inputs `IFL_STATUS_NUMERICAL_FAILURE`, on a NULL output
@@ -743,16 +743,16 @@ enum IflStatus ifl_pore_pressure(const char *interaction,
                                  double *geometric);
 
 /**
- * [`ifl_pore_pressure`] with the interaction's name given as `interaction_len` bytes at
+ * `ifl_pore_pressure` with the interaction's name given as `interaction_len` bytes at
  * `interaction`, as Fortran passes a `CHARACTER` (blank-padded, no NUL): nothing past
  * `interaction_len` is read, trailing blanks and NULs are dropped from messages. For Fortran,
  * the `interfacial` module's `ifl_pore_pressure(name, ...)` calls it with `len(name)`.
- * Everything else (inputs, outputs, statuses) is as [`ifl_pore_pressure`]; messages name
+ * Everything else (inputs, outputs, statuses) is as `ifl_pore_pressure`; messages name
  * `ifl_pore_pressure_n`.
  *
  * # Safety
  * `interaction` is NULL or points to `interaction_len` readable bytes (any pointer when
- * `interaction_len` is 0); the outputs as [`ifl_pore_pressure`].
+ * `interaction_len` is 0); the outputs as `ifl_pore_pressure`.
  */
 enum IflStatus ifl_pore_pressure_n(const char *interaction,
                                    size_t interaction_len,
@@ -905,7 +905,7 @@ void uinter_(double *stress,
 
 /**
  * Abaqus/Explicit `VFRIC` (double precision build by default, `vaba_param.inc` = `implicit
- * real*8`; single precision with the cargo feature `explicit-single`, see [`IflReal`]):
+ * real*8`; single precision with the cargo feature `explicit-single`, see `IflReal`):
  * the friction force of the `nContact` contact points of a block, callable from Fortran as
  * `CALL VFRIC(...)`; 42 arguments + 3 hidden lengths (`surfInt`, `surfSlv`, `surfMst`).
  *

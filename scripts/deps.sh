@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what the tests need beyond Rust and gcc (Debian packages): gfortran and cmake for the
 # harnesses, valgrind for the memory checks, OpenMPI for the MPI harness, make, pkg-config and
-# binutils for the consumer suite. Run as root, or
+# binutils for the consumer suite, lintian, dpkg-dev and file for the packages. Run as root, or
 # install them yourself: apt-get install gfortran cmake valgrind openmpi-bin libopenmpi-dev
 # INTERFACIAL_MPI=OFF leaves MPI out (then configure with cmake -DINTERFACIAL_MPI=OFF too).
 set -euo pipefail
@@ -10,10 +10,16 @@ command -v gfortran >/dev/null 2>&1 || missing+=(gfortran)
 command -v cmake >/dev/null 2>&1 || missing+=(cmake)
 command -v valgrind >/dev/null 2>&1 || missing+=(valgrind)
 # The consumer suite (scripts/test-consumers.sh): make and pkg-config for the Makefile host,
-# objcopy and readelf (binutils) for the weak entry points and the SONAME checks.
+# objcopy, readelf and strings (binutils) for the weak entry points, the SONAME checks and the
+# pages messages name.
 command -v make >/dev/null 2>&1 || missing+=(make)
 command -v pkg-config >/dev/null 2>&1 || missing+=(pkg-config)
-{ command -v objcopy && command -v readelf; } >/dev/null 2>&1 || missing+=(binutils)
+{ command -v objcopy && command -v readelf && command -v strings; } >/dev/null 2>&1 || missing+=(binutils)
+# The binary packages (scripts/test-packages.sh): lintian checks them, dpkg-shlibdeps (dpkg-dev)
+# and file give the runtime package's Depends.
+command -v lintian >/dev/null 2>&1 || missing+=(lintian)
+command -v dpkg-shlibdeps >/dev/null 2>&1 || missing+=(dpkg-dev)
+command -v file >/dev/null 2>&1 || missing+=(file)
 [ "${INTERFACIAL_MPI:-ON}" = OFF ] || { command -v mpif90 && command -v mpirun; } >/dev/null 2>&1 ||
   missing+=(openmpi-bin libopenmpi-dev)
 # The MPI harness needs MPI's Fortran module: `use mpi` must compile with mpif90.

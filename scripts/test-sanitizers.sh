@@ -61,7 +61,8 @@ expect_caught "heap-buffer-overflow" "$canary_dir/overrun_asan"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DINTERFACIAL_SANITIZE=ON >/dev/null
 cmake --build build-asan -j"$jobs" --target c_harnesses
 host=$(rustc -vV | sed -n 's/^host: //p')
-asan_lib=$root/target/asan/$host/release/libinterfacial.a
+cargo_dir=$(sed -n 's/^INTERFACIAL_CARGO_TARGET_DIR:PATH=//p' build-asan/CMakeCache.txt)
+asan_lib=$cargo_dir/asan/$host/release/libinterfacial.a
 # The crate's own object code must carry the instrumentation (calls into the ASan runtime).
 # (readelf, not nm: binutils' nm stops at the archive's LLVM bitcode sections.)
 instrumented=$(readelf -sW "$asan_lib" 2>/dev/null |

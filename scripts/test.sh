@@ -9,19 +9,22 @@ cargo clippy --locked --workspace --all-targets -- -D warnings
 cargo clippy --locked --all-targets --features calculix -- -D warnings
 echo "== cargo doc (no warnings)"
 RUSTDOCFLAGS=-Dwarnings cargo doc --locked --workspace --no-deps
-echo "== Rust tests"
-cargo test --locked --workspace
+echo "== Rust tests (and nothing left in their own TMPDIR)"
+tmp=$(mktemp -d)
+TMPDIR=$tmp cargo test --locked --workspace
+[ -z "$(ls -A "$tmp")" ] || { echo "cargo test left in TMPDIR:" "$tmp"/*; exit 1; }
+rmdir "$tmp"
 echo "== Rust tests of the CalculiX variant (gapcon_ with AREA)"
 cargo test --locked --features calculix --test gapcon_abi --test header --test last_error
 echo "== Rust tests of the single-precision Explicit build (vfric_ with REAL*4, docs/vfric.md)"
 cargo clippy --locked --all-targets --features explicit-single -- -D warnings
 cargo test --locked --features explicit-single --test vfric
-echo "== C and Fortran harnesses"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j2
-ctest --test-dir build --output-on-failure -j2
+echo "== C and Fortran harnesses (forced on; zero tests run is a failure)"
+scripts/test-harnesses.sh build
 echo "== instruction counts: the docs' figures (within 2 %) and the rate law's bound (< 3x)"
 scripts/count-instructions.sh --check
+echo "== binary packages (DEB, tarball): lintian, then the consumer suite on each, without cargo"
+scripts/test-packages.sh
 # Optional stages, each owned by its own script: run when present.
 for stage in scripts/test-consumers.sh scripts/test-sanitizers.sh scripts/fuzz-ci.sh; do
   if [ -x "$stage" ]; then

@@ -1,7 +1,7 @@
 //! Error reporting shared by every entry point: one line per distinct cause to stderr (or the
 //! file named by `INTERFACIAL_LOG`, or the host's handler set by `ifl_set_message_handler`), the
-//! last message of each thread kept for `ifl_last_error`,
-//! and `INTERFACIAL_STRICT=1` to abort on the first error.
+//! last message of each thread kept for `ifl_last_error`, and `INTERFACIAL_STRICT` (`1`, `yes`,
+//! `true` or `on`, any case) to abort on the first error.
 //!
 //! The last error is sticky, like `errno`: [`report`] replaces it, [`clear_last_error`]
 //! (`ifl_clear_error`) empties it, and nothing else touches it — a successful call leaves it as
@@ -35,12 +35,35 @@ struct Settings {
 
 fn settings() -> &'static Settings {
     static SETTINGS: OnceLock<Settings> = OnceLock::new();
-    SETTINGS.get_or_init(|| Settings {
-        log_file: std::env::var("INTERFACIAL_LOG")
-            .ok()
-            .filter(|s| !s.is_empty()),
-        strict: std::env::var("INTERFACIAL_STRICT").is_ok_and(|v| v.trim() == "1"),
+    SETTINGS.get_or_init(|| {
+        let strict = std::env::var("INTERFACIAL_STRICT").unwrap_or_default();
+        let settings = Settings {
+            log_file: std::env::var("INTERFACIAL_LOG")
+                .ok()
+                .filter(|s| !s.is_empty()),
+            strict: parse_strict(&strict).unwrap_or(false),
+        };
+        if parse_strict(&strict).is_none() {
+            emit(
+                &settings,
+                &format!(
+                    "interfacial: INTERFACIAL_STRICT={strict:?} is not understood (1, yes, true, \
+                     on or 0, no, false, off); not aborting on errors"
+                ),
+            );
+        }
+        settings
     })
+}
+
+/// `INTERFACIAL_STRICT`'s value: `Some(true)` for 1, yes, true, on; `Some(false)` for unset or
+/// empty, 0, no, false, off (any case, blanks trimmed); `None` for anything else.
+pub(crate) fn parse_strict(value: &str) -> Option<bool> {
+    match value.trim().to_ascii_lowercase().as_str() {
+        "1" | "yes" | "true" | "on" => Some(true),
+        "" | "0" | "no" | "false" | "off" => Some(false),
+        _ => None,
+    }
 }
 
 thread_local! {
@@ -99,7 +122,7 @@ pub(crate) fn report(site: &Site, cause: &str, per_interaction: bool) -> String 
     if s.strict {
         emit(
             s,
-            "interfacial: INTERFACIAL_STRICT=1, aborting on the first error",
+            "interfacial: INTERFACIAL_STRICT is set, aborting on the first error",
         );
         std::process::abort();
     }

@@ -31,13 +31,59 @@ fn header_is_up_to_date() {
 /// cbindgen's C output is C99/C++11: `//` comments after `#endif` and on the closing brace of
 /// `extern "C"`, and a comma after an enum's last variant. The header is also meant for C89 and
 /// C++98 (`-pedantic`, c_tests/CMakeLists.txt compiles it in both), so those are rewritten.
+/// Rustdoc's intra-doc links (`` [`ifl_gap_conductance_n`] ``, `` [`x`](path) ``) become plain
+/// code spans: a C reader sees `` `ifl_gap_conductance_n` ``.
 fn c89_clean(generated: &[u8]) -> Vec<u8> {
-    String::from_utf8_lossy(generated)
+    strip_doc_links(&String::from_utf8_lossy(generated))
         .replace("#endif // __cplusplus", "#endif /* __cplusplus */")
         .replace("#endif  // __cplusplus", "#endif /* __cplusplus */")
         .replace("}  // extern \"C\"", "}  /* extern \"C\" */")
         .replace(",\n} ", "\n} ")
         .into_bytes()
+}
+
+/// `` [`name`] `` -> `` `name` `` and `` [`name`](target) `` -> `` `name` ``, within one line.
+fn strip_doc_links(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(start) = rest.find("[`") {
+        let after = &rest[start + 1..];
+        match after.find("`]") {
+            Some(end) if !after[..end].contains(['\n', '[']) => {
+                out.push_str(&rest[..start]);
+                out.push_str(&after[..=end]);
+                rest = &after[end + 2..];
+                if rest.starts_with('(') {
+                    if let Some(close) = rest.find(')').filter(|c| !rest[..*c].contains('\n')) {
+                        rest = &rest[close + 1..];
+                    }
+                }
+            }
+            _ => {
+                out.push_str(&rest[..start + 2]);
+                rest = &rest[start + 2..];
+            }
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+#[test]
+fn header_shows_no_rustdoc_link_syntax() {
+    assert_eq!(
+        strip_doc_links("see [`a_b`] and [`c`](d.md), [x], [`e\n`]"),
+        "see `a_b` and `c`, [x], [`e\n`]"
+    );
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let header = std::fs::read_to_string(root.join("include/interfacial.h")).expect("header");
+    for (n, line) in header.lines().enumerate() {
+        assert!(
+            !line.contains("[`") && !line.contains("`]"),
+            "include/interfacial.h:{}: rustdoc link syntax: {line}",
+            n + 1
+        );
+    }
 }
 
 /// The Rust side of the prototype check: each export coerces to the function-pointer type

@@ -225,6 +225,12 @@ fn only_ifl_clear_error_empties_it_and_copy_agrees() {
     let st = unsafe { ifl_gap_conductance_n(std::ptr::null(), 3, 0.0, 1.0, 1.0, 1.0, &mut out) };
     assert_eq!(st, IflStatus::BadInput);
     assert_mentions(&last(), &["ifl_gap_conductance_n", "NULL"], "NULL name");
+    // A Fortran caller called the module's ifl_gap_conductance, which is this call: named too.
+    assert_mentions(
+        &last(),
+        &["ifl_gap_conductance_n (or the Fortran module's ifl_gap_conductance): "],
+        "NULL name",
+    );
 }
 
 #[test]

@@ -489,7 +489,9 @@ fn the_length_carrying_form_reads_only_its_length_and_needs_no_nul() {
     assert_eq!(s, IflStatus::BadInput);
     let msg = last_error();
     assert!(
-        msg.contains("ifl_pore_pressure_n: interaction 'column' ") && msg.contains("dt = 0"),
+        msg.contains(
+            "ifl_pore_pressure_n (or the Fortran module's ifl_pore_pressure): interaction 'column' "
+        ) && msg.contains("dt = 0"),
         "{msg}"
     );
     assert!(!msg.contains("XYZ"), "{msg}");

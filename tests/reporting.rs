@@ -1,5 +1,6 @@
 //! Reporting: one line per distinct cause in `INTERFACIAL_LOG`, whatever the number of calls and
-//! threads; `INTERFACIAL_STRICT=1` aborts. Each test runs in a child process of this test binary
+//! threads; `INTERFACIAL_STRICT=1` (or yes, true, on, any case) aborts, an unknown value is
+//! reported and does not. Each test runs in a child process of this test binary
 //! so the environment (read once per process) is its own.
 
 #[path = "common/child.rs"]
@@ -59,6 +60,45 @@ fn strict_mode_aborts_on_the_first_error() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
         err.contains("interfacial: FRIC") && err.contains("INTERFACIAL_STRICT"),
+        "{err}"
+    );
+}
+
+#[test]
+fn strict_mode_takes_yes_true_on_in_any_case() {
+    for value in ["yes", "TRUE", " On ", "1"] {
+        let out = run_child(CHILD, MARKER, &[("INTERFACIAL_STRICT", value)]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            !out.status.success(),
+            "INTERFACIAL_STRICT={value:?} did not abort: {err}"
+        );
+        assert!(
+            err.contains("INTERFACIAL_STRICT is set, aborting"),
+            "{value:?}: {err}"
+        );
+    }
+}
+
+#[test]
+fn strict_mode_off_values_and_unknown_values_do_not_abort() {
+    for value in ["0", "off", "No", "false", ""] {
+        let out = run_child(CHILD, MARKER, &[("INTERFACIAL_STRICT", value)]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            out.status.success(),
+            "INTERFACIAL_STRICT={value:?} aborted: {err}"
+        );
+        assert!(!err.contains("not understood"), "{value:?}: {err}");
+    }
+    // An unknown value is said once, not ignored silently.
+    let out = run_child(CHILD, MARKER, &[("INTERFACIAL_STRICT", "maybe")]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    assert_eq!(
+        err.matches("INTERFACIAL_STRICT=\"maybe\" is not understood")
+            .count(),
+        1,
         "{err}"
     );
 }

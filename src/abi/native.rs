@@ -151,7 +151,9 @@ pub unsafe extern "C" fn ifl_gap_conductance_n(
         let end = bytes.iter().rposition(|b| *b != 0).map_or(0, |i| i + 1);
         Some(&bytes[..end])
     };
-    gap_conductance("ifl_gap_conductance_n", name, d, p, theta_a, theta_b, out)
+    // Named as both: the Fortran module's ifl_gap_conductance(name, ...) is this call.
+    let routine = "ifl_gap_conductance_n (or the Fortran module's ifl_gap_conductance)";
+    gap_conductance(routine, name, d, p, theta_a, theta_b, out)
 }
 
 /// The body of both native conductance calls; `name` is `None` for a NULL pointer.

@@ -260,7 +260,8 @@ impl Name {
     fn routine(self) -> &'static str {
         match self {
             Name::Terminated(_) => "ifl_pore_pressure",
-            Name::Counted(..) => "ifl_pore_pressure_n",
+            // Named as both: the Fortran module's ifl_pore_pressure(name, ...) is this call.
+            Name::Counted(..) => "ifl_pore_pressure_n (or the Fortran module's ifl_pore_pressure)",
         }
     }
 

@@ -7,8 +7,8 @@ use std::sync::Once;
 
 /// Writes `toml` to `interfacial-TAG-PID.toml` in the temporary directory and points
 /// `INTERFACIAL_CONFIG` at it, the first time it is called in this process; later calls (from
-/// other tests, on other threads) wait for the first and do nothing. Every test of the binary
-/// that reaches the library calls it first.
+/// other tests, on other threads) wait for the first and do nothing. The file is removed when
+/// the process exits. Every test of the binary that reaches the library calls it first.
 pub fn config_once(tag: &str, toml: &str) {
     static ONCE: Once = Once::new();
     ONCE.call_once(|| {
@@ -18,5 +18,25 @@ pub fn config_once(tag: &str, toml: &str) {
         // SAFETY: set once, before any thread of this binary calls into the library: every test
         // calls config_once first, and Once blocks the others until it is done.
         unsafe { std::env::set_var("INTERFACIAL_CONFIG", &path) };
+        remove_at_exit(path);
     });
+}
+
+/// Removes `path` when the process exits: C's `atexit`, which runs when the test harness (or
+/// the fuzzer) returns from `main` or calls `exit`, so no configuration file is left behind in
+/// the temporary directory (`scripts/test.sh` checks that). Once per process.
+fn remove_at_exit(path: std::path::PathBuf) {
+    static PATH: std::sync::OnceLock<std::path::PathBuf> = std::sync::OnceLock::new();
+    unsafe extern "C" {
+        fn atexit(f: extern "C" fn()) -> std::ffi::c_int;
+    }
+    extern "C" fn remove() {
+        if let Some(p) = PATH.get() {
+            let _ = std::fs::remove_file(p);
+        }
+    }
+    if PATH.set(path).is_ok() {
+        // SAFETY: `remove` is a plain function that only removes a file.
+        unsafe { atexit(remove) };
+    }
 }
