@@ -22,25 +22,6 @@ pub(crate) fn state_with_guards(n: usize) -> Vec<f64> {
 /// array's end (a test's deliberately bad size) leaves that array without guard slots.
 pub(crate) type Outputs<'a, const K: usize> = [(&'a mut [f64], usize); K];
 
-/// `set_guards` and `guards_intact` of a host call (`FricCall`, `UinterCall`), from its one list
-/// of output arrays, `fn outputs(&mut self) -> Outputs<'_, K>`.
-macro_rules! guard_methods {
-    () => {
-        /// Fills every output entry past what the call may write with [`GUARD`](crate::abi::host::GUARD).
-        pub fn set_guards(&mut self) {
-            $crate::abi::host::fill_guards(self.outputs());
-        }
-
-        /// True when every guard slot still holds [`GUARD`](crate::abi::host::GUARD).
-        #[must_use]
-        pub fn guards_intact(&self) -> bool {
-            // On a copy: `outputs` lends the arrays mutably (one list serves both).
-            $crate::abi::host::guards_hold(self.clone().outputs())
-        }
-    };
-}
-pub(crate) use guard_methods;
-
 /// Fills every guard slot of `outputs` with [`GUARD`].
 pub(crate) fn fill_guards<const K: usize>(outputs: Outputs<'_, K>) {
     for (array, written) in outputs {
@@ -219,7 +200,17 @@ impl FricCall {
         ]
     }
 
-    guard_methods!();
+    /// Fills every output entry past what the call may write with [`GUARD`].
+    pub fn set_guards(&mut self) {
+        fill_guards(self.outputs());
+    }
+
+    /// True when every guard slot still holds [`GUARD`].
+    #[must_use]
+    pub fn guards_intact(&self) -> bool {
+        // On a copy: `outputs` lends the arrays mutably (one list serves both).
+        guards_hold(self.clone().outputs())
+    }
 
     /// `∂τ_a/∂Δγ_b` = `DDTDDG(a,b)`, 0-based.
     #[must_use]

@@ -4,7 +4,7 @@
 
 use std::ffi::c_char;
 
-use super::host::{Outputs, blank_padded, guard_methods, state_with_guards};
+use super::host::{Outputs, blank_padded, fill_guards, guards_hold, state_with_guards};
 use super::uinter_;
 
 /// All UINTER arguments of one interface point. Arrays are sized for NDIR ≤ 3 plus guard slots.
@@ -114,7 +114,17 @@ impl UinterCall {
         ]
     }
 
-    guard_methods!();
+    /// Fills every output entry past what the call may write with [`GUARD`](super::host::GUARD).
+    pub fn set_guards(&mut self) {
+        fill_guards(self.outputs());
+    }
+
+    /// True when every guard slot still holds [`GUARD`](super::host::GUARD).
+    #[must_use]
+    pub fn guards_intact(&self) -> bool {
+        // On a copy: `outputs` lends the arrays mutably (one list serves both).
+        guards_hold(self.clone().outputs())
+    }
 
     /// `DDSDDR(i,j)`, 0-based.
     #[must_use]
