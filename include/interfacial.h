@@ -408,7 +408,9 @@ enum IflStatus ifl_forced_sliding(const double *props,
  * uses `STATEV(1..3)` (accumulated slip, slip rate, status) and needs `NSTATV ≥ 3`; with
  * tangential damping (`PROPS(17)` > 0) it also keeps the viscous stress in `STATEV(4..3+NFDIR)`
  * and needs `NSTATV ≥ 3 + NFDIR`. `PROPS(1) = 2` selects the adhesive law (seed 004): the same
- * three state variables, always `LM = 0`.
+ * three state variables, always `LM = 0`. `PROPS(1) = 3` selects rate-and-state friction
+ * (Dieterich–Ruina): the same three and the state θ in `STATEV(4)` (`NSTATV ≥ 4`), always
+ * `LM = 0`.
  *
  * On entry `LM` is the previous iteration's answer (0 motion, 1 exact stick, 2 frictionless);
  * with `LM = 2` nothing is written. On exit:
