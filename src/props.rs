@@ -61,6 +61,17 @@ impl FrictionLaw {
             FrictionLaw::RateState(_) => "PROPS(1) = 3 (rate-and-state law)",
         }
     }
+
+    /// Law 1 as the extended Coulomb law (the plain one wrapped), for an entry point that
+    /// serves law 1 only; another law is refused, the message naming it and then `why` (what
+    /// the routine serves instead).
+    pub fn into_coulomb_extended(self, why: &str) -> Result<ExtendedCoulomb, LawError> {
+        match self {
+            FrictionLaw::Coulomb(base) => Ok(ExtendedCoulomb::new(base)),
+            FrictionLaw::CoulombExtended(law) => Ok(law),
+            other => Err(LawError::Parameter(format!("{}: {why}", other.name()))),
+        }
+    }
 }
 
 /// Reads `PROPS(1)` (the law code) and the law's parameters.

@@ -8,7 +8,7 @@ use super::native::IflStatus;
 use super::{boundary, count, read_array, slice, write_array, write_matrix};
 use crate::LawError;
 use crate::laws::coulomb_extended::ExtendedCoulomb;
-use crate::props::{FrictionLaw, friction_law};
+use crate::props::friction_law;
 use crate::report::Site;
 
 /// Forced sliding for the law-1 `PROPS` of `fric_` (docs/props.md; μ₁, μ₂, the μ laws, τ_max):
@@ -49,21 +49,8 @@ pub unsafe extern "C" fn ifl_forced_sliding(
         }
         let nprops = count("nprops", nprops)?;
         // SAFETY: `props` holds `nprops` reals by contract.
-        let law = match friction_law(unsafe { slice(props, nprops, "props") }?)? {
-            FrictionLaw::Coulomb(base) => ExtendedCoulomb::new(base),
-            FrictionLaw::CoulombExtended(law) => law,
-            FrictionLaw::Adhesive(_) => {
-                return Err(LawError::Parameter(
-                    "PROPS(1) = 2 (adhesive): only law 1 (Coulomb) is provided here".into(),
-                ));
-            }
-            other @ FrictionLaw::RateState(_) => {
-                return Err(LawError::Parameter(format!(
-                    "{}: only law 1 (Coulomb) is provided here",
-                    other.name()
-                )));
-            }
-        };
+        let law = friction_law(unsafe { slice(props, nprops, "props") }?)?
+            .into_coulomb_extended("only law 1 (Coulomb) is provided here")?;
         // SAFETY (both arms): arrays of nfdir and nfdir² entries by contract.
         unsafe {
             match nfdir {

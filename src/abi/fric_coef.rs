@@ -6,8 +6,7 @@ use std::ffi::{c_char, c_int};
 use super::{count, fortran_name_bytes, host_site, null_pointer, read, slice};
 use crate::LawError;
 use crate::config::friction_table_for;
-use crate::laws::coulomb_extended::ExtendedCoulomb;
-use crate::props::{FrictionLaw, friction_law_with_table};
+use crate::props::friction_law_with_table;
 
 /// Number of derivative slots per point and direction in `fCoefDeriv(nBlock,20,2)`.
 pub const FRIC_COEF_NDERIV: usize = 20;
@@ -86,24 +85,11 @@ impl CoefArgs {
             let law = friction_law_with_table(props, || {
                 friction_table_for(fortran_name_bytes(self.surf_int, self.surf_int_len))
             })?;
-            let law = match law {
-                FrictionLaw::Coulomb(base) => ExtendedCoulomb::new(base),
-                FrictionLaw::CoulombExtended(law) => law,
-                FrictionLaw::Adhesive(_) => {
-                    return Err(LawError::Parameter(
-                        "PROPS(1) = 2 (adhesive): only law 1 (Coulomb) is provided here".into(),
-                    ));
-                }
-                // μ of rate-and-state friction depends on the state θ, which FRIC_COEF does
-                // not carry (no STATEV): fric_ serves it (docs/props.md, "Law 3").
-                other @ FrictionLaw::RateState(_) => {
-                    return Err(LawError::Parameter(format!(
-                        "{}: μ depends on the state variable θ, which FRIC_COEF has no STATEV \
-                         for; use FRIC (fric_)",
-                        other.name()
-                    )));
-                }
-            };
+            // Law 1 only: μ of the other laws is not a function of rate, pressure and
+            // temperature alone (law 2 carries adhesion, law 3 the state θ, which FRIC_COEF has
+            // no STATEV for): fric_ serves them (docs/props.md).
+            let law =
+                law.into_coulomb_extended("FRIC_COEF serves law 1 (Coulomb) only; use FRIC")?;
             if n == 0 {
                 return Ok(());
             }

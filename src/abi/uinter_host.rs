@@ -114,18 +114,6 @@ impl UinterCall {
         ]
     }
 
-    /// Fills every output entry past what the call may write with [`GUARD`](super::host::GUARD).
-    pub fn set_guards(&mut self) {
-        fill_guards(self.outputs());
-    }
-
-    /// True when every guard slot still holds [`GUARD`](super::host::GUARD).
-    #[must_use]
-    pub fn guards_intact(&self) -> bool {
-        // On a copy: `outputs` lends the arrays mutably (one list serves both).
-        guards_hold(self.clone().outputs())
-    }
-
     /// `DDSDDR(i,j)`, 0-based.
     #[must_use]
     pub fn ddsddr(&self, i: usize, j: usize) -> f64 {
@@ -136,6 +124,18 @@ impl UinterCall {
     #[must_use]
     pub fn ddfddr(&self, i: usize, j: usize) -> f64 {
         self.ddfddr[i + 2 * j]
+    }
+
+    /// Fills every output entry past what the call may write with [`GUARD`](super::host::GUARD).
+    pub fn set_guards(&mut self) {
+        fill_guards(self.outputs());
+    }
+
+    /// True when every guard slot still holds [`GUARD`](super::host::GUARD).
+    #[must_use]
+    pub fn guards_intact(&self) -> bool {
+        // On a copy: `outputs` lends the arrays mutably (one list serves both).
+        guards_hold(self.clone().outputs())
     }
 
     /// Calls `uinter_` with this point's arguments.

@@ -35,7 +35,7 @@ use super::coulomb::{
 };
 use super::friction_coefficient::{RateFormulation, STICK_TEST_ROUNDING};
 use super::parameter_range::nonnegative;
-use super::point_law::{MAX_POINT_STATEV, PointAnswer, PointLaw};
+use super::point_law::{PointAnswer, PointLaw};
 use super::small_vec::{add, all_finite, diagonal, norm, radial_transverse, scale, unit};
 use crate::{LawError, Outcome};
 
@@ -672,26 +672,19 @@ impl PointLaw for Adhesive {
         CoulombState::NSTATV
     }
 
-    fn exact_stick(&self) -> bool {
-        false
-    }
-
     fn update_point<const N: usize>(
         &self,
         inc: &Increment<N>,
         statev: &[f64],
     ) -> Result<PointAnswer<N>, LawError> {
-        let state = CoulombState::from_statev(statev)?;
-        let up = self.update(inc, &state)?;
-        let mut out = [0.0; MAX_POINT_STATEV];
-        up.state.write_statev(&mut out);
-        Ok(PointAnswer {
-            contact: up.contact,
-            statev: out,
-            statev_len: CoulombState::NSTATV,
-            dtau_dtheta: [0.0; N],
-            step_ratio: up.outcome.step_ratio,
-        })
+        let up = self.update(inc, &CoulombState::from_statev(statev)?)?;
+        let mut end = [0.0; CoulombState::NSTATV];
+        up.state.write_statev(&mut end);
+        Ok(PointAnswer::isothermal(
+            up.contact,
+            &end,
+            up.outcome.step_ratio,
+        ))
     }
 }
 

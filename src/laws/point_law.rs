@@ -27,15 +27,34 @@ pub struct PointAnswer<const N: usize> {
     pub step_ratio: f64,
 }
 
+impl<const N: usize> PointAnswer<N> {
+    /// The answer of a law that does not depend on temperature: `statev` is the end state's
+    /// `STATEV` (at most [`MAX_POINT_STATEV`] entries, a law's own constant).
+    #[must_use]
+    pub fn isothermal(contact: Contact<N>, statev: &[f64], step_ratio: f64) -> Self {
+        let mut all = [0.0; MAX_POINT_STATEV];
+        all[..statev.len()].copy_from_slice(statev);
+        PointAnswer {
+            contact,
+            statev: all,
+            statev_len: statev.len(),
+            dtau_dtheta: [0.0; N],
+            step_ratio,
+        }
+    }
+}
+
 /// A friction law as `fric_` runs it at one point.
 pub trait PointLaw {
     /// `STATEV` entries the law reads and writes with `NFDIR` = `nfdir` (at most
     /// [`MAX_POINT_STATEV`]).
     fn nstatv(&self, nfdir: usize) -> usize;
 
-    /// Whether the law answers exact stick (`LM = 1`); when not, an `LM = 1` on entry reads as
-    /// 0 and the answer is always `LM = 0`.
-    fn exact_stick(&self) -> bool;
+    /// Whether the law answers exact stick (`LM = 1`); when not (the default), an `LM = 1` on
+    /// entry reads as 0 and the answer is always `LM = 0`.
+    fn exact_stick(&self) -> bool {
+        false
+    }
 
     /// One increment: `statev` holds at least [`Self::nstatv`] entries (the start state).
     fn update_point<const N: usize>(

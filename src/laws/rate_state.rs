@@ -31,7 +31,7 @@ use super::coulomb::{
     Contact, Coulomb, CoulombState, FrictionStatus, Increment, StickMode, Traction, name_bad_input,
 };
 use super::friction_coefficient::STICK_TEST_ROUNDING;
-use super::point_law::{MAX_POINT_STATEV, PointAnswer, PointLaw};
+use super::point_law::{PointAnswer, PointLaw};
 use super::small_vec::{all_finite, diagonal, norm, radial_transverse, scale, unit};
 use crate::{LawError, Outcome};
 
@@ -446,26 +446,22 @@ impl PointLaw for RateState {
         RateStateState::NSTATV
     }
 
-    fn exact_stick(&self) -> bool {
-        false
-    }
-
     fn update_point<const N: usize>(
         &self,
         inc: &Increment<N>,
         statev: &[f64],
     ) -> Result<PointAnswer<N>, LawError> {
-        let state = RateStateState::from_statev(statev, self.theta_initial)?;
-        let up = self.update(inc, &state)?;
-        let mut out = [0.0; MAX_POINT_STATEV];
-        up.state.write_statev(&mut out);
-        Ok(PointAnswer {
-            contact: up.contact,
-            statev: out,
-            statev_len: RateStateState::NSTATV,
-            dtau_dtheta: [0.0; N],
-            step_ratio: up.outcome.step_ratio,
-        })
+        let up = self.update(
+            inc,
+            &RateStateState::from_statev(statev, self.theta_initial)?,
+        )?;
+        let mut end = [0.0; RateStateState::NSTATV];
+        up.state.write_statev(&mut end);
+        Ok(PointAnswer::isothermal(
+            up.contact,
+            &end,
+            up.outcome.step_ratio,
+        ))
     }
 }
 
