@@ -124,9 +124,8 @@ pub fn fric_batch(
         .map_err(whole);
     let law = match checked {
         Ok(FrictionLaw::Coulomb(law)) => law,
-        // The batch kernel is the Coulomb law's; the adhesive law (PROPS(1) = 2) goes through
-        // fric_ or uinter_ per point.
-        // Anisotropy, μ laws, damping: the extended law goes through fric_ per point.
+        // The batch kernel is the Coulomb law's. Anisotropy, μ laws, damping: the extended law
+        // goes through fric_ per point.
         Ok(FrictionLaw::CoulombExtended(_)) => {
             lower(pnewdt, CUTBACK_RATIO);
             return Err(whole(LawError::Parameter(
@@ -134,14 +133,8 @@ pub fn fric_batch(
                     .into(),
             )));
         }
-        Ok(FrictionLaw::Adhesive(_)) => {
-            lower(pnewdt, CUTBACK_RATIO);
-            return Err(whole(LawError::Parameter(
-                "PROPS(1) = 2 (adhesive): the batch entry runs law 1 (Coulomb) only; call fric_ per point"
-                    .into(),
-            )));
-        }
-        Ok(other @ FrictionLaw::RateState(_)) => {
+        // Laws 2 and 3 go through fric_ (or uinter_) per point.
+        Ok(other @ (FrictionLaw::Adhesive(_) | FrictionLaw::RateState(_))) => {
             lower(pnewdt, CUTBACK_RATIO);
             return Err(whole(LawError::Parameter(format!(
                 "{}: the batch entry runs law 1 (Coulomb) only; call fric_ per point",
