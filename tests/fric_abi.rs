@@ -128,7 +128,7 @@ fn cases() -> Vec<Case> {
         ("NPROPS 0", 2, |c| c.nprops = 0, "NPROPS = 0"),
         ("NPROPS 1", 2, |c| c.nprops = 1, "NPROPS = 1"),
         ("NPROPS < 0", 2, |c| c.nprops = -4, "NPROPS = -4"),
-        ("unknown law", 2, |c| set_entry(c, 1, 3.0), "PROPS(1) = 3"),
+        ("unknown law", 2, |c| set_entry(c, 1, 4.0), "PROPS(1) = 4"),
         ("non-integer law", 2, |c| set_entry(c, 1, 1.5), "integer"),
         ("NaN law", 2, |c| set_entry(c, 1, f64::NAN), "PROPS(1)"),
         ("μ < 0", 2, |c| set_entry(c, 2, -0.1), "PROPS(2)"),
