@@ -52,7 +52,11 @@ fn check(layouts: &[(&str, &Layout)]) {
 
 #[test]
 fn props_tables_are_up_to_date() {
-    check(&[("law 1", &COULOMB), ("law 2", &ADHESIVE), ("law 3", &RATE_STATE)]);
+    check(&[
+        ("law 1", &COULOMB),
+        ("law 2", &ADHESIVE),
+        ("law 3", &RATE_STATE),
+    ]);
 }
 
 /// The check itself can fail: a table that differs from the schema by one character is caught,
