@@ -236,7 +236,7 @@ fn fric_coef_bad_props() {
     extra[20] = 1.0;
     refused(&block(&extra), "PROPS(21)");
     for (i, x, name) in [
-        (0, 3.0, "PROPS(1)"),
+        (0, 4.0, "PROPS(1)"),
         (0, 1.5, "PROPS(1)"),
         (1, -0.5, "PROPS(2)"),
         (7, 2.0, "PROPS(8)"),
