@@ -299,10 +299,12 @@ impl BatchCase {
         // A batch of the adhesive law may be refused as a whole (no batch kernel), unless it
         // reduces to the Coulomb law, in which case it must run like fric_.
         // Likewise the extended law 1 (anisotropy, μ laws, damping): fric_ runs it, the batch
-        // kernel is the plain law's.
+        // kernel is the plain law's; and rate-and-state friction (law 3), which the batch
+        // refuses by name (docs/props.md, "Law 3").
         let adhesive_refusal = !ok
             && untouched
             && (out.message.contains("PROPS(1) = 2 (adhesive)")
+                || out.message.contains("PROPS(1) = 3 (rate-and-state law)")
                 || out.message.contains("extended law-1 PROPS"));
         let probe_refused = !self.bad_shape() && {
             let mut probe = FricCase::coulomb(a.int("nfdir"), &a["props"]);
