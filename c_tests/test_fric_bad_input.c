@@ -176,7 +176,7 @@ static void nfdir_0(fh_fric *h) { h->nfdir = 0; }
 static void nfdir_3(fh_fric *h) { h->nfdir = 3; }
 static void nprops_0(fh_fric *h) { h->nprops = 0; }
 static void nprops_1(fh_fric *h) { h->nprops = 1; }
-static void law_code_4(fh_fric *h) { h->props[0] = 4.0; }
+static void law_code_4(fh_fric *h) { h->props[0] = 4.0; } /* no law 4 (3 is rate-and-state) */
 static void law_code_1_5(fh_fric *h) { h->props[0] = 1.5; }
 static void mu_negative(fh_fric *h) { h->props[1] = -MU; }
 static void mu2_negative(fh_fric *h) { h->props[2] = -0.4; }
@@ -219,7 +219,7 @@ static const bad_case CATALOGUE[] = {
     {"NFDIR = 3", nfdir_3, "NFDIR = 3", NULL},
     {"NPROPS = 0", nprops_0, "NPROPS = 0", NULL},
     {"NPROPS = 1", nprops_1, "NPROPS = 1", NULL},
-    {"PROPS(1) = 4", law_code_4, "PROPS(1) = 4", NULL},
+    {"PROPS(1) = 4", law_code_4, "PROPS(1) = 4", "not a known law code"},
     {"PROPS(1) = 1.5", law_code_1_5, "PROPS(1) = 1.5", "integer"},
     {"mu < 0", mu_negative, "PROPS(2)", NULL},
     {"mu2 < 0", mu2_negative, "PROPS(3)", NULL},

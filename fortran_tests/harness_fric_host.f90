@@ -1,11 +1,11 @@
 ! harness_fric_host.f90 -- the host side of one FRIC contact point, shared by the free-form FRIC
 ! harnesses (test_fric_scenes.f90, test_fric_table.f90, test_fric_steady.f90,
-! test_fric_weakening.f90): every one of the 39 Abaqus arguments in one derived type, output
-! arrays longer than NFDIR and STATEV longer than NSTATV with their tails at a sentinel, and the
-! call made as a user's Fortran 90 host makes it (a plain `call fric(...)`, no interface block).
-! The twin of the host struct of c_tests/harness.h. Each harness keeps its own scenes and checks
-! of the law; it sets the host values it pins (names, element, node, coordinates, DTIME) after
-! new_point.
+! test_fric_weakening.f90, test_fric_rate_state.f90): every one of the 39 Abaqus arguments in
+! one derived type, output arrays longer than NFDIR and STATEV longer than NSTATV with their
+! tails at a sentinel, and the call made as a user's Fortran 90 host makes it (a plain
+! `call fric(...)`, no interface block). The twin of the host struct of c_tests/harness.h. Each
+! harness keeps its own scenes and checks of the law; it sets the host values it pins (names,
+! element, node, coordinates, DTIME) after new_point.
 
 module harness_fric_host
   use harness_tally, only: dp, check

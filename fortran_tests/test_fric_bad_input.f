@@ -60,7 +60,7 @@ C        0 none (baseline)        6 input INPUT of the table below
 C        1 NFDIR = 0                 = value IVAL of the table below
 C        2 NFDIR = 3              7 NSTATV = 2
 C        3 NPROPS = 1             8 CHRLNGTH = 0 with PROPS(5) = 0
-C        4 PROPS(1) = 4           9 LM = 5 on entry
+C        4 PROPS(1) = 4 (no law)  9 LM = 5 on entry
 C        5 PROPS(2) = mu < 0     10 PROPS(2) = mu < 0 from a host that
 C                                   had already asked for a smaller
 C                                   increment (PNEWDT = 0.1 on entry):
@@ -93,7 +93,7 @@ C-----------------------------------------------------------------------
       CHARACTER*512 MSG
       LOGICAL VALID,SAMEX
       DATA KEY /' ', 'NFDIR = 0', 'NFDIR = 3', 'NPROPS = 1',
-     1 'PROPS(1)', 'PROPS(2)', ' ', 'NSTATV = 2',
+     1 'PROPS(1) = 4', 'PROPS(2)', ' ', 'NSTATV = 2',
      2 'CHRLNGTH', 'LM = 5', 'PROPS(2)', 'NPROPS = 0',
      3 'PROPS(1) = 1.5', 'PROPS(3)', 'PROPS(7)', 'PROPS(8)',
      4 'CHRLNGTH', 'DTIME', 'STATEV', 'TAULM'/

@@ -27,7 +27,8 @@ use interfacial::abi::uinter_host::UinterCall;
 use interfacial::config::Config;
 use interfacial::props::schema::Layout;
 use interfacial::props::{
-    ADHESIVE, AdhesiveBuilder, COULOMB, CoulombBuilder, FrictionLaw, friction_law_checked,
+    ADHESIVE, AdhesiveBuilder, COULOMB, CoulombBuilder, FrictionLaw, RATE_STATE, RateStateBuilder,
+    friction_law_checked,
 };
 
 /// The folder of the fragments.
@@ -128,6 +129,31 @@ fn decks() -> Vec<Deck> {
             notes: &[
                 "Law 2 (docs/props.md): mu_d = 0.3, mu_s = 0.6, S_a = 5, k_mu = 0.05, v_half = 0.1,",
                 "gamma_crit = 1e-3. FRIC is called for closed points only, so N_a plays no part.",
+            ],
+        },
+        Deck {
+            file: "abaqus_fric_rate_state.inp",
+            title: "rate-and-state friction (law 3) through FRIC",
+            routine: Routine::Fric,
+            interaction: "SI_RATE_STATE",
+            depvar: Some(4),
+            props: Some((
+                &RATE_STATE,
+                RateStateBuilder::new()
+                    .mu0(0.6)
+                    .a(0.01)
+                    .b(0.015)
+                    .v0(1e-6)
+                    .l(1e-5)
+                    .form(1.0)
+                    .slip_tolerance(0.005)
+                    .build(),
+            )),
+            notes: &[
+                "Law 3 (docs/props.md): mu0 = 0.6 at V0 = 1e-6, a = 0.01, b = 0.015 (b > a:",
+                "velocity weakening), L = 1e-5; aging law, regularised mu (finite as V -> 0);",
+                "gamma_crit = 0.005 x CHRLNGTH; theta starts at L/V0. NSTATV = DEPVAR >= 4",
+                "(STATEV(4) keeps the state theta). V0 and L in the model's velocity and length.",
             ],
         },
         Deck {
@@ -753,6 +779,7 @@ fn a_bad_fragment_is_refused() {
     let all = decks();
     let by_file = |f: &str| all.iter().find(|d| d.file == f).expect("a fragment");
     let coulomb = render(by_file("abaqus_fric_coulomb.inp"));
+    let rate_state = render(by_file("abaqus_fric_rate_state.inp"));
     let uinter = render(by_file("abaqus_uinter_adhesive.inp"));
     let gapcon = render(by_file("abaqus_gapcon.inp"));
     // Each case under its own interaction name: a refused configuration is remembered per
@@ -778,6 +805,13 @@ fn a_bad_fragment_is_refused() {
                 .replace("SI_COULOMB", "BAD_DEPVAR")
                 .replace("DEPVAR=3", "DEPVAR=2"),
             "NSTATV",
+        ),
+        (
+            Routine::Fric,
+            rate_state
+                .replace("SI_RATE_STATE", "BAD_RATE_STATE_DEPVAR")
+                .replace("DEPVAR=4", "DEPVAR=3"),
+            "NSTATV = 3",
         ),
         (
             Routine::Uinter,

@@ -609,3 +609,41 @@ fn fric_adhesive_vanishing_start_strength_stays_within_the_property() {
     ));
     assert_eq!(out.real("PNEWDT"), 0.25, "{out:?}");
 }
+
+/// The `fric` decoder's law-3 arm (rate-and-state: `NPROPS` = 11, picked by 6 of the 64 values
+/// of the third byte, 34 among them) is live and its properties hold: pseudo-random inputs (a
+/// fixed Lehmer sequence) with that byte run through the fuzzer's decoder and property check,
+/// and law 3 answers both in slip and in stick, not only with refusals.
+#[test]
+fn fric_rate_state_arm_reaches_the_law() {
+    let mut state: u64 = 0x9e37_79b9;
+    let mut next = || {
+        state = state.wrapping_mul(48_271) % 0x7fff_ffff;
+        state.to_le_bytes()[0] ^ state.to_le_bytes()[1]
+    };
+    let (mut slid, mut stuck, mut refused) = (0, 0, 0);
+    for _ in 0..400 {
+        let len = usize::from(next()) + 40;
+        let mut bytes: Vec<u8> = (0..len).map(|_| next()).collect();
+        bytes[2] = 34;
+        let case = FricCase::decode(&bytes);
+        assert_eq!(
+            case.args["PROPS"].len(),
+            11,
+            "the decoder changed: {case:?}"
+        );
+        let out = checked(&case);
+        if !out.message.is_empty() {
+            refused += 1;
+        } else if case.args.int("LM") != 2 && out["STATEV"][2] == 1.0 {
+            slid += 1;
+        } else if case.args.int("LM") != 2 {
+            stuck += 1;
+        }
+    }
+    eprintln!("law 3 arm: {slid} slips, {stuck} sticks, {refused} refused");
+    assert!(
+        slid > 0 && stuck > 0,
+        "{slid} slips, {stuck} sticks, {refused} refused"
+    );
+}

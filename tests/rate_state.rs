@@ -288,3 +288,53 @@ fn bad_input_is_refused_by_name() {
         }
     }
 }
+
+/// `NSTATV` below the Coulomb law's 3 is refused naming the rate-and-state law and its 4 (the
+/// law checks its own need). Found by the `fric` fuzz target's law-3 arm.
+#[test]
+fn a_short_nstatv_names_the_rate_state_law() {
+    for nstatv in [0, 2] {
+        let mut c = point(1, &props(0.0, 0.0));
+        c.nstatv = nstatv;
+        c.dgam = [1e-6, 0.0, 0.0];
+        c.pnewdt = 1e36;
+        c.call();
+        let msg = FricCall::last_error();
+        assert!(c.pnewdt < 1.0, "NSTATV = {nstatv}: not refused");
+        assert!(
+            msg.contains("needs 4") && !msg.contains("Coulomb"),
+            "NSTATV = {nstatv}: {msg}"
+        );
+    }
+}
+
+/// A μ(V, θ) out of f64's range is never taken as μ = 0: here (slip law, so θ stays near
+/// θ₀ = 10⁻¹⁰⁰) b = 0 and V₀θ/L ≈ 10⁻⁴⁰⁰ underflows, where μ = μ₀ + a·ln(V/V₀) ≈ 7.4 (b = 0
+/// drops the state term). Found by the `fric` fuzz target's law-3 arm. Either a refusal or the
+/// slip at μ₀ + a·ln(V/V₀) passes.
+#[test]
+fn a_coefficient_out_of_range_is_not_taken_as_zero() {
+    let props = RateStateBuilder::new()
+        .mu0(MU0)
+        .a(A)
+        .b(0.0)
+        .v0(1e-300)
+        .l(1.0)
+        .evolution(1.0)
+        .gamma_crit(GAMMA_CRIT)
+        .theta0(1e-100)
+        .build();
+    let mut c = point(1, &props);
+    c.dgam = [1e-6, 0.0, 0.0];
+    c.dtime = 1.0;
+    c.pnewdt = 1e36;
+    c.call();
+    let v = (1e-6 - GAMMA_CRIT) / 1.0;
+    let mu = MU0 + A * (v.ln() - 1e-300f64.ln());
+    assert!(
+        c.pnewdt < 1.0 || (tau_eq(&c) - mu * P).abs() <= 1e-9 * mu * P,
+        "accepted with τ = {}, μ·p = {}",
+        tau_eq(&c),
+        mu * P
+    );
+}

@@ -298,12 +298,13 @@ impl BatchCase {
         }
         // A batch of another law than 1 (adhesive, rate-and-state) may be refused as a whole
         // (no batch kernel), unless it reduces to the Coulomb law, in which case it must run
-        // like fric_.
-        // Likewise the extended law 1 (anisotropy, μ laws, damping): fric_ runs it, the batch
-        // kernel is the plain law's.
+        // like fric_. Likewise the extended law 1 (anisotropy, μ laws, damping): fric_ runs
+        // it, the batch kernel is the plain law's.
         let adhesive_refusal = !ok
             && untouched
-            && (out.message.contains("the batch entry runs law 1 (Coulomb) only")
+            && (out
+                .message
+                .contains("the batch entry runs law 1 (Coulomb) only")
                 || out.message.contains("extended law-1 PROPS"));
         let probe_refused = !self.bad_shape() && {
             let mut probe = FricCase::coulomb(a.int("nfdir"), &a["props"]);

@@ -9,6 +9,7 @@ use super::bytes::{Bytes, bits, len};
 use super::contract::{Names, adhesive_props, adhesive_rate, norm, pnewdt_refusal};
 use Draw::{Int, Large, Number, Pick, Reals};
 use interfacial::abi::fric_;
+use interfacial::props::{LAW_RATE_STATE, RATE_STATE_NPROPS};
 
 pub use super::contract::UNWRITTEN;
 
@@ -21,12 +22,17 @@ const COUNTS: [Row; 6] = [
     ),
     (&["NSTATV"], Pick(&[3, 3, 3, 3, 4, 5, 8, 2, 0, -1])),
     // The first list twice (so that recorded inputs decode as before, `pick` taking the byte
-    // modulo the length), with two of the second half's 7s made 20 (the extended layout).
+    // modulo the length), with two of the second half's 7s made 20 (the extended layout); then
+    // those 32 twice, with six 7s of the second copy made 11 (law 3, rate-and-state: its whole
+    // layout), away from the bytes the recorded inputs hold here (36, 38, 41 and 49 modulo 64,
+    // tests/fuzz_regressions.rs and fuzz/regressions/).
     (
         &["NPROPS"],
         Pick(&[
             2, 5, 7, 7, 7, 7, 7, 7, 6, 4, 3, 8, 9, 1, 0, -1, //
-            2, 5, 7, 20, 7, 20, 7, 7, 6, 4, 3, 8, 9, 1, 0, -1,
+            2, 5, 7, 20, 7, 20, 7, 7, 6, 4, 3, 8, 9, 1, 0, -1, //
+            2, 5, 11, 11, 7, 11, 7, 11, 6, 4, 3, 8, 9, 1, 0, -1, //
+            2, 5, 7, 20, 7, 20, 11, 11, 6, 4, 3, 8, 9, 1, 0, -1,
         ]),
     ),
     (&["LM"], Pick(&[0, 0, 0, 0, 1, 1, 2, -1, 3])),
@@ -106,6 +112,40 @@ fn decode_props(b: &mut Bytes, nprops: i32) -> Vec<f64> {
     props
 }
 
+/// A law-3 `PROPS` (rate-and-state, docs/props.md "Law 3"), its whole layout: each entry mostly
+/// a value of its own valid range (μ₀ in [0, 1], a in [0, 0.1], b in [−0.05, 0.15], V₀ and L
+/// ordinary positive, the two switches 0 or 1, γ_crit, the tolerance and θ₀ off or positive),
+/// one in 16 any real.
+fn decode_rate_state_props(b: &mut Bytes) -> Vec<f64> {
+    let mut props = Vec::with_capacity(RATE_STATE_NPROPS);
+    for i in 0..RATE_STATE_NPROPS {
+        let sel = b.u8();
+        let v = match (i, sel % 16) {
+            (_, 15) => b.real(),
+            (0, _) => f64::from(LAW_RATE_STATE),
+            (1, _) => b.unit(),
+            (2, _) => 0.1 * b.unit(),
+            (3, _) => 0.2 * b.unit() - 0.05,
+            (4 | 5, _) => b.positive(),
+            (6 | 7, _) => f64::from(sel % 2),
+            (_, _) => {
+                if sel % 2 == 0 {
+                    0.0
+                } else {
+                    b.positive()
+                }
+            }
+        };
+        props.push(v);
+    }
+    props
+}
+
+/// Whether `props` selects law 3 (`PROPS(1) = 3`).
+fn is_rate_state(props: &[f64]) -> bool {
+    props.first() == Some(&f64::from(LAW_RATE_STATE))
+}
+
 impl FricCase {
     /// A valid Coulomb call with `nfdir` directions and these `props`, `NSTATV = 3`, all reals
     /// zero except `DTIME = CHRLNGTH = 1`, `PNEWDT = 1e36`, `DROT` the identity, `TEMP = 20`,
@@ -142,14 +182,45 @@ impl FricCase {
         let b = &mut Bytes::new(data);
         let mut a = Args::new();
         a.draw(b, &COUNTS);
-        a.put("PROPS", decode_props(b, a.int("NPROPS")));
+        // Law 3's arm: its layout, and NSTATV mostly the 4 it needs.
+        let rate_state = len(a.int("NPROPS")) == RATE_STATE_NPROPS;
+        if rate_state {
+            a.put("PROPS", decode_rate_state_props(b));
+            a.set_int("NSTATV", b.pick(&[4, 4, 4, 4, 4, 4, 5, 8, 3, 0]));
+        } else {
+            a.put("PROPS", decode_props(b, a.int("NPROPS")));
+        }
         let flags = b.u8();
         a.draw(b, &INCREMENT);
         // STATEV(3) is a status code; keep it one mostly.
         if let Some(x) = a["STATEV"].get_mut(2) {
             *x = f64::from(b.u8() % 3);
         }
+        // Law 3: STATEV(4) = θ mostly 0 (not started) or positive, STATEV(1..2) mostly ≥ 0, and
+        // DTIME and CHRLNGTH (drawn below) mostly ≥ 0.
+        let shape = if rate_state { b.u8() } else { 0 };
+        if rate_state {
+            let statev = &mut a["STATEV"];
+            if let Some(x) = statev.get_mut(3) {
+                match shape % 4 {
+                    0 => *x = 0.0,
+                    1 | 2 => *x = b.positive(),
+                    _ => {}
+                }
+            }
+            if shape & 4 == 0 {
+                for x in statev.iter_mut().take(2) {
+                    *x = x.abs();
+                }
+            }
+        }
         a.draw(b, &POINT);
+        if rate_state && shape & 8 == 0 {
+            for name in ["DTIME", "CHRLNGTH"] {
+                let x = &mut a[name][0];
+                *x = x.abs();
+            }
+        }
         // Mostly a printable name, blank-padded to the hidden length.
         let mut name =
             || b.name_padded(flags & 0x40 == 0, if flags & 0x20 == 0 { b' ' } else { 0 });
@@ -258,7 +329,19 @@ impl FricCase {
         // the viscous stress in STATEV(4..3+NFDIR) (docs/props.md).
         let props = &a["PROPS"];
         let damping = props.first() == Some(&1.0) && props.get(16).is_some_and(|c| *c != 0.0);
-        let used = 3 + if damping { a.len_of("NFDIR") } else { 0 };
+        // Law 3 keeps θ in STATEV(4), and never reports exact stick.
+        let rate_state = is_rate_state(props);
+        if rate_state && lm != 0 {
+            return Err(format!("rate-and-state law with LM = {lm} on exit"));
+        }
+        if rate_state && a.len_of("NSTATV") < 4 {
+            return Err("rate-and-state law answered with NSTATV < 4".into());
+        }
+        let used = if rate_state {
+            4
+        } else {
+            3 + if damping { a.len_of("NFDIR") } else { 0 }
+        };
         let (statev, statev0) = (&out["STATEV"], &a["STATEV"]);
         written.extend(&statev[..used]);
         if let Some(x) = written.iter().find(|x| !x.is_finite()) {
@@ -299,6 +382,9 @@ impl FricCase {
         let get = |i: usize| self.prop(i);
         if get(0) == 2.0 {
             return self.check_adhesive_strength(out);
+        }
+        if is_rate_state(&self.args["PROPS"]) {
+            return self.check_rate_state(out);
         }
         let anisotropic = get(2) != 0.0 && get(2) != get(1);
         if anisotropic || self.args["PROPS"].iter().skip(7).any(|x| *x != 0.0) {
@@ -368,5 +454,125 @@ impl FricCase {
             ));
         }
         Ok(())
+    }
+
+    /// Law 3 against its definition (docs/props.md "Law 3"), written out here: after a slip
+    /// (`STATEV(3)` = 1 out) |τ| = μ(V, θ)·p⁺ at the rate and state the call reports
+    /// (`STATEV(2)`, `STATEV(4)`); after a stick |τ| ≤ μ(V*, θₙ)·p⁺, the strength of the stick
+    /// stiffness (V* the start slip rate after a slip, else V₀; θₙ the start state, θ₀ or L/V₀
+    /// when `STATEV(4)` = 0), and θ healed by Δt (aging law) or kept (slip law). θ > 0 always.
+    fn check_rate_state(&self, out: &Outputs) -> Result<(), String> {
+        let law = RateStateLaw::from_props(&self.args["PROPS"]);
+        let (statev0, statev) = (&self.args["STATEV"], &out["STATEV"]);
+        let theta = statev[3];
+        if theta.is_nan() || theta <= 0.0 {
+            return Err(format!("rate-and-state θ = {theta} on exit: {out:?}"));
+        }
+        let p_plus = self.args.real("PRESS").max(0.0);
+        let magnitude = norm(&out["TAU"]);
+        if statev[2] == 1.0 {
+            // Judged where the law's own quotients V₀θ/L and V/V₀ are normal numbers: outside,
+            // the library's logarithms of under- or overflowed quotients may differ from this
+            // independent μ (a NaN μ is refused: tests/rate_state.rs).
+            let normal = |q: f64| (1e-300..=1e300).contains(&q);
+            if !(normal(law.v0 * theta / law.l) && normal(statev[1] / law.v0)) {
+                return Ok(());
+            }
+            let (mu, scale) = law.mu(statev[1], theta);
+            let want = mu * p_plus;
+            let tol = 1e-12 * scale * p_plus + 1e-321;
+            if (magnitude - want).abs() > tol {
+                return Err(format!(
+                    "rate-and-state slip: |TAU| = {magnitude:e}, μ(V, θ)·p⁺ = {want:e}: {out:?}"
+                ));
+            }
+            return Ok(());
+        }
+        let theta_start = if statev0[3] == 0.0 {
+            law.theta_initial
+        } else {
+            statev0[3]
+        };
+        let v_star = if statev0[2] == 1.0 && statev0[1] > 0.0 {
+            statev0[1]
+        } else {
+            law.v0
+        };
+        let (mu, scale) = law.mu(v_star, theta_start);
+        let bound = (mu + 1e-12 * scale) * p_plus * (1.0 + 1e-12) + 1e-321;
+        if magnitude > bound {
+            return Err(format!(
+                "rate-and-state stick: |TAU| = {magnitude:e} above μ(V*, θₙ)·p⁺ = {bound:e}: {out:?}"
+            ));
+        }
+        let healed = if law.slip_law {
+            theta_start
+        } else {
+            theta_start + self.args.real("DTIME")
+        };
+        if (theta - healed).abs() > 4.0 * f64::EPSILON * healed {
+            return Err(format!(
+                "rate-and-state stick: θ = {theta:e} on exit, {healed:e} expected: {out:?}"
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// Law 3's parameters from a `PROPS` the library accepted, and μ(V, θ) written out from its
+/// definition (docs/props.md "Law 3"), for the property checks.
+struct RateStateLaw {
+    mu0: f64,
+    a: f64,
+    b: f64,
+    v0: f64,
+    l: f64,
+    slip_law: bool,
+    regularised: bool,
+    /// θ of a point whose `STATEV(4)` is 0: θ₀ = `PROPS(11)`, or L/V₀.
+    theta_initial: f64,
+}
+
+impl RateStateLaw {
+    fn from_props(props: &[f64]) -> Self {
+        let get = |i: usize| props.get(i).copied().unwrap_or(0.0);
+        let (v0, l, theta0) = (get(4), get(5), get(10));
+        RateStateLaw {
+            mu0: get(1),
+            a: get(2),
+            b: get(3),
+            v0,
+            l,
+            slip_law: get(6) == 1.0,
+            regularised: get(7) == 1.0,
+            theta_initial: if theta0 > 0.0 { theta0 } else { l / v0 },
+        }
+    }
+
+    /// μ(V, θ) (0 where the expression is below 0) and the size of the terms it sums, for a
+    /// tolerance: μ₀ + a·ln(V/V₀) + b·ln(V₀θ/L), or a·asinh(V/(2V₀)·e^(ψ/a)) with
+    /// ψ = μ₀ + b·ln(V₀θ/L). Each logarithm is taken apart, so no product can overflow; a term
+    /// with a zero coefficient is 0 whatever its logarithm (a = 0: μ does not depend on V).
+    fn mu(&self, v: f64, theta: f64) -> (f64, f64) {
+        let times = |c: f64, ln: f64| if c == 0.0 { 0.0 } else { c * ln };
+        let state = [self.v0.ln(), theta.ln(), -self.l.ln()];
+        let psi = self.mu0 + state.iter().map(|x| times(self.b, *x)).sum::<f64>();
+        let mut scale = self.mu0.abs() + state.iter().map(|x| times(self.b, *x).abs()).sum::<f64>();
+        let (ln_v, ln_v0) = (v.ln(), self.v0.ln());
+        let mu = if self.regularised {
+            // ln z = ln(V/(2V₀)) + ψ/a; asinh z = ln 2z + O(z⁻²) far above 1.
+            let ln_z = ln_v - std::f64::consts::LN_2 - ln_v0 + psi / self.a;
+            let mu = if ln_z > 36.0 {
+                self.a * (std::f64::consts::LN_2 + ln_z)
+            } else {
+                self.a * ln_z.exp().asinh()
+            };
+            scale += self.a * (ln_v.abs() + ln_v0.abs() + 1.0) + mu.abs() * (1.0 + ln_z.abs());
+            mu
+        } else {
+            scale += times(self.a, ln_v).abs() + times(self.a, ln_v0).abs();
+            psi + times(self.a, ln_v) - times(self.a, ln_v0)
+        };
+        (mu.max(0.0), scale)
     }
 }

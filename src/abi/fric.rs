@@ -461,8 +461,10 @@ impl FricArgs {
         // SAFETY: NSTATV and NFDIR are valid pointers or NULL per the FRIC contract.
         unsafe {
             let nstatv = read(self.nstatv, "NSTATV")?;
-            let nstatv = match usize::try_from(nstatv) {
-                Ok(n) if n >= CoulombState::NSTATV => n,
+            let nstatv = match (usize::try_from(nstatv), law) {
+                // A law behind the interface checks its own need (`point_law`).
+                (n, Law::Adhesive(_) | Law::RateState(_)) => n.unwrap_or(0),
+                (Ok(n), _) if n >= CoulombState::NSTATV => n,
                 _ => return Err(short_nstatv(nstatv)),
             };
             match read(self.nfdir, "NFDIR")? {
@@ -535,7 +537,8 @@ impl FricArgs {
         unsafe {
             let needed = law.nstatv(N);
             if nstatv < needed {
-                return Err(short_nstatv_law(nstatv, needed));
+                let given = read(self.nstatv, "NSTATV")?;
+                return Err(short_nstatv_law(given, needed, L::NAME));
             }
             let entry = if law.exact_stick() {
                 entry
@@ -649,10 +652,10 @@ fn short_nstatv(nstatv: c_int) -> LawError {
 
 #[cold]
 #[inline(never)]
-fn short_nstatv_law(nstatv: usize, needed: usize) -> LawError {
+fn short_nstatv_law(nstatv: c_int, needed: usize, law: &str) -> LawError {
     LawError::Parameter(format!(
-        "NSTATV = {nstatv} but the law of PROPS(1) needs {needed} state variables (*DEPVAR / \
-         the DEPVAR of *FRICTION, USER)"
+        "NSTATV = {nstatv} but {law} needs {needed} state variables (*DEPVAR / the DEPVAR of \
+         *FRICTION, USER)"
     ))
 }
 

@@ -668,6 +668,8 @@ impl Adhesive {
 }
 
 impl PointLaw for Adhesive {
+    const NAME: &'static str = "the adhesive law";
+
     fn nstatv(&self, _nfdir: usize) -> usize {
         CoulombState::NSTATV
     }

@@ -46,6 +46,9 @@ impl<const N: usize> PointAnswer<N> {
 
 /// A friction law as `fric_` runs it at one point.
 pub trait PointLaw {
+    /// The law as messages name it ("the rate-and-state law").
+    const NAME: &'static str;
+
     /// `STATEV` entries the law reads and writes with `NFDIR` = `nfdir` (at most
     /// [`MAX_POINT_STATEV`]).
     fn nstatv(&self, nfdir: usize) -> usize;

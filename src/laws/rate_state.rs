@@ -106,7 +106,8 @@ pub struct RateStateUpdate<const N: usize> {
 /// μ with its partial derivatives ∂μ/∂V and ∂μ/∂θ.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Coefficient {
-    /// μ(V, θ), never below 0 (a negative logarithmic μ is taken as 0, with zero partials).
+    /// μ(V, θ), never below 0 (a negative logarithmic μ is taken as 0, with zero partials);
+    /// NaN when the parameters and state take it out of f64's range.
     pub mu: f64,
     /// ∂μ/∂V.
     pub d_rate: f64,
@@ -228,8 +229,13 @@ impl RateState {
         let RateStateParameters {
             mu0, a, b, v0, l, ..
         } = self.p;
-        // ψ = μ₀ + b·ln(V₀θ/L), the state's part.
-        let psi = mu0 + b * (v0 * theta / l).ln();
+        // ψ = μ₀ + b·ln(V₀θ/L), the state's part (none when b = 0, also where V₀θ/L is 0
+        // or ∞ in f64).
+        let psi = if b == 0.0 {
+            mu0
+        } else {
+            mu0 + b * (v0 * theta / l).ln()
+        };
         let (mu, d_rate, d_psi) = match self.p.form {
             CoefficientForm::Logarithmic => (psi + a * (v / v0).ln(), a / v, 1.0),
             CoefficientForm::Regularized => {
@@ -251,7 +257,8 @@ impl RateState {
                 }
             }
         };
-        if mu > 0.0 {
+        if mu > 0.0 || mu.is_nan() {
+            // (A NaN μ, out of f64's range, is passed on: the update refuses it.)
             Coefficient {
                 mu,
                 d_rate,
@@ -442,6 +449,8 @@ impl RateState {
 }
 
 impl PointLaw for RateState {
+    const NAME: &'static str = "the rate-and-state law";
+
     fn nstatv(&self, _nfdir: usize) -> usize {
         RateStateState::NSTATV
     }
