@@ -10,6 +10,8 @@
 mod charts;
 #[path = "../examples/scenes/circle.rs"]
 mod circle;
+#[path = "../examples/scenes/csvfile.rs"]
+mod csvfile;
 #[path = "../examples/scenes/findings.rs"]
 mod findings;
 #[path = "../examples/scenes/oscillator.rs"]

@@ -668,8 +668,14 @@ fn study(
             };
             let _ = writeln!(
                 csv,
-                "{sweep},\"{}\",{dt:e},{n},{:e},{:e},{:e},{},{:e},{:e}",
-                p.method, p.error, p.details[0], p.details[1], p.calls, p.wall, p.details[2]
+                "{sweep},{},{dt:e},{n},{:e},{:e},{:e},{},{:e},{:e}",
+                crate::csvfile::field(&p.method),
+                p.error,
+                p.details[0],
+                p.details[1],
+                p.calls,
+                p.wall,
+                p.details[2]
             );
             let first = if p.details[2] > OSCILLATION {
                 format!("oscillates (p/q0 - 1 = {:.1e})", p.details[2])
@@ -700,7 +706,7 @@ fn study(
         notes: vec![error_note.clone(), units.into()],
         verticals: Vec::new(),
     };
-    let machine = crate::machine();
+    let machine = crate::job::machine();
     let charts: [Chart; 4] = [
         (
             "error-vs-dt",

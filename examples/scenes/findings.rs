@@ -538,15 +538,15 @@ pub fn csv(findings: &[Finding]) -> String {
     let mut s = String::from("id,holds,measured,statement\n");
     for f in findings {
         s.push_str(&format!(
-            "{},{},\"{}\",\"{}\"\n",
-            f.id,
+            "{},{},{},{}\n",
+            crate::csvfile::field(f.id),
             match f.ok {
                 Some(true) => "yes",
                 Some(false) => "no",
                 None => "not checked",
             },
-            f.measured.replace('"', "'"),
-            f.statement.replace('"', "'")
+            crate::csvfile::field(&f.measured),
+            crate::csvfile::field(&f.statement)
         ));
     }
     s

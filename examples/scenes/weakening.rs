@@ -192,7 +192,7 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
             let mut pts = Vec::new();
             for &r in &rs {
                 let e = mean_error(f, x, r)?;
-                let _ = writeln!(csv, "{x},{r:e},{},{e:e}", f.name());
+                let _ = writeln!(csv, "{x},{r:e},{},{e:e}", crate::csvfile::field(f.name()));
                 pts.push((r, e));
                 if f == Formulation::RateFollowing {
                     rows.push(row(
@@ -354,7 +354,7 @@ fn stability_maps(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<Pa
                 let _ = writeln!(
                     csv,
                     "{},{r:e},{x:e},{},{b1:e},{b2:e}",
-                    f.name(),
+                    crate::csvfile::field(f.name()),
                     cells[j][i]
                 );
             }
