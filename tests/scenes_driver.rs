@@ -407,8 +407,8 @@ fn the_rate_stability_limits_docs_scenes_md_quotes() {
 #[test]
 fn a_finding_fails_when_the_data_stops_supporting_it() {
     // F6-penalty-floor ("the penalty stays above 10 %") on points built from one real run: holds
-    // with every error at 20 %, fails as soon as one completed run is within 5 %, and is not
-    // checked without enough points.
+    // with every error at 20 %, fails as soon as one completed run is within 5 %; with too few
+    // points it fails on the full run (its data is missing) and is not checked on --quick.
     let scene = f6();
     let base = run_point(&scene, &scene.methods[0], 0.01);
     let make = |errors: &[f64]| -> Vec<scene::Point> {
@@ -416,12 +416,13 @@ fn a_finding_fails_when_the_data_stops_supporting_it() {
             "explicit CD, elastic γc=1e-3",
             "explicit CD, elastic γc=1e-4",
             "Newmark, elastic γc=1e-3",
+            "Newmark, elastic γc=1e-4",
         ];
         errors
             .iter()
             .enumerate()
             .map(|(i, e)| scene::Point {
-                method: methods[i % 3].into(),
+                method: methods[i % 4].into(),
                 step: 1e-3 * (1 + i) as f64,
                 error: *e,
                 verdict: "ok",
@@ -429,18 +430,49 @@ fn a_finding_fails_when_the_data_stops_supporting_it() {
             })
             .collect()
     };
-    let verdict = |points: &[scene::Point]| {
-        findings::evaluate(points, &[], &[])
+    let verdict = |points: &[scene::Point], full: bool| {
+        findings::evaluate(points, &[], &[], full)
             .into_iter()
             .find(|f| f.id == "F6-penalty-floor")
             .expect("the finding")
             .ok
     };
     let mut errors = vec![0.2; 12];
-    assert_eq!(verdict(&make(&errors)), Some(true));
+    assert_eq!(verdict(&make(&errors), true), Some(true));
     errors[7] = 0.05;
-    assert_eq!(verdict(&make(&errors)), Some(false));
-    assert_eq!(verdict(&make(&errors[..4])), None);
+    assert_eq!(verdict(&make(&errors), true), Some(false));
+    assert_eq!(verdict(&make(&errors[..4]), true), Some(false));
+    assert_eq!(verdict(&make(&errors[..4]), false), None);
+}
+
+#[test]
+fn a_finding_whose_data_is_missing_fails_on_the_full_run() {
+    // F2-3000 quotes the error at 3 000 increments per turn: the full F2 sweep holds it; the same
+    // sweep with that step taken out of f2.toml must fail the finding, not skip it. Every finding
+    // fails on the full run without data.
+    let text = SCENES[2].1;
+    assert!(text.contains("3000"), "f2.toml has no step 3000");
+    let f2_3000 = |text: &str| {
+        let scene = Scene::parse(text, "f2.toml").expect("f2.toml");
+        let mut points = Vec::new();
+        for m in &scene.methods {
+            for &s in &scene.file.steps {
+                points.push(run_point(&scene, m, s));
+            }
+        }
+        let found = findings::evaluate(&points, &[], &[], true);
+        found
+            .into_iter()
+            .find(|f| f.id == "F2-3000")
+            .expect("the finding")
+    };
+    let with = f2_3000(text);
+    assert_eq!(with.ok, Some(true), "{}", with.measured);
+    let without = f2_3000(&text.replace(", 3000,", ",").replace(", 3000]", "]"));
+    assert_eq!(without.ok, Some(false), "{}", without.measured);
+    for f in findings::evaluate(&[], &[], &[], true) {
+        assert_eq!(f.ok, Some(false), "{}: {}", f.id, f.measured);
+    }
 }
 
 #[test]

@@ -144,21 +144,38 @@ fn length(r: f64) -> usize {
     (1.5 / r).ceil() as usize + 300
 }
 
-/// |mean τ − μ(v)p|/(μ(v)p) over the last 200 increments.
-fn mean_error(f: Formulation, x: f64, r: f64) -> Result<f64, String> {
+/// Round-off for the steady-sliding stress: a few hundred ulp of μ(v)p, relative. The
+/// rate-following formulation is held to it at every increment of the steady window; the
+/// measured largest deviation is about 1e-15.
+pub const ROUND_OFF: f64 = 1e-13;
+
+/// Over the last 200 increments: |mean τ − μ(v)p|/(μ(v)p), and the largest |τ − μ(v)p|/(μ(v)p)
+/// of any one increment.
+fn tail_errors(f: Formulation, x: f64, r: f64) -> Result<(f64, f64), String> {
     let taus = drive(f, x, r, length(r))?;
     let tail = &taus[taus.len() - 200..];
+    let exact = mu_p(x);
     let mean = tail.iter().sum::<f64>() / tail.len() as f64;
-    Ok((mean - mu_p(x)).abs() / mu_p(x))
+    let largest = tail
+        .iter()
+        .map(|t| (t - exact).abs() / exact)
+        .fold(0.0, f64::max);
+    Ok(((mean - exact).abs() / exact, largest))
 }
 
-/// Settles: every one of the last 100 increments within 10⁻⁶ of μ(v)p.
-fn settles(f: Formulation, x: f64, r: f64) -> Result<bool, String> {
+fn mean_error(f: Formulation, x: f64, r: f64) -> Result<f64, String> {
+    tail_errors(f, x, r).map(|(mean, _)| mean)
+}
+
+/// The largest |τ − μ(v)p|/(μ(v)p) over the last 100 increments; a cell settles when it is
+/// within 10⁻⁶ (the earlier formulation's cycles are far larger).
+fn tail_deviation(f: Formulation, x: f64, r: f64) -> Result<f64, String> {
     let taus = drive(f, x, r, length(r))?;
     let exact = mu_p(x);
     Ok(taus[taus.len() - 100..]
         .iter()
-        .all(|t| (t - exact).abs() <= 1e-6 * exact))
+        .map(|t| (t - exact).abs() / exact)
+        .fold(0.0, f64::max))
 }
 
 fn log_space(a: f64, b: f64, n: usize) -> Vec<f64> {
@@ -185,22 +202,26 @@ fn row(case: String, quantity: &'static str, exact: f64, computed: f64, toleranc
 /// Part 1: error of the mean friction against r.
 fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<PathBuf>, String> {
     let rs = log_space(0.01, 1.0, if quick { 9 } else { 21 });
-    let mut csv = String::from("x,r,formulation,mean_error\n");
+    let mut csv = String::from("x,r,formulation,mean_error,largest_error\n");
     let mut series = Vec::new();
     for x in [1.0, 3.0] {
         for f in [Formulation::RateFollowing, Formulation::RateFree] {
             let mut pts = Vec::new();
             for &r in &rs {
-                let e = mean_error(f, x, r)?;
-                let _ = writeln!(csv, "{x},{r:e},{},{e:e}", crate::csvfile::field(f.name()));
+                let (e, largest) = tail_errors(f, x, r)?;
+                let _ = writeln!(
+                    csv,
+                    "{x},{r:e},{},{e:e},{largest:e}",
+                    crate::csvfile::field(f.name())
+                );
                 pts.push((r, e));
                 if f == Formulation::RateFollowing {
                     rows.push(row(
                         format!("d_c·v = {x}, r = {r:.3}"),
-                        "rate-following: mean friction error (issue: < 1 %)",
+                        "rate-following: largest |τ − μ(v)p|/μ(v)p of any increment (round-off)",
                         0.0,
-                        e,
-                        0.01,
+                        largest,
+                        ROUND_OFF,
                     ));
                 }
             }
@@ -210,7 +231,7 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
     // The earlier formulation on the issue's case (x = 3, r = 0.25) misses by more than 1 %.
     let issue = mean_error(Formulation::RateFree, 3.0, 0.25)?;
     rows.push(row(
-        "earlier, d_c·v = 3, r = 0.25 (the issue's case)".into(),
+        "earlier, d_c·v = 3, r = 0.25".into(),
         "earlier formulation misses μ(v)p by > 1 % (1 = yes)",
         1.0,
         f64::from(u8::from(issue > 0.01)),
@@ -344,16 +365,20 @@ fn stability_maps(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<Pa
     let rs = log_space(0.01, 10.0, nr);
     let xs = log_space(0.1, 30.0, nx);
     let mut outputs = Vec::new();
-    let mut csv = String::from("formulation,r,x,settles,slip_bound,stick_bound\n");
+    let mut csv =
+        String::from("formulation,r,x,settles,largest_deviation,slip_bound,stick_bound\n");
     for f in [Formulation::RateFollowing, Formulation::RateFree] {
         let mut cells = vec![vec![false; nr]; nx];
+        let mut largest = 0.0f64;
         for (j, &x) in xs.iter().enumerate() {
             for (i, &r) in rs.iter().enumerate() {
-                cells[j][i] = settles(f, x, r)?;
+                let deviation = tail_deviation(f, x, r)?;
+                largest = largest.max(deviation);
+                cells[j][i] = deviation <= 1e-6;
                 let (b1, b2) = rate_free_bounds(x);
                 let _ = writeln!(
                     csv,
-                    "{},{r:e},{x:e},{},{b1:e},{b2:e}",
+                    "{},{r:e},{x:e},{},{deviation:e},{b1:e},{b2:e}",
                     crate::csvfile::field(f.name()),
                     cells[j][i]
                 );
@@ -376,6 +401,13 @@ fn stability_maps(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<Pa
                     0.0,
                     unsettled as f64,
                     0.0,
+                ));
+                rows.push(row(
+                    format!("{nr}×{nx} cells, r 0.01–10, d_c·v 0.1–30"),
+                    "rate-following: largest |τ − μ(v)p|/μ(v)p over every cell (round-off)",
+                    0.0,
+                    largest,
+                    ROUND_OFF,
                 ));
             }
             Formulation::RateFree => {
