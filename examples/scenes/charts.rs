@@ -951,3 +951,18 @@ pub fn rate_map(path: &Path, map: &RateMap) -> Result<(), String> {
         Ok(())
     })
 }
+
+/// The machine the times were taken on: CPU model and logical CPUs.
+pub fn machine() -> String {
+    let model = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|t| {
+            t.lines()
+                .find(|l| l.starts_with("model name"))
+                .and_then(|l| l.split_once(':'))
+                .map(|(_, m)| m.trim().to_string())
+        })
+        .unwrap_or_else(|| "unknown CPU".into());
+    let cpus = std::thread::available_parallelism().map_or(0, std::num::NonZero::get);
+    format!("{model}, {cpus} logical CPUs")
+}

@@ -393,7 +393,7 @@ fn evaluate_present(points: &[Point], maps: &[&Map], rate_maps: &[RateMap]) -> V
     let full: Vec<&RateMap> = rate_maps.iter().filter(|m| m.dts.len() >= 31).collect();
     out.push(finding(
         "F4-map-implicit",
-        "F4 implicit map: with the rate-following stick stiffness (the default since issue 16) steady sliding settles in every cell, at every Δt and d_c, also left of the earlier formulation's limit 2|dτ/dv|/k_s",
+        "F4 implicit map: with the rate-following stick stiffness (the default) steady sliding settles in every cell, at every Δt and d_c, also left of the earlier formulation's limit 2|dτ/dv|/k_s",
         full.first().map(|m| {
             let cells = m.cells.iter().flatten();
             let total = cells.clone().count();
@@ -537,9 +537,11 @@ pub fn map_marks(m: &Map) -> (Vec<CellMark>, Vec<String>) {
     (marks, notes)
 }
 
-/// Prints the findings; returns the number that do not hold.
-pub fn print(findings: &[Finding]) -> usize {
-    println!("{:<20} {:<6} measured / statement", "finding", "holds");
+/// Prints the findings (id, holds, what this run measured; with `verbose` also the statement);
+/// returns the number that do not hold.
+pub fn print(findings: &[Finding], verbose: bool) -> usize {
+    println!("Findings: the figures README.md and docs/scenes.md quote, from this run\n");
+    println!("{:<20} {:<6} measured", "finding", "holds");
     let mut failed = 0;
     for f in findings {
         let holds = match f.ok {
@@ -550,11 +552,12 @@ pub fn print(findings: &[Finding]) -> usize {
             }
             None => "-",
         };
-        println!(
-            "{:<20} {:<6} {}\n{:<28}{}",
-            f.id, holds, f.measured, "", f.statement
-        );
+        println!("{:<20} {:<6} {}", f.id, holds, f.measured);
+        if verbose || f.ok == Some(false) {
+            println!("{:<28}{}", "", f.statement);
+        }
     }
+    println!();
     failed
 }
 

@@ -56,36 +56,51 @@ impl Options {
     }
 }
 
-/// A one-line progress indicator on stderr.
+/// Progress: on a terminal a counter on stderr rewritten in place; on stdout one short line per
+/// scene when it is done.
 struct Progress {
     done: usize,
     total: usize,
     start: Instant,
+    /// When the last scene line was printed.
+    last: f64,
 }
 
 impl Progress {
     fn tick(&mut self, what: &str) {
         self.done += 1;
         let mut err = std::io::stderr();
-        let line = format!(
-            "[{:>3}/{}] {:>5.1}s  {what}",
-            self.done.min(self.total),
-            self.total,
-            self.start.elapsed().as_secs_f64()
-        );
         if err.is_terminal() {
-            // One line, rewritten in place.
-            let _ = write!(err, "\r\x1b[2K{line}");
-        } else if self.done % 20 == 1 || self.done == self.total {
-            // A log file gets every twentieth step.
-            let _ = writeln!(err, "{line}");
+            let _ = write!(
+                err,
+                "\r\x1b[2K[{:>3}/{}] {:>5.1}s  {what}",
+                self.done.min(self.total),
+                self.total,
+                self.start.elapsed().as_secs_f64()
+            );
+            let _ = err.flush();
         }
-        let _ = err.flush();
     }
-    fn finish(&self) {
-        if std::io::stderr().is_terminal() {
-            eprintln!();
+    /// Clears the counter line (a terminal) so that stdout's lines stay clean.
+    fn clear(&self) {
+        let mut err = std::io::stderr();
+        if err.is_terminal() {
+            let _ = write!(err, "\r\x1b[2K");
+            let _ = err.flush();
         }
+    }
+    /// One scene done: its name, what it produced, and its time.
+    fn scene(&mut self, name: &str, what: &str) {
+        self.clear();
+        let now = self.start.elapsed().as_secs_f64();
+        println!("  {name:<58} {what:<22} {:>5.1} s", now - self.last);
+        let _ = std::io::stdout().flush();
+        self.last = now;
+    }
+    /// A note on stderr (an expected message that follows).
+    fn note(&self, text: &str) {
+        self.clear();
+        eprintln!("scenes: {text}");
     }
 }
 
@@ -191,62 +206,72 @@ fn write_checks(path: &Path, rows: &[crate::checks::Row]) -> Result<(), String> 
     )
 }
 
-fn print_points(points: &[Point]) -> usize {
+fn print_points(points: &[Point], verbose: bool) -> usize {
     let header = format!(
         "{:<5} {:<34} {:>9} {:>10} {:>10} {:>10} {:>8} {:>11}  {:<14} claim met",
         "scene", "method", "step", "error", "claim", "run (ms)", "calls", "ns/call", "verdict"
     );
-    crate::checks::print_table(&header, points, Point::meets_claim, |p| {
-        format!(
-            "{:<5} {:<34} {:>9.3e} {:>10.2e} {:>10} {:>10.3} {:>8} {:>11.1}  {:<14} {}",
-            p.scene,
-            p.method,
-            p.step,
-            p.error,
-            if p.claim.is_finite() {
-                format!("{:.2e}", p.claim)
-            } else {
-                "-".into()
-            },
-            p.wall * 1e3,
-            p.calls,
-            p.wall / p.calls.max(1) as f64 * 1e9,
-            p.verdict,
-            if !p.claim.is_finite() {
-                "no claim"
-            } else if p.meets_claim() {
-                "yes"
-            } else {
-                "NO"
-            }
-        )
-    })
-}
-
-/// The machine the times were taken on: CPU model and logical CPUs.
-pub fn machine() -> String {
-    let model = std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|t| {
-            t.lines()
-                .find(|l| l.starts_with("model name"))
-                .and_then(|l| l.split_once(':'))
-                .map(|(_, m)| m.trim().to_string())
-        })
-        .unwrap_or_else(|| "unknown CPU".into());
-    let cpus = std::thread::available_parallelism().map_or(0, std::num::NonZero::get);
-    format!("{model}, {cpus} logical CPUs")
+    crate::checks::print_table(
+        "Work-precision (error against the closed form; claim = the chart's stated bound)",
+        &header,
+        points,
+        Point::meets_claim,
+        verbose,
+        |p| {
+            format!(
+                "{:<5} {:<34} {:>9.3e} {:>10.2e} {:>10} {:>10.3} {:>8} {:>11.1}  {:<14} {}",
+                p.scene,
+                p.method,
+                p.step,
+                p.error,
+                if p.claim.is_finite() {
+                    format!("{:.2e}", p.claim)
+                } else {
+                    "-".into()
+                },
+                p.wall * 1e3,
+                p.calls,
+                p.wall / p.calls.max(1) as f64 * 1e9,
+                p.verdict,
+                if !p.claim.is_finite() {
+                    "no claim"
+                } else if p.meets_claim() {
+                    "yes"
+                } else {
+                    "NO"
+                }
+            )
+        },
+    )
 }
 
 /// Runs the main job; returns the exit status (0: every check, claim and finding holds).
 pub fn run(opts: &Options) -> i32 {
     // The run-time finding times the whole job, P1 included.
     let start = Instant::now();
-    let machine = machine();
+    let machine = crate::charts::machine();
     if let Err(e) = std::fs::create_dir_all(&opts.out) {
         eprintln!("scenes: cannot create {}: {e}", opts.out.display());
         return 2;
     }
+    println!(
+        "interfacial {} — the main job: closed-form checks, work-precision sweeps, stability maps and\nfindings, through the entry points a host calls (fric_, gapcon_, uinter_, ifl_pore_pressure)\n",
+        interfacial::VERSION
+    );
+    println!(
+        "  run      {}{}\n  output   {}\n  machine  {machine}\n",
+        if opts.quick {
+            "reduced sweeps and maps (--quick): findings are not checked"
+        } else {
+            "full sweeps and maps"
+        },
+        if opts.verbose {
+            ", every table (--verbose)"
+        } else {
+            ""
+        },
+        opts.out.display()
+    );
     // Scene P1 (consolidation column): a --point file with a [column] table runs alone.
     let p1 = crate::consolidation::hook(opts.point.as_deref(), opts.quick, &opts.out);
     if let (Some(_), Some(p1)) = (&opts.point, &p1) {
@@ -304,18 +329,32 @@ pub fn run(opts: &Options) -> i32 {
         done: 0,
         total,
         start,
+        last: 0.0,
     };
-    println!(
-        "interfacial {} — speed against accuracy through fric_ and gapcon_{}\n",
-        interfacial::VERSION,
-        if opts.quick { " (--quick)" } else { "" }
-    );
+    let mut expected_stderr = false;
     let mut failures = 0;
     let mut check_rows = Vec::new();
+    let mut report = String::new();
+    let mut outputs = Vec::new();
+    let p1_rows = match &p1 {
+        Some(Ok(o)) => o.rows.len(),
+        _ => 0,
+    };
+    failures += crate::consolidation::join(p1, &mut check_rows, &mut outputs, &mut report);
+    progress.scene(
+        "P1 two-layer consolidation column (ifl_pore_pressure)",
+        &format!("{p1_rows} checks"),
+    );
     if opts.point.is_none() {
         progress.tick("closed-form checks (F1-F5, T1, T2, A1)");
         match crate::checks::run() {
-            Ok(rows) => check_rows = rows,
+            Ok(rows) => {
+                progress.scene(
+                    "F1-F5, T1, T2, A1 closed forms (fric_, gapcon_, uinter_)",
+                    &format!("{} checks", rows.len()),
+                );
+                check_rows.extend(rows);
+            }
             Err(e) => {
                 eprintln!("\nscenes: {e}");
                 return 2;
@@ -325,13 +364,15 @@ pub fn run(opts: &Options) -> i32 {
     let mut all_points = Vec::new();
     let mut maps: Vec<(usize, Map)> = Vec::new();
     let mut rate_maps: Vec<crate::rate_map::RateMap> = Vec::new();
-    let mut outputs = Vec::new();
-    failures += crate::consolidation::join(p1, &mut check_rows, &mut outputs);
     // F7, velocity weakening (examples/scenes/weakening.rs): its rows join the checks.
     let mut newton_table = String::new();
     if opts.point.is_none() {
         match crate::weakening::run(&opts.out, opts.quick) {
             Ok((rows, files, table)) => {
+                progress.scene(
+                    "F7 velocity weakening: steady sliding, maps, belt",
+                    &format!("{} checks", rows.len()),
+                );
                 check_rows.extend(rows);
                 outputs.extend(files);
                 newton_table = table;
@@ -344,6 +385,7 @@ pub fn run(opts: &Options) -> i32 {
     }
     for scene in &scenes {
         let mut points = sweep(scene, opts.quick, |w| progress.tick(w));
+        let swept = points.len();
         if scene.kind == "circle" {
             // The same runs' lag error against the chord of the last step (second order), as
             // its own curve for the middle γ_crit/R (the three coincide).
@@ -449,6 +491,13 @@ pub fn run(opts: &Options) -> i32 {
         if let Some(o) = &scene.file.oscillator {
             for (i, spec) in scene.file.maps.iter().enumerate() {
                 let label = spec.label.clone();
+                if spec.host.as_deref() == Some("unguarded") {
+                    expected_stderr = true;
+                    progress.note(&format!(
+                        "{id} map {}: a host without a divergence check; the library's 'bad input: DGAM is NaN or infinite' message below is EXPECTED (fric_ refuses the host's overflow, the host cuts back)",
+                        i + 1
+                    ));
+                }
                 match run_map(o, spec, opts.quick, |r, n| {
                     progress.tick(&format!("{id} map '{label}': row {r}/{n}"));
                 }) {
@@ -475,32 +524,64 @@ pub fn run(opts: &Options) -> i32 {
                 }
             }
         }
+        let maps_here = scene.file.maps.len() + if scene.file.velocity.is_some() { 2 } else { 0 };
+        progress.scene(
+            &if scene.file.title.starts_with(&scene.file.id) {
+                scene.file.title.clone()
+            } else {
+                format!("{} {}", scene.file.id, scene.file.title)
+            },
+            &format!("{swept} points, {maps_here} maps"),
+        );
     }
-    progress.finish();
-
+    progress.clear();
+    println!();
+    let verbose = opts.verbose;
+    // The long tables print with --verbose; without it only their failing lines do.
+    let mut summary: Vec<(String, usize, usize)> = Vec::new();
+    if verbose && !report.is_empty() {
+        println!("{report}");
+    }
     if !check_rows.is_empty() {
-        println!("Closed-form checks\n");
-        failures += crate::checks::print(&check_rows);
+        let mut scenes_seen: Vec<&str> = Vec::new();
+        for r in &check_rows {
+            if !scenes_seen.contains(&r.scene) {
+                scenes_seen.push(r.scene);
+            }
+        }
+        for sc in scenes_seen {
+            let of: Vec<&crate::checks::Row> =
+                check_rows.iter().filter(|r| r.scene == sc).collect();
+            let failed = of.iter().filter(|r| !r.ok()).count();
+            summary.push((format!("closed-form checks, {sc}"), of.len(), failed));
+        }
+        let failed = crate::checks::print(&check_rows, verbose, "Closed-form checks");
+        failures += failed;
         let path = opts.out.join("checks.csv");
         if let Err(e) = write_checks(&path, &check_rows) {
             eprintln!("scenes: {e}");
             failures += 1;
         }
         outputs.insert(0, path);
-        println!();
     }
-    if !newton_table.is_empty() {
+    if verbose && !newton_table.is_empty() {
         println!(
             "F7: F6 with the decay law, Newton iterations per implicit step\n\n{newton_table}"
         );
     }
-    println!("Work-precision (error against the closed form; claim = the chart's stated bound)\n");
-    failures += print_points(&all_points);
+    let claim_failures = print_points(&all_points, verbose);
+    failures += claim_failures;
+    summary.push((
+        "work-precision points held to their chart's claim".into(),
+        all_points.iter().filter(|p| p.claim.is_finite()).count(),
+        claim_failures,
+    ));
+    let (mut boundary_rows, mut boundary_failures) = (0, 0);
     for (si, map) in &maps {
         let Some(o) = &scenes[*si].file.oscillator else {
             continue;
         };
-        println!("\nStability map: {}", map.spec.label);
+        let mut lines = Vec::new();
         // The explicit boundary is held to the theory for a host that stops diverging runs.
         let explicit = map.integrator == crate::oscillator::Integrator::Explicit
             && map.host == crate::oscillator::Host::Guarded;
@@ -513,7 +594,7 @@ pub fn run(opts: &Options) -> i32 {
                 })
                 .collect::<Vec<_>>()
                 .join(", ");
-            let boundary = if explicit {
+            let (boundary, ok) = if explicit {
                 let m = measured_boundary(map, r);
                 let t = theoretical_boundary(o, map, r);
                 let ok = match (m, t) {
@@ -521,27 +602,42 @@ pub fn run(opts: &Options) -> i32 {
                     (None, None) => true,
                     _ => false,
                 };
+                boundary_rows += 1;
                 if !ok {
-                    failures += 1;
+                    boundary_failures += 1;
                 }
-                format!(
-                    "  limit {:.3e}, first unstable Δt {} ({})",
-                    o.explicit_limit(map.gammas[r]),
-                    m.map_or("none".into(), |c| format!("{:.3e}", map.dts[c])),
-                    if ok { "within one cell" } else { "MISMATCH" }
+                (
+                    format!(
+                        "  limit {:.3e}, first unstable Δt {} ({})",
+                        o.explicit_limit(map.gammas[r]),
+                        m.map_or("none".into(), |c| format!("{:.3e}", map.dts[c])),
+                        if ok { "within one cell" } else { "MISMATCH" }
+                    ),
+                    ok,
                 )
             } else {
-                String::new()
+                (String::new(), true)
             };
-            println!("  γ_crit {:.1e}: {counts}{boundary}", map.gammas[r]);
+            if verbose || !ok {
+                lines.push(format!(
+                    "  γ_crit {:.1e}: {counts}{boundary}",
+                    map.gammas[r]
+                ));
+            }
+        }
+        if !lines.is_empty() {
+            println!("Stability map: {}\n{}\n", map.spec.label, lines.join("\n"));
         }
     }
     for map in &rate_maps {
-        println!("\n{}", map.title());
+        let mut lines = Vec::new();
         for r in 0..map.decays.len() {
             let ok = map.boundary_matches(r);
+            if map.checked(r) {
+                boundary_rows += 1;
+            }
             if !ok {
-                failures += 1;
+                boundary_failures += 1;
             }
             let first = map.cells[r]
                 .iter()
@@ -551,20 +647,31 @@ pub fn run(opts: &Options) -> i32 {
                 .iter()
                 .filter(|c| **c == crate::rate_map::RateCell::CutBack)
                 .count();
-            println!(
-                "  d_c {:>7.3}: closed-form limit {:.3e}, first settling Δt {first} ({}), cut-backs {cutbacks}",
-                map.decays[r],
-                map.limit(r),
-                if !map.checked(r) {
-                    "d_c v > 1: not held to the linear limit"
-                } else if ok {
-                    "within one cell"
-                } else {
-                    "MISMATCH"
-                }
-            );
+            if verbose || !ok {
+                lines.push(format!(
+                    "  d_c {:>7.3}: closed-form limit {:.3e}, first settling Δt {first} ({}), cut-backs {cutbacks}",
+                    map.decays[r],
+                    map.limit(r),
+                    if !map.checked(r) {
+                        "d_c v > 1: not held to the linear limit"
+                    } else if ok {
+                        "within one cell"
+                    } else {
+                        "MISMATCH"
+                    }
+                ));
+            }
+        }
+        if !lines.is_empty() {
+            println!("{}\n{}\n", map.title(), lines.join("\n"));
         }
     }
+    failures += boundary_failures;
+    summary.push((
+        "stability boundaries within one cell of the closed form".into(),
+        boundary_rows,
+        boundary_failures,
+    ));
     if opts.point.is_none() {
         let map_refs: Vec<&Map> = maps.iter().map(|(_, m)| m).collect();
         let mut found = crate::findings::evaluate(&all_points, &map_refs, &rate_maps, !opts.quick);
@@ -572,8 +679,21 @@ pub fn run(opts: &Options) -> i32 {
             start.elapsed().as_secs_f64(),
             opts.quick,
         ));
-        println!("\nFindings (the figures README.md and docs/scenes.md quote, from this run)\n");
-        failures += crate::findings::print(&found);
+        let failed = crate::findings::print(&found, verbose);
+        failures += failed;
+        let checked = found.iter().filter(|f| f.ok.is_some()).count();
+        summary.push((
+            if checked < found.len() {
+                format!(
+                    "findings ({} not checked on --quick)",
+                    found.len() - checked
+                )
+            } else {
+                "findings (the figures README.md and docs/scenes.md quote)".into()
+            },
+            checked,
+            failed,
+        ));
         let path = opts.out.join("findings.csv");
         if let Err(e) = std::fs::write(&path, crate::findings::csv(&found)) {
             eprintln!("scenes: cannot write {}: {e}", path.display());
@@ -581,19 +701,39 @@ pub fn run(opts: &Options) -> i32 {
         }
         outputs.push(path);
     }
-    println!("\nTimes: median of 5 repeats of ≥ 1 ms each, on {machine}");
-    println!("\nWritten:");
-    for p in &outputs {
-        println!("  {}", p.display());
+    println!("Summary\n");
+    println!("  {:<64} {:>7} {:>7}", "", "checked", "failed");
+    for (what, checked, failed) in &summary {
+        println!("  {what:<64} {checked:>7} {failed:>7}");
+    }
+    println!(
+        "\n  Times: the fastest of interleaved repeats per point, on {machine}; the charts also give fric_ calls."
+    );
+    if expected_stderr {
+        println!(
+            "  Expected on stderr: fric_'s 'bad input: DGAM is NaN or infinite' from F6 map 3 (a host that lets its motion overflow; fric_ refuses, the host cuts back)."
+        );
+    }
+    if verbose {
+        println!("\nWritten:");
+        for p in &outputs {
+            println!("  {}", p.display());
+        }
+    } else {
+        println!(
+            "  Written: {} files (CSV and SVG) to {} (--verbose lists them and prints every table).",
+            outputs.len(),
+            opts.out.display()
+        );
     }
     println!(
         "\n{} in {:.1} s; {failures} failure(s)",
         if failures == 0 {
-            "all checks and claims met"
+            "PASSED: every check, claim and finding holds"
         } else {
             "FAILED"
         },
-        progress.start.elapsed().as_secs_f64()
+        start.elapsed().as_secs_f64()
     );
     i32::from(failures > 0)
 }

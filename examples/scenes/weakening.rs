@@ -1,4 +1,4 @@
-//! F7, steady sliding under velocity weakening (`shared/design/scenes.md`, issue 16): one point
+//! F7, steady sliding under velocity weakening: one point
 //! driven at a constant slip velocity v with increments Δγ = r·γ_crit at constant pressure p,
 //! law 1 with the exponential decay law μ(v) = μ_k + (μ_s − μ_k)·exp(−d_c·v). The answer is
 //! steady sliding at τ = μ(v)·p for every r. Compared: the library's formulation (rate-following
@@ -228,13 +228,13 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
             series.push((x, f, pts));
         }
     }
-    // The earlier formulation on the issue's case (x = 3, r = 0.25) misses by more than 1 %.
-    let issue = mean_error(Formulation::RateFree, 3.0, 0.25)?;
+    // The earlier formulation at x = 3, r = 0.25 misses by more than 1 %.
+    let earlier = mean_error(Formulation::RateFree, 3.0, 0.25)?;
     rows.push(row(
         "earlier, d_c·v = 3, r = 0.25".into(),
         "earlier formulation misses μ(v)p by > 1 % (1 = yes)",
         1.0,
-        f64::from(u8::from(issue > 0.01)),
+        f64::from(u8::from(earlier > 0.01)),
         0.0,
     ));
     // The earlier formulation against its closed-form bound r*(x) = max(2c·x·e^(−x),
@@ -283,7 +283,7 @@ fn mean_error_chart(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<Vec<
         .collect();
     legend.push((
         Swatch::Line(BLACK, Marker::None, true),
-        "the issue's 1 %".into(),
+        "1 % of μ(v)p".into(),
     ));
     // Each x's bound r* of the earlier formulation, dotted in its curve's colour.
     let bounds: Vec<(f64, RGBColor)> = series
@@ -838,7 +838,7 @@ fn belt(out: &Path, quick: bool, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, S
         }
         Ok(())
     })?;
-    // The same belt with the adhesive law and a small v_½ (issue 16, item 3: a steep onset
+    // The same belt with the adhesive law and a small v_½ (a steep onset
     // drop, strongly negative tangent): Newton iterations only.
     let _ = writeln!(
         table,
