@@ -499,3 +499,31 @@ fn an_unguarded_host_gets_a_refusal_and_cuts_back_beyond_the_spring_limit() {
     assert!(map.refused.contains("DGAM"), "{}", map.refused);
     assert!(map.errors.iter().flatten().all(|e| !e.is_nan()));
 }
+
+#[test]
+fn interleaved_timing_keeps_every_point_and_reports_its_fastest_repeat() {
+    // F1's reduced sweep timed in 3 interleaved rounds: every point gets one repeat per round,
+    // its wall time is the fastest of them and the bar runs from there to the slowest; the
+    // answers (error, calls) are those of the untimed run.
+    let scene = Scene::parse(SCENES[1].1, SCENES[1].0).expect("f1.toml");
+    let mut points = Vec::new();
+    for m in &scene.methods {
+        for &s in &scene.file.quick_steps {
+            points.push(run_point(&scene, m, s));
+        }
+    }
+    let before: Vec<(f64, usize)> = points.iter().map(|p| (p.error, p.calls)).collect();
+    let mut rounds = 0;
+    let timing = Timing {
+        repeats: 3,
+        min_repeat: 0.0,
+    };
+    scene::time_interleaved(&scene, &mut points, timing, |_| rounds += 1);
+    assert_eq!(rounds, 3);
+    for (p, (error, calls)) in points.iter().zip(before) {
+        assert_eq!(p.repeats[0], 3, "{}", p.method);
+        assert!(p.wall > 0.0 && p.wall == p.wall_range[0], "{p:?}");
+        assert!(p.wall_range[0] <= p.wall_range[1], "{p:?}");
+        assert_eq!((p.error.to_bits(), p.calls), (error.to_bits(), calls));
+    }
+}

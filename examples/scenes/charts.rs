@@ -637,12 +637,12 @@ pub fn work_precision_chart(
     }
     if matches!(cost, Cost::Wall) {
         notes.push(format!(
-            "Times: median of 5 timed repeats per point, each repeat ≥ 1 ms (the run repeated inside it); bars: fastest to slowest repeat. Machine: {machine}."
+            "Times: the fastest of 7 repeats per point (each ≥ 1 ms, the run repeated inside it), all points of the chart timed in 7 interleaved rounds so that load from other jobs spreads over them; bars: fastest to slowest repeat. Wall time moves with the machine's load: the calls chart is the load-independent cost, and the findings compare calls. Machine: {machine}."
         ));
     }
     if let Cost::Runs(n) = cost {
         notes.push(format!(
-            "Times: median of {n} single runs per point; bars: fastest to slowest run. Machine: {machine}."
+            "Times: the fastest of {n} single runs per point; bars: fastest to slowest run. Wall time moves with the machine's load; the element count and Δt are the load-independent cost. Machine: {machine}."
         ));
     }
     notes.extend(extras.notes.iter().cloned());
