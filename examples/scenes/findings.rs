@@ -67,6 +67,7 @@ const F1_EXACT: &str = "exact stick (LM=1)";
 const F4_IMPLICIT: &str = "decay law, implicit, γc=1e-5";
 const F4_FROZEN: &str = "decay law, μ frozen, γc=1e-5";
 const F4_ADHESIVE: &str = "adhesive (v½, kμ), γc=1e-5";
+const F4_IMPLICIT_SOFT: &str = "decay law, implicit, γc=1e-3";
 
 fn pct(v: f64) -> String {
     format!("{:.3} %", 100.0 * v)
@@ -388,6 +389,25 @@ fn evaluate_present(points: &[Point], maps: &[&Map], rate_maps: &[RateMap]) -> V
         (frozen.len() >= 2).then(|| range(frozen.iter().copied(), |p| p.error / p.relative_step).unwrap_or((0.0, 9.0))),
         |(lo, hi)| format!("error/(Δt/hold) from {lo:.3} to {hi:.3}"),
         |(lo, hi)| *lo >= 0.45 && *hi <= 0.56,
+    ));
+    // F4, the implicit law with γ_crit = 1e-3: rises with refinement to a plateau (the steps
+    // resolve the stick spring's transient, which the rigid-stick closed form does not have).
+    let mut soft = d.ok("F4", F4_IMPLICIT_SOFT);
+    soft.sort_by(|a, b| b.step.total_cmp(&a.step));
+    out.push(finding(
+        "F4-elastic-plateau",
+        "F4: the implicit law with γ_crit = 1e-3 goes from 1e-3 of the swing at its coarsest step up to a plateau of about 5e-3: its two finest steps within 10 % of each other, at least 3 × the coarsest",
+        (soft.len() >= 4).then(|| {
+            let n = soft.len();
+            (soft[0].error, soft[n - 2].error, soft[n - 1].error)
+        }),
+        |(coarse, a, b)| format!("coarsest {coarse:.2e}; two finest {a:.2e}, {b:.2e}"),
+        |(coarse, a, b)| {
+            (a - b).abs() <= 0.1 * a.max(*b)
+                && a.min(*b) >= 3.0 * coarse
+                && (0.9e-3..=1.2e-3).contains(coarse)
+                && (4e-3..=6e-3).contains(b)
+        },
     ));
     // F4 maps: the implicit one (the first) settles everywhere; cut-backs on both.
     let full: Vec<&RateMap> = rate_maps.iter().filter(|m| m.dts.len() >= 31).collect();

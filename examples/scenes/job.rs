@@ -415,6 +415,14 @@ pub fn run(opts: &Options) -> i32 {
             _ => "lag angle error (rad), against the end-of-step tangent unless marked",
         };
         let highlights = crate::findings::highlights(id);
+        let extras = crate::charts::Extras {
+            notes: if scene.kind == "velocity" {
+                vec!["The implicit curve with γc = 1e-3 rises as the step shrinks, to a plateau (F4-elastic-plateau): the closed form is rigid stick, and the fine steps resolve the stick spring's elastic transient after each velocity step, which large backward-Euler steps step over.".into()]
+            } else {
+                Vec::new()
+            },
+            verticals: Vec::new(),
+        };
         // The error against each cost: wall time, then fric_ calls.
         let views = [
             (
@@ -443,7 +451,7 @@ pub fn run(opts: &Options) -> i32 {
                         cost,
                         &highlights,
                         &machine,
-                        &crate::charts::Extras::default(),
+                        &extras,
                     )
                 })
         });
@@ -655,7 +663,9 @@ pub fn run(opts: &Options) -> i32 {
                     "  d_c {:>7.3}: closed-form limit {:.3e}, first settling Δt {first} ({}), cut-backs {cutbacks}",
                     map.decays[r],
                     map.limit(r),
-                    if !map.checked(r) {
+                    if map.limit(r) == 0.0 {
+                        "no step limit: the cell must settle (F4-map-implicit)"
+                    } else if !map.checked(r) {
                         "d_c v > 1: not held to the linear limit"
                     } else if ok {
                         "within one cell"
