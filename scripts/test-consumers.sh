@@ -61,7 +61,7 @@ libdir=$(dirname "$pcdir")
 for f in include/interfacial.h include/interfacial.mod share/interfacial/fortran/interfacial.f90; do
   [ -f "$prefix/$f" ] || { echo "not installed: $f"; exit 1; }
 done
-# Every page the library's messages name (docs/NAME.md) is installed, under share/doc/interfacial.
+# Every page the library's messages name (docs/<page>.md) is installed, under share/doc/interfacial.
 pages=$(strings "$libdir/libinterfacial.so.$version" "$libdir/libinterfacial_calculix.so.$version" |
   grep -o 'docs/[a-z-]*\.md' | sort -u)
 [ -n "$pages" ] || { echo "no docs/*.md named in the library's strings"; exit 1; }

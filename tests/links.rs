@@ -52,6 +52,8 @@ const EXTENSIONS: &[&str] = &[
 const NOT_IN_THE_REPOSITORY: &[&str] = &[
     "target/",
     "build/",
+    "build-consumers/",
+    "build-asan/",
     "lib/",
     "share/",
     "include/",

@@ -15,7 +15,8 @@ fn rate_and_state_scenes_hold() {
     std::fs::create_dir_all(&out).unwrap();
     let rows = rate_state::run(&out, true);
     let _ = std::fs::remove_dir_all(&out);
-    let rows = rows.unwrap();
+    let (rows, files) = rows.unwrap();
+    assert_eq!(files.len(), 4);
     let failed: Vec<String> = rows
         .iter()
         .filter(|r| !r.ok())

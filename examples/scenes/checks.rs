@@ -790,12 +790,14 @@ pub fn run() -> Result<Vec<Row>, String> {
 }
 
 /// Prints the rows; returns the number of failures.
-pub fn print(rows: &[Row]) -> usize {
+/// Prints the rows under `title` (only the failing ones unless `verbose`); returns how many
+/// fail.
+pub fn print(rows: &[Row], verbose: bool, title: &str) -> usize {
     let header = format!(
         "{:<5} {:<46} {:<36} {:>14} {:>14} {:>10}  ok",
         "scene", "case", "quantity", "closed form", "computed", "error"
     );
-    print_table(&header, rows, Row::ok, |r| {
+    print_table(title, &header, rows, Row::ok, verbose, |r| {
         let Row {
             scene,
             case,
@@ -811,16 +813,27 @@ pub fn print(rows: &[Row]) -> usize {
     })
 }
 
-/// Prints `header`, then one `line` per item; returns how many items are not `ok`.
+/// Prints `title`, `header`, then one `line` per item (per failing item unless `verbose`; nothing
+/// when none fails); returns how many items are not `ok`.
 pub fn print_table<T>(
+    title: &str,
     header: &str,
     items: &[T],
     ok: impl Fn(&T) -> bool,
+    verbose: bool,
     line: impl Fn(&T) -> String,
 ) -> usize {
-    println!("{header}");
-    for item in items {
+    let failed = items.iter().filter(|item| !ok(item)).count();
+    if !verbose && failed == 0 {
+        return 0;
+    }
+    println!(
+        "{title}{}\n\n{header}",
+        if verbose { "" } else { ": the failing lines" }
+    );
+    for item in items.iter().filter(|item| verbose || !ok(item)) {
         println!("{}", line(item));
     }
-    items.iter().filter(|item| !ok(item)).count()
+    println!();
+    failed
 }

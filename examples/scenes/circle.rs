@@ -3,8 +3,6 @@
 //! lags behind the slip direction by φ, sin φ = γ_crit/R; the backward-Euler return map reaches
 //! it at first order in the step Δθ = 2π/N.
 
-use std::time::Instant;
-
 use interfacial::abi::host::FricCall;
 use interfacial::props::CoulombBuilder;
 use serde::Deserialize;
@@ -26,7 +24,7 @@ pub struct Circle {
     pub turns: u32,
 }
 
-/// One F2 run: the lag error, `fric_` calls and wall time.
+/// One F2 run: the lag error and `fric_` calls.
 #[derive(Clone, Copy, Debug)]
 pub struct CircleRun {
     /// |φ − asin(γ_crit/R)|, φ measured from the end-of-step tangent of the circle.
@@ -37,8 +35,6 @@ pub struct CircleRun {
     pub magnitude_error: f64,
     /// `fric_` calls.
     pub calls: usize,
-    /// Wall time, seconds.
-    pub wall: f64,
     /// False when the library asked for a cut-back.
     pub ok: bool,
 }
@@ -59,7 +55,6 @@ impl Circle {
 
     /// Runs `per_turn` increments per turn with allowable elastic slip `gamma_crit` (< R).
     pub fn run(&self, gamma_crit: f64, per_turn: usize) -> CircleRun {
-        let start = Instant::now();
         let exact = (gamma_crit / self.radius).asin();
         let props = CoulombBuilder::new()
             .mu(self.mu)
@@ -116,7 +111,6 @@ impl Circle {
             },
             magnitude_error,
             calls: total,
-            wall: start.elapsed().as_secs_f64(),
             ok,
         }
     }

@@ -2,8 +2,9 @@
 //! docs/scenes.md state about the charts, computed from this run's data and held to the bound
 //! the sentence states. The sentences quote the finding's id; the main job prints the table,
 //! writes `findings.csv` and fails when a finding does not hold, so a doc sentence cannot
-//! outlive the data behind it. A finding whose data is not in the run (`--quick`, `--point`) is
-//! reported as not checked.
+//! outlive the data behind it. On the full run a finding whose data is missing (a step taken out
+//! of a scene file, a method renamed) fails; only `--quick`, whose reduced sweeps do not hold the
+//! data, reports it as not checked.
 
 use crate::charts::{CellMark, Highlight};
 use crate::rate_map::{RateCell, RateMap};
@@ -50,10 +51,11 @@ impl Data<'_> {
 
 const EXACT_NM: &str = "Newmark, exact stick (LM=1)";
 const EXACT_HHT: &str = "HHT α=-0.1, exact stick (LM=1)";
-const PENALTY: [&str; 3] = [
+const PENALTY: [&str; 4] = [
     "explicit CD, elastic γc=1e-3",
     "explicit CD, elastic γc=1e-4",
     "Newmark, elastic γc=1e-3",
+    "Newmark, elastic γc=1e-4",
 ];
 const HHT_DAMPED: &str = "HHT α=-0.3, elastic γc=1e-4";
 const F1_ELASTIC: [(&str, f64); 3] = [
@@ -65,6 +67,7 @@ const F1_EXACT: &str = "exact stick (LM=1)";
 const F4_IMPLICIT: &str = "decay law, implicit, γc=1e-5";
 const F4_FROZEN: &str = "decay law, μ frozen, γc=1e-5";
 const F4_ADHESIVE: &str = "adhesive (v½, kμ), γc=1e-5";
+const F4_IMPLICIT_SOFT: &str = "decay law, implicit, γc=1e-3";
 
 fn pct(v: f64) -> String {
     format!("{:.3} %", 100.0 * v)
@@ -110,8 +113,27 @@ fn period() -> f64 {
     1.5 * std::f64::consts::PI + 2.0
 }
 
-/// Evaluates every finding on the run's points and F6 maps (`maps`: label → map).
-pub fn evaluate(points: &[Point], maps: &[&Map], rate_maps: &[RateMap]) -> Vec<Finding> {
+/// Evaluates every finding on the run's points and F6 maps (`maps`: label → map). With `full`
+/// (the full run) a finding without its data fails; otherwise it is reported as not checked.
+pub fn evaluate(
+    points: &[Point],
+    maps: &[&Map],
+    rate_maps: &[RateMap],
+    full: bool,
+) -> Vec<Finding> {
+    let mut out = evaluate_present(points, maps, rate_maps);
+    if full {
+        for f in &mut out {
+            if f.ok.is_none() {
+                f.ok = Some(false);
+                f.measured = "its data is missing from the full run".into();
+            }
+        }
+    }
+    out
+}
+
+fn evaluate_present(points: &[Point], maps: &[&Map], rate_maps: &[RateMap]) -> Vec<Finding> {
     let d = Data { points };
     let t = period();
     // Only the full grids: the counts the docs quote are those of the full run.
@@ -137,12 +159,12 @@ pub fn evaluate(points: &[Point], maps: &[&Map], rate_maps: &[RateMap]) -> Vec<F
         .collect();
     out.push(finding(
         "F6-exact-order",
-        "F6: exact stick converges at first order but not smoothly: error between 0.5 and 5 × Δt/T at every Δt of the sweep (T/22 to T/6712)",
+        "F6: exact stick converges at first order but not smoothly: error between 1 and 5 × Δt/T at every Δt of the sweep (T/22 to T/6712)",
         (exact.len() >= 16).then(|| {
             range(exact.iter().copied(), |p| p.error / (p.step / t)).unwrap_or((0.0, 0.0))
         }),
         |(lo, hi)| format!("error/(Δt/T) from {lo:.2} to {hi:.2}"),
-        |(lo, hi)| *lo >= 0.5 && *hi <= 5.0,
+        |(lo, hi)| *lo >= 1.0 && *hi <= 5.0,
     ));
     let pairs: Vec<(f64, f64)> = d
         .ok("F6", EXACT_NM)
@@ -165,8 +187,11 @@ pub fn evaluate(points: &[Point], maps: &[&Map], rate_maps: &[RateMap]) -> Vec<F
     let penalty: Vec<&Point> = PENALTY.iter().flat_map(|m| d.ok("F6", m)).collect();
     out.push(finding(
         "F6-penalty-floor",
-        "F6: elastic stick (penalty) with explicit or Newmark stepping stays above 10 % error at every Δt that completes (0.001 to 0.05 s), whatever γ_crit (1e-3, 1e-4): it rings after each stick onset",
-        (penalty.len() >= 12).then(|| range(penalty.iter().copied(), |p| p.error).unwrap_or((0.0, 0.0))),
+        "F6: elastic stick (penalty) with explicit or Newmark stepping stays above 10 % error at every Δt that completes (0.001 to 0.05 s), for γ_crit = 1e-3 and 1e-4 with each: it rings after each stick onset",
+        PENALTY
+            .iter()
+            .all(|m| d.ok("F6", m).len() >= 3)
+            .then(|| range(penalty.iter().copied(), |p| p.error).unwrap_or((0.0, 0.0))),
         |(lo, hi)| format!("errors {} to {}", pct(*lo), pct(*hi)),
         |(lo, _)| *lo >= 0.10,
     ));
@@ -365,11 +390,30 @@ pub fn evaluate(points: &[Point], maps: &[&Map], rate_maps: &[RateMap]) -> Vec<F
         |(lo, hi)| format!("error/(Δt/hold) from {lo:.3} to {hi:.3}"),
         |(lo, hi)| *lo >= 0.45 && *hi <= 0.56,
     ));
+    // F4, the implicit law with γ_crit = 1e-3: rises with refinement to a plateau (the steps
+    // resolve the stick spring's transient, which the rigid-stick closed form does not have).
+    let mut soft = d.ok("F4", F4_IMPLICIT_SOFT);
+    soft.sort_by(|a, b| b.step.total_cmp(&a.step));
+    out.push(finding(
+        "F4-elastic-plateau",
+        "F4: the implicit law with γ_crit = 1e-3 goes from 1e-3 of the swing at its coarsest step up to a plateau of about 5e-3: its two finest steps within 10 % of each other, at least 3 × the coarsest",
+        (soft.len() >= 4).then(|| {
+            let n = soft.len();
+            (soft[0].error, soft[n - 2].error, soft[n - 1].error)
+        }),
+        |(coarse, a, b)| format!("coarsest {coarse:.2e}; two finest {a:.2e}, {b:.2e}"),
+        |(coarse, a, b)| {
+            (a - b).abs() <= 0.1 * a.max(*b)
+                && a.min(*b) >= 3.0 * coarse
+                && (0.9e-3..=1.2e-3).contains(coarse)
+                && (4e-3..=6e-3).contains(b)
+        },
+    ));
     // F4 maps: the implicit one (the first) settles everywhere; cut-backs on both.
     let full: Vec<&RateMap> = rate_maps.iter().filter(|m| m.dts.len() >= 31).collect();
     out.push(finding(
         "F4-map-implicit",
-        "F4 implicit map: with the rate-following stick stiffness (the default since issue 16) steady sliding settles in every cell, at every Δt and d_c, also left of the earlier formulation's limit 2|dτ/dv|/k_s",
+        "F4 implicit map: with the rate-following stick stiffness (the default) steady sliding settles in every cell, at every Δt and d_c, also left of the earlier formulation's limit 2|dτ/dv|/k_s",
         full.first().map(|m| {
             let cells = m.cells.iter().flatten();
             let total = cells.clone().count();
@@ -393,11 +437,12 @@ pub fn evaluate(points: &[Point], maps: &[&Map], rate_maps: &[RateMap]) -> Vec<F
     out
 }
 
-/// The main job's own run time (after the build): under 30 s.
+/// The main job's own run time (after the build), from its start (P1 included) to the findings:
+/// under 30 s.
 pub fn run_time(seconds: f64, quick: bool) -> Finding {
     finding(
         "run-time",
-        "The full main job runs in under 30 s on the 2-core development machine (after the release build)",
+        "The full main job, from its start (P1 included) to this table, runs in under 30 s on the 2-core development machine (after the release build)",
         (!quick).then_some(seconds),
         |s| format!("{s:.1} s"),
         |s| *s < 30.0,
@@ -512,9 +557,11 @@ pub fn map_marks(m: &Map) -> (Vec<CellMark>, Vec<String>) {
     (marks, notes)
 }
 
-/// Prints the findings; returns the number that do not hold.
-pub fn print(findings: &[Finding]) -> usize {
-    println!("{:<20} {:<6} measured / statement", "finding", "holds");
+/// Prints the findings (id, holds, what this run measured; with `verbose` also the statement);
+/// returns the number that do not hold.
+pub fn print(findings: &[Finding], verbose: bool) -> usize {
+    println!("Findings: the figures README.md and docs/scenes.md quote, from this run\n");
+    println!("{:<20} {:<6} measured", "finding", "holds");
     let mut failed = 0;
     for f in findings {
         let holds = match f.ok {
@@ -525,11 +572,12 @@ pub fn print(findings: &[Finding]) -> usize {
             }
             None => "-",
         };
-        println!(
-            "{:<20} {:<6} {}\n{:<28}{}",
-            f.id, holds, f.measured, "", f.statement
-        );
+        println!("{:<20} {:<6} {}", f.id, holds, f.measured);
+        if verbose || f.ok == Some(false) {
+            println!("{:<28}{}", "", f.statement);
+        }
     }
+    println!();
     failed
 }
 
@@ -538,15 +586,15 @@ pub fn csv(findings: &[Finding]) -> String {
     let mut s = String::from("id,holds,measured,statement\n");
     for f in findings {
         s.push_str(&format!(
-            "{},{},\"{}\",\"{}\"\n",
-            f.id,
+            "{},{},{},{}\n",
+            crate::csvfile::field(f.id),
             match f.ok {
                 Some(true) => "yes",
                 Some(false) => "no",
                 None => "not checked",
             },
-            f.measured.replace('"', "'"),
-            f.statement.replace('"', "'")
+            crate::csvfile::field(&f.measured),
+            crate::csvfile::field(&f.statement)
         ));
     }
     s

@@ -93,12 +93,14 @@ impl RateMap {
         s.rate_stability_limit(self.law, self.gamma_crit)
     }
 
-    /// Row `r` is held to the linearised limit: d_c·v₁ ≤ 1. Further down the decay the run's
+    /// Row `r` is held to the linearised limit: the law has one, and d_c·v₁ ≤ 1. Further down the decay the run's
     /// start from v = 0 crosses rates where |dτ/dv| is up to exp(d_c v₁) times steeper, and the
     /// implicit scheme can lock into a sustained oscillation above the linear limit (measured:
     /// up to 2.4 × it at d_c v₁ = 2.5); the limit is then necessary, not sufficient.
+    /// A law without a step limit (the implicit laws' rate-following stiffness: limit 0) has no
+    /// boundary to hold: its map must settle in every cell instead (finding F4-map-implicit).
     pub fn checked(&self, r: usize) -> bool {
-        self.decays[r] * self.scene.rates[0] <= 1.0
+        self.limit(r) > 0.0 && self.decays[r] * self.scene.rates[0] <= 1.0
     }
 
     /// Row `r`: the measured boundary (first settling column) and the closed form's (first

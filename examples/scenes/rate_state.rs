@@ -16,7 +16,7 @@
 //!   boundary, which must lie within one cell of k_c at the increments that resolve L.
 
 use std::fmt::Write as _;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use interfacial::abi::host::FricCall;
 use interfacial::props::RateStateBuilder;
@@ -268,8 +268,8 @@ fn r2_map(quick: bool) -> Result<(R2Map, usize), String> {
 }
 
 /// Runs R1 and R2, writes `R1-*.csv`, `R2-map.csv` and their charts into `out`, and returns
-/// the checked rows (each with the bound the docs quote).
-pub fn run(out: &Path, quick: bool) -> Result<Vec<Row>, String> {
+/// the checked rows (each with the bound the docs quote) and the files written.
+pub fn run(out: &Path, quick: bool) -> Result<(Vec<Row>, Vec<PathBuf>), String> {
     let mut rows = Vec::new();
     // R1.
     let per_l: Vec<f64> = if quick {
@@ -310,8 +310,14 @@ pub fn run(out: &Path, quick: bool) -> Result<Vec<Row>, String> {
         });
         curves.push((name, curve));
     }
-    std::fs::write(out.join("R1-velocity-steps.csv"), csv).map_err(|e| e.to_string())?;
-    r1_chart(&out.join("R1-work-precision.svg"), &curves)?;
+    let files = vec![
+        out.join("R1-velocity-steps.csv"),
+        out.join("R1-work-precision.svg"),
+        out.join("R2-map.csv"),
+        out.join("R2-map.svg"),
+    ];
+    std::fs::write(&files[0], csv).map_err(|e| e.to_string())?;
+    r1_chart(&files[1], &curves)?;
     // R2.
     let (map, _iterations) = r2_map(quick)?;
     let mut csv = String::from("V_dt_over_L,k_over_kc,growth,class\n");
@@ -325,8 +331,8 @@ pub fn run(out: &Path, quick: bool) -> Result<Vec<Row>, String> {
             let _ = writeln!(csv, "{c},{k},{g:e},{class}");
         }
     }
-    std::fs::write(out.join("R2-map.csv"), csv).map_err(|e| e.to_string())?;
-    r2_chart(&out.join("R2-map.svg"), &map)?;
+    std::fs::write(&files[2], csv).map_err(|e| e.to_string())?;
+    r2_chart(&files[3], &map)?;
     // The rows that resolve L (V·Δt/L ≤ 0.1): boundary within one cell of k_c = 1.
     for (r, &c) in map.courants.iter().enumerate() {
         if c > 0.1 {
@@ -344,7 +350,7 @@ pub fn run(out: &Path, quick: bool) -> Result<Vec<Row>, String> {
             tolerance: 0.0,
         });
     }
-    Ok(rows)
+    Ok((rows, files))
 }
 
 /// The R1 chart's lowest error (an error of exactly 0 is drawn there).

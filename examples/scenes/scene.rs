@@ -321,9 +321,10 @@ pub struct Point {
     pub details: Vec<f64>,
     /// `fric_` calls in the run.
     pub calls: usize,
-    /// Wall time of one run, seconds: the median of the timed repeats.
+    /// Wall time of one run, seconds: the fastest of the timed repeats (the least disturbed by
+    /// other load on the machine; [`time_interleaved`]).
     pub wall: f64,
-    /// Fastest and slowest of the timed repeats (seconds per run).
+    /// Fastest and slowest of the timed repeats (seconds per run): the spread drawn.
     pub wall_range: [f64; 2],
     /// Timed repeats, and runs inside each (each repeat lasts ≥ `Timing::min_repeat`).
     pub repeats: [usize; 2],
@@ -343,16 +344,18 @@ impl Point {
 /// How a point is timed.
 #[derive(Clone, Copy, Debug)]
 pub struct Timing {
-    /// Timed repeats (the median is reported, the range drawn as an error bar).
+    /// Timed repeats (with [`Timing::MAIN`] the main job reports the fastest, and draws the
+    /// range from the fastest to the slowest as an error bar).
     pub repeats: usize,
     /// Each repeat runs the scene as many times as it takes to last at least this long (s).
     pub min_repeat: f64,
 }
 
 impl Timing {
-    /// The main job: the median of 5 repeats of ≥ 1 ms each.
+    /// The main job: 7 rounds over every point of a scene, interleaved (see
+    /// [`time_interleaved`]), each point's repeat lasting ≥ 1 ms.
     pub const MAIN: Timing = Timing {
-        repeats: 5,
+        repeats: 7,
         min_repeat: 1e-3,
     };
     /// One run, timed once (tests/scenes_driver.rs: the answer, not the time).
@@ -514,4 +517,86 @@ pub fn run_point_timed(scene: &Scene, method: &Method, step: f64, timing: Timing
         };
     }
     p
+}
+
+/// Runs one method at one step for its cost only (the same calls as [`run_point_timed`]).
+fn run_only(scene: &Scene, method: &Method, step: f64) {
+    if let Some(o) = &scene.file.oscillator {
+        std::hint::black_box(simulate(o, method.integrator, method.stick, step));
+    } else if let Some(c) = &scene.file.circle {
+        let gamma_crit = match method.stick {
+            Stick::Elastic { gamma_crit } => gamma_crit,
+            Stick::Exact => c.radius,
+        };
+        std::hint::black_box(c.run(gamma_crit, step.round().max(3.0) as usize));
+    } else if let Some(f1) = &scene.file.pull {
+        std::hint::black_box(f1.run(method.stick, step.round().max(1.0) as usize));
+    } else if let (Some(v), Law::Rate(law)) = (&scene.file.velocity, method.law) {
+        let gamma_crit = match method.stick {
+            Stick::Elastic { gamma_crit } => gamma_crit,
+            Stick::Exact => v.hold,
+        };
+        std::hint::black_box(v.run(law, gamma_crit, step));
+    }
+}
+
+/// Times every point of a scene the way that survives a busy machine: `timing.repeats` rounds,
+/// each round timing every point once (a repeat of enough runs to last `timing.min_repeat`), the
+/// points visited in a different order every round (rotated, and reversed on odd rounds), so
+/// that a burst of load from other jobs falls on many points a little rather than on one point's
+/// repeats. A point's `wall` is its fastest repeat (the least disturbed), `wall_range` the
+/// fastest and slowest. `points` carry their answers already ([`run_point_timed`] with
+/// [`Timing::ONCE`]); `tick` is called once per point and round.
+pub fn time_interleaved(
+    scene: &Scene,
+    points: &mut [Point],
+    timing: Timing,
+    mut tick: impl FnMut(&str),
+) {
+    let n = points.len();
+    if n == 0 || timing.repeats == 0 {
+        return;
+    }
+    // Runs per repeat, from the single run that gave the answer.
+    let methods: Vec<Option<&Method>> = points
+        .iter()
+        .map(|p| scene.methods.iter().find(|m| m.spec.label == p.method))
+        .collect();
+    let inner: Vec<usize> = points
+        .iter()
+        .map(|p| ((timing.min_repeat / p.wall.max(1e-9)).ceil() as usize).clamp(1, 1_000_000))
+        .collect();
+    let mut times = vec![Vec::with_capacity(timing.repeats); n];
+    for round in 0..timing.repeats {
+        for k in 0..n {
+            let i = if round % 2 == 0 {
+                (k + round) % n
+            } else {
+                (n - 1 - k + round) % n
+            };
+            let Some(m) = methods[i] else { continue };
+            let step = points[i].step;
+            let t = Instant::now();
+            for _ in 0..inner[i] {
+                run_only(scene, m, step);
+            }
+            times[i].push(t.elapsed().as_secs_f64() / inner[i] as f64);
+        }
+        tick(&format!(
+            "{}: timing round {}/{}",
+            scene.file.id,
+            round + 1,
+            timing.repeats
+        ));
+    }
+    for ((p, t), inner) in points.iter_mut().zip(&times).zip(&inner) {
+        if t.is_empty() {
+            continue;
+        }
+        let fastest = t.iter().copied().fold(f64::INFINITY, f64::min);
+        let slowest = t.iter().copied().fold(0.0, f64::max);
+        p.wall = fastest;
+        p.wall_range = [fastest, slowest];
+        p.repeats = [t.len(), *inner];
+    }
 }

@@ -11,8 +11,6 @@
 //! to the elastic slip γ_crit takes up; μ frozen at the start-of-increment rate (`PROPS(20) = 1`)
 //! lags one increment behind every step, a first-order error in Δt/hold.
 
-use std::time::Instant;
-
 use interfacial::abi::host::FricCall;
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use serde::Deserialize;
@@ -64,8 +62,6 @@ pub struct VelocityRun {
     pub steady_error: f64,
     /// `fric_` calls.
     pub calls: usize,
-    /// Wall time, seconds.
-    pub wall: f64,
     /// False when the library asked for a cut-back (`PNEWDT` < 1).
     pub ok: bool,
 }
@@ -207,7 +203,6 @@ impl VelocitySteps {
 
     /// Runs the history with increments `dt` (each hold rounded to whole increments).
     pub fn run(&self, law: RateLaw, gamma_crit: f64, dt: f64) -> VelocityRun {
-        let start = Instant::now();
         let per_hold = (self.hold / dt).round().max(1.0) as usize;
         let dt = self.hold / per_hold as f64;
         let mut c = FricCall::new(1, &self.props(law, gamma_crit));
@@ -246,7 +241,6 @@ impl VelocitySteps {
             },
             steady_error: steady_error / swing,
             calls,
-            wall: start.elapsed().as_secs_f64(),
             ok,
         }
     }
