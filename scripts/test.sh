@@ -22,6 +22,7 @@ cmake --build build -j2
 ctest --test-dir build --output-on-failure -j2
 echo "== instruction counts: the docs' figures (within 2 %) and the rate law's bound (< 3x)"
 scripts/count-instructions.sh --check
+echo "== CalculiX host: ccx 2.20 with the library, decks against Debian's stock ccx" && hosts/calculix/test.sh
 # Optional stages, each owned by its own script: run when present.
 for stage in scripts/test-consumers.sh scripts/test-sanitizers.sh scripts/fuzz-ci.sh; do
   if [ -x "$stage" ]; then

@@ -389,9 +389,9 @@ subroutine ifl_ccx_point(elc, ncmat_, xn, t, fnorm, area, sini, s, nstate_, npt,
   s(13) = press
 end subroutine ifl_ccx_point
 
-!> springforc_n2f: the friction force of a node-to-face contact element from FRIC.
+!> springforc_n2f and springforc_f2f: the friction force of a contact point from FRIC.
 !> fnl is the slave node's force (normal part in, friction added), cstr(5:6) the shear stress.
-subroutine ifl_ccx_n2f_force(elc, ncmat_, xn, t, fnl, springarea, sini, s, nstate_, cstr, &
+subroutine ifl_ccx_force(elc, ncmat_, xn, t, fnl, springarea, sini, s, nstate_, cstr, &
                              npt, nener, senergy, venergy)
   implicit none
   integer, intent(in) :: ncmat_, nstate_, npt, nener
@@ -410,19 +410,19 @@ subroutine ifl_ccx_n2f_force(elc, ncmat_, xn, t, fnl, springarea, sini, s, nstat
     senergy = senergy + sed*area
     venergy = sfd*area
   end if
-end subroutine ifl_ccx_n2f_force
+end subroutine ifl_ccx_force
 
-!> springstiff_n2f: the same point's friction force, added to fnl, and its tangent, added to
+!> springstiff_n2f and springstiff_f2f: the same point's friction force, added to fnl, and its tangent, added to
 !> fpu(i,j,k) = d fnl(i) / d u(j, node k): area * t_a DDTDDG_ab t_b . tu (tu = d t / d u), and
 !> t_a DDTDDP_a times the derivative of the normal force (as CalculiX does for its slip term,
 !> not in linear dynamics).
-subroutine ifl_ccx_n2f_stiff(elc, ncmat_, xn, t, fnl, fpu, tu, nope, springarea, sini, s, &
+subroutine ifl_ccx_stiff(elc, ncmat_, xn, t, fnl, fpu, tu, nope, springarea, sini, s, &
                              nstate_, npt, nmethod, iperturb)
   implicit none
   integer, intent(in) :: ncmat_, nope, nstate_, npt, nmethod, iperturb(*)
-  real(8), intent(in) :: elc(0:ncmat_), xn(3), t(3), tu(3, 3, 10), springarea(2)
+  real(8), intent(in) :: elc(0:ncmat_), xn(3), t(3), tu(3, 3, *), springarea(2)
   real(8), intent(in) :: sini(nstate_)
-  real(8), intent(inout) :: fnl(3), fpu(3, 3, 10), s(nstate_)
+  real(8), intent(inout) :: fnl(3), fpu(3, 3, *), s(nstate_)
   real(8) :: t1(3), t2(3), taug(3), ddtddg(2, 2), ddtddp(2), sed, sfd, fnorm, area
   real(8) :: dfn(3, 10), tb(3, 2), g(3, 2), gt(2), w(3)
   logical :: closed
@@ -471,4 +471,4 @@ subroutine ifl_ccx_n2f_stiff(elc, ncmat_, xn, t, fnl, fpu, tu, nope, springarea,
       end do
     end do
   end do
-end subroutine ifl_ccx_n2f_stiff
+end subroutine ifl_ccx_stiff
