@@ -32,11 +32,11 @@ while IFS='|' read -r file scope anchor mode snippet; do
       }
       if (mode == "before") at = a - 1
       else if (mode == "after") at = a
-      else if (mode ~ /^endif[0-9]$/) {
-        want = substr(mode, 6) + 0; k = 0; at = 0
+      else if (mode ~ /^end(if|do)[0-9]$/) {
+        word = substr(mode, 1, 5); want = substr(mode, 6) + 0; k = 0; at = 0
         for (i = a + 1; i <= NR && i <= a + 40; i++)
-          if (line[i] ~ /^[ \t]*endif[ \t]*$/) { k++; if (k == want) { at = i; break } }
-        if (at == 0) { printf "edit.sh: %s: no endif #%d within 40 lines after \"%s\"\n", name, want, anchor > "/dev/stderr"; exit 3 }
+          if (line[i] ~ ("^[ \t]*" word "[ \t]*$")) { k++; if (k == want) { at = i; break } }
+        if (at == 0) { printf "edit.sh: %s: no %s #%d within 40 lines after \"%s\"\n", name, word, want, anchor > "/dev/stderr"; exit 3 }
       } else { printf "edit.sh: unknown mode %s\n", mode > "/dev/stderr"; exit 3 }
       for (i = 1; i <= at; i++) print line[i]
       while ((getline l < snip) > 0) print l

@@ -78,7 +78,7 @@ cmp_totals() {
 }
 
 # --- deck 1: stock *FRICTION against *FRICTION, USER (law 1), drag along x and diagonally ------
-for dir in x xy; do
+for dir in x xy x_f2f xy_f2f; do
   ts=$(run "$stock" "block_${dir}_stock" "block_${dir}_stock")
   tu=$(run "$ours" "block_${dir}_user" "block_${dir}_user")
   ds=$work/runs/block_${dir}_stock
@@ -143,7 +143,7 @@ for c in "bad_too_few_props|PROPERTIES=7 but 6 values given" \
 done
 
 # --- threads: the same answers with 1 and 2 threads ---------------------------------------------
-for deck in block_xy_user; do
+for deck in block_xy_user block_xy_f2f_user; do
   run "$ours" "$deck" "${deck}_t2" OMP_NUM_THREADS=2 CCX_NPROC_RESULTS=2 CCX_NPROC_STIFFNESS=2 >/dev/null
   r2=$work/runs/${deck}_t2
   if [ "$(cat "$r2/status")" != 0 ] || ! grep -q 'Using up to 2 cpu(s) for the stress calculation' "$r2/log"; then

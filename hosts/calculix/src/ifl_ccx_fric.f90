@@ -472,3 +472,19 @@ subroutine ifl_ccx_stiff(elc, ncmat_, xn, t, fnl, fpu, tu, nope, springarea, sin
     end do
   end do
 end subroutine ifl_ccx_stiff
+
+!> interpolateinface (face-to-face contact, when CalculiX regenerates its integration points):
+!> CalculiX interpolates its own 9 friction entries of xstate over a triangle of old points;
+!> this does the same, by CalculiX's plane_eq, for the entries after them (10 .. nstate_:
+!> the friction stress, the pressure and the law's STATEV), so they survive the regeneration.
+subroutine ifl_ccx_interpolate(c1, c2, c3, n1, n2, n3, p, xstateini, xstate, nstate_, mi, iout)
+  implicit none
+  integer, intent(in) :: n1, n2, n3, nstate_, mi(*), iout
+  real(8), intent(in) :: c1(2), c2(2), c3(2), p(3), xstateini(nstate_, mi(1), *)
+  real(8), intent(inout) :: xstate(nstate_, mi(1), *)
+  integer :: i
+  do i = 10, nstate_
+    call plane_eq(c1(1), c1(2), xstateini(i, 1, n1), c2(1), c2(2), xstateini(i, 1, n2), &
+                  c3(1), c3(2), xstateini(i, 1, n3), p(1), p(2), xstate(i, 1, iout))
+  end do
+end subroutine ifl_ccx_interpolate
