@@ -96,6 +96,30 @@ for dir in x xy x_f2f xy_f2f; do
   echo "INFO deck 1 ($dir drag): Newton iterations stock $its, USER $itu; wall time stock ${ts} s, USER ${tu} s"
 done
 
+# --- cost: stock against USER on deck 1 (x) with 200 increments per drag, CPU time -------------
+d=$work/decks_timing
+rm -rf "$d" && mkdir -p "$d"
+awk '/^0\.05, 1\.$/ { print "0.005, 1."; next } { print }' "$here/decks/block_steps_x.inp" \
+  >"$d/block_steps_x.inp"
+cpu() { # DIR EXE DECK: user+system seconds of one run (bash's time keyword)
+  local out TIMEFORMAT='%U %S'
+  out=$({ time (cd "$1" && OMP_NUM_THREADS=1 CCX_NPROC_RESULTS=1 CCX_NPROC_STIFFNESS=1 \
+    "$2" "$3" >/dev/null 2>&1); } 2>&1)
+  echo "$out" | awk '{ printf "%.2f", $1 + $2 }'
+}
+for v in stock user; do
+  RUN_EXTRA=$d run /bin/true "block_x_$v" "timing_$v" >/dev/null
+done
+ts=() tu=()
+for i in 1 2 3; do
+  ts+=("$(cpu "$work/runs/timing_stock" "$stock" block_x_stock)")
+  tu+=("$(cpu "$work/runs/timing_user" "$ours" block_x_user)")
+done
+med() { printf '%s\n' "$@" | sort -g | sed -n 2p; }
+its=$(iterations "$work/runs/timing_stock/block_x_stock.sta")
+itu=$(iterations "$work/runs/timing_user/block_x_user.sta")
+echo "INFO cost, deck 1 (x) with 200 increments per drag: CPU time (median of 3) stock $(med "${ts[@]}") s, USER $(med "${tu[@]}") s; Newton iterations stock $its, USER $itu"
+
 # --- what stock cannot do: the decay law, steady force μ(v)·N at 10, 100, 1000 increments ------
 # μ = μ_k + (μ_s − μ_k)·exp(−d_c·v) with μ_s = 0.5, μ_k = 0.2, d_c = 10 at v = 0.1 (drag 0.1 in
 # a step of time 1): the last increment's |Fx|/|Fz| of the top against μ(v), within 1 %.
