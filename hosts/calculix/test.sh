@@ -151,7 +151,8 @@ done
 # --- bad input through the deck: a clear stop naming the cause, no crash -----------------------
 for c in "bad_too_few_props|PROPERTIES=7 but 6 values given" \
   "bad_refused_props|PROPS(2): friction coefficient" \
-  "bad_depvar|NSTATV = 2 but the Coulomb law needs 3"; do
+  "bad_depvar|NSTATV = 2 but the Coulomb law needs 3" \
+  "bad_no_properties|of interaction SI: PROPERTIES=n is required"; do
   deck=${c%%|*}
   want=${c#*|}
   run "$ours" "$deck" "$deck" >/dev/null

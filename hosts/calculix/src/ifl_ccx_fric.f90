@@ -70,40 +70,48 @@ subroutine ifl_ccx_friction(inpc, textpart, elcon, ncmat_, ntmat_, imat, nstate_
     else if (textpart(i)(1:11) == 'PROPERTIES=') then
       read (textpart(i)(12:31), '(i20)', iostat=ios) np
       if (ios /= 0) then
-        write (*, *) '*ERROR reading *FRICTION: PROPERTIES= is not an integer'
+        write (*, *) '*ERROR reading *FRICTION of interaction ', trim(cname), &
+          ': PROPERTIES= is not an integer'
         bad = .true.
       end if
     else if (textpart(i)(1:7) == 'DEPVAR=') then
       read (textpart(i)(8:27), '(i20)', iostat=ios) nd
       if (ios /= 0) then
-        write (*, *) '*ERROR reading *FRICTION: DEPVAR= is not an integer'
+        write (*, *) '*ERROR reading *FRICTION of interaction ', trim(cname), &
+          ': DEPVAR= is not an integer'
         bad = .true.
       end if
     else if (user) then
-      write (*, *) '*ERROR reading *FRICTION, USER: unknown parameter ', trim(textpart(i))
+      write (*, *) '*ERROR reading *FRICTION, USER of interaction ', trim(cname), &
+        ': unknown parameter ', trim(textpart(i))
       bad = .true.
     end if
   end do
   if (.not. user) then
     if (np /= -1 .or. nd /= 0) then
-      write (*, *) '*ERROR reading *FRICTION: PROPERTIES= and DEPVAR= need the parameter USER'
+      write (*, *) '*ERROR reading *FRICTION of interaction ', trim(cname), &
+        ': PROPERTIES= and DEPVAR= need the parameter USER'
       ier = 1
     end if
     return
   end if
   iuser = 1
   if (np == -1) then
-    write (*, *) '*ERROR reading *FRICTION, USER: PROPERTIES=n is required'
+    write (*, *) '*ERROR reading *FRICTION, USER of interaction ', trim(cname), &
+      ': PROPERTIES=n is required'
     bad = .true.
   else if (np < 1) then
-    write (*, *) '*ERROR reading *FRICTION, USER: PROPERTIES must be at least 1'
+    write (*, *) '*ERROR reading *FRICTION, USER of interaction ', trim(cname), &
+      ': PROPERTIES must be at least 1'
     bad = .true.
   else if (13 + np > ncmat_) then
-    write (*, *) '*ERROR reading *FRICTION, USER: no room for PROPERTIES=', np
+    write (*, *) '*ERROR reading *FRICTION, USER of interaction ', trim(cname), &
+      ': no room for PROPERTIES=', np
     bad = .true.
   end if
   if (nd < 0) then
-    write (*, *) '*ERROR reading *FRICTION, USER: DEPVAR must be 0 or more'
+    write (*, *) '*ERROR reading *FRICTION, USER of interaction ', trim(cname), &
+      ': DEPVAR must be 0 or more'
     bad = .true.
   end if
   ! The data lines: up to 8 values each, until the next keyword.
@@ -114,8 +122,8 @@ subroutine ifl_ccx_friction(inpc, textpart, elcon, ncmat_, ntmat_, imat, nstate_
     do i = 1, min(n, 8)
       read (textpart(i)(1:20), '(f20.0)', iostat=ios) val
       if (ios /= 0) then
-        write (*, *) '*ERROR reading *FRICTION, USER: PROPS value is not a number: ', &
-          trim(textpart(i))
+        write (*, *) '*ERROR reading *FRICTION, USER of interaction ', trim(cname), &
+          ': PROPS value is not a number: ', trim(textpart(i))
         bad = .true.
         cycle
       end if
