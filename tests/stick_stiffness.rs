@@ -99,6 +99,37 @@ fn stress_and_slip_follow_the_closed_form_in_stick_and_slip() {
 }
 
 #[test]
+fn nfdir_1_clamps_the_trial_stress() {
+    // (start stress, motion, pressure): stick, slip forwards, slip backwards.
+    for (tau, dgam, p) in [(1.0, 2e-4, 10.0), (2.0, 5e-3, 10.0), (-1.0, -4e-3, 8.0)] {
+        let mut c = FricCall::new(1, &props());
+        c.tau[0] = tau;
+        c.dgam[0] = dgam;
+        c.press = p;
+        c.dpress = 0.0;
+        c.dtime = 0.1;
+        c.chrlngth = 1.0;
+        c.call();
+        assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+        let trial = tau + K * dgam;
+        let want = trial.clamp(-MU * p, MU * p);
+        assert!(
+            (c.tau[0] - want).abs() <= 1e-12 * want.abs(),
+            "TAU {} vs {want}",
+            c.tau[0]
+        );
+        let want_slip = (trial - want) / K;
+        assert!(
+            (c.dslip[0] - want_slip).abs() <= 1e-15,
+            "DSLIP {} vs {want_slip}",
+            c.dslip[0]
+        );
+        let want_k = if trial.abs() <= MU * p { K } else { 0.0 };
+        assert_eq!(c.ddtddg(0, 0), want_k, "DDTDDG");
+    }
+}
+
+#[test]
 fn tangents_match_central_differences() {
     let cases = [
         ([1.0, -0.5], [1e-4, 2e-4], 12.0, 8.0),
