@@ -54,7 +54,7 @@ outdir=$(cd "$outdir" && pwd)
 jobs=$(nproc 2>/dev/null || echo 2)
 
 # --- build dependencies (Debian package names) ----------------------------------------------
-need=(libspooles-dev libarpack2-dev liblapack-dev libblas-dev gfortran gcc make)
+need=(libspooles-dev libarpack2-dev liblapack-dev libblas-dev gfortran gcc make patch bzip2 xz-utils)
 missing=()
 for p in "${need[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' ||
@@ -63,7 +63,11 @@ done
 if [ ${#missing[@]} -gt 0 ]; then
   if [ "$(id -u)" -eq 0 ]; then
     echo "build.sh: installing ${missing[*]}"
-    apt-get install -y --no-install-recommends "${missing[@]}" >/dev/null
+    # A fresh machine may have no package lists yet: update once and retry.
+    apt-get install -y --no-install-recommends "${missing[@]}" >/dev/null 2>&1 || {
+      apt-get update >/dev/null
+      apt-get install -y --no-install-recommends "${missing[@]}" >/dev/null
+    }
   else
     echo "build.sh: missing Debian packages: ${missing[*]}" >&2
     echo "          run as root: apt-get install ${missing[*]}" >&2

@@ -15,7 +15,10 @@ work=$(cd "$work" && pwd)
 ours=$work/bin/ccx
 if [ ! -x /usr/bin/ccx ]; then
   if [ "$(id -u)" -eq 0 ]; then
-    apt-get install -y --no-install-recommends calculix-ccx >/dev/null
+    apt-get install -y --no-install-recommends calculix-ccx >/dev/null 2>&1 || {
+      apt-get update >/dev/null
+      apt-get install -y --no-install-recommends calculix-ccx >/dev/null
+    }
   else
     echo "test.sh: Debian's stock ccx is missing: apt-get install calculix-ccx" >&2
     exit 1
