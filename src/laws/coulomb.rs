@@ -46,7 +46,7 @@ pub enum CriticalSlip {
     Absolute(f64),
     /// A fraction of the characteristic contact length (`CHRLNGTH`) given with each increment.
     Tolerance(f64),
-    /// None: a constant stick stiffness k_s (stress/length) instead, elastic stick only
+    /// No γ_crit: a constant stick stiffness k_s (stress/length) instead, elastic stick only
     /// (`PROPS(7) = 4`): τ = τ̄ + k_s·Δγ while |τ| ≤ τ_crit (CalculiX's stick slope λ).
     Stiffness(f64),
 }
@@ -512,7 +512,8 @@ impl Coulomb {
         }
     }
 
-    /// The increments [`Self::try_update`] leaves aside, by the careful tier of elastic stick:
+    /// The increments [`Self::try_update`] leaves aside: every one of a constant stick
+    /// stiffness ([`Self::constant_stick`]), and, by the careful tier of elastic stick,
     /// those beyond the one-pass tier's bound (magnitudes near the ends of the f64 range), a
     /// stiffness k_s = τ_crit/γ_crit below f64's normal range, where k_s·γ^pr keeps too few
     /// digits (the stick stress is then formed as τ_crit·(γ^pr/γ_crit)), and every failure,
@@ -525,7 +526,13 @@ impl Coulomb {
         inc: Increment<N>,
         state: CoulombState,
     ) -> Result<Update<N>, LawError> {
-        match self.integrate(&inc, &state, true) {
+        let answer = match self.critical_slip {
+            CriticalSlip::Stiffness(k) if self.stick == StickMode::Elastic => {
+                self.constant_stick(&inc, &state, k)
+            }
+            _ => self.integrate(&inc, &state, true),
+        };
+        match answer {
             Some(up) => Ok(up),
             None => Err(self.diagnose(inc, &state)),
         }
@@ -565,10 +572,9 @@ impl Coulomb {
         let (contact, slip, probe) = match self.stick {
             StickMode::Rough => (Contact::ExactStick, 0.0, exact_inputs()),
             StickMode::Elastic => {
-                let gamma_crit = match self.critical_slip {
-                    CriticalSlip::Stiffness(k) => return self.constant_stick(inc, state, k),
-                    _ => self.critical_slip_if_defined(inc.characteristic_length)?,
-                };
+                // `None` for a constant stick stiffness: [`Self::update_rare`] answers it, so
+                // the hot path stays as it was.
+                let gamma_crit = self.critical_slip_if_defined(inc.characteristic_length)?;
                 let trial = self.elastic_trial(inc, gamma_crit, careful);
                 let (t, slip, probe) = if careful {
                     let (t, slip, results) = self.elastic_stick_checked(&trial);

@@ -294,7 +294,12 @@ pub(crate) fn law_from_entries(
     e: &[f64; COULOMB_EXTENDED_NPROPS],
     table: Option<&'static FrictionTable>,
 ) -> Result<FrictionLaw, PropsError> {
-    build(e, table).map_err(|no| match no {
+    let law = if e[6] == f64::from(CONSTANT_STICK) {
+        constant_stick_law(e)
+    } else {
+        build(e, table)
+    };
+    law.map_err(|no| match no {
         NoLaw::OutOfClass(index) => PropsError::out_of_class(&COULOMB, e, index),
         NoLaw::Refused(refusal) => PropsError::refused(&COULOMB, refusal),
     })
@@ -335,26 +340,18 @@ fn build(
 ) -> Result<FrictionLaw, NoLaw> {
     let viscous = e[6] == f64::from(VISCOUS);
     let stick = match e[6] {
-        0.0 | 3.0 | 4.0 => StickMode::Elastic,
+        0.0 | 3.0 => StickMode::Elastic,
         1.0 => StickMode::Exact,
         2.0 => StickMode::Rough,
+        // PROPS(7) = 4 is built by `law_from_entries` alone (`constant_stick_law`): the fast
+        // readers decline it here and the checked path answers.
         _ => return Err(NoLaw::OutOfClass(7)),
     };
     let mu = e[1];
+    let base = Coulomb::from_validated(mu, e[3], e[4], e[5], stick);
     let mu2 = COULOMB.resolved(e, 3);
     // PROPS(8..20) all ±0 in one test of their bits.
     let rest_off = e[7..].iter().fold(0, |bits, v| bits | v.to_bits()) << 1 == 0;
-    if e[6] == f64::from(CONSTANT_STICK) {
-        // k_s = PROPS(5) (a fast plan may have admitted it as γ_crit, which may be 0).
-        let base = Coulomb::from_validated(mu, e[3], 0.0, e[5], stick)
-            .with_stick_stiffness(e[4])
-            .map_err(|_| NoLaw::OutOfClass(5))?;
-        if mu2 != mu || !rest_off {
-            return Err(NoLaw::Refused(Refusal::StickStiffnessPlainOnly));
-        }
-        return Ok(FrictionLaw::Coulomb(base));
-    }
-    let base = Coulomb::from_validated(mu, e[3], e[4], e[5], stick);
     if !viscous && mu2 == mu && rest_off {
         return Ok(FrictionLaw::Coulomb(base));
     }
@@ -416,6 +413,25 @@ fn build(
             .with_damping(damping)
             .with_steady_transport(transport),
     ))
+}
+
+/// The law of valid entries with `PROPS(7) = 4`: the plain law with the constant stick
+/// stiffness k_s = `PROPS(5)`, refused with anisotropy or any of `PROPS(8..20)`. Only
+/// [`law_from_entries`] (the checked path) builds it, [`build`] declines it: so the fast readers
+/// of the other stick modes do not pay for it (docs/performance.md's counts).
+#[cold]
+#[inline(never)]
+fn constant_stick_law(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> Result<FrictionLaw, NoLaw> {
+    let mu = e[1];
+    // k_s = PROPS(5) (a fast plan may have admitted it as γ_crit, which may be 0).
+    let base = Coulomb::from_validated(mu, e[3], 0.0, e[5], StickMode::Elastic)
+        .with_stick_stiffness(e[4])
+        .map_err(|_| NoLaw::OutOfClass(5))?;
+    let rest_off = e[7..].iter().fold(0, |bits, v| bits | v.to_bits()) << 1 == 0;
+    if COULOMB.resolved(e, 3) != mu || !rest_off {
+        return Err(NoLaw::Refused(Refusal::StickStiffnessPlainOnly));
+    }
+    Ok(FrictionLaw::Coulomb(base))
 }
 
 props_builder! {
