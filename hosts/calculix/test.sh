@@ -94,6 +94,9 @@ for dir in x xy x_f2f xy_f2f; do
   totals "$du/block_${dir}_user.dat" >"$du/totals"
   cmp_totals "$ds/totals" "$du/totals"
   report "$cmp_status" "deck 1 ($dir drag): reaction totals stock vs USER equal in $cmp_what"
+  mkdir -p "$work/charts"
+  "$here/chart.sh" "$ds/totals" "$du/totals" 0.05 "$work/charts/calculix-deck1-$dir.svg" \
+    "Deck 1 ($dir): friction force against drag, stock and USER"
   its=$(iterations "$ds/block_${dir}_stock.sta")
   itu=$(iterations "$du/block_${dir}_user.sta")
   echo "INFO deck 1 ($dir drag): Newton iterations stock $its, USER $itu; wall time stock ${ts} s, USER ${tu} s"
@@ -185,6 +188,7 @@ for deck in block_xy_user block_xy_f2f_user; do
   report "$cmp_status" "threads: $deck with 1 and 2 threads equal in $cmp_what"
 done
 
+echo "charts (friction force against drag, deck 1): $work/charts/"
 echo "$passed passed, $failed failed (hosts/calculix/test.sh, $(($(date +%s) - t_start)) s)"
 if [ "$failed" -ne 0 ]; then
   echo "runs kept in $work/runs"
