@@ -32,6 +32,7 @@
 #define IFLP_COULOMB_OMEGA 13 /* PROPS(14): angular spinning velocity of steady-state transport */
 #define IFLP_COULOMB_AXIS 14 /* PROPS(15): spinning axis through the origin */
 #define IFLP_COULOMB_VISCOUS_REFERENCE 15 /* PROPS(16): allowable viscous slip rate */
+#define IFLP_COULOMB_STICK_STIFFNESS 4 /* PROPS(5): constant stick stiffness */
 
 /* law 2: the adhesive law */
 #define IFLP_LAW_ADHESIVE 2

@@ -25,6 +25,7 @@ echo "== instruction counts: the docs' figures (within 2 %) and the rate law's b
 scripts/count-instructions.sh --check
 echo "== binary packages (DEB, tarball): lintian, then the consumer suite on each, without cargo"
 scripts/test-packages.sh
+echo "== CalculiX host: ccx 2.20 with the library, decks against Debian's stock ccx" && hosts/calculix/test.sh
 # Optional stages, each owned by its own script: run when present.
 for stage in scripts/test-consumers.sh scripts/test-sanitizers.sh scripts/fuzz-ci.sh; do
   if [ -x "$stage" ]; then

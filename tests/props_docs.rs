@@ -97,7 +97,8 @@ fn the_table_says_what_the_schema_means() {
 }
 
 /// Law 1's table against the layout's meaning: one row per entry plus one per entry that
-/// steady transport (`PROPS(7) = 3`) redefines, each saying when it holds; the switches' codes
+/// steady transport (`PROPS(7) = 3`) or the constant stick stiffness (`PROPS(7) = 4`)
+/// redefines, each saying when it holds; the switches' codes
 /// and the rules between entries are in the "valid" column.
 #[test]
 fn the_law_1_table_says_what_the_schema_means() {
@@ -109,10 +110,12 @@ fn the_law_1_table_says_what_the_schema_means() {
             .unwrap_or_else(|| panic!("no row starting {start}"))
             .to_string()
     };
-    assert_eq!(table.lines().count(), 2 + 20 + 3);
+    assert_eq!(table.lines().count(), 2 + 20 + 3 + 1);
     assert!(row("| `PROPS(1)` |").ends_with("| exactly 1 |"));
     assert!(row("| `PROPS(6)` |").contains("| 0.005 |"));
-    assert!(row("| `PROPS(7)` |").ends_with("| 0, 1, 2 or 3 |"));
+    assert!(row("| `PROPS(7)` |").ends_with("| 0, 1, 2, 3 or 4 |"));
+    assert!(row("| `PROPS(5)` (`PROPS(7) = 4`) |").contains("| k_s |"));
+    assert!(row("| `PROPS(5)` (`PROPS(7)` ≠ 4) |").contains("| γ_crit |"));
     assert!(row("| `PROPS(14)` (`PROPS(7) = 3`) |").contains("| ω |"));
     assert!(row("| `PROPS(14)` (`PROPS(7)` ≠ 3) |").ends_with("| in [−1/2, 0] |"));
     assert!(row("| `PROPS(19)` |").contains("in [0, 1); 0 when `PROPS(17) = 0`"));

@@ -121,18 +121,21 @@ fn the_api_says_what_the_layouts_mean() {
     let rows: Vec<IflPropsEntry> = (0..ifl_props_entry_count(1))
         .map(|i| entry(1, i).unwrap())
         .collect();
-    // Every index 1..=20 once at least, in order; 14, 15, 16 twice (PROPS(7) = 3 or not).
+    // Every index 1..=20 once at least, in order; 14, 15, 16 twice (PROPS(7) = 3 or not), 5
+    // twice (PROPS(7) = 4, the constant stick stiffness, or not).
     let indices: Vec<i32> = rows.iter().map(|e| e.index).collect();
     let mut expected: Vec<i32> = (1..=20).collect();
-    expected.extend([14, 15, 16]);
+    expected.extend([5, 14, 15, 16]);
     expected.sort_unstable();
     assert_eq!(indices, expected);
     for pair in rows.windows(2).filter(|w| w[0].index == w[1].index) {
-        assert_eq!(text(pair[0].when), "PROPS(7) = 3");
-        assert_eq!(text(pair[1].when), "PROPS(7) ≠ 3");
+        let mode = if pair[0].index == 5 { 4 } else { 3 };
+        assert_eq!(text(pair[0].when), format!("PROPS(7) = {mode}"));
+        assert_eq!(text(pair[1].when), format!("PROPS(7) ≠ {mode}"));
     }
     // The slip tolerance's default 0.005 (docs/props.md, both laws), μ required.
-    assert_eq!(rows[5].default_value, 0.005);
+    let tolerance = rows.iter().find(|e| e.index == 6).unwrap();
+    assert_eq!(tolerance.default_value, 0.005);
     assert_eq!(rows[1].required, 1);
     assert_eq!(rows[2].required, 0);
 }

@@ -46,6 +46,9 @@ pub enum CriticalSlip {
     Absolute(f64),
     /// A fraction of the characteristic contact length (`CHRLNGTH`) given with each increment.
     Tolerance(f64),
+    /// No γ_crit: a constant stick stiffness k_s (stress/length) instead, elastic stick only
+    /// (`PROPS(7) = 4`): τ = τ̄ + k_s·Δγ while |τ| ≤ τ_crit (CalculiX's stick slope λ).
+    Stiffness(f64),
 }
 
 /// The validated parameters of the Coulomb law. Construct with [`Coulomb::new`] and the
@@ -389,6 +392,14 @@ impl Coulomb {
         }
     }
 
+    /// Elastic stick with a constant stick stiffness k_s > 0 (stress/length) in place of
+    /// γ_crit: τ = τ̄ + k_s·Δγ in stick (CalculiX's `*FRICTION` stick slope λ).
+    pub fn with_stick_stiffness(mut self, stiffness: f64) -> Result<Self, LawError> {
+        self.critical_slip = CriticalSlip::Stiffness(positive("stick stiffness k_s", stiffness)?);
+        self.stick = StickMode::Elastic;
+        Ok(self)
+    }
+
     /// Limits the critical stress: τ_crit = min(μp, τ_max), τ_max > 0.
     pub fn with_shear_limit(mut self, tau_max: f64) -> Result<Self, LawError> {
         self.tau_max = positive("shear limit τ_max", tau_max)?;
@@ -461,7 +472,7 @@ impl Coulomb {
             None => Err(bad_characteristic_length(
                 characteristic_length,
                 match self.critical_slip {
-                    CriticalSlip::Absolute(_) => 0.0,
+                    CriticalSlip::Absolute(_) | CriticalSlip::Stiffness(_) => 0.0,
                     CriticalSlip::Tolerance(t) => t,
                 },
             )),
@@ -469,11 +480,13 @@ impl Coulomb {
     }
 
     /// γ_crit, or `None` when it is a tolerance and the characteristic length is not finite
-    /// and positive.
+    /// and positive, or when a constant stick stiffness stands instead (elastic stick only,
+    /// which does not ask: [`Self::constant_stick`]).
     #[inline(always)]
     fn critical_slip_if_defined(&self, characteristic_length: f64) -> Option<f64> {
         match self.critical_slip {
             CriticalSlip::Absolute(g) => Some(g),
+            CriticalSlip::Stiffness(_) => None,
             CriticalSlip::Tolerance(t) => {
                 if characteristic_length > 0.0 && characteristic_length < f64::INFINITY {
                     Some(t * characteristic_length)
@@ -499,7 +512,8 @@ impl Coulomb {
         }
     }
 
-    /// The increments [`Self::try_update`] leaves aside, by the careful tier of elastic stick:
+    /// The increments [`Self::try_update`] leaves aside: every one of a constant stick
+    /// stiffness ([`Self::constant_stick`]), and, by the careful tier of elastic stick,
     /// those beyond the one-pass tier's bound (magnitudes near the ends of the f64 range), a
     /// stiffness k_s = τ_crit/γ_crit below f64's normal range, where k_s·γ^pr keeps too few
     /// digits (the stick stress is then formed as τ_crit·(γ^pr/γ_crit)), and every failure,
@@ -512,7 +526,13 @@ impl Coulomb {
         inc: Increment<N>,
         state: CoulombState,
     ) -> Result<Update<N>, LawError> {
-        match self.integrate(&inc, &state, true) {
+        let answer = match self.critical_slip {
+            CriticalSlip::Stiffness(k) if self.stick == StickMode::Elastic => {
+                self.constant_stick(&inc, &state, k)
+            }
+            _ => self.integrate(&inc, &state, true),
+        };
+        match answer {
             Some(up) => Ok(up),
             None => Err(self.diagnose(inc, &state)),
         }
@@ -552,6 +572,8 @@ impl Coulomb {
         let (contact, slip, probe) = match self.stick {
             StickMode::Rough => (Contact::ExactStick, 0.0, exact_inputs()),
             StickMode::Elastic => {
+                // `None` for a constant stick stiffness: [`Self::update_rare`] answers it, so
+                // the hot path stays as it was.
                 let gamma_crit = self.critical_slip_if_defined(inc.characteristic_length)?;
                 let trial = self.elastic_trial(inc, gamma_crit, careful);
                 let (t, slip, probe) = if careful {
@@ -600,6 +622,57 @@ impl Coulomb {
         })
     }
 
+    /// Elastic stick with the constant stiffness k_s (`PROPS(7) = 4`): the trial stress
+    /// τ^tr = τ̄ + k_s·Δγ; stick while |τ^tr| ≤ τ_crit(p) (τ = τ^tr, ∂τ/∂Δγ = k_s·δ, ∂τ/∂p = 0,
+    /// SED = |τ|²/(2k_s)); otherwise slip along n = τ^tr/|τ^tr| by the return map (Eq. 5.2.3-2
+    /// with γ^pr = τ^tr/k_s): τ = τ_crit·n, Δγ_eq^sl = (|τ^tr| − τ_crit)/k_s, ∂τ/∂Δγ =
+    /// (δ − nn)·k_s·τ_crit/|τ^tr| (Eq. 5.2.3-3), ∂τ/∂p = n·∂τ_crit/∂p, SED = τ_crit²/(2k_s).
+    /// `None` when an input or a result is not finite ([`Self::diagnose`] names it).
+    #[inline(never)]
+    fn constant_stick<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        state: &CoulombState,
+        k: f64,
+    ) -> Option<Update<N>> {
+        let (tau_crit, dtau_crit_dp) = self.critical_stress_of_finite(inc.pressure);
+        let trial: [f64; N] = std::array::from_fn(|i| inc.tau[i] + k * inc.dgam[i]);
+        let length = dot(&trial, &trial).sqrt();
+        let (t, slip_eq) = if length <= tau_crit {
+            let sed = 0.5 * dot(&trial, &trial) / k;
+            (Traction::sticking(trial, diagonal(k), [0.0; N], sed), 0.0)
+        } else {
+            let n = if N == 1 {
+                [1.0f64.copysign(trial[0]); N]
+            } else {
+                divided(&trial, length)
+            };
+            let ddtddg = if N == 1 {
+                [[0.0; N]; N]
+            } else {
+                transverse_projection(&n, k * tau_crit / length)
+            };
+            let slip_eq = (length - tau_crit) / k;
+            let sed = 0.5 * tau_crit * tau_crit / k;
+            (
+                Traction::sliding(&n, tau_crit, ddtddg, dtau_crit_dp, slip_eq, sed),
+                slip_eq,
+            )
+        };
+        let probe = state.probe()
+            + input_probe(inc, StickMode::Elastic)
+            + traction_probe(&t)
+            + slip_eq * 0.0;
+        if probe != 0.0 {
+            return None;
+        }
+        Some(Update {
+            contact: Contact::Motion(t),
+            state: state.after_motion(slip_eq, slip_eq, inc.dtime),
+            outcome: Outcome::CONVERGED,
+        })
+    }
+
     /// Why [`Self::try_update`] gave `None`, tested in the order a user fixes things: a
     /// non-finite state or input, then `CHRLNGTH`, then an overflow of the results.
     #[cold]
@@ -612,7 +685,9 @@ impl Coulomb {
         if input_probe(&inc, self.stick) != 0.0 {
             return name_bad_input(inc, self.stick);
         }
-        if self.stick != StickMode::Rough {
+        if self.stick != StickMode::Rough
+            && !matches!(self.critical_slip, CriticalSlip::Stiffness(_))
+        {
             if let Err(e) = self.critical_slip_for(inc.characteristic_length) {
                 return e;
             }

@@ -76,6 +76,8 @@ impl ElasticStickKernel {
         let (absolute, tolerance) = match law.critical_slip() {
             CriticalSlip::Absolute(g) => (Some(g), 0.0),
             CriticalSlip::Tolerance(t) => (None, t),
+            // A constant stick stiffness stays on the per-point path.
+            CriticalSlip::Stiffness(_) => return None,
         };
         Some(ElasticStickKernel {
             mu: law.mu(),

@@ -32,6 +32,10 @@ const STICK: Class = Class::Choice(&[
     (1, "exact stick (`LM = 1`)"),
     (2, "rough"),
     (3, "viscous stick for steady-state transport"),
+    (
+        4,
+        "elastic stick with a constant stick stiffness k_s = `PROPS(5)`",
+    ),
 ]);
 
 /// `PROPS(8)`: the μ laws.
@@ -46,6 +50,9 @@ const MU_LAW: Class = Class::Choice(&[
 
 /// `PROPS(7) = 3`, steady-state transport.
 const VISCOUS: i32 = 3;
+
+/// `PROPS(7) = 4`, elastic stick with a constant stick stiffness (`PROPS(5)`).
+const CONSTANT_STICK: i32 = 4;
 
 /// The whole law-1 layout: the plain entries `PROPS(1..7)`, then anisotropy (`PROPS(3)`), the
 /// μ law (`PROPS(8..13)`), HHT (`PROPS(14..16)`, or steady transport's ω, axis and γ̇_crit
@@ -122,7 +129,21 @@ pub const COULOMB: Layout = Layout {
         Rule::ZeroWhen { entry: 19, on: 17, value: 0, why: "no damping" },
         Rule::ZeroWhen { entry: 20, on: 8, value: 0, why: "μ does not depend on the slip rate" },
     ],
-    variants: &[STEADY_TRANSPORT],
+    variants: &[STEADY_TRANSPORT, STICK_STIFFNESS],
+};
+
+/// Elastic stick with a constant stick stiffness (`PROPS(7) = 4`): `PROPS(5)` is k_s instead
+/// of γ_crit (CalculiX's `*FRICTION` stick slope λ, stress per length); the plain law only.
+#[rustfmt::skip]
+pub const STICK_STIFFNESS: Variant = Variant {
+    name: "constant stick stiffness",
+    on: 7,
+    value: CONSTANT_STICK,
+    entries: &[
+        Entry::new(5, "stick_stiffness", "constant stick stiffness", Class::Positive)
+            .symbol("k_s").unit("stress/length").when_absent(Described("— (required)"))
+            .note("τ = τ̄ + k_s·Δγ in stick, CalculiX's stick slope λ; the plain law: `PROPS(3)` 0 or μ, `PROPS(8..20)` 0"),
+    ],
 };
 
 /// `PROPS(14)`: HHT α.
@@ -280,7 +301,12 @@ pub(crate) fn law_from_entries(
     e: &[f64; COULOMB_EXTENDED_NPROPS],
     table: Option<&'static FrictionTable>,
 ) -> Result<FrictionLaw, PropsError> {
-    build(e, table).map_err(|no| match no {
+    let law = if e[6] == f64::from(CONSTANT_STICK) {
+        constant_stick_law(e)
+    } else {
+        build(e, table)
+    };
+    law.map_err(|no| match no {
         NoLaw::OutOfClass(index) => PropsError::out_of_class(&COULOMB, e, index),
         NoLaw::Refused(refusal) => PropsError::refused(&COULOMB, refusal),
     })
@@ -324,6 +350,8 @@ fn build(
         0.0 | 3.0 => StickMode::Elastic,
         1.0 => StickMode::Exact,
         2.0 => StickMode::Rough,
+        // PROPS(7) = 4 is built by `law_from_entries` alone (`constant_stick_law`): the fast
+        // readers decline it here and the checked path answers.
         _ => return Err(NoLaw::OutOfClass(7)),
     };
     let mu = e[1];
@@ -394,6 +422,25 @@ fn build(
     ))
 }
 
+/// The law of valid entries with `PROPS(7) = 4`: the plain law with the constant stick
+/// stiffness k_s = `PROPS(5)`, refused with anisotropy or any of `PROPS(8..20)`. Only
+/// [`law_from_entries`] (the checked path) builds it, [`build`] declines it: so the fast readers
+/// of the other stick modes do not pay for it (docs/performance.md's counts).
+#[cold]
+#[inline(never)]
+fn constant_stick_law(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> Result<FrictionLaw, NoLaw> {
+    let mu = e[1];
+    // k_s = PROPS(5) (a fast plan may have admitted it as γ_crit, which may be 0).
+    let base = Coulomb::from_validated(mu, e[3], 0.0, e[5], StickMode::Elastic)
+        .with_stick_stiffness(e[4])
+        .map_err(|_| NoLaw::OutOfClass(5))?;
+    let rest_off = e[7..].iter().fold(0, |bits, v| bits | v.to_bits()) << 1 == 0;
+    if COULOMB.resolved(e, 3) != mu || !rest_off {
+        return Err(NoLaw::Refused(Refusal::StickStiffnessPlainOnly));
+    }
+    Ok(FrictionLaw::Coulomb(base))
+}
+
 props_builder! {
     /// A law-1 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
     /// starts at its "0 / absent" value, `PROPS(1) = 1`.
@@ -403,6 +450,7 @@ props_builder! {
         mu2 => "mu2",
         tau_max => "tau_max",
         gamma_crit => "gamma_crit",
+        stick_stiffness => "stick_stiffness",
         slip_tolerance => "slip_tolerance",
         stick => "stick",
         mu_law => "mu_law",
@@ -952,11 +1000,20 @@ pub(super) mod tests {
             e.to_string().contains("must be > 0 when PROPS(8) = 1"),
             "{e}"
         );
-        let stick = CoulombBuilder::new().mu(0.3).stick(4.0).build();
+        let stick = CoulombBuilder::new().mu(0.3).stick(5.0).build();
         let e = COULOMB.check::<20>(&stick).unwrap_err();
         assert!(
             e.to_string()
-                .ends_with("must be 0 (elastic stick (penalty)), 1 (exact stick (`LM = 1`)), 2 (rough) or 3 (viscous stick for steady-state transport)"),
+                .ends_with("must be 0 (elastic stick (penalty)), 1 (exact stick (`LM = 1`)), 2 (rough), 3 (viscous stick for steady-state transport) or 4 (elastic stick with a constant stick stiffness k_s = `PROPS(5)`)"),
+            "{e}"
+        );
+        // PROPS(7) = 4 reads PROPS(5) as k_s, required.
+        let stick = CoulombBuilder::new().mu(0.3).stick(4.0).build();
+        let e = COULOMB.check::<20>(&stick).unwrap_err();
+        assert_eq!(e.index(), Some(5));
+        assert!(
+            e.to_string()
+                .contains("stick stiffness k_s = 0 must be finite and > 0"),
             "{e}"
         );
     }

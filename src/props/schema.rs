@@ -448,6 +448,9 @@ pub enum Refusal {
     /// Law 1's `PROPS(8) = 2` where no μ table is at hand: only `fric_` and `fric_coef_` look
     /// the interaction's table up.
     NoTable,
+    /// Law 1's constant stick stiffness (`PROPS(7) = 4`) with anisotropy or any of
+    /// `PROPS(8..20)`: the plain law only.
+    StickStiffnessPlainOnly,
 }
 
 impl Refusal {
@@ -457,6 +460,7 @@ impl Refusal {
         match self {
             Refusal::KineticRatioOverflows { .. } => 9,
             Refusal::NoTable => 8,
+            Refusal::StickStiffnessPlainOnly => 7,
         }
     }
 }
@@ -474,6 +478,11 @@ impl fmt::Display for Refusal {
                 f,
                 "PROPS(8) = 2 (μ table from INTERFACIAL_CONFIG) is read by fric_ and fric_coef_ \
                  only, which look the table up by interaction name"
+            ),
+            Refusal::StickStiffnessPlainOnly => write!(
+                f,
+                "PROPS(7) = 4 (constant stick stiffness) is the plain isotropic law with constant \
+                 μ: PROPS(3) must be 0 or μ and PROPS(8..20) 0"
             ),
         }
     }

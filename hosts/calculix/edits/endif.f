@@ -1,0 +1,2 @@
+!     interfacial: end of CalculiX's own friction law
+            endif

@@ -1,0 +1,8 @@
+!     interfacial: *FRICTION, USER: force and tangent from FRIC
+            if(ifl_ccx_user(elcon(0,1,imat),ncmat_)) then
+               call ifl_ccx_stiff(elcon(0,1,imat),ncmat_,xn,t,
+     &              fnl,fpu,tu,nope,springarea,
+     &              xstateini(1,1,ne0+konl(nope+1)),
+     &              xstate(1,1,ne0+konl(nope+1)),nstate_,
+     &              konl(nope+1),nmethod,iperturb)
+            else
