@@ -33,6 +33,8 @@ pub mod batch;
 pub mod forced_sliding;
 pub mod fric;
 pub mod fric_coef;
+#[cfg(feature = "calculix")]
+pub mod fricheat;
 pub mod gapcon;
 pub mod host;
 pub mod native;
@@ -45,6 +47,8 @@ pub use batch::{FricBatch, fric_batch, ifl_fric_batch};
 pub use forced_sliding::ifl_forced_sliding;
 pub use fric::fric_;
 pub use fric_coef::fric_coef_;
+#[cfg(feature = "calculix")]
+pub use fricheat::fricheat_;
 pub use gapcon::gapcon_;
 pub use native::{
     IflConductance, IflStatus, ifl_clear_error, ifl_gap_conductance, ifl_gap_conductance_n,
