@@ -365,7 +365,8 @@ pub(crate) fn friction_table_for(name: &[u8]) -> Result<&'static FrictionTable, 
 }
 
 /// The frictional heating law of `name` (a Fortran name) from the process-wide configuration,
-/// or why there is none.
+/// or why there is none (`fricheat_`, the CalculiX variant's).
+#[cfg(feature = "calculix")]
 pub(crate) fn frictional_heat_for(name: &[u8]) -> Result<&'static FrictionalHeat, LawError> {
     let cfg = global().as_ref().map_err(|m| {
         LawError::Config(format!(

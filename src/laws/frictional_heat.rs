@@ -62,7 +62,7 @@ impl FrictionalHeat {
         }
         let slave_share = match share {
             HeatShare::Given(f) => {
-                if !(nonnegative("slave_share", f)? <= 1.0) {
+                if nonnegative("slave_share", f)? > 1.0 {
                     return Err(LawError::Parameter(format!(
                         "slave_share = {f} (the slave surface's part of the heat) must be in \
                          [0, 1]"
