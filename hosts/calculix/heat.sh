@@ -15,6 +15,9 @@
 #   heat             Q = Σ (Q_top,n + Q_bottom,n)·Δt_n
 #   checks           Q = η·W within 1e-3; Q_top/Q = f within 1e-3; no heat in step 1, where
 #                    nothing slides (|τ| = 0; CalculiX's own heat there is μ·p·v).
+# Runs: f given and f from two effusivities (law 1, μ = 0.3); the decay law μ(v), whose heat
+# rate is checked against η·μ(v)·|Fz|·v as well (heat_block_decay.inp); the same with 2 threads;
+# stock CalculiX on heat_block_stock.inp; a configuration without the interaction's heat table.
 set -euo pipefail
 t_start=$(date +%s)
 here=$(cd "$(dirname "$0")" && pwd)
@@ -70,14 +73,14 @@ sums() {
     END { printf "%.9e %.9e %.9e %.9e %d\n", qp, w, q, qt, n }' "$1"
 }
 
-# check_heat TAG F_EXPECTED WHAT: the three checks on run TAG.
+# check_heat TAG DECK F_EXPECTED WHAT: the three checks on run TAG of DECK.
 check_heat() {
-  local tag=$1 f=$2 what=$3 r=$work/$1
+  local tag=$1 deck=$2 f=$3 what=$4 r=$work/$1
   if [ "$(cat "$r/status")" != 0 ]; then
     report FAIL "deck 4 ($what): the run failed with status $(cat "$r/status") (log $r/log)"
     return
   fi
-  rows "$r/heat_block.dat" >"$r/rows"
+  rows "$r/$deck.dat" >"$r/rows"
   read -r qp w q qt n < <(sums "$r/rows")
   if [ "$n" -lt 100 ]; then
     report FAIL "deck 4 ($what): $n drag increments in the .dat, expected 100 (log $r/log)"
@@ -113,10 +116,42 @@ EOF
 t0=$(date +%s.%N)
 run "$ours" heat_block share INTERFACIAL_CONFIG="$work/heat_share.toml"
 t1=$(date +%s.%N)
-check_heat share "$share" "slave_share = $share"
+check_heat share heat_block "$share" "slave_share = $share"
 run "$ours" heat_block effusivity INTERFACIAL_CONFIG="$work/heat_effusivity.toml"
-check_heat effusivity 0.4 "effusivities 2 and 3, f = 0.4"
+check_heat effusivity heat_block 0.4 "effusivities 2 and 3, f = 0.4"
+
+# --- what stock cannot do: the decay law's |τ| = μ(v)·p heats ------------------------------------
+# μ(v) = μ_k + (μ_s − μ_k)·exp(−d_c·v), μ_s = 0.5, μ_k = 0.2, d_c = 10 at v = d/T: the last
+# increment's heat rate against η·μ(v)·|Fz|·v (Fz the top's normal reaction), within 1e-3.
+run "$ours" heat_block_decay decay INTERFACIAL_CONFIG="$work/heat_share.toml"
+check_heat decay heat_block_decay "$share" "decay law"
+if [ "$(cat "$work/decay/status")" = 0 ]; then
+  fz=$(awk '/total force \(fx,fy,fz\) for set NTOP/ { getline; getline; z = $3 } END { print z }' \
+    "$work/decay/heat_block_decay.dat")
+  res=$(tail -1 "$work/decay/rows" | awk -v e="$eta" -v v="$speed" -v fz="$fz" '{
+    mu = 0.2 + 0.3 * exp(-10 * v); n = fz < 0 ? -fz : fz; want = e * mu * n * v; got = $3 + $4
+    d = (got - want) / want; if (d < 0) d = -d
+    printf "%s heat rate %.7e against eta*mu(v)*|Fz|*v = %.7e (mu(v) = %.7f, |Fz| = %.7e), relative difference %.2e",
+      (d <= 1e-3 ? "PASS" : "FAIL"), got, want, mu, n, d }')
+  report "${res%% *}" "deck 4 (decay law): the last increment's ${res#* } (limit 1e-3)"
+fi
 echo "INFO deck 4: one run $(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }') s, Newton iterations of the drag $(awk 'NR > 2 && $1 == 2 { s += $4 } END { print s + 0 }' "$work/share/heat_block.sta")"
+
+# --- threads: the same heat with 1 and 2 threads (the printed precision, as test.sh) -------------
+run "$ours" heat_block threads INTERFACIAL_CONFIG="$work/heat_share.toml" OMP_NUM_THREADS=2 \
+  CCX_NPROC_RESULTS=2 CCX_NPROC_STIFFNESS=2
+r=$work/threads
+if [ "$(cat "$r/status")" = 0 ] && grep -q 'Using up to 2 cpu(s) for the stress calculation' "$r/log"; then
+  rows "$r/heat_block.dat" >"$r/rows"
+  res=$(paste "$work/share/rows" "$r/rows" | awk '
+    function abs(x) { return x < 0 ? -x : x }
+    { n++; for (i = 2; i <= 4; i++) { m = abs($i); if (m < 1e-9) continue
+        d = abs($i - $(i + 4)) / m; if (d > worst) worst = d; if (d > 2e-6) bad++ } }
+    END { printf "%s %d increments, worst relative difference %.2e", (n > 0 && bad == 0 ? "PASS" : "FAIL"), n, worst }')
+  report "${res%% *}" "deck 4 threads: Fx and both heats with 1 and 2 threads equal in ${res#* } (limit 2e-6)"
+else
+  report FAIL "deck 4 threads: the run with 2 threads failed or did not use 2 threads (log $r/log)"
+fi
 
 # --- stock CalculiX on the same model: the same heat where it slides, heat where it does not -----
 if [ -x /usr/bin/ccx ]; then
