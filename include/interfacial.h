@@ -536,6 +536,52 @@ void fric_coef_(double *fcoef,
  */
 enum IflStatus ifl_fric_point(const struct IflFricInput *input, struct IflFricOutput *output);
 
+#if defined(INTERFACIAL_CALCULIX)
+/**
+ * CalculiX 2.20's `fricheat`: η (`ET`), the slave's share `F` and the sliding speed `VNORM` of
+ * one face-to-face contact point, from `[interactions.CINAME.heat]` of the configuration file
+ * named by `INTERFACIAL_CONFIG` (docs/config.md): `ET = fraction`, `F = slave_share` (or
+ * e_s/(e_s + e_m) from the effusivities), `VNORM = speed`, or −1 without `speed` (CalculiX then
+ * takes the relative velocity of the surfaces from the nodal velocities, which only dynamic
+ * steps have: a transient `*COUPLED TEMPERATURE-DISPLACEMENT` step, not one with `STEADY
+ * STATE`). CalculiX forms the fluxes F·ET·VNORM·UM·PRESSURE into the slave face and
+ * (1 − F)·ET·VNORM·UM·PRESSURE into the master face; with `*FRICTION, USER` the host's edit of
+ * `frictionheating.f` makes `UM·PRESSURE` the friction stress |τ| of the library's FRIC
+ * (docs/calculix.md).
+ *
+ * Reads `CINAME` (matched as for GAPCON) and, in messages only, `NOEL`; never reads `TIME`,
+ * `NELEMS`, `JFACES`, `NELEMM`, `JFACEM`, `UM`, `KSTEP`, `KINC`, `AREA`, `PRESSURE`, `COORDS`.
+ * Writes `ET`, `F` and `VNORM` only.
+ *
+ * On failure (no or bad configuration file, interaction without a `heat` table and no `"*"`
+ * entry, a NULL output, internal panic): `ET = F = VNORM = 0` (no heat at the point) and one
+ * message per distinct cause naming FRICHEAT, the interaction and the contact element (stderr
+ * or `$INTERFACIAL_LOG`; `ifl_last_error` on the calling thread).
+ *
+ * # Safety
+ * Pointers valid for CalculiX's signature: `ET`, `F`, `VNORM` writable doubles, `CINAME` of
+ * the hidden length `ciname_len`, `NOEL` an integer or NULL. The unread arguments may be
+ * anything.
+ */
+void fricheat_(double *et,
+               double *f,
+               double *vnorm,
+               const double *time,
+               const char *ciname,
+               const int *noel,
+               const int *nelems,
+               const int *jfaces,
+               const int *nelemm,
+               const int *jfacem,
+               const double *um,
+               const int *kstep,
+               const int *kinc,
+               const double *area,
+               const double *pressure,
+               const double *coords,
+               size_t ciname_len);
+#endif
+
 #if !defined(INTERFACIAL_CALCULIX)
 /**
  * Abaqus/Standard `GAPCON`: gap conductance `AK(1)` of one point, callable from Fortran as

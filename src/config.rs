@@ -29,6 +29,7 @@ use toml::Spanned;
 
 use crate::LawError;
 use crate::laws::friction_table::FrictionTable;
+use crate::laws::frictional_heat::{FrictionalHeat, HeatShare, SlidingSpeed};
 use crate::laws::gap_conductance::{Conduction, GapLaw};
 use crate::laws::gap_radiation::Radiation;
 use crate::laws::table::{Table1, TemperatureTable};
@@ -65,6 +66,15 @@ tables! {
         conductance: Option<Spanned<ConductanceSpec>>,
         radiation: Option<Spanned<RadiationSpec>>,
         friction: Option<Spanned<FrictionSpec>>,
+        heat: Option<Spanned<HeatSpec>>,
+    }
+
+    struct HeatSpec {
+        fraction: Option<Spanned<f64>>,
+        slave_share: Option<Spanned<f64>>,
+        slave_effusivity: Option<Spanned<f64>>,
+        master_effusivity: Option<Spanned<f64>>,
+        speed: Option<Spanned<f64>>,
     }
 
     struct FrictionSpec {
@@ -106,6 +116,9 @@ pub struct Config {
     /// (name as written, [`name_key`] of the name, μ table), like `gap_laws`.
     friction_tables: Vec<(String, u64, FrictionTable)>,
     friction_fallback: Option<FrictionTable>,
+    /// (name as written, [`name_key`] of the name, heating law), like `friction_tables`.
+    heat_laws: Vec<(String, u64, FrictionalHeat)>,
+    heat_fallback: Option<FrictionalHeat>,
 }
 
 /// FNV-1a hash of a name's bytes, upper-cased: equal for names that match ignoring ASCII case.
@@ -164,6 +177,8 @@ impl Config {
         let mut fallback = None;
         let mut friction_tables = Vec::new();
         let mut friction_fallback = None;
+        let mut heat_laws = Vec::new();
+        let mut heat_fallback = None;
         let mut names: Vec<&String> = Vec::new();
         for (name, entry) in &spec.interactions {
             let key = format!("interactions.{}", toml_key(name));
@@ -186,16 +201,27 @@ impl Config {
                 }
                 names.push(name);
             }
-            if entry.conductance.is_none() && entry.radiation.is_none() && entry.friction.is_none()
+            if entry.conductance.is_none()
+                && entry.radiation.is_none()
+                && entry.friction.is_none()
+                && entry.heat.is_none()
             {
                 return Err(at.error(
                     span,
                     &key,
                     &format!(
                         "neither a thermal law nor a friction table; give [{key}.conductance], \
-                         [{key}.radiation] and/or [{key}.friction]"
+                         [{key}.radiation], [{key}.friction] and/or [{key}.heat]"
                     ),
                 ));
+            }
+            if let Some(h) = &entry.heat {
+                let law = frictional_heat(&at, &format!("{key}.heat"), h)?;
+                if name == FALLBACK {
+                    heat_fallback = Some(law);
+                } else {
+                    heat_laws.push((name.clone(), name_key(name.as_bytes()), law));
+                }
             }
             if let Some(f) = &entry.friction {
                 let table =
@@ -243,6 +269,8 @@ impl Config {
             fallback,
             friction_tables,
             friction_fallback,
+            heat_laws,
+            heat_fallback,
         })
     }
 
@@ -287,6 +315,19 @@ impl Config {
     }
 }
 
+impl Config {
+    /// The frictional heating law of an interaction (`[interactions.NAME.heat]`), looked up as
+    /// [`Config::gap_law`] does, else the `"*"` entry's.
+    #[must_use]
+    pub fn frictional_heat(&self, name: &[u8]) -> Option<&FrictionalHeat> {
+        lookup(
+            self.heat_laws.iter().map(|(n, k, h)| (n.as_str(), *k, h)),
+            name,
+            self.heat_fallback.as_ref(),
+        )
+    }
+}
+
 /// The value of `name` among `entries` (name as written, its [`name_key`], value): exact name
 /// match after trimming trailing blanks, ignoring ASCII case (never by prefix; names are
 /// compared only where the keys match), else `fallback`. The one lookup rule of every table.
@@ -320,6 +361,106 @@ pub(crate) fn friction_table_for(name: &[u8]) -> Result<&'static FrictionTable, 
             cfg.path(),
             toml_key(&shown)
         ))
+    })
+}
+
+/// The frictional heating law of `name` (a Fortran name) from the process-wide configuration,
+/// or why there is none (`fricheat_`, the CalculiX variant's).
+#[cfg(feature = "calculix")]
+pub(crate) fn frictional_heat_for(name: &[u8]) -> Result<&'static FrictionalHeat, LawError> {
+    let cfg = global().as_ref().map_err(|m| {
+        LawError::Config(format!(
+            "frictional heating needs the configuration file: {m}"
+        ))
+    })?;
+    cfg.frictional_heat(name).ok_or_else(|| {
+        let shown = String::from_utf8_lossy(trim_fortran_name(name));
+        LawError::Parameter(format!(
+            "*GAP HEAT GENERATION, USER but {} has no [interactions.{}.heat] (and no \"*\" \
+             entry)",
+            cfg.path(),
+            toml_key(&shown)
+        ))
+    })
+}
+
+/// Reads and validates a `[interactions.NAME.heat]` table: `fraction` required; the share as
+/// `slave_share` or as both effusivities, not both forms; `speed` optional (absent: the host's
+/// relative velocity). Errors point at the value's line.
+fn frictional_heat(
+    at: &Locator,
+    key: &str,
+    spec: &Spanned<HeatSpec>,
+) -> Result<FrictionalHeat, String> {
+    let h = spec.get_ref();
+    let value = |v: &Option<Spanned<f64>>| v.as_ref().map(|s| (*s.get_ref(), s.span()));
+    let Some((fraction, fraction_span)) = value(&h.fraction) else {
+        return Err(at.error(
+            spec.span(),
+            &format!("{key}.fraction"),
+            "required: η, the part of the frictional work turned into heat, in (0, 1]",
+        ));
+    };
+    let share = value(&h.slave_share);
+    let es = value(&h.slave_effusivity);
+    let em = value(&h.master_effusivity);
+    let (share, share_span) = match (share, es, em.clone()) {
+        (Some((f, span)), None, None) => (HeatShare::Given(f), span),
+        (None, Some((s, span)), Some((m, _))) => (
+            HeatShare::Effusivities {
+                slave: s,
+                master: m,
+            },
+            span,
+        ),
+        (Some((_, span)), _, _) => {
+            return Err(at.error(
+                span,
+                &format!("{key}.slave_share"),
+                "give slave_share or the two effusivities, not both",
+            ));
+        }
+        (None, Some((_, span)), None) | (None, None, Some((_, span))) => {
+            return Err(at.error(
+                span,
+                key,
+                "give both slave_effusivity and master_effusivity (√(k·ρ·c) of each body)",
+            ));
+        }
+        (None, None, None) => {
+            return Err(at.error(
+                spec.span(),
+                &format!("{key}.slave_share"),
+                "required: the slave surface's part of the heat in [0, 1] (or \
+                 slave_effusivity and master_effusivity)",
+            ));
+        }
+    };
+    let speed = value(&h.speed);
+    let law = FrictionalHeat::new(
+        fraction,
+        share,
+        speed
+            .as_ref()
+            .map_or(SlidingSpeed::FromHost, |(v, _)| SlidingSpeed::Given(*v)),
+    );
+    law.map_err(|e| {
+        let m = strip_kind(&e);
+        let (span, name) = if m.starts_with("fraction") {
+            (fraction_span, "fraction")
+        } else if m.starts_with("speed") {
+            (speed.map_or_else(|| spec.span(), |(_, s)| s), "speed")
+        } else if m.starts_with("master_effusivity") {
+            (
+                em.map_or_else(|| spec.span(), |(_, s)| s),
+                "master_effusivity",
+            )
+        } else if m.starts_with("slave_effusivity") {
+            (share_span, "slave_effusivity")
+        } else {
+            (share_span, "slave_share")
+        };
+        at.error(span, &format!("{key}.{name}"), &m)
     })
 }
 

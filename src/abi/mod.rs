@@ -35,6 +35,8 @@ pub mod forced_sliding;
 pub mod fric;
 pub mod fric_coef;
 pub mod fric_point;
+#[cfg(feature = "calculix")]
+pub mod fricheat;
 pub mod gapcon;
 #[cfg(any(test, feature = "test-hosts"))]
 pub mod host;
@@ -52,6 +54,8 @@ pub use forced_sliding::ifl_forced_sliding;
 pub use fric::fric_;
 pub use fric_coef::fric_coef_;
 pub use fric_point::{IflFricInput, IflFricOutput, ifl_fric_point};
+#[cfg(feature = "calculix")]
+pub use fricheat::fricheat_;
 pub use gapcon::gapcon_;
 pub use message_hook::{IflMessageHandler, ifl_set_message_handler};
 pub use native::{

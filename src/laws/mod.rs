@@ -32,6 +32,7 @@ pub mod coulomb_extended;
 pub mod coulomb_kinematic;
 pub mod friction_coefficient;
 pub mod friction_table;
+pub mod frictional_heat;
 pub mod gap_conductance;
 pub mod gap_radiation;
 pub mod interface_heat;

@@ -1,0 +1,204 @@
+#!/usr/bin/env bash
+# Deck 4 of the CalculiX host: frictional heat with *FRICTION, USER and *GAP HEAT GENERATION,
+# USER (the library's fricheat_). One PASS/FAIL line per check with its numbers; exit status 1
+# on any failure.
+#   hosts/calculix/heat.sh CCX_OURS WORKDIR
+# CCX_OURS is the ccx that build.sh leaves; Debian's /usr/bin/ccx (package calculix-ccx), when
+# present, runs the same model with CalculiX's own friction and heat beside it.
+#
+# The deck (decks/heat_block.inp): a block pressed on a base (step 1), then dragged d = 0.01
+# along x in 100 increments (step 2, step time 1), coupled temperature-displacement, steady
+# state, the block's top and the base's bottom held at temperature 0. Per increment n the .dat
+# gives the drag reaction Fx_n of the top and the heat leaving through the top (the slave's
+# share) and the bottom (the master's), -RFL. With the configuration's η, f and speed v = d/T:
+#   friction work    W = Σ |Fx_n|·Δd_n,  Δd_n = d·Δt_n/T  (the drag of the increment)
+#   heat             Q = Σ (Q_top,n + Q_bottom,n)·Δt_n
+#   checks           Q = η·W within 1e-3; Q_top/Q = f within 1e-3; no heat in step 1, where
+#                    nothing slides (|τ| = 0; CalculiX's own heat there is μ·p·v).
+# Runs: f given and f from two effusivities (law 1, μ = 0.3); the decay law μ(v), whose heat
+# rate is checked against η·μ(v)·|Fz|·v as well (heat_block_decay.inp); the same with 2 threads;
+# stock CalculiX on heat_block_stock.inp; a configuration without the interaction's heat table.
+set -euo pipefail
+t_start=$(date +%s)
+here=$(cd "$(dirname "$0")" && pwd)
+[ $# -eq 2 ] || { echo "usage: $0 CCX_OURS WORKDIR" >&2; exit 2; }
+ours=$(realpath "$1")
+work=$2
+mkdir -p "$work"
+work=$(cd "$work" && pwd)
+[ -x "$ours" ] || { echo "heat.sh: $ours is not an executable" >&2; exit 2; }
+
+# The deck's numbers (heat_block.inp and heat_block_stock.inp say the same).
+drag=0.01 # d, the drag of step 2
+period=1  # T, step 2's time
+eta=0.8
+share=0.25
+speed=$(awk -v d="$drag" -v t="$period" 'BEGIN { printf "%.17g", d / t }')
+
+passed=0
+failed=0
+report() { # status line
+  if [ "$1" = PASS ]; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
+  echo "$1 $2"
+}
+
+# run EXE DECK TAG [ENV...]: DECK.inp in its own directory; the log is DIR/log, the exit status
+# DIR/status.
+run() {
+  local exe=$1 deck=$2 tag=$3
+  shift 3
+  local d=$work/$tag
+  rm -rf "$d" && mkdir -p "$d"
+  cp "$here"/decks/heat_*.inp "$d/"
+  local st=0
+  (cd "$d" && env OMP_NUM_THREADS=1 CCX_NPROC_RESULTS=1 CCX_NPROC_STIFFNESS=1 "$@" \
+    "$exe" "$deck" >log 2>&1) || st=$?
+  echo "$st" >"$d/status"
+}
+
+# rows DAT: one line per increment: time Fx Q_top Q_bottom (the heat leaving, -RFL).
+rows() {
+  awk '/total force \(fx,fy,fz\) for set NTOP/ { t = $NF; getline; getline; fx = $1 }
+    /total heat generation for set NTOP/ { getline; getline; qt = -$1 }
+    /total heat generation for set NBOTTOM/ { getline; getline; print t, fx, qt, -$1 }' "$1"
+}
+
+# sums ROWS: "Q_press W Q Q_top increments" with the sums defined above (step 1: time <= 1).
+sums() {
+  awk -v d="$drag" -v T="$period" '
+    function abs(x) { return x < 0 ? -x : x }
+    { dt = $1 - prev; prev = $1
+      if ($1 <= 1 + 1e-9) { qp += ($3 + $4) * dt; next }
+      n++; w += abs($2) * d * dt / T; q += ($3 + $4) * dt; qt += $3 * dt }
+    END { printf "%.9e %.9e %.9e %.9e %d\n", qp, w, q, qt, n }' "$1"
+}
+
+# check_heat TAG DECK F_EXPECTED WHAT: the three checks on run TAG of DECK.
+check_heat() {
+  local tag=$1 deck=$2 f=$3 what=$4 r=$work/$1
+  if [ "$(cat "$r/status")" != 0 ]; then
+    report FAIL "deck 4 ($what): the run failed with status $(cat "$r/status") (log $r/log)"
+    return
+  fi
+  rows "$r/$deck.dat" >"$r/rows"
+  read -r qp w q qt n < <(sums "$r/rows")
+  if [ "$n" -lt 100 ]; then
+    report FAIL "deck 4 ($what): $n drag increments in the .dat, expected 100 (log $r/log)"
+    return
+  fi
+  local res
+  res=$(awk -v q="$q" -v w="$w" -v e="$eta" 'BEGIN { r = q / (e * w); d = r - 1; if (d < 0) d = -d
+    printf "%s Q = %.7e, eta*W = %.7e (W = %.7e), relative difference %.2e", (d <= 1e-3 ? "PASS" : "FAIL"), q, e * w, w, d }')
+  report "${res%% *}" "deck 4 ($what): heat equals eta x friction work over the drag ($n increments): ${res#* } (limit 1e-3)"
+  res=$(awk -v q="$q" -v qt="$qt" -v f="$f" 'BEGIN { s = qt / q; d = (s - f) / f; if (d < 0) d = -d
+    printf "%s Q_slave/Q = %.7f against f = %.7f, relative difference %.2e", (d <= 1e-3 ? "PASS" : "FAIL"), s, f, d }')
+  report "${res%% *}" "deck 4 ($what): slave share of the heat: ${res#* } (limit 1e-3)"
+  res=$(awk -v qp="$qp" -v q="$q" 'BEGIN { a = qp < 0 ? -qp : qp
+    printf "%s %.3e", (a <= 1e-9 * q ? "PASS" : "FAIL"), a }')
+  report "${res%% *}" "deck 4 ($what): no heat while pressed without sliding (step 1): |Q| = ${res#* } (limit 1e-9 x the drag's Q = $(awk -v q="$q" 'BEGIN { printf "%.3e", 1e-9 * q }'))"
+}
+
+# --- the library's law: a given share, then Charron's share from two effusivities ----------------
+cat >"$work/heat_share.toml" <<EOF
+[interactions.SI.heat]
+fraction = $eta
+slave_share = $share
+speed = $speed
+EOF
+# e_s = 2, e_m = 3: f = 2/(2 + 3) = 0.4
+cat >"$work/heat_effusivity.toml" <<EOF
+[interactions.SI.heat]
+fraction = $eta
+slave_effusivity = 2.0
+master_effusivity = 3.0
+speed = $speed
+EOF
+t0=$(date +%s.%N)
+run "$ours" heat_block share INTERFACIAL_CONFIG="$work/heat_share.toml"
+t1=$(date +%s.%N)
+check_heat share heat_block "$share" "slave_share = $share"
+run "$ours" heat_block effusivity INTERFACIAL_CONFIG="$work/heat_effusivity.toml"
+check_heat effusivity heat_block 0.4 "effusivities 2 and 3, f = 0.4"
+
+# --- what stock cannot do: the decay law's |τ| = μ(v)·p heats ------------------------------------
+# μ(v) = μ_k + (μ_s − μ_k)·exp(−d_c·v), μ_s = 0.5, μ_k = 0.2, d_c = 10 at v = d/T: the last
+# increment's heat rate against η·μ(v)·|Fz|·v (Fz the top's normal reaction), within 1e-3.
+run "$ours" heat_block_decay decay INTERFACIAL_CONFIG="$work/heat_share.toml"
+check_heat decay heat_block_decay "$share" "decay law"
+if [ "$(cat "$work/decay/status")" = 0 ]; then
+  fz=$(awk '/total force \(fx,fy,fz\) for set NTOP/ { getline; getline; z = $3 } END { print z }' \
+    "$work/decay/heat_block_decay.dat")
+  res=$(tail -1 "$work/decay/rows" | awk -v e="$eta" -v v="$speed" -v fz="$fz" '{
+    mu = 0.2 + 0.3 * exp(-10 * v); n = fz < 0 ? -fz : fz; want = e * mu * n * v; got = $3 + $4
+    d = (got - want) / want; if (d < 0) d = -d
+    printf "%s heat rate %.7e against eta*mu(v)*|Fz|*v = %.7e (mu(v) = %.7f, |Fz| = %.7e), relative difference %.2e",
+      (d <= 1e-3 ? "PASS" : "FAIL"), got, want, mu, n, d }')
+  report "${res%% *}" "deck 4 (decay law): the last increment's ${res#* } (limit 1e-3)"
+fi
+echo "INFO deck 4: one run $(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }') s, Newton iterations of the drag $(awk 'NR > 2 && $1 == 2 { s += $4 } END { print s + 0 }' "$work/share/heat_block.sta")"
+
+# --- threads: the same heat with 1 and 2 threads (the printed precision, as test.sh) -------------
+run "$ours" heat_block threads INTERFACIAL_CONFIG="$work/heat_share.toml" OMP_NUM_THREADS=2 \
+  CCX_NPROC_RESULTS=2 CCX_NPROC_STIFFNESS=2
+r=$work/threads
+if [ "$(cat "$r/status")" = 0 ] && grep -q 'Using up to 2 cpu(s) for the stress calculation' "$r/log"; then
+  rows "$r/heat_block.dat" >"$r/rows"
+  res=$(paste "$work/share/rows" "$r/rows" | awk '
+    function abs(x) { return x < 0 ? -x : x }
+    { n++; for (i = 2; i <= 4; i++) { m = abs($i); if (m < 1e-9) continue
+        d = abs($i - $(i + 4)) / m; if (d > worst) worst = d; if (d > 2e-6) bad++ } }
+    END { printf "%s %d increments, worst relative difference %.2e", (n > 0 && bad == 0 ? "PASS" : "FAIL"), n, worst }')
+  report "${res%% *}" "deck 4 threads: Fx and both heats with 1 and 2 threads equal in ${res#* } (limit 2e-6)"
+else
+  report FAIL "deck 4 threads: the run with 2 threads failed or did not use 2 threads (log $r/log)"
+fi
+
+# --- stock CalculiX on the same model: the same heat where it slides, heat where it does not -----
+if [ -x /usr/bin/ccx ]; then
+  run /usr/bin/ccx heat_block_stock stock
+  s=$work/stock
+  if [ "$(cat "$s/status")" != 0 ]; then
+    report FAIL "deck 4 stock: the run failed with status $(cat "$s/status") (log $s/log)"
+  else
+    rows "$s/heat_block_stock.dat" >"$s/rows"
+    # Drag increments: stock's μ·p = |τ| of law 1 when sliding; heat and force within the
+    # printed precision (7 digits: 2e-6 of the value).
+    res=$(paste "$work/share/rows" "$s/rows" | awk '
+      function abs(x) { return x < 0 ? -x : x }
+      $1 > 1 + 1e-9 { n++; off = 0
+        for (i = 2; i <= 4; i++) { m = abs($(i + 4)); if (m == 0) continue
+          d = abs($i - $(i + 4)) / m; if (d > worst) worst = d; if (d > 2e-6) off = 1 }
+        bad += off }
+      END { printf "%s %d/%d increments, worst relative difference %.2e", (n > 0 && bad == 0 ? "PASS" : "FAIL"), n - bad, n, worst }')
+    report "${res%% *}" "deck 4 against stock (drag): Fx and both heats per increment equal to stock *FRICTION/*GAP HEAT GENERATION: ${res#* } (limit 2e-6)"
+    read -r sqp sw sq sqt sn < <(sums "$s/rows")
+    echo "INFO deck 4 stock: heat in step 1 (pressed, nothing slides) $sqp from mu*p*v, the library's |tau| gives none; drag's heat $sq"
+  fi
+else
+  echo "INFO deck 4: no /usr/bin/ccx (apt-get install calculix-ccx): the stock comparison is skipped"
+fi
+
+# --- bad input: the interaction has no heat table: no heat, the cause named, the run goes on ------
+cat >"$work/heat_other.toml" <<EOF
+[interactions.OTHER.heat]
+fraction = $eta
+slave_share = $share
+EOF
+run "$ours" heat_block noheat INTERFACIAL_CONFIG="$work/heat_other.toml"
+r=$work/noheat
+want="FRICHEAT: interaction 'SI'"
+cause="has no [interactions.SI.heat]"
+if [ "$(cat "$r/status")" = 0 ] && grep -qF "$want" "$r/log" && grep -qF "$cause" "$r/log"; then
+  rows "$r/heat_block.dat" >"$r/rows"
+  read -r qp w q qt n < <(sums "$r/rows")
+  if awk -v q="$q" -v qp="$qp" 'BEGIN { exit !(q == 0 && qp == 0) }'; then
+    report PASS "bad input (no [interactions.SI.heat]): the message names FRICHEAT, SI and the cause ('$cause'), $(grep -cF "$want" "$r/log") line(s); no heat (Q = $q), the run finished"
+  else
+    report FAIL "bad input (no [interactions.SI.heat]): heat $q after the refusal, expected 0 (log $r/log)"
+  fi
+else
+  report FAIL "bad input (no [interactions.SI.heat]): status $(cat "$r/status"), message '$want ... $cause' $(grep -qF "$cause" "$r/log" && echo found || echo missing) (log $r/log)"
+fi
+
+echo "$passed passed, $failed failed (hosts/calculix/heat.sh, $(($(date +%s) - t_start)) s)"
+[ "$failed" -eq 0 ]
