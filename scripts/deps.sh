@@ -20,6 +20,8 @@ command -v pkg-config >/dev/null 2>&1 || missing+=(pkg-config)
 command -v lintian >/dev/null 2>&1 || missing+=(lintian)
 command -v dpkg-shlibdeps >/dev/null 2>&1 || missing+=(dpkg-dev)
 command -v file >/dev/null 2>&1 || missing+=(file)
+# The CalculiX host's deck 2 (hosts/calculix/cattaneo.py): python3, standard library only.
+command -v python3 >/dev/null 2>&1 || missing+=(python3)
 [ "${INTERFACIAL_MPI:-ON}" = OFF ] || { command -v mpif90 && command -v mpirun; } >/dev/null 2>&1 ||
   missing+=(openmpi-bin libopenmpi-dev)
 # The MPI harness needs MPI's Fortran module: `use mpi` must compile with mpif90.

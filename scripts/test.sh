@@ -14,8 +14,8 @@ tmp=$(mktemp -d)
 TMPDIR=$tmp cargo test --locked --workspace
 [ -z "$(ls -A "$tmp")" ] || { echo "cargo test left in TMPDIR:" "$tmp"/*; exit 1; }
 rmdir "$tmp"
-echo "== Rust tests of the CalculiX variant (gapcon_ with AREA)"
-cargo test --locked --features calculix --test gapcon_abi --test header --test last_error
+echo "== Rust tests of the CalculiX variant (gapcon_ with AREA, fricheat_)"
+cargo test --locked --features calculix --test gapcon_abi --test header --test last_error --test fricheat
 echo "== Rust tests of the single-precision Explicit build (vfric_ with REAL*4, docs/vfric.md)"
 cargo clippy --locked --all-targets --features explicit-single -- -D warnings
 cargo test --locked --features explicit-single --test vfric

@@ -154,6 +154,14 @@ for n in 10 100 1000; do
   report "$st" "decay law, $n increments per drag ($incs run): |Fx|/|Fz| = ${rest% *} against mu(v) = $mu_v (relative difference ${rest#* }, limit 1e-2); Newton iterations per increment $(awk -v a="$its" -v b="$incs" 'BEGIN { printf "%.2f", a / b }'), wall time ${t} s"
 done
 
+# --- what stock cannot do, more: anisotropy and mu(theta) (more.sh, its own lines) -----------
+more_st=0
+more_out=$("$here/more.sh" "$ours" "$stock" "$work/more") || more_st=$?
+while read -r st line; do
+  case "$st" in PASS | FAIL) report "$st" "$line" ;; INFO) echo "INFO $line" ;; esac
+done <<<"$more_out"
+[ "$more_st" -le 1 ] || report FAIL "more.sh stopped with status $more_st (runs in $work/more)"
+
 # --- bad input through the deck: a clear stop naming the cause, no crash -----------------------
 for c in "bad_too_few_props|PROPERTIES=7 but 6 values given" \
   "bad_refused_props|PROPS(2): friction coefficient" \
@@ -189,6 +197,26 @@ for deck in block_xy_user block_xy_f2f_user; do
 done
 
 echo "charts (friction force against drag, deck 1): $work/charts/"
+# --- deck 2: Cattaneo-Mindlin partial slip of a cylinder on a flat (cattaneo.sh) ---------------
+cm_st=0
+"$here/cattaneo.sh" "$ours" "$stock" "$work" >"$work/cattaneo.out" 2>&1 || cm_st=$?
+cat "$work/cattaneo.out"
+passed=$((passed + $(grep -c '^PASS' "$work/cattaneo.out" || true)))
+failed=$((failed + $(grep -c '^FAIL' "$work/cattaneo.out" || true)))
+if [ "$cm_st" -ne 0 ] && ! grep -q '^FAIL' "$work/cattaneo.out"; then
+  report FAIL "deck 2: cattaneo.sh exited with status $cm_st (output $work/cattaneo.out)"
+fi
+
+# --- deck 4: frictional heat (hosts/calculix/heat.sh prints its own PASS/FAIL lines) --------
+heat_status=0
+"$here/heat.sh" "$ours" "$work/heat" >"$work/heat.log" 2>&1 || heat_status=$?
+grep -v ' passed, .* failed (hosts/calculix/heat.sh' "$work/heat.log" || true
+passed=$((passed + $(grep -c '^PASS' "$work/heat.log" || true)))
+failed=$((failed + $(grep -c '^FAIL' "$work/heat.log" || true)))
+if [ "$heat_status" -ne 0 ] && ! grep -q '^FAIL' "$work/heat.log"; then
+  report FAIL "deck 4: heat.sh exited with status $heat_status (log $work/heat.log)"
+fi
+
 echo "$passed passed, $failed failed (hosts/calculix/test.sh, $(($(date +%s) - t_start)) s)"
 if [ "$failed" -ne 0 ]; then
   echo "runs kept in $work/runs"
