@@ -7,13 +7,15 @@
 //!
 //! Each committed fragment is then read back as a solver would read it (keyword lines, their
 //! parameters, the data lines after them; comments skipped) and checked by the library itself:
-//! the `PROPS` by the checked parser (`friction_law_checked`, the one that names the entry), the
+//! the `PROPS` by the checked parser (`friction_law_checked`, the one that names the entry) and
+//! by `ifl_props_check` (the C API a pre-processor asks), the
 //! number of data values against `PROPERTIES=`, and one call of the entry point the fragment
 //! selects, which must not be refused: FRIC and UINTER one increment with `NSTATV = DEPVAR` and
 //! the deck's interaction name (UINTER's normal stress K_n·h), FRIC_COEF one point (μ against
 //! its closed form), VFRIC one point (the force μ·F_N); GAPCON's interaction must have a law in
 //! the example configuration file.
 
+use std::ffi::{CStr, CString, c_char, c_int};
 use std::path::Path;
 
 #[path = "common/fric_coef.rs"]
@@ -22,8 +24,8 @@ mod fric_coef_common;
 mod vfric_common;
 
 use interfacial::abi::host::FricCall;
-use interfacial::abi::ifl_clear_error;
 use interfacial::abi::uinter_host::UinterCall;
+use interfacial::abi::{IflStatus, ifl_clear_error, ifl_props_check};
 use interfacial::config::Config;
 use interfacial::props::schema::Layout;
 use interfacial::props::{
@@ -531,6 +533,8 @@ fn validate(routine: Routine, text: &str, config: &Config) -> Result<(), String>
                 ));
             }
             let law = friction_law_checked(&props).map_err(|e| e.to_string())?;
+            // The same PROPS as a pre-processor asks about them, through the C API.
+            tool_check(&props, &name)?;
             match routine {
                 Routine::Fric => {
                     let depvar = friction.count("DEPVAR")?;
@@ -696,6 +700,33 @@ fn uinter_increment(name: &str, props: &[f64], depvar: usize) -> Result<(), Stri
     Ok(())
 }
 
+/// `ifl_props_check` (docs/c-api.md) on `props` for the interaction `name`: what a
+/// pre-processor asks before a run; `Err` with the library's message when it would refuse them.
+fn tool_check(props: &[f64], name: &str) -> Result<(), String> {
+    let name = CString::new(name.trim_end()).map_err(|e| e.to_string())?;
+    let mut message = [0 as c_char; 512];
+    let mut len = 0usize;
+    // SAFETY: `props` holds `props.len()` doubles, `name` is NUL-terminated, `message` has the
+    // capacity given and `len` is writable.
+    let status = unsafe {
+        ifl_props_check(
+            props.as_ptr(),
+            c_int::try_from(props.len()).map_err(|e| e.to_string())?,
+            name.as_ptr(),
+            message.as_mut_ptr(),
+            message.len(),
+            &mut len,
+        )
+    };
+    if status == IflStatus::Ok {
+        Ok(())
+    } else {
+        // SAFETY: the library NUL-terminates the message within the capacity.
+        let text = unsafe { CStr::from_ptr(message.as_ptr()) };
+        Err(format!("ifl_props_check: {}", text.to_string_lossy()))
+    }
+}
+
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
@@ -775,6 +806,10 @@ fn every_fragment_is_accepted_by_the_library() {
 /// an interaction without a law is refused, each with the library's reason.
 #[test]
 fn a_bad_fragment_is_refused() {
+    // The C API's check refuses what the checked parser refuses, naming the entry.
+    let refused = tool_check(&[1.0, -0.3], "BAD_MU").unwrap_err();
+    assert!(refused.contains("PROPS(2)"), "{refused}");
+    assert_eq!(tool_check(&[1.0, 0.3], "GOOD_MU"), Ok(()));
     let config = example_config();
     let all = decks();
     let by_file = |f: &str| all.iter().find(|d| d.file == f).expect("a fragment");
