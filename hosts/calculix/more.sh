@@ -28,12 +28,17 @@ report() { # status line
   echo "$1 $2"
 }
 
-# run EXE DECK TAG: runs DECK.inp in $work/runs/TAG (a fresh copy of the decks); the log is
-# TAG/log, the exit status TAG/status.
+# run EXE DECK TAG [f2f]: runs DECK.inp in $work/runs/TAG (a fresh copy of the decks); the log
+# is TAG/log, the exit status TAG/status. With f2f the deck's node-to-face contact pair is made
+# face-to-face (TYPE=SURFACE TO SURFACE) in the copy.
 run() {
-  local exe=$1 deck=$2 d=$work/runs/$3 st=0
+  local exe=$1 deck=$2 d=$work/runs/$3 kind=${4:-n2f} st=0
   rm -rf "$d" && mkdir -p "$d"
   cp "$here"/decks/*.inp "$d/"
+  if [ "$kind" = f2f ]; then
+    sed -i 's/TYPE=NODE TO SURFACE/TYPE=SURFACE TO SURFACE/' "$d/$deck.inp"
+    grep -q 'TYPE=SURFACE TO SURFACE' "$d/$deck.inp" || { echo 99 >"$d/status"; return; }
+  fi
   (cd "$d" && env OMP_NUM_THREADS=1 CCX_NPROC_RESULTS=1 CCX_NPROC_STIFFNESS=1 \
     "$exe" "$deck" >log 2>&1) || st=$?
   echo "$st" >"$d/status"
@@ -49,15 +54,14 @@ totals() { awk '/total force \(fx,fy,fz\)/ { t = $NF; getline; getline; print t,
 # totals obey the same with N = |Fz|: along x |Fx| = mu1 N, along y |Fy| = mu2 N, along the
 # diagonal |Fx| = mu1^2 N / sqrt(mu1^2 + mu2^2) and |Fy| = mu2^2 N / sqrt(mu1^2 + mu2^2).
 # Checked at the last increment, each component within 1 % of its closed form.
-for c in "x|1|0" "y|0|1" "xy|0.7071068|0.7071068"; do
-  dir=${c%%|*}
-  rest=${c#*|}
-  dx=${rest%|*}
-  dy=${rest#*|}
-  run "$ours" "aniso_$dir" "aniso_$dir"
-  r=$work/runs/aniso_$dir
+# Both contact kinds: node-to-face as written, face-to-face (f2f) by the copy's contact pair.
+for c in "x|1|0|n2f" "y|0|1|n2f" "xy|0.7071068|0.7071068|n2f" \
+  "x|1|0|f2f" "y|0|1|f2f" "xy|0.7071068|0.7071068|f2f"; do
+  IFS='|' read -r dir dx dy kind <<<"$c"
+  run "$ours" "aniso_$dir" "aniso_${dir}_$kind" "$kind"
+  r=$work/runs/aniso_${dir}_$kind
   if [ "$(cat "$r/status")" != 0 ]; then
-    report FAIL "anisotropy, drag along $dir: the run failed (status $(cat "$r/status"), log $r/log)"
+    report FAIL "anisotropy ($kind), drag along $dir: the run failed (status $(cat "$r/status"), log $r/log)"
     continue
   fi
   totals "$r/aniso_$dir.dat" >"$r/totals"
@@ -75,7 +79,7 @@ for c in "x|1|0" "y|0|1" "xy|0.7071068|0.7071068"; do
       e = sqrt((gx / m1) ^ 2 + (gy / m2) ^ 2)
       printf "%s |Fx|/N = %.6f (closed form %.6f), |Fy|/N = %.6f (closed form %.6f), N = %.4f, sqrt((Fx/mu1)^2 + (Fy/mu2)^2)/N = %.6f (ellipse: 1); worst relative difference %.2e, limit 1e-2 (a zero closed form: |F|/N <= 1e-6)",
         (ok && abs(e - 1) <= 0.01 ? "PASS" : "FAIL"), gx, ex, gy, ey, n, e, (rx > ry ? rx : ry) }')
-  report "${res%% *}" "anisotropy (mu1 = 0.4, mu2 = 0.2), steady drag along $dir: ${res#* }"
+  report "${res%% *}" "anisotropy ($kind; mu1 = 0.4, mu2 = 0.2), steady drag along $dir: ${res#* }"
 done
 # Stock ccx has no anisotropic friction, and it does not refuse the deck: it ignores USER and
 # reads the first two values as its mu = 1 and stick slope 0.4 (INFO, not a check of ours).
@@ -95,10 +99,11 @@ fi
 # increment of step 2 against mu(60), that of step 3 against mu(100), and every increment of
 # step 3 against mu(theta(t)) (the coefficient follows the temperature as it changes), each
 # |Fx|/|Fz| within 1 %.
-run "$ours" thermal_user thermal_user
-r=$work/runs/thermal_user
+for kind in n2f f2f; do
+run "$ours" thermal_user "thermal_user_$kind" "$kind"
+r=$work/runs/thermal_user_$kind
 if [ "$(cat "$r/status")" != 0 ]; then
-  report FAIL "temperature-dependent mu: the run failed (status $(cat "$r/status"), log $r/log)"
+  report FAIL "temperature-dependent mu ($kind): the run failed (status $(cat "$r/status"), log $r/log)"
 else
   totals "$r/thermal_user.dat" >"$r/totals"
   for c in "60|2" "100|3"; do
@@ -111,7 +116,7 @@ else
         m = 0.3 * exp(-5e-3 * (th - 20)); e = abs(r - m) / m
         printf "%s |Fx|/|Fz| = %.7f against mu(%s) = %.7f (relative difference %.2e, limit 1e-2; N = %.4f)",
           (e <= 0.01 ? "PASS" : "FAIL"), r, th, m, e, n }' "$r/totals")
-    report "${res%% *}" "temperature-dependent mu, steady drag at theta = $theta: ${res#* }"
+    report "${res%% *}" "temperature-dependent mu ($kind), steady drag at theta = $theta: ${res#* }"
   done
   res=$(awk '
     function abs(x) { return x < 0 ? -x : x }
@@ -119,8 +124,9 @@ else
       e = abs(abs($2) / abs($4) - m) / m; if (e > worst) { worst = e; at = th } }
     END { printf "%s %d increments, worst relative difference %.2e at theta = %.1f, limit 1e-2",
       (n >= 10 && worst <= 0.01 ? "PASS" : "FAIL"), n, worst, at }' "$r/totals")
-  report "${res%% *}" "temperature-dependent mu along the ramp 60 -> 100 (step 3): |Fx|/|Fz| against mu(theta(t)) at ${res#* }"
+  report "${res%% *}" "temperature-dependent mu ($kind) along the ramp 60 -> 100 (step 3): |Fx|/|Fz| against mu(theta(t)) at ${res#* }"
 fi
+done
 
 echo "$passed passed, $failed failed (hosts/calculix/more.sh, $(($(date +%s) - t_start)) s)"
 if [ "$failed" -ne 0 ]; then

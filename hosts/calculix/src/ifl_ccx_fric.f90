@@ -483,16 +483,29 @@ end subroutine ifl_ccx_stiff
 
 !> interpolateinface (face-to-face contact, when CalculiX regenerates its integration points):
 !> CalculiX interpolates its own 9 friction entries of xstate over a triangle of old points;
-!> this does the same, by CalculiX's plane_eq, for the entries after them (10 .. nstate_:
-!> the friction stress, the pressure and the law's STATEV), so they survive the regeneration.
+!> this does the same, by CalculiX's plane_eq, for the friction stress and the pressure (10 ..
+!> 13: fields, linear over the triangle). The law's STATEV (14 .. nstate_) is a state, not a
+!> field (a status code, a slip rate that must stay >= 0, a state variable of its own law): a
+!> plane through three states can be none of them (a status of 0.4, a negative rate), so the
+!> new point takes the STATEV of the nearest old point of the three.
 subroutine ifl_ccx_interpolate(c1, c2, c3, n1, n2, n3, p, xstateini, xstate, nstate_, mi, iout)
   implicit none
   integer, intent(in) :: n1, n2, n3, nstate_, mi(*), iout
   real(8), intent(in) :: c1(2), c2(2), c3(2), p(3), xstateini(nstate_, mi(1), *)
   real(8), intent(inout) :: xstate(nstate_, mi(1), *)
-  integer :: i
-  do i = 10, nstate_
+  integer :: i, nearest
+  real(8) :: d1, d2, d3
+  do i = 10, min(13, nstate_)
     call plane_eq(c1(1), c1(2), xstateini(i, 1, n1), c2(1), c2(2), xstateini(i, 1, n2), &
                   c3(1), c3(2), xstateini(i, 1, n3), p(1), p(2), xstate(i, 1, iout))
+  end do
+  d1 = (p(1) - c1(1))**2 + (p(2) - c1(2))**2
+  d2 = (p(1) - c2(1))**2 + (p(2) - c2(2))**2
+  d3 = (p(1) - c3(1))**2 + (p(2) - c3(2))**2
+  nearest = n1
+  if (d2 < d1 .and. d2 <= d3) nearest = n2
+  if (d3 < d1 .and. d3 < d2) nearest = n3
+  do i = 14, nstate_
+    xstate(i, 1, iout) = xstateini(i, 1, nearest)
   end do
 end subroutine ifl_ccx_interpolate
