@@ -128,6 +128,26 @@ else
 fi
 done
 
+# --- rate-and-state friction (law 3): steady sliding at mu_ss(v) -------------------------------
+# rate_state_user.inp: deck 1's mesh pressed lightly (the decay deck's steps), dragged 0.1 at
+# v = 0.1 (100 L of slip); law 3 with mu0 = 0.6, a = 0.015, b = 0.01, V0 = 0.01, L = 1e-3, aging
+# law, regularised form. Steady state: mu_ss = mu0 + (a - b) ln(v/V0); the last increment's
+# |Fx|/|Fz| within 1 %, both contact kinds.
+for kind in n2f f2f; do
+  run "$ours" rate_state_user "rate_state_$kind" "$kind"
+  r=$work/runs/rate_state_$kind
+  if [ "$(cat "$r/status")" != 0 ]; then
+    report FAIL "rate-and-state ($kind): the run failed (status $(cat "$r/status"), log $r/log)"
+    continue
+  fi
+  res=$(totals "$r/rate_state_user.dat" | tail -1 | awk '
+    function abs(x) { return x < 0 ? -x : x }
+    { r = abs($2) / abs($4); m = 0.6 + (0.015 - 0.01) * log(0.1 / 0.01); e = abs(r - m) / m
+      printf "%s |Fx|/|Fz| = %.7f against mu_ss(v) = %.7f (relative difference %.2e, limit 1e-2)",
+        (e <= 0.01 ? "PASS" : "FAIL"), r, m, e }')
+  report "${res%% *}" "rate-and-state law 3 ($kind), steady drag at v = 0.1: ${res#* }"
+done
+
 echo "$passed passed, $failed failed (hosts/calculix/more.sh, $(($(date +%s) - t_start)) s)"
 if [ "$failed" -ne 0 ]; then
   echo "runs kept in $work/runs"
