@@ -507,6 +507,13 @@ pub(super) mod tests {
     /// look up (never passed here); and the decay law's ratio μ_k/μ_s must be finite (both
     /// entries valid, their ratio overflowing).
     fn refused_beyond_the_layout(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> Option<Refusal> {
+        // The constant stick stiffness (PROPS(7) = 4) is the plain law only: μ₂ absent (0) or
+        // μ, and PROPS(8..20) all ±0; decided before the μ law's own refusals.
+        if e[6] == 4.0 {
+            let isotropic = e[2] == 0.0 || e[2] == e[1];
+            let rest_off = e[7..].iter().all(|v| *v == 0.0);
+            return (!isotropic || !rest_off).then_some(Refusal::StickStiffnessPlainOnly);
+        }
         match e[7] {
             2.0 => Some(Refusal::NoTable),
             1.0 if !(e[8] / e[1]).is_finite() => Some(Refusal::KineticRatioOverflows {
