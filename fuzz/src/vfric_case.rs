@@ -107,7 +107,7 @@ enum Expect {
 
 /// The plain law-1 `PROPS` VFRIC accepts (docs/vfric.md, "Parameters", and docs/props.md),
 /// written from the documentation: `PROPS(1) = 1`; μ, τ_max, γ_crit, tolerance each finite and
-/// ≥ 0; `PROPS(3)` 0 or μ; `PROPS(7)` 0, 1 or 2; `PROPS(8..)` absent or 0.
+/// ≥ 0; `PROPS(3)` 0 or μ; `PROPS(7)` 0, 1, 2, or 4 with `PROPS(5)` > 0; `PROPS(8..)` absent or 0.
 pub fn plain_law(props: &[f64]) -> bool {
     let get = |i: usize| props.get(i - 1).copied().unwrap_or(0.0);
     let range = |v: f64| v.is_finite() && v >= 0.0;
@@ -115,7 +115,13 @@ pub fn plain_law(props: &[f64]) -> bool {
         && get(1) == 1.0
         && [get(2), get(4), get(5), get(6)].into_iter().all(range)
         && (get(3) == 0.0 || get(3) == get(2))
-        && matches!(get(7), 0.0 | 1.0 | 2.0)
+        // The stick modes VFRIC takes (it ignores the stick): 0, 1, 2, and 4 (the constant stick
+        // stiffness, which needs its k_s = PROPS(5) > 0).
+        && match get(7) {
+            0.0 | 1.0 | 2.0 => true,
+            4.0 => get(5) > 0.0,
+            _ => false,
+        }
         && props.iter().skip(7).all(|v| *v == 0.0)
 }
 
