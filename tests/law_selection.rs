@@ -269,6 +269,22 @@ prop_compose! {
     }
 }
 
+/// `fric_` (NFDIR 1 and 2) and, for the law it serves, `ifl_fric_batch` take `props`: no
+/// message, PNEWDT not lowered.
+fn fric_and_batch_take(props: &[f64]) -> Result<(), TestCaseError> {
+    for nfdir in [1, 2] {
+        let (c, m) = fric(props, nfdir, 0.01);
+        prop_assert_eq!(m, "", "fric_ NFDIR {} refused {:?}", nfdir, props);
+        prop_assert!(c.pnewdt >= 1.0);
+        if takes_batch(props) {
+            let (_, pn, st) = batch(props, nfdir as usize, 0.01);
+            prop_assert_eq!(st, IflStatus::Ok, "ifl_fric_batch refused {:?}", props);
+            prop_assert!(pn >= 1.0);
+        }
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 400, failure_persistence: None, ..ProptestConfig::default() })]
 
@@ -276,16 +292,7 @@ proptest! {
     #[test]
     fn accepted_adhesive_props_are_refused_by_no_entry_point(props in adhesive_props()) {
         prop_assume!(friction_law_checked(&props).is_ok());
-        for nfdir in [1, 2] {
-            let (c, m) = fric(&props, nfdir, 0.01);
-            prop_assert_eq!(m, "", "fric_ NFDIR {} refused {:?}", nfdir, props);
-            prop_assert!(c.pnewdt >= 1.0);
-            if takes_batch(&props) {
-                let (_, pn, st) = batch(&props, nfdir as usize, 0.01);
-                prop_assert_eq!(st, IflStatus::Ok, "ifl_fric_batch refused {:?}", props);
-                prop_assert!(pn >= 1.0);
-            }
-        }
+        fric_and_batch_take(&props)?;
         if props.len() >= 10 {
             let (c, m) = uinter(&props, 0.01);
             prop_assert_eq!(m, "", "uinter_ refused {:?}", props);
@@ -297,16 +304,7 @@ proptest! {
     #[test]
     fn accepted_coulomb_props_are_refused_by_no_entry_point(props in coulomb_props()) {
         prop_assume!(friction_law_checked(&props).is_ok());
-        for nfdir in [1, 2] {
-            let (c, m) = fric(&props, nfdir, 0.01);
-            prop_assert_eq!(m, "", "fric_ NFDIR {} refused {:?}", nfdir, props);
-            prop_assert!(c.pnewdt >= 1.0);
-            if takes_batch(&props) {
-                let (_, pn, st) = batch(&props, nfdir as usize, 0.01);
-                prop_assert_eq!(st, IflStatus::Ok, "ifl_fric_batch refused {:?}", props);
-                prop_assert!(pn >= 1.0);
-            }
-        }
+        fric_and_batch_take(&props)?;
         let (mu, m) = fric_coef(&props);
         prop_assert_eq!(m, "", "fric_coef_ refused {:?}", props);
         prop_assert!(mu.is_finite() && mu >= 0.0);
