@@ -9,7 +9,8 @@
 //! [`laws`]; the entry points live in `abi`, the only module allowed to use `unsafe`.
 //!
 //! ```
-//! use interfacial::laws::coulomb::{Coulomb, CoulombState, Increment, Contact};
+//! use interfacial::laws::contact::{Increment, Contact};
+//! use interfacial::laws::coulomb::{Coulomb, CoulombState};
 //!
 //! // μ = 0.3, allowable elastic slip γ_crit = 1e-3 (elastic stick, Abaqus's default).
 //! let law = Coulomb::new(0.3)?.with_critical_slip_absolute(1e-3)?;

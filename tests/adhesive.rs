@@ -12,7 +12,8 @@
 use interfacial::abi::host::FricCall;
 use interfacial::abi::uinter_host::UinterCall;
 use interfacial::laws::adhesive::{Adhesive, AdhesiveParameters, SlideBranch};
-use interfacial::laws::coulomb::{Contact, Coulomb, CoulombState, Increment};
+use interfacial::laws::contact::{Contact, Increment};
+use interfacial::laws::coulomb::{Coulomb, CoulombState};
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use proptest::prelude::*;
 

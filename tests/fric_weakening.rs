@@ -9,7 +9,8 @@
 
 use interfacial::abi::host::FricCall;
 use interfacial::abi::uinter_host::UinterCall;
-use interfacial::laws::coulomb::{Coulomb, Increment};
+use interfacial::laws::contact::Increment;
+use interfacial::laws::coulomb::Coulomb;
 use interfacial::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
 use interfacial::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
@@ -486,7 +487,7 @@ fn the_earlier_formulation_cycles_on_the_issue_case() {
             ..Increment::default()
         };
         let up = law.update(&inc, &Conditions::default(), &state).unwrap();
-        let interfacial::laws::coulomb::Contact::Motion(t) = up.contact else {
+        let interfacial::laws::contact::Contact::Motion(t) = up.contact else {
             panic!("no exact stick here")
         };
         tau = t.tau[0];
@@ -830,7 +831,7 @@ fn the_earlier_formulation_takes_the_smallest_root_under_a_cap() {
         let up = law
             .update(&inc, &Conditions::default(), &ExtendedState::<1>::default())
             .unwrap();
-        let interfacial::laws::coulomb::Contact::Motion(t) = up.contact else {
+        let interfacial::laws::contact::Contact::Motion(t) = up.contact else {
             panic!("no exact stick here")
         };
         t.tau[0]

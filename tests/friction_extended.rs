@@ -16,7 +16,8 @@ use laws::{every_mu_law, set_entry};
 use loading::Loading;
 
 use interfacial::abi::host::FricCall;
-use interfacial::laws::coulomb::{Contact, Coulomb, EntryFlag, Increment};
+use interfacial::laws::contact::{Contact, EntryFlag, Increment};
+use interfacial::laws::coulomb::Coulomb;
 use interfacial::laws::coulomb_extended::{
     Conditions, Damping, ExtendedCoulomb, ExtendedState, Hht, MAX_LOCAL_ITERATIONS,
 };
@@ -371,7 +372,7 @@ fn check_tangents(s: Sample) -> Result<(), TestCaseError> {
     Ok(())
 }
 
-fn traction<const N: usize>(c: Contact<N>) -> interfacial::laws::coulomb::Traction<N> {
+fn traction<const N: usize>(c: Contact<N>) -> interfacial::laws::contact::Traction<N> {
     match c {
         Contact::Motion(t) => t,
         Contact::ExactStick => panic!("expected LM = 0"),

@@ -20,7 +20,8 @@
 use std::ffi::c_int;
 
 use super::{Fault, IflStatus, bad_lm, boundary, count, cut_back, null_pointer};
-use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment};
+use crate::laws::contact::{Contact, EntryFlag, Increment};
+use crate::laws::coulomb::{Coulomb, CoulombState};
 use crate::laws::coulomb_batch::{ChunkInput, ElasticStickKernel};
 use crate::props::{FrictionLaw, friction_law};
 use crate::report::{Site, report};

@@ -12,7 +12,8 @@ use super::{
 use crate::LawError;
 use crate::config::friction_table_for;
 use crate::laws::adhesive::Adhesive;
-use crate::laws::coulomb::{Contact, Coulomb, CoulombState, EntryFlag, Increment, StickMode};
+use crate::laws::contact::{Contact, EntryFlag, Increment};
+use crate::laws::coulomb::{Coulomb, CoulombState, StickMode};
 use crate::laws::coulomb_extended::{
     Conditions, ExtendedCoulomb, ExtendedState, mean_surface_temperature,
 };

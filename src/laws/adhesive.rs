@@ -29,9 +29,9 @@
 //! With S_a = k_μ = v_½ = 0 and μ_s = μ_d the law is plain Coulomb; [`Adhesive::coulomb_special_case`]
 //! returns that law so the entry points run the Coulomb code itself (same results, same cost).
 
+use super::contact::{Increment, Traction};
 use super::coulomb::{
-    Coulomb, CoulombState, CriticalSlip, FrictionStatus, Increment, StickMode, Traction, Update,
-    name_bad_input,
+    Coulomb, CoulombState, CriticalSlip, FrictionStatus, StickMode, Update, name_bad_input,
 };
 use super::friction_coefficient::{RateFormulation, STICK_TEST_ROUNDING};
 use super::parameter_range::nonnegative;
@@ -652,7 +652,7 @@ impl Adhesive {
         check_finite(&s.traction)?;
         let slip = norm(&s.traction.dslip);
         Ok(Update {
-            contact: super::coulomb::Contact::Motion(s.traction),
+            contact: super::contact::Contact::Motion(s.traction),
             state: CoulombState {
                 // Saturates at f64::MAX rather than storing ∞ (fuzz target `uinter`).
                 accumulated_slip: (state.accumulated_slip + slip).min(f64::MAX),

@@ -22,7 +22,7 @@
 //! State (`STATEV(1..3)`): accumulated slip, slip rate, and the status below.
 
 use super::adhesive::{Adhesive, SlideBranch};
-use super::coulomb::{PointState, StatusCode, Traction};
+use super::contact::{PointState, StatusCode, Traction};
 use super::friction_coefficient::RateFormulation;
 use super::interface_heat::MechanicalAnswer;
 use super::parameter_range::positive;
@@ -48,12 +48,25 @@ pub enum InterfaceStatus {
 /// interface's statuses.
 pub type InterfaceState = PointState<InterfaceStatus>;
 
-// A code other than 1, 3 or 4 reads as stick (0).
-status_codes!(
-    InterfaceStatus,
-    "the adhesive interface",
-    1.0 => Slip, 3.0 => Bonded, 4.0 => Open
-);
+impl StatusCode for InterfaceStatus {
+    const LAW: &'static str = "the adhesive interface";
+
+    /// A code other than 1, 3 or 4 reads as stick (0).
+    #[inline(always)]
+    fn from_code(code: f64) -> Self {
+        match code {
+            1.0 => InterfaceStatus::Slip,
+            3.0 => InterfaceStatus::Bonded,
+            4.0 => InterfaceStatus::Open,
+            _ => InterfaceStatus::Stick,
+        }
+    }
+
+    #[inline(always)]
+    fn code(self) -> f64 {
+        f64::from(self as i32)
+    }
+}
 
 /// One increment of an interface point with N tangential directions (NDIR = N + 1).
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -12,6 +12,9 @@
 //! increment. Tangents are derivatives of the end-of-increment stress with the start of the
 //! increment held fixed.
 
+use super::contact::{
+    Contact, EntryFlag, Increment, PointState, StatusCode, Traction, corrupt_statev,
+};
 use super::parameter_range::{nonnegative, positive};
 use super::small_vec::{
     add, all_finite, diagonal, divided, dot, is_positive_normal, length_beyond, norm, scale, sum,
@@ -62,53 +65,6 @@ pub struct Coulomb {
     stick: StickMode,
 }
 
-/// The stick flag the host passes in (`LM` on entry): the previous iteration's answer, or at the
-/// start of an increment the converged state.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum EntryFlag {
-    /// `LM = 0`: relative motion was allowed (slipping, or elastic stick).
-    #[default]
-    Motion,
-    /// `LM = 1`: the point was held by Lagrange multipliers; `taulm` holds their stress.
-    ExactStick,
-}
-
-/// One increment at one contact point, in the host's terms.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Increment<const N: usize> {
-    /// Frictional stress at the start of the increment (already rotated by the host).
-    pub tau: [f64; N],
-    /// Relative tangential motion increment Δγ.
-    pub dgam: [f64; N],
-    /// Lagrange-multiplier stress, read only when `entry` is [`EntryFlag::ExactStick`].
-    pub taulm: [f64; N],
-    /// Contact pressure at the end of the increment.
-    pub pressure: f64,
-    /// Pressure increment; the increment starts at `pressure − dpressure`.
-    pub dpressure: f64,
-    /// Time increment (used for the slip rate kept in the state).
-    pub dtime: f64,
-    /// Characteristic contact face length (`CHRLNGTH`), used when γ_crit is a tolerance.
-    pub characteristic_length: f64,
-    /// The host's stick flag on entry.
-    pub entry: EntryFlag,
-}
-
-impl<const N: usize> Default for Increment<N> {
-    fn default() -> Self {
-        Increment {
-            tau: [0.0; N],
-            dgam: [0.0; N],
-            taulm: [0.0; N],
-            pressure: 0.0,
-            dpressure: 0.0,
-            dtime: 1.0,
-            characteristic_length: 0.0,
-            entry: EntryFlag::Motion,
-        }
-    }
-}
-
 /// What the point did in the increment (stored as `STATEV(3)`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum FrictionStatus {
@@ -121,97 +77,26 @@ pub enum FrictionStatus {
     ExactStick = 2,
 }
 
-/// How a point's status is stored in `STATEV(3)`: [`FrictionStatus`] for the Coulomb laws,
-/// `InterfaceStatus` for the adhesive interface (which adds bonded and open).
-pub trait StatusCode: Copy {
-    /// The law, as a message about too short a `STATEV` names it.
-    const LAW: &'static str;
-    /// The status stored as `code`; an unknown code reads as stick.
-    fn from_code(code: f64) -> Self;
-    /// The code stored for the status.
-    fn code(self) -> f64;
-}
+impl StatusCode for FrictionStatus {
+    const LAW: &'static str = "the Coulomb law";
 
-status_codes!(FrictionStatus, "the Coulomb law", 1.0 => Slip, 2.0 => ExactStick);
+    #[inline(always)]
+    fn from_code(code: f64) -> Self {
+        match code {
+            1.0 => FrictionStatus::Slip,
+            2.0 => FrictionStatus::ExactStick,
+            _ => FrictionStatus::Stick,
+        }
+    }
 
-/// A point's state: three scalars, stored in `STATEV(1..3)`. No vector is kept, so the
-/// rotation `DROT` of the tangent directions needs no treatment (the host rotates `TAU`
-/// itself). The laws differ only in the statuses `S` they record.
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
-pub struct PointState<S> {
-    /// Accumulated equivalent slip Σ|Δγ^sl| (path length of inelastic slip); saturates at
-    /// f64::MAX.
-    pub accumulated_slip: f64,
-    /// Equivalent slip rate of the last increment, |Δγ^sl|/Δt (0 when Δt ≤ 0); saturates at
-    /// f64::MAX.
-    pub slip_rate: f64,
-    /// What the point did in the last increment (stick, slip, …).
-    pub status: S,
+    #[inline(always)]
+    fn code(self) -> f64 {
+        f64::from(self as i32)
+    }
 }
 
 /// The Coulomb laws' state: stick, slip or exact stick in the last increment.
 pub type CoulombState = PointState<FrictionStatus>;
-
-impl<S: StatusCode> PointState<S> {
-    /// Number of `STATEV` entries the law uses.
-    pub const NSTATV: usize = 3;
-
-    /// Reads the state from `STATEV`; `statev` must hold at least [`Self::NSTATV`] entries.
-    #[inline(always)]
-    pub fn from_statev(statev: &[f64]) -> Result<Self, LawError> {
-        let [s, rate, status, ..] = statev else {
-            return Err(short_statev(statev.len(), S::LAW));
-        };
-        Self::from_values(*s, *rate, *status).ok_or_else(corrupt_statev)
-    }
-
-    /// The state from `STATEV(1..3)`; `None` when `STATEV(1)` or `STATEV(2)` is not finite.
-    /// An unknown status code reads as stick.
-    #[inline(always)]
-    #[must_use]
-    pub fn from_values(accumulated_slip: f64, slip_rate: f64, status: f64) -> Option<Self> {
-        let state = Self::from_values_unchecked(accumulated_slip, slip_rate, status);
-        state.is_finite().then_some(state)
-    }
-
-    /// [`Self::from_values`] without the finiteness test, for a caller whose update tests the
-    /// state with its inputs (`Coulomb::try_update` does).
-    #[inline(always)]
-    #[must_use]
-    pub(crate) fn from_values_unchecked(
-        accumulated_slip: f64,
-        slip_rate: f64,
-        status: f64,
-    ) -> Self {
-        PointState {
-            accumulated_slip,
-            slip_rate,
-            status: S::from_code(status),
-        }
-    }
-
-    /// `STATEV(1)` and `STATEV(2)` finite.
-    #[inline(always)]
-    fn is_finite(&self) -> bool {
-        self.probe() == 0.0
-    }
-
-    /// ±0 when both scalars are finite, NaN otherwise (x·0).
-    #[inline(always)]
-    fn probe(&self) -> f64 {
-        self.accumulated_slip * 0.0 + self.slip_rate * 0.0
-    }
-
-    /// Writes the state into the first [`Self::NSTATV`] entries of `statev` (nothing else).
-    #[inline(always)]
-    pub fn write_statev(&self, statev: &mut [f64]) {
-        if let [s, rate, status, ..] = statev {
-            *s = self.accumulated_slip;
-            *rate = self.slip_rate;
-            *status = self.status.code();
-        }
-    }
-}
 
 impl CoulombState {
     /// The state after an increment held by Lagrange multipliers (`LM = 1`): no slip, no rate.
@@ -251,94 +136,6 @@ impl CoulombState {
             },
         }
     }
-}
-
-/// Stress, tangents and energies of an increment that allows relative motion (`LM = 0`).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Traction<const N: usize> {
-    /// Frictional stress τ at the end of the increment.
-    pub tau: [f64; N],
-    /// `ddtddg[a][b]` = ∂τ_a/∂Δγ_b.
-    pub ddtddg: [[f64; N]; N],
-    /// ∂τ_a/∂p with the start of the increment held fixed.
-    pub ddtddp: [f64; N],
-    /// Inelastic slip increment Δγ^sl.
-    pub dslip: [f64; N],
-    /// Elastic energy density |τ|²/(2k_s) (0 in exact stick, which has no elastic slip).
-    pub sed: f64,
-    /// Frictional dissipation of the increment, τ·Δγ^sl (backward Euler), never negative.
-    pub sfd: f64,
-}
-
-impl<const N: usize> Traction<N> {
-    /// A sliding answer along the unit slip direction n (Eq. 5.2.3-2): τ = t·n with the
-    /// strength t, ∂τ/∂p = n·∂t/∂p, Δγ^sl = Δγ_eq^sl·n and `SFD` = t·Δγ_eq^sl (backward Euler);
-    /// the tangent ∂τ/∂Δγ and the elastic energy `SED` as the caller's formulation has them.
-    #[inline(always)]
-    #[must_use]
-    pub(crate) fn sliding(
-        n: &[f64; N],
-        t: f64,
-        ddtddg: [[f64; N]; N],
-        dt_dp: f64,
-        slip_eq: f64,
-        sed: f64,
-    ) -> Self {
-        Traction {
-            tau: scale(n, t),
-            ddtddg,
-            ddtddp: scale(n, dt_dp),
-            dslip: scale(n, slip_eq),
-            sed,
-            sfd: t * slip_eq,
-        }
-    }
-
-    /// An answer without slip (elastic or viscous stick, a bonded shear): Δγ^sl = 0 and
-    /// `SFD` = 0; the stress, its tangents and `SED` as the caller's law has them.
-    #[inline(always)]
-    #[must_use]
-    pub(crate) fn sticking(
-        tau: [f64; N],
-        ddtddg: [[f64; N]; N],
-        ddtddp: [f64; N],
-        sed: f64,
-    ) -> Self {
-        Traction {
-            tau,
-            ddtddg,
-            ddtddp,
-            dslip: [0.0; N],
-            sed,
-            sfd: 0.0,
-        }
-    }
-
-    /// An answer without stress (no friction to carry it, or an open interface): τ = 0,
-    /// ∂τ/∂Δγ = 0, nothing stored or dissipated; the motion counted as slip `dslip` and
-    /// ∂τ/∂p (the strength's right derivative at p = 0 where friction starts) as the caller
-    /// has them.
-    #[inline(always)]
-    #[must_use]
-    pub(crate) fn stress_free(ddtddp: [f64; N], dslip: [f64; N]) -> Self {
-        Traction {
-            tau: [0.0; N],
-            ddtddg: [[0.0; N]; N],
-            ddtddp,
-            dslip,
-            sed: 0.0,
-            sfd: 0.0,
-        }
-    }
-}
-
-/// The answer of the law for one increment.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Contact<const N: usize> {
-    /// `LM = 0`: relative motion allowed; stress and tangents given.
-    Motion(Traction<N>),
-    /// `LM = 1`: the host holds the point with Lagrange multipliers.
-    ExactStick,
 }
 
 /// Result of [`Coulomb::update`].
@@ -1033,21 +830,6 @@ pub(super) fn name_bad_input<const N: usize>(inc: Increment<N>, stick: StickMode
         "DTIME"
     };
     LawError::Input(format!("{what} is NaN or infinite"))
-}
-
-#[cold]
-#[inline(never)]
-fn short_statev(n: usize, law: &str) -> LawError {
-    LawError::Input(format!(
-        "NSTATV = {n} but {law} needs {}",
-        CoulombState::NSTATV
-    ))
-}
-
-#[cold]
-#[inline(never)]
-fn corrupt_statev() -> LawError {
-    LawError::Input("STATEV(1..2) are not finite (state corrupted by the caller?)".into())
 }
 
 #[cold]

@@ -35,7 +35,7 @@ pub struct ChunkInput<const N: usize, const W: usize> {
     pub slip_rate: [f64; W],
 }
 
-/// Outputs of `W` points, as [`super::coulomb::Traction`] and the end state.
+/// Outputs of `W` points, as [`super::contact::Traction`] and the end state.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ChunkOutput<const N: usize, const W: usize> {
     /// Frictional stress at the end of the increment.
@@ -497,7 +497,8 @@ fn saturate(x: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::laws::coulomb::{Contact, CoulombState, FrictionStatus, Increment};
+    use crate::laws::contact::{Contact, Increment};
+    use crate::laws::coulomb::{CoulombState, FrictionStatus};
     use crate::testing::XorShift;
 
     const W: usize = 8;

@@ -27,10 +27,8 @@
 
 #![allow(clippy::needless_range_loop)] // index loops mirror the i, j of the seed's equations
 
-use super::coulomb::{
-    Contact, Coulomb, CoulombState, EXACT_STICK_TANGENT_FLOOR, EntryFlag, Increment, StickMode,
-    Traction,
-};
+use super::contact::{Contact, EntryFlag, Increment, Traction};
+use super::coulomb::{Coulomb, CoulombState, EXACT_STICK_TANGENT_FLOOR, StickMode};
 use super::friction_coefficient::{
     CoefficientLaw, Factor, RateFormulation, RateLaw, STICK_TEST_ROUNDING, decay_phi,
 };

@@ -6,7 +6,7 @@
 //! `dyn`), and writes the answer; it knows no law. docs/architecture.md, "Adding a law", says
 //! which laws are behind it and which still have their own arm in `fric_`.
 
-use super::coulomb::{Contact, Increment};
+use super::contact::{Contact, Increment};
 use crate::LawError;
 
 /// The largest `STATEV` a law behind [`PointLaw`] writes.

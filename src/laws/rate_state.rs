@@ -27,9 +27,8 @@
 //! local solve, and the consistent tangent (Eq. 5.2.3-3 of the source model) carries
 //! dμ/dV = ∂μ/∂V + ∂μ/∂θ·dθ/dV. `LM` is always 0 (no exact stick).
 
-use super::coulomb::{
-    Contact, Coulomb, CoulombState, FrictionStatus, Increment, StickMode, Traction, name_bad_input,
-};
+use super::contact::{Contact, Increment, Traction};
+use super::coulomb::{Coulomb, CoulombState, FrictionStatus, StickMode, name_bad_input};
 use super::friction_coefficient::STICK_TEST_ROUNDING;
 use super::point_law::{PointAnswer, PointLaw};
 use super::small_vec::{all_finite, diagonal, norm, radial_transverse, scale, unit};

@@ -5,7 +5,8 @@
 
 use proptest::prelude::*;
 
-use crate::laws::coulomb::{Contact, Coulomb, CoulombState, Increment, StickMode};
+use crate::laws::contact::{Contact, Increment};
+use crate::laws::coulomb::{Coulomb, CoulombState, StickMode};
 use crate::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState, Hht};
 use crate::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
 
