@@ -12,6 +12,8 @@
 //! maps the stick mode and the μ law, which some fast plans leave to it (`Fix::MappedBy`). The
 //! plain and decay-lean readers (src/props.rs) build their fixed layout's law directly.
 
+use std::fmt;
+
 use crate::laws::coulomb::{Coulomb, DEFAULT_SLIP_TOLERANCE, StickMode};
 use crate::laws::coulomb_extended::{
     Damping, ExtendedCoulomb, Hht, SteadyTransport, ViscousSlipReference,
@@ -21,8 +23,7 @@ use crate::laws::friction_table::FrictionTable;
 
 use super::schema::Default::{Derived, Described, Entry as SameAs, Required, Value};
 use super::schema::{
-    Class, Entry, Fix, Fixed, LawFn, Layout, PropsError, Refusal, Rule, Variant, fast_layout,
-    props_builder,
+    Class, Entry, Fix, Fixed, LawFn, Layout, PropsError, Rule, Variant, fast_layout, props_builder,
 };
 use super::{COULOMB_EXTENDED_NPROPS, COULOMB_NPROPS, FrictionLaw, LAW_COULOMB};
 
@@ -308,7 +309,7 @@ pub(crate) fn law_from_entries(
     };
     law.map_err(|no| match no {
         NoLaw::OutOfClass(index) => PropsError::out_of_class(&COULOMB, e, index),
-        NoLaw::Refused(refusal) => PropsError::refused(&COULOMB, refusal),
+        NoLaw::Refused(refusal) => refusal.into_props_error(),
     })
 }
 
@@ -327,6 +328,69 @@ pub(crate) fn extended_from_entries(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> Optio
 #[inline(always)]
 pub(crate) fn fast_law_from_entries(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> Option<FrictionLaw> {
     build(e, None).ok()
+}
+
+/// What a law's builder refuses in entries the layout admits: conditions that need more than
+/// one entry's class or a rule between two entries, or more than the `PROPS` array.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Refusal {
+    /// Law 1's decay law: μ_k/μ_s = `PROPS(9)`/`PROPS(2)` overflows (μ_s too small), both
+    /// entries valid on their own.
+    KineticRatioOverflows {
+        /// μ_k = `PROPS(9)`.
+        mu_k: f64,
+        /// μ_s = `PROPS(2)`.
+        mu_s: f64,
+    },
+    /// Law 1's `PROPS(8) = 2` where no μ table is at hand: only `fric_` and `fric_coef_` look
+    /// the interaction's table up.
+    NoTable,
+    /// Law 1's constant stick stiffness (`PROPS(7) = 4`) with anisotropy or any of
+    /// `PROPS(8..20)`: the plain law only.
+    StickStiffnessPlainOnly,
+}
+
+impl Refusal {
+    /// The refusal as the schema's error of law 1's layout.
+    #[cold]
+    #[inline(never)]
+    #[must_use]
+    pub fn into_props_error(self) -> PropsError {
+        PropsError::refused(&COULOMB, self.index(), self.to_string())
+    }
+
+    /// The `PROPS` index the refusal is said of.
+    #[must_use]
+    pub const fn index(self) -> usize {
+        match self {
+            Refusal::KineticRatioOverflows { .. } => 9,
+            Refusal::NoTable => 8,
+            Refusal::StickStiffnessPlainOnly => 7,
+        }
+    }
+}
+
+impl fmt::Display for Refusal {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Refusal::KineticRatioOverflows { mu_k, mu_s } => write!(
+                f,
+                "PROPS(9) = μ_k = {mu_k} over PROPS(2) = μ_s = {mu_s:e}: μ_k/μ_s = {} \
+                 overflows; μ_s is too small for the decay law",
+                mu_k / mu_s
+            ),
+            Refusal::NoTable => write!(
+                f,
+                "PROPS(8) = 2 (μ table from INTERFACIAL_CONFIG) is read by fric_ and fric_coef_ \
+                 only, which look the table up by interaction name"
+            ),
+            Refusal::StickStiffnessPlainOnly => write!(
+                f,
+                "PROPS(7) = 4 (constant stick stiffness) is the plain isotropic law with constant \
+                 μ: PROPS(3) must be 0 or μ and PROPS(8..20) 0"
+            ),
+        }
+    }
 }
 
 /// Why [`build`] gives no law: small and `Copy`, so that a fast reader's `None` costs nothing;
@@ -567,7 +631,8 @@ pub(super) mod tests {
                         return Err(TestCaseError::fail(format!("{props:?}: {m}, schema accepts")));
                     };
                     let typed = law_from_entries(&e, None).unwrap_err();
-                    prop_assert_eq!(typed.cause(), &Cause::Refused(refusal));
+                    let expected = refusal.into_props_error();
+                    prop_assert_eq!(typed.cause(), expected.cause());
                     prop_assert_eq!(typed.index(), Some(refusal.index()));
                     prop_assert_eq!(m, &crate::LawError::from(typed));
                 }
@@ -911,7 +976,7 @@ pub(super) mod tests {
         let table = CoulombBuilder::new().mu(0.3).mu_law(2.0).build();
         let e = COULOMB.check::<20>(&table).unwrap();
         let refused = law_from_entries(&e, None).unwrap_err();
-        assert_eq!(refused.cause(), &Cause::Refused(Refusal::NoTable));
+        assert_eq!(refused.cause(), Refusal::NoTable.into_props_error().cause());
         assert_eq!(refused.index(), Some(8));
         assert!(
             refused.to_string().starts_with("PROPS(8) = 2 (μ table"),
@@ -927,10 +992,12 @@ pub(super) mod tests {
         let refused = law_from_entries(&e, None).unwrap_err();
         assert_eq!(
             refused.cause(),
-            &Cause::Refused(Refusal::KineticRatioOverflows {
+            Refusal::KineticRatioOverflows {
                 mu_k: 0.1,
                 mu_s: 1e-310
-            })
+            }
+            .into_props_error()
+            .cause()
         );
         assert_eq!(refused.index(), Some(9));
         // Anisotropy with μ₁ = 0 is the layout's rule now, named by PROPS(3).

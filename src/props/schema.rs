@@ -423,7 +423,12 @@ pub enum Cause {
     },
     /// Valid entries that a law's own condition refuses, beyond what the layout can say
     /// (said by the law's builder from validated entries).
-    Refused(Refusal),
+    Refused {
+        /// The `PROPS` index the refusal is said of.
+        index: usize,
+        /// The law's text (law 1's `Refusal`, src/props/coulomb.rs).
+        message: String,
+    },
     /// A law refused a value that the layout admits (its message, said of `PROPS(index)`).
     Law {
         /// `PROPS(index)`.
@@ -431,61 +436,6 @@ pub enum Cause {
         /// The law's refusal.
         error: LawError,
     },
-}
-
-/// What a law's builder refuses in entries the layout admits: conditions that need more than
-/// one entry's class or a rule between two entries, or more than the `PROPS` array.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Refusal {
-    /// Law 1's decay law: μ_k/μ_s = `PROPS(9)`/`PROPS(2)` overflows (μ_s too small), both
-    /// entries valid on their own.
-    KineticRatioOverflows {
-        /// μ_k = `PROPS(9)`.
-        mu_k: f64,
-        /// μ_s = `PROPS(2)`.
-        mu_s: f64,
-    },
-    /// Law 1's `PROPS(8) = 2` where no μ table is at hand: only `fric_` and `fric_coef_` look
-    /// the interaction's table up.
-    NoTable,
-    /// Law 1's constant stick stiffness (`PROPS(7) = 4`) with anisotropy or any of
-    /// `PROPS(8..20)`: the plain law only.
-    StickStiffnessPlainOnly,
-}
-
-impl Refusal {
-    /// The `PROPS` index the refusal is said of.
-    #[must_use]
-    pub const fn index(self) -> usize {
-        match self {
-            Refusal::KineticRatioOverflows { .. } => 9,
-            Refusal::NoTable => 8,
-            Refusal::StickStiffnessPlainOnly => 7,
-        }
-    }
-}
-
-impl fmt::Display for Refusal {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match *self {
-            Refusal::KineticRatioOverflows { mu_k, mu_s } => write!(
-                f,
-                "PROPS(9) = μ_k = {mu_k} over PROPS(2) = μ_s = {mu_s:e}: μ_k/μ_s = {} \
-                 overflows; μ_s is too small for the decay law",
-                mu_k / mu_s
-            ),
-            Refusal::NoTable => write!(
-                f,
-                "PROPS(8) = 2 (μ table from INTERFACIAL_CONFIG) is read by fric_ and fric_coef_ \
-                 only, which look the table up by interaction name"
-            ),
-            Refusal::StickStiffnessPlainOnly => write!(
-                f,
-                "PROPS(7) = 4 (constant stick stiffness) is the plain isotropic law with constant \
-                 μ: PROPS(3) must be 0 or μ and PROPS(8..20) 0"
-            ),
-        }
-    }
 }
 
 /// A refused `PROPS` array: the layout and the cause. Becomes a [`LawError::Parameter`] with
@@ -513,10 +463,10 @@ impl PropsError {
     #[cold]
     #[inline(never)]
     #[must_use]
-    pub fn refused(layout: &'static Layout, refusal: Refusal) -> Self {
+    pub fn refused(layout: &'static Layout, index: usize, message: String) -> Self {
         PropsError {
             layout,
-            cause: Cause::Refused(refusal),
+            cause: Cause::Refused { index, message },
             entry: None,
         }
     }
@@ -548,7 +498,7 @@ impl PropsError {
     pub fn index(&self) -> Option<usize> {
         match self.cause {
             Cause::TooFew { .. } => None,
-            Cause::Refused(refusal) => Some(refusal.index()),
+            Cause::Refused { index, .. } => Some(index),
             Cause::Unused { index, .. }
             | Cause::OutOfClass { index, .. }
             | Cause::Broken { index, .. }
@@ -587,7 +537,7 @@ impl fmt::Display for PropsError {
                 layout.law,
                 layout.entries.len()
             ),
-            Cause::Refused(refusal) => write!(f, "{refusal}"),
+            Cause::Refused { message, .. } => f.write_str(message),
             Cause::OutOfClass { index, value } => {
                 let e = self.entry.unwrap_or_else(|| layout.entry(*index));
                 if let Class::Switch { .. } = e.class {
