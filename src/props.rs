@@ -5,9 +5,11 @@
 //! into a typed, validated law; `docs/props.md` is generated from the same layouts.
 
 use crate::LawError;
+use crate::laws::contact::{Conditions, Increment};
 use crate::laws::coulomb::Coulomb;
 use crate::laws::coulomb_extended::ExtendedCoulomb;
 use crate::laws::friction_table::FrictionTable;
+use crate::laws::point_law::{Needs, PointAnswer, PointLaw};
 use crate::laws::rate_state::RateState;
 use crate::switch::Path;
 
@@ -33,6 +35,10 @@ pub use coulomb_fast::{
 use coulomb_fast::{coulomb_fast, fast_extended_friction_law};
 pub use rate_state::{LAW_RATE_STATE, RATE_STATE, RATE_STATE_NPROPS, RateStateBuilder, rate_state};
 
+/// Every law's `PROPS` layout, in law-code order: the laws a tool can ask about, in the order
+/// `ifl_props_law_code` numbers them.
+pub const LAYOUTS: [&schema::Layout; 3] = [&COULOMB, &ADHESIVE, &RATE_STATE];
+
 /// A law selected and parametrised by `PROPS`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum FrictionLaw {
@@ -49,13 +55,29 @@ pub enum FrictionLaw {
 impl FrictionLaw {
     /// The law as messages name it, with its code: "PROPS(1) = 3 (rate-and-state law)".
     #[must_use]
-    pub fn name(&self) -> &'static str {
+    pub fn name_with_code(&self) -> &'static str {
         match self {
             FrictionLaw::Coulomb(_) | FrictionLaw::CoulombExtended(_) => {
                 "PROPS(1) = 1 (Coulomb law)"
             }
             FrictionLaw::Adhesive(_) => "PROPS(1) = 2 (adhesive law)",
             FrictionLaw::RateState(_) => "PROPS(1) = 3 (rate-and-state law)",
+        }
+    }
+
+    /// Law 1's plain form, for an entry point that serves only it (VFRIC, the batch): the
+    /// extended form and every other law are refused, the message naming what was given and
+    /// then `why` (what the routine serves instead).
+    pub fn into_plain_coulomb(self, why: &str) -> Result<Coulomb, LawError> {
+        match self {
+            FrictionLaw::Coulomb(law) => Ok(law),
+            FrictionLaw::CoulombExtended(_) => Err(LawError::Parameter(format!(
+                "extended law-1 PROPS (PROPS(3) != PROPS(2) or PROPS(8..20)): {why}"
+            ))),
+            other => Err(LawError::Parameter(format!(
+                "{}: {why}",
+                other.name_with_code()
+            ))),
         }
     }
 
@@ -66,7 +88,76 @@ impl FrictionLaw {
         match self {
             FrictionLaw::Coulomb(base) => Ok(ExtendedCoulomb::new(base)),
             FrictionLaw::CoulombExtended(law) => Ok(law),
-            other => Err(LawError::Parameter(format!("{}: {why}", other.name()))),
+            other => Err(LawError::Parameter(format!(
+                "{}: {why}",
+                other.name_with_code()
+            ))),
+        }
+    }
+}
+
+/// The law interface through the law enum: each method is one `match` to the variant's own
+/// implementation (static dispatch, no `dyn`). A new law is a variant and one arm per method.
+impl PointLaw for FrictionLaw {
+    fn name(&self) -> &'static str {
+        match self {
+            FrictionLaw::Coulomb(law) => law.name(),
+            FrictionLaw::CoulombExtended(law) => law.name(),
+            FrictionLaw::Adhesive(a) => a.law.name(),
+            FrictionLaw::RateState(law) => law.name(),
+        }
+    }
+
+    fn nstatv(&self, nfdir: usize) -> usize {
+        match self {
+            FrictionLaw::Coulomb(law) => law.nstatv(nfdir),
+            FrictionLaw::CoulombExtended(law) => law.nstatv(nfdir),
+            FrictionLaw::Adhesive(a) => a.law.nstatv(nfdir),
+            FrictionLaw::RateState(law) => law.nstatv(nfdir),
+        }
+    }
+
+    fn exact_stick(&self) -> bool {
+        match self {
+            FrictionLaw::Coulomb(law) => law.exact_stick(),
+            FrictionLaw::CoulombExtended(law) => law.exact_stick(),
+            FrictionLaw::Adhesive(a) => a.law.exact_stick(),
+            FrictionLaw::RateState(law) => law.exact_stick(),
+        }
+    }
+
+    fn needs(&self, nfdir: usize) -> Needs {
+        match self {
+            FrictionLaw::Coulomb(law) => law.needs(nfdir),
+            FrictionLaw::CoulombExtended(law) => law.needs(nfdir),
+            FrictionLaw::Adhesive(a) => a.law.needs(nfdir),
+            FrictionLaw::RateState(law) => law.needs(nfdir),
+        }
+    }
+
+    fn update_point<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        conditions: &Conditions,
+        statev: &[f64],
+    ) -> Result<PointAnswer<N>, LawError> {
+        match self {
+            FrictionLaw::Coulomb(law) => law.update_point(inc, conditions, statev),
+            FrictionLaw::CoulombExtended(law) => law.update_point(inc, conditions, statev),
+            FrictionLaw::Adhesive(a) => a.law.update_point(inc, conditions, statev),
+            FrictionLaw::RateState(law) => law.update_point(inc, conditions, statev),
+        }
+    }
+
+    fn coefficients(&self, rate: f64, pressure: f64, temperature: f64) -> Option<[[f64; 2]; 4]> {
+        match self {
+            // Written as trait calls: ExtendedCoulomb has an inherent `coefficients` too.
+            FrictionLaw::Coulomb(law) => PointLaw::coefficients(law, rate, pressure, temperature),
+            FrictionLaw::CoulombExtended(law) => {
+                PointLaw::coefficients(law, rate, pressure, temperature)
+            }
+            FrictionLaw::Adhesive(a) => PointLaw::coefficients(&a.law, rate, pressure, temperature),
+            FrictionLaw::RateState(law) => PointLaw::coefficients(law, rate, pressure, temperature),
         }
     }
 }
@@ -146,6 +237,35 @@ pub fn friction_law_checked(props: &[f64]) -> Result<FrictionLaw, LawError> {
             "PROPS(1) = {code} must be an integer law code ({LAW_CODES})"
         )))
     }
+}
+
+/// The law `props` select as written: law 2 stays the adhesive law even in its Coulomb special
+/// case, which [`friction_law`] runs as law 1 (for VFRIC, which serves law 1 only).
+pub fn friction_law_as_written(props: &[f64]) -> Result<FrictionLaw, LawError> {
+    if props.first() == Some(&f64::from(LAW_ADHESIVE)) {
+        adhesive::adhesive(props).map(FrictionLaw::Adhesive)
+    } else {
+        friction_law(props)
+    }
+}
+
+/// The interface law (`uinter_`: normal contact, friction and heat) `props` select: today the
+/// adhesive interface, `PROPS(1) = 2`; every other code is refused by name.
+pub fn interface_law(props: &[f64]) -> Result<AdhesiveProps, LawError> {
+    match props.first() {
+        Some(&code) if code == f64::from(LAW_ADHESIVE) => adhesive_props(props),
+        code => Err(not_uinter_law(code.copied())),
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn not_uinter_law(code: Option<f64>) -> LawError {
+    let code = code.map_or("absent (NPROPS = 0)".to_string(), |c| c.to_string());
+    LawError::Parameter(format!(
+        "PROPS(1) = {code}: UINTER needs PROPS(1) = 2 (the adhesive interface law); the other \
+         laws are tangential only (FRIC)"
+    ))
 }
 
 /// The friction law `props` select, for a routine that can look the interaction's μ table up

@@ -181,13 +181,13 @@ fn whole_batch_faults_write_only_pnewdt() {
     let (c, pc, st) = via_c(&adhesive, 0.5, &input);
     assert_eq!((st, pc), (IflStatus::BadParameter, 0.25));
     assert_identical("adhesive PROPS", &input, &c);
-    assert!(FricCall::last_error().contains("runs law 1 (Coulomb) only"));
+    assert!(FricCall::last_error().contains("runs the plain Coulomb law (law 1) only"));
     // Anisotropy (PROPS(3) != PROPS(2)) is the extended law 1: refused as a whole too.
     let anisotropic = first_variant().mu2(0.5 * 0.3).build_first(7);
     let (c, pc, st) = via_c(&anisotropic, 0.5, &input);
     assert_eq!((st, pc), (IflStatus::BadParameter, 0.25));
     assert_identical("anisotropic PROPS", &input, &c);
-    assert!(FricCall::last_error().contains("plain Coulomb law only"));
+    assert!(FricCall::last_error().contains("extended law-1 PROPS"));
     let mut p = input.clone();
     for (nfdir, ld, nstatv, expect) in [
         (3, 10, 4, IflStatus::BadParameter),

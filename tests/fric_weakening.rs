@@ -9,9 +9,10 @@
 
 use interfacial::abi::host::FricCall;
 use interfacial::abi::uinter_host::UinterCall;
+use interfacial::laws::contact::Conditions;
 use interfacial::laws::contact::Increment;
 use interfacial::laws::coulomb::Coulomb;
-use interfacial::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
+use interfacial::laws::coulomb_extended::{ExtendedCoulomb, ExtendedState};
 use interfacial::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 

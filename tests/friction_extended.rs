@@ -16,10 +16,11 @@ use laws::{every_mu_law, set_entry};
 use loading::Loading;
 
 use interfacial::abi::host::FricCall;
+use interfacial::laws::contact::Conditions;
 use interfacial::laws::contact::{Contact, EntryFlag, Increment};
 use interfacial::laws::coulomb::Coulomb;
 use interfacial::laws::coulomb_extended::{
-    Conditions, Damping, ExtendedCoulomb, ExtendedState, Hht, MAX_LOCAL_ITERATIONS,
+    Damping, ExtendedCoulomb, ExtendedState, Hht, MAX_LOCAL_ITERATIONS,
 };
 use interfacial::laws::friction_coefficient::CoefficientLaw;
 use interfacial::props::CoulombBuilder;

@@ -223,7 +223,7 @@ fn adhesive_coulomb_special_case_is_refused() {
         let case = VfricCase::block(&props, 2, &[10.0, 1.0], &[50.0, 50.0], &[1, 1], &[1.0]);
         let out = case.check().unwrap_or_else(|e| panic!("{e}"));
         assert!(
-            out.message.contains("PROPS(1) = 2 (adhesive)"),
+            out.message.contains("PROPS(1) = 2 (adhesive law)"),
             "{props:?}: {}",
             out.message
         );

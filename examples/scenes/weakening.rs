@@ -23,9 +23,10 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use interfacial::abi::host::FricCall;
+use interfacial::laws::contact::Conditions;
 use interfacial::laws::contact::{Contact, Increment};
 use interfacial::laws::coulomb::Coulomb;
-use interfacial::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState};
+use interfacial::laws::coulomb_extended::{ExtendedCoulomb, ExtendedState};
 use interfacial::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
 use plotters::prelude::*;

@@ -304,7 +304,7 @@ impl BatchCase {
             && untouched
             && (out
                 .message
-                .contains("the batch entry runs law 1 (Coulomb) only")
+                .contains("the batch entry runs the plain Coulomb law (law 1) only")
                 || out.message.contains("extended law-1 PROPS"));
         let probe_refused = !self.bad_shape() && {
             let mut probe = FricCase::coulomb(a.int("nfdir"), &a["props"]);

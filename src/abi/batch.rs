@@ -23,7 +23,7 @@ use super::{Fault, IflStatus, bad_lm, boundary, count, cut_back, null_pointer};
 use crate::laws::contact::{Contact, EntryFlag, Increment};
 use crate::laws::coulomb::{Coulomb, CoulombState};
 use crate::laws::coulomb_batch::{ChunkInput, ElasticStickKernel};
-use crate::props::{FrictionLaw, friction_law};
+use crate::props::friction_law;
 use crate::report::{Site, report};
 use crate::{CUTBACK_RATIO, LawError};
 
@@ -123,25 +123,15 @@ pub fn fric_batch(
     let checked = check_sizes(batch)
         .and_then(|()| friction_law(props))
         .map_err(whole);
-    let law = match checked {
-        Ok(FrictionLaw::Coulomb(law)) => law,
-        // The batch kernel is the Coulomb law's. Anisotropy, μ laws, damping: the extended law
-        // goes through fric_ per point.
-        Ok(FrictionLaw::CoulombExtended(_)) => {
-            lower(pnewdt, CUTBACK_RATIO);
-            return Err(whole(LawError::Parameter(
-                "extended law-1 PROPS (PROPS(3) != PROPS(2) or PROPS(8..20)): the batch entry runs the plain Coulomb law only; call fric_ per point"
-                    .into(),
-            )));
-        }
-        // Laws 2 and 3 go through fric_ (or uinter_) per point.
-        Ok(other @ (FrictionLaw::Adhesive(_) | FrictionLaw::RateState(_))) => {
-            lower(pnewdt, CUTBACK_RATIO);
-            return Err(whole(LawError::Parameter(format!(
-                "{}: the batch entry runs law 1 (Coulomb) only; call fric_ per point",
-                other.name()
-            ))));
-        }
+    // The batch kernel is the plain Coulomb law's; the extended law and laws 2 and 3 go
+    // through fric_ (or uinter_) per point.
+    let law = match checked.and_then(|law| {
+        law.into_plain_coulomb(
+            "the batch entry runs the plain Coulomb law (law 1) only; call fric_ per point",
+        )
+        .map_err(whole)
+    }) {
+        Ok(law) => law,
         Err(e) => {
             lower(pnewdt, CUTBACK_RATIO);
             return Err(e);

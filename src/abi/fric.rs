@@ -11,17 +11,10 @@ use super::{
 };
 use crate::LawError;
 use crate::config::friction_table_for;
-use crate::laws::adhesive::Adhesive;
-use crate::laws::contact::{Contact, EntryFlag, Increment};
+use crate::laws::contact::{Conditions, Contact, EntryFlag, Increment, mean_surface_temperature};
 use crate::laws::coulomb::{Coulomb, CoulombState, StickMode};
-use crate::laws::coulomb_extended::{
-    Conditions, ExtendedCoulomb, ExtendedState, mean_surface_temperature,
-};
-use crate::laws::point_law::PointLaw;
-use crate::laws::rate_state::RateState;
-use crate::props::{
-    FrictionLaw, fast_extended_coulomb, fast_plain_coulomb, friction_law_with_table,
-};
+use crate::laws::point_law::{Needs, PointLaw};
+use crate::props::{fast_extended_coulomb, fast_plain_coulomb, friction_law_with_table};
 use crate::report::Site;
 
 mod rate;
@@ -222,15 +215,6 @@ unsafe fn arg<T: Copy, E: Refusal>(p: *const T, name: &'static str) -> Result<T,
 unsafe fn get<T: Copy>(p: *const T) -> Option<T> {
     // SAFETY: as `arg`.
     unsafe { arg::<T, ()>(p, "") }.ok()
-}
-
-/// The law a call runs, as the `PROPS` layer gave it.
-#[derive(Clone, Copy)]
-enum Law<'a> {
-    Coulomb(&'a Coulomb),
-    Extended(&'a ExtendedCoulomb),
-    Adhesive(&'a Adhesive),
-    RateState(&'a RateState),
 }
 
 impl FricArgs {
@@ -435,7 +419,7 @@ impl FricArgs {
             let props = slice(self.props, nprops, "PROPS")?;
             // The extended law's own fast reader (no FrictionLaw built and moved).
             if let Some(law) = fast_extended_coulomb(props) {
-                return self.on_nfdir(Law::Extended(&law), entry);
+                return self.on_nfdir(&law, entry);
             }
             // The μ table (law 1's, when its PROPS ask for one) is the interaction's, from the
             // configuration file. A NULL name or an implausible hidden length (an address) reads
@@ -443,111 +427,55 @@ impl FricArgs {
             let law = friction_law_with_table(props, || {
                 friction_table_for(fortran_name_bytes(self.ciname, self.ciname_len))
             })?;
-            match &law {
-                FrictionLaw::Coulomb(law) => self.on_nfdir(Law::Coulomb(law), entry),
-                FrictionLaw::CoulombExtended(law) => self.on_nfdir(Law::Extended(law), entry),
-                // (S_a = k_μ = v_½ = 0, μ_s = μ_d comes as the Coulomb law.)
-                FrictionLaw::Adhesive(a) => self.on_nfdir(Law::Adhesive(&a.law), entry),
-                FrictionLaw::RateState(law) => self.on_nfdir(Law::RateState(law), entry),
-            }
+            self.on_nfdir(&law, entry)
         }
     }
 
-    /// Checks `NSTATV` (at least the Coulomb law's 3) and `NFDIR` (1 or 2), then runs the
-    /// point with N = NFDIR.
+    /// Reads `NFDIR` (1 or 2) and runs the point with N = NFDIR.
     ///
     /// # Safety
     /// As `fric_`.
-    unsafe fn on_nfdir(&self, law: Law<'_>, entry: EntryFlag) -> Result<(), LawError> {
-        // SAFETY: NSTATV and NFDIR are valid pointers or NULL per the FRIC contract.
+    unsafe fn on_nfdir<L: PointLaw>(&self, law: &L, entry: EntryFlag) -> Result<(), LawError> {
+        // SAFETY: NFDIR is a valid pointer or NULL per the FRIC contract.
         unsafe {
-            let nstatv = read(self.nstatv, "NSTATV")?;
-            let nstatv = match (usize::try_from(nstatv), law) {
-                // A law behind the interface checks its own need (`point_law`).
-                (n, Law::Adhesive(_) | Law::RateState(_)) => n.unwrap_or(0),
-                (Ok(n), _) if n >= CoulombState::NSTATV => n,
-                _ => return Err(short_nstatv(nstatv)),
-            };
             match read(self.nfdir, "NFDIR")? {
-                1 => self.point::<1>(law, entry, nstatv),
-                2 => self.point::<2>(law, entry, nstatv),
+                1 => self.point::<1, L>(law, entry),
+                2 => self.point::<2, L>(law, entry),
                 other => Err(bad_nfdir(other)),
             }
         }
     }
 
-    /// One contact point with N = NFDIR friction directions, any law. Everything is computed
-    /// before the first output is written, so a failure leaves the caller's arrays as they
-    /// were.
+    /// One point through the law interface ([`PointLaw`]), N = NFDIR: `NSTATV` as the law
+    /// needs it, the increment (an `LM = 1` on entry read as 0 by a law without exact stick)
+    /// and the conditions the law asks for, the update, the answer written. Everything is
+    /// computed before the first output is written, so a failure leaves the caller's arrays as
+    /// they were.
     ///
     /// # Safety
-    /// As `fric_`, N = NFDIR, `NSTATV ≥ 3` checked and equal to `nstatv`.
-    unsafe fn point<const N: usize>(
-        &self,
-        law: Law<'_>,
-        entry: EntryFlag,
-        nstatv: usize,
-    ) -> Result<(), LawError> {
-        // SAFETY (whole body): arrays of N, N·N, 2N, NSTATV, 2 and 4 entries per the FRIC
-        // contract; STATEV is read and written only up to the checked NSTATV.
-        unsafe {
-            match law {
-                Law::Coulomb(law) => {
-                    let inc = self.increment::<N, LawError>(entry)?;
-                    let state = CoulombState::from_statev(slice(self.statev, nstatv, "STATEV")?)?;
-                    let up = law.update(&inc, &state)?;
-                    // DDTDDT(NFDIR,2) = 0: μ does not depend on temperature.
-                    self.write_answer(&up.contact, &coulomb_statev(&up.state), &[0.0; N]);
-                    self.lower_pnewdt(up.outcome.step_ratio);
-                }
-                Law::Extended(law) => {
-                    let needed = law.nstatv(N);
-                    if nstatv < needed {
-                        return Err(short_nstatv_extended(nstatv, needed));
-                    }
-                    let inc = self.increment::<N, LawError>(entry)?;
-                    let conditions = self.conditions::<N>(law)?;
-                    let statev = slice(self.statev, nstatv, "STATEV")?;
-                    let state = ExtendedState::<N>::from_statev(law, statev)?;
-                    let up = law.update(&inc, &conditions, &state)?;
-                    let mut end = [0.0; 5];
-                    let end = up.state.to_statev(law, &mut end);
-                    self.write_answer(&up.contact, end, &up.ddtddt_column());
-                    self.lower_pnewdt(up.outcome.step_ratio);
-                }
-                Law::Adhesive(law) => self.point_law::<N, _>(law, entry, nstatv)?,
-                Law::RateState(law) => self.point_law::<N, _>(law, entry, nstatv)?,
-            }
-            Ok(())
-        }
-    }
-
-    /// One point through the law interface ([`PointLaw`]): `NSTATV` as the law needs it, the
-    /// increment (an `LM = 1` on entry read as 0 by a law without exact stick), the update,
-    /// the answer written.
-    ///
-    /// # Safety
-    /// As `fric_`, N = NFDIR, `NSTATV` equal to `nstatv`.
-    unsafe fn point_law<const N: usize, L: PointLaw>(
+    /// As `fric_`, N = NFDIR.
+    unsafe fn point<const N: usize, L: PointLaw>(
         &self,
         law: &L,
         entry: EntryFlag,
-        nstatv: usize,
     ) -> Result<(), LawError> {
-        // SAFETY (whole body): arrays of N, N·N, 2N and NSTATV entries per the FRIC contract.
+        // SAFETY (whole body): arrays of N, N·N, 2N and NSTATV entries per the FRIC contract;
+        // STATEV is read and written only up to the checked NSTATV.
         unsafe {
+            let given = read(self.nstatv, "NSTATV")?;
             let needed = law.nstatv(N);
-            if nstatv < needed {
-                let given = read(self.nstatv, "NSTATV")?;
-                return Err(short_nstatv_law(given, needed, L::NAME));
-            }
+            let nstatv = match usize::try_from(given) {
+                Ok(n) if n >= needed => n,
+                _ => return Err(short_nstatv(given, needed, law.name())),
+            };
             let entry = if law.exact_stick() {
                 entry
             } else {
                 EntryFlag::Motion
             };
             let inc = self.increment::<N, LawError>(entry)?;
-            let up = law.update_point(&inc, slice(self.statev, nstatv, "STATEV")?)?;
+            let conditions = self.conditions::<N>(law.needs(N))?;
+            let up = law.update_point(&inc, &conditions, slice(self.statev, nstatv, "STATEV")?)?;
             let half = up.dtau_dtheta.map(|d| 0.5 * d);
             self.write_answer(&up.contact, &up.statev[..up.statev_len], &half);
             self.lower_pnewdt(up.step_ratio);
@@ -555,28 +483,24 @@ impl FricArgs {
         }
     }
 
-    /// What the extended law reads besides the increment: the mean surface temperature when μ
-    /// depends on it, `DROT` for damping in 3-D, the point's coordinates for steady transport.
+    /// What the law reads besides the increment, as it asked ([`Needs`]): the mean surface
+    /// temperature `TEMP`, the rotation `DROT` (2 × 2), the coordinates `COORDS(1..MCRD)`.
     ///
     /// # Safety
     /// As `fric_`, N = NFDIR.
-    unsafe fn conditions<const N: usize>(
-        &self,
-        law: &ExtendedCoulomb,
-    ) -> Result<Conditions, LawError> {
+    unsafe fn conditions<const N: usize>(&self, needs: Needs) -> Result<Conditions, LawError> {
         // SAFETY (whole body): TEMP(2), DROT(2,2) and COORDS(MCRD) per the FRIC contract.
         unsafe {
             let mut conditions = Conditions::default();
-            if law.reads_temperature() {
+            if needs.temperature {
                 conditions.temperature = mean_surface_temperature(read_array(self.temp, "TEMP")?);
             }
-            if law.damping().is_some() && N == 2 {
+            if needs.rotation {
                 // DROT(2,2), column-major: DROT(a,b) at (a-1) + 2(b-1).
                 let r = read_array::<4>(self.drot, "DROT")?;
                 conditions.drot = [[r[0], r[2]], [r[1], r[3]]];
             }
-            if law.steady_transport().is_some() {
-                // The radius R of γ̇_crit = 2 F_f ω R (or F_f ω R) comes from COORDS(1..MCRD).
+            if needs.coordinates {
                 let mcrd = read(self.mcrd, "MCRD")?;
                 let n = match usize::try_from(mcrd) {
                     Ok(n) if (1..=3).contains(&n) => n,
@@ -643,17 +567,7 @@ fn coulomb_statev(state: &CoulombState) -> [f64; CoulombState::NSTATV] {
 
 #[cold]
 #[inline(never)]
-fn short_nstatv(nstatv: c_int) -> LawError {
-    LawError::Parameter(format!(
-        "NSTATV = {nstatv} but the Coulomb law needs {} state variables (*DEPVAR / the NSTATV \
-         of *FRICTION, USER)",
-        CoulombState::NSTATV
-    ))
-}
-
-#[cold]
-#[inline(never)]
-fn short_nstatv_law(nstatv: c_int, needed: usize, law: &str) -> LawError {
+fn short_nstatv(nstatv: c_int, needed: usize, law: &str) -> LawError {
     LawError::Parameter(format!(
         "NSTATV = {nstatv} but {law} needs {needed} state variables (*DEPVAR / the DEPVAR of \
          *FRICTION, USER)"
@@ -665,15 +579,6 @@ fn short_nstatv_law(nstatv: c_int, needed: usize, law: &str) -> LawError {
 fn bad_mcrd(mcrd: c_int) -> LawError {
     LawError::Input(format!(
         "MCRD = {mcrd}; steady-state transport needs the point's coordinates (MCRD 1 to 3)"
-    ))
-}
-
-#[cold]
-#[inline(never)]
-fn short_nstatv_extended(nstatv: usize, needed: usize) -> LawError {
-    LawError::Parameter(format!(
-        "NSTATV = {nstatv} but the Coulomb law with tangential damping needs {needed} (3 + NFDIR: \
-         STATEV(4..) keep the viscous stress)"
     ))
 }
 

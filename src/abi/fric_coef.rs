@@ -6,6 +6,7 @@ use std::ffi::{c_char, c_int};
 use super::{count, fortran_name_bytes, host_site, null_pointer, read, slice};
 use crate::LawError;
 use crate::config::friction_table_for;
+use crate::laws::point_law::PointLaw;
 use crate::props::friction_law_with_table;
 
 /// Number of derivative slots per point and direction in `fCoefDeriv(nBlock,20,2)`.
@@ -85,11 +86,17 @@ impl CoefArgs {
             let law = friction_law_with_table(props, || {
                 friction_table_for(fortran_name_bytes(self.surf_int, self.surf_int_len))
             })?;
-            // Law 1 only: μ of the other laws is not a function of rate, pressure and
-            // temperature alone (law 2 carries adhesion, law 3 the state θ, which FRIC_COEF has
-            // no STATEV for): fric_ serves them (docs/props.md).
-            let law =
-                law.into_coulomb_extended("FRIC_COEF serves law 1 (Coulomb) only; use FRIC")?;
+            // A law whose μ is not a function of rate, pressure and temperature alone (law 2
+            // carries adhesion, law 3 the state θ, which FRIC_COEF has no STATEV for) has no
+            // `coefficients`; fric_ serves it (docs/props.md). Asked once before the block, so
+            // such a law is refused even with nBlock = 0.
+            if law.coefficients(0.0, 0.0, 0.0).is_none() {
+                return Err(LawError::Parameter(format!(
+                    "{}: μ is not a function of slip rate, pressure and temperature alone \
+                     (FRIC_COEF has no STATEV); FRIC serves it",
+                    law.name_with_code()
+                )));
+            }
             if n == 0 {
                 return Ok(());
             }
@@ -103,11 +110,12 @@ impl CoefArgs {
             }
             let slip = slice(self.slip_data, 6 * n, "slipData")?;
             let pressure = slice(self.pressure, n, "pressure")?;
-            let temperature = if law.reads_temperature() {
+            let temperature = if law.needs(2).temperature {
                 let ntemp = read(self.ntemp, "nTemp")?;
                 if ntemp < 1 {
                     return Err(LawError::Input(format!(
-                        "μ depends on temperature (PROPS(12) or the μ table) but nTemp = {ntemp}"
+                        "μ of {} depends on temperature but nTemp = {ntemp}",
+                        law.name()
                     )));
                 }
                 Some(slice(self.temp_avg, n, "tempAvg")?)
@@ -132,7 +140,10 @@ impl CoefArgs {
                 if !theta.is_finite() {
                     return Err(LawError::Input(format!("tempAvg({}) = {theta}", k + 1)));
                 }
-                *out = law.coefficients(rate, p.max(0.0), theta);
+                // Some: the law was asked before the block.
+                *out = law
+                    .coefficients(rate, p.max(0.0), theta)
+                    .unwrap_or_default();
                 if p < 0.0 {
                     out[2] = [0.0; 2];
                 }

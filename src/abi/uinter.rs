@@ -1,7 +1,6 @@
 //! `uinter_`: the Abaqus/Standard UINTER user subroutine. A thin shell: one argument view
-//! (`UinterArgs`), a dispatch on the law code `PROPS(1)` with one arm per UINTER law (today the
-//! adhesive interface, `PROPS(1) = 2`: normal contact, separation adhesion, friction and heat
-//! exchange), one reader of the increment, one writer of the outputs, one panic boundary. The
+//! (`UinterArgs`), the law the props layer selects (`props::interface_law`; today the adhesive
+//! interface: normal contact, separation adhesion, friction and heat exchange), one reader of the increment, one writer of the outputs, one panic boundary. The
 //! physics, the heat exchange included, is in the laws (docs/architecture.md, "The `uinter_`
 //! shell").
 
@@ -15,7 +14,7 @@ use crate::LawError;
 use crate::config;
 use crate::laws::adhesive_interface::{InterfaceIncrement, InterfaceState};
 use crate::laws::interface_heat::{FrictionalHeating, GapConduction, InterfaceHeat};
-use crate::props::{AdhesiveProps, LAW_ADHESIVE, adhesive_props};
+use crate::props::{AdhesiveProps, interface_law};
 use crate::report::Site;
 
 /// Abaqus/Standard `UINTER`: the full constitutive behaviour of one interface point, callable
@@ -149,12 +148,8 @@ impl UinterArgs {
         unsafe {
             let nprops = count("NPROPS", read(self.nprops, "NPROPS")?)?;
             let props = slice(self.props, nprops, "PROPS")?;
-            // One arm per UINTER law, on the law code PROPS(1): a new law is one arm here
-            // and its `*_point` function below (docs/architecture.md, "add a law").
-            match props.first().copied() {
-                Some(code) if code == f64::from(LAW_ADHESIVE) => self.adhesive(props),
-                code => Err(not_uinter_law(code)),
-            }
+            // The law PROPS select (the props layer refuses a law UINTER does not serve).
+            self.adhesive(&interface_law(props)?)
         }
     }
 
@@ -171,15 +166,14 @@ impl UinterArgs {
         }
     }
 
-    /// `PROPS(1) = 2`: the adhesive interface, 3 state variables.
-    unsafe fn adhesive(&self, props: &[f64]) -> Result<(), LawError> {
-        let props = adhesive_props(props)?;
+    /// The adhesive interface, 3 state variables.
+    unsafe fn adhesive(&self, props: &AdhesiveProps) -> Result<(), LawError> {
         // SAFETY (whole body): pointers valid per the UINTER contract.
         unsafe {
             let nstatv = self.nstatv(InterfaceState::NSTATV, "the adhesive interface")?;
             match read(self.ndir, "NDIR")? {
-                2 => self.adhesive_point::<1>(&props, nstatv),
-                3 => self.adhesive_point::<2>(&props, nstatv),
+                2 => self.adhesive_point::<1>(props, nstatv),
+                3 => self.adhesive_point::<2>(props, nstatv),
                 other => Err(bad_ndir(other)),
             }
         }
@@ -348,16 +342,6 @@ impl UinterArgs {
             }
         }
     }
-}
-
-#[cold]
-#[inline(never)]
-fn not_uinter_law(code: Option<f64>) -> LawError {
-    let code = code.map_or("absent (NPROPS = 0)".to_string(), |c| c.to_string());
-    LawError::Parameter(format!(
-        "PROPS(1) = {code}: UINTER needs PROPS(1) = 2 (the adhesive interface law); the other \
-         laws are tangential only (FRIC)"
-    ))
 }
 
 #[cold]

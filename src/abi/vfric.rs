@@ -7,7 +7,7 @@ use std::ffi::{c_char, c_int};
 use super::{count, host_site, read};
 use crate::LawError;
 use crate::laws::coulomb_kinematic::KinematicCoulomb;
-use crate::props::{FrictionLaw, LAW_ADHESIVE, friction_law};
+use crate::props::friction_law_as_written;
 use crate::report::report;
 
 /// The Fortran `REAL` of the Abaqus/Explicit build `vfric_` is compiled for: `f64` for the
@@ -150,28 +150,11 @@ impl VfricArgs {
             let nprops = count("nProps", read(self.n_props, "nProps")?)?;
             let props = reals(self.props, nprops, "props")?;
             let props: Vec<f64> = props.iter().copied().map(to_f64).collect();
-            // The adhesive layout in its Coulomb special case (μ_s = μ_d, no adhesion) parses
-            // as a plain Coulomb law; VFRIC refuses law 2 in every form (docs/vfric.md).
-            if props.first() == Some(&f64::from(LAW_ADHESIVE)) {
-                return Err(adhesive_refused());
-            }
-            let law = match friction_law(&props)? {
-                FrictionLaw::Coulomb(law) => KinematicCoulomb::new(&law),
-                FrictionLaw::CoulombExtended(_) => {
-                    return Err(LawError::Parameter(
-                        "extended law-1 PROPS (PROPS(3) != PROPS(2) or PROPS(8..20)): VFRIC runs \
-                         the plain Coulomb law only (docs/vfric.md)"
-                            .into(),
-                    ));
-                }
-                FrictionLaw::Adhesive(_) => return Err(adhesive_refused()),
-                other @ FrictionLaw::RateState(_) => {
-                    return Err(LawError::Parameter(format!(
-                        "{}: VFRIC runs law 1 (Coulomb) only (docs/vfric.md)",
-                        other.name()
-                    )));
-                }
-            };
+            // Law 2 refused in every form, its Coulomb special case included (docs/vfric.md).
+            let law = friction_law_as_written(&props)?.into_plain_coulomb(
+                "VFRIC runs the plain Coulomb law (law 1) only (docs/vfric.md)",
+            )?;
+            let law = KinematicCoulomb::new(&law);
             if n == 0 {
                 return Ok(());
             }
@@ -249,13 +232,6 @@ impl VfricArgs {
             }
         }
     }
-}
-
-/// The refusal of `PROPS(1) = 2`.
-fn adhesive_refused() -> LawError {
-    LawError::Parameter(
-        "PROPS(1) = 2 (adhesive): VFRIC runs law 1 (Coulomb) only (docs/vfric.md)".into(),
-    )
 }
 
 /// Borrows `len` reals of the build's precision (NULL allowed only when `len` is 0).

@@ -29,7 +29,7 @@
 //! With S_a = k_μ = v_½ = 0 and μ_s = μ_d the law is plain Coulomb; [`Adhesive::coulomb_special_case`]
 //! returns that law so the entry points run the Coulomb code itself (same results, same cost).
 
-use super::contact::{Increment, Traction};
+use super::contact::{Conditions, Increment, Traction};
 use super::coulomb::{
     Coulomb, CoulombState, CriticalSlip, FrictionStatus, StickMode, Update, name_bad_input,
 };
@@ -668,7 +668,9 @@ impl Adhesive {
 }
 
 impl PointLaw for Adhesive {
-    const NAME: &'static str = "the adhesive law";
+    fn name(&self) -> &'static str {
+        "the adhesive law"
+    }
 
     fn nstatv(&self, _nfdir: usize) -> usize {
         CoulombState::NSTATV
@@ -677,6 +679,7 @@ impl PointLaw for Adhesive {
     fn update_point<const N: usize>(
         &self,
         inc: &Increment<N>,
+        _conditions: &Conditions,
         statev: &[f64],
     ) -> Result<PointAnswer<N>, LawError> {
         let up = self.update(inc, &CoulombState::from_statev(statev)?)?;

@@ -239,3 +239,39 @@ fn short_statev(n: usize, law: &str) -> LawError {
 pub(super) fn corrupt_statev() -> LawError {
     LawError::Input("STATEV(1..2) are not finite (state corrupted by the caller?)".into())
 }
+
+/// What a law may read at a point besides the increment ([`crate::laws::point_law::Needs`]
+/// says which): the mean surface temperature, the rotation of the tangent directions and the
+/// point's coordinates. Defaults: 0, no rotation, no coordinates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Conditions {
+    /// Average surface temperature θ̄ = (TEMP(1) + TEMP(2))/2 (read only with a temperature law).
+    pub temperature: f64,
+    /// Rotation increment of the tangent directions, `drot[a][b]` = DROT(a+1, b+1); applied to
+    /// the viscous stress kept in the state.
+    pub drot: [[f64; 2]; 2],
+    /// Coordinates of the contact point (`COORDS`, the first MCRD used); read only in
+    /// steady-state transport, for the radius R.
+    pub coords: [f64; 3],
+    /// How many of `coords` the host gave (MCRD, at most 3).
+    pub ncoords: usize,
+}
+
+impl Default for Conditions {
+    fn default() -> Self {
+        Conditions {
+            temperature: 0.0,
+            drot: [[1.0, 0.0], [0.0, 1.0]],
+            coords: [0.0; 3],
+            ncoords: 0,
+        }
+    }
+}
+
+/// θ̄, the temperature μ depends on: the mean of the two surfaces' temperatures
+/// (`TEMP(1)`, `TEMP(2)`), so each carries half of ∂τ/∂θ̄ (`ExtendedUpdate::ddtddt_column`).
+#[inline(always)]
+#[must_use]
+pub fn mean_surface_temperature([slave, master]: [f64; 2]) -> f64 {
+    0.5 * (slave + master)
+}

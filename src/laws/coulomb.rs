@@ -13,9 +13,11 @@
 //! increment held fixed.
 
 use super::contact::{
-    Contact, EntryFlag, Increment, PointState, StatusCode, Traction, corrupt_statev,
+    Conditions, Contact, EntryFlag, Increment, PointState, StatusCode, Traction, corrupt_statev,
 };
+use super::coulomb_extended::ExtendedCoulomb;
 use super::parameter_range::{nonnegative, positive};
+use super::point_law::{PointAnswer, PointLaw};
 use super::small_vec::{
     add, all_finite, diagonal, divided, dot, is_positive_normal, length_beyond, norm, scale, sum,
     transverse_projection, unit, unit_unless_infinite,
@@ -865,6 +867,43 @@ fn traction_probe<const N: usize>(t: &Traction<N>) -> f64 {
 #[inline(never)]
 fn overflowed() -> LawError {
     LawError::Numerical("the stress update overflowed (inputs too large for f64)".into())
+}
+
+/// Law 1's plain form behind the law interface (`fric_`'s checked path; its plain fast path
+/// calls [`Coulomb::try_update`] directly).
+impl PointLaw for Coulomb {
+    fn name(&self) -> &'static str {
+        "the Coulomb law"
+    }
+
+    fn nstatv(&self, _nfdir: usize) -> usize {
+        CoulombState::NSTATV
+    }
+
+    fn exact_stick(&self) -> bool {
+        true
+    }
+
+    fn update_point<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        _conditions: &Conditions,
+        statev: &[f64],
+    ) -> Result<PointAnswer<N>, LawError> {
+        let up = self.update(inc, &CoulombState::from_statev(statev)?)?;
+        let mut end = [0.0; CoulombState::NSTATV];
+        up.state.write_statev(&mut end);
+        // μ does not depend on temperature: ∂τ/∂θ̄ = 0.
+        Ok(PointAnswer::isothermal(
+            up.contact,
+            &end,
+            up.outcome.step_ratio,
+        ))
+    }
+
+    fn coefficients(&self, rate: f64, pressure: f64, temperature: f64) -> Option<[[f64; 2]; 4]> {
+        Some(ExtendedCoulomb::new(*self).coefficients(rate, pressure, temperature))
+    }
 }
 
 #[cfg(test)]

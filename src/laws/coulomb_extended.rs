@@ -27,12 +27,13 @@
 
 #![allow(clippy::needless_range_loop)] // index loops mirror the i, j of the seed's equations
 
-use super::contact::{Contact, EntryFlag, Increment, Traction};
+use super::contact::{Conditions, Contact, EntryFlag, Increment, Traction};
 use super::coulomb::{Coulomb, CoulombState, EXACT_STICK_TANGENT_FLOOR, StickMode};
 use super::friction_coefficient::{
     CoefficientLaw, Factor, RateFormulation, RateLaw, STICK_TEST_ROUNDING, decay_phi,
 };
 use super::parameter_range::positive;
+use super::point_law::{Needs, PointAnswer, PointLaw};
 use super::scalar_root::{RootFailure, bracketed_newton, halley_on_known_bracket};
 use super::small_vec::{all_finite, diagonal, dot, norm, scale, unit};
 use crate::{LawError, Outcome};
@@ -125,32 +126,6 @@ pub struct ExtendedCoulomb {
     general: bool,
     /// How a rate-dependent μ enters the return map (the earlier one only for comparisons).
     formulation: RateFormulation,
-}
-
-/// The extra inputs the extended law reads.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Conditions {
-    /// Average surface temperature θ̄ = (TEMP(1) + TEMP(2))/2 (read only with a temperature law).
-    pub temperature: f64,
-    /// Rotation increment of the tangent directions, `drot[a][b]` = DROT(a+1, b+1); applied to
-    /// the viscous stress kept in the state.
-    pub drot: [[f64; 2]; 2],
-    /// Coordinates of the contact point (`COORDS`, the first MCRD used); read only in
-    /// steady-state transport, for the radius R.
-    pub coords: [f64; 3],
-    /// How many of `coords` the host gave (MCRD, at most 3).
-    pub ncoords: usize,
-}
-
-impl Default for Conditions {
-    fn default() -> Self {
-        Conditions {
-            temperature: 0.0,
-            drot: [[1.0, 0.0], [0.0, 1.0]],
-            coords: [0.0; 3],
-            ncoords: 0,
-        }
-    }
 }
 
 /// State of the extended law: the Coulomb state plus, with damping, the viscous stress of the
@@ -1231,14 +1206,6 @@ impl<const N: usize> ExtendedState<N> {
     }
 }
 
-/// θ̄, the temperature μ depends on: the mean of the two surfaces' temperatures
-/// (`TEMP(1)`, `TEMP(2)`), so each carries half of ∂τ/∂θ̄ ([`ExtendedUpdate::ddtddt_column`]).
-#[inline(always)]
-#[must_use]
-pub fn mean_surface_temperature([slave, master]: [f64; 2]) -> f64 {
-    0.5 * (slave + master)
-}
-
 impl<const N: usize> ExtendedUpdate<N> {
     /// One column of `DDTDDT(NFDIR,2)`: θ̄ = (θ_slave + θ_master)/2, so each surface
     /// temperature carries half of ∂τ/∂θ̄ (both columns are this one).
@@ -1356,6 +1323,63 @@ pub(super) fn rate_slip_tangent<const N: usize>(
         }
     }
     ddtddg
+}
+
+/// Law 1's extended form behind the law interface (`fric_`'s checked and extended fast
+/// paths, `fric_coef_`).
+impl PointLaw for ExtendedCoulomb {
+    fn name(&self) -> &'static str {
+        if self.damping.is_some() {
+            "the Coulomb law with tangential damping"
+        } else {
+            "the Coulomb law"
+        }
+    }
+
+    fn nstatv(&self, nfdir: usize) -> usize {
+        ExtendedCoulomb::nstatv(self, nfdir)
+    }
+
+    fn exact_stick(&self) -> bool {
+        true
+    }
+
+    fn needs(&self, nfdir: usize) -> Needs {
+        Needs {
+            temperature: self.reads_temperature(),
+            // The viscous stress kept in STATEV turns with the tangent directions (3-D only).
+            rotation: self.damping.is_some() && nfdir == 2,
+            // Steady transport's radius R comes from the point's coordinates.
+            coordinates: self.transport.is_some(),
+        }
+    }
+
+    fn update_point<const N: usize>(
+        &self,
+        inc: &Increment<N>,
+        conditions: &Conditions,
+        statev: &[f64],
+    ) -> Result<PointAnswer<N>, LawError> {
+        let state = ExtendedState::<N>::from_statev(self, statev)?;
+        let up = self.update(inc, conditions, &state)?;
+        let mut end = [0.0; 5];
+        let end = up.state.to_statev(self, &mut end);
+        Ok(PointAnswer::new(
+            up.contact,
+            end,
+            up.ddtdtheta,
+            up.outcome.step_ratio,
+        ))
+    }
+
+    fn coefficients(&self, rate: f64, pressure: f64, temperature: f64) -> Option<[[f64; 2]; 4]> {
+        Some(ExtendedCoulomb::coefficients(
+            self,
+            rate,
+            pressure,
+            temperature,
+        ))
+    }
 }
 
 #[cfg(test)]

@@ -27,7 +27,7 @@
 //! local solve, and the consistent tangent (Eq. 5.2.3-3 of the source model) carries
 //! dμ/dV = ∂μ/∂V + ∂μ/∂θ·dθ/dV. `LM` is always 0 (no exact stick).
 
-use super::contact::{Contact, Increment, Traction};
+use super::contact::{Conditions, Contact, Increment, Traction};
 use super::coulomb::{Coulomb, CoulombState, FrictionStatus, StickMode, name_bad_input};
 use super::friction_coefficient::STICK_TEST_ROUNDING;
 use super::point_law::{PointAnswer, PointLaw};
@@ -448,7 +448,9 @@ impl RateState {
 }
 
 impl PointLaw for RateState {
-    const NAME: &'static str = "the rate-and-state law";
+    fn name(&self) -> &'static str {
+        "the rate-and-state law"
+    }
 
     fn nstatv(&self, _nfdir: usize) -> usize {
         RateStateState::NSTATV
@@ -457,6 +459,7 @@ impl PointLaw for RateState {
     fn update_point<const N: usize>(
         &self,
         inc: &Increment<N>,
+        _conditions: &Conditions,
         statev: &[f64],
     ) -> Result<PointAnswer<N>, LawError> {
         let up = self.update(

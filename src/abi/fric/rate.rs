@@ -12,8 +12,9 @@ use std::ffi::c_int;
 
 use super::{FricArgs, get};
 use crate::laws::contact::EntryFlag;
+use crate::laws::contact::mean_surface_temperature;
 use crate::laws::coulomb::CoulombState;
-use crate::laws::coulomb_extended::{ExtendedCoulomb, ExtendedState, mean_surface_temperature};
+use crate::laws::coulomb_extended::{ExtendedCoulomb, ExtendedState};
 use crate::props::{COULOMB_EXTENDED_NPROPS, fast_decay_lean};
 
 impl FricArgs {

@@ -5,9 +5,10 @@
 
 use proptest::prelude::*;
 
+use crate::laws::contact::Conditions;
 use crate::laws::contact::{Contact, Increment};
 use crate::laws::coulomb::{Coulomb, CoulombState, StickMode};
-use crate::laws::coulomb_extended::{Conditions, ExtendedCoulomb, ExtendedState, Hht};
+use crate::laws::coulomb_extended::{ExtendedCoulomb, ExtendedState, Hht};
 use crate::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
 
 /// Elastic stick with μ, γ_crit = 10⁻³ and, when `tau_max` > 0, that shear limit.
