@@ -346,38 +346,39 @@ fn lookup<'a, T: 'a>(
 }
 
 /// The μ table of `name` (a Fortran name) from the process-wide configuration, or why there is
-/// none.
+/// none (the caller says which `PROPS` asked for it).
 pub(crate) fn friction_table_for(name: &[u8]) -> Result<&'static FrictionTable, LawError> {
-    let cfg = global().as_ref().map_err(|m| {
-        LawError::Config(format!(
-            "PROPS(8) = 2 (μ table) needs the configuration file: {m}"
-        ))
-    })?;
-    cfg.friction_table(name).ok_or_else(|| {
-        let shown = String::from_utf8_lossy(trim_fortran_name(name));
-        LawError::Parameter(format!(
-            "PROPS(8) = 2 (μ table) but {} has no [interactions.{}.friction] (and no \"*\" \
-             entry)",
-            cfg.path(),
-            toml_key(&shown)
-        ))
-    })
+    interaction_entry(name, "a μ table", "friction", Config::friction_table)
 }
 
 /// The frictional heating law of `name` (a Fortran name) from the process-wide configuration,
 /// or why there is none (`fricheat_`, the CalculiX variant's).
 #[cfg(feature = "calculix")]
 pub(crate) fn frictional_heat_for(name: &[u8]) -> Result<&'static FrictionalHeat, LawError> {
-    let cfg = global().as_ref().map_err(|m| {
-        LawError::Config(format!(
-            "frictional heating needs the configuration file: {m}"
-        ))
-    })?;
-    cfg.frictional_heat(name).ok_or_else(|| {
+    interaction_entry(
+        name,
+        "*GAP HEAT GENERATION, USER",
+        "heat",
+        Config::frictional_heat,
+    )
+}
+
+/// The entry `[interactions.NAME.section]` of interaction `name` (a Fortran name) that `find`
+/// looks up in the process-wide configuration, or why there is none: no configuration file,
+/// or no such entry (`what` says what asked for it).
+fn interaction_entry<T: ?Sized>(
+    name: &[u8],
+    what: &str,
+    section: &str,
+    find: impl FnOnce(&'static Config, &[u8]) -> Option<&'static T>,
+) -> Result<&'static T, LawError> {
+    let cfg = global()
+        .as_ref()
+        .map_err(|m| LawError::Config(format!("{what} needs the configuration file: {m}")))?;
+    find(cfg, name).ok_or_else(|| {
         let shown = String::from_utf8_lossy(trim_fortran_name(name));
         LawError::Parameter(format!(
-            "*GAP HEAT GENERATION, USER but {} has no [interactions.{}.heat] (and no \"*\" \
-             entry)",
+            "{what} but {} has no [interactions.{}.{section}] (and no \"*\" entry)",
             cfg.path(),
             toml_key(&shown)
         ))

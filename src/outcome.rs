@@ -61,3 +61,16 @@ impl fmt::Display for LawError {
 }
 
 impl std::error::Error for LawError {}
+
+impl LawError {
+    /// The same error with `what` (the input that led to it) before its text.
+    #[must_use]
+    pub fn said_of(self, what: &str) -> Self {
+        match self {
+            LawError::Parameter(m) => LawError::Parameter(format!("{what}: {m}")),
+            LawError::Config(m) => LawError::Config(format!("{what}: {m}")),
+            LawError::Input(m) => LawError::Input(format!("{what}: {m}")),
+            LawError::Numerical(m) => LawError::Numerical(format!("{what}: {m}")),
+        }
+    }
+}

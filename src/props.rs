@@ -5,11 +5,10 @@
 //! into a typed, validated law; `docs/props.md` is generated from the same layouts.
 
 use crate::LawError;
-use crate::laws::contact::{Conditions, Increment};
 use crate::laws::coulomb::Coulomb;
 use crate::laws::coulomb_extended::ExtendedCoulomb;
 use crate::laws::friction_table::FrictionTable;
-use crate::laws::point_law::{Needs, PointAnswer, PointLaw};
+use crate::laws::point_law::{Needs, PointInput, PointLaw, PointLawTask, PointResult};
 use crate::laws::rate_state::RateState;
 use crate::switch::Path;
 
@@ -62,6 +61,17 @@ impl FrictionLaw {
             }
             FrictionLaw::Adhesive(_) => "PROPS(1) = 2 (adhesive law)",
             FrictionLaw::RateState(_) => "PROPS(1) = 3 (rate-and-state law)",
+        }
+    }
+
+    /// `task` run with the law this holds, as its own type (one match; static dispatch).
+    #[inline(always)]
+    pub fn run_with<T: PointLawTask>(&self, task: T) -> T::Output {
+        match self {
+            FrictionLaw::Coulomb(law) => task.run(law),
+            FrictionLaw::CoulombExtended(law) => task.run(law),
+            FrictionLaw::Adhesive(a) => task.run(&a.law),
+            FrictionLaw::RateState(law) => task.run(law),
         }
     }
 
@@ -135,17 +145,12 @@ impl PointLaw for FrictionLaw {
         }
     }
 
-    fn update_point<const N: usize>(
-        &self,
-        inc: &Increment<N>,
-        conditions: &Conditions,
-        statev: &[f64],
-    ) -> Result<PointAnswer<N>, LawError> {
+    fn update_point<const N: usize>(&self, at: &PointInput<'_, N>) -> PointResult<N> {
         match self {
-            FrictionLaw::Coulomb(law) => law.update_point(inc, conditions, statev),
-            FrictionLaw::CoulombExtended(law) => law.update_point(inc, conditions, statev),
-            FrictionLaw::Adhesive(a) => a.law.update_point(inc, conditions, statev),
-            FrictionLaw::RateState(law) => law.update_point(inc, conditions, statev),
+            FrictionLaw::Coulomb(law) => law.update_point(at),
+            FrictionLaw::CoulombExtended(law) => law.update_point(at),
+            FrictionLaw::Adhesive(a) => a.law.update_point(at),
+            FrictionLaw::RateState(law) => law.update_point(at),
         }
     }
 
@@ -277,7 +282,8 @@ pub fn friction_law_with_table(
     table: impl FnOnce() -> Result<&'static FrictionTable, LawError>,
 ) -> Result<FrictionLaw, LawError> {
     if props.first() == Some(&f64::from(LAW_COULOMB)) && coulomb::selects_mu_table(props) {
-        coulomb_extended_with_table(props, Some(table()?))
+        let table = table().map_err(|e| e.said_of("PROPS(8) = 2"))?;
+        coulomb_extended_with_table(props, Some(table))
     } else {
         friction_law(props)
     }

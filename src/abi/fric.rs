@@ -13,7 +13,7 @@ use crate::LawError;
 use crate::config::friction_table_for;
 use crate::laws::contact::{Conditions, Contact, EntryFlag, Increment, mean_surface_temperature};
 use crate::laws::coulomb::{Coulomb, CoulombState, StickMode};
-use crate::laws::point_law::{Needs, PointLaw};
+use crate::laws::point_law::{Needs, PointInput, PointLaw, PointLawTask};
 use crate::props::{fast_extended_coulomb, fast_plain_coulomb, friction_law_with_table};
 use crate::report::Site;
 
@@ -421,14 +421,27 @@ impl FricArgs {
             if let Some(law) = fast_extended_coulomb(props) {
                 return self.on_nfdir(&law, entry);
             }
-            // The μ table (law 1's, when its PROPS ask for one) is the interaction's, from the
-            // configuration file. A NULL name or an implausible hidden length (an address) reads
-            // as no name.
-            let law = friction_law_with_table(props, || {
-                friction_table_for(fortran_name_bytes(self.ciname, self.ciname_len))
-            })?;
-            self.on_nfdir(&law, entry)
+            self.any_law(props, entry)
         }
+    }
+
+    /// Every other law and layout: the law from the `PROPS` layer (its other fast layouts,
+    /// then the checked parsers, which name the entry), then one point with that law's own
+    /// type. Out of line, so that `fric_general` keeps the decay law's lean path compact (in
+    /// line it cost that path 20 instructions per call, bench_rate).
+    ///
+    /// # Safety
+    /// As `fric_`.
+    #[inline(never)]
+    unsafe fn any_law(&self, props: &[f64], entry: EntryFlag) -> Result<(), LawError> {
+        // The μ table (law 1's, when its PROPS ask for one) is the interaction's, from the
+        // configuration file. A NULL name or an implausible hidden length (an address) reads
+        // as no name.
+        // SAFETY: CINAME of its hidden length or NULL, per the FRIC contract.
+        let law = friction_law_with_table(props, || unsafe {
+            friction_table_for(fortran_name_bytes(self.ciname, self.ciname_len))
+        })?;
+        law.run_with(OnePoint { args: self, entry })
     }
 
     /// Reads `NFDIR` (1 or 2) and runs the point with N = NFDIR.
@@ -475,7 +488,12 @@ impl FricArgs {
             };
             let inc = self.increment::<N, LawError>(entry)?;
             let conditions = self.conditions::<N>(law.needs(N))?;
-            let up = law.update_point(&inc, &conditions, slice(self.statev, nstatv, "STATEV")?)?;
+            let statev = slice(self.statev, nstatv, "STATEV")?;
+            let up = law.update_point(&PointInput {
+                increment: &inc,
+                conditions: &conditions,
+                statev,
+            })?;
             let half = up.dtau_dtheta.map(|d| 0.5 * d);
             self.write_answer(&up.contact, &up.statev[..up.statev_len], &half);
             self.lower_pnewdt(up.step_ratio);
@@ -554,6 +572,27 @@ impl FricArgs {
             );
             host_site("FRIC", self.ciname, self.ciname_len, place)
         }
+    }
+}
+
+/// `fric_`'s checked path for whichever law `PROPS` select, compiled once per law
+/// ([`PointLawTask`]: one match on the law enum, then the law's own type, as a direct call
+/// would be; through the enum's own `PointLaw` methods the adhesive law cost 14 % more
+/// instructions per call, bench_adhesive law 4).
+struct OnePoint<'a> {
+    /// The host's arguments, valid per `fric_`'s contract (a `OnePoint` is made only inside
+    /// `fric_`'s call).
+    args: &'a FricArgs,
+    entry: EntryFlag,
+}
+
+impl PointLawTask for OnePoint<'_> {
+    type Output = Result<(), LawError>;
+
+    #[inline(always)]
+    fn run<L: PointLaw>(self, law: &L) -> Self::Output {
+        // SAFETY: the pointers of `fric_`'s call, valid per its contract (see the field).
+        unsafe { self.args.on_nfdir(law, self.entry) }
     }
 }
 

@@ -29,13 +29,13 @@
 //! With S_a = k_μ = v_½ = 0 and μ_s = μ_d the law is plain Coulomb; [`Adhesive::coulomb_special_case`]
 //! returns that law so the entry points run the Coulomb code itself (same results, same cost).
 
-use super::contact::{Conditions, Increment, Traction};
+use super::contact::{Increment, Traction};
 use super::coulomb::{
     Coulomb, CoulombState, CriticalSlip, FrictionStatus, StickMode, Update, name_bad_input,
 };
 use super::friction_coefficient::{RateFormulation, STICK_TEST_ROUNDING};
 use super::parameter_range::nonnegative;
-use super::point_law::{PointAnswer, PointLaw};
+use super::point_law::{PointAnswer, PointInput, PointLaw, PointResult};
 use super::small_vec::{add, all_finite, diagonal, norm, radial_transverse, scale, unit};
 use crate::{LawError, Outcome};
 
@@ -672,22 +672,11 @@ impl PointLaw for Adhesive {
         "the adhesive law"
     }
 
-    fn nstatv(&self, _nfdir: usize) -> usize {
-        CoulombState::NSTATV
-    }
-
-    fn update_point<const N: usize>(
-        &self,
-        inc: &Increment<N>,
-        _conditions: &Conditions,
-        statev: &[f64],
-    ) -> Result<PointAnswer<N>, LawError> {
-        let up = self.update(inc, &CoulombState::from_statev(statev)?)?;
-        let mut end = [0.0; CoulombState::NSTATV];
-        up.state.write_statev(&mut end);
+    fn update_point<const N: usize>(&self, at: &PointInput<'_, N>) -> PointResult<N> {
+        let up = self.update(at.increment, &CoulombState::from_statev(at.statev)?)?;
         Ok(PointAnswer::isothermal(
             up.contact,
-            &end,
+            &up.state,
             up.outcome.step_ratio,
         ))
     }

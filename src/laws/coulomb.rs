@@ -13,14 +13,14 @@
 //! increment held fixed.
 
 use super::contact::{
-    Conditions, Contact, EntryFlag, Increment, PointState, StatusCode, Traction, corrupt_statev,
+    Contact, EntryFlag, Increment, PointState, StatusCode, Traction, corrupt_statev,
 };
 use super::coulomb_extended::ExtendedCoulomb;
 use super::parameter_range::{nonnegative, positive};
-use super::point_law::{PointAnswer, PointLaw};
+use super::point_law::{PointAnswer, PointInput, PointLaw, PointResult};
 use super::small_vec::{
     add, all_finite, diagonal, divided, dot, is_positive_normal, length_beyond, norm, scale, sum,
-    transverse_projection, unit, unit_unless_infinite,
+    transverse_projection, unit_or_zero, unit_unless_infinite,
 };
 use crate::{LawError, Outcome};
 
@@ -689,12 +689,7 @@ impl Coulomb {
                 }
             }
         };
-        let source_eq = norm(&direction_source);
-        let n = if source_eq > 0.0 {
-            unit(&direction_source, source_eq)
-        } else {
-            [0.0; N]
-        };
+        let n = unit_or_zero(&direction_source);
         let slip_eq = norm(&inc.dgam);
         let tau = scale(&n, tau_crit);
         let floor = EXACT_STICK_TANGENT_FLOOR * gamma_crit;
@@ -876,27 +871,16 @@ impl PointLaw for Coulomb {
         "the Coulomb law"
     }
 
-    fn nstatv(&self, _nfdir: usize) -> usize {
-        CoulombState::NSTATV
-    }
-
     fn exact_stick(&self) -> bool {
         true
     }
 
-    fn update_point<const N: usize>(
-        &self,
-        inc: &Increment<N>,
-        _conditions: &Conditions,
-        statev: &[f64],
-    ) -> Result<PointAnswer<N>, LawError> {
-        let up = self.update(inc, &CoulombState::from_statev(statev)?)?;
-        let mut end = [0.0; CoulombState::NSTATV];
-        up.state.write_statev(&mut end);
+    fn update_point<const N: usize>(&self, at: &PointInput<'_, N>) -> PointResult<N> {
+        let up = self.update(at.increment, &CoulombState::from_statev(at.statev)?)?;
         // μ does not depend on temperature: ∂τ/∂θ̄ = 0.
         Ok(PointAnswer::isothermal(
             up.contact,
-            &end,
+            &up.state,
             up.outcome.step_ratio,
         ))
     }

@@ -33,9 +33,9 @@ use super::friction_coefficient::{
     CoefficientLaw, Factor, RateFormulation, RateLaw, STICK_TEST_ROUNDING, decay_phi,
 };
 use super::parameter_range::positive;
-use super::point_law::{Needs, PointAnswer, PointLaw};
+use super::point_law::{Needs, PointAnswer, PointInput, PointLaw, PointResult};
 use super::scalar_root::{RootFailure, bracketed_newton, halley_on_known_bracket};
-use super::small_vec::{all_finite, diagonal, dot, norm, scale, unit};
+use super::small_vec::{all_finite, diagonal, dot, norm, scale, unit, unit_or_zero};
 use crate::{LawError, Outcome};
 
 mod damping;
@@ -943,12 +943,7 @@ impl ExtendedCoulomb {
                 if norm(&s.dgam) > 0.0 { s.dgam } else { s.tau }
             }
         };
-        let source_eq = norm(&direction_source);
-        let n = if source_eq > 0.0 {
-            unit(&direction_source, source_eq)
-        } else {
-            [0.0; N]
-        };
+        let n = unit_or_zero(&direction_source);
         // All relative motion is slip: s = |Δγ̄|, γ̇ = s/Δt.
         let slip_eq = norm(&s.dgam);
         let rate_law = self.coefficient.is_rate_dependent() && !frozen;
@@ -1354,14 +1349,9 @@ impl PointLaw for ExtendedCoulomb {
         }
     }
 
-    fn update_point<const N: usize>(
-        &self,
-        inc: &Increment<N>,
-        conditions: &Conditions,
-        statev: &[f64],
-    ) -> Result<PointAnswer<N>, LawError> {
-        let state = ExtendedState::<N>::from_statev(self, statev)?;
-        let up = self.update(inc, conditions, &state)?;
+    fn update_point<const N: usize>(&self, at: &PointInput<'_, N>) -> PointResult<N> {
+        let state = ExtendedState::<N>::from_statev(self, at.statev)?;
+        let up = self.update(at.increment, at.conditions, &state)?;
         let mut end = [0.0; 5];
         let end = up.state.to_statev(self, &mut end);
         Ok(PointAnswer::new(

@@ -6,7 +6,8 @@
 //! [`Needs`], calls [`PointLaw::update_point`] through the law enum (static dispatch, no
 //! `dyn`), and writes the answer; it knows no law. docs/architecture.md, "Adding a law".
 
-use super::contact::{Conditions, Contact, Increment};
+use super::contact::{Conditions, Contact, Increment, PointState, StatusCode};
+use super::coulomb::FrictionStatus;
 use crate::LawError;
 
 /// The largest `STATEV` a law behind [`PointLaw`] writes.
@@ -28,14 +29,23 @@ pub struct PointAnswer<const N: usize> {
 }
 
 impl<const N: usize> PointAnswer<N> {
-    /// The answer of a law that does not depend on temperature: `statev` is the end state's
-    /// `STATEV` (at most [`MAX_POINT_STATEV`] entries, a law's own constant).
+    /// The answer of a law that does not depend on temperature (∂τ/∂θ̄ = 0), with the end
+    /// state `state`.
     #[must_use]
-    pub fn isothermal(contact: Contact<N>, statev: &[f64], step_ratio: f64) -> Self {
-        Self::new(contact, statev, [0.0; N], step_ratio)
+    pub fn isothermal(contact: Contact<N>, state: &impl EndState, step_ratio: f64) -> Self {
+        let mut statev = [0.0; MAX_POINT_STATEV];
+        state.write_statev(&mut statev);
+        PointAnswer {
+            contact,
+            statev,
+            statev_len: state.statev_len(),
+            dtau_dtheta: [0.0; N],
+            step_ratio,
+        }
     }
 
-    /// The answer with ∂τ/∂θ̄ = `dtau_dtheta`; `statev` as in [`Self::isothermal`].
+    /// The answer with ∂τ/∂θ̄ = `dtau_dtheta` and the end state's `STATEV` `statev` (at most
+    /// [`MAX_POINT_STATEV`] entries).
     #[must_use]
     pub fn new(
         contact: Contact<N>,
@@ -52,6 +62,39 @@ impl<const N: usize> PointAnswer<N> {
             dtau_dtheta,
             step_ratio,
         }
+    }
+}
+
+/// One point's input: the increment, the conditions the law [`PointLaw::needs`], and the start
+/// state (`STATEV`, at least [`PointLaw::nstatv`] entries).
+#[derive(Clone, Copy, Debug)]
+pub struct PointInput<'a, const N: usize> {
+    /// The increment.
+    pub increment: &'a Increment<N>,
+    /// What the law asked for besides the increment (defaults elsewhere).
+    pub conditions: &'a Conditions,
+    /// `STATEV(1..NSTATV)` at the start of the increment.
+    pub statev: &'a [f64],
+}
+
+/// A point's answer, or the law's refusal with its cause.
+pub type PointResult<const N: usize> = Result<PointAnswer<N>, LawError>;
+
+/// A law's end state as `STATEV` holds it.
+pub trait EndState {
+    /// How many `STATEV` entries it writes (at most [`MAX_POINT_STATEV`]).
+    fn statev_len(&self) -> usize;
+    /// Writes them into `statev(1..)`.
+    fn write_statev(&self, statev: &mut [f64]);
+}
+
+impl<S: StatusCode> EndState for PointState<S> {
+    fn statev_len(&self) -> usize {
+        Self::NSTATV
+    }
+
+    fn write_statev(&self, statev: &mut [f64]) {
+        PointState::write_statev(self, statev);
     }
 }
 
@@ -75,8 +118,11 @@ pub trait PointLaw {
     fn name(&self) -> &'static str;
 
     /// `STATEV` entries the law reads and writes with `NFDIR` = `nfdir` (at most
-    /// [`MAX_POINT_STATEV`]).
-    fn nstatv(&self, nfdir: usize) -> usize;
+    /// [`MAX_POINT_STATEV`]); the default is the three scalars of a [`PointState`]
+    /// (accumulated slip, slip rate, status) that most laws keep.
+    fn nstatv(&self, _nfdir: usize) -> usize {
+        PointState::<FrictionStatus>::NSTATV
+    }
 
     /// Whether the law answers exact stick (`LM = 1`); when not (the default), an `LM = 1` on
     /// entry reads as 0 and the answer is always `LM = 0`.
@@ -89,14 +135,8 @@ pub trait PointLaw {
         Needs::default()
     }
 
-    /// One increment: `statev` holds at least [`Self::nstatv`] entries (the start state);
-    /// `conditions` holds what [`Self::needs`] asked for.
-    fn update_point<const N: usize>(
-        &self,
-        inc: &Increment<N>,
-        conditions: &Conditions,
-        statev: &[f64],
-    ) -> Result<PointAnswer<N>, LawError>;
+    /// One increment at the point `at`.
+    fn update_point<const N: usize>(&self, at: &PointInput<'_, N>) -> PointResult<N>;
 
     /// `FRIC_COEF`'s answer at one point: `[μ, ∂μ/∂γ̇_eq, ∂μ/∂p, ∂μ/∂θ̄]`, each for the two
     /// directions, at slip rate `rate` ≥ 0, pressure `pressure` ≥ 0 and temperature
@@ -106,4 +146,16 @@ pub trait PointLaw {
     fn coefficients(&self, _rate: f64, _pressure: f64, _temperature: f64) -> Option<[[f64; 2]; 4]> {
         None
     }
+}
+
+/// Work to do with whichever law an enum of laws holds, as that law's own type: the enum's
+/// `run_with` matches once and calls [`PointLawTask::run`] with the variant, so the work is
+/// compiled once per law (static dispatch; `fric_`'s checked path is one such task). For work
+/// that is not on a hot path, the enum implements [`PointLaw`] itself.
+pub trait PointLawTask {
+    /// What the work gives back.
+    type Output;
+
+    /// The work, with the law.
+    fn run<L: PointLaw>(self, law: &L) -> Self::Output;
 }

@@ -27,10 +27,10 @@
 //! local solve, and the consistent tangent (Eq. 5.2.3-3 of the source model) carries
 //! dμ/dV = ∂μ/∂V + ∂μ/∂θ·dθ/dV. `LM` is always 0 (no exact stick).
 
-use super::contact::{Conditions, Contact, Increment, Traction};
+use super::contact::{Contact, Increment, Traction};
 use super::coulomb::{Coulomb, CoulombState, FrictionStatus, StickMode, name_bad_input};
 use super::friction_coefficient::STICK_TEST_ROUNDING;
-use super::point_law::{PointAnswer, PointLaw};
+use super::point_law::{EndState, PointAnswer, PointInput, PointLaw, PointResult};
 use super::small_vec::{all_finite, diagonal, norm, radial_transverse, scale, unit};
 use crate::{LawError, Outcome};
 
@@ -456,23 +456,24 @@ impl PointLaw for RateState {
         RateStateState::NSTATV
     }
 
-    fn update_point<const N: usize>(
-        &self,
-        inc: &Increment<N>,
-        _conditions: &Conditions,
-        statev: &[f64],
-    ) -> Result<PointAnswer<N>, LawError> {
-        let up = self.update(
-            inc,
-            &RateStateState::from_statev(statev, self.theta_initial)?,
-        )?;
-        let mut end = [0.0; RateStateState::NSTATV];
-        up.state.write_statev(&mut end);
+    fn update_point<const N: usize>(&self, at: &PointInput<'_, N>) -> PointResult<N> {
+        let start = RateStateState::from_statev(at.statev, self.theta_initial)?;
+        let up = self.update(at.increment, &start)?;
         Ok(PointAnswer::isothermal(
             up.contact,
-            &end,
+            &up.state,
             up.outcome.step_ratio,
         ))
+    }
+}
+
+impl EndState for RateStateState {
+    fn statev_len(&self) -> usize {
+        Self::NSTATV
+    }
+
+    fn write_statev(&self, statev: &mut [f64]) {
+        RateStateState::write_statev(self, statev);
     }
 }
 

@@ -106,6 +106,15 @@ pub(crate) fn unit<const N: usize>(v: &[f64; N], len: f64) -> [f64; N] {
     divided(v, len)
 }
 
+/// The unit vector along `v`, or 0 when `v` = 0 (a direction that the motion does not give:
+/// exact stick's slip out of a held point that did not move).
+#[inline(always)]
+#[must_use]
+pub(crate) fn unit_or_zero<const N: usize>(v: &[f64; N]) -> [f64; N] {
+    let len = norm(v);
+    if len > 0.0 { unit(v, len) } else { [0.0; N] }
+}
+
 /// [`unit()`] for a caller that refuses its results when `len` is infinite (the elastic-stick
 /// slip, whose slip increment is then infinite): one comparison instead of the range test.
 #[inline(always)]
