@@ -71,6 +71,13 @@ struct Deck {
 }
 
 fn decks() -> Vec<Deck> {
+    // Law 1's exponential decay, through FRIC and through FRIC_COEF.
+    let decay = CoulombBuilder::new()
+        .mu(0.6)
+        .mu_law(1.0)
+        .mu_k(0.3)
+        .decay(4.0)
+        .build_first(10);
     vec![
         Deck {
             file: "abaqus_fric_coulomb.inp",
@@ -96,15 +103,7 @@ fn decks() -> Vec<Deck> {
             routine: Routine::Fric,
             interaction: "SI_DECAY",
             depvar: Some(3),
-            props: Some((
-                &COULOMB,
-                CoulombBuilder::new()
-                    .mu(0.6)
-                    .mu_law(1.0)
-                    .mu_k(0.3)
-                    .decay(4.0)
-                    .build_first(10),
-            )),
+            props: Some((&COULOMB, decay.clone())),
             notes: &[
                 "Law 1 with mu = mu_k + (mu_s - mu_k) exp(-d_c v): mu_s = 0.6, mu_k = 0.3, d_c = 4;",
                 "PROPS(11..20) left out (PROPERTIES=10): they take their documented defaults.",
@@ -188,15 +187,7 @@ fn decks() -> Vec<Deck> {
             routine: Routine::FricCoef,
             interaction: "SI_COEF",
             depvar: None,
-            props: Some((
-                &COULOMB,
-                CoulombBuilder::new()
-                    .mu(0.6)
-                    .mu_law(1.0)
-                    .mu_k(0.3)
-                    .decay(4.0)
-                    .build_first(10),
-            )),
+            props: Some((&COULOMB, decay.clone())),
             notes: &[
                 "Abaqus keeps its own Coulomb model and asks FRIC_COEF for mu and its derivatives;",
                 "law 1's mu entries apply (here the exponential decay). FRIC_COEF has no DEPVAR.",
@@ -813,54 +804,38 @@ fn a_bad_fragment_is_refused() {
     let config = example_config();
     let all = decks();
     let by_file = |f: &str| all.iter().find(|d| d.file == f).expect("a fragment");
-    let coulomb = render(by_file("abaqus_fric_coulomb.inp"));
-    let rate_state = render(by_file("abaqus_fric_rate_state.inp"));
-    let uinter = render(by_file("abaqus_uinter_adhesive.inp"));
+    // Each fragment with its routine and interaction name.
+    #[rustfmt::skip]
+    let [coulomb, rate_state, uinter] = [
+        (Routine::Fric, "SI_COULOMB", "abaqus_fric_coulomb.inp"),
+        (Routine::Fric, "SI_RATE_STATE", "abaqus_fric_rate_state.inp"),
+        (Routine::Uinter, "SI_ADHESIVE", "abaqus_uinter_adhesive.inp"),
+    ]
+    .map(|(routine, name, file)| (routine, name, render(by_file(file))));
     let gapcon = render(by_file("abaqus_gapcon.inp"));
     // Each case under its own interaction name: a refused configuration is remembered per
-    // interaction, and the good fragments run in the same process.
-    let cases: Vec<(Routine, String, &str)> = vec![
-        (
-            Routine::Fric,
-            coulomb
-                .replace("SI_COULOMB", "BAD_COUNT")
-                .replace("PROPERTIES=7", "PROPERTIES=8"),
-            "PROPERTIES=8 but 7",
-        ),
-        (
-            Routine::Fric,
-            coulomb
-                .replace("SI_COULOMB", "BAD_MU")
-                .replace("1., 0.3,", "1., -0.3,"),
-            "PROPS(2)",
-        ),
-        (
-            Routine::Fric,
-            coulomb
-                .replace("SI_COULOMB", "BAD_DEPVAR")
-                .replace("DEPVAR=3", "DEPVAR=2"),
-            "NSTATV",
-        ),
-        (
-            Routine::Fric,
-            rate_state
-                .replace("SI_RATE_STATE", "BAD_RATE_STATE_DEPVAR")
-                .replace("DEPVAR=4", "DEPVAR=3"),
-            "NSTATV = 3",
-        ),
-        (
-            Routine::Uinter,
-            uinter
-                .replace("SI_ADHESIVE", "BAD_KN")
-                .replace(", 1000000.\n", ", 0.\n"),
-            "K_n > 0",
-        ),
-        (
-            Routine::Gapcon,
-            gapcon.replace("SI_THERMAL", "NO_SUCH_INTERACTION"),
-            "no conductance law",
-        ),
+    // interaction, and the good fragments run in the same process. (fragment, its new name, a
+    // text edited from → to, the reason the refusal must give.)
+    #[rustfmt::skip]
+    let edits = [
+        (&coulomb, "BAD_COUNT", "PROPERTIES=7", "PROPERTIES=8", "PROPERTIES=8 but 7"),
+        (&coulomb, "BAD_MU", "1., 0.3,", "1., -0.3,", "PROPS(2)"),
+        (&coulomb, "BAD_DEPVAR", "DEPVAR=3", "DEPVAR=2", "NSTATV"),
+        (&rate_state, "BAD_RATE_STATE_DEPVAR", "DEPVAR=4", "DEPVAR=3", "NSTATV = 3"),
+        (&uinter, "BAD_KN", ", 1000000.\n", ", 0.\n", "K_n > 0"),
     ];
+    let mut cases: Vec<(Routine, String, &str)> = edits
+        .iter()
+        .map(|((routine, name, text), bad_name, from, to, reason)| {
+            let edited = text.replace(name, bad_name).replace(from, to);
+            (*routine, edited, *reason)
+        })
+        .collect();
+    cases.push((
+        Routine::Gapcon,
+        gapcon.replace("SI_THERMAL", "NO_SUCH_INTERACTION"),
+        "no conductance law",
+    ));
     for (routine, text, reason) in cases {
         match validate(routine, &text, &config) {
             Ok(()) => panic!("accepted:\n{text}"),

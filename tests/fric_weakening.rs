@@ -7,6 +7,10 @@
 //! open point through `uinter_` is not bonded. Every expected value is a closed form of the law
 //! (μ(v)·p, S_slide(v), μ_s·p + S_a) or a difference of our own outputs.
 
+#[path = "common/central.rs"]
+mod central;
+
+use central::{move_press, sides, slope};
 use interfacial::abi::host::FricCall;
 use interfacial::abi::uinter_host::UinterCall;
 use interfacial::laws::contact::Conditions;
@@ -455,6 +459,24 @@ fn a_velocity_step_settles_at_once() {
     }
 }
 
+/// The decay law μ_s → `mu_k` over `d_c` (γ_crit absolute, an optional shear limit τ_max) in
+/// the earlier formulation, the rate-free stick stiffness (Rust API only).
+fn earlier_formulation(mu_k: f64, d_c: f64, tau_max: Option<f64>) -> ExtendedCoulomb {
+    let mut base = Coulomb::new(MU_S)
+        .and_then(|c| c.with_critical_slip_absolute(GAMMA_CRIT))
+        .unwrap();
+    if let Some(tau_max) = tau_max {
+        base = base.with_shear_limit(tau_max).unwrap();
+    }
+    ExtendedCoulomb::new(base)
+        .with_coefficient_law(
+            CoefficientLaw::default()
+                .with_exponential_decay(mu_k / MU_S, d_c)
+                .unwrap(),
+        )
+        .with_rate_formulation(RateFormulation::RateFreeStiffness)
+}
+
 /// The earlier formulation (kept only for comparison, Rust API): with the rate-free stick
 /// stiffness the issue's case cycles instead of sliding. This is the behaviour the tests above
 /// would catch if it came back as the default.
@@ -462,17 +484,7 @@ fn a_velocity_step_settles_at_once() {
 fn the_earlier_formulation_cycles_on_the_issue_case() {
     let d_c = 200.0;
     let v = 3.0 / d_c;
-    let law = ExtendedCoulomb::new(
-        Coulomb::new(MU_S)
-            .and_then(|c| c.with_critical_slip_absolute(GAMMA_CRIT))
-            .unwrap(),
-    )
-    .with_coefficient_law(
-        CoefficientLaw::default()
-            .with_exponential_decay(MU_K / MU_S, d_c)
-            .unwrap(),
-    )
-    .with_rate_formulation(RateFormulation::RateFreeStiffness);
+    let law = earlier_formulation(MU_K, d_c, None);
     let dgam = 0.25 * GAMMA_CRIT;
     let mut tau = 0.0;
     let mut state = ExtendedState::<1>::default();
@@ -514,15 +526,11 @@ fn check_tangents(call: &FricCall, what: &str) {
     let scale = (0..n).map(|a| base.tau[a].abs()).fold(1.0f64, f64::max);
     for b in 0..n {
         let h = 1e-7 * GAMMA_CRIT;
-        let (mut plus, mut minus) = (call.clone(), call.clone());
-        plus.dgam[b] += h;
-        minus.dgam[b] -= h;
-        plus.call();
-        minus.call();
+        let (plus, minus) = sides(call, h, |c, h| c.dgam[b] += h);
         assert_eq!(plus.statev[2], base.statev[2], "{what}: branch changed");
         assert_eq!(minus.statev[2], base.statev[2], "{what}: branch changed");
         for a in 0..n {
-            let fd = (plus.tau[a] - minus.tau[a]) / (2.0 * h);
+            let fd = slope(&plus, &minus, a, h);
             let k_scale = scale / GAMMA_CRIT;
             assert!(
                 (fd - base.ddtddg(a, b)).abs() <= 1e-5 * k_scale,
@@ -532,15 +540,9 @@ fn check_tangents(call: &FricCall, what: &str) {
         }
     }
     let h = 1e-6 * P;
-    let (mut plus, mut minus) = (call.clone(), call.clone());
-    plus.press += h;
-    plus.dpress += h;
-    minus.press -= h;
-    minus.dpress -= h;
-    plus.call();
-    minus.call();
+    let (plus, minus) = sides(call, h, move_press);
     for a in 0..n {
-        let fd = (plus.tau[a] - minus.tau[a]) / (2.0 * h);
+        let fd = slope(&plus, &minus, a, h);
         assert!(
             (fd - base.ddtddp[a]).abs() <= 1e-6 * (scale / P).max(1.0),
             "{what}: DDTDDP({a}) = {} vs FD {fd}",
@@ -807,18 +809,7 @@ fn a_sliding_point_separates_freely_a_stuck_one_bonds() {
 #[test]
 fn the_earlier_formulation_takes_the_smallest_root_under_a_cap() {
     let (mu_k, d_c, dtime, tau_max) = (0.25, 3.0, 0.2, 40.0);
-    let law = ExtendedCoulomb::new(
-        Coulomb::new(MU_S)
-            .and_then(|c| c.with_critical_slip_absolute(GAMMA_CRIT))
-            .and_then(|c| c.with_shear_limit(tau_max))
-            .unwrap(),
-    )
-    .with_coefficient_law(
-        CoefficientLaw::default()
-            .with_exponential_decay(mu_k / MU_S, d_c)
-            .unwrap(),
-    )
-    .with_rate_formulation(RateFormulation::RateFreeStiffness);
+    let law = earlier_formulation(mu_k, d_c, Some(tau_max));
     let from_rest = |g: f64| {
         let inc = Increment::<1> {
             tau: [0.0],

@@ -20,13 +20,19 @@ fn checked(case: &FricCase) -> Outputs {
         .unwrap_or_else(|e| panic!("{e}\ninput: {case:?}"))
 }
 
+/// A recorded `fric` input that must still decode with `name(i + 1) = value`, through the
+/// property check.
+fn replay(bytes: &[u8], name: &str, i: usize, value: f64) -> (FricCase, Outputs) {
+    let case = FricCase::decode(bytes);
+    assert_eq!(case.args[name][i], value, "the decoder changed: {case:?}");
+    let out = checked(&case);
+    (case, out)
+}
+
 /// A recorded `fric` input that must still decode to the adhesive law (`PROPS(1) = 2`), through
 /// the property check.
 fn adhesive_replay(bytes: &[u8]) -> (FricCase, Outputs) {
-    let case = FricCase::decode(bytes);
-    assert_eq!(case.args["PROPS"][0], 2.0, "the decoder changed: {case:?}");
-    let out = checked(&case);
-    (case, out)
+    replay(bytes, "PROPS", 0, 2.0)
 }
 
 fn succeeded(case: &FricCase, out: &Outputs) {
@@ -51,13 +57,7 @@ const CRASH_SLIP_RATE: [u8; 46] = [
 
 #[test]
 fn crash_1_replays_clean() {
-    let case = FricCase::decode(&CRASH_SLIP_RATE);
-    assert_eq!(
-        case.args["DTIME"][0],
-        f64::MIN_POSITIVE,
-        "the decoder changed: {case:?}"
-    );
-    let out = checked(&case);
+    let (case, out) = replay(&CRASH_SLIP_RATE, "DTIME", 0, f64::MIN_POSITIVE);
     succeeded(&case, &out);
     assert_eq!(out["STATEV"][1], f64::MAX);
 }
@@ -581,13 +581,7 @@ const FRIC_SUBNORMAL_STIFFNESS: [u8; 98] = [
 
 #[test]
 fn fric_stick_with_a_subnormal_stiffness_stays_on_the_cone() {
-    let case = FricCase::decode(&FRIC_SUBNORMAL_STIFFNESS);
-    assert_eq!(
-        case.args["PROPS"][3],
-        f64::MIN_POSITIVE,
-        "the decoder changed: {case:?}"
-    );
-    let out = checked(&case);
+    let (case, out) = replay(&FRIC_SUBNORMAL_STIFFNESS, "PROPS", 3, f64::MIN_POSITIVE);
     succeeded(&case, &out);
     assert!(
         out["TAU"][0].abs() <= f64::MIN_POSITIVE,

@@ -6,30 +6,7 @@
 //! (examples/scenes/consolidation.rs) is compiled in by path, so the test runs the same code.
 #![allow(dead_code)]
 
-#[path = "../examples/scenes/charts.rs"]
-mod charts;
-#[path = "../examples/scenes/checks.rs"]
-mod checks;
-#[path = "../examples/scenes/circle.rs"]
-mod circle;
-#[path = "../examples/scenes/column.rs"]
-mod column;
-#[path = "../examples/scenes/consolidation.rs"]
-mod consolidation;
-#[path = "../examples/scenes/csvfile.rs"]
-mod csvfile;
-#[path = "../examples/scenes/oscillator.rs"]
-mod oscillator;
-#[path = "../examples/scenes/pull.rs"]
-mod pull;
-#[path = "../examples/scenes/rate_map.rs"]
-mod rate_map;
-#[path = "../examples/scenes/scene.rs"]
-mod scene;
-#[path = "../examples/scenes/stability.rs"]
-mod stability;
-#[path = "../examples/scenes/velocity.rs"]
-mod velocity;
+include!("common/scene_modules.rs");
 
 /// A P1 file: layer 1 fixed (1 m, k = 1e-3, M = 1e3), layer 2 = layer 1 × the ratios, with an
 /// optional study table.
@@ -103,17 +80,7 @@ fn run(id: &str, ratios: [f64; 3], elements: [usize; 2], study: bool) {
     std::fs::create_dir_all(&out).expect("the output directory");
     let outcome = consolidation::run(&file, false, &out).expect("the P1 run");
     let _ = std::fs::remove_dir_all(&out);
-    let failed: Vec<String> = outcome
-        .rows
-        .iter()
-        .filter(|r| !r.ok())
-        .map(|r| {
-            format!(
-                "{} {}: {:e} against {:e} (tolerance {:e})",
-                r.case, r.quantity, r.computed, r.exact, r.tolerance
-            )
-        })
-        .collect();
+    let failed = checks::failures(&outcome.rows);
     assert!(
         failed.is_empty() && outcome.failures == 0,
         "{id} (k, M, h ratios {ratios:?}, elements {elements:?}):\n{}",

@@ -12,6 +12,10 @@
 //! - DDTDDG and DDTDDP against central differences of `TAU` in stick and slip, NFDIR 1 and 2;
 //! - bad input refused by name with PNEWDT < 1 and TAU, STATEV unchanged.
 
+#[path = "common/central.rs"]
+mod central;
+
+use central::{move_press, sides, slope};
 use interfacial::abi::host::FricCall;
 use interfacial::props::RateStateBuilder;
 
@@ -205,13 +209,9 @@ fn tangents_agree_with_central_differences() {
                     let n = nfdir as usize;
                     for b in 0..n {
                         let h = 1e-7 * GAMMA_CRIT.max(dgam[0].abs());
-                        let (mut plus, mut minus) = (c.clone(), c.clone());
-                        plus.dgam[b] += h;
-                        minus.dgam[b] -= h;
-                        plus.call();
-                        minus.call();
+                        let (plus, minus) = sides(&c, h, |c, h| c.dgam[b] += h);
                         for a in 0..n {
-                            let fd = (plus.tau[a] - minus.tau[a]) / (2.0 * h);
+                            let fd = slope(&plus, &minus, a, h);
                             let an = at.ddtddg(a, b);
                             let scale = an.abs().max(P * 0.6 / GAMMA_CRIT * 1e-6);
                             assert!(
@@ -221,15 +221,9 @@ fn tangents_agree_with_central_differences() {
                         }
                     }
                     let h = 1e-6 * P;
-                    let (mut plus, mut minus) = (c.clone(), c.clone());
-                    plus.press += h;
-                    plus.dpress += h;
-                    minus.press -= h;
-                    minus.dpress -= h;
-                    plus.call();
-                    minus.call();
+                    let (plus, minus) = sides(&c, h, move_press);
                     for a in 0..n {
-                        let fd = (plus.tau[a] - minus.tau[a]) / (2.0 * h);
+                        let fd = slope(&plus, &minus, a, h);
                         assert!(
                             (at.ddtddp[a] - fd).abs() <= 1e-6 * fd.abs().max(1e-3),
                             "DDTDDP({a}) {} vs {fd}",

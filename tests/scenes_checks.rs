@@ -10,16 +10,7 @@ mod checks;
 #[test]
 fn every_closed_form_check_of_the_main_job_holds() {
     let rows = checks::run().expect("the checks' configuration file");
-    let failed: Vec<String> = rows
-        .iter()
-        .filter(|r| !r.ok())
-        .map(|r| {
-            format!(
-                "{} {} {}: {} against {} (tolerance {})",
-                r.scene, r.case, r.quantity, r.computed, r.exact, r.tolerance
-            )
-        })
-        .collect();
+    let failed = checks::failures(&rows);
     assert!(failed.is_empty(), "{}", failed.join("\n"));
     for scene in ["F1", "F2", "F3", "F4", "F5", "T1", "T2", "A1"] {
         assert!(rows.iter().any(|r| r.scene == scene), "no {scene} rows");

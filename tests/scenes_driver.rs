@@ -6,26 +6,7 @@
 //! The driver's modules are compiled into this test by path, so the test runs the same code.
 #![allow(dead_code)]
 
-#[path = "../examples/scenes/charts.rs"]
-mod charts;
-#[path = "../examples/scenes/circle.rs"]
-mod circle;
-#[path = "../examples/scenes/csvfile.rs"]
-mod csvfile;
-#[path = "../examples/scenes/findings.rs"]
-mod findings;
-#[path = "../examples/scenes/oscillator.rs"]
-mod oscillator;
-#[path = "../examples/scenes/pull.rs"]
-mod pull;
-#[path = "../examples/scenes/rate_map.rs"]
-mod rate_map;
-#[path = "../examples/scenes/scene.rs"]
-mod scene;
-#[path = "../examples/scenes/stability.rs"]
-mod stability;
-#[path = "../examples/scenes/velocity.rs"]
-mod velocity;
+include!("common/scene_modules.rs");
 
 use oscillator::{Integrator, Oscillator, Stick, Verdict, simulate};
 use scene::{Scene, Timing, run_point_timed};

@@ -17,16 +17,7 @@ fn rate_and_state_scenes_hold() {
     let _ = std::fs::remove_dir_all(&out);
     let (rows, files) = rows.unwrap();
     assert_eq!(files.len(), 4);
-    let failed: Vec<String> = rows
-        .iter()
-        .filter(|r| !r.ok())
-        .map(|r| {
-            format!(
-                "{} {} {}: {} against {}",
-                r.scene, r.case, r.quantity, r.computed, r.exact
-            )
-        })
-        .collect();
+    let failed = checks::failures(&rows);
     assert!(failed.is_empty(), "{}", failed.join("\n"));
     assert_eq!(rows.iter().filter(|r| r.scene == "R1").count(), 4);
     // --quick's R2 rows: V·Δt/L = 0.03 resolves L (1.0 does not and is not checked).

@@ -3,10 +3,7 @@
 //! |τ^tr| ≤ μp, else τ = μp·τ^tr/|τ^tr|), its tangents against central differences, and the
 //! refusals (k_s missing, with anisotropy or a μ law).
 
-#![allow(clippy::needless_range_loop)] // common/central.rs indexes its a, b loops
-
 #[path = "common/central.rs"]
-#[allow(dead_code)] // shared with other tests, which use the rest
 mod central;
 #[path = "common/refusal.rs"]
 mod refusal;

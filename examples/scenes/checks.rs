@@ -39,6 +39,21 @@ impl Row {
     }
 }
 
+/// The rows out of tolerance, one line each (scene, case, quantity, computed against the closed
+/// form, tolerance): what tests/scenes_checks.rs and the other scene tests print when they fail.
+#[allow(dead_code)]
+pub fn failures(rows: &[Row]) -> Vec<String> {
+    rows.iter()
+        .filter(|r| !r.ok())
+        .map(|r| {
+            format!(
+                "{} {} {}: {:e} against {:e} (tolerance {:e})",
+                r.scene, r.case, r.quantity, r.computed, r.exact, r.tolerance
+            )
+        })
+        .collect()
+}
+
 /// PROPS for the Coulomb law: γ_crit absolute or from the default tolerance × CHRLNGTH.
 fn props(gamma_from_chrlngth: bool, tau_max: f64, stick: f64) -> Vec<f64> {
     let gc = if gamma_from_chrlngth { 0.0 } else { GAMMA_CRIT };
@@ -59,6 +74,22 @@ fn step(c: &mut FricCall, dgam: &[f64], p_end: f64, p_start: f64) {
     c.pnewdt = 1e36;
     c.call();
     assert_eq!(c.pnewdt, 1e36, "{}", FricCall::last_error());
+}
+
+/// One increment of slip `dgam` along the first direction over `dtime` through `fric_`; a
+/// cut-back is an error naming the scene and the library's message (R1, R2, F7).
+pub fn slide(c: &mut FricCall, dgam: f64, dtime: f64, scene: &str) -> Result<(), String> {
+    c.dgam[0] = dgam;
+    c.dtime = dtime;
+    c.pnewdt = 1e36;
+    c.call();
+    if c.pnewdt < 1.0 {
+        return Err(format!(
+            "{scene}: fric_ refused: {}",
+            FricCall::last_error()
+        ));
+    }
+    Ok(())
 }
 
 /// F1: pull to plateau and back, NFDIR 1 and 2, γ_crit from PROPS(5) or CHRLNGTH, with and

@@ -20,9 +20,10 @@ use std::path::{Path, PathBuf};
 
 use interfacial::abi::host::FricCall;
 use interfacial::props::RateStateBuilder;
+use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use crate::checks::Row;
+use crate::checks::{Row, slide};
 
 const MU0: f64 = 0.6;
 const A: f64 = 0.01;
@@ -72,19 +73,6 @@ fn theta_at(theta1: f64, v: f64, t: f64, slip_law: bool) -> f64 {
     }
 }
 
-/// One increment of imposed slip through `fric_`; the call's answer (panics on a refusal:
-/// the scene's inputs are valid).
-fn slide(c: &mut FricCall, dgam: f64, dtime: f64) -> Result<(), String> {
-    c.dgam[0] = dgam;
-    c.dtime = dtime;
-    c.pnewdt = 1e36;
-    c.call();
-    if c.pnewdt < 1.0 {
-        return Err(format!("R1: fric_ refused: {}", FricCall::last_error()));
-    }
-    Ok(())
-}
-
 /// The velocity-step history V₁ (steady) → V₂ for 10 L → V₁ for 10 L at `per_l` increments per
 /// L; the largest |τ/p − μ(V, θ(t))| after the first step, for the library and for the
 /// explicit-Euler θ of the same increments.
@@ -94,14 +82,14 @@ fn r1_errors(slip_law: bool, per_l: f64) -> Result<(f64, f64), String> {
     let mut c = point(if slip_law { 1.0 } else { 0.0 }, theta1);
     // Steady at V₁ from θ = L/V₁: one increment establishes the elastic slip.
     let dgam = L / per_l;
-    slide(&mut c, dgam, dgam / v1)?;
+    slide(&mut c, dgam, dgam / v1, "R1")?;
     let (mut err_lib, mut err_euler) = (0.0f64, 0.0f64);
     let (mut theta_exact, mut theta_euler) = (c.statev[3], c.statev[3]);
     for v in [v2, v1] {
         let dtime = dgam / v;
         let start = theta_exact;
         for k in 1..=(10.0 * per_l).round() as usize {
-            slide(&mut c, dgam, dtime)?;
+            slide(&mut c, dgam, dtime, "R1")?;
             theta_exact = theta_at(start, v, k as f64 * dtime, slip_law);
             let rate = if slip_law {
                 -(v * theta_euler / L) * (v * theta_euler / L).ln()
@@ -152,7 +140,7 @@ fn r2_run(k_ratio: f64, courant: f64) -> Result<(f64, usize), String> {
         let load = extension + v * dtime;
         let residual = |dx: f64, iterations: &mut usize| -> Result<(f64, f64, FricCall), String> {
             let mut t = c.clone();
-            slide(&mut t, dx, dtime)?;
+            slide(&mut t, dx, dtime, "R2")?;
             *iterations += 1;
             Ok((k * (load - dx) - t.tau[0], -k - t.ddtddg(0, 0), t))
         };
@@ -419,6 +407,15 @@ fn r1_chart(path: &Path, curves: &[R1Curve<'_>]) -> Result<(), String> {
             )
             .map_err(e)?;
     }
+    legend_and_write(&mut chart, &root)
+}
+
+/// Draws the series' legend at the upper right and writes the chart's file (R1 and R2).
+fn legend_and_write<'a, CT: CoordTranslate>(
+    chart: &mut ChartContext<'a, SVGBackend<'a>, CT>,
+    root: &DrawingArea<SVGBackend<'a>, Shift>,
+) -> Result<(), String> {
+    let e = |x: DrawingAreaErrorKind<std::io::Error>| x.to_string();
     chart
         .configure_series_labels()
         .background_style(WHITE.mix(0.9))
@@ -496,12 +493,5 @@ fn r2_chart(path: &Path, map: &R2Map) -> Result<(), String> {
         .map_err(e)?
         .label("k = k_c = p(b − a)/L (linear theory)")
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], BLACK.stroke_width(3)));
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(e)?;
-    root.present().map_err(e)
+    legend_and_write(&mut chart, &root)
 }

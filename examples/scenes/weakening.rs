@@ -34,7 +34,7 @@ use plotters::prelude::*;
 use crate::charts::{
     Axis, COLORS, Frame, Marker, Swatch, draw_cells, edge, frame as frame_chart, frame_linear,
 };
-use crate::checks::Row;
+use crate::checks::{Row, slide};
 
 const MU_S: f64 = 0.5;
 const MU_K: f64 = 0.2;
@@ -93,13 +93,7 @@ fn drive(f: Formulation, x: f64, r: f64, n: usize) -> Result<Vec<f64>, String> {
             let mut c = FricCall::new(1, &decay_props());
             c.press = P;
             for _ in 0..n {
-                c.dgam[0] = dgam;
-                c.dtime = dtime;
-                c.pnewdt = 1e36;
-                c.call();
-                if c.pnewdt < 1.0 {
-                    return Err(format!("F7: fric_ cut back: {}", FricCall::last_error()));
-                }
+                slide(&mut c, dgam, dtime, "F7")?;
                 taus.push(c.tau[0]);
             }
         }
@@ -549,6 +543,20 @@ struct Belt {
     adhesive_vhalf: Option<f64>,
 }
 
+/// The belt of parts 3 and 4: k = m = N = 1, μ 0.6 → 0.5 with d_c = 20, v₀ = 0.1,
+/// γ_crit = 1e-3.
+const BELT: Belt = Belt {
+    mass: 1.0,
+    spring: 1.0,
+    normal: 1.0,
+    mu_s: 0.6,
+    mu_k: 0.5,
+    decay: 20.0,
+    belt: 0.1,
+    gamma_crit: 1e-3,
+    adhesive_vhalf: None,
+};
+
 /// Which tangent the host's Newton iteration uses.
 #[derive(Clone, Copy, PartialEq, Debug)]
 pub enum Tangent {
@@ -775,17 +783,7 @@ fn cycle_measures(run: &BeltRun, dt: f64) -> (f64, f64, f64, f64) {
 
 /// Part 3: F6 with velocity weakening, and the Newton iterations.
 fn belt(out: &Path, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, String), String> {
-    let b = Belt {
-        mass: 1.0,
-        spring: 1.0,
-        normal: 1.0,
-        mu_s: 0.6,
-        mu_k: 0.5,
-        decay: 20.0,
-        belt: 0.1,
-        gamma_crit: 1e-3,
-        adhesive_vhalf: None,
-    };
+    let b = BELT;
     let t_end = 40.0;
     // The reference is not the library: an event-driven rigid-stick integration of the same
     // equations (RK4 step 1e-4 s in the slips, sampled every 1e-3 s).
@@ -979,38 +977,42 @@ fn belt(out: &Path, rows: &mut Vec<Row>) -> Result<(Vec<PathBuf>, String), Strin
     // stays the default because it needs fewer on average at every step; near the onsets from
     // Δt = 0.02 down). Unconverged steps are not compared: at the coarsest steps the exact
     // tangent can leave more of them (the table).
+    let comparisons: [Comparison; 2] = [
+        (
+            &[0.05, 0.02, 0.01],
+            "Newton mean over every step: exact tangent needs fewer than bounded (1 = yes)",
+            |g| g.all.0,
+        ),
+        (
+            &[0.02, 0.01],
+            "Newton near onset: exact tangent needs fewer iterations than bounded (1 = yes)",
+            |g| g.onset.0,
+        ),
+    ];
     for (law, runs) in [("decay", &decay_runs), ("adhesive", &adhesive_runs)] {
-        for dt in [0.05, 0.02, 0.01] {
-            let of = |t: Tangent| {
-                runs.iter()
-                    .find(|g| g.dt == dt && g.tangent == t)
-                    .map_or(f64::NAN, |g| g.all.0)
-            };
-            rows.push(row(
-                format!("{law}, Δt = {dt}"),
-                "Newton mean over every step: exact tangent needs fewer than bounded (1 = yes)",
-                1.0,
-                f64::from(u8::from(of(Tangent::Exact) < of(Tangent::Bounded))),
-                0.0,
-            ));
-        }
-        for dt in [0.02, 0.01] {
-            let of = |t: Tangent| {
-                runs.iter()
-                    .find(|g| g.dt == dt && g.tangent == t)
-                    .map_or(f64::NAN, |g| g.onset.0)
-            };
-            rows.push(row(
-                format!("{law}, Δt = {dt}"),
-                "Newton near onset: exact tangent needs fewer iterations than bounded (1 = yes)",
-                1.0,
-                f64::from(u8::from(of(Tangent::Exact) < of(Tangent::Bounded))),
-                0.0,
-            ));
+        for (dts, quantity, mean) in comparisons {
+            for &dt in dts {
+                let of = |t: Tangent| {
+                    runs.iter()
+                        .find(|g| g.dt == dt && g.tangent == t)
+                        .map_or(f64::NAN, mean)
+                };
+                rows.push(row(
+                    format!("{law}, Δt = {dt}"),
+                    quantity,
+                    1.0,
+                    f64::from(u8::from(of(Tangent::Exact) < of(Tangent::Bounded))),
+                    0.0,
+                ));
+            }
         }
     }
     Ok((vec![csv_path, traces_path, svg], table))
 }
+
+/// A Newton comparison of the exact and bounded tangents: the steps Δt compared, the quantity
+/// it checks, and the mean it reads off a run.
+type Comparison = (&'static [f64], &'static str, fn(&GridRun) -> f64);
 
 /// The steps of the F7 Newton tables, in table order: Δt = 0.05, 0.02, 0.01, each with the exact
 /// and then the bounded tangent.
@@ -1070,15 +1072,8 @@ pub fn run(out: &Path, quick: bool) -> Result<(Vec<Row>, Vec<PathBuf>, String), 
 fn numerical_or_physical(rows: &mut Vec<Row>) -> Result<(), String> {
     let compliance = 1e-3;
     let base = Belt {
-        mass: 1.0,
-        spring: 1.0,
-        normal: 1.0,
-        mu_s: 0.6,
-        mu_k: 0.5,
-        decay: 20.0,
-        belt: 0.1,
         gamma_crit: compliance,
-        adhesive_vhalf: None,
+        ..BELT
     };
     // (a) The point driven at v₀ through fric_ alone, Δt = 1e-3 (increments of 0.1·γ_crit).
     let mut c = FricCall::new(1, &base.props());
@@ -1086,13 +1081,7 @@ fn numerical_or_physical(rows: &mut Vec<Row>) -> Result<(), String> {
     let dt = 1e-3;
     let mut taus = Vec::new();
     for _ in 0..2000 {
-        c.dgam[0] = base.belt * dt;
-        c.dtime = dt;
-        c.pnewdt = 1e36;
-        c.call();
-        if c.pnewdt < 1.0 {
-            return Err(format!("F7: fric_ cut back: {}", FricCall::last_error()));
-        }
+        slide(&mut c, base.belt * dt, dt, "F7")?;
         taus.push(c.tau[0]);
     }
     let steady = base.mu_of(base.belt) * base.normal;

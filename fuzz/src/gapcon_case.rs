@@ -7,6 +7,7 @@ use std::ffi::CString;
 use std::sync::Once;
 
 use super::args::{Args, Len, Outputs, call};
+use super::at_exit::remove_at_exit;
 use super::bytes::Bytes;
 use super::contract::{Names, UNWRITTEN};
 use interfacial::abi::{IflConductance, IflStatus, gapcon_, ifl_gap_conductance};
@@ -40,25 +41,6 @@ pub fn setup() {
         }
         remove_at_exit(path);
     });
-}
-
-/// Removes `path` when the process exits: C's `atexit`, which runs when the test harness (or
-/// the fuzzer) returns from `main` or calls `exit`, so no configuration file is left behind in
-/// the temporary directory (`scripts/test.sh` checks that). Once per process.
-fn remove_at_exit(path: std::path::PathBuf) {
-    static PATH: std::sync::OnceLock<std::path::PathBuf> = std::sync::OnceLock::new();
-    unsafe extern "C" {
-        fn atexit(f: extern "C" fn()) -> std::ffi::c_int;
-    }
-    extern "C" fn remove() {
-        if let Some(p) = PATH.get() {
-            let _ = std::fs::remove_file(p);
-        }
-    }
-    if PATH.set(path).is_ok() {
-        // SAFETY: `remove` is a plain function that only removes a file.
-        unsafe { atexit(remove) };
-    }
 }
 
 /// Every `gapcon_` argument: `args` by Fortran name (`D(2)`: clearance, pressure; `TEMP(2)`;

@@ -5,6 +5,7 @@
 //! decoder, holder and caller every case shares (docs/fuzzing.md).
 
 pub mod args;
+pub mod at_exit;
 pub mod batch_case;
 pub mod bytes;
 pub mod config_case;

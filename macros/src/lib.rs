@@ -7,6 +7,7 @@
 //! the view are derived from it. [`with_view`] writes the view alone, for an export without a
 //! twin.
 
+use proc_macro::TokenStream as CompilerTokens;
 use proc_macro2::TokenStream;
 use quote::quote;
 use syn::parse::{Parse, ParseStream};
@@ -39,13 +40,8 @@ use syn::{Attribute, FnArg, Ident, ItemFn, Pat, Stmt, Token, Type, braced, paren
 ///
 /// Every parameter must be a plain name; each `unread` name must be a parameter.
 #[proc_macro_attribute]
-pub fn with_twin(
-    attr: proc_macro::TokenStream,
-    item: proc_macro::TokenStream,
-) -> proc_macro::TokenStream {
-    expand(attr.into(), item.into())
-        .unwrap_or_else(syn::Error::into_compile_error)
-        .into()
+pub fn with_twin(attr: CompilerTokens, item: CompilerTokens) -> CompilerTokens {
+    emit(expand(attr.into(), item.into()))
 }
 
 /// [`with_twin`] without the twin, for an export whose whole body runs where the host called it:
@@ -59,11 +55,14 @@ pub fn with_twin(
 /// unchanged, its body `let _ = (idata, rdata);` (the unread parameters, named once), `let args
 /// = CoefArgs { fcoef, … };`, then its statements.
 #[proc_macro_attribute]
-pub fn with_view(
-    attr: proc_macro::TokenStream,
-    item: proc_macro::TokenStream,
-) -> proc_macro::TokenStream {
-    expand_view(attr.into(), item.into())
+pub fn with_view(attr: CompilerTokens, item: CompilerTokens) -> CompilerTokens {
+    emit(expand_view(attr.into(), item.into()))
+}
+
+/// The expansion handed back to the compiler, or its error as a `compile_error!` at the span
+/// it names (both attributes).
+fn emit(expanded: syn::Result<TokenStream>) -> CompilerTokens {
+    expanded
         .unwrap_or_else(syn::Error::into_compile_error)
         .into()
 }

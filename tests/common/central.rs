@@ -1,6 +1,10 @@
 //! The central differences that the tangent tests compare `fric_`'s derivatives with, and the
 //! steady sliding of scene F4, shared by tests/friction_extended.rs and tests/friction_table.rs
-//! (included there by path).
+//! (included there by path), and the two-sided calls of tests/fric_weakening.rs and
+//! tests/rate_state.rs.
+// Each test uses its own subset.
+#![allow(dead_code)]
+#![allow(clippy::needless_range_loop)] // index loops mirror the a, b indices of the equations
 
 use interfacial::abi::host::FricCall;
 
@@ -54,6 +58,29 @@ pub fn central_tau(
     };
     let (f1, f2) = (fd(h)?, fd(2.0 * h)?);
     ((f1 - f2).abs() <= 1e-7 * scale).then_some(f1)
+}
+
+/// `call` made twice, its inputs moved by +h and by −h (`shift(call, ±h)`): the two sides of a
+/// central difference, (plus, minus).
+pub fn sides(call: &FricCall, h: f64, shift: impl Fn(&mut FricCall, f64)) -> (FricCall, FricCall) {
+    let (mut plus, mut minus) = (call.clone(), call.clone());
+    shift(&mut plus, h);
+    shift(&mut minus, -h);
+    plus.call();
+    minus.call();
+    (plus, minus)
+}
+
+/// The `shift` of [`sides`] for DDTDDP: the end pressure moved (`PRESS` and `DPRESS` together,
+/// the start stays).
+pub fn move_press(c: &mut FricCall, h: f64) {
+    c.press += h;
+    c.dpress += h;
+}
+
+/// (TAU(a) of `plus` − TAU(a) of `minus`) / 2h, the sides of [`sides`].
+pub fn slope(plus: &FricCall, minus: &FricCall, a: usize, h: f64) -> f64 {
+    (plus.tau[a] - minus.tau[a]) / (2.0 * h)
 }
 
 /// Slides the point `c` (`nfdir` directions) along `dir` at the slip velocity `v` for `n`

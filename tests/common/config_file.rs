@@ -5,6 +5,11 @@
 
 use std::sync::Once;
 
+// The same removal the fuzz targets' configuration file takes.
+#[path = "../../fuzz/src/at_exit.rs"]
+mod at_exit;
+use at_exit::remove_at_exit;
+
 /// Writes `toml` to `interfacial-TAG-PID.toml` in the temporary directory and points
 /// `INTERFACIAL_CONFIG` at it, the first time it is called in this process; later calls (from
 /// other tests, on other threads) wait for the first and do nothing. The file is removed when
@@ -20,23 +25,4 @@ pub fn config_once(tag: &str, toml: &str) {
         unsafe { std::env::set_var("INTERFACIAL_CONFIG", &path) };
         remove_at_exit(path);
     });
-}
-
-/// Removes `path` when the process exits: C's `atexit`, which runs when the test harness (or
-/// the fuzzer) returns from `main` or calls `exit`, so no configuration file is left behind in
-/// the temporary directory (`scripts/test.sh` checks that). Once per process.
-fn remove_at_exit(path: std::path::PathBuf) {
-    static PATH: std::sync::OnceLock<std::path::PathBuf> = std::sync::OnceLock::new();
-    unsafe extern "C" {
-        fn atexit(f: extern "C" fn()) -> std::ffi::c_int;
-    }
-    extern "C" fn remove() {
-        if let Some(p) = PATH.get() {
-            let _ = std::fs::remove_file(p);
-        }
-    }
-    if PATH.set(path).is_ok() {
-        // SAFETY: `remove` is a plain function that only removes a file.
-        unsafe { atexit(remove) };
-    }
 }

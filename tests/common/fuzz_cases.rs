@@ -7,6 +7,8 @@
 
 #[path = "../../fuzz/src/args.rs"]
 pub mod args;
+#[path = "../../fuzz/src/at_exit.rs"]
+pub mod at_exit;
 #[path = "../../fuzz/src/batch_case.rs"]
 pub mod batch_case;
 #[path = "../../fuzz/src/bytes.rs"]
