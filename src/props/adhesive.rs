@@ -12,7 +12,7 @@ use super::FrictionLaw;
 use super::schema::Default::{self, Described, Required};
 use super::schema::{
     Class, Entry, FastLayout, Fix, Fixed, Layout, Plan, PropsError, Rule, admits_fixed,
-    fast_layout, props_builder,
+    props_builder,
 };
 
 /// `PROPS(1)` code of the adhesive friction law.
@@ -87,9 +87,11 @@ impl<const N: usize> FastLayout for SpecialCase<N> {
     const PLAN: Plan = Plan::of(&ADHESIVE, &COULOMB_SPECIAL_CASE, N);
 }
 
-fast_layout! {
-    /// The validator of the whole layout, nothing pinned.
-    pub(crate) Whole = ADHESIVE, Fixed::NONE, ADHESIVE_NPROPS
+/// The validator of the whole layout, nothing pinned.
+pub(crate) struct Whole;
+
+impl FastLayout for Whole {
+    const PLAN: Plan = Plan::of(&ADHESIVE, &Fixed::NONE, ADHESIVE_NPROPS);
 }
 
 /// `PROPS(11)`: 0 or 1.

@@ -240,16 +240,32 @@ impl Entry {
         self
     }
 
-    field_setters! {
-        const;
-        /// The symbol.
-        symbol(symbol: &'static str);
-        /// The unit.
-        unit(unit: &'static str);
-        /// What 0 or absent means (instead of the value 0).
-        when_absent(default: Default);
-        /// The docs table's extra words.
-        note(note: &'static str);
+    /// The symbol.
+    #[must_use]
+    pub const fn symbol(mut self, symbol: &'static str) -> Self {
+        self.symbol = symbol;
+        self
+    }
+
+    /// The unit.
+    #[must_use]
+    pub const fn unit(mut self, unit: &'static str) -> Self {
+        self.unit = unit;
+        self
+    }
+
+    /// What 0 or absent means (instead of the value 0).
+    #[must_use]
+    pub const fn when_absent(mut self, default: Default) -> Self {
+        self.default = default;
+        self
+    }
+
+    /// The docs table's extra words.
+    #[must_use]
+    pub const fn note(mut self, note: &'static str) -> Self {
+        self.note = note;
+        self
     }
 
     /// How messages name the entry: `key (meaning)` for a seed name, `meaning symbol`
@@ -683,7 +699,7 @@ fn range_flag(v: f64) -> u64 {
 }
 
 mod plan;
-pub(crate) use plan::{FastLayout, Plan, admits_fixed, fast_layout};
+pub(crate) use plan::{FastLayout, Plan, admits_fixed};
 
 impl Layout {
     /// `PROPS(index)`'s description. Panics on an index outside the layout (a programming
