@@ -11,6 +11,7 @@ use crate::laws::rate_state::RateState;
 use crate::switch::Path;
 
 mod adhesive;
+mod builder;
 mod coulomb;
 mod rate_state;
 pub mod schema;
@@ -19,6 +20,8 @@ pub use adhesive::{
     ADHESIVE, ADHESIVE_NPROPS, AdhesiveBuilder, AdhesiveProps, COULOMB_SPECIAL_CASE, HeatExchange,
     LAW_ADHESIVE,
 };
+pub(crate) use builder::LAYOUTS;
+pub use builder::LawBuilder;
 pub use coulomb::{
     COULOMB, CoulombBuilder, DECAY_LEAN, EXTENDED_CONSTANT, EXTENDED_DECAY, PLAIN, QUASI_STATIC,
     STEADY_TRANSPORT, TRANSPORT,

@@ -12,11 +12,8 @@ use super::{boundary, count, slice};
 use crate::LawError;
 use crate::config::friction_table_for;
 use crate::props::schema::Layout;
-use crate::props::{ADHESIVE, COULOMB, RATE_STATE, friction_law_with_table};
+use crate::props::{LAYOUTS, friction_law_with_table};
 use crate::report::Site;
-
-/// The laws a tool can ask about, in the order `ifl_props_law_code` numbers them.
-const LAYOUTS: [&Layout; 3] = [&COULOMB, &ADHESIVE, &RATE_STATE];
 
 /// One row of a law's `PROPS` table (docs/props.md), as `ifl_props_entry` writes it. Every text
 /// is NUL-terminated UTF-8 in static storage: valid for the program's life, never freed. An

@@ -19,10 +19,10 @@ use crate::laws::coulomb_extended::{
 use crate::laws::friction_coefficient::CoefficientLaw;
 use crate::laws::friction_table::FrictionTable;
 
+use super::builder::{LawBuilder, entry_setters};
 use super::schema::Default::{Derived, Described, Entry as SameAs, Required, Value};
 use super::schema::{
     Class, Entry, FastLayout, Fix, Fixed, LawFn, Layout, Plan, PropsError, Refusal, Rule, Variant,
-    props_builder,
 };
 use super::{COULOMB_EXTENDED_NPROPS, COULOMB_NPROPS, FrictionLaw, LAW_COULOMB};
 
@@ -453,11 +453,12 @@ fn constant_stick_law(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> Result<FrictionLaw,
     Ok(FrictionLaw::Coulomb(base))
 }
 
-props_builder! {
-    /// A law-1 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
-    /// starts at its "0 / absent" value, `PROPS(1) = 1`.
-    CoulombBuilder, COULOMB, "law 1",
-    {
+/// A law-1 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
+/// starts at its "0 / absent" value, `PROPS(1) = 1`.
+pub type CoulombBuilder = LawBuilder<LAW_COULOMB>;
+
+impl CoulombBuilder {
+    entry_setters!("law 1", {
         mu => "mu",
         mu2 => "mu2",
         tau_max => "tau_max",
@@ -481,7 +482,7 @@ props_builder! {
         damping_clearance => "damping_clearance",
         damping_fraction => "damping_fraction",
         frozen => "frozen",
-    }
+    });
 }
 
 #[cfg(test)]

@@ -1095,60 +1095,9 @@ const fn const_str_eq(a: &str, b: &str) -> bool {
     true
 }
 
-/// A law's named-setter builder over [`PropsBuilder`]: the struct, `new`, one setter per entry
-/// (each by its key in the layout, so an unknown key does not compile), `build` and
-/// `build_first`. Every entry starts at its "0 / absent" value.
-macro_rules! props_builder {
-    (
-        $(#[$attr:meta])*
-        $name:ident, $layout:path, $law:literal,
-        { $($method:ident => $key:literal),* $(,)? }
-    ) => {
-        $(#[$attr])*
-        #[derive(Clone, Debug, PartialEq)]
-        pub struct $name($crate::props::schema::PropsBuilder);
-
-        impl ::std::default::Default for $name {
-            fn default() -> Self {
-                $name($crate::props::schema::PropsBuilder::new(&$layout))
-            }
-        }
-
-        impl $name {
-            /// Every entry at its "0 / absent" value, `PROPS(1)` the law code.
-            #[must_use]
-            pub fn new() -> Self {
-                Self::default()
-            }
-
-            $(
-                #[doc = concat!("Sets `", $key, "` (docs/props.md, ", $law, ").")]
-                #[must_use]
-                pub fn $method(self, v: f64) -> Self {
-                    const INDEX: usize = $layout.index_of($key);
-                    $name(self.0.set(INDEX, v))
-                }
-            )*
-
-            /// Every entry of the layout.
-            #[must_use]
-            pub fn build(&self) -> Vec<f64> {
-                self.0.build()
-            }
-
-            /// The first `nprops` entries (a host that leaves out trailing ones).
-            #[must_use]
-            pub fn build_first(&self, nprops: usize) -> Vec<f64> {
-                self.0.build_first(nprops)
-            }
-        }
-    };
-}
-pub(crate) use props_builder;
-
 /// A `PROPS` array built entry by entry, by name: for tests, scenes, fuzz decoders and
 /// harness generators, so that none of them builds `PROPS` by position. Laws wrap it in
-/// builders with one named setter per entry (`AdhesiveBuilder`).
+/// builders with one named setter per entry (`props::LawBuilder`, `AdhesiveBuilder`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PropsBuilder {
     layout: &'static Layout,
