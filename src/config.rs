@@ -786,7 +786,7 @@ table = [[0.0, 1.0], [100.0, 3.0]]
         assert_eq!(k(&[b' '; 80]), 0.0);
     }
 
-    /// Every table refuses a key it does not know (`tables!`): a misspelt key in each, named
+    /// Every table refuses a key it does not know (`deny_unknown_fields`): a misspelt key in each, named
     /// with its line.
     #[test]
     fn every_table_refuses_an_unknown_key() {
