@@ -43,64 +43,65 @@ pub const FALLBACK: &str = "*";
 /// Default c of the Cooper–Mikic–Yovanovich correlation.
 pub const CMY_DEFAULT_C: f64 = 1.25;
 
-/// The file's tables as serde reads them, each refusing a key it does not know: a misspelt
-/// key is an error that names it, never a setting silently left at its default.
-macro_rules! tables {
-    ($($(#[$attr:meta])* struct $name:ident { $($body:tt)* })*) => {
-        $(
-            #[derive(Deserialize)]
-            #[serde(deny_unknown_fields)]
-            $(#[$attr])*
-            struct $name { $($body)* }
-        )*
-    };
+// The file's tables as serde reads them, each refusing a key it does not know
+// (`deny_unknown_fields` on every one): a misspelt key is an error that names it, never a
+// setting silently left at its default.
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileSpec {
+    #[serde(default)]
+    interactions: BTreeMap<String, Spanned<InteractionSpec>>,
 }
 
-tables! {
-    struct FileSpec {
-        #[serde(default)]
-        interactions: BTreeMap<String, Spanned<InteractionSpec>>,
-    }
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct InteractionSpec {
+    conductance: Option<Spanned<ConductanceSpec>>,
+    radiation: Option<Spanned<RadiationSpec>>,
+    friction: Option<Spanned<FrictionSpec>>,
+    heat: Option<Spanned<HeatSpec>>,
+}
 
-    struct InteractionSpec {
-        conductance: Option<Spanned<ConductanceSpec>>,
-        radiation: Option<Spanned<RadiationSpec>>,
-        friction: Option<Spanned<FrictionSpec>>,
-        heat: Option<Spanned<HeatSpec>>,
-    }
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct HeatSpec {
+    fraction: Option<Spanned<f64>>,
+    slave_share: Option<Spanned<f64>>,
+    slave_effusivity: Option<Spanned<f64>>,
+    master_effusivity: Option<Spanned<f64>>,
+    speed: Option<Spanned<f64>>,
+}
 
-    struct HeatSpec {
-        fraction: Option<Spanned<f64>>,
-        slave_share: Option<Spanned<f64>>,
-        slave_effusivity: Option<Spanned<f64>>,
-        master_effusivity: Option<Spanned<f64>>,
-        speed: Option<Spanned<f64>>,
-    }
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FrictionSpec {
+    table: Spanned<Vec<Spanned<Vec<f64>>>>,
+}
 
-    struct FrictionSpec {
-        table: Spanned<Vec<Spanned<Vec<f64>>>>,
-    }
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ConductanceSpec {
+    law: Spanned<String>,
+    k: Option<Spanned<f64>>,
+    table: Option<Spanned<Vec<Vec<f64>>>>,
+    k_gas: Option<Spanned<f64>>,
+    g0: Option<Spanned<f64>>,
+    min_gap: Option<Spanned<f64>>,
+    c: Option<Spanned<f64>>,
+    k_s: Option<Spanned<f64>>,
+    m: Option<Spanned<f64>>,
+    sigma: Option<Spanned<f64>>,
+    #[serde(rename = "H_c")]
+    h_c: Option<Spanned<f64>>,
+}
 
-    struct ConductanceSpec {
-        law: Spanned<String>,
-        k: Option<Spanned<f64>>,
-        table: Option<Spanned<Vec<Vec<f64>>>>,
-        k_gas: Option<Spanned<f64>>,
-        g0: Option<Spanned<f64>>,
-        min_gap: Option<Spanned<f64>>,
-        c: Option<Spanned<f64>>,
-        k_s: Option<Spanned<f64>>,
-        m: Option<Spanned<f64>>,
-        sigma: Option<Spanned<f64>>,
-        #[serde(rename = "H_c")]
-        h_c: Option<Spanned<f64>>,
-    }
-
-    struct RadiationSpec {
-        view_factor: Option<Spanned<f64>>,
-        stefan_boltzmann: Option<Spanned<f64>>,
-        absolute_zero: Option<Spanned<f64>>,
-    }
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RadiationSpec {
+    view_factor: Option<Spanned<f64>>,
+    stefan_boltzmann: Option<Spanned<f64>>,
+    absolute_zero: Option<Spanned<f64>>,
 }
 
 /// A validated configuration file.
@@ -786,7 +787,7 @@ table = [[0.0, 1.0], [100.0, 3.0]]
         assert_eq!(k(&[b' '; 80]), 0.0);
     }
 
-    /// Every table refuses a key it does not know (`tables!`): a misspelt key in each, named
+    /// Every table refuses a key it does not know (`deny_unknown_fields`): a misspelt key in each, named
     /// with its line.
     #[test]
     fn every_table_refuses_an_unknown_key() {

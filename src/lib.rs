@@ -27,33 +27,6 @@
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 
-/// Builder setters that only store their argument in the field of the same name:
-/// `field_setters! { /// doc \n with_x(field: Type); … }` writes, per line, the documented
-/// `#[must_use] pub fn with_x(mut self, field: Type) -> Self` (`pub const fn` after a leading
-/// `const;`). A setter that validates its argument is written out.
-macro_rules! field_setters {
-    (const; $($(#[$attr:meta])* $name:ident($field:ident: $ty:ty);)*) => {
-        $(
-            $(#[$attr])*
-            #[must_use]
-            pub const fn $name(mut self, $field: $ty) -> Self {
-                self.$field = $field;
-                self
-            }
-        )*
-    };
-    ($($(#[$attr:meta])* $name:ident($field:ident: $ty:ty);)*) => {
-        $(
-            $(#[$attr])*
-            #[must_use]
-            pub fn $name(mut self, $field: $ty) -> Self {
-                self.$field = $field;
-                self
-            }
-        )*
-    };
-}
-
 #[allow(unsafe_code)]
 pub mod abi;
 pub mod config;

@@ -13,6 +13,7 @@ use crate::laws::rate_state::RateState;
 use crate::switch::Path;
 
 mod adhesive;
+mod builder;
 mod coulomb;
 mod coulomb_fast;
 mod rate_state;
@@ -22,6 +23,7 @@ pub use adhesive::{
     ADHESIVE, ADHESIVE_NPROPS, AdhesiveBuilder, AdhesiveProps, COULOMB_SPECIAL_CASE, HeatExchange,
     LAW_ADHESIVE,
 };
+pub use builder::LawBuilder;
 pub use coulomb::{
     COULOMB, CoulombBuilder, DECAY_LEAN, EXTENDED_CONSTANT, EXTENDED_DECAY, PLAIN, QUASI_STATIC,
     STEADY_TRANSPORT, TRANSPORT,
@@ -34,8 +36,9 @@ pub use coulomb_fast::{
 use coulomb_fast::{coulomb_fast, fast_extended_friction_law};
 pub use rate_state::{LAW_RATE_STATE, RATE_STATE, RATE_STATE_NPROPS, RateStateBuilder, rate_state};
 
-/// Every law's `PROPS` layout, in law-code order: the laws a tool can ask about, in the order
-/// `ifl_props_law_code` numbers them.
+/// Every law's `PROPS` layout, in law-code order (`PROPS(1)` = 1, 2, 3): the laws a tool can ask
+/// about (`ifl_props_*`, numbered as `ifl_props_law_code` numbers them) and what
+/// [`LawBuilder`] starts from.
 pub const LAYOUTS: [&schema::Layout; 3] = [&COULOMB, &ADHESIVE, &RATE_STATE];
 
 /// A law selected and parametrised by `PROPS`.

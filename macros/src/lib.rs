@@ -21,7 +21,7 @@ use syn::{Attribute, FnArg, Ident, ItemFn, Pat, Stmt, Token, Type, braced, paren
 /// #[interfacial_macros::with_twin(
 ///     view = #[derive(Clone, Copy)] struct FricArgs as args,
 ///     unread = (ddpddh, slip),
-///     twin = #[cold] #[inline(never)] fric_general { args.general() },
+///     twin = #[cold] #[inline(never)] unsafe extern "C" fn fric_general { args.general() },
 /// )]
 /// pub unsafe extern "C" fn fric_(lm: *mut c_int, /* … */) { /* fast path */ }
 /// ```
@@ -38,7 +38,9 @@ use syn::{Attribute, FnArg, Ident, ItemFn, Pat, Stmt, Token, Type, braced, paren
 ///   exported, private), `let _ = (ddpddh, slip);`, the same `let args = FricArgs { … };`, then
 ///   the twin's statements.
 ///
-/// Every parameter must be a plain name; each `unread` name must be a parameter.
+/// Every parameter must be a plain name; each `unread` name must be a parameter. The twin is
+/// written with the export's qualifiers (`unsafe extern "C" fn fric_general`), so that its
+/// definition is found by searching for `fn fric_general`; other qualifiers are refused.
 #[proc_macro_attribute]
 pub fn with_twin(attr: CompilerTokens, item: CompilerTokens) -> CompilerTokens {
     emit(expand(attr.into(), item.into()))
@@ -77,9 +79,11 @@ struct Spec {
     twin: Option<Twin>,
 }
 
-/// The twin of [`with_twin`]: its attributes, name and statements.
+/// The twin of [`with_twin`]: its attributes, qualifiers (as written), name and statements.
 struct Twin {
     attrs: Vec<Attribute>,
+    unsafety: Option<Token![unsafe]>,
+    abi: Option<syn::Abi>,
     name: Ident,
     stmts: Vec<Stmt>,
 }
@@ -120,6 +124,9 @@ impl Parse for Spec {
             } else {
                 key(input, "twin")?;
                 let attrs = Attribute::parse_outer(input)?;
+                let unsafety = input.parse()?;
+                let abi = input.parse()?;
+                input.parse::<Token![fn]>()?;
                 let name = input.parse()?;
                 let body;
                 braced!(body in input);
@@ -127,7 +134,13 @@ impl Parse for Spec {
                 if !input.is_empty() {
                     input.parse::<Token![,]>()?;
                 }
-                Some(Twin { attrs, name, stmts })
+                Some(Twin {
+                    attrs,
+                    unsafety,
+                    abi,
+                    name,
+                    stmts,
+                })
             }
         };
         Ok(Spec {
@@ -155,7 +168,26 @@ fn expand(attr: TokenStream, item: TokenStream) -> syn::Result<TokenStream> {
     let sig = &export.sig;
     let names = view.params.iter().map(|(name, _)| name);
     let unread = &spec.unread;
-    let Twin { attrs, name, stmts } = twin;
+    let Twin {
+        attrs,
+        unsafety,
+        abi,
+        name,
+        stmts,
+    } = twin;
+    let written = quote! { #unsafety #abi fn };
+    let export_prefix = {
+        let (unsafety, abi) = (&sig.safety, &sig.abi);
+        quote! { #unsafety #abi fn }
+    };
+    if written.to_string() != export_prefix.to_string() {
+        return Err(syn::Error::new(
+            name.span(),
+            format!(
+                "with_twin: write the twin as `{export_prefix} {name}`, the export's qualifiers"
+            ),
+        ));
+    }
     let mut twin_sig = sig.clone();
     twin_sig.ident = name.clone();
     let export_attrs = &export.attrs;
@@ -305,7 +337,7 @@ mod tests {
         quote! {
             view = #[derive(Clone, Copy)] struct View as v,
             unread = (b),
-            twin = #[cold] ex_twin { v.slow(); },
+            twin = #[cold] unsafe extern "C" fn ex_twin { v.slow(); },
         }
     }
 
@@ -388,7 +420,8 @@ mod tests {
 
     #[test]
     fn refuses_an_unread_name_that_is_not_a_parameter() {
-        let spec = quote! { view = struct View as v, unread = (b, z), twin = t { } };
+        let spec =
+            quote! { view = struct View as v, unread = (b, z), twin = unsafe extern "C" fn t { } };
         let err = expand(spec, export()).unwrap_err().to_string();
         assert_eq!(
             err,
@@ -399,14 +432,15 @@ mod tests {
     #[test]
     fn refuses_a_parameter_that_is_not_a_plain_name() {
         let item = quote! { extern "C" fn ex_((a, b): (i32, i32)) {} };
-        let spec = quote! { view = struct View as v, unread = (), twin = t { } };
+        let spec =
+            quote! { view = struct View as v, unread = (), twin = unsafe extern "C" fn t { } };
         let err = expand(spec, item).unwrap_err().to_string();
         assert_eq!(err, "with_twin: every parameter must be a plain name");
     }
 
     #[test]
     fn names_the_missing_key() {
-        let spec = quote! { view = struct View as v, twin = t { } };
+        let spec = quote! { view = struct View as v, twin = unsafe extern "C" fn t { } };
         let err = expand(spec, export()).unwrap_err().to_string();
         assert_eq!(err, "with_twin: expected `unread = …` here");
     }
@@ -444,5 +478,24 @@ mod tests {
             err,
             "with_view: `z` in `unread` is not a parameter of `ex_`"
         );
+    }
+
+    #[test]
+    fn twin_is_written_with_the_exports_qualifiers() {
+        for twin in [
+            quote! { fn t { } },
+            quote! { unsafe fn t { } },
+            quote! { extern "C" fn t { } },
+        ] {
+            let spec = quote! { view = struct View as v, unread = (), twin = #twin };
+            let err = expand(spec, export()).unwrap_err().to_string();
+            assert_eq!(
+                err,
+                "with_twin: write the twin as `unsafe extern \"C\" fn t`, the export's qualifiers"
+            );
+        }
+        // Without `fn` the twin does not parse: its definition is always `… fn NAME`.
+        let spec = quote! { view = struct View as v, unread = (), twin = t { } };
+        assert!(expand(spec, export()).is_err());
     }
 }

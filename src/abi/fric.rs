@@ -89,7 +89,7 @@ mod rate;
         /// As `fric_`.
         #[cold]
         #[inline(never)]
-        fric_general {
+        unsafe extern "C" fn fric_general {
             let _ = boundary_outlined(
                 // SAFETY (all three closures): the host's pointers, valid per the contract above.
                 || unsafe { args.site() },

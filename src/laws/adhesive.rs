@@ -166,12 +166,14 @@ impl Adhesive {
         }
     }
 
-    field_setters! {
-        /// How the rate-dependent strength enters the return map: the default
-        /// [`RateFormulation::RateFollowingStiffness`], or the earlier rate-free stick stiffness
-        /// τ_s/γ_crit with the slip from the quadratic (for comparisons only; no `PROPS` entry
-        /// selects it).
-        with_rate_formulation(formulation: RateFormulation);
+    /// How the rate-dependent strength enters the return map: the default
+    /// [`RateFormulation::RateFollowingStiffness`], or the earlier rate-free stick stiffness
+    /// τ_s/γ_crit with the slip from the quadratic (for comparisons only; no `PROPS` entry
+    /// selects it).
+    #[must_use]
+    pub fn with_rate_formulation(mut self, formulation: RateFormulation) -> Self {
+        self.formulation = formulation;
+        self
     }
 
     /// The rate formulation in use.

@@ -53,7 +53,8 @@ impl<const N: usize> Default for Increment<N> {
     }
 }
 
-/// How a point's status is stored in `STATEV(3)`: [`FrictionStatus`] for the Coulomb laws,
+/// How a point's status is stored in `STATEV(3)`:
+/// [`FrictionStatus`](crate::laws::coulomb::FrictionStatus) for the Coulomb laws,
 /// `InterfaceStatus` for the adhesive interface (which adds bonded and open).
 pub trait StatusCode: Copy {
     /// The law, as a message about too short a `STATEV` names it.

@@ -218,9 +218,11 @@ impl Coulomb {
         Ok(self)
     }
 
-    field_setters! {
-        /// Chooses how stick is enforced.
-        with_stick(stick: StickMode);
+    /// Chooses how stick is enforced.
+    #[must_use]
+    pub fn with_stick(mut self, stick: StickMode) -> Self {
+        self.stick = stick;
+        self
     }
 
     /// The friction coefficient μ.

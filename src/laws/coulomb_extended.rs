@@ -291,9 +291,11 @@ impl ExtendedCoulomb {
         }
     }
 
-    field_setters! {
-        /// Viscous stick for steady-state transport instead of elastic or exact stick.
-        with_steady_transport(transport: Option<SteadyTransport>);
+    /// Viscous stick for steady-state transport instead of elastic or exact stick.
+    #[must_use]
+    pub fn with_steady_transport(mut self, transport: Option<SteadyTransport>) -> Self {
+        self.transport = transport;
+        self
     }
 
     /// μ₂ already validated by the caller (a `PROPS` reader: μ₂ = μ₁ when isotropic);
@@ -323,20 +325,42 @@ impl ExtendedCoulomb {
         Ok(self)
     }
 
-    field_setters! {
-        /// μ(γ̇, p, θ̄) factors.
-        with_coefficient_law(coefficient: CoefficientLaw);
-        /// Freeze μ at its start-of-increment value (explicit in the slip rate).
-        with_frozen_coefficient(frozen: bool);
-        /// Dynamics with HHT time integration.
-        with_hht(hht: Option<Hht>);
-        /// Viscous tangential damping.
-        with_damping(damping: Option<Damping>);
-        /// How a rate-dependent μ enters the return map: the default
-        /// [`RateFormulation::RateFollowingStiffness`], or the earlier rate-free stick stiffness
-        /// (for comparisons only: it is unstable under velocity weakening, docs/props.md). No
-        /// `PROPS` entry selects it.
-        with_rate_formulation(formulation: RateFormulation);
+    /// μ(γ̇, p, θ̄) factors.
+    #[must_use]
+    pub fn with_coefficient_law(mut self, coefficient: CoefficientLaw) -> Self {
+        self.coefficient = coefficient;
+        self
+    }
+
+    /// Freeze μ at its start-of-increment value (explicit in the slip rate).
+    #[must_use]
+    pub fn with_frozen_coefficient(mut self, frozen: bool) -> Self {
+        self.frozen = frozen;
+        self
+    }
+
+    /// Dynamics with HHT time integration.
+    #[must_use]
+    pub fn with_hht(mut self, hht: Option<Hht>) -> Self {
+        self.hht = hht;
+        self
+    }
+
+    /// Viscous tangential damping.
+    #[must_use]
+    pub fn with_damping(mut self, damping: Option<Damping>) -> Self {
+        self.damping = damping;
+        self
+    }
+
+    /// How a rate-dependent μ enters the return map: the default
+    /// [`RateFormulation::RateFollowingStiffness`], or the earlier rate-free stick stiffness
+    /// (for comparisons only: it is unstable under velocity weakening, docs/props.md). No
+    /// `PROPS` entry selects it.
+    #[must_use]
+    pub fn with_rate_formulation(mut self, formulation: RateFormulation) -> Self {
+        self.formulation = formulation;
+        self
     }
 
     /// The rate formulation in use.

@@ -9,10 +9,10 @@ use crate::laws::adhesive_interface::AdhesiveInterface;
 use crate::laws::coulomb::{Coulomb, DEFAULT_SLIP_TOLERANCE, StickMode};
 
 use super::FrictionLaw;
+use super::builder::{LawBuilder, entry_setters};
 use super::schema::Default::{self, Described, Required};
 use super::schema::{
     Class, Entry, FastLayout, Fix, Fixed, Layout, Plan, PropsError, Rule, admits_fixed,
-    fast_layout, props_builder,
 };
 
 /// `PROPS(1)` code of the adhesive friction law.
@@ -87,9 +87,11 @@ impl<const N: usize> FastLayout for SpecialCase<N> {
     const PLAN: Plan = Plan::of(&ADHESIVE, &COULOMB_SPECIAL_CASE, N);
 }
 
-fast_layout! {
-    /// The validator of the whole layout, nothing pinned.
-    pub(crate) Whole = ADHESIVE, Fixed::NONE, ADHESIVE_NPROPS
+/// The validator of the whole layout, nothing pinned.
+pub(crate) struct Whole;
+
+impl FastLayout for Whole {
+    const PLAN: Plan = Plan::of(&ADHESIVE, &Fixed::NONE, ADHESIVE_NPROPS);
 }
 
 /// `PROPS(11)`: 0 or 1.
@@ -258,11 +260,12 @@ pub(crate) fn adhesive(props: &[f64]) -> Result<AdhesiveProps, LawError> {
     Ok(AdhesiveProps::from_entries(&e))
 }
 
-props_builder! {
-    /// A law-2 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
-    /// starts at its "0 / absent" value, `PROPS(1) = 2`.
-    AdhesiveBuilder, ADHESIVE, "law 2",
-    {
+/// A law-2 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
+/// starts at its "0 / absent" value, `PROPS(1) = 2`.
+pub type AdhesiveBuilder = LawBuilder<LAW_ADHESIVE>;
+
+impl AdhesiveBuilder {
+    entry_setters!("law 2", {
         coeff => "coeff",
         coeff_static => "coeffStatic",
         sa => "Sa",
@@ -274,15 +277,15 @@ props_builder! {
         normal_stiffness => "normal_stiffness",
         heat_fraction => "heat_fraction",
         slave_fraction => "slave_fraction",
-    }
-}
+    });
 
-impl AdhesiveBuilder {
     /// Sets the conductance switch (`PROPS(11)`).
     #[must_use]
     pub fn conductance(self, on: bool) -> Self {
-        const INDEX: usize = ADHESIVE.index_of("conductance");
-        AdhesiveBuilder(self.0.set(INDEX, if on { 1.0 } else { 0.0 }))
+        self.set(
+            const { ADHESIVE.index_of("conductance") },
+            if on { 1.0 } else { 0.0 },
+        )
     }
 }
 

@@ -21,9 +21,10 @@ use crate::laws::coulomb_extended::{
 use crate::laws::friction_coefficient::CoefficientLaw;
 use crate::laws::friction_table::FrictionTable;
 
+use super::builder::{LawBuilder, entry_setters};
 use super::schema::Default::{Derived, Described, Entry as SameAs, Required, Value};
 use super::schema::{
-    Class, Entry, Fix, Fixed, LawFn, Layout, PropsError, Rule, Variant, fast_layout, props_builder,
+    Class, Entry, FastLayout, Fix, Fixed, LawFn, Layout, Plan, PropsError, Rule, Variant,
 };
 use super::{COULOMB_EXTENDED_NPROPS, COULOMB_NPROPS, FrictionLaw, LAW_COULOMB};
 
@@ -201,9 +202,11 @@ pub const PLAIN: Fixed = Fixed {
     fixed: &[(3, Fix::ZeroOrEqual(2)), (7, Fix::MappedBy(&[0, 1, 2]))],
 };
 
-fast_layout! {
-    /// The validator of [`PLAIN`], worked out when the crate compiles.
-    pub(crate) Plain = COULOMB, PLAIN, COULOMB_NPROPS
+/// The validator of [`PLAIN`], worked out when the crate compiles.
+pub(crate) struct Plain;
+
+impl FastLayout for Plain {
+    const PLAN: Plan = Plan::of(&COULOMB, &PLAIN, COULOMB_NPROPS);
 }
 
 /// `PROPS(14..19)` pinned to ±0: no HHT (nor steady transport's ω) and no damping.
@@ -227,9 +230,11 @@ pub const DECAY_LEAN: Fixed = Fixed {
     ),
 };
 
-fast_layout! {
-    /// The validator of [`DECAY_LEAN`], worked out when the crate compiles.
-    pub(crate) DecayLean = COULOMB, DECAY_LEAN, COULOMB_EXTENDED_NPROPS
+/// The validator of [`DECAY_LEAN`], worked out when the crate compiles.
+pub(crate) struct DecayLean;
+
+impl FastLayout for DecayLean {
+    const PLAN: Plan = Plan::of(&COULOMB, &DECAY_LEAN, COULOMB_EXTENDED_NPROPS);
 }
 
 /// The extended fast reader's layout for the frictional stick modes with constant μ: any
@@ -249,14 +254,18 @@ pub const QUASI_STATIC: Fixed = Fixed {
     fixed: &Fixed::joined::<8>(EXTENDED_CONSTANT.fixed, &NO_HHT_OR_DAMPING),
 };
 
-fast_layout! {
-    /// The validator of [`QUASI_STATIC`], worked out when the crate compiles.
-    pub(crate) QuasiStatic = COULOMB, QUASI_STATIC, COULOMB_EXTENDED_NPROPS
+/// The validator of [`QUASI_STATIC`], worked out when the crate compiles.
+pub(crate) struct QuasiStatic;
+
+impl FastLayout for QuasiStatic {
+    const PLAN: Plan = Plan::of(&COULOMB, &QUASI_STATIC, COULOMB_EXTENDED_NPROPS);
 }
 
-fast_layout! {
-    /// The validator of [`EXTENDED_CONSTANT`], worked out when the crate compiles.
-    pub(crate) ExtendedConstant = COULOMB, EXTENDED_CONSTANT, COULOMB_EXTENDED_NPROPS
+/// The validator of [`EXTENDED_CONSTANT`], worked out when the crate compiles.
+pub(crate) struct ExtendedConstant;
+
+impl FastLayout for ExtendedConstant {
+    const PLAN: Plan = Plan::of(&COULOMB, &EXTENDED_CONSTANT, COULOMB_EXTENDED_NPROPS);
 }
 
 /// [`EXTENDED_CONSTANT`] with the exponential decay law, `PROPS(8) = 1` (μ_s and d_c > 0).
@@ -267,9 +276,11 @@ pub const EXTENDED_DECAY: Fixed = Fixed {
     fixed: &[(7, Fix::MappedBy(&[0, 1, 2])), (8, Fix::Is(1))],
 };
 
-fast_layout! {
-    /// The validator of [`EXTENDED_DECAY`], worked out when the crate compiles.
-    pub(crate) ExtendedDecay = COULOMB, EXTENDED_DECAY, COULOMB_EXTENDED_NPROPS
+/// The validator of [`EXTENDED_DECAY`], worked out when the crate compiles.
+pub(crate) struct ExtendedDecay;
+
+impl FastLayout for ExtendedDecay {
+    const PLAN: Plan = Plan::of(&COULOMB, &EXTENDED_DECAY, COULOMB_EXTENDED_NPROPS);
 }
 
 /// The extended fast reader's layout for steady-state transport: `PROPS(7) = 3`, which
@@ -280,9 +291,11 @@ pub const TRANSPORT: Fixed = Fixed {
     fixed: &[(7, Fix::Is(VISCOUS)), (8, Fix::MappedBy(&[0, 1]))],
 };
 
-fast_layout! {
-    /// The validator of [`TRANSPORT`], worked out when the crate compiles.
-    pub(crate) Transport = COULOMB, TRANSPORT, COULOMB_EXTENDED_NPROPS
+/// The validator of [`TRANSPORT`], worked out when the crate compiles.
+pub(crate) struct Transport;
+
+impl FastLayout for Transport {
+    const PLAN: Plan = Plan::of(&COULOMB, &TRANSPORT, COULOMB_EXTENDED_NPROPS);
 }
 
 /// Whether law-1 `PROPS` select the interaction's μ table (`PROPS(8)`, the μ law, = 2): the
@@ -505,11 +518,12 @@ fn constant_stick_law(e: &[f64; COULOMB_EXTENDED_NPROPS]) -> Result<FrictionLaw,
     Ok(FrictionLaw::Coulomb(base))
 }
 
-props_builder! {
-    /// A law-1 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
-    /// starts at its "0 / absent" value, `PROPS(1) = 1`.
-    CoulombBuilder, COULOMB, "law 1",
-    {
+/// A law-1 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
+/// starts at its "0 / absent" value, `PROPS(1) = 1`.
+pub type CoulombBuilder = LawBuilder<LAW_COULOMB>;
+
+impl CoulombBuilder {
+    entry_setters!("law 1", {
         mu => "mu",
         mu2 => "mu2",
         tau_max => "tau_max",
@@ -533,7 +547,7 @@ props_builder! {
         damping_clearance => "damping_clearance",
         damping_fraction => "damping_fraction",
         frozen => "frozen",
-    }
+    });
 }
 
 #[cfg(test)]

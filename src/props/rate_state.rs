@@ -6,8 +6,9 @@ use crate::LawError;
 use crate::laws::coulomb::{Coulomb, DEFAULT_SLIP_TOLERANCE};
 use crate::laws::rate_state::{CoefficientForm, RateState, RateStateParameters, StateEvolution};
 
+use super::builder::{LawBuilder, entry_setters};
 use super::schema::Default::{self, Described, Required};
-use super::schema::{Class, Entry, Layout, Rule, props_builder};
+use super::schema::{Class, Entry, Layout, Rule};
 
 /// `PROPS(1)` code of rate-and-state friction.
 pub const LAW_RATE_STATE: i32 = 3;
@@ -67,11 +68,12 @@ const FORM: Class = Class::Choice(&[
     ),
 ]);
 
-props_builder! {
-    /// A law-3 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
-    /// starts at its "0 / absent" value, `PROPS(1) = 3`.
-    RateStateBuilder, RATE_STATE, "law 3",
-    {
+/// A law-3 `PROPS` array built by entry name (tests, scenes, fuzz decoders): every entry
+/// starts at its "0 / absent" value, `PROPS(1) = 3`.
+pub type RateStateBuilder = LawBuilder<LAW_RATE_STATE>;
+
+impl RateStateBuilder {
+    entry_setters!("law 3", {
         mu0 => "mu0",
         a => "a",
         b => "b",
@@ -82,7 +84,7 @@ props_builder! {
         gamma_crit => "gamma_crit",
         slip_tolerance => "slip_tolerance",
         theta0 => "theta0",
-    }
+    });
 }
 
 /// The law of `PROPS(1) = 3`: the layout's check (classes, rules, messages naming the entry),

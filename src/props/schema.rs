@@ -240,16 +240,32 @@ impl Entry {
         self
     }
 
-    field_setters! {
-        const;
-        /// The symbol.
-        symbol(symbol: &'static str);
-        /// The unit.
-        unit(unit: &'static str);
-        /// What 0 or absent means (instead of the value 0).
-        when_absent(default: Default);
-        /// The docs table's extra words.
-        note(note: &'static str);
+    /// The symbol.
+    #[must_use]
+    pub const fn symbol(mut self, symbol: &'static str) -> Self {
+        self.symbol = symbol;
+        self
+    }
+
+    /// The unit.
+    #[must_use]
+    pub const fn unit(mut self, unit: &'static str) -> Self {
+        self.unit = unit;
+        self
+    }
+
+    /// What 0 or absent means (instead of the value 0).
+    #[must_use]
+    pub const fn when_absent(mut self, default: Default) -> Self {
+        self.default = default;
+        self
+    }
+
+    /// The docs table's extra words.
+    #[must_use]
+    pub const fn note(mut self, note: &'static str) -> Self {
+        self.note = note;
+        self
     }
 
     /// How messages name the entry: `key (meaning)` for a seed name, `meaning symbol`
@@ -633,7 +649,7 @@ fn range_flag(v: f64) -> u64 {
 }
 
 mod plan;
-pub(crate) use plan::{FastLayout, Plan, admits_fixed, fast_layout};
+pub(crate) use plan::{FastLayout, Plan, admits_fixed};
 
 impl Layout {
     /// `PROPS(index)`'s description. Panics on an index outside the layout (a programming
@@ -1029,60 +1045,9 @@ const fn const_str_eq(a: &str, b: &str) -> bool {
     true
 }
 
-/// A law's named-setter builder over [`PropsBuilder`]: the struct, `new`, one setter per entry
-/// (each by its key in the layout, so an unknown key does not compile), `build` and
-/// `build_first`. Every entry starts at its "0 / absent" value.
-macro_rules! props_builder {
-    (
-        $(#[$attr:meta])*
-        $name:ident, $layout:path, $law:literal,
-        { $($method:ident => $key:literal),* $(,)? }
-    ) => {
-        $(#[$attr])*
-        #[derive(Clone, Debug, PartialEq)]
-        pub struct $name($crate::props::schema::PropsBuilder);
-
-        impl ::std::default::Default for $name {
-            fn default() -> Self {
-                $name($crate::props::schema::PropsBuilder::new(&$layout))
-            }
-        }
-
-        impl $name {
-            /// Every entry at its "0 / absent" value, `PROPS(1)` the law code.
-            #[must_use]
-            pub fn new() -> Self {
-                Self::default()
-            }
-
-            $(
-                #[doc = concat!("Sets `", $key, "` (docs/props.md, ", $law, ").")]
-                #[must_use]
-                pub fn $method(self, v: f64) -> Self {
-                    const INDEX: usize = $layout.index_of($key);
-                    $name(self.0.set(INDEX, v))
-                }
-            )*
-
-            /// Every entry of the layout.
-            #[must_use]
-            pub fn build(&self) -> Vec<f64> {
-                self.0.build()
-            }
-
-            /// The first `nprops` entries (a host that leaves out trailing ones).
-            #[must_use]
-            pub fn build_first(&self, nprops: usize) -> Vec<f64> {
-                self.0.build_first(nprops)
-            }
-        }
-    };
-}
-pub(crate) use props_builder;
-
 /// A `PROPS` array built entry by entry, by name: for tests, scenes, fuzz decoders and
 /// harness generators, so that none of them builds `PROPS` by position. Laws wrap it in
-/// builders with one named setter per entry (`AdhesiveBuilder`).
+/// builders with one named setter per entry (`props::LawBuilder`, `AdhesiveBuilder`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PropsBuilder {
     layout: &'static Layout,

@@ -57,9 +57,11 @@ impl SteadyTransport {
         })
     }
 
-    field_setters! {
-        /// The same parameters with γ̇_crit taken as seed `reference` defines it.
-        with_reference(reference: ViscousSlipReference);
+    /// The same parameters with γ̇_crit taken as seed `reference` defines it.
+    #[must_use]
+    pub fn with_reference(mut self, reference: ViscousSlipReference) -> Self {
+        self.reference = reference;
+        self
     }
 
     /// γ̇_crit at the distance `radius` from the axis: 2·F_f·ω·R (seed 000) or F_f·ω·R

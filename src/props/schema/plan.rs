@@ -65,21 +65,6 @@ pub(crate) struct Plan {
     rules: u32,
 }
 
-/// `$vis struct $name;` whose [`FastLayout::PLAN`] is `Plan::of(&$layout, &$fixed, $nprops)`:
-/// a fast path's validator in one declaration.
-macro_rules! fast_layout {
-    ($(#[$attr:meta])* $vis:vis $name:ident = $layout:expr, $fixed:expr, $nprops:expr) => {
-        $(#[$attr])*
-        $vis struct $name;
-
-        impl $crate::props::schema::FastLayout for $name {
-            const PLAN: $crate::props::schema::Plan =
-                $crate::props::schema::Plan::of(&$layout, &$fixed, $nprops);
-        }
-    };
-}
-pub(crate) use fast_layout;
-
 /// A named fixed layout whose validator is worked out at compile time: a unit type per fast
 /// path, `impl FastLayout for Plain { const PLAN: Plan = Plan::of(&COULOMB, &PLAIN, 7); }`.
 pub(crate) trait FastLayout {
