@@ -30,9 +30,7 @@
 //! returns that law so the entry points run the Coulomb code itself (same results, same cost).
 
 use super::contact::{Increment, Traction};
-use super::coulomb::{
-    Coulomb, CoulombState, CriticalSlip, FrictionStatus, StickMode, Update, name_bad_input,
-};
+use super::coulomb::{Coulomb, CoulombState, CriticalSlip, FrictionStatus, StickMode, Update};
 use super::friction_coefficient::{RateFormulation, STICK_TEST_ROUNDING};
 use super::parameter_range::nonnegative;
 use super::point_law::{PointAnswer, PointInput, PointLaw, PointResult};
@@ -623,14 +621,8 @@ impl Adhesive {
         inc: &Increment<N>,
         state: &CoulombState,
     ) -> Result<Update<N>, LawError> {
-        let mut probe = inc.pressure * 0.0 + inc.dpressure * 0.0 + inc.dtime * 0.0;
-        for i in 0..N {
-            probe += inc.tau[i] * 0.0 + inc.dgam[i] * 0.0;
-        }
-        if probe != 0.0 {
-            // Elastic stick reads no TAULM: the Coulomb law's naming, in the same order.
-            return Err(name_bad_input(*inc, StickMode::Elastic));
-        }
+        // Elastic stick reads no TAULM: the Coulomb law's naming, in the same order.
+        inc.check_finite()?;
         // Read only after a slip (the rate-following memory); then it must be a rate (≥ 0;
         // finite: the state reader refuses NaN and ∞).
         if state.status == FrictionStatus::Slip && state.slip_rate < 0.0 {
@@ -676,11 +668,7 @@ impl PointLaw for Adhesive {
 
     fn update_point<const N: usize>(&self, at: &PointInput<'_, N>) -> PointResult<N> {
         let up = self.update(at.increment, &CoulombState::from_statev(at.statev)?)?;
-        Ok(PointAnswer::isothermal(
-            up.contact,
-            &up.state,
-            up.outcome.step_ratio,
-        ))
+        Ok(PointAnswer::isothermal(up.contact, &up.state, up.outcome))
     }
 }
 

@@ -3,7 +3,7 @@
 //! [`Traction`]), and the three-scalar state most laws keep in `STATEV(1..3)` ([`PointState`],
 //! over a law's own [`StatusCode`]). No law lives here; `coulomb.rs` and the others import it.
 
-use super::small_vec::scale;
+use super::small_vec::{all_finite, scale};
 use crate::LawError;
 
 /// The stick flag the host passes in (`LM` on entry): the previous iteration's answer, or at the
@@ -51,6 +51,53 @@ impl<const N: usize> Default for Increment<N> {
             entry: EntryFlag::Motion,
         }
     }
+}
+
+impl<const N: usize> Increment<N> {
+    /// ±0 when `PRESS`, `DPRESS`, `DTIME`, `TAU` and `DGAM` are finite, NaN otherwise (x·0 is
+    /// ±0 for finite x: one test for them all on the common path; [`name_bad_input`] names the
+    /// culprit on failure).
+    #[inline(always)]
+    pub(crate) fn motion_probe(&self) -> f64 {
+        let mut probe = self.pressure * 0.0 + self.dpressure * 0.0 + self.dtime * 0.0;
+        for i in 0..N {
+            probe += self.tau[i] * 0.0 + self.dgam[i] * 0.0;
+        }
+        probe
+    }
+
+    /// Refuses a non-finite `PRESS`, `DPRESS`, `DTIME`, `TAU` or `DGAM`, naming the first (a
+    /// law that reads no `TAULM`).
+    #[inline(always)]
+    pub(crate) fn check_finite(&self) -> Result<(), LawError> {
+        if self.motion_probe() == 0.0 {
+            Ok(())
+        } else {
+            Err(name_bad_input(*self, false))
+        }
+    }
+}
+
+/// Names the first non-finite input of `inc` (`TAULM` only when `reads_taulm`): the slow path
+/// of the laws' input probes.
+#[cold]
+#[inline(never)]
+#[allow(clippy::needless_pass_by_value)]
+pub(crate) fn name_bad_input<const N: usize>(inc: Increment<N>, reads_taulm: bool) -> LawError {
+    let what = if !inc.pressure.is_finite() {
+        "PRESS"
+    } else if !inc.dpressure.is_finite() {
+        "DPRESS"
+    } else if !all_finite(&inc.dgam) {
+        "DGAM"
+    } else if !all_finite(&inc.tau) {
+        "TAU"
+    } else if reads_taulm && !all_finite(&inc.taulm) {
+        "TAULM"
+    } else {
+        "DTIME"
+    };
+    LawError::Input(format!("{what} is NaN or infinite"))
 }
 
 /// How a point's status is stored in `STATEV(3)`:

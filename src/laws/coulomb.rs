@@ -13,13 +13,13 @@
 //! increment held fixed.
 
 use super::contact::{
-    Contact, EntryFlag, Increment, PointState, StatusCode, Traction, corrupt_statev,
+    Contact, EntryFlag, Increment, PointState, StatusCode, Traction, corrupt_statev, name_bad_input,
 };
 use super::coulomb_extended::ExtendedCoulomb;
 use super::parameter_range::{nonnegative, positive};
 use super::point_law::{PointAnswer, PointInput, PointLaw, PointResult};
 use super::small_vec::{
-    add, all_finite, diagonal, divided, dot, is_positive_normal, length_beyond, norm, scale, sum,
+    add, diagonal, divided, dot, is_positive_normal, length_beyond, norm, scale, sum,
     transverse_projection, unit_or_zero, unit_unless_infinite,
 };
 use crate::{LawError, Outcome};
@@ -484,7 +484,7 @@ impl Coulomb {
             return corrupt_statev();
         }
         if input_probe(&inc, self.stick) != 0.0 {
-            return name_bad_input(inc, self.stick);
+            return name_bad_input(inc, self.stick == StickMode::Exact);
         }
         if self.stick != StickMode::Rough
             && !matches!(self.critical_slip, CriticalSlip::Stiffness(_))
@@ -810,27 +810,6 @@ fn input_probe<const N: usize>(inc: &Increment<N>, stick: StickMode) -> f64 {
     a + b
 }
 
-/// Names the first non-finite input (the slow path of [`input_probe`]).
-#[cold]
-#[inline(never)]
-#[allow(clippy::needless_pass_by_value)]
-pub(super) fn name_bad_input<const N: usize>(inc: Increment<N>, stick: StickMode) -> LawError {
-    let what = if !inc.pressure.is_finite() {
-        "PRESS"
-    } else if !inc.dpressure.is_finite() {
-        "DPRESS"
-    } else if !all_finite(&inc.dgam) {
-        "DGAM"
-    } else if !all_finite(&inc.tau) {
-        "TAU"
-    } else if stick == StickMode::Exact && !all_finite(&inc.taulm) {
-        "TAULM"
-    } else {
-        "DTIME"
-    };
-    LawError::Input(format!("{what} is NaN or infinite"))
-}
-
 #[cold]
 #[inline(never)]
 fn bad_characteristic_length(length: f64, tolerance: f64) -> LawError {
@@ -880,11 +859,7 @@ impl PointLaw for Coulomb {
     fn update_point<const N: usize>(&self, at: &PointInput<'_, N>) -> PointResult<N> {
         let up = self.update(at.increment, &CoulombState::from_statev(at.statev)?)?;
         // μ does not depend on temperature: ∂τ/∂θ̄ = 0.
-        Ok(PointAnswer::isothermal(
-            up.contact,
-            &up.state,
-            up.outcome.step_ratio,
-        ))
+        Ok(PointAnswer::isothermal(up.contact, &up.state, up.outcome))
     }
 
     fn coefficients(&self, rate: f64, pressure: f64, temperature: f64) -> Option<[[f64; 2]; 4]> {

@@ -8,7 +8,7 @@
 
 use super::contact::{Conditions, Contact, Increment, PointState, StatusCode};
 use super::coulomb::FrictionStatus;
-use crate::LawError;
+use crate::{LawError, Outcome};
 
 /// The largest `STATEV` a law behind [`PointLaw`] writes.
 pub const MAX_POINT_STATEV: usize = 8;
@@ -30,9 +30,9 @@ pub struct PointAnswer<const N: usize> {
 
 impl<const N: usize> PointAnswer<N> {
     /// The answer of a law that does not depend on temperature (∂τ/∂θ̄ = 0), with the end
-    /// state `state`.
+    /// state `state` and the step ratio of `outcome`.
     #[must_use]
-    pub fn isothermal(contact: Contact<N>, state: &impl EndState, step_ratio: f64) -> Self {
+    pub fn isothermal(contact: Contact<N>, state: &impl EndState, outcome: Outcome) -> Self {
         let mut statev = [0.0; MAX_POINT_STATEV];
         state.write_statev(&mut statev);
         PointAnswer {
@@ -40,7 +40,7 @@ impl<const N: usize> PointAnswer<N> {
             statev,
             statev_len: state.statev_len(),
             dtau_dtheta: [0.0; N],
-            step_ratio,
+            step_ratio: outcome.step_ratio,
         }
     }
 

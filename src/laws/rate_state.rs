@@ -28,7 +28,7 @@
 //! dμ/dV = ∂μ/∂V + ∂μ/∂θ·dθ/dV. `LM` is always 0 (no exact stick).
 
 use super::contact::{Contact, Increment, Traction};
-use super::coulomb::{Coulomb, CoulombState, FrictionStatus, StickMode, name_bad_input};
+use super::coulomb::{Coulomb, CoulombState, FrictionStatus};
 use super::friction_coefficient::STICK_TEST_ROUNDING;
 use super::point_law::{EndState, PointAnswer, PointInput, PointLaw, PointResult};
 use super::small_vec::{all_finite, diagonal, norm, radial_transverse, scale, unit};
@@ -333,13 +333,7 @@ impl RateState {
         inc: &Increment<N>,
         state: &RateStateState,
     ) -> Result<RateStateUpdate<N>, LawError> {
-        let mut probe = inc.pressure * 0.0 + inc.dpressure * 0.0 + inc.dtime * 0.0;
-        for i in 0..N {
-            probe += inc.tau[i] * 0.0 + inc.dgam[i] * 0.0;
-        }
-        if probe != 0.0 {
-            return Err(name_bad_input(*inc, StickMode::Elastic));
-        }
+        inc.check_finite()?;
         if inc.dtime.is_nan() || inc.dtime <= 0.0 {
             return Err(LawError::Input(format!(
                 "DTIME = {}: rate-and-state friction needs a time increment > 0",
@@ -459,11 +453,7 @@ impl PointLaw for RateState {
     fn update_point<const N: usize>(&self, at: &PointInput<'_, N>) -> PointResult<N> {
         let start = RateStateState::from_statev(at.statev, self.theta_initial)?;
         let up = self.update(at.increment, &start)?;
-        Ok(PointAnswer::isothermal(
-            up.contact,
-            &up.state,
-            up.outcome.step_ratio,
-        ))
+        Ok(PointAnswer::isothermal(up.contact, &up.state, up.outcome))
     }
 }
 

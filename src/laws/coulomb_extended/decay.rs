@@ -46,11 +46,7 @@ impl ExtendedCoulomb {
     ) -> Result<ExtendedUpdate<N>, LawError> {
         // The input test of `check_inputs` (no TAULM in elastic stick, no DROT or viscous
         // stress without damping; θ̄ is 0 when not read).
-        let mut probe = inc.pressure * 0.0 + inc.dpressure * 0.0 + inc.dtime * 0.0;
-        for i in 0..N {
-            probe += inc.tau[i] * 0.0 + inc.dgam[i] * 0.0;
-        }
-        probe += theta * 0.0;
+        let probe = inc.motion_probe() + theta * 0.0;
         if !(probe == 0.0 && state.coulomb.slip_rate >= 0.0) {
             let conditions = Conditions {
                 temperature: theta,
