@@ -8,14 +8,16 @@
 //!   (same acceptance or the same refusal, answers continuous in γ_crit);
 //! - a property: `PROPS` arrays that the layouts accept, their entries drawn often at the small
 //!   integers that are switch values in the other law, are refused by no entry point that
-//!   takes that law (`fric_` for laws 1 and 2, `fric_coef_` for law 1, `uinter_` for law 2,
+//!   takes that law (`fric_` for laws 1, 2 and 3, `fric_coef_` for law 1, `uinter_` for law 2,
 //!   `ifl_fric_batch` for the plain Coulomb law it serves).
 
 use interfacial::abi::host::FricCall;
 use interfacial::abi::uinter_host::UinterCall;
 use interfacial::abi::vfric::IflReal;
 use interfacial::abi::{IflStatus, ifl_clear_error};
-use interfacial::props::{AdhesiveBuilder, CoulombBuilder, FrictionLaw, friction_law_checked};
+use interfacial::props::{
+    AdhesiveBuilder, CoulombBuilder, FrictionLaw, RateStateBuilder, friction_law_checked,
+};
 use proptest::prelude::*;
 
 mod common;
@@ -48,6 +50,8 @@ fn adhesive(gamma_crit: f64) -> Vec<f64> {
 /// direction; the call (outputs, PNEWDT) and the message it left ("" when none).
 fn fric(props: &[f64], nfdir: i32, dgam: f64) -> (FricCall, String) {
     let mut c = FricCall::new(nfdir, props);
+    c.statev = vec![0.0; 4];
+    c.nstatv = 4;
     c.press = 50.0;
     c.dpress = 0.0;
     c.dtime = 0.1;
@@ -269,8 +273,25 @@ prop_compose! {
     }
 }
 
+prop_compose! {
+    /// Law-3 `PROPS` the layout accepts, entries at the other laws' switch values often: μ₀, a
+    /// (> 0 with the regularised form), b, V₀, L, either state evolution, either form of μ,
+    /// γ_crit or the tolerance, θ₀ (0: L/V₀).
+    fn rate_state_props()(
+        mu0 in entry(0.0..1.0), a in entry(1e-3..0.05), b in entry(-0.05..0.05),
+        v0 in entry(1e-6..1.0), l in entry(1e-5..1.0),
+        evolution in 1u8..=2, form in 0u8..=1,
+        gamma_crit in entry(0.0..1e-2), tol in entry(0.0..1.0), theta0 in entry(0.0..10.0),
+    ) -> Vec<f64> {
+        RateStateBuilder::new().mu0(mu0).a(a).b(b).v0(v0.max(1e-6)).l(l.max(1e-5))
+            .evolution(f64::from(evolution)).form(f64::from(form)).gamma_crit(gamma_crit)
+            .slip_tolerance(tol).theta0(theta0).build_first(11)
+    }
+}
+
 /// `fric_` (NFDIR 1 and 2) and, for the law it serves, `ifl_fric_batch` take `props`: no
-/// message, PNEWDT not lowered.
+/// message, PNEWDT not lowered. `NSTATV` = 4, what every friction law needs at most without
+/// damping.
 fn fric_and_batch_take(props: &[f64]) -> Result<(), TestCaseError> {
     for nfdir in [1, 2] {
         let (c, m) = fric(props, nfdir, 0.01);
@@ -298,6 +319,16 @@ proptest! {
             prop_assert_eq!(m, "", "uinter_ refused {:?}", props);
             prop_assert!(c.pnewdt >= 1.0);
         }
+    }
+
+    /// No entry point that takes law 3 (`fric_`) refuses accepted law-3 `PROPS` for their
+    /// `PROPS`; `fric_coef_`, `vfric_` and the batch refuse law 3 by name.
+    #[test]
+    fn accepted_rate_state_props_are_refused_by_no_entry_point(props in rate_state_props()) {
+        prop_assume!(friction_law_checked(&props).is_ok());
+        fric_and_batch_take(&props)?;
+        let (_, m) = fric_coef(&props);
+        prop_assert!(m.contains("PROPS(1) = 3"), "fric_coef_ names law 3: {}", m);
     }
 
     /// No entry point that takes law 1 refuses accepted law-1 `PROPS` for their `PROPS`.
