@@ -97,11 +97,17 @@ TOL_C = 0.03  # |c_measured - c_closed| / a
 TOL_Q_NORM = 0.05
 TOL_Q_RAW = 0.08
 MARGIN = 1.0e-3  # stick: |q| < mu p (1 - MARGIN)
-# USER against stock, largest contact-stress difference / p0. The two take the same Newton path
-# (same increments and iterations) but their stresses drift apart from the first increment of
-# the normal load (1.3e-5 at one node) to about 2e-4 p0 at Q = 0.9 mu P, unlike deck 1's blocks
-# (4e-8): a difference at nodes coming into contact, not tracked down yet.
-TOL_SAME = 1.0e-3
+# USER against stock, largest contact-stress difference / p0 at the end of each step. The two
+# take the same Newton path (same increments and iterations) but differ by 3.4e-5 p0 after the
+# normal load (the shear locked in at one node, 100045, as it comes into contact in increment 9
+# of step 2: cause not found) and by up to 2.2e-4 p0 at Q = 0.9 mu P, unlike deck 1's flat blocks
+# (4e-8). That growth is stock's: its stick force is the stick slope times the accumulated
+# relative displacement as a 3-D vector, whose earlier parts leave the tangent plane as the
+# surface under the cylinder turns, so stock's friction force gets a normal part (and the
+# pressures follow); FRIC's TAU lies in today's tangent plane. A build of ours that adds stock's
+# normal part (an experiment, not kept) brought the end-of-step differences down to 3.4e-5 to
+# 6.5e-5 p0 (1.3e-5 at Q = 0.9 mu P). The limit is about twice the measured 2.2e-4.
+TOL_SAME = 5.0e-4
 
 
 def graded(first, total, grow):

@@ -17,7 +17,9 @@
 #                    nothing slides (|τ| = 0; CalculiX's own heat there is μ·p·v).
 # Runs: f given and f from two effusivities (law 1, μ = 0.3); the decay law μ(v), whose heat
 # rate is checked against η·μ(v)·|Fz|·v as well (heat_block_decay.inp); the same with 2 threads;
-# stock CalculiX on heat_block_stock.inp; a configuration without the interaction's heat table.
+# stock CalculiX on heat_block_stock.inp; a configuration without `speed` (VNORM = -1: CalculiX's
+# own sliding velocity), against stock's own velocity path; a configuration without the
+# interaction's heat table.
 set -euo pipefail
 t_start=$(date +%s)
 here=$(cd "$(dirname "$0")" && pwd)
@@ -50,6 +52,8 @@ run() {
   local d=$work/$tag
   rm -rf "$d" && mkdir -p "$d"
   cp "$here"/decks/heat_*.inp "$d/"
+  # RUN_EXTRA: a directory whose decks replace those of the same name (variants)
+  if [ -n "${RUN_EXTRA:-}" ]; then cp "$RUN_EXTRA"/*.inp "$d/"; fi
   local st=0
   (cd "$d" && env OMP_NUM_THREADS=1 CCX_NPROC_RESULTS=1 CCX_NPROC_STIFFNESS=1 "$@" \
     "$exe" "$deck" >log 2>&1) || st=$?
@@ -136,6 +140,74 @@ if [ "$(cat "$work/decay/status")" = 0 ]; then
   report "${res%% *}" "deck 4 (decay law): the last increment's ${res#* } (limit 1e-3)"
 fi
 echo "INFO deck 4: one run $(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }') s, Newton iterations of the drag $(awk 'NR > 2 && $1 == 2 { s += $4 } END { print s + 0 }' "$work/share/heat_block.sta")"
+
+# --- VNORM = -1: no speed in the configuration, CalculiX takes the sliding velocity itself ------
+# fricheat_ answers VNORM = -1 when [interactions.SI.heat] has no speed; CalculiX then forms the
+# relative velocity of slave and master at each contact point from its nodal velocities. In a
+# static (steady-state) step those are the mean velocities of the last converged increment,
+# (u - u_start)/Δt, set after each increment and zero at the start of a step: so increment 1 of
+# the drag heats nothing, increment 2 heats with the slave's motion in increment 1 (less than
+# the drag by the block's elastic shear), and from increment 3 on, in steady sliding, the slave
+# moves with the top. Checks: over increments 3..100 the heat equals eta x sum |Fx|·Δd within
+# 1e-3 (the same closed form as above, the speed now CalculiX's); the slave's share f within
+# 1e-3; no heat in increment 1 (the velocity path taken); every increment (press and drag) equal to stock CalculiX's own velocity path
+# (*GAP HEAT GENERATION 0.8, 0.25, -1 on heat_block_stock.inp) within the printed precision.
+cat >"$work/heat_nospeed.toml" <<EOF
+[interactions.SI.heat]
+fraction = $eta
+slave_share = $share
+EOF
+run "$ours" heat_block vnorm INTERFACIAL_CONFIG="$work/heat_nospeed.toml"
+r=$work/vnorm
+if [ "$(cat "$r/status")" != 0 ]; then
+  report FAIL "deck 4 (VNORM = -1): the run failed with status $(cat "$r/status") (log $r/log)"
+else
+  rows "$r/heat_block.dat" >"$r/rows"
+  res=$(awk -v d="$drag" -v T="$period" -v e="$eta" -v f="$share" '
+    function abs(x) { return x < 0 ? -x : x }
+    { dt = $1 - prev; prev = $1 }
+    $1 > 1 + 1e-9 { n++
+      if (n == 1) q1 = $3 + $4
+      if (n == 2) q2 = ($3 + $4) / (e * abs($2) * d / T)
+      if (n == 3) rate = e * abs($2) * d / T
+      if (n >= 3) { m++; w += abs($2) * d * dt / T; q += ($3 + $4) * dt; qt += $3 * dt } }
+    END { r = w > 0 ? q / (e * w) : 0; dq = abs(r - 1); s = q > 0 ? qt / q : 0; ds = abs(s - f) / f
+      ok = m >= 90 && dq <= 1e-3 && ds <= 1e-3 && abs(q1) <= 1e-9 * rate
+      printf "%s %d %.7e %.7e %.2e %.7f %.2e %.3e %.4f\n", (ok ? "PASS" : "FAIL"),
+        m, q, e * w, dq, s, ds, q1, q2 }' "$r/rows")
+  read -r st m q ew dq s ds q1 q2 <<<"$res"
+  report "$st" "deck 4 (VNORM = -1, CalculiX's own sliding velocity): heat over the drag's increments 3..100 ($m, steady sliding) Q = $q against eta x sum |Fx|·Δd = $ew (relative difference $dq, limit 1e-3); slave share $s against f = $share (relative difference $ds, limit 1e-3); increment 1 heat $q1 (limit 1e-9 x the steady rate: CalculiX's velocity is zero at a step's start, which a given speed would not be), increment 2 at $q2 of the steady rate (the slave's motion in increment 1)"
+  if [ -x /usr/bin/ccx ]; then
+    dv=$work/decks_vnorm
+    rm -rf "$dv" && mkdir -p "$dv"
+    sed 's/^0\.8, 0\.25, 0\.01$/0.8, 0.25, -1./' "$here/decks/heat_block_stock.inp" >"$dv/heat_block_stock.inp"
+    if ! grep -qx '0.8, 0.25, -1.' "$dv/heat_block_stock.inp"; then
+      report FAIL "deck 4 (VNORM = -1) against stock: no '0.8, 0.25, 0.01' line in heat_block_stock.inp to make VNORM = -1"
+    else
+      RUN_EXTRA=$dv run /usr/bin/ccx heat_block_stock stock_vnorm
+      s=$work/stock_vnorm
+      if [ "$(cat "$s/status")" != 0 ]; then
+        report FAIL "deck 4 (VNORM = -1) stock: the run failed with status $(cat "$s/status") (log $s/log)"
+      else
+        rows "$s/heat_block_stock.dat" >"$s/rows"
+        # Every increment of both steps: Fx and both heats within the printed precision (2e-6
+        # of the larger of the two; below 1e-9 on both sides counts as 0: the press's round-off
+        # shear force (1e-12) and heat (1e-17), which stock's slip test (0.95 mu p) leaves out,
+        # against forces of 6 and heat rates of 0.01 in the drag).
+        res=$(paste "$r/rows" "$s/rows" | awk '
+          function abs(x) { return x < 0 ? -x : x }
+          NF != 8 { bad++; next }
+          { n++; off = 0
+            for (i = 2; i <= 4; i++) { m = abs($i) > abs($(i + 4)) ? abs($i) : abs($(i + 4))
+              if (m < 1e-9) continue
+              d = abs($i - $(i + 4)) / m; if (d > worst) worst = d; if (d > 2e-6) off = 1 }
+            bad += off }
+          END { printf "%s %d/%d increments, worst relative difference %.2e", (n > 100 && bad == 0 ? "PASS" : "FAIL"), n - bad, n, worst }')
+        report "${res%% *}" "deck 4 (VNORM = -1) against stock's own velocity path (*GAP HEAT GENERATION 0.8, 0.25, -1): Fx and both heats per increment of both steps equal in ${res#* } (limit 2e-6)"
+      fi
+    fi
+  fi
+fi
 
 # --- threads: the same heat with 1 and 2 threads (the printed precision, as test.sh) -------------
 run "$ours" heat_block threads INTERFACIAL_CONFIG="$work/heat_share.toml" OMP_NUM_THREADS=2 \

@@ -181,6 +181,54 @@ for c in "bad_too_few_props|PROPERTIES=7 but 6 values given" \
   fi
 done
 
+# --- cut-back: a refusal at run time repeats the increment with its size times 0.25 ------------
+# cutback_user.inp (law 1 with mu·exp(-b(theta - theta_ref)) out of f64's range at the deck's
+# temperature): every attempt is refused. From the .sta file, the attempts of the first
+# increment (ATT column "nU"): the first of the deck's initial size 0.1, each next one 0.25 x
+# the one before (the library's PNEWDT; within the 7 printed digits), none converged; from the
+# log, the library's message (routine, interaction, cause), CalculiX's "requested ... through
+# pnewdt" once per attempt (so the cut-back is the library's, not CalculiX's own divergence
+# rule, whose factor is also 0.25), and its own stop after its limit of cut-backs (status 201,
+# not a signal). Node-to-face as written and face-to-face (the copy's contact pair changed).
+d=$work/decks_cutback_f2f
+rm -rf "$d" && mkdir -p "$d"
+sed 's/TYPE=NODE TO SURFACE/TYPE=SURFACE TO SURFACE/' "$here/decks/cutback_user.inp" >"$d/cutback_user.inp"
+for kind in n2f f2f; do
+  if [ "$kind" = f2f ]; then
+    RUN_EXTRA=$d run "$ours" cutback_user "cutback_$kind" >/dev/null
+  else
+    run "$ours" cutback_user "cutback_$kind" >/dev/null
+  fi
+  r=$work/runs/cutback_$kind
+  st=$(cat "$r/status")
+  grep -q 'TYPE=SURFACE TO SURFACE' "$r/cutback_user.inp" && is_f2f=f2f || is_f2f=n2f
+  sta=$(awk 'NR > 2 && NF >= 7 { printf "%s %s\n", $3, $NF }' "$r/cutback_user.sta" 2>/dev/null || true)
+  res=$(echo "$sta" | awk '
+    function abs(x) { return x < 0 ? -x : x }
+    NF == 2 && $1 ~ /U$/ { n++; dt[n] = $2 + 0; next }
+    NF == 2 { conv++ }
+    END {
+      ok = n >= 2 && conv == 0 && abs(dt[1] - 0.1) <= 1e-7
+      worst = 0; seq = dt[1]
+      for (i = 2; i <= n; i++) {
+        q = dt[i] / dt[i - 1]; e = abs(q - 0.25) / 0.25; if (e > worst) worst = e
+        seq = seq ", " dt[i]
+      }
+      if (worst > 1e-5) ok = 0
+      printf "%s %d %d %.1e %s\n", (ok ? "PASS" : "FAIL"), n, conv, worst, seq
+    }')
+  read -r ok n conv worst seq <<<"$res"
+  asked=$(grep -c 'increment size decrease requested by a material user routine (through pnewdt)' "$r/log" || true)
+  msg=$(grep -m1 "^interfacial: FRIC: interaction 'SI' .*overflowed" "$r/log" || true)
+  if [ "$ok" = PASS ] && [ "$is_f2f" = "$kind" ] && [ "$asked" = "$n" ] && [ -n "$msg" ] &&
+    [ "$st" != 0 ] && { [ "$st" -le 128 ] || [ "$st" -gt 192 ]; } &&
+    grep -q 'too many cutbacks' "$r/log"; then
+    report PASS "cut-back ($kind): a refused increment is repeated with its size times 0.25: attempts of increment 1 of size $seq (ratio 0.25 within $worst, limit 1e-5), none converged, each cut back through PNEWDT (CalculiX says so $asked times), then CalculiX's 'too many cutbacks' stop (status $st); the library's message: ${msg#interfacial: }"
+  else
+    report FAIL "cut-back ($kind): status $st, contact kind $is_f2f, attempts '$seq' ($n refused, $conv converged; ratio error $worst), $asked cut-backs through PNEWDT, message '${msg:-missing}', 'too many cutbacks' $(grep -q 'too many cutbacks' "$r/log" && echo found || echo missing) (log $r/log)"
+  fi
+done
+
 # --- threads: the same answers with 1 and 2 threads ---------------------------------------------
 for deck in block_xy_user block_xy_f2f_user; do
   run "$ours" "$deck" "${deck}_t2" OMP_NUM_THREADS=2 CCX_NPROC_RESULTS=2 CCX_NPROC_STIFFNESS=2 >/dev/null
