@@ -1360,3 +1360,36 @@ fn decay_law_names_a_bad_temperature() {
         }
     }
 }
+
+/// μ(θ̄) out of f64's range (b_θ = 1 at θ̄ = −1000: e^{1000} overflows, the CalculiX cut-back
+/// deck's case) is refused as an overflow, never as a rate softening that cancels the stick
+/// stiffness (the law has no rate dependence), whatever the pressure and slip.
+#[test]
+fn an_overflowing_temperature_factor_is_named_an_overflow() {
+    let props = CoulombBuilder::new()
+        .mu(0.3)
+        .gamma_crit(1e-3)
+        .b_theta(1.0)
+        .build_first(13);
+    for nfdir in [1, 2] {
+        for press in [0.0, 1e-3, 1.0, 100.0] {
+            for dgam in [0.0, 1e-6, 1e-2] {
+                let mut c = FricCall::new(nfdir, &props);
+                c.press = press;
+                c.dpress = press.min(1.0);
+                c.temp = [-1000.0, -1000.0];
+                c.dgam = [dgam, dgam, 0.0];
+                interfacial::abi::ifl_clear_error();
+                c.call();
+                let msg = FricCall::last_error();
+                let case = format!("NFDIR {nfdir}, p {press}, Δγ {dgam}");
+                assert!(c.pnewdt < 1.0, "{case}: refused");
+                assert!(!msg.contains("rate softening"), "{case}: {msg}");
+                assert!(
+                    msg.contains("out of f64's range") || msg.contains("overflowed"),
+                    "{case}: {msg}"
+                );
+            }
+        }
+    }
+}

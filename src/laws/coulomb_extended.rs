@@ -1245,8 +1245,11 @@ impl<const N: usize> ExtendedUpdate<N> {
 #[inline(always)]
 fn slip_stiffness(stiffness: f64, t_s: f64) -> Result<f64, LawError> {
     let d = stiffness + t_s;
-    if d == 0.0 || !d.is_finite() {
+    if d == 0.0 {
         return Err(rate_softening_cancels(t_s, stiffness));
+    }
+    if !d.is_finite() {
+        return Err(slip_stiffness_overflowed(t_s, stiffness));
     }
     Ok(d)
 }
@@ -1257,6 +1260,15 @@ fn rate_softening_cancels(t_s: f64, stiffness: f64) -> LawError {
     LawError::Numerical(format!(
         "the rate softening of μ (∂τ_crit/∂γ̇/Δt = {t_s}) cancels the stick stiffness \
          {stiffness}: the slip increment is not a function of the motion"
+    ))
+}
+
+#[cold]
+#[inline(never)]
+fn slip_stiffness_overflowed(t_s: f64, stiffness: f64) -> LawError {
+    LawError::Numerical(format!(
+        "the stick stiffness k̄_s = {stiffness} plus ∂τ_crit/∂γ̇/Δt = {t_s} is out of f64's range \
+         (μ, its factors or the pressure too large)"
     ))
 }
 
