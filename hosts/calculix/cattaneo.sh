@@ -14,6 +14,8 @@
 set -euo pipefail
 t_start=$(date +%s)
 here=$(cd "$(dirname "$0")" && pwd)
+# shellcheck source=hosts/calculix/lib.sh
+. "$here/lib.sh"
 if [ $# -ne 3 ]; then
   echo "usage: $0 CCX_OURS CCX_STOCK WORKDIR" >&2
   exit 2
@@ -35,13 +37,7 @@ cp "$d"/user/cylinder_*.inp "$d/stock/"
 
 # run KIND EXE: the deck cylinder_KIND.inp in d/KIND, one thread; wall time in d/KIND/time
 run() {
-  local kind=$1 exe=$2 t0 t1 st=0
-  t0=$(date +%s.%N)
-  (cd "$d/$kind" && env OMP_NUM_THREADS=1 CCX_NPROC_RESULTS=1 CCX_NPROC_STIFFNESS=1 \
-    "$exe" "cylinder_$kind" >log 2>&1) || st=$?
-  t1=$(date +%s.%N)
-  echo "$st" >"$d/$kind/status"
-  awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f\n", b - a }' >"$d/$kind/time"
+  ccx_run "$d/$1" "$2" "cylinder_$1" >"$d/$1/time"
 }
 # The two runs side by side (CI has 2 cores).
 run user "$ours" &
@@ -64,7 +60,6 @@ if [ "$ok" = no ]; then
 fi
 
 # iterations STA: the sum of the ITRS column; increments: the converged increments
-iterations() { awk 'NR > 2 && NF >= 7 { s += $4 } END { print s + 0 }' "$1"; }
 increments() { awk 'NR > 2 && NF >= 7 && $3 !~ /U$/ { c++ } END { print c + 0 }' "$1"; }
 echo "INFO deck 2: Newton iterations (increments) stock $(iterations "$d/stock/cylinder_stock.sta") ($(increments "$d/stock/cylinder_stock.sta")), USER $(iterations "$d/user/cylinder_user.sta") ($(increments "$d/user/cylinder_user.sta")); wall time side by side stock $(cat "$d/stock/time") s, USER $(cat "$d/user/time") s"
 

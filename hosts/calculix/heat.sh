@@ -37,27 +37,16 @@ eta=0.8
 share=0.25
 speed=$(awk -v d="$drag" -v t="$period" 'BEGIN { printf "%.17g", d / t }')
 
-passed=0
-failed=0
-report() { # status line
-  if [ "$1" = PASS ]; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
-  echo "$1 $2"
-}
+# shellcheck source=hosts/calculix/lib.sh
+. "$here/lib.sh"
 
 # run EXE DECK TAG [ENV...]: DECK.inp in its own directory; the log is DIR/log, the exit status
 # DIR/status.
 run() {
-  local exe=$1 deck=$2 tag=$3
+  local exe=$1 deck=$2 d=$work/$3
   shift 3
-  local d=$work/$tag
-  rm -rf "$d" && mkdir -p "$d"
-  cp "$here"/decks/heat_*.inp "$d/"
-  # RUN_EXTRA: a directory whose decks replace those of the same name (variants)
-  if [ -n "${RUN_EXTRA:-}" ]; then cp "$RUN_EXTRA"/*.inp "$d/"; fi
-  local st=0
-  (cd "$d" && env OMP_NUM_THREADS=1 CCX_NPROC_RESULTS=1 CCX_NPROC_STIFFNESS=1 "$@" \
-    "$exe" "$deck" >log 2>&1) || st=$?
-  echo "$st" >"$d/status"
+  fresh_decks "$d"
+  ccx_run "$d" "$exe" "$deck" "$@" >/dev/null
 }
 
 # rows DAT: one line per increment: time Fx Q_top Q_bottom (the heat leaving, -RFL).

@@ -21,30 +21,21 @@ done
 mkdir -p "$3"
 work=$(cd "$3" && pwd)
 
-passed=0
-failed=0
-report() { # status line
-  if [ "$1" = PASS ]; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
-  echo "$1 $2"
-}
+# shellcheck source=hosts/calculix/lib.sh
+. "$here/lib.sh"
 
 # run EXE DECK TAG [f2f]: runs DECK.inp in $work/runs/TAG (a fresh copy of the decks); the log
 # is TAG/log, the exit status TAG/status. With f2f the deck's node-to-face contact pair is made
 # face-to-face (TYPE=SURFACE TO SURFACE) in the copy.
 run() {
-  local exe=$1 deck=$2 d=$work/runs/$3 kind=${4:-n2f} st=0
-  rm -rf "$d" && mkdir -p "$d"
-  cp "$here"/decks/*.inp "$d/"
+  local exe=$1 deck=$2 d=$work/runs/$3 kind=${4:-n2f}
+  fresh_decks "$d"
   if [ "$kind" = f2f ]; then
     sed -i 's/TYPE=NODE TO SURFACE/TYPE=SURFACE TO SURFACE/' "$d/$deck.inp"
     grep -q 'TYPE=SURFACE TO SURFACE' "$d/$deck.inp" || { echo 99 >"$d/status"; return; }
   fi
-  (cd "$d" && env OMP_NUM_THREADS=1 CCX_NPROC_RESULTS=1 CCX_NPROC_STIFFNESS=1 \
-    "$exe" "$deck" >log 2>&1) || st=$?
-  echo "$st" >"$d/status"
+  ccx_run "$d" "$exe" "$deck" >/dev/null
 }
-# totals DAT: one line per printed total of the top: time fx fy fz
-totals() { awk '/total force \(fx,fy,fz\)/ { t = $NF; getline; getline; print t, $1, $2, $3 }' "$1"; }
 
 # --- anisotropic friction: mu1 = 0.4 along t1 = x, mu2 = 0.2 along t2 = +-y -------------------
 # Law 1 with PROPS(3): the isotropic algorithm on scaled stresses (mu_bar/mu_i) tau_i, so in

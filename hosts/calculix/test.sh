@@ -26,36 +26,17 @@ if [ ! -x /usr/bin/ccx ]; then
 fi
 stock=/usr/bin/ccx
 
-passed=0
-failed=0
-report() { # status line
-  if [ "$1" = PASS ]; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
-  echo "$1 $2"
-}
+# shellcheck source=hosts/calculix/lib.sh
+. "$here/lib.sh"
 
 # run EXE DECK [ENV...]: runs DECK.inp in its own directory under $work/runs; prints the wall
 # time in seconds on stdout; the log is DIR/log, the exit status DIR/status.
 run() {
-  local exe=$1 deck=$2 tag=$3
+  local exe=$1 deck=$2 d=$work/runs/$3
   shift 3
-  local d=$work/runs/$tag
-  rm -rf "$d" && mkdir -p "$d"
-  cp "$here"/decks/*.inp "$d/"
-  # RUN_EXTRA: a directory whose decks replace those of the same name (variants)
-  if [ -n "${RUN_EXTRA:-}" ]; then cp "$RUN_EXTRA"/*.inp "$d/"; fi
-  local t0 t1 st=0
-  t0=$(date +%s.%N)
-  (cd "$d" && env OMP_NUM_THREADS=1 CCX_NPROC_RESULTS=1 CCX_NPROC_STIFFNESS=1 "$@" \
-    "$exe" "$deck" >log 2>&1) || st=$?
-  t1=$(date +%s.%N)
-  echo "$st" >"$d/status"
-  awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.3f", b - a }'
+  fresh_decks "$d"
+  ccx_run "$d" "$exe" "$deck" "$@"
 }
-
-# totals DAT: one line per printed total: time fx fy fz
-totals() { awk '/total force \(fx,fy,fz\)/ { t = $NF; getline; getline; print t, $1, $2, $3 }' "$1"; }
-# iterations STA: the sum of the ITRS column
-iterations() { awk 'NR > 2 && NF >= 7 { s += $4 } END { print s + 0 }' "$1"; }
 
 # cmp_totals A B: the totals files A and B equal per increment within CalculiX's printed
 # precision: 7 significant digits (E13.6), i.e. each component's difference at most 2e-6 of the
