@@ -577,8 +577,8 @@ impl FricArgs {
 
 /// `fric_`'s checked path for whichever law `PROPS` select, compiled once per law
 /// ([`PointLawTask`]: one match on the law enum, then the law's own type, as a direct call
-/// would be; through the enum's own `PointLaw` methods the adhesive law cost 14 % more
-/// instructions per call, bench_adhesive law 4).
+/// would be; through the enum's own `PointLaw` methods the adhesive law cost 1519 instructions
+/// per call against 1366, bench_adhesive law 4, callgrind, 2026-11-28).
 struct OnePoint<'a> {
     /// The host's arguments, valid per `fric_`'s contract (a `OnePoint` is made only inside
     /// `fric_`'s call).
