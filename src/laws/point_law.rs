@@ -1,4 +1,4 @@
-//! The interface `fric_` asks of a friction law for one contact point: what the law needs
+//! The interface the entry points ask of a friction law for one contact point: what the law needs
 //! (`NSTATV` per `NFDIR`, whether it answers exact stick), and one update from an increment and
 //! the start state in `STATEV` to an answer (traction and tangents, `DDTDDT`, the end state,
 //! a step ratio) or a refusal with its cause, and `FRIC_COEF`'s μ where the law has one. The
