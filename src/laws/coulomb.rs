@@ -846,7 +846,7 @@ fn overflowed() -> LawError {
 }
 
 /// Law 1's plain form behind the law interface (`fric_`'s checked path; its plain fast path
-/// calls [`Coulomb::try_update`] directly).
+/// calls `Coulomb::try_update` directly).
 impl PointLaw for Coulomb {
     fn name(&self) -> &'static str {
         "the Coulomb law"
