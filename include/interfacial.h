@@ -542,9 +542,9 @@ enum IflStatus ifl_fric_point(const struct IflFricInput *input, struct IflFricOu
  * one face-to-face contact point, from `[interactions.CINAME.heat]` of the configuration file
  * named by `INTERFACIAL_CONFIG` (docs/config.md): `ET = fraction`, `F = slave_share` (or
  * e_s/(e_s + e_m) from the effusivities), `VNORM = speed`, or −1 without `speed` (CalculiX then
- * takes the relative velocity of the surfaces from the nodal velocities, which only dynamic
- * steps have: a transient `*COUPLED TEMPERATURE-DISPLACEMENT` step, not one with `STEADY
- * STATE`). CalculiX forms the fluxes F·ET·VNORM·UM·PRESSURE into the slave face and
+ * takes the relative velocity of the surfaces from its nodal velocities: in a `STEADY STATE`
+ * step each converged increment's mean velocity, so an increment uses the one before).
+ * CalculiX forms the fluxes F·ET·VNORM·UM·PRESSURE into the slave face and
  * (1 − F)·ET·VNORM·UM·PRESSURE into the master face; with `*FRICTION, USER` the host's edit of
  * `frictionheating.f` makes `UM·PRESSURE` the friction stress |τ| of the library's FRIC
  * (docs/calculix.md).
