@@ -5,23 +5,15 @@
 
 use std::path::Path;
 
-fn rust_files(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
-    for entry in std::fs::read_dir(dir).expect("read src") {
-        let path = entry.expect("dir entry").path();
-        if path.is_dir() {
-            rust_files(&path, out);
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            out.push(path);
-        }
-    }
-}
+#[path = "common/source_tree.rs"]
+mod source_tree;
+use source_tree::rust_files;
 
 #[test]
 fn every_source_file_is_on_the_map() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let map = std::fs::read_to_string(root.join("docs/architecture.md")).expect("read map");
-    let mut files = Vec::new();
-    rust_files(&root.join("src"), &mut files);
+    let files = rust_files(&root.join("src"));
     assert!(files.len() > 30, "found only {} files", files.len());
     let mut missing = Vec::new();
     for path in files {

@@ -15,7 +15,11 @@
 //! where it is defined or where the macro that defines it is invoked. The checker is unit-tested
 //! below on small strings, including ones that must fail.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
+
+#[path = "common/source_tree.rs"]
+mod source_tree;
+use source_tree::{code_only, rust_files};
 
 /// Keywords that define a named item.
 const ITEM_KEYWORDS: [&str; 9] = [
@@ -25,88 +29,6 @@ const ITEM_KEYWORDS: [&str; 9] = [
 /// Rust keywords that may follow an item keyword without being the item's name (`const fn`,
 /// `unsafe fn`, `const unsafe fn`, `static mut`).
 const QUALIFIERS: [&str; 7] = ["fn", "unsafe", "extern", "mut", "async", "const", "crate"];
-
-/// `text` with comments removed and the contents of string and character literals blanked
-/// (their quotes kept), line breaks kept, so that a name counts only where it is code.
-fn code_only(text: &str) -> String {
-    let c: Vec<char> = text.chars().collect();
-    let mut out = String::with_capacity(text.len());
-    let mut i = 0;
-    let ident = |ch: char| ch.is_alphanumeric() || ch == '_';
-    while i < c.len() {
-        let next = c.get(i + 1).copied();
-        if c[i] == '/' && next == Some('/') {
-            while i < c.len() && c[i] != '\n' {
-                i += 1;
-            }
-        } else if c[i] == '/' && next == Some('*') {
-            let mut depth = 0;
-            while i < c.len() {
-                if c[i] == '/' && c.get(i + 1) == Some(&'*') {
-                    depth += 1;
-                    i += 2;
-                } else if c[i] == '*' && c.get(i + 1) == Some(&'/') {
-                    depth -= 1;
-                    i += 2;
-                    if depth == 0 {
-                        break;
-                    }
-                } else {
-                    if c[i] == '\n' {
-                        out.push('\n');
-                    }
-                    i += 1;
-                }
-            }
-        } else if c[i] == 'r'
-            && (i == 0 || !ident(c[i - 1]))
-            && matches!(next, Some('"' | '#'))
-            && c[i + 1..].iter().find(|&&ch| ch != '#') == Some(&'"')
-        {
-            // A raw string r#"…"#: ends at a quote followed by as many hashes.
-            let hashes = c[i + 1..].iter().take_while(|&&ch| ch == '#').count();
-            i += 2 + hashes;
-            out.push('"');
-            while i < c.len() {
-                if c[i] == '"' && c[i + 1..].iter().take_while(|&&ch| ch == '#').count() >= hashes {
-                    i += 1 + hashes;
-                    break;
-                }
-                if c[i] == '\n' {
-                    out.push('\n');
-                }
-                i += 1;
-            }
-            out.push('"');
-        } else if c[i] == '"' {
-            out.push('"');
-            i += 1;
-            while i < c.len() && c[i] != '"' {
-                if c[i] == '\\' {
-                    i += 1;
-                }
-                if c.get(i) == Some(&'\n') {
-                    out.push('\n');
-                }
-                i += 1;
-            }
-            out.push('"');
-            i += 1;
-        } else if c[i] == '\'' && (next == Some('\\') || c.get(i + 2) == Some(&'\'')) {
-            // A character literal ('x', '\n', '\''); a lifetime ('a) is left as it is.
-            i += if next == Some('\\') { 2 } else { 1 };
-            while i < c.len() && c[i] != '\'' {
-                i += 1;
-            }
-            out.push_str("' '");
-            i += 1;
-        } else {
-            out.push(c[i]);
-            i += 1;
-        }
-    }
-    out
-}
 
 /// The tokens of code: identifiers (with a leading `$` or `#` kept: `$name`, `#name`) and
 /// single punctuation characters.
@@ -254,22 +176,10 @@ fn defines_fn(code: &str, name: &str) -> bool {
         .any(|w| w[0] == "fn" && w[1] == name)
 }
 
-fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    for entry in std::fs::read_dir(dir).expect("read a source folder") {
-        let path = entry.expect("a folder entry").path();
-        if path.is_dir() {
-            rust_files(&path, out);
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            out.push(path);
-        }
-    }
-}
-
 /// Every `.rs` file under `src/`, code only, with its path.
 fn src_code() -> Vec<(String, String)> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut files = Vec::new();
-    rust_files(&root.join("src"), &mut files);
+    let files = rust_files(&root.join("src"));
     assert!(
         files.len() > 30,
         "found only {} files under src/",

@@ -6,25 +6,9 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
-fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    for entry in fs::read_dir(dir).expect("readable source tree") {
-        let path = entry.expect("a directory entry").path();
-        if path.is_dir() {
-            rust_files(&path, out);
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            out.push(path);
-        }
-    }
-}
-
-/// The source's code without comments (`//` to the end of the line; no block comments are
-/// used in src/).
-fn code_of(text: &str) -> String {
-    text.lines()
-        .map(|l| l.split("//").next().unwrap_or(""))
-        .collect::<Vec<_>>()
-        .join("\n")
-}
+#[path = "common/source_tree.rs"]
+mod source_tree;
+use source_tree::{code_only, rust_files};
 
 fn src() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
@@ -32,12 +16,11 @@ fn src() -> PathBuf {
 
 /// Files under src/ whose code (comments aside) names rate-and-state friction.
 fn files_naming_law_3() -> Vec<String> {
-    let mut files = Vec::new();
-    rust_files(&src(), &mut files);
+    let files = rust_files(&src());
     let mut naming: Vec<String> = files
         .iter()
         .filter(|p| {
-            let code = code_of(&fs::read_to_string(p).expect("readable"));
+            let code = code_only(&fs::read_to_string(p).expect("readable"));
             ["rate_state", "RateState", "RATE_STATE"]
                 .iter()
                 .any(|w| code.contains(w))
@@ -71,11 +54,10 @@ fn law_3_lives_in_the_four_files_the_map_names() {
 /// code. The `fric_` plain and decay-lean fast paths hand `PROPS` whole to the props layer too.
 #[test]
 fn the_shell_reads_no_props_entry() {
-    let mut files = Vec::new();
-    rust_files(&src().join("abi"), &mut files);
+    let files = rust_files(&src().join("abi"));
     assert!(files.len() >= 10, "src/abi has its entry points");
     for p in files {
-        let code = code_of(&fs::read_to_string(&p).expect("readable"));
+        let code = code_only(&fs::read_to_string(&p).expect("readable"));
         for (n, line) in code.lines().enumerate() {
             let compact: String = line.chars().filter(|c| !c.is_whitespace()).collect();
             for banned in [
@@ -100,6 +82,6 @@ fn the_shell_reads_no_props_entry() {
 /// The checker itself: a comment is not code, a use in code is.
 #[test]
 fn the_checker_sees_code_not_comments() {
-    assert!(!code_of("// RateState in a comment\n/// and rate_state").contains("RateState"));
-    assert!(code_of("let x = props[7]; // PROPS(8)").contains("props[7]"));
+    assert!(!code_only("// RateState in a comment\n/// and rate_state").contains("RateState"));
+    assert!(code_only("let x = props[7]; // PROPS(8)").contains("props[7]"));
 }
