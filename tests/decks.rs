@@ -78,6 +78,13 @@ fn decks() -> Vec<Deck> {
         .mu_k(0.3)
         .decay(4.0)
         .build_first(10);
+    // Law 2's friction (mu_d = 0.3, mu_s = 0.6, S_a = 5, gamma_crit = 1e-3), through FRIC and,
+    // with separation adhesion and a normal stiffness, through UINTER.
+    let adhesive = AdhesiveBuilder::new()
+        .coeff(0.3)
+        .coeff_static(0.6)
+        .sa(5.0)
+        .gamma_crit(1e-3);
     vec![
         Deck {
             file: "abaqus_fric_coulomb.inp",
@@ -118,14 +125,7 @@ fn decks() -> Vec<Deck> {
             depvar: Some(3),
             props: Some((
                 &ADHESIVE,
-                AdhesiveBuilder::new()
-                    .coeff(0.3)
-                    .coeff_static(0.6)
-                    .sa(5.0)
-                    .kmu(0.05)
-                    .vhalf(0.1)
-                    .gamma_crit(1e-3)
-                    .build_first(8),
+                adhesive.clone().kmu(0.05).vhalf(0.1).build_first(8),
             )),
             notes: &[
                 "Law 2 (docs/props.md): mu_d = 0.3, mu_s = 0.6, S_a = 5, k_mu = 0.05, v_half = 0.1,",
@@ -165,14 +165,7 @@ fn decks() -> Vec<Deck> {
             depvar: Some(3),
             props: Some((
                 &ADHESIVE,
-                AdhesiveBuilder::new()
-                    .coeff(0.3)
-                    .coeff_static(0.6)
-                    .sa(5.0)
-                    .na(10.0)
-                    .gamma_crit(1e-3)
-                    .normal_stiffness(1e6)
-                    .build_first(10),
+                adhesive.na(10.0).normal_stiffness(1e6).build_first(10),
             )),
             notes: &[
                 "Law 2 with separation adhesion (N_a = 10) and the penalty normal stiffness",
@@ -568,6 +561,19 @@ fn validate(routine: Routine, text: &str, config: &Config) -> Result<(), String>
     }
 }
 
+/// Runs `entry` (a call into the library) with the thread's last error cleared; `Err` with the
+/// message the call left, if it left one.
+fn no_error<T>(entry: impl FnOnce() -> T) -> Result<T, String> {
+    ifl_clear_error();
+    let answer = entry();
+    let error = FricCall::last_error();
+    if error.is_empty() {
+        Ok(answer)
+    } else {
+        Err(error)
+    }
+}
+
 /// One increment of a closed, sliding point through `fric_` as the solver would call it.
 fn fric_increment(name: &str, props: &[f64], depvar: usize) -> Result<(), String> {
     let mut call = FricCall::new(2, props);
@@ -578,12 +584,7 @@ fn fric_increment(name: &str, props: &[f64], depvar: usize) -> Result<(), String
     call.press = 100.0;
     call.dpress = 100.0;
     call.dgam = [1e-2, 5e-3, 0.0];
-    ifl_clear_error();
-    call.call();
-    let error = FricCall::last_error();
-    if !error.is_empty() {
-        return Err(error);
-    }
+    no_error(|| call.call())?;
     if call.lm != 0 || !call.tau[..2].iter().all(|t| t.is_finite()) || !call.guards_intact() {
         return Err(format!(
             "FRIC answered LM = {}, TAU = {:?}",
@@ -605,20 +606,17 @@ fn fric_coef_block(name: &str, props: &[f64]) -> Result<(), String> {
     let mut slip = [0.0; 6];
     slip[0] = rate;
     slip[1] = rate;
-    ifl_clear_error();
-    fric_coef_common::fric_coef_call(
-        &mut coef,
-        &mut deriv,
-        props,
-        &slip,
-        &[100.0],
-        &[20.0],
-        name.as_bytes(),
-    );
-    let error = FricCall::last_error();
-    if !error.is_empty() {
-        return Err(error);
-    }
+    no_error(|| {
+        fric_coef_common::fric_coef_call(
+            &mut coef,
+            &mut deriv,
+            props,
+            &slip,
+            &[100.0],
+            &[20.0],
+            name.as_bytes(),
+        );
+    })?;
     let expected = if entry(8) == 1.0 {
         entry(9) + (entry(2) - entry(9)) * (-entry(10) * rate).exp()
     } else {
@@ -649,12 +647,7 @@ fn vfric_block(props: &[f64]) -> Result<(), String> {
         area: vec![1.0],
         jconslvid: vec![1],
     };
-    ifl_clear_error();
-    let ftan = call(&block);
-    let error = FricCall::last_error();
-    if !error.is_empty() {
-        return Err(error);
-    }
+    let ftan = no_error(|| call(&block))?;
     // Relative 1e-6: single precision with the explicit-single build.
     if (ftan[0] - expected).abs() > 1e-6 * expected.abs() {
         return Err(format!("VFRIC answered {}, expected {expected}", ftan[0]));
@@ -671,12 +664,7 @@ fn uinter_increment(name: &str, props: &[f64], depvar: usize) -> Result<(), Stri
     call.set_guards();
     call.rdisp = [1e-4, 1e-3, 0.0];
     call.drdisp = [1e-4, 1e-3, 0.0];
-    ifl_clear_error();
-    call.call();
-    let error = FricCall::last_error();
-    if !error.is_empty() {
-        return Err(error);
-    }
+    no_error(|| call.call())?;
     // Closed: the normal stress is the penalty K_n·h (docs/uinter.md).
     let h = call.rdisp[0];
     let kn = props.get(9).copied().unwrap_or(0.0);

@@ -21,6 +21,11 @@ use std::path::Path;
 mod source_tree;
 use source_tree::{code_only, rust_files};
 
+/// Fails, saying `what` and listing them, when any were `found`.
+fn assert_none<T: std::fmt::Debug>(found: &[T], what: &str) {
+    assert!(found.is_empty(), "{what}: {found:?}");
+}
+
 /// Keywords that define a named item.
 const ITEM_KEYWORDS: [&str; 9] = [
     "fn", "struct", "enum", "union", "const", "static", "type", "trait", "mod",
@@ -223,9 +228,9 @@ fn every_header_function_is_written_fn_name_in_src() {
         .iter()
         .filter(|n| !code.iter().any(|(_, c)| defines_fn(c, n)))
         .collect();
-    assert!(
-        missing.is_empty(),
-        "declared in include/interfacial.h, never written `fn NAME` in src/: {missing:?}"
+    assert_none(
+        &missing,
+        "declared in include/interfacial.h, never written `fn NAME` in src/",
     );
 }
 
@@ -248,10 +253,10 @@ fn no_macro_rules_in_src_defines_a_literal_name() {
                 .map(move |v| format!("{path}: {v}"))
         })
         .collect();
-    assert!(
-        violations.is_empty(),
+    assert_none(
+        &violations,
         "a macro_rules! defines an item whose name is not a $parameter (write the name at the \
-         invocation): {violations:?}"
+         invocation)",
     );
 }
 
@@ -267,9 +272,9 @@ fn the_attribute_macros_define_only_names_they_are_given() {
         .iter()
         .flat_map(|(_, body)| literal_item_names(body))
         .collect();
-    assert!(
-        literal.is_empty(),
-        "the proc-macro expansion defines an item under a literal name: {literal:?}"
+    assert_none(
+        &literal,
+        "the proc-macro expansion defines an item under a literal name",
     );
 }
 
