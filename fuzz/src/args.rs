@@ -247,6 +247,16 @@ impl Args {
     }
 }
 
+/// `p`, or NULL when `null`: an argument that a broken host passes as NULL.
+pub fn or_null<T>(p: *const T, null: bool) -> *const T {
+    if null { std::ptr::null() } else { p }
+}
+
+/// [`or_null`] for an output.
+pub fn or_null_mut<T>(p: *mut T, null: bool) -> *mut T {
+    if null { std::ptr::null_mut() } else { p }
+}
+
 /// One call as every case makes it: `call` gets copies of `args` and `names` to pass as inputs
 /// and the arguments to pass as outputs (`args.outputs(kept, fresh)`); afterwards every input
 /// must be bit for bit what it was (never written), and what the call wrote comes back with

@@ -5,7 +5,7 @@
 //!
 //! Shared by the `batch` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
 
-use super::args::{Args, Outputs, call};
+use super::args::{Args, Outputs, call, or_null, or_null_mut};
 use super::bytes::{Bytes, bits};
 use super::contract::{Names, unwritten};
 use super::fric_case::FricCase;
@@ -14,24 +14,19 @@ use interfacial::abi::{IflStatus, ifl_fric_batch};
 pub use super::contract::UNWRITTEN;
 
 /// The structure-of-arrays inputs after `lm`, in the order drawn, with their components (`n`:
-/// one per direction, `s`: one per state variable).
+/// one per direction, `s`: one per state variable); a line per kind of argument (rustfmt::skip).
+#[rustfmt::skip]
 const INPUTS: [(&str, Rows); 7] = [
-    ("tau", Rows::N),
-    ("dgam", Rows::N),
-    ("taulm", Rows::N),
-    ("press", Rows::One),
-    ("dpress", Rows::One),
-    ("chrlngth", Rows::One),
+    ("tau", Rows::N), ("dgam", Rows::N), ("taulm", Rows::N),
+    ("press", Rows::One), ("dpress", Rows::One), ("chrlngth", Rows::One),
     ("statev", Rows::S),
 ];
 
-/// The outputs only written, with their components.
+/// The outputs only written, with their components; the tangents, then the optional outputs.
+#[rustfmt::skip]
 const OUTPUTS: [(&str, Rows); 5] = [
-    ("ddtddg", Rows::NN),
-    ("ddtddp", Rows::N),
-    ("dslip", Rows::N),
-    ("sed", Rows::One),
-    ("sfd", Rows::One),
+    ("ddtddg", Rows::NN), ("ddtddp", Rows::N),
+    ("dslip", Rows::N), ("sed", Rows::One), ("sfd", Rows::One),
 ];
 
 /// Rows (components) of a structure-of-arrays argument.
@@ -164,25 +159,15 @@ impl BatchCase {
     /// and its message; `Err` when an input was written.
     pub fn call(&self) -> Result<Outputs, String> {
         let req = |k: usize| self.null_required == Some(k);
-        let m = |k: usize, p: *mut f64| if req(k) { std::ptr::null_mut() } else { p };
-        let r = |k: usize, p: *const f64| if req(k) { std::ptr::null() } else { p };
-        let opt = |p: *mut f64| {
-            if self.null_optional {
-                std::ptr::null_mut()
-            } else {
-                p
-            }
-        };
+        let m = |k: usize, p: *mut f64| or_null_mut(p, req(k));
+        let r = |k: usize, p: *const f64| or_null(p, req(k));
+        let opt = |p: *mut f64| or_null_mut(p, self.null_optional);
         let kept = ["lm", "tau", "statev", "pnewdt"];
         call(&self.args, &Names::none(), &kept, &[], |a, _, o| {
             for (name, rows) in OUTPUTS {
                 o.put(name, vec![UNWRITTEN; self.entries(rows)]);
             }
-            let lm = if req(0) {
-                std::ptr::null_mut()
-            } else {
-                o.int_ptr_mut("lm")
-            };
+            let lm = or_null_mut(o.int_ptr_mut("lm"), req(0));
             let nprops = i32::try_from(a["props"].len()).unwrap_or(i32::MAX);
             // SAFETY: every non-NULL array holds exactly ld·(components − 1) + npoints entries
             // (0 for an empty batch), props holds nprops; outputs do not overlap.
@@ -204,11 +189,7 @@ impl BatchCase {
                     opt(o.ptr_mut("sfd")),
                     m(4, o.ptr_mut("statev")),
                     r(5, a.ptr("dgam")),
-                    if self.null_taulm {
-                        std::ptr::null()
-                    } else {
-                        a.ptr("taulm")
-                    },
+                    or_null(a.ptr("taulm"), self.null_taulm),
                     r(6, a.ptr("press")),
                     r(7, a.ptr("dpress")),
                     r(8, a.ptr("chrlngth")),

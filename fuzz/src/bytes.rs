@@ -49,6 +49,16 @@ impl<'a> Bytes<'a> {
         choices[usize::from(self.u8()) % choices.len()]
     }
 
+    /// `choices[k]` for the next byte k; past their end, `otherwise(k)` (the decoders' choice of
+    /// the argument passed as NULL, where most bytes choose none).
+    pub fn choose<T: Copy>(&mut self, choices: &[T], otherwise: impl Fn(u8) -> T) -> T {
+        let k = self.u8();
+        choices
+            .get(usize::from(k))
+            .copied()
+            .unwrap_or_else(|| otherwise(k))
+    }
+
     /// `len` raw bytes (fewer, padded with zeros, when the input runs out).
     pub fn bytes(&mut self, len: usize) -> Vec<u8> {
         (0..len).map(|_| self.u8()).collect()

@@ -4,7 +4,7 @@
 //!
 //! Shared by the `fric` fuzz target and `tests/fuzz_regressions.rs` (included there by path).
 
-use super::args::{Args, Draw, Len, ONE, Outputs, Row, call, of};
+use super::args::{Args, Draw, Len, ONE, Outputs, Row, call, of, or_null_mut};
 use super::bytes::{Bytes, bits, len};
 use super::contract::{Names, adhesive_props, adhesive_rate, norm, pnewdt_refusal};
 use Draw::{Int, Large, Number, Pick, Reals};
@@ -238,56 +238,33 @@ impl FricCase {
     /// Calls `fric_` and checks every property; `Err` names the first one violated.
     pub fn check(&self) -> Result<Outputs, String> {
         let null = self.null_optional;
-        let opt = |p: *mut f64| if null { std::ptr::null_mut() } else { p };
+        let opt = |p: *mut f64| or_null_mut(p, null);
         let out = call(&self.args, &self.names, &IN_OUT, &OUTPUTS, |a, names, o| {
             let [ci, sl, ms] = names.pointers();
             let [ci_len, sl_len, ms_len] = names.lengths();
             // SAFETY: every array has exactly the length the call declares (NFDIR, NFDIR², 2·NFDIR,
             // NSTATV, NPROPS, MCRD, 2·NPRED, the hidden name lengths; scalars one entry).
+            // The arguments by role, several a line as the manual prints them (rustfmt::skip).
+            #[rustfmt::skip]
             unsafe {
                 fric_(
-                    o.int_ptr_mut("LM"),
-                    o.ptr_mut("TAU"),
-                    o.ptr_mut("DDTDDG"),
-                    o.ptr_mut("DDTDDP"),
-                    opt(o.ptr_mut("DSLIP")),
-                    opt(o.ptr_mut("SED")),
-                    opt(o.ptr_mut("SFD")),
-                    opt(o.ptr_mut("DDTDDT")),
-                    o.ptr_mut("PNEWDT"),
-                    o.ptr_mut("STATEV"),
-                    a.ptr("DGAM"),
-                    a.ptr("TAULM"),
-                    a.ptr("PRESS"),
-                    a.ptr("DPRESS"),
-                    a.ptr("DDPDDH"),
-                    a.ptr("SLIP"),
-                    a.int_ptr("KSTEP"),
-                    a.int_ptr("KINC"),
-                    a.ptr("TIME"),
-                    a.ptr("DTIME"),
-                    a.int_ptr("NOEL"),
-                    ci,
-                    sl,
-                    ms,
-                    a.int_ptr("NPT"),
-                    a.int_ptr("NODE"),
-                    a.int_ptr("NPATCH"),
-                    a.ptr("COORDS"),
-                    a.ptr("RCOORD"),
-                    a.ptr("DROT"),
-                    a.ptr("TEMP"),
-                    a.ptr("PREDEF"),
-                    a.int_ptr("NFDIR"),
-                    a.int_ptr("MCRD"),
-                    a.int_ptr("NPRED"),
-                    a.int_ptr("NSTATV"),
-                    a.ptr("CHRLNGTH"),
-                    a.ptr("PROPS"),
-                    a.int_ptr("NPROPS"),
-                    ci_len,
-                    sl_len,
-                    ms_len,
+                    // written
+                    o.int_ptr_mut("LM"), o.ptr_mut("TAU"), o.ptr_mut("DDTDDG"), o.ptr_mut("DDTDDP"),
+                    opt(o.ptr_mut("DSLIP")), opt(o.ptr_mut("SED")),
+                    opt(o.ptr_mut("SFD")), opt(o.ptr_mut("DDTDDT")),
+                    o.ptr_mut("PNEWDT"), o.ptr_mut("STATEV"),
+                    // the increment
+                    a.ptr("DGAM"), a.ptr("TAULM"), a.ptr("PRESS"),
+                    a.ptr("DPRESS"), a.ptr("DDPDDH"), a.ptr("SLIP"),
+                    a.int_ptr("KSTEP"), a.int_ptr("KINC"), a.ptr("TIME"), a.ptr("DTIME"),
+                    // where
+                    a.int_ptr("NOEL"), ci, sl, ms,
+                    a.int_ptr("NPT"), a.int_ptr("NODE"), a.int_ptr("NPATCH"),
+                    a.ptr("COORDS"), a.ptr("RCOORD"), a.ptr("DROT"),
+                    a.ptr("TEMP"), a.ptr("PREDEF"),
+                    // sizes, properties, the names' lengths
+                    a.int_ptr("NFDIR"), a.int_ptr("MCRD"), a.int_ptr("NPRED"), a.int_ptr("NSTATV"),
+                    a.ptr("CHRLNGTH"), a.ptr("PROPS"), a.int_ptr("NPROPS"), ci_len, sl_len, ms_len,
                 )
             };
         })?;

@@ -5,7 +5,7 @@
 //! Shared by the `fric_coef` fuzz target and `tests/fuzz_regressions_coef.rs` (included there by
 //! path).
 
-use super::args::{Args, Draw, Len, ONE, Outputs, Row, call, of};
+use super::args::{Args, Draw, Len, ONE, Outputs, Row, call, of, or_null, or_null_mut};
 use super::bytes::Bytes;
 use super::contract::{Names, unwritten};
 use Draw::{Pick, Reals};
@@ -129,6 +129,15 @@ impl Coefficients for Outputs {
     }
 }
 
+/// The [`CoefNull`] that a decoder byte 0 to 8 chooses (any other byte: none), by role: the
+/// outputs, the counts, the arrays.
+#[rustfmt::skip]
+const COEF_NULLS: [CoefNull; 9] = [
+    CoefNull::FCoef, CoefNull::FCoefDeriv,
+    CoefNull::NBlock, CoefNull::NProps, CoefNull::NTemp,
+    CoefNull::Props, CoefNull::SlipData, CoefNull::Pressure, CoefNull::TempAvg,
+];
+
 impl FricCoefCase {
     /// A valid block: these `props`, slip rates, pressures and temperatures (equal lengths),
     /// `nTemp = 1`, no fields, interaction `"SI1"` (80 bytes).
@@ -160,18 +169,7 @@ impl FricCoefCase {
     pub fn decode(b: &mut Bytes) -> Self {
         let mut a = Args::new();
         a.draw(b, &COEF_COUNTS);
-        let null = match b.u8() {
-            0 => CoefNull::FCoef,
-            1 => CoefNull::FCoefDeriv,
-            2 => CoefNull::NBlock,
-            3 => CoefNull::NProps,
-            4 => CoefNull::NTemp,
-            5 => CoefNull::Props,
-            6 => CoefNull::SlipData,
-            7 => CoefNull::Pressure,
-            8 => CoefNull::TempAvg,
-            _ => CoefNull::None,
-        };
+        let null = b.choose(&COEF_NULLS, |_| CoefNull::None);
         a.put("props", decode_props(b, a.len_of("nProps")));
         a.draw(b, &[(&["slipData"], Reals(Len::Times(6, "nBlock")))]);
         // Slip rates: mostly finite and ≥ 0 (slipData(k,1) is a magnitude).
@@ -198,19 +196,9 @@ impl FricCoefCase {
     /// first one violated.
     pub fn check(&self) -> Result<Outputs, String> {
         let null = self.null;
-        let mo = |p: *mut f64, which: CoefNull| {
-            if null == which {
-                std::ptr::null_mut()
-            } else {
-                p
-            }
-        };
-        let ro = |p: *const f64, which: CoefNull| {
-            if null == which { std::ptr::null() } else { p }
-        };
-        let io = |p: *const i32, which: CoefNull| {
-            if null == which { std::ptr::null() } else { p }
-        };
+        let mo = |p: *mut f64, which: CoefNull| or_null_mut(p, null == which);
+        let ro = |p: *const f64, which: CoefNull| or_null(p, null == which);
+        let io = |p: *const i32, which: CoefNull| or_null(p, null == which);
         let out = call(
             &self.args,
             &self.names,
@@ -222,27 +210,26 @@ impl FricCoefCase {
                 // SAFETY: every array has exactly the length the call declares (2·nBlock,
                 // 40·nBlock, nProps, 6·nBlock, nBlock, nBlock, nBlock·nFields, the hidden name
                 // lengths); scalars one entry; NULL where `null` says so.
+                // The arguments by role, several a line as the manual prints them (rustfmt::skip).
+                #[rustfmt::skip]
                 unsafe {
                     fric_coef_(
+                        // written
                         mo(o.ptr_mut("fCoef"), CoefNull::FCoef),
                         mo(o.ptr_mut("fCoefDeriv"), CoefNull::FCoefDeriv),
+                        // sizes, the unread iData and rData, the names
                         io(a.int_ptr("nBlock"), CoefNull::NBlock),
                         io(a.int_ptr("nProps"), CoefNull::NProps),
                         io(a.int_ptr("nTemp"), CoefNull::NTemp),
-                        a.int_ptr("nFields"),
-                        a.int_ptr("iData"),
-                        a.ptr("rData"),
-                        ci,
-                        sl,
-                        ms,
+                        a.int_ptr("nFields"), a.int_ptr("iData"), a.ptr("rData"),
+                        ci, sl, ms,
+                        // the block, the names' lengths
                         ro(a.ptr("props"), CoefNull::Props),
                         ro(a.ptr("slipData"), CoefNull::SlipData),
                         ro(a.ptr("pressure"), CoefNull::Pressure),
                         ro(a.ptr("tempAvg"), CoefNull::TempAvg),
                         a.ptr("fieldAvg"),
-                        ci_len,
-                        sl_len,
-                        ms_len,
+                        ci_len, sl_len, ms_len,
                     )
                 };
             },
@@ -422,20 +409,21 @@ pub struct ForcedSlidingCase {
     pub null: SlideNull,
 }
 
+/// The [`SlideNull`] that a decoder byte 0 to 4 chooses (any other byte: none): the inputs,
+/// the outputs.
+#[rustfmt::skip]
+const SLIDE_NULLS: [SlideNull; 5] = [
+    SlideNull::Props, SlideNull::Velocity,
+    SlideNull::Tau, SlideNull::Damping, SlideNull::Stiffness,
+];
+
 impl ForcedSlidingCase {
     /// Decodes any byte string (mostly nfdir 1 or 2 and a valid law-1 `PROPS`).
     pub fn decode(b: &mut Bytes) -> Self {
         let mut a = Args::new();
         a.set_int("nfdir", b.pick(&[1, 2, 1, 2, 1, 2, 0, 3, -1]));
         a.set_int("nprops", b.pick(&[13, 13, 10, 8, 4, 2, 20, 21, 1, 0, -1]));
-        let null = match b.u8() {
-            0 => SlideNull::Props,
-            1 => SlideNull::Velocity,
-            2 => SlideNull::Tau,
-            3 => SlideNull::Damping,
-            4 => SlideNull::Stiffness,
-            _ => SlideNull::None,
-        };
+        let null = b.choose(&SLIDE_NULLS, |_| SlideNull::None);
         a.put("props", decode_props(b, a.len_of("nprops")));
         a.draw(b, &SLIDE_POINT);
         ForcedSlidingCase { args: a, null }
@@ -445,14 +433,8 @@ impl ForcedSlidingCase {
     /// the integer `status`.
     pub fn check(&self) -> Result<Outputs, String> {
         let null = self.null;
-        let mo = |p: *mut f64, which| {
-            if null == which {
-                std::ptr::null_mut()
-            } else {
-                p
-            }
-        };
-        let ro = |p: *const f64, which| if null == which { std::ptr::null() } else { p };
+        let mo = |p: *mut f64, which: SlideNull| or_null_mut(p, null == which);
+        let ro = |p: *const f64, which: SlideNull| or_null(p, null == which);
         let out = call(
             &self.args,
             &Names::none(),

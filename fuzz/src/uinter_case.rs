@@ -8,7 +8,7 @@
 
 use std::ffi::c_int;
 
-use super::args::{Args, Draw, Len, ONE, Outputs, Row, call, of};
+use super::args::{Args, Draw, Len, ONE, Outputs, Row, call, of, or_null_mut};
 use super::bytes::{Bytes, bits, len};
 use super::contract::{Names, adhesive_props, adhesive_rate, norm, pnewdt_refusal, unwritten};
 use super::gapcon_case::NAMES;
@@ -180,70 +180,39 @@ impl UinterCase {
     /// Calls `uinter_` and checks every property; `Err` names the first one violated.
     pub fn check(&self) -> Result<Outputs, String> {
         let null = self.null_optional;
-        let opt = |p: *mut f64| if null { std::ptr::null_mut() } else { p };
+        let opt = |p: *mut f64| or_null_mut(p, null);
         let out = call(&self.args, &self.names, &IN_OUT, &OUTPUTS, |a, names, o| {
-            let lstate: *mut c_int = if null {
-                std::ptr::null_mut()
-            } else {
-                o.int_ptr_mut("LSTATE")
-            };
+            let lstate = or_null_mut(o.int_ptr_mut("LSTATE"), null);
             let [ci, sl, ms] = names.pointers();
             let [ci_len, sl_len, ms_len] = names.lengths();
             // SAFETY: every array has exactly the length the call declares (NDIR, NDIR², 2, 4,
             // 2·NDIR, NSTATV, 2·NPRED, NPROPS, MCRD, MCRD², the hidden name lengths; scalars one
             // entry); optional outputs are NULL or valid.
+            // The arguments by role, several a line as the manual prints them (rustfmt::skip).
+            #[rustfmt::skip]
             unsafe {
                 uinter_(
-                    o.ptr_mut("STRESS"),
-                    o.ptr_mut("DDSDDR"),
-                    opt(o.ptr_mut("DVISCOUS")),
-                    opt(o.ptr_mut("DSTRUCTURAL")),
-                    opt(o.ptr_mut("FLUX")),
-                    opt(o.ptr_mut("DDFDDT")),
-                    opt(o.ptr_mut("DDSDDT")),
-                    opt(o.ptr_mut("DDFDDR")),
-                    o.ptr_mut("STATEV"),
-                    opt(o.ptr_mut("SED")),
-                    opt(o.ptr_mut("SFD")),
-                    opt(o.ptr_mut("SPD")),
-                    opt(o.ptr_mut("SVD")),
-                    opt(o.ptr_mut("SCD")),
+                    // written
+                    o.ptr_mut("STRESS"), o.ptr_mut("DDSDDR"),
+                    opt(o.ptr_mut("DVISCOUS")), opt(o.ptr_mut("DSTRUCTURAL")),
+                    opt(o.ptr_mut("FLUX")), opt(o.ptr_mut("DDFDDT")),
+                    opt(o.ptr_mut("DDSDDT")), opt(o.ptr_mut("DDFDDR")),
+                    o.ptr_mut("STATEV"), opt(o.ptr_mut("SED")), opt(o.ptr_mut("SFD")),
+                    opt(o.ptr_mut("SPD")), opt(o.ptr_mut("SVD")), opt(o.ptr_mut("SCD")),
                     o.ptr_mut("PNEWDT"),
-                    a.ptr("RDISP"),
-                    a.ptr("DRDISP"),
-                    a.ptr("TEMP"),
-                    a.ptr("DTEMP"),
-                    a.ptr("PREDEF"),
-                    a.ptr("DPRED"),
-                    a.ptr("TIME"),
-                    a.ptr("DTIME"),
-                    a.ptr("FREQR"),
-                    ci,
-                    sl,
-                    ms,
-                    a.ptr("PROPS"),
-                    a.ptr("COORDS"),
-                    a.ptr("ALOCALDIR"),
-                    a.ptr("DROT"),
-                    a.ptr("AREA"),
-                    a.ptr("CHRLNGTH"),
-                    a.int_ptr("NODE"),
-                    a.int_ptr("NDIR"),
-                    a.int_ptr("NSTATV"),
-                    a.int_ptr("NPRED"),
-                    a.int_ptr("NPROPS"),
-                    a.int_ptr("MCRD"),
-                    a.int_ptr("KSTEP"),
-                    a.int_ptr("KINC"),
-                    a.int_ptr("KIT"),
-                    a.int_ptr("LINPER"),
-                    o.int_ptr_mut("LOPENCLOSE"),
-                    lstate,
-                    o.int_ptr_mut("LSDI"),
-                    a.int_ptr("LPRINT"),
-                    ci_len,
-                    sl_len,
-                    ms_len,
+                    // the increment
+                    a.ptr("RDISP"), a.ptr("DRDISP"), a.ptr("TEMP"), a.ptr("DTEMP"),
+                    a.ptr("PREDEF"), a.ptr("DPRED"), a.ptr("TIME"), a.ptr("DTIME"), a.ptr("FREQR"),
+                    // the names, PROPS, the geometry
+                    ci, sl, ms, a.ptr("PROPS"),
+                    a.ptr("COORDS"), a.ptr("ALOCALDIR"), a.ptr("DROT"),
+                    a.ptr("AREA"), a.ptr("CHRLNGTH"),
+                    // sizes, counters, the flags (LOPENCLOSE, LSTATE, LSDI written)
+                    a.int_ptr("NODE"), a.int_ptr("NDIR"), a.int_ptr("NSTATV"),
+                    a.int_ptr("NPRED"), a.int_ptr("NPROPS"), a.int_ptr("MCRD"),
+                    a.int_ptr("KSTEP"), a.int_ptr("KINC"), a.int_ptr("KIT"), a.int_ptr("LINPER"),
+                    o.int_ptr_mut("LOPENCLOSE"), lstate, o.int_ptr_mut("LSDI"),
+                    a.int_ptr("LPRINT"), ci_len, sl_len, ms_len,
                 )
             };
         })?;

@@ -7,7 +7,7 @@
 
 use std::ffi::c_int;
 
-use super::args::{Args, Draw, Outputs, Row, call};
+use super::args::{Args, Draw, Outputs, Row, call, or_null};
 use super::bytes::{Bytes, bits, len};
 use super::contract::{Names, unwritten};
 use Draw::Pick;
@@ -41,6 +41,16 @@ pub enum VfricNull {
     NSlvNod,
     Unread,
 }
+
+/// The [`VfricNull`] that a decoder byte 0 to 9 chooses, by role: the output, the per-point
+/// arrays, `PROPS`, the counts. Bytes 10 to 40 choose [`VfricNull::Unread`], any other none.
+#[rustfmt::skip]
+const VFRIC_NULLS: [VfricNull; 10] = [
+    VfricNull::FTangential,
+    VfricNull::FNormal, VfricNull::FStickForce, VfricNull::JConSlvid, VfricNull::AreaSlv,
+    VfricNull::Props,
+    VfricNull::NContact, VfricNull::NFricDir, VfricNull::NProps, VfricNull::NSlvNod,
+];
 
 /// The counts, drawn first: mostly a valid block, but nContact ≤ 0, nFricDir ∉ {1, 2}, nSlvNod
 /// ≤ 0 and any nProps stay reachable.
@@ -198,20 +208,13 @@ impl VfricCase {
         let b = &mut Bytes::new(data);
         let mut a = Args::new();
         a.draw(b, &COUNTS);
-        let null = match b.u8() {
-            0 => VfricNull::FTangential,
-            1 => VfricNull::FNormal,
-            2 => VfricNull::FStickForce,
-            3 => VfricNull::JConSlvid,
-            4 => VfricNull::AreaSlv,
-            5 => VfricNull::Props,
-            6 => VfricNull::NContact,
-            7 => VfricNull::NFricDir,
-            8 => VfricNull::NProps,
-            9 => VfricNull::NSlvNod,
-            10..=40 => VfricNull::Unread,
-            _ => VfricNull::None,
-        };
+        let null = b.choose(&VFRIC_NULLS, |k| {
+            if k <= 40 {
+                VfricNull::Unread
+            } else {
+                VfricNull::None
+            }
+        });
         let (n, nodes) = (a.len_of("nContact"), a.len_of("nSlvNod"));
         let props = decode_props(b, a.len_of("nProps"));
         // Forces of every class; the flags make them mostly physical (F_N ≥ 0, F_stick ≥ 0)
@@ -271,12 +274,8 @@ impl VfricCase {
         let nf = self.args.len_of("nFricDir");
         let null = self.null;
         let unread = null == VfricNull::Unread;
-        let ro = |p: *const f64, which: VfricNull| {
-            if null == which { std::ptr::null() } else { p }
-        };
-        let io = |p: *const c_int, which: VfricNull| {
-            if null == which { std::ptr::null() } else { p }
-        };
+        let ro = |p: *const f64, which: VfricNull| or_null(p, null == which);
+        let io = |p: *const c_int, which: VfricNull| or_null(p, null == which);
         let out = call(&self.args, &self.names, &[], &[], |a, names, o| {
             let guard = vec![UNWRITTEN; GUARD];
             o.put("fTangential", vec![UNWRITTEN; nf * n + 2 * GUARD]);
@@ -305,55 +304,32 @@ impl VfricCase {
             // nSlvNod, nProps, the name's hidden length), fTangential(nFricDir, nContact) and
             // statev(2, nContact) lie inside their guards; the arrays VFRIC does not read point
             // to buffers longer than any of them; NULL where `null` says so.
+            // The arguments by role, several a line as the manual prints them (rustfmt::skip).
+            #[rustfmt::skip]
             unsafe {
                 vfric_(
-                    ftan,
-                    statev,
-                    one,
-                    one,
-                    io(a.int_ptr("nContact"), VfricNull::NContact),
-                    four,
-                    io(a.int_ptr("nSlvNod"), VfricNull::NSlvNod),
-                    four,
-                    io(a.int_ptr("nFricDir"), VfricNull::NFricDir),
-                    ndir,
-                    two,
-                    io(a.int_ptr("nProps"), VfricNull::NProps),
-                    one,
-                    one,
-                    one,
-                    ip,
-                    ip,
-                    io(a.int_ptr("jConSlvid"), VfricNull::JConSlvid),
-                    ip,
-                    u,
-                    u,
-                    u,
-                    surf_int,
-                    surf_sec,
-                    surf_main,
-                    ip,
-                    u,
-                    ro(a.ptr("fStickForce"), VfricNull::FStickForce),
-                    u,
-                    ro(a.ptr("fNormal"), VfricNull::FNormal),
-                    u,
-                    u,
-                    u,
-                    u,
-                    u,
-                    u,
-                    ro(a.ptr("props"), VfricNull::Props),
-                    ro(a.ptr("areaSlv"), VfricNull::AreaSlv),
-                    u,
-                    u,
-                    u,
-                    u,
-                    int_len,
-                    sec_len,
-                    main_len,
-                );
-            }
+                    // written
+                    ftan, statev,
+                    // kStep, kInc, the sizes
+                    one, one,
+                    io(a.int_ptr("nContact"), VfricNull::NContact), four,
+                    io(a.int_ptr("nSlvNod"), VfricNull::NSlvNod), four,
+                    io(a.int_ptr("nFricDir"), VfricNull::NFricDir), ndir, two,
+                    io(a.int_ptr("nProps"), VfricNull::NProps), one, one, one,
+                    // the node and contact ids, the times, the names, lContType
+                    ip, ip, io(a.int_ptr("jConSlvid"), VfricNull::JConSlvid), ip,
+                    u, u, u,
+                    surf_int, surf_sec, surf_main, ip,
+                    // the forces and the geometry
+                    u, ro(a.ptr("fStickForce"), VfricNull::FStickForce),
+                    u, ro(a.ptr("fNormal"), VfricNull::FNormal),
+                    u, u, u, u, u, u,
+                    // props, areaSlv, the temperatures and fields, the names' lengths
+                    ro(a.ptr("props"), VfricNull::Props), ro(a.ptr("areaSlv"), VfricNull::AreaSlv),
+                    u, u, u, u,
+                    int_len, sec_len, main_len,
+                )
+            };
         })?;
         let statev = &out["statev"];
         if bits(&statev[GUARD..GUARD + 2 * n]) != bits(&self.args["statev"])
