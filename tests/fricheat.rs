@@ -10,10 +10,11 @@ fn parse(text: &str) -> Result<Config, String> {
     Config::parse("heat.toml", text)
 }
 
-#[test]
-fn heat_tables_are_read_per_interaction_with_the_fallback() {
-    let cfg = parse(
-        r#"
+/// Two heat tables, read by the parser's tests and (with the CalculiX variant) by the ABI's:
+/// Brake's with its own slave share and sliding speed, Pad's with Charron's share from the
+/// effusivities and the host's speed, next to a thermal law of the same interaction. No "*"
+/// entry: the parser's test adds one ([`FALLBACK`]).
+const HEAT: &str = r#"
 [interactions.Brake.heat]
 fraction = 0.95
 slave_share = 0.3
@@ -27,13 +28,18 @@ master_effusivity = 12000.0
 [interactions.Pad.conductance]
 law = "constant"
 k = 4.0
+"#;
 
+/// The heat of every interaction [`HEAT`] does not list.
+const FALLBACK: &str = r#"
 [interactions."*".heat]
 fraction = 0.5
 slave_share = 0.5
-"#,
-    )
-    .unwrap();
+"#;
+
+#[test]
+fn heat_tables_are_read_per_interaction_with_the_fallback() {
+    let cfg = parse(&format!("{HEAT}{FALLBACK}")).unwrap();
     let brake = cfg.frictional_heat(b"BRAKE   ").unwrap();
     assert_eq!(brake.fraction(), 0.95);
     assert_eq!(brake.slave_share(), 0.3);
@@ -143,7 +149,7 @@ mod config_file;
 
 #[cfg(feature = "calculix")]
 mod abi {
-    use super::config_file;
+    use super::{HEAT, config_file};
 
     use std::ffi::{CStr, c_char, c_int};
 
@@ -152,25 +158,13 @@ mod abi {
         ifl_clear_error, ifl_last_error,
     };
 
-    const CONFIG: &str = r#"
-[interactions.SI.heat]
-fraction = 0.8
-slave_share = 0.25
-speed = 0.01
-
-[interactions.Disc.heat]
-fraction = 0.9
-slave_effusivity = 2.0
-master_effusivity = 3.0
-"#;
-
     /// Outputs before the call, to see what is written.
     const GUARD: f64 = -7.5e300;
 
     /// One call with CalculiX's argument list, `ET` passed as NULL when `with_et` is false;
     /// returns (ET, F, VNORM) as they are after the call.
     fn call(name: &str, with_et: bool) -> (f64, f64, f64) {
-        config_file::config_once("fricheat", CONFIG);
+        config_file::config_once("fricheat", HEAT);
         let mut ciname = [b' '; 80];
         ciname[..name.len()].copy_from_slice(name.as_bytes());
         let (mut et, mut f, mut vnorm) = (GUARD, GUARD, GUARD);
@@ -216,11 +210,12 @@ master_effusivity = 3.0
 
     #[test]
     fn the_interactions_law_comes_back_in_et_f_vnorm() {
-        let (et, f, v) = call("si", true);
-        assert_eq!((et, f, v), (0.8, 0.25, 0.01));
-        // Charron's share 2/(2 + 3), and no speed: CalculiX's own relative velocity (< −0.5).
-        let (et, f, v) = call("DISC", true);
-        assert_eq!(et, 0.9);
+        let (et, f, v) = call("brake", true);
+        assert_eq!((et, f, v), (0.95, 0.3, 12.5));
+        // Charron's share 8000/(8000 + 12000), and no speed: CalculiX's own relative velocity
+        // (< −0.5).
+        let (et, f, v) = call("PAD", true);
+        assert_eq!(et, 1.0);
         assert!((f - 0.4).abs() <= 1e-15, "{f}");
         assert_eq!(v, FRICHEAT_HOST_SPEED);
         assert!(v < -0.5);
@@ -229,14 +224,14 @@ master_effusivity = 3.0
     #[test]
     fn an_unknown_interaction_gives_no_heat_and_says_why() {
         ifl_clear_error();
-        let (et, f, v) = call("PAD", true);
+        let (et, f, v) = call("CLUTCH", true);
         assert_eq!((et, f, v), (0.0, 0.0, 0.0));
         let m = last_error();
         for needle in [
             "FRICHEAT",
-            "PAD",
+            "CLUTCH",
             "contact element 17",
-            "has no [interactions.PAD.heat]",
+            "has no [interactions.CLUTCH.heat]",
         ] {
             assert!(m.contains(needle), "{needle}: {m}");
         }
@@ -245,7 +240,7 @@ master_effusivity = 3.0
     #[test]
     fn a_null_output_is_refused_and_the_others_get_the_safe_values() {
         ifl_clear_error();
-        let (et, f, v) = call("SI", false);
+        let (et, f, v) = call("BRAKE", false);
         assert_eq!(et, GUARD, "nothing written through a NULL ET");
         assert_eq!((f, v), (0.0, 0.0));
         let m = last_error();

@@ -106,30 +106,30 @@ fn run(id: &str, ratios: [f64; 3], elements: [usize; 2], study: bool) {
     }
 }
 
-#[test]
-fn a_stiff_permeable_base_layer_on_a_coarse_mesh() {
+/// The columns, each a `run`: (id, layer 2's k, M and h ratios to layer 1's, elements per
+/// layer, with a study).
+const COLUMNS: [(&str, [f64; 3], [usize; 2], bool); 4] = [
     // k and M a hundred times layer 1's, 10 elements per layer (a fixed Newton bound failed
     // such columns while their errors were within tolerance).
-    run("stiff", [100.0, 100.0, 1.0], [10, 10], false);
-}
-
-#[test]
-fn a_soft_tight_base_layer_on_a_fine_mesh() {
+    ("stiff", [100.0, 100.0, 1.0], [10, 10], false),
     // k and M a hundredth of layer 1's, 100 elements per layer (the element fluxes' round-off
     // exceeded 1e-12·q there).
-    run("soft", [0.01, 0.01, 1.0], [100, 100], false);
-}
-
-#[test]
-fn opposite_contrasts_with_a_study() {
+    ("soft", [0.01, 0.01, 1.0], [100, 100], false),
     // A tight but stiff, thin base layer with a study: self-converged orders and the first-step
     // bracket of the drained layer.
-    run("mixed", [0.04, 70.0, 0.12], [13, 44], true);
-}
-
-#[test]
-fn a_thick_permeable_base_layer_with_a_study() {
+    ("mixed", [0.04, 70.0, 0.12], [13, 44], true),
     // Depths that are nodes of one mesh of the element sweep and not of the next (27 elements
     // per metre): the element order is observed in U.
-    run("thick", [8.0, 2.0, 8.5], [27, 56], true);
+    ("thick", [8.0, 2.0, 8.5], [27, 56], true),
+];
+
+/// Every column at once, a thread each (a failed one fails the test, naming its id, once all
+/// have run).
+#[test]
+fn far_columns_pass_every_check() {
+    std::thread::scope(|scope| {
+        for (id, ratios, elements, study) in COLUMNS {
+            scope.spawn(move || run(id, ratios, elements, study));
+        }
+    });
 }
