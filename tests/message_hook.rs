@@ -15,6 +15,10 @@ use std::sync::Mutex;
 use interfacial::abi::host::FricCall;
 use interfacial::abi::{IflPropsEntry, ifl_props_entry, ifl_set_message_handler};
 
+/// The child test, and the variable that makes it do its work.
+const CHILD: &str = "child_messages_reach_the_handler";
+const MARKER: &str = "IFL_MESSAGE_HOOK_CHILD";
+
 const THREADS: usize = 8;
 const PER_THREAD: usize = 400;
 
@@ -58,7 +62,7 @@ fn bad_call(tag: usize) -> String {
 /// Child side: every step's messages, checked as they arrive.
 #[test]
 fn child_messages_reach_the_handler() {
-    if std::env::var_os("IFL_MESSAGE_HOOK_CHILD").is_none() {
+    if std::env::var_os(MARKER).is_none() {
         return;
     }
     let received: &'static Received = Box::leak(Box::new(Mutex::new(Vec::new())));
@@ -128,11 +132,7 @@ fn child_messages_reach_the_handler() {
 
 #[test]
 fn with_a_handler_messages_skip_the_file_and_come_back_without_one() {
-    let (_, log) = run_child_with_log(
-        "child_messages_reach_the_handler",
-        "IFL_MESSAGE_HOOK_CHILD",
-        "message-hook",
-    );
+    let (_, log) = run_child_with_log(CHILD, MARKER, "message-hook");
     let lines: Vec<&str> = log.lines().collect();
     // Step 1 (before the handler), step 3's own call from inside the handler, step 4 (after):
     // the file has those three and none of the handler's.

@@ -11,6 +11,10 @@ use std::ffi::CStr;
 use interfacial::abi::host::FricCall;
 use interfacial::abi::ifl_last_error;
 
+/// The child test, and the variable that makes it do its work.
+const CHILD: &str = "child_many_distinct_causes";
+const MARKER: &str = "IFL_REPORT_LIMIT_CHILD";
+
 const LIMIT: usize = 10_000;
 
 /// A refused call whose cause is distinct for each `i`: μ = −(i + 1) is named in the message.
@@ -28,7 +32,7 @@ fn bad_call(i: usize) -> String {
 /// Child side: 2.5 × LIMIT distinct causes, then the first causes again.
 #[test]
 fn child_many_distinct_causes() {
-    if std::env::var_os("IFL_REPORT_LIMIT_CHILD").is_none() {
+    if std::env::var_os(MARKER).is_none() {
         return;
     }
     for i in 0..LIMIT * 5 / 2 {
@@ -46,11 +50,7 @@ fn child_many_distinct_causes() {
 
 #[test]
 fn messages_stop_after_ten_thousand_causes_with_one_line_saying_so() {
-    let (_, text) = run_child_with_log(
-        "child_many_distinct_causes",
-        "IFL_REPORT_LIMIT_CHILD",
-        "limit",
-    );
+    let (_, text) = run_child_with_log(CHILD, MARKER, "limit");
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines.len(), LIMIT + 1, "{LIMIT} causes, then one line");
     // The first LIMIT causes, in order, each once.
