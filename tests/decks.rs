@@ -574,12 +574,17 @@ fn no_error<T>(entry: impl FnOnce() -> T) -> Result<T, String> {
     }
 }
 
+/// The interaction's name, NSTATV = the deck's `DEPVAR=` and that many state variables (and
+/// four more past them, which the routine must not write), as the solver passes them.
+fn as_declared(name: &str, depvar: usize) -> Result<(String, i32, Vec<f64>), String> {
+    let nstatv = i32::try_from(depvar).map_err(|e| e.to_string())?;
+    Ok((name.to_string(), nstatv, vec![0.0; depvar + 4]))
+}
+
 /// One increment of a closed, sliding point through `fric_` as the solver would call it.
 fn fric_increment(name: &str, props: &[f64], depvar: usize) -> Result<(), String> {
     let mut call = FricCall::new(2, props);
-    call.ciname = name.to_string();
-    call.nstatv = i32::try_from(depvar).map_err(|e| e.to_string())?;
-    call.statev = vec![0.0; depvar + 4];
+    (call.ciname, call.nstatv, call.statev) = as_declared(name, depvar)?;
     call.set_guards();
     call.press = 100.0;
     call.dpress = 100.0;
@@ -658,9 +663,7 @@ fn vfric_block(props: &[f64]) -> Result<(), String> {
 /// One increment of a point in contact through `uinter_` as the solver would call it.
 fn uinter_increment(name: &str, props: &[f64], depvar: usize) -> Result<(), String> {
     let mut call = UinterCall::new(3, props);
-    call.ciname = name.to_string();
-    call.nstatv = i32::try_from(depvar).map_err(|e| e.to_string())?;
-    call.statev = vec![0.0; depvar + 4];
+    (call.ciname, call.nstatv, call.statev) = as_declared(name, depvar)?;
     call.set_guards();
     call.rdisp = [1e-4, 1e-3, 0.0];
     call.drdisp = [1e-4, 1e-3, 0.0];
