@@ -49,11 +49,9 @@ struct Params {
 
 impl Params {
     fn props(&self) -> Vec<f64> {
-        let mut p = CoulombBuilder::new()
-            .mu(self.mu1)
+        let mut p = coulomb(self.mu1, self.gamma_crit)
             .mu2(self.mu2)
             .tau_max(self.tau_max)
-            .gamma_crit(self.gamma_crit)
             .stick(if self.exact { 1.0 } else { 0.0 })
             .p_ref(self.p_ref)
             .damping(self.c0)
@@ -380,16 +378,30 @@ fn traction<const N: usize>(c: Contact<N>) -> interfacial::laws::contact::Tracti
     }
 }
 
+/// Law 1 with friction coefficient `mu` and elastic stick of slip tolerance `gamma_crit`, the
+/// base the extended entries are added to.
+fn coulomb(mu: f64, gamma_crit: f64) -> CoulombBuilder {
+    CoulombBuilder::new().mu(mu).gamma_crit(gamma_crit)
+}
+
+/// A point of a law with damping: NFDIR 2, NSTATV = 5 (`STATEV(4..5)` the viscous stress) with
+/// the state `statev` and two guarded entries past it, PRESS = 100, DTIME = 0.1.
+fn damped_point(props: &[f64], statev: [f64; 5]) -> FricCall {
+    let mut c = FricCall::new(2, props);
+    c.statev = [&statev[..], &[0.0, 0.0]].concat();
+    c.nstatv = 5;
+    c.set_guards();
+    c.press = 100.0;
+    c.dtime = 0.1;
+    c
+}
+
 /// Scene F3: steady slip along d at angle θ with μ₁ ≠ μ₂: the stress sits on the friction
 /// ellipse (τ₁/μ₁)² + (τ₂/μ₂)² = p², with τ_i ∝ μ_i²·d_i.
 #[test]
 fn f3_ellipse() {
     let (mu1, mu2, p, gc) = (0.5, 0.2, 100.0, 1e-3);
-    let ellipse = CoulombBuilder::new()
-        .mu(mu1)
-        .mu2(mu2)
-        .gamma_crit(gc)
-        .build_first(5);
+    let ellipse = coulomb(mu1, gc).mu2(mu2).build_first(5);
     for k in 0..12 {
         let angle = f64::from(k) * std::f64::consts::PI / 6.0 + 0.1;
         let d = [angle.cos(), angle.sin()];
@@ -435,9 +447,7 @@ fn f4_velocity_steps() {
     for nfdir in [1usize, 2] {
         for exact in [false, true] {
             for frozen in [false, true] {
-                let props = CoulombBuilder::new()
-                    .mu(mu_s)
-                    .gamma_crit(gc)
+                let props = coulomb(mu_s, gc)
                     .stick(if exact { 1.0 } else { 0.0 })
                     .mu_law(1.0)
                     .mu_k(mu_k)
@@ -467,10 +477,8 @@ fn f4_velocity_steps() {
 #[test]
 fn f5_pressure_dependent_mu_with_cap() {
     let (mu0, p_ref, tau_max, gc) = (0.5, 100.0, 30.0, 1e-3);
-    let props = CoulombBuilder::new()
-        .mu(mu0)
+    let props = coulomb(mu0, gc)
         .tau_max(tau_max)
-        .gamma_crit(gc)
         .p_ref(p_ref)
         .build_first(11);
     let mut c = FricCall::new(1, &props);
@@ -509,7 +517,7 @@ fn f5_pressure_dependent_mu_with_cap() {
 fn damping_closed_forms() {
     let (mu, p, gc, c0, dt, v) = (0.3, 100.0, 1e-3, 2.0, 0.05, 0.4);
     for hht in [None, Some(-0.1)] {
-        let mut props = CoulombBuilder::new().mu(mu).gamma_crit(gc).damping(c0);
+        let mut props = coulomb(mu, gc).damping(c0);
         let rate_dt = if let Some(a) = hht {
             props = props.hht_alpha(a);
             0.25 * (1.0 - a) * (1.0 - a) * dt / (0.5 - a)
@@ -562,18 +570,9 @@ fn damping_closed_forms() {
 /// stress, so with DGAM = 0 the answer is zero (identity DROT would leave a residual stress).
 #[test]
 fn damping_state_is_rotated_by_drot() {
-    let props = CoulombBuilder::new()
-        .mu(0.3)
-        .gamma_crit(1e-3)
-        .damping(2.0)
-        .build_first(17);
+    let props = coulomb(0.3, 1e-3).damping(2.0).build_first(17);
     let setup = |drot: [f64; 4]| {
-        let mut c = FricCall::new(2, &props);
-        c.statev = vec![0.0, 0.0, 1.0, 1.5, -0.5, 0.0, 0.0];
-        c.nstatv = 5;
-        c.set_guards();
-        c.press = 100.0;
-        c.dtime = 0.1;
+        let mut c = damped_point(&props, [0.0, 0.0, 1.0, 1.5, -0.5]);
         // DROT = 90° rotation (column-major): (1.5, −0.5) → (0.5, 1.5).
         c.drot = drot;
         c.tau = [0.5, 1.5, c.tau[2], c.tau[3]];
@@ -614,9 +613,7 @@ fn hht_scales_the_rate_increment() {
     let beta = 0.25 * (1.2f64).powi(2);
     let gamma = 0.7;
     assert!((hht.rate_increment(dt) - beta * dt / gamma).abs() < 1e-18);
-    let props = CoulombBuilder::new()
-        .mu(0.5)
-        .gamma_crit(1e-3)
+    let props = coulomb(0.5, 1e-3)
         .mu_law(1.0)
         .mu_k(0.2)
         .decay(3.0)
@@ -769,15 +766,10 @@ fn bad_extended_input_is_refused_cleanly() {
         ("viscous STATEV NaN", |c| c.statev[4] = f64::NAN, "STATEV"),
     ];
     for (what, spoil, word) in cases {
-        let mut c = FricCall::new(2, &good);
-        c.statev = vec![0.5, 0.1, 1.0, 0.01, -0.02, 0.0, 0.0];
-        c.nstatv = 5;
-        c.set_guards();
-        c.press = 100.0;
+        let mut c = damped_point(&good, [0.5, 0.1, 1.0, 0.01, -0.02]);
         c.dpress = 10.0;
         c.tau = [3.0, -1.0, c.tau[2], c.tau[3]];
         c.dgam = [1e-3, 2e-3, 0.0];
-        c.dtime = 0.1;
         // The good call works.
         let mut ok = c.clone();
         ok.call();
@@ -1218,10 +1210,8 @@ fn forced_sliding_split() {
 /// number, while f = 10⁻¹⁵³·Θ alone underflows to 0.
 #[test]
 fn friction_stress_of_a_huge_coefficient_times_a_tiny_factor_is_kept() {
-    let props = CoulombBuilder::new()
-        .mu(1e150)
+    let props = coulomb(1e150, 1e-3)
         .mu2(0.5e150)
-        .gamma_crit(1e-3)
         .mu_law(1.0)
         .mu_k(1e-3)
         .decay(1.0)
@@ -1258,7 +1248,7 @@ fn a_vanishing_start_pressure_is_answered() {
     const THETA_REF: f64 = 20.0;
     const P_REF: f64 = 1e6;
     let (mu, gc) = (0.3, 1e-3);
-    let props = CoulombBuilder::new().mu(mu).gamma_crit(gc);
+    let props = coulomb(mu, gc);
     // (name, the μ law's PROPS(8..13), μ at θ̄ = 25 and p → 0)
     let laws = [
         (
@@ -1330,9 +1320,7 @@ fn a_vanishing_start_pressure_is_answered() {
 /// numerical failure of the local solve.
 #[test]
 fn decay_law_names_a_bad_temperature() {
-    let props = CoulombBuilder::new()
-        .mu(0.5)
-        .gamma_crit(1e-3)
+    let props = coulomb(0.5, 1e-3)
         .mu_law(1.0)
         .mu_k(0.2)
         .decay(2.0)
@@ -1366,11 +1354,7 @@ fn decay_law_names_a_bad_temperature() {
 /// stiffness (the law has no rate dependence), whatever the pressure and slip.
 #[test]
 fn an_overflowing_temperature_factor_is_named_an_overflow() {
-    let props = CoulombBuilder::new()
-        .mu(0.3)
-        .gamma_crit(1e-3)
-        .b_theta(1.0)
-        .build_first(13);
+    let props = coulomb(0.3, 1e-3).b_theta(1.0).build_first(13);
     for nfdir in [1, 2] {
         for press in [0.0, 1e-3, 1.0, 100.0] {
             for dgam in [0.0, 1e-6, 1e-2] {
