@@ -244,7 +244,7 @@ impl FricCase {
             let [ci_len, sl_len, ms_len] = names.lengths();
             // SAFETY: every array has exactly the length the call declares (NFDIR, NFDIR², 2·NFDIR,
             // NSTATV, NPROPS, MCRD, 2·NPRED, the hidden name lengths; scalars one entry).
-            // The arguments by role, several a line as the manual prints them (rustfmt::skip).
+            // The arguments grouped by role, several a line (rustfmt::skip keeps the groups).
             #[rustfmt::skip]
             unsafe {
                 fric_(

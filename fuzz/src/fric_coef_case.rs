@@ -210,7 +210,7 @@ impl FricCoefCase {
                 // SAFETY: every array has exactly the length the call declares (2·nBlock,
                 // 40·nBlock, nProps, 6·nBlock, nBlock, nBlock, nBlock·nFields, the hidden name
                 // lengths); scalars one entry; NULL where `null` says so.
-                // The arguments by role, several a line as the manual prints them (rustfmt::skip).
+                // The arguments grouped by role, several a line (rustfmt::skip keeps the groups).
                 #[rustfmt::skip]
                 unsafe {
                     fric_coef_(

@@ -188,7 +188,7 @@ impl UinterCase {
             // SAFETY: every array has exactly the length the call declares (NDIR, NDIR², 2, 4,
             // 2·NDIR, NSTATV, 2·NPRED, NPROPS, MCRD, MCRD², the hidden name lengths; scalars one
             // entry); optional outputs are NULL or valid.
-            // The arguments by role, several a line as the manual prints them (rustfmt::skip).
+            // The arguments grouped by role, several a line (rustfmt::skip keeps the groups).
             #[rustfmt::skip]
             unsafe {
                 uinter_(

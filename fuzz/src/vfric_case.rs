@@ -304,7 +304,7 @@ impl VfricCase {
             // nSlvNod, nProps, the name's hidden length), fTangential(nFricDir, nContact) and
             // statev(2, nContact) lie inside their guards; the arrays VFRIC does not read point
             // to buffers longer than any of them; NULL where `null` says so.
-            // The arguments by role, several a line as the manual prints them (rustfmt::skip).
+            // The arguments grouped by role, several a line (rustfmt::skip keeps the groups).
             #[rustfmt::skip]
             unsafe {
                 vfric_(
