@@ -15,12 +15,12 @@ use std::sync::Mutex;
 use interfacial::abi::host::FricCall;
 use interfacial::abi::{IflPropsEntry, ifl_props_entry, ifl_set_message_handler};
 
+const THREADS: usize = 8;
+const PER_THREAD: usize = 400;
+
 /// The child test, and the variable that makes it do its work.
 const CHILD: &str = "child_messages_reach_the_handler";
 const MARKER: &str = "IFL_MESSAGE_HOOK_CHILD";
-
-const THREADS: usize = 8;
-const PER_THREAD: usize = 400;
 
 /// What a handler received: each message and the length it was given.
 type Received = Mutex<Vec<(String, usize)>>;

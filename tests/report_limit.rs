@@ -11,11 +11,11 @@ use std::ffi::CStr;
 use interfacial::abi::host::FricCall;
 use interfacial::abi::ifl_last_error;
 
+const LIMIT: usize = 10_000;
+
 /// The child test, and the variable that makes it do its work.
 const CHILD: &str = "child_many_distinct_causes";
 const MARKER: &str = "IFL_REPORT_LIMIT_CHILD";
-
-const LIMIT: usize = 10_000;
 
 /// A refused call whose cause is distinct for each `i`: μ = −(i + 1) is named in the message.
 fn bad_call(i: usize) -> String {
