@@ -226,20 +226,27 @@ subroutine ifl_ccx_unread(coords, rcoord, drot, predef, pnewdt, lm, blank)
   blank = ' '
 end subroutine ifl_ccx_unread
 
+!> What FRIC needs and CalculiX's contact spring routines are not given (step, increment,
+!> times, the element, node and interaction, the temperatures), set by ifl_ccx_ctx before them,
+!> and the smallest PNEWDT since ifl_ccx_pnewdt last passed it on. Kept per thread (CalculiX
+!> runs elements in threads).
+module ifl_ccx_context
+  implicit none
+  real(8) :: ctime(2), cdtime, ctemp(2), cpnewdt
+  integer :: cstep, cinc, cnoel, cnode
+  character(len=80) :: ciname
+  !$omp threadprivate(ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode, ciname)
+end module ifl_ccx_context
+
 !> Before CalculiX's contact spring routines (resultsmech.f, e_c3d.f): what FRIC needs and
 !> those routines are not given. Kept per thread (CalculiX runs elements in threads).
 subroutine ifl_ccx_ctx(istep, iinc, time, ttime, dtime, name, nelem, ithermal, t1, vold, mi, &
                        konl, nope)
+  use ifl_ccx_context, only: ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode, ciname
   implicit none
   integer, intent(in) :: istep, iinc, nelem, ithermal(*), mi(*), konl(*), nope
   real(8), intent(in) :: time, ttime, dtime, t1(*), vold(0:mi(2), *)
   character(len=80), intent(in) :: name
-  real(8) :: ctime(2), cdtime, ctemp(2), cpnewdt
-  integer :: cstep, cinc, cnoel, cnode
-  character(len=80) :: ciname
-  common /iflctx/ ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode
-  common /iflctn/ ciname
-  !$omp threadprivate(/iflctx/, /iflctn/)
   integer :: j
   real(8) :: tm
 
@@ -275,12 +282,9 @@ end subroutine ifl_ccx_ctx
 !> After springforc_n2f (resultsmech.f): the smallest PNEWDT < 1 that FRIC returned since the
 !> last call goes to CalculiX's qa(3), which cuts the increment back by that factor.
 subroutine ifl_ccx_pnewdt(qa3)
+  use ifl_ccx_context, only: cpnewdt
   implicit none
   real(8), intent(inout) :: qa3
-  real(8) :: ctime(2), cdtime, ctemp(2), cpnewdt
-  integer :: cstep, cinc, cnoel, cnode
-  common /iflctx/ ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode
-  !$omp threadprivate(/iflctx/)
   real(8) :: r
   if (cpnewdt > 0.d0 .and. cpnewdt < 1.d0) then
     r = max(cpnewdt, 0.05d0)
@@ -329,18 +333,13 @@ end subroutine ifl_ccx_basis
 !> stress as a global vector (taug), the tangents in (t1, t2), the energies and writes s.
 subroutine ifl_ccx_point(elc, ncmat_, xn, t, fnorm, area, sini, s, nstate_, npt, t1, t2, &
                          taug, ddtddg, ddtddp, sed, sfd, closed)
+  use ifl_ccx_context, only: ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode, ciname
   implicit none
   integer, intent(in) :: ncmat_, nstate_, npt
   real(8), intent(in) :: elc(0:ncmat_), xn(3), t(3), fnorm, area, sini(nstate_)
   real(8), intent(inout) :: s(nstate_)
   real(8), intent(out) :: t1(3), t2(3), taug(3), ddtddg(2, 2), ddtddp(2), sed, sfd
   logical, intent(out) :: closed
-  real(8) :: ctime(2), cdtime, ctemp(2), cpnewdt
-  integer :: cstep, cinc, cnoel, cnode
-  character(len=80) :: ciname
-  common /iflctx/ ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode
-  common /iflctn/ ciname
-  !$omp threadprivate(/iflctx/, /iflctn/)
   real(8) :: tau(2), dslip(2), ddtddt(2, 2), pnewdt, dgam(2), taulm(2), slip(2)
   real(8) :: press, dpress, ddpddh, chrlngth, coords(3), rcoord(3), drot(2, 2)
   real(8) :: predef(2, 1), temp(2), dummy(1), dt(3)
@@ -430,6 +429,7 @@ end subroutine ifl_ccx_force
 !> not in linear dynamics).
 subroutine ifl_ccx_stiff(elc, ncmat_, xn, t, fnl, fpu, tu, nope, springarea, sini, s, &
                              nstate_, npt, nmethod, iperturb)
+  use ifl_ccx_context, only: cpnewdt
   implicit none
   integer, intent(in) :: ncmat_, nope, nstate_, npt, nmethod, iperturb(*)
   real(8), intent(in) :: elc(0:ncmat_), xn(3), t(3), tu(3, 3, *), springarea(2)
@@ -439,10 +439,7 @@ subroutine ifl_ccx_stiff(elc, ncmat_, xn, t, fnl, fpu, tu, nope, springarea, sin
   real(8) :: dfn(3, 10), tb(3, 2), g(3, 2), gt(2), w(3)
   logical :: closed
   integer :: i, j, k, a
-  real(8) :: ctime(2), cdtime, ctemp(2), cpnewdt, keep
-  integer :: cstep, cinc, cnoel, cnode
-  common /iflctx/ ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode
-  !$omp threadprivate(/iflctx/)
+  real(8) :: keep
   area = springarea(1)
   fnorm = sqrt(fnl(1)**2 + fnl(2)**2 + fnl(3)**2)
   ! the step ratio is CalculiX's to act on after the force (resultsmech), not here
