@@ -452,7 +452,6 @@ fn f4(rows: &mut Vec<Row>) {
     }
 }
 
-
 /// T2's plates: emissivities of the two facing surfaces, gap, gas, plate thicknesses and
 /// conductivities (SI, °C).
 const T2_EPS: [f64; 2] = [0.6, 0.7];
