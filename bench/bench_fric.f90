@@ -23,8 +23,7 @@
 module bench_data
   use, intrinsic :: iso_fortran_env, only: int64, real64
   implicit none
-  integer, parameter :: dp = real64
-  integer, parameter :: npoints = 4096
+  integer, parameter :: dp = real64, npoints = 4096
   integer, parameter :: use_ours = 1, use_ref = 2, use_nop = 3
   real(dp), parameter :: mu = 0.3_dp, gc = 1.0e-3_dp
 

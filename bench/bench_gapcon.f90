@@ -36,8 +36,7 @@
 module gapcon_bench_data
   use, intrinsic :: iso_fortran_env, only: int64, real64
   implicit none
-  integer, parameter :: dp = real64
-  integer, parameter :: npoints = 4096
+  integer, parameter :: dp = real64, npoints = 4096
   integer, parameter :: use_ours = 1, use_ref = 2, use_nop = 3
   ! The table of bench/gapcon_bench.toml: p(i) = (i-1)^2/50 (an exact quotient, so these are
   ! the same doubles as the decimals of the file), 100 rows, 0 .. 196.02.

@@ -34,48 +34,28 @@ _Static_assert(sizeof(size_t) == sizeof(void *), "hidden CHARACTER lengths are s
 /* SUBROUTINE FRIC(LM,TAU,DDTDDG,DDTDDP,DSLIP,SED,SFD,DDTDDT,PNEWDT,STATEV,DGAM,TAULM,PRESS,
  * DPRESS,DDPDDH,SLIP,KSTEP,KINC,TIME,DTIME,NOEL,CINAME,SLNAME,MSNAME,NPT,NODE,NPATCH,COORDS,
  * RCOORD,DROT,TEMP,PREDEF,NFDIR,MCRD,NPRED,NSTATV,CHRLNGTH,PROPS,NPROPS) */
-void fric_(int *lm,                 /*  1 LM          in/out */
-           double *tau,             /*  2 TAU(NFDIR)  in/out */
-           double *ddtddg,          /*  3 DDTDDG(NFDIR,NFDIR) out */
-           double *ddtddp,          /*  4 DDTDDP(NFDIR) out */
-           double *dslip,           /*  5 DSLIP(NFDIR) out */
-           double *sed,             /*  6 SED         out */
-           double *sfd,             /*  7 SFD         out */
-           double *ddtddt,          /*  8 DDTDDT(NFDIR,2) out */
-           double *pnewdt,          /*  9 PNEWDT      out */
-           double *statev,          /* 10 STATEV(NSTATV) in/out */
-           const double *dgam,      /* 11 DGAM(NFDIR) */
-           const double *taulm,     /* 12 TAULM(NFDIR) */
-           const double *press,     /* 13 PRESS */
-           const double *dpress,    /* 14 DPRESS */
-           const double *ddpddh,    /* 15 DDPDDH */
-           const double *slip,      /* 16 SLIP(NFDIR) */
-           const int *kstep,        /* 17 KSTEP */
-           const int *kinc,         /* 18 KINC */
-           const double *time,      /* 19 TIME(2) */
-           const double *dtime,     /* 20 DTIME */
-           const int *noel,         /* 21 NOEL */
-           const char *ciname,      /* 22 CINAME */
-           const char *slname,      /* 23 SLNAME */
-           const char *msname,      /* 24 MSNAME */
-           const int *npt,          /* 25 NPT */
-           const int *node,         /* 26 NODE */
-           const int *npatch,       /* 27 NPATCH */
-           const double *coords,    /* 28 COORDS(MCRD) */
-           const double *rcoord,    /* 29 RCOORD(MCRD) */
-           const double *drot,      /* 30 DROT(2,2) */
-           const double *temp,      /* 31 TEMP(2) */
-           const double *predef,    /* 32 PREDEF(2,NPRED) */
-           const abi_nfdir_int *nfdir, /* 33 NFDIR */
-           const int *mcrd,         /* 34 MCRD */
-           const int *npred,        /* 35 NPRED */
-           const int *nstatv,       /* 36 NSTATV */
-           const double *chrlngth,  /* 37 CHRLNGTH */
-           const double *props,     /* 38 PROPS(NPROPS) */
-           const int *nprops,       /* 39 NPROPS */
-           size_t ciname_len,       /* hidden length of CINAME */
-           size_t slname_len,       /* hidden length of SLNAME */
-           size_t msname_len);      /* hidden length of MSNAME */
+/* Several arguments to a line, grouped by role; the numbers are the argument positions. */
+void fric_(/* 1-10: LM, TAU(NFDIR) in/out; DDTDDG(NFDIR,NFDIR), DDTDDP(NFDIR), DSLIP(NFDIR),
+            * SED, SFD, DDTDDT(NFDIR,2), PNEWDT out; STATEV(NSTATV) in/out */
+           int *lm, double *tau, double *ddtddg, double *ddtddp, double *dslip, double *sed,
+           double *sfd, double *ddtddt, double *pnewdt, double *statev,
+           /* 11-16, the increment: DGAM(NFDIR), TAULM(NFDIR), PRESS, DPRESS, DDPDDH, SLIP(NFDIR) */
+           const double *dgam, const double *taulm, const double *press, const double *dpress,
+           const double *ddpddh, const double *slip,
+           /* 17-27, when and where: KSTEP, KINC, TIME(2), DTIME, NOEL, CINAME, SLNAME, MSNAME,
+            * NPT, NODE, NPATCH */
+           const int *kstep, const int *kinc, const double *time, const double *dtime,
+           const int *noel, const char *ciname, const char *slname, const char *msname,
+           const int *npt, const int *node, const int *npatch,
+           /* 28-32, the point: COORDS(MCRD), RCOORD(MCRD), DROT(2,2), TEMP(2), PREDEF(2,NPRED) */
+           const double *coords, const double *rcoord, const double *drot, const double *temp,
+           const double *predef,
+           /* 33-39, sizes and the law: NFDIR, MCRD, NPRED, NSTATV, CHRLNGTH, PROPS(NPROPS),
+            * NPROPS */
+           const abi_nfdir_int *nfdir, const int *mcrd, const int *npred, const int *nstatv,
+           const double *chrlngth, const double *props, const int *nprops,
+           /* the hidden lengths of CINAME, SLNAME, MSNAME */
+           size_t ciname_len, size_t slname_len, size_t msname_len);
 
 /* FRIC_COEF (abi.md, current form): 16 arguments by reference + 3 hidden lengths. */
 void fric_coef_(double *fcoef,            /* fCoef(nBlock,2) */

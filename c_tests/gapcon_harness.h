@@ -190,16 +190,16 @@ static inline void gh_config_text(const char *fmt, ...)
     va_end(ap);
 }
 
-/* Opens the file and writes its first line, "# Written by WRITER."; NULL when it cannot. */
-static inline FILE *gh_config_open(const char *path, const char *writer)
+/* Opens the file and writes its first line, "# Written by WRITER.". When it cannot, it says so,
+ * the gh_config_ writers below write nothing and gh_config_close counts the failure. */
+static inline void gh_config_open(const char *path, const char *writer)
 {
     gh_cfg = fopen(path, "w");
     if (gh_cfg == NULL) {
         fprintf(stderr, "cannot write the configuration file %s\n", path);
-        return NULL;
+        return;
     }
     gh_config_text("# Written by %s.\n", writer);
-    return gh_cfg;
 }
 
 /* A TOML float that reads back as exactly v (%.17g, with ".0" when it would read as integer). */

@@ -414,6 +414,35 @@ static inline double fh_slide(fh_fric *h, const double *d, double v, int n)
 }
 
 /*
+ * Scene F4's velocity steps (docs/scene-definitions.md) for a rate law with these PROPS (the
+ * Coulomb layout), from first contact at pressure p with DTIME dt: slip at each of the n rates
+ * in turn, 40 increments each, along d (NFDIR 1: t1; NFDIR 2: (0.6, 0.8)); once steady
+ * |TAU| = mu(v) p and STATEV(2) = v, to the relative tolerance rtol. then(h, d, v), unless NULL,
+ * checks what else the harness wants at each steady rate. Failures name the scene, NFDIR, the
+ * stick mode and frozen switch (PROPS(7), PROPS(20)) and v.
+ */
+static inline void fh_velocity_steps(const char *scene, int nfdir, const double *props, double p,
+                                     double dt, const double *rates, int n, double (*mu)(double),
+                                     double rtol,
+                                     void (*then)(const fh_fric *h, const double *d, double v))
+{
+    const double d[2] = {nfdir == 1 ? 1.0 : 0.6, nfdir == 1 ? 0.0 : 0.8};
+    fh_fric h;
+    int s;
+    fh_init_contact(&h, nfdir, props, p, dt);
+    for (s = 0; s < n; s++) {
+        const double v = rates[s];
+        fh_context("%s NFDIR=%d exact=%g frozen=%g v=%g", scene, nfdir,
+                   props[IFLP_COULOMB_STICK], props[IFLP_COULOMB_FROZEN], v);
+        FH_NEAR(fh_slide(&h, d, v, 40), mu(v) * p, rtol, 0.0);
+        FH_NEAR(h.statev[1], v, rtol, 0.0);
+        if (then != NULL) {
+            then(&h, d, v);
+        }
+    }
+}
+
+/*
  * scene(nfdir, a, b) for NFDIR = 1 and 2 and each setting of two on/off switches a and b (the
  * variants a harness crosses, e.g. exact stick and frozen rate), NFDIR outermost, then a.
  */

@@ -62,28 +62,23 @@ static void coef(const double *props, double v, double p, double *mu, double *dm
     *dmu = deriv[0];
 }
 
+/* At each steady rate of F4: fric_coef_'s mu(v) and d mu/d v against the closed forms, and
+ * d tau/d DGAM along d against a central difference (not for frozen: same check). */
+static void coef_and_tangent(const fh_fric *h, const double *d, double v)
+{
+    double mu, dmu;
+    coef(h->props, v, P, &mu, &dmu);
+    FH_NEAR(mu, mu_of(v), 1e-15, 0.0);
+    FH_NEAR(dmu, -DECAY * (MU_S - MU_K) * exp(-DECAY * v), 1e-14, 0.0);
+    fh_check_tangent_along(h, d, 1e-5 * MU_S * P / GAMMA_CRIT);
+}
+
 static void steps(int nfdir, int exact, int frozen)
 {
     static const double rates[4] = {0.05, 0.5, 0.2, 1.5};
-    const double d[2] = {nfdir == 1 ? 1.0 : 0.6, nfdir == 1 ? 0.0 : 0.8};
     double props[IFLP_COULOMB_NPROPS];
-    fh_fric h;
-    int s;
     props_decay(props, exact, frozen);
-    fh_init_contact(&h, nfdir, props, P, DT);
-    for (s = 0; s < 4; s++) {
-        const double v = rates[s];
-        double tau_eq, mu, dmu;
-        fh_context("F4 NFDIR=%d exact=%d frozen=%d v=%g", nfdir, exact, frozen, v);
-        tau_eq = fh_slide(&h, d, v, 40);
-        FH_NEAR(tau_eq, mu_of(v) * P, 1e-12, 0.0);
-        FH_NEAR(h.statev[1], v, 1e-12, 0.0);
-        coef(props, v, P, &mu, &dmu);
-        FH_NEAR(mu, mu_of(v), 1e-15, 0.0);
-        FH_NEAR(dmu, -DECAY * (MU_S - MU_K) * exp(-DECAY * v), 1e-14, 0.0);
-        /* d tau/d DGAM along d against a central difference (not for frozen: same check). */
-        fh_check_tangent_along(&h, d, 1e-5 * MU_S * P / GAMMA_CRIT);
-    }
+    fh_velocity_steps("F4", nfdir, props, P, DT, rates, 4, mu_of, 1e-12, coef_and_tangent);
 }
 
 static void damping(int nfdir)

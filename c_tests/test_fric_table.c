@@ -45,24 +45,22 @@ static void props_table(double *props, int exact, int frozen)
     props[IFLP_COULOMB_FROZEN] = frozen ? 1 : 0;
 }
 
+/* At each steady rate, elastic stick only: d tau/d DGAM along d against a central difference. */
+static void tangent_unless_exact(const fh_fric *h, const double *d, double v)
+{
+    (void)v;
+    if (h->props[IFLP_COULOMB_STICK] == 0.0) {
+        fh_check_tangent_along(h, d, 1e-5 * 0.6 * P / GAMMA_CRIT);
+    }
+}
+
 static void steps(int nfdir, int exact, int frozen)
 {
     static const double rates[5] = {0.05, 0.5, 0.2, 1.5, 0.8};
-    const double d[2] = {nfdir == 1 ? 1.0 : 0.6, nfdir == 1 ? 0.0 : 0.8};
     double props[IFLP_COULOMB_NPROPS];
-    fh_fric h;
-    int s;
     props_table(props, exact, frozen);
-    fh_init_contact(&h, nfdir, props, P, DT);
-    for (s = 0; s < 5; s++) {
-        const double v = rates[s];
-        fh_context("F4 table NFDIR=%d exact=%d frozen=%d v=%g", nfdir, exact, frozen, v);
-        FH_NEAR(fh_slide(&h, d, v, 40), mu_tab(v) * P, 1e-11, 0.0);
-        FH_NEAR(h.statev[1], v, 1e-11, 0.0);
-        if (!exact) {
-            fh_check_tangent_along(&h, d, 1e-5 * 0.6 * P / GAMMA_CRIT);
-        }
-    }
+    fh_velocity_steps("F4 table", nfdir, props, P, DT, rates, 5, mu_tab, 1e-11,
+                      tangent_unless_exact);
 }
 
 /* BRAKE at (rate, p) = (0.25, 30): 0.5 - 0.025 = 0.475 at p = 0, 0.375 at p = 100, so

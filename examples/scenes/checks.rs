@@ -375,15 +375,15 @@ fn f5(rows: &mut Vec<Row>) {
 /// directions d: τ on (τ₁/μ₁)² + (τ₂/μ₂)² = p², parallel to (μ₁²d₁, μ₂²d₂).
 fn f3(rows: &mut Vec<Row>) {
     let (mu1, mu2) = (0.5, 0.2);
+    let props = CoulombBuilder::new()
+        .mu(mu1)
+        .mu2(mu2)
+        .gamma_crit(GAMMA_CRIT)
+        .build_first(5);
     let (mut ellipse_err, mut angle_err) = (0.0f64, 0.0f64);
     for k in 0..12 {
         let angle = f64::from(k) * std::f64::consts::PI / 6.0 + 0.1;
         let d = [angle.cos(), angle.sin()];
-        let props = CoulombBuilder::new()
-            .mu(mu1)
-            .mu2(mu2)
-            .gamma_crit(GAMMA_CRIT)
-            .build_first(5);
         let mut c = FricCall::new(2, &props);
         let mut p_prev = 0.0;
         for _ in 0..60 {
@@ -452,33 +452,6 @@ fn f4(rows: &mut Vec<Row>) {
     }
 }
 
-/// Thermal scenes' configuration: one interaction per law, written next to the other temporary
-/// files and named by INTERFACIAL_CONFIG before the first gapcon_ call.
-const THERMAL_CONFIG: &str = r#"
-[interactions.T1CONST.conductance]
-law = "constant"
-k = 2000.0
-
-[interactions.T1TEMP.conductance]
-law = "pressure-table"
-table = [[0.0, 20.0, 300.0], [100.0, 60.0, 300.0], [0.0, 60.0, 400.0], [100.0, 200.0, 400.0]]
-
-[interactions.RADC.radiation]
-view_factor = 0.8
-stefan_boltzmann = 5.670374419e-8
-absolute_zero = -273.15
-
-[interactions.T2PAR.conductance]
-law = "gas-gap"
-k_gas = 0.026
-g0 = 2e-6
-
-[interactions.T2PAR.radiation]
-view_factor = VIEW_FACTOR
-stefan_boltzmann = 5.670374419e-8
-absolute_zero = -273.15
-"#;
-
 /// T2's plates: emissivities of the two facing surfaces, gap, gas, plate thicknesses and
 /// conductivities (SI, °C).
 const T2_EPS: [f64; 2] = [0.6, 0.7];
@@ -492,9 +465,15 @@ fn t2_view_factor() -> f64 {
     1.0 / (1.0 / T2_EPS[0] + 1.0 / T2_EPS[1] - 1.0)
 }
 
-/// The configuration file's text, with T2's view factor computed from the emissivities.
+/// The configuration file's text: examples/scenes/thermal.toml, then T2's radiation with the
+/// view factor computed from the emissivities.
 fn thermal_config() -> String {
-    THERMAL_CONFIG.replace("VIEW_FACTOR", &format!("{:e}", t2_view_factor()))
+    format!(
+        "{}\n[interactions.T2PAR.radiation]\nview_factor = {:e}\n\
+         stefan_boltzmann = 5.670374419e-8\nabsolute_zero = -273.15\n",
+        include_str!("thermal.toml"),
+        t2_view_factor()
+    )
 }
 
 /// T1: two bars (L_A/k_A, L_B/k_B) between θ_H and θ_C with gap conductance h at the interface,

@@ -111,13 +111,12 @@ fn drive(f: Formulation, x: f64, r: f64, n: usize) -> Result<Vec<f64>, String> {
             .with_rate_formulation(RateFormulation::RateFreeStiffness);
             let (mut tau, mut state) = (0.0, ExtendedState::<1>::default());
             for _ in 0..n {
+                // At constant P; γ_crit is absolute, so no characteristic length is read.
                 let inc = Increment::<1> {
                     tau: [tau],
                     dgam: [dgam],
                     pressure: P,
-                    dpressure: 0.0,
                     dtime,
-                    characteristic_length: 1.0,
                     ..Increment::default()
                 };
                 let up = law

@@ -292,41 +292,30 @@ def write_steps(m, path):
     out += fix
     out += ["NREF, 1, 1", "NREF, 2, 2, %.12g" % -delta0]
     out += ["*END STEP"]
-    out += [
+
+    def loaded(comment, static, held, loads):
+        """A step loading the reference node: the field controls, the procedure (its line and
+        increments), the bottom and the slice held (and `held`, the reference node's), the
+        *CLOAD lines, the bottom's reaction totals and the contact stresses printed."""
+        return (
+            [comment, "*STEP, INC=1000"] + ctrl + static + ["*BOUNDARY, OP=NEW"] + fix[1:] + held
+            + ["*CLOAD"] + loads
+            + ["*NODE PRINT, NSET=NBOTTOM, TOTALS=ONLY", "RF", "*CONTACT PRINT", "CSTR", "*END STEP"]
+        )
+
+    out += loaded(
         "** Step 2: the normal load P on the reference node (the top's total), x still held.",
-        "*STEP, INC=1000",
-    ] + ctrl + [
-        "*STATIC",
-        "0.02, 1., 1e-4, 0.05",
-        "*BOUNDARY, OP=NEW",
-    ] + fix[1:] + [
-        "NREF, 1, 1",
-        "*CLOAD",
-        "NREF, 2, %.12g" % (-P * t),
-        "*NODE PRINT, NSET=NBOTTOM, TOTALS=ONLY",
-        "RF",
-        "*CONTACT PRINT",
-        "CSTR",
-        "*END STEP",
-    ]
+        ["*STATIC", "0.02, 1., 1e-4, 0.05"],
+        ["NREF, 1, 1"],
+        ["NREF, 2, %.12g" % (-P * t)],
+    )
     for q in Q_FRACTIONS:
-        out += [
+        out += loaded(
             "** The tangential load Q = %r mu P on the reference node, x free." % q,
-            "*STEP, INC=1000",
-        ] + ctrl + [
-            "*STATIC, DIRECT",
-            "0.25, 1.",
-            "*BOUNDARY, OP=NEW",
-        ] + fix[1:] + [
-            "*CLOAD",
-            "NREF, 1, %.12g" % (q * MU * P * t),
-            "NREF, 2, %.12g" % (-P * t),
-            "*NODE PRINT, NSET=NBOTTOM, TOTALS=ONLY",
-            "RF",
-            "*CONTACT PRINT",
-            "CSTR",
-            "*END STEP",
-        ]
+            ["*STATIC, DIRECT", "0.25, 1."],
+            [],
+            ["NREF, 1, %.12g" % (q * MU * P * t), "NREF, 2, %.12g" % (-P * t)],
+        )
     with open(path, "w") as f:
         f.write("\n".join(out) + "\n")
 

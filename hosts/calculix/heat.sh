@@ -49,6 +49,15 @@ run() {
   ccx_run "$d" "$exe" "$deck" "$@" >/dev/null
 }
 
+# heat_config NAME INTERACTION LINE...: the configuration $work/NAME.toml, one heat table
+# [interactions.INTERACTION.heat] with fraction = eta and the given lines.
+heat_config() {
+  local f=$work/$1.toml
+  printf '[interactions.%s.heat]\nfraction = %s\n' "$2" "$eta" >"$f"
+  shift 2
+  printf '%s\n' "$@" >>"$f"
+}
+
 # rows DAT: one line per increment: time Fx Q_top Q_bottom (the heat leaving, -RFL).
 rows() {
   awk '/total force \(fx,fy,fz\) for set NTOP/ { t = $NF; getline; getline; fx = $1 }
@@ -64,6 +73,24 @@ sums() {
       if ($1 <= 1 + 1e-9) { qp += ($3 + $4) * dt; next }
       n++; w += abs($2) * d * dt / T; q += ($3 + $4) * dt; qt += $3 * dt }
     END { printf "%.9e %.9e %.9e %.9e %d\n", qp, w, q, qt, n }' "$1"
+}
+
+# same_rows ROWS_A ROWS_B FROM MIN: two `rows` files side by side, the increments after total
+# time FROM: Fx and both heats per increment within the printed precision (7 digits: 2e-6 of the
+# larger of the two; below 1e-9 on both sides counts as 0, such as a press's round-off shear force
+# of 1e-12 and heat of 1e-17). Prints "PASS|FAIL AGREE/N increments, worst relative difference
+# D": PASS when more than MIN increments were compared and every one agrees.
+same_rows() {
+  paste "$1" "$2" | awk -v from="$3" -v min="$4" '
+    function abs(x) { return x < 0 ? -x : x }
+    $1 <= from + 1e-9 { next }
+    NF != 8 { n++; bad++; next }
+    { n++; off = 0
+      for (i = 2; i <= 4; i++) { m = abs($i) > abs($(i + 4)) ? abs($i) : abs($(i + 4))
+        if (m < 1e-9) continue
+        d = abs($i - $(i + 4)) / m; if (d > worst) worst = d; if (d > 2e-6) off = 1 }
+      bad += off }
+    END { printf "%s %d/%d increments, worst relative difference %.2e", (n > min && bad == 0 ? "PASS" : "FAIL"), n - bad, n, worst }'
 }
 
 # check_heat TAG DECK F_EXPECTED WHAT: the three checks on run TAG of DECK.
@@ -92,20 +119,9 @@ check_heat() {
 }
 
 # --- the library's law: a given share, then Charron's share from two effusivities ----------------
-cat >"$work/heat_share.toml" <<EOF
-[interactions.SI.heat]
-fraction = $eta
-slave_share = $share
-speed = $speed
-EOF
+heat_config heat_share SI "slave_share = $share" "speed = $speed"
 # e_s = 2, e_m = 3: f = 2/(2 + 3) = 0.4
-cat >"$work/heat_effusivity.toml" <<EOF
-[interactions.SI.heat]
-fraction = $eta
-slave_effusivity = 2.0
-master_effusivity = 3.0
-speed = $speed
-EOF
+heat_config heat_effusivity SI "slave_effusivity = 2.0" "master_effusivity = 3.0" "speed = $speed"
 t0=$(date +%s.%N)
 run "$ours" heat_block share INTERFACIAL_CONFIG="$work/heat_share.toml"
 t1=$(date +%s.%N)
@@ -141,11 +157,7 @@ echo "INFO deck 4: one run $(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b
 # 1e-3 (the same closed form as above, the speed now CalculiX's); the slave's share f within
 # 1e-3; no heat in increment 1 (the velocity path taken); every increment (press and drag) equal to stock CalculiX's own velocity path
 # (*GAP HEAT GENERATION 0.8, 0.25, -1 on heat_block_stock.inp) within the printed precision.
-cat >"$work/heat_nospeed.toml" <<EOF
-[interactions.SI.heat]
-fraction = $eta
-slave_share = $share
-EOF
+heat_config heat_nospeed SI "slave_share = $share"
 run "$ours" heat_block vnorm INTERFACIAL_CONFIG="$work/heat_nospeed.toml"
 r=$work/vnorm
 if [ "$(cat "$r/status")" != 0 ]; then
@@ -179,19 +191,9 @@ else
         report FAIL "deck 4 (VNORM = -1) stock: the run failed with status $(cat "$s/status") (log $s/log)"
       else
         rows "$s/heat_block_stock.dat" >"$s/rows"
-        # Every increment of both steps: Fx and both heats within the printed precision (2e-6
-        # of the larger of the two; below 1e-9 on both sides counts as 0: the press's round-off
-        # shear force (1e-12) and heat (1e-17), which stock's slip test (0.95 mu p) leaves out,
-        # against forces of 6 and heat rates of 0.01 in the drag).
-        res=$(paste "$r/rows" "$s/rows" | awk '
-          function abs(x) { return x < 0 ? -x : x }
-          NF != 8 { bad++; next }
-          { n++; off = 0
-            for (i = 2; i <= 4; i++) { m = abs($i) > abs($(i + 4)) ? abs($i) : abs($(i + 4))
-              if (m < 1e-9) continue
-              d = abs($i - $(i + 4)) / m; if (d > worst) worst = d; if (d > 2e-6) off = 1 }
-            bad += off }
-          END { printf "%s %d/%d increments, worst relative difference %.2e", (n > 100 && bad == 0 ? "PASS" : "FAIL"), n - bad, n, worst }')
+        # Every increment of both steps (the press's round-off, which stock's slip test (0.95 mu
+        # p) leaves out, against forces of 6 and heat rates of 0.01 in the drag).
+        res=$(same_rows "$r/rows" "$s/rows" -1 100)
         report "${res%% *}" "deck 4 (VNORM = -1) against stock's own velocity path (*GAP HEAT GENERATION 0.8, 0.25, -1): Fx and both heats per increment of both steps equal in ${res#* } (limit 2e-6)"
       fi
     fi
@@ -204,11 +206,7 @@ run "$ours" heat_block threads INTERFACIAL_CONFIG="$work/heat_share.toml" OMP_NU
 r=$work/threads
 if [ "$(cat "$r/status")" = 0 ] && grep -q 'Using up to 2 cpu(s) for the stress calculation' "$r/log"; then
   rows "$r/heat_block.dat" >"$r/rows"
-  res=$(paste "$work/share/rows" "$r/rows" | awk '
-    function abs(x) { return x < 0 ? -x : x }
-    { n++; for (i = 2; i <= 4; i++) { m = abs($i); if (m < 1e-9) continue
-        d = abs($i - $(i + 4)) / m; if (d > worst) worst = d; if (d > 2e-6) bad++ } }
-    END { printf "%s %d increments, worst relative difference %.2e", (n > 0 && bad == 0 ? "PASS" : "FAIL"), n, worst }')
+  res=$(same_rows "$work/share/rows" "$r/rows" -1 0)
   report "${res%% *}" "deck 4 threads: Fx and both heats with 1 and 2 threads equal in ${res#* } (limit 2e-6)"
 else
   report FAIL "deck 4 threads: the run with 2 threads failed or did not use 2 threads (log $r/log)"
@@ -222,15 +220,8 @@ if [ -x /usr/bin/ccx ]; then
     report FAIL "deck 4 stock: the run failed with status $(cat "$s/status") (log $s/log)"
   else
     rows "$s/heat_block_stock.dat" >"$s/rows"
-    # Drag increments: stock's μ·p = |τ| of law 1 when sliding; heat and force within the
-    # printed precision (7 digits: 2e-6 of the value).
-    res=$(paste "$work/share/rows" "$s/rows" | awk '
-      function abs(x) { return x < 0 ? -x : x }
-      $1 > 1 + 1e-9 { n++; off = 0
-        for (i = 2; i <= 4; i++) { m = abs($(i + 4)); if (m == 0) continue
-          d = abs($i - $(i + 4)) / m; if (d > worst) worst = d; if (d > 2e-6) off = 1 }
-        bad += off }
-      END { printf "%s %d/%d increments, worst relative difference %.2e", (n > 0 && bad == 0 ? "PASS" : "FAIL"), n - bad, n, worst }')
+    # Drag increments (after total time 1): stock's μ·p = |τ| of law 1 when sliding.
+    res=$(same_rows "$work/share/rows" "$s/rows" 1 0)
     report "${res%% *}" "deck 4 against stock (drag): Fx and both heats per increment equal to stock *FRICTION/*GAP HEAT GENERATION: ${res#* } (limit 2e-6)"
     read -r sqp sw sq sqt sn < <(sums "$s/rows")
     echo "INFO deck 4 stock: heat in step 1 (pressed, nothing slides) $sqp from mu*p*v, the library's |tau| gives none; drag's heat $sq"
@@ -240,11 +231,7 @@ else
 fi
 
 # --- bad input: the interaction has no heat table: no heat, the cause named, the run goes on ------
-cat >"$work/heat_other.toml" <<EOF
-[interactions.OTHER.heat]
-fraction = $eta
-slave_share = $share
-EOF
+heat_config heat_other OTHER "slave_share = $share"
 run "$ours" heat_block noheat INTERFACIAL_CONFIG="$work/heat_other.toml"
 r=$work/noheat
 want="FRICHEAT: interaction 'SI'"

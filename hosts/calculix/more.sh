@@ -37,6 +37,15 @@ run() {
   ccx_run "$d" "$exe" "$deck" >/dev/null
 }
 
+# ran TAG WHAT: true when run TAG ended with status 0; otherwise a FAIL line for WHAT with the
+# status and the log, and false.
+ran() {
+  local r=$work/runs/$1
+  [ "$(cat "$r/status")" = 0 ] && return 0
+  report FAIL "$2: the run failed (status $(cat "$r/status"), log $r/log)"
+  return 1
+}
+
 # --- anisotropic friction: mu1 = 0.4 along t1 = x, mu2 = 0.2 along t2 = +-y -------------------
 # Law 1 with PROPS(3): the isotropic algorithm on scaled stresses (mu_bar/mu_i) tau_i, so in
 # full slip along the unit direction d the stress is on the ellipse (tau1/mu1)^2 + (tau2/mu2)^2
@@ -50,11 +59,8 @@ for c in "x|1|0|n2f" "y|0|1|n2f" "xy|0.7071068|0.7071068|n2f" \
   "x|1|0|f2f" "y|0|1|f2f" "xy|0.7071068|0.7071068|f2f"; do
   IFS='|' read -r dir dx dy kind <<<"$c"
   run "$ours" "aniso_$dir" "aniso_${dir}_$kind" "$kind"
+  ran "aniso_${dir}_$kind" "anisotropy ($kind), drag along $dir" || continue
   r=$work/runs/aniso_${dir}_$kind
-  if [ "$(cat "$r/status")" != 0 ]; then
-    report FAIL "anisotropy ($kind), drag along $dir: the run failed (status $(cat "$r/status"), log $r/log)"
-    continue
-  fi
   totals "$r/aniso_$dir.dat" >"$r/totals"
   res=$(tail -1 "$r/totals" | awk -v m1=0.4 -v m2=0.2 -v dx="$dx" -v dy="$dy" '
     function abs(x) { return x < 0 ? -x : x }
@@ -91,11 +97,9 @@ fi
 # step 3 against mu(theta(t)) (the coefficient follows the temperature as it changes), each
 # |Fx|/|Fz| within 1 %.
 for kind in n2f f2f; do
-run "$ours" thermal_user "thermal_user_$kind" "$kind"
-r=$work/runs/thermal_user_$kind
-if [ "$(cat "$r/status")" != 0 ]; then
-  report FAIL "temperature-dependent mu ($kind): the run failed (status $(cat "$r/status"), log $r/log)"
-else
+  run "$ours" thermal_user "thermal_user_$kind" "$kind"
+  ran "thermal_user_$kind" "temperature-dependent mu ($kind)" || continue
+  r=$work/runs/thermal_user_$kind
   totals "$r/thermal_user.dat" >"$r/totals"
   for c in "60|2" "100|3"; do
     theta=${c%|*}
@@ -116,7 +120,6 @@ else
     END { printf "%s %d increments, worst relative difference %.2e at theta = %.1f, limit 1e-2",
       (n >= 10 && worst <= 0.01 ? "PASS" : "FAIL"), n, worst, at }' "$r/totals")
   report "${res%% *}" "temperature-dependent mu ($kind) along the ramp 60 -> 100 (step 3): |Fx|/|Fz| against mu(theta(t)) at ${res#* }"
-fi
 done
 
 # --- rate-and-state friction (law 3): steady sliding at mu_ss(v) -------------------------------
@@ -126,11 +129,8 @@ done
 # |Fx|/|Fz| within 1 %, both contact kinds.
 for kind in n2f f2f; do
   run "$ours" rate_state_user "rate_state_$kind" "$kind"
+  ran "rate_state_$kind" "rate-and-state ($kind)" || continue
   r=$work/runs/rate_state_$kind
-  if [ "$(cat "$r/status")" != 0 ]; then
-    report FAIL "rate-and-state ($kind): the run failed (status $(cat "$r/status"), log $r/log)"
-    continue
-  fi
   res=$(totals "$r/rate_state_user.dat" | tail -1 | awk '
     function abs(x) { return x < 0 ? -x : x }
     { r = abs($2) / abs($4); m = 0.6 + (0.015 - 0.01) * log(0.1 / 0.01); e = abs(r - m) / m

@@ -68,23 +68,11 @@ subroutine ifl_ccx_friction(inpc, textpart, elcon, ncmat_, ntmat_, imat, nstate_
     if (textpart(i) == 'USER') then
       user = .true.
     else if (textpart(i)(1:11) == 'PROPERTIES=') then
-      read (textpart(i)(12:31), '(i20)', iostat=ios) np
-      if (ios /= 0) then
-        write (*, *) '*ERROR reading *FRICTION of interaction ', trim(cname), &
-          ': PROPERTIES= is not an integer'
-        bad = .true.
-      end if
+      call read_count(textpart(i)(12:31), 'PROPERTIES=', np)
     else if (textpart(i)(1:7) == 'DEPVAR=') then
-      read (textpart(i)(8:27), '(i20)', iostat=ios) nd
-      if (ios /= 0) then
-        write (*, *) '*ERROR reading *FRICTION of interaction ', trim(cname), &
-          ': DEPVAR= is not an integer'
-        bad = .true.
-      end if
+      call read_count(textpart(i)(8:27), 'DEPVAR=', nd)
     else if (user) then
-      write (*, *) '*ERROR reading *FRICTION, USER of interaction ', trim(cname), &
-        ': unknown parameter ', trim(textpart(i))
-      bad = .true.
+      call refuse(': unknown parameter '//trim(textpart(i)))
     end if
   end do
   if (.not. user) then
@@ -97,23 +85,15 @@ subroutine ifl_ccx_friction(inpc, textpart, elcon, ncmat_, ntmat_, imat, nstate_
   end if
   iuser = 1
   if (np == -1) then
-    write (*, *) '*ERROR reading *FRICTION, USER of interaction ', trim(cname), &
-      ': PROPERTIES=n is required'
-    bad = .true.
+    call refuse(': PROPERTIES=n is required')
   else if (np < 1) then
-    write (*, *) '*ERROR reading *FRICTION, USER of interaction ', trim(cname), &
-      ': PROPERTIES must be at least 1'
-    bad = .true.
+    call refuse(': PROPERTIES must be at least 1')
   else if (13 + np > ncmat_) then
     write (*, *) '*ERROR reading *FRICTION, USER of interaction ', trim(cname), &
       ': no room for PROPERTIES=', np
     bad = .true.
   end if
-  if (nd < 0) then
-    write (*, *) '*ERROR reading *FRICTION, USER of interaction ', trim(cname), &
-      ': DEPVAR must be 0 or more'
-    bad = .true.
-  end if
+  if (nd < 0) call refuse(': DEPVAR must be 0 or more')
   ! The data lines: up to 8 values each, until the next keyword.
   k = 0
   do
@@ -122,9 +102,7 @@ subroutine ifl_ccx_friction(inpc, textpart, elcon, ncmat_, ntmat_, imat, nstate_
     do i = 1, min(n, 8)
       read (textpart(i)(1:20), '(f20.0)', iostat=ios) val
       if (ios /= 0) then
-        write (*, *) '*ERROR reading *FRICTION, USER of interaction ', trim(cname), &
-          ': PROPS value is not a number: ', trim(textpart(i))
-        bad = .true.
+        call refuse(': PROPS value is not a number: '//trim(textpart(i)))
         cycle
       end if
       k = k + 1
@@ -153,6 +131,29 @@ subroutine ifl_ccx_friction(inpc, textpart, elcon, ncmat_, ntmat_, imat, nstate_
     write (*, *) '       ', trim(msg)
     ier = 1
   end if
+
+contains
+
+  !> One refusal of the *FRICTION line: the message (after the interaction's name), and bad set.
+  subroutine refuse(what)
+    character(len=*), intent(in) :: what
+    write (*, *) '*ERROR reading *FRICTION, USER of interaction ', trim(cname), what
+    bad = .true.
+  end subroutine refuse
+
+  !> The integer n of KEY=n (text: what follows the '='); refused when it is not one. Read
+  !> before USER is known, so the message names *FRICTION alone.
+  subroutine read_count(text, key, count)
+    character(len=*), intent(in) :: text, key
+    integer, intent(inout) :: count
+    integer :: ios
+    read (text, '(i20)', iostat=ios) count
+    if (ios /= 0) then
+      write (*, *) '*ERROR reading *FRICTION of interaction ', trim(cname), ': ', key, &
+        ' is not an integer'
+      bad = .true.
+    end if
+  end subroutine read_count
 end subroutine ifl_ccx_friction
 
 !> One call of fric_ at a closed point at rest (p = 1, no motion, STATEV zero); msg is the
@@ -190,16 +191,8 @@ subroutine ifl_ccx_check(props, np, nd, cname, msg)
   taulm = 0.d0
   slip = 0.d0
   time = 0.d0
-  coords = 0.d0
-  rcoord = 0.d0
-  drot = 0.d0
-  drot(1, 1) = 1.d0
-  drot(2, 2) = 1.d0
   temp = 0.d0
-  predef = 0.d0
-  pnewdt = 1.d0
-  lm = 0
-  blank = ' '
+  call ifl_ccx_unread(coords, rcoord, drot, predef, pnewdt, lm, blank)
   call ifl_clear_error()
   call fric(lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pnewdt, statev, dgam, taulm, &
             1.d0, 0.d0, 1.d0, slip, 1, 1, time, 1.d0, 0, cname, blank, blank, 1, 0, 0, &
@@ -214,20 +207,46 @@ subroutine ifl_ccx_check(props, np, nd, cname, msg)
   deallocate (statev)
 end subroutine ifl_ccx_check
 
+!> FRIC's arguments that CalculiX gives no value for, as both calls of fric pass them: no
+!> coordinates, DROT the identity (TAU is already in the point's own basis), no predefined
+!> fields, PNEWDT = 1, LM = 0 (no exact stick), blank surface names.
+subroutine ifl_ccx_unread(coords, rcoord, drot, predef, pnewdt, lm, blank)
+  implicit none
+  real(8), intent(out) :: coords(3), rcoord(3), drot(2, 2), predef(2, 1), pnewdt
+  integer, intent(out) :: lm
+  character(len=80), intent(out) :: blank
+  coords = 0.d0
+  rcoord = 0.d0
+  drot = 0.d0
+  drot(1, 1) = 1.d0
+  drot(2, 2) = 1.d0
+  predef = 0.d0
+  pnewdt = 1.d0
+  lm = 0
+  blank = ' '
+end subroutine ifl_ccx_unread
+
+!> What FRIC needs and CalculiX's contact spring routines are not given (step, increment,
+!> times, the element, node and interaction, the temperatures), set by ifl_ccx_ctx before them,
+!> and the smallest PNEWDT since ifl_ccx_pnewdt last passed it on. Kept per thread (CalculiX
+!> runs elements in threads).
+module ifl_ccx_context
+  implicit none
+  real(8) :: ctime(2), cdtime, ctemp(2), cpnewdt
+  integer :: cstep, cinc, cnoel, cnode
+  character(len=80) :: ciname
+  !$omp threadprivate(ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode, ciname)
+end module ifl_ccx_context
+
 !> Before CalculiX's contact spring routines (resultsmech.f, e_c3d.f): what FRIC needs and
 !> those routines are not given. Kept per thread (CalculiX runs elements in threads).
 subroutine ifl_ccx_ctx(istep, iinc, time, ttime, dtime, name, nelem, ithermal, t1, vold, mi, &
                        konl, nope)
+  use ifl_ccx_context, only: ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode, ciname
   implicit none
   integer, intent(in) :: istep, iinc, nelem, ithermal(*), mi(*), konl(*), nope
   real(8), intent(in) :: time, ttime, dtime, t1(*), vold(0:mi(2), *)
   character(len=80), intent(in) :: name
-  real(8) :: ctime(2), cdtime, ctemp(2), cpnewdt
-  integer :: cstep, cinc, cnoel, cnode
-  character(len=80) :: ciname
-  common /iflctx/ ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode
-  common /iflctn/ ciname
-  !$omp threadprivate(/iflctx/, /iflctn/)
   integer :: j
   real(8) :: tm
 
@@ -263,12 +282,9 @@ end subroutine ifl_ccx_ctx
 !> After springforc_n2f (resultsmech.f): the smallest PNEWDT < 1 that FRIC returned since the
 !> last call goes to CalculiX's qa(3), which cuts the increment back by that factor.
 subroutine ifl_ccx_pnewdt(qa3)
+  use ifl_ccx_context, only: cpnewdt
   implicit none
   real(8), intent(inout) :: qa3
-  real(8) :: ctime(2), cdtime, ctemp(2), cpnewdt
-  integer :: cstep, cinc, cnoel, cnode
-  common /iflctx/ ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode
-  !$omp threadprivate(/iflctx/)
   real(8) :: r
   if (cpnewdt > 0.d0 .and. cpnewdt < 1.d0) then
     r = max(cpnewdt, 0.05d0)
@@ -317,18 +333,13 @@ end subroutine ifl_ccx_basis
 !> stress as a global vector (taug), the tangents in (t1, t2), the energies and writes s.
 subroutine ifl_ccx_point(elc, ncmat_, xn, t, fnorm, area, sini, s, nstate_, npt, t1, t2, &
                          taug, ddtddg, ddtddp, sed, sfd, closed)
+  use ifl_ccx_context, only: ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode, ciname
   implicit none
   integer, intent(in) :: ncmat_, nstate_, npt
   real(8), intent(in) :: elc(0:ncmat_), xn(3), t(3), fnorm, area, sini(nstate_)
   real(8), intent(inout) :: s(nstate_)
   real(8), intent(out) :: t1(3), t2(3), taug(3), ddtddg(2, 2), ddtddp(2), sed, sfd
   logical, intent(out) :: closed
-  real(8) :: ctime(2), cdtime, ctemp(2), cpnewdt
-  integer :: cstep, cinc, cnoel, cnode
-  character(len=80) :: ciname
-  common /iflctx/ ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode
-  common /iflctn/ ciname
-  !$omp threadprivate(/iflctx/, /iflctn/)
   real(8) :: tau(2), dslip(2), ddtddt(2, 2), pnewdt, dgam(2), taulm(2), slip(2)
   real(8) :: press, dpress, ddpddh, chrlngth, coords(3), rcoord(3), drot(2, 2)
   real(8) :: predef(2, 1), temp(2), dummy(1), dt(3)
@@ -369,16 +380,8 @@ subroutine ifl_ccx_point(elc, ncmat_, xn, t, fnorm, area, sini, s, nstate_, npt,
   taulm = 0.d0
   dslip = 0.d0
   ddtddt = 0.d0
-  coords = 0.d0
-  rcoord = 0.d0
-  drot = 0.d0
-  drot(1, 1) = 1.d0
-  drot(2, 2) = 1.d0
-  predef = 0.d0
   temp = ctemp
-  pnewdt = 1.d0
-  lm = 0
-  blank = ' '
+  call ifl_ccx_unread(coords, rcoord, drot, predef, pnewdt, lm, blank)
   if (nd > 0) then
     call fric(lm, tau, ddtddg, ddtddp, dslip, sed, sfd, ddtddt, pnewdt, s(14), dgam, taulm, &
               press, dpress, ddpddh, slip, cstep, cinc, ctime, cdtime, cnoel, ciname, blank, &
@@ -426,6 +429,7 @@ end subroutine ifl_ccx_force
 !> not in linear dynamics).
 subroutine ifl_ccx_stiff(elc, ncmat_, xn, t, fnl, fpu, tu, nope, springarea, sini, s, &
                              nstate_, npt, nmethod, iperturb)
+  use ifl_ccx_context, only: cpnewdt
   implicit none
   integer, intent(in) :: ncmat_, nope, nstate_, npt, nmethod, iperturb(*)
   real(8), intent(in) :: elc(0:ncmat_), xn(3), t(3), tu(3, 3, *), springarea(2)
@@ -435,10 +439,7 @@ subroutine ifl_ccx_stiff(elc, ncmat_, xn, t, fnl, fpu, tu, nope, springarea, sin
   real(8) :: dfn(3, 10), tb(3, 2), g(3, 2), gt(2), w(3)
   logical :: closed
   integer :: i, j, k, a
-  real(8) :: ctime(2), cdtime, ctemp(2), cpnewdt, keep
-  integer :: cstep, cinc, cnoel, cnode
-  common /iflctx/ ctime, cdtime, ctemp, cpnewdt, cstep, cinc, cnoel, cnode
-  !$omp threadprivate(/iflctx/)
+  real(8) :: keep
   area = springarea(1)
   fnorm = sqrt(fnl(1)**2 + fnl(2)**2 + fnl(3)**2)
   ! the step ratio is CalculiX's to act on after the force (resultsmech), not here
