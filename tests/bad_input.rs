@@ -10,12 +10,12 @@ mod refusal;
 use refusal::{assert_fric_refused, assert_mentions};
 use std::ffi::{CString, c_char};
 
-use interfacial::abi::host::{FricCall, GUARD};
 use interfacial::abi::{
     IflConductance, IflStatus, gapcon_, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
     ifl_last_error_copy,
 };
 use interfacial::props::CoulombBuilder;
+use interfacial_test_hosts::{FricCall, GUARD};
 
 const MU: f64 = 0.3;
 const GAMMA_CRIT: f64 = 1e-3;

@@ -5,50 +5,9 @@
 
 use std::ffi::c_char;
 
-use super::fric_;
+use interfacial::abi::fric_;
 
-/// Sentinel written past the end of every output array, to prove nothing is written there.
-pub const GUARD: f64 = -7.77e77;
-
-/// `STATEV` of `n` zeros followed by four [`GUARD`] slots.
-pub(crate) fn state_with_guards(n: usize) -> Vec<f64> {
-    let mut statev = vec![0.0; n];
-    statev.extend([GUARD; 4]);
-    statev
-}
-
-/// The output arrays of a host call, each with the number of entries the call may write
-/// (NFDIR, NDIR², NSTATV, …): every entry past that count is a guard slot. A count past the
-/// array's end (a test's deliberately bad size) leaves that array without guard slots.
-pub(crate) type Outputs<'a, const K: usize> = [(&'a mut [f64], usize); K];
-
-/// Fills every guard slot of `outputs` with [`GUARD`].
-pub(crate) fn fill_guards<const K: usize>(outputs: Outputs<'_, K>) {
-    for (array, written) in outputs {
-        if let Some(slots) = array.get_mut(written..) {
-            slots.fill(GUARD);
-        }
-    }
-}
-
-/// True when every guard slot of `outputs` still holds [`GUARD`].
-pub(crate) fn guards_hold<const K: usize>(outputs: Outputs<'_, K>) -> bool {
-    outputs.into_iter().all(|(array, written)| {
-        array
-            .get(written..)
-            .unwrap_or(&[])
-            .iter()
-            .all(|x| *x == GUARD)
-    })
-}
-
-/// A `CHARACTER` argument as the host passes it: `name` blank-padded to `len` bytes (longer
-/// names are kept whole; the hidden length says how much is read).
-pub(crate) fn blank_padded(name: &str, len: usize) -> Vec<u8> {
-    let mut bytes = name.as_bytes().to_vec();
-    bytes.resize(len.max(bytes.len()), b' ');
-    bytes
-}
+use crate::{Outputs, blank_padded, fill_guards, guards_hold, state_with_guards};
 
 /// All FRIC arguments of one contact point. Arrays are sized for NFDIR ≤ 3 plus guard slots, so
 /// even a bad `nfdir` stays inside them; `statev` and `props` are sized by their vectors.
@@ -200,12 +159,12 @@ impl FricCall {
         ]
     }
 
-    /// Fills every output entry past what the call may write with [`GUARD`].
+    /// Fills every output entry past what the call may write with [`GUARD`](crate::GUARD).
     pub fn set_guards(&mut self) {
         fill_guards(self.outputs());
     }
 
-    /// True when every guard slot still holds [`GUARD`].
+    /// True when every guard slot still holds [`GUARD`](crate::GUARD).
     #[must_use]
     pub fn guards_intact(&self) -> bool {
         // On a copy: `outputs` lends the arrays mutably (one list serves both).
@@ -285,80 +244,9 @@ impl FricCall {
         }
     }
 
-    /// The calling thread's last error message (empty when none).
+    /// The calling thread's last error message (empty when none): [`crate::last_error`].
     #[must_use]
     pub fn last_error() -> String {
-        crate::report::with_last_error(|e| e.to_string_lossy().into_owned())
-    }
-}
-
-/// All GAPCON arguments of one point, passed to `gapcon_` as a Fortran host does.
-#[derive(Clone, Debug)]
-pub struct GapconCall {
-    /// `AK(5)`; `AK(2..5)` hold [`GUARD`] to prove they are not written.
-    pub ak: [f64; 5],
-    /// `D(2)`: clearance, contact pressure.
-    pub d: [f64; 2],
-    /// `TEMP(2)`: surface temperatures θ_A, θ_B.
-    pub temp: [f64; 2],
-    /// `CINAME` (blank-padded to `name_len` at the call).
-    pub ciname: String,
-    /// Hidden length of `CINAME`.
-    pub name_len: usize,
-    /// `NOEL`.
-    pub noel: i32,
-    /// `NODE`.
-    pub node: i32,
-}
-
-impl GapconCall {
-    /// A point of interaction `name` at clearance `d`, pressure `p`, temperatures θ_A, θ_B.
-    #[must_use]
-    pub fn new(name: &str, d: f64, p: f64, theta_a: f64, theta_b: f64) -> Self {
-        GapconCall {
-            ak: [GUARD; 5],
-            d: [d, p],
-            temp: [theta_a, theta_b],
-            ciname: name.into(),
-            name_len: 80,
-            noel: 1,
-            node: 1,
-        }
-    }
-
-    /// Calls `gapcon_` (the variant this crate was built with) and returns `AK(1)`.
-    pub fn call(&mut self) -> f64 {
-        let len = self.name_len;
-        let name = blank_padded(&self.ciname, len);
-        let blank = [b' '; 80];
-        let zeros = [0.0f64; 4];
-        let (one, zero) = (1i32, 0i32);
-        // SAFETY: every pointer refers to a field of `self` or a local that outlives the call,
-        // sized as GAPCON's contract requires.
-        unsafe {
-            super::gapcon::gapcon_(
-                self.ak.as_mut_ptr(),
-                self.d.as_ptr(),
-                zeros.as_ptr(),
-                self.temp.as_ptr(),
-                zeros.as_ptr(),
-                zeros.as_ptr(),
-                name.as_ptr().cast::<c_char>(),
-                blank.as_ptr().cast::<c_char>(),
-                blank.as_ptr().cast::<c_char>(),
-                zeros.as_ptr(),
-                &self.noel,
-                &self.node,
-                &zero,
-                &one,
-                &one,
-                #[cfg(feature = "calculix")]
-                &1.0,
-                len,
-                80,
-                80,
-            );
-        }
-        self.ak[0]
+        crate::last_error()
     }
 }

@@ -4,8 +4,9 @@
 
 use std::ffi::c_char;
 
-use super::host::{Outputs, blank_padded, fill_guards, guards_hold, state_with_guards};
-use super::uinter_;
+use interfacial::abi::uinter_;
+
+use crate::{Outputs, blank_padded, fill_guards, guards_hold, state_with_guards};
 
 /// All UINTER arguments of one interface point. Arrays are sized for NDIR ≤ 3 plus guard slots.
 #[derive(Clone, Debug)]
@@ -126,12 +127,12 @@ impl UinterCall {
         self.ddfddr[i + 2 * j]
     }
 
-    /// Fills every output entry past what the call may write with [`GUARD`](super::host::GUARD).
+    /// Fills every output entry past what the call may write with [`GUARD`](crate::GUARD).
     pub fn set_guards(&mut self) {
         fill_guards(self.outputs());
     }
 
-    /// True when every guard slot still holds [`GUARD`](super::host::GUARD).
+    /// True when every guard slot still holds [`GUARD`](crate::GUARD).
     #[must_use]
     pub fn guards_intact(&self) -> bool {
         // On a copy: `outputs` lends the arrays mutably (one list serves both).
