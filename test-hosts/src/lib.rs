@@ -217,12 +217,12 @@ impl FricCall {
         ]
     }
 
-    /// Fills every output entry past what the call may write with [`GUARD`](crate::GUARD).
+    /// Fills every output entry past what the call may write with [`GUARD`].
     pub fn set_guards(&mut self) {
         fill_guards(self.outputs());
     }
 
-    /// True when every guard slot still holds [`GUARD`](crate::GUARD).
+    /// True when every guard slot still holds [`GUARD`].
     #[must_use]
     pub fn guards_intact(&self) -> bool {
         // On a copy: `outputs` lends the arrays mutably (one list serves both).
@@ -517,12 +517,12 @@ impl UinterCall {
         self.ddfddr[i + 2 * j]
     }
 
-    /// Fills every output entry past what the call may write with [`GUARD`](crate::GUARD).
+    /// Fills every output entry past what the call may write with [`GUARD`].
     pub fn set_guards(&mut self) {
         fill_guards(self.outputs());
     }
 
-    /// True when every guard slot still holds [`GUARD`](crate::GUARD).
+    /// True when every guard slot still holds [`GUARD`].
     #[must_use]
     pub fn guards_intact(&self) -> bool {
         // On a copy: `outputs` lends the arrays mutably (one list serves both).
