@@ -295,6 +295,8 @@ pub fn friction_law_with_table(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::abi::IflFricInput;
+    use crate::abi::test_point::{UNWRITTEN, fric_point, fric_point_input};
     use crate::laws::coulomb::{CriticalSlip, StickMode};
     use proptest::prelude::*;
 
@@ -344,8 +346,8 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig { cases: 500, failure_persistence: None, ..ProptestConfig::default() })]
-        /// `fric_`'s fast path for the decay law's lean layout against the careful path on the
-        /// very same arguments (LM = 0 both times; the switch, not an argument, sends the
+        /// `fric_`'s fast path for the decay law's lean layout (through `ifl_fric_point`, which
+        /// is `fric_` itself) against the careful path on the very same arguments (LM = 0 both times; the switch, not an argument, sends the
         /// second call to the careful path): every output bit for bit, `PNEWDT` left alone, the
         /// guards past NFDIR and NSTATV intact; NFDIR 1 and 2, stick and slip, with and without
         /// τ_max, frozen μ, p dependence and θ̄ dependence (`TEMP` read only then).
@@ -380,23 +382,23 @@ mod tests {
             }
             props[19] = if frozen { 1.0 } else { 0.0 };
             prop_assert!(fast_decay_lean(&props).is_some());
-            let mut fast = crate::abi::host::FricCall::new(nfdir, &props);
-            fast.press = press;
-            fast.dpress = dpress;
-            fast.dtime = dtime;
-            fast.temp = temp;
-            fast.dgam[..2].copy_from_slice(&dgam);
-            fast.tau[..2].copy_from_slice(&tau);
-            fast.statev[0] = slip;
-            fast.statev[1] = rate;
-            fast.set_guards();
-            let mut careful = fast.clone();
-            fast.call();
-            {
+            // Two copies of the same STATEV, four unwritten slots past NSTATV = 3 in each.
+            let mut fast_statev = [slip, rate, 0.0, UNWRITTEN, UNWRITTEN, UNWRITTEN, UNWRITTEN];
+            let mut careful_statev = fast_statev;
+            let mut input = fric_point_input(nfdir, &props, &mut fast_statev, 3);
+            input.press = press;
+            input.dpress = dpress;
+            input.dtime = dtime;
+            input.temp = temp;
+            input.dgam = dgam;
+            input.tau = tau;
+            let (_, fast) = fric_point(&input);
+            let (_, careful) = {
                 let _careful = CarefulPath::on();
-                careful.call();
-            }
-            prop_assert_eq!(fast.pnewdt, 1e36, "{}", crate::abi::host::FricCall::last_error());
+                fric_point(&IflFricInput { statev: careful_statev.as_mut_ptr(), ..input })
+            };
+            let message = crate::report::with_last_error(|e| e.to_string_lossy().into_owned());
+            prop_assert_eq!(fast.pnewdt, 1e36, "{}", message);
             prop_assert_eq!(careful.pnewdt, 1e36);
             prop_assert_eq!(fast.lm, careful.lm);
             prop_assert_eq!(fast.tau.map(f64::to_bits), careful.tau.map(f64::to_bits));
@@ -408,9 +410,18 @@ mod tests {
                 (careful.sed.to_bits(), careful.sfd.to_bits())
             );
             prop_assert_eq!(fast.ddtddt.map(f64::to_bits), careful.ddtddt.map(f64::to_bits));
-            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-            prop_assert_eq!(bits(&fast.statev), bits(&careful.statev));
-            prop_assert!(fast.guards_intact() && careful.guards_intact());
+            prop_assert_eq!(fast_statev.map(f64::to_bits), careful_statev.map(f64::to_bits));
+            // Nothing past NSTATV or NFDIR is written: the STATEV slots stay unwritten, and
+            // what ifl_fric_point presets past NFDIR (TAU the input's, the rest +0) stays so.
+            prop_assert!(fast_statev[3..].iter().all(|x| *x == UNWRITTEN));
+            let n = nfdir as usize;
+            prop_assert_eq!(&fast.tau[n..], &input.tau[n..]);
+            let past_nfdir = fast.ddtddg[n * n..]
+                .iter()
+                .chain(&fast.ddtddp[n..])
+                .chain(&fast.dslip[n..])
+                .chain(&fast.ddtddt[2 * n..]);
+            prop_assert!(past_nfdir.map(|x| x.to_bits()).all(|b| b == 0));
         }
     }
 

@@ -9,12 +9,11 @@
 
 #![allow(clippy::needless_range_loop)] // index loops mirror the a, b indices of the equations
 
-use interfacial::abi::host::FricCall;
-use interfacial::abi::uinter_host::UinterCall;
 use interfacial::laws::adhesive::{Adhesive, AdhesiveParameters, SlideBranch};
 use interfacial::laws::contact::{Contact, Increment};
 use interfacial::laws::coulomb::{Coulomb, CoulombState};
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
+use interfacial_test_hosts::{FricCall, UinterCall};
 use proptest::prelude::*;
 
 #[path = "common/threads.rs"]

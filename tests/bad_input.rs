@@ -10,12 +10,12 @@ mod refusal;
 use refusal::{assert_fric_refused, assert_mentions};
 use std::ffi::{CString, c_char};
 
-use interfacial::abi::host::{FricCall, GUARD};
 use interfacial::abi::{
-    IflConductance, IflStatus, gapcon_, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
+    IflConductance, IflStatus, ifl_clear_error, ifl_gap_conductance, ifl_last_error,
     ifl_last_error_copy,
 };
 use interfacial::props::CoulombBuilder;
+use interfacial_test_hosts::{FricCall, GUARD, GapconCall};
 
 const MU: f64 = 0.3;
 const GAMMA_CRIT: f64 = 1e-3;
@@ -189,72 +189,18 @@ fn setup() {
     config_file::config_once("badinput", CONFIG);
 }
 
-/// Every argument of `gapcon_` set explicitly, so the unread ones can carry NaN.
-struct Gapcon {
-    ak: [f64; 5],
-    d: [f64; 2],
-    flowm: [f64; 2],
-    temp: [f64; 2],
-    predef: [f64; 2],
-    time: [f64; 2],
-    coords: [f64; 3],
-    name: Vec<u8>,
-}
-
-impl Gapcon {
-    fn new() -> Self {
-        let mut name = b"SI1".to_vec();
-        name.resize(80, b' ');
-        Gapcon {
-            ak: [GUARD; 5],
-            d: [0.0, 50.0],
-            flowm: [0.0; 2],
-            temp: [300.0, 290.0],
-            predef: [0.0; 2],
-            time: [0.0; 2],
-            coords: [0.0; 3],
-            name,
-        }
-    }
-    fn call(&mut self) -> f64 {
-        let blank = [b' '; 80];
-        let (one, zero) = (1i32, 0i32);
-        // SAFETY: every pointer refers to a field of `self` or a local, sized as GAPCON's
-        // contract requires; the hidden lengths are those of the buffers.
-        unsafe {
-            gapcon_(
-                self.ak.as_mut_ptr(),
-                self.d.as_ptr(),
-                self.flowm.as_ptr(),
-                self.temp.as_ptr(),
-                self.predef.as_ptr(),
-                self.time.as_ptr(),
-                self.name.as_ptr().cast::<c_char>(),
-                blank.as_ptr().cast::<c_char>(),
-                blank.as_ptr().cast::<c_char>(),
-                self.coords.as_ptr(),
-                &one,
-                &one,
-                &zero,
-                &one,
-                &one,
-                #[cfg(feature = "calculix")]
-                &f64::NAN,
-                self.name.len(),
-                80,
-                80,
-            );
-        }
-        self.ak[0]
-    }
+/// A `gapcon_` point of SI1 at p = 50, every argument set explicitly (`GapconCall`), so the
+/// unread ones can carry NaN.
+fn gapcon() -> GapconCall {
+    GapconCall::new("SI1", 0.0, 50.0, 300.0, 290.0)
 }
 
 #[test]
 fn gapcon_unread_real_arguments_have_no_effect() {
     setup();
     // p = 50 is halfway along the table: k = 2.
-    assert_eq!(Gapcon::new().call(), 2.0);
-    type GSpoil = fn(&mut Gapcon, f64);
+    assert_eq!(gapcon().call(), 2.0);
+    type GSpoil = fn(&mut GapconCall, f64);
     let unread: [(&str, GSpoil); 4] = [
         ("FLOWM", |g, x| g.flowm = [x; 2]),
         ("PREDEF", |g, x| g.predef = [x; 2]),
@@ -263,7 +209,7 @@ fn gapcon_unread_real_arguments_have_no_effect() {
     ];
     for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
         for (what, spoil) in unread {
-            let mut g = Gapcon::new();
+            let mut g = gapcon();
             spoil(&mut g, bad);
             assert_eq!(g.call(), 2.0, "{what} = {bad}");
             assert_eq!(&g.ak[1..], &[GUARD; 4], "{what} = {bad}");
@@ -274,21 +220,22 @@ fn gapcon_unread_real_arguments_have_no_effect() {
 #[test]
 fn gapcon_names_of_every_shape() {
     setup();
-    let k = |name: &[u8]| {
-        let mut g = Gapcon::new();
-        g.name = name.to_vec();
+    let k = |name: &str| {
+        let mut g = gapcon();
+        g.ciname = name.into();
+        g.name_len = name.len();
         let k = g.call();
         assert_eq!(&g.ak[1..], &[GUARD; 4]);
         k
     };
     // CHARACTER*8, CHARACTER*3 (not padded), NUL-padded, lower case: all SI1.
-    assert_eq!(k(b"SI1     "), 2.0);
-    assert_eq!(k(b"SI1"), 2.0);
-    assert_eq!(k(b"SI1\0\0\0\0\0"), 2.0);
-    assert_eq!(k(b"si1"), 2.0);
+    assert_eq!(k("SI1     "), 2.0);
+    assert_eq!(k("SI1"), 2.0);
+    assert_eq!(k("SI1\0\0\0\0\0"), 2.0);
+    assert_eq!(k("si1"), 2.0);
     // All blanks, empty, or another name: not configured (no "*" entry here), AK(1) = 0 and a
     // message that says how to fix it.
-    for name in [&b"        "[..], b"", b"SI1X", b" SI1"] {
+    for name in ["        ", "", "SI1X", " SI1"] {
         ifl_clear_error();
         assert_eq!(k(name), 0.0, "{name:?}");
         assert_mentions(
@@ -340,7 +287,7 @@ fn native_api_null_pointers() {
 #[test]
 fn gapcon_overflow_is_a_failure_not_an_infinite_flux() {
     setup();
-    let mut g = Gapcon::new();
+    let mut g = gapcon();
     g.temp = [1.7e308, -1.7e308];
     assert_eq!(g.call(), 0.0);
     assert_eq!(&g.ak[1..], &[GUARD; 4]);

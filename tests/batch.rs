@@ -7,9 +7,9 @@ mod common;
 
 use common::{Points, Rng, UNSET, first_difference, per_point, via_c};
 use interfacial::abi::batch::BatchError;
-use interfacial::abi::host::FricCall;
 use interfacial::abi::{FricBatch, IflStatus, fric_batch, ifl_fric_batch};
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
+use interfacial_test_hosts::FricCall;
 
 fn random_points(rng: &mut Rng, n: usize, ld: usize, nfdir: usize, gamma_crit: f64) -> Points {
     // Inputs of the padding (between n and ld) stay UNSET: the batch must not read them.

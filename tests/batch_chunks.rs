@@ -13,11 +13,11 @@ mod common;
 
 use common::{Points, Rng, UNSET, first_difference, per_point, via_c};
 use interfacial::abi::IflStatus;
-use interfacial::abi::host::FricCall;
 use interfacial::laws::contact::{Contact, Increment};
 use interfacial::laws::coulomb::{Coulomb, CoulombState, FrictionStatus};
 use interfacial::laws::coulomb_batch::{ChunkInput, ElasticStickKernel};
 use interfacial::props::CoulombBuilder;
+use interfacial_test_hosts::FricCall;
 use proptest::prelude::*;
 
 /// Law-1 PROPS with elastic stick: μ = 0.3; γ_crit absolute (10⁻³) or 1 % of CHRLNGTH; with or

@@ -23,8 +23,6 @@ mod fric_coef_common;
 #[path = "common/vfric.rs"]
 mod vfric_common;
 
-use interfacial::abi::host::FricCall;
-use interfacial::abi::uinter_host::UinterCall;
 use interfacial::abi::{IflStatus, ifl_clear_error, ifl_props_check};
 use interfacial::config::Config;
 use interfacial::props::schema::Layout;
@@ -32,6 +30,7 @@ use interfacial::props::{
     ADHESIVE, AdhesiveBuilder, COULOMB, CoulombBuilder, FrictionLaw, RATE_STATE, RateStateBuilder,
     friction_law_checked,
 };
+use interfacial_test_hosts::{FricCall, UinterCall};
 
 /// The folder of the fragments.
 const DECKS: &str = "examples/decks";

@@ -2,8 +2,8 @@
 //! input (contract.md, "Errors and bad input").
 
 use interfacial::CUTBACK_RATIO;
-use interfacial::abi::host::{FricCall, GUARD};
 use interfacial::props::CoulombBuilder;
+use interfacial_test_hosts::{FricCall, GUARD};
 
 #[path = "common/laws.rs"]
 mod laws;

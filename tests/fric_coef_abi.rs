@@ -5,8 +5,8 @@
 #[path = "common/fric_coef.rs"]
 mod fric_coef_common;
 use fric_coef_common::fric_coef_call;
-use interfacial::abi::host::FricCall;
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
+use interfacial_test_hosts::FricCall;
 use proptest::prelude::*;
 
 const GUARD: f64 = -7.77e77;

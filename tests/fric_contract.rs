@@ -3,8 +3,8 @@
 //! `include/interfacial.h`, and `docs/fric.md`) and then checks the behaviour it describes, so
 //! the test fails when either side changes without the other.
 
-use interfacial::abi::host::FricCall;
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
+use interfacial_test_hosts::FricCall;
 
 /// The text with comment markers removed and whitespace collapsed, so sentences that wrap
 /// across lines compare as one.

@@ -4,8 +4,8 @@
 
 use std::ffi::CString;
 
-use interfacial::abi::host::FricCall;
 use interfacial::abi::{IflFricInput, IflFricOutput, IflStatus, ifl_clear_error, ifl_fric_point};
+use interfacial_test_hosts::FricCall;
 use proptest::prelude::*;
 
 #[path = "common/drawn_props.rs"]

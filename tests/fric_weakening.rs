@@ -11,14 +11,13 @@
 mod central;
 
 use central::{move_press, sides, slope};
-use interfacial::abi::host::FricCall;
-use interfacial::abi::uinter_host::UinterCall;
 use interfacial::laws::contact::Conditions;
 use interfacial::laws::contact::Increment;
 use interfacial::laws::coulomb::Coulomb;
 use interfacial::laws::coulomb_extended::{ExtendedCoulomb, ExtendedState};
 use interfacial::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
+use interfacial_test_hosts::{FricCall, UinterCall};
 
 const GAMMA_CRIT: f64 = 1e-3;
 const P: f64 = 100.0;

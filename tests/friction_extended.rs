@@ -15,7 +15,6 @@ use central::{Shift, along_dgam, along_press, along_temp, central_tau, slide_ste
 use laws::{every_mu_law, set_entry};
 use loading::Loading;
 
-use interfacial::abi::host::FricCall;
 use interfacial::laws::contact::Conditions;
 use interfacial::laws::contact::{Contact, EntryFlag, Increment};
 use interfacial::laws::coulomb::Coulomb;
@@ -24,6 +23,7 @@ use interfacial::laws::coulomb_extended::{
 };
 use interfacial::laws::friction_coefficient::CoefficientLaw;
 use interfacial::props::CoulombBuilder;
+use interfacial_test_hosts::FricCall;
 use proptest::prelude::*;
 use std::cell::Cell;
 

@@ -21,8 +21,8 @@ use loading::Loading;
 
 use std::process::Command;
 
-use interfacial::abi::host::FricCall;
 use interfacial::props::CoulombBuilder;
+use interfacial_test_hosts::FricCall;
 use proptest::prelude::*;
 
 /// "RATE": μ(γ̇) falling from 0.6 to 0.3 over two segments (and a conductance, to show both

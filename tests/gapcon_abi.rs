@@ -11,8 +11,8 @@ use std::ffi::CString;
 use std::process::Command;
 use threads::map_on_threads;
 
-use interfacial::abi::host::{FricCall, GUARD, GapconCall};
 use interfacial::abi::{IflConductance, IflStatus, ifl_gap_conductance};
+use interfacial_test_hosts::{FricCall, GUARD, GapconCall};
 
 const CONFIG: &str = r#"
 [interactions.SI1.conductance]

@@ -11,11 +11,11 @@
 //!
 //! The inputs come from a fixed-seed generator, so a failure names a reproducible path.
 
-use interfacial::abi::host::FricCall;
 use interfacial::laws::gap_conductance::{ConductanceResponse, Conduction, GapLaw};
 use interfacial::laws::gap_radiation::Radiation;
 use interfacial::laws::table::TemperatureTable;
 use interfacial::props::CoulombBuilder;
+use interfacial_test_hosts::FricCall;
 
 /// SplitMix64: small, fast and good enough to spread test inputs.
 struct Rng(u64);

@@ -16,13 +16,12 @@ mod vfric_common;
 use std::ffi::{CStr, c_char, c_int};
 use vfric_common::{Block as VfricBlock, call as vfric_call};
 
-use interfacial::abi::host::{FricCall, GapconCall};
-use interfacial::abi::uinter_host::UinterCall;
 use interfacial::abi::{
     IflConductance, IflStatus, ifl_clear_error, ifl_forced_sliding, ifl_fric_batch,
     ifl_gap_conductance, ifl_gap_conductance_n, ifl_last_error, ifl_last_error_copy,
 };
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
+use interfacial_test_hosts::{FricCall, GapconCall, UinterCall};
 
 /// Law 1, μ = 0.3, γ_crit = 10⁻³, `PROPS(1..5)`: the good call of every law-1 entry point.
 fn coulomb() -> Vec<f64> {

@@ -11,13 +11,12 @@
 //!   takes that law (`fric_` for laws 1, 2 and 3, `fric_coef_` for law 1, `uinter_` for law 2,
 //!   `ifl_fric_batch` for the plain Coulomb law it serves).
 
-use interfacial::abi::host::FricCall;
-use interfacial::abi::uinter_host::UinterCall;
 use interfacial::abi::vfric::IflReal;
 use interfacial::abi::{IflStatus, ifl_clear_error};
 use interfacial::props::{
     AdhesiveBuilder, CoulombBuilder, FrictionLaw, RateStateBuilder, friction_law_checked,
 };
+use interfacial_test_hosts::{FricCall, UinterCall};
 use proptest::prelude::*;
 
 mod common;

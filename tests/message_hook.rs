@@ -12,8 +12,8 @@ use child::run_child_with_log;
 use std::ffi::{CStr, c_char, c_void};
 use std::sync::Mutex;
 
-use interfacial::abi::host::FricCall;
 use interfacial::abi::{IflPropsEntry, ifl_props_entry, ifl_set_message_handler};
+use interfacial_test_hosts::FricCall;
 
 const THREADS: usize = 8;
 const PER_THREAD: usize = 400;

@@ -6,12 +6,12 @@
 use std::ffi::{CStr, c_char};
 use std::path::Path;
 
-use interfacial::abi::host::FricCall;
 use interfacial::abi::{
     IflPropsEntry, IflStatus, ifl_clear_error, ifl_props_check, ifl_props_entry,
     ifl_props_entry_count, ifl_props_law_code, ifl_props_law_count,
 };
 use interfacial::props::AdhesiveBuilder;
+use interfacial_test_hosts::FricCall;
 use proptest::prelude::*;
 
 #[path = "common/drawn_props.rs"]

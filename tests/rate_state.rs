@@ -16,8 +16,8 @@
 mod central;
 
 use central::{move_press, sides, slope};
-use interfacial::abi::host::FricCall;
 use interfacial::props::RateStateBuilder;
+use interfacial_test_hosts::FricCall;
 
 const MU0: f64 = 0.6;
 const A: f64 = 0.01;

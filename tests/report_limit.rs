@@ -8,8 +8,8 @@ mod child;
 use child::run_child_with_log;
 use std::ffi::CStr;
 
-use interfacial::abi::host::FricCall;
 use interfacial::abi::ifl_last_error;
+use interfacial_test_hosts::FricCall;
 
 const LIMIT: usize = 10_000;
 

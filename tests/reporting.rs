@@ -7,7 +7,7 @@
 mod child;
 use child::{run_child, run_child_with_log};
 
-use interfacial::abi::host::FricCall;
+use interfacial_test_hosts::FricCall;
 
 /// The child test, and the variable that makes it do its work.
 const CHILD: &str = "child_many_bad_calls";

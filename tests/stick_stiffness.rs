@@ -9,8 +9,8 @@ mod central;
 mod refusal;
 
 use central::{along_dgam, along_press, central_tau};
-use interfacial::abi::host::FricCall;
 use interfacial::props::CoulombBuilder;
+use interfacial_test_hosts::FricCall;
 
 const MU: f64 = 0.3;
 const K: f64 = 5.0e3;

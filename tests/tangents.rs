@@ -7,8 +7,8 @@
 mod loading;
 use loading::Loading;
 
-use interfacial::abi::host::FricCall;
 use interfacial::props::CoulombBuilder;
+use interfacial_test_hosts::FricCall;
 use proptest::prelude::*;
 
 /// Which branch a sample is meant to exercise; samples too close to a kink are discarded.

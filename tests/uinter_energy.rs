@@ -12,8 +12,8 @@
 //!   penalty energy it contained;
 //! - a refused call zeroes SPD; inputs near the f64 range saturate SPD at f64::MAX.
 
-use interfacial::abi::uinter_host::UinterCall;
 use interfacial::props::AdhesiveBuilder;
+use interfacial_test_hosts::UinterCall;
 
 const K_N: f64 = 1e5;
 const GAMMA_CRIT: f64 = 1e-3;

@@ -5,9 +5,8 @@
 
 #[path = "common/config_file.rs"]
 mod config_file;
-use interfacial::abi::host::FricCall;
-use interfacial::abi::uinter_host::UinterCall;
 use interfacial::props::AdhesiveBuilder;
+use interfacial_test_hosts::{FricCall, UinterCall};
 
 const K_N: f64 = 1e4;
 

@@ -101,7 +101,7 @@ fn a_bad_point_gets_no_force_and_the_others_their_closed_form() {
         };
         assert_eq!(ftan[2 * k], want, "point {}", k + 1);
     }
-    assert!(interfacial::abi::host::FricCall::last_error().contains("contact point 5"));
+    assert!(interfacial_test_hosts::FricCall::last_error().contains("contact point 5"));
 }
 
 #[test]

@@ -2,10 +2,9 @@
 //! driven increment by increment through `fric_`, `gapcon_` and `uinter_` (the entry points a
 //! Fortran host calls), one row per checked quantity, each compared with its closed-form answer.
 
-use interfacial::abi::host::{FricCall, GapconCall};
-use interfacial::abi::uinter_host::UinterCall;
 use interfacial::abi::{IflConductance, IflStatus, ifl_gap_conductance};
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
+use interfacial_test_hosts::{FricCall, GapconCall, UinterCall};
 
 const MU: f64 = 0.3;
 const P: f64 = 100.0;

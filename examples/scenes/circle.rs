@@ -3,8 +3,8 @@
 //! lags behind the slip direction by φ, sin φ = γ_crit/R; the backward-Euler return map reaches
 //! it at first order in the step Δθ = 2π/N.
 
-use interfacial::abi::host::FricCall;
 use interfacial::props::CoulombBuilder;
+use interfacial_test_hosts::FricCall;
 use serde::Deserialize;
 
 use crate::scene::Bound::Positive;

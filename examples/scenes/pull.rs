@@ -10,8 +10,8 @@
 
 use std::time::Instant;
 
-use interfacial::abi::host::FricCall;
 use interfacial::props::CoulombBuilder;
+use interfacial_test_hosts::FricCall;
 use serde::Deserialize;
 
 use crate::oscillator::Stick;

@@ -18,8 +18,8 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use interfacial::abi::host::FricCall;
 use interfacial::props::RateStateBuilder;
+use interfacial_test_hosts::FricCall;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 

@@ -11,8 +11,8 @@
 //! to the elastic slip γ_crit takes up; μ frozen at the start-of-increment rate (`PROPS(20) = 1`)
 //! lags one increment behind every step, a first-order error in Δt/hold.
 
-use interfacial::abi::host::FricCall;
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
+use interfacial_test_hosts::FricCall;
 use serde::Deserialize;
 
 use crate::scene::Bound::{NonNegative, Positive};

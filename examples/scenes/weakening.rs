@@ -22,13 +22,13 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use interfacial::abi::host::FricCall;
 use interfacial::laws::contact::Conditions;
 use interfacial::laws::contact::{Contact, Increment};
 use interfacial::laws::coulomb::Coulomb;
 use interfacial::laws::coulomb_extended::{ExtendedCoulomb, ExtendedState};
 use interfacial::laws::friction_coefficient::{CoefficientLaw, RateFormulation};
 use interfacial::props::{AdhesiveBuilder, CoulombBuilder};
+use interfacial_test_hosts::FricCall;
 use plotters::prelude::*;
 
 use crate::charts::{

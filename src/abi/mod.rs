@@ -38,15 +38,11 @@ pub mod fric_point;
 #[cfg(feature = "calculix")]
 pub mod fricheat;
 pub mod gapcon;
-#[cfg(any(test, feature = "test-hosts"))]
-pub mod host;
 pub mod message_hook;
 pub mod native;
 pub mod pore_pressure;
 pub mod props_query;
 pub mod uinter;
-#[cfg(any(test, feature = "test-hosts"))]
-pub mod uinter_host;
 pub mod vfric;
 
 pub use batch::{FricBatch, fric_batch, ifl_fric_batch};
@@ -386,10 +382,68 @@ pub(crate) fn shown_name(bytes: &[u8]) -> String {
     String::from_utf8_lossy(&bytes[..end]).into_owned()
 }
 
+/// Unit tests only: one `ifl_fric_point` call (`fric_` itself) for the unit tests outside this
+/// layer that must call an entry point with a switch of this build on (a forced panic, the
+/// careful `PROPS` path), which the test hosts (test-hosts/, a crate that links its own copy of
+/// the library) cannot do.
+#[cfg(test)]
+pub(crate) mod test_point {
+    /// What a unit test writes past the end of an array it passes, to prove nothing is written
+    /// there.
+    pub(crate) const UNWRITTEN: f64 = -7.77e77;
+
+    /// One closed `fric_` point for `ifl_fric_point` (which is `fric_` itself): `nfdir`
+    /// directions, `props`, the first `nstatv` entries of `statev` (read and written), pressure
+    /// 0, Δt = 1, identity `DROT`, θ = 20 on both sides, interaction `"SI1"`.
+    pub(crate) fn fric_point_input(
+        nfdir: i32,
+        props: &[f64],
+        statev: &mut [f64],
+        nstatv: i32,
+    ) -> super::IflFricInput {
+        assert!(statev.len() >= nstatv.max(0) as usize);
+        super::IflFricInput {
+            lm: 0,
+            nfdir,
+            tau: [0.0; 2],
+            dgam: [0.0; 2],
+            taulm: [0.0; 2],
+            press: 0.0,
+            dpress: 0.0,
+            dtime: 1.0,
+            chrlngth: 1.0,
+            temp: [20.0; 2],
+            drot: [1.0, 0.0, 0.0, 1.0],
+            coords: [0.0; 3],
+            mcrd: 3,
+            noel: 0,
+            npt: 1,
+            node: 1,
+            interaction: c"SI1".as_ptr(),
+            props: props.as_ptr(),
+            nprops: i32::try_from(props.len()).unwrap_or(i32::MAX),
+            statev: statev.as_mut_ptr(),
+            nstatv,
+            pnewdt: 1e36,
+        }
+    }
+
+    /// `ifl_fric_point` on `input`: its status and outputs.
+    pub(crate) fn fric_point(
+        input: &super::IflFricInput,
+    ) -> (super::IflStatus, super::IflFricOutput) {
+        let mut output = super::IflFricOutput::default();
+        // SAFETY: `input` comes from `fric_point_input`, whose arrays the caller keeps alive.
+        let status = unsafe { super::ifl_fric_point(input, &mut output) };
+        (status, output)
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::host::FricCall;
-    use super::{count, host_number, host_site, shown_name};
+    use super::test_point::{UNWRITTEN, fric_point, fric_point_input};
+    use super::{IflFricOutput, IflStatus, count, host_number, host_site, shown_name};
+    use crate::report::with_last_error;
     use crate::testing::{force_panic, forced_panics};
     use crate::{CUTBACK_RATIO, LawError};
 
@@ -434,28 +488,38 @@ mod tests {
 
     #[test]
     fn a_panic_in_the_core_becomes_a_cut_back() {
-        let mut c = FricCall::new(2, &[1.0, 0.3, 0.0, 0.0, 1e-3]);
-        c.press = 100.0;
-        c.tau = [1.0, 2.0, c.tau[2], c.tau[3]];
-        c.dgam[0] = 1e-4;
-        c.statev[..3].copy_from_slice(&[0.5, 0.0, 1.0]);
+        let props = [1.0, 0.3, 0.0, 0.0, 1e-3];
+        let mut statev = [0.5, 0.0, 1.0, UNWRITTEN, UNWRITTEN, UNWRITTEN, UNWRITTEN];
+        let mut input = fric_point_input(2, &props, &mut statev, 3);
+        input.press = 100.0;
+        input.tau = [1.0, 2.0];
+        input.dgam[0] = 1e-4;
         let before = forced_panics();
         force_panic(true);
-        c.call();
+        let (status, out) = fric_point(&input);
         force_panic(false);
         // The plain path's panic is reported by the export's one boundary, not swallowed and
         // the call run again on the checked path (which would panic a second time).
         assert_eq!(forced_panics() - before, 1);
-        assert_eq!(c.pnewdt, CUTBACK_RATIO);
-        assert_eq!(&c.tau[..2], &[1.0, 2.0]);
-        assert_eq!(&c.statev[..3], &[0.5, 0.0, 1.0]);
-        assert!(c.guards_intact());
-        let msg = FricCall::last_error();
+        assert_eq!(status, IflStatus::InternalError);
+        // Only PNEWDT is written: TAU keeps the start stress, every other output stays unset.
+        let cut_back = IflFricOutput {
+            lm: 0,
+            tau: [1.0, 2.0],
+            pnewdt: CUTBACK_RATIO,
+            ..IflFricOutput::default()
+        };
+        assert_eq!(out, cut_back);
+        assert_eq!(
+            statev,
+            [0.5, 0.0, 1.0, UNWRITTEN, UNWRITTEN, UNWRITTEN, UNWRITTEN]
+        );
+        let msg = with_last_error(|e| e.to_string_lossy().into_owned());
         assert!(msg.contains("FRIC") && msg.contains("panic"), "{msg}");
         // The library keeps working on this thread afterwards.
-        c.pnewdt = 1e36;
-        c.call();
-        assert_eq!(c.pnewdt, 1e36);
-        assert_eq!(c.lm, 0);
+        let (status, out) = fric_point(&input);
+        assert_eq!(status, IflStatus::Ok);
+        assert_eq!(out.pnewdt, 1e36);
+        assert_eq!(out.lm, 0);
     }
 }

@@ -6,7 +6,7 @@
 #![allow(dead_code)]
 #![allow(clippy::needless_range_loop)] // index loops mirror the a, b indices of the equations
 
-use interfacial::abi::host::FricCall;
+use interfacial_test_hosts::FricCall;
 
 /// A move of the increment's inputs: (ΔDGAM(1..2), ΔPRESS, ΔTEMP(1..2)).
 pub type Shift = ([f64; 2], f64, [f64; 2]);

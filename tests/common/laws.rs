@@ -3,8 +3,8 @@
 // Each test uses its own subset.
 #![allow(dead_code)]
 
-use interfacial::abi::host::FricCall;
 use interfacial::props::CoulombBuilder;
+use interfacial_test_hosts::FricCall;
 
 /// Law 1 with every μ law of `fric_coef_` on: μ₁ = `mu`, μ₂ = `mu2`, the exponential decay to
 /// μ_k = 0.2 at d_c = 2, p_ref = 100, b_θ = 0.01 about θ_ref = 20 (docs/props.md).

@@ -2,7 +2,7 @@
 //! tests/tangents.rs, tests/friction_extended.rs and tests/friction_table.rs (included there by
 //! path): each adds its own law and state, and scales the fractions by its own strength and γ_crit.
 
-use interfacial::abi::host::FricCall;
+use interfacial_test_hosts::FricCall;
 
 /// One increment's loading: the pressure p₀ at the start and its change Δp (the end is
 /// p₀ + Δp), the start stress per direction as a fraction of a strength the test picks, and

@@ -4,8 +4,8 @@
 // Each test file uses its own subset.
 #![allow(dead_code)]
 
-use interfacial::abi::host::FricCall;
 use interfacial::abi::{IflStatus, ifl_fric_batch};
+use interfacial_test_hosts::FricCall;
 
 /// A small deterministic generator (xorshift64*), so failures reproduce.
 pub struct Rng(pub u64);

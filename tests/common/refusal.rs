@@ -5,7 +5,7 @@
 #![allow(dead_code)]
 
 use interfacial::CUTBACK_RATIO;
-use interfacial::abi::host::FricCall;
+use interfacial_test_hosts::FricCall;
 
 /// Asserts that `msg` contains every one of `words`; `context` says which case it was.
 #[track_caller]
