@@ -754,26 +754,15 @@ unsafe fn c_slice_mut<'a, T>(p: *mut T, len: usize, name: &str) -> Result<&'a mu
 /// `nprops`; `pnewdt` is NULL or writable; output arrays do not overlap each other or the inputs.
 #[allow(clippy::too_many_arguments)]
 #[unsafe(no_mangle)]
+// Parameters a line per role (sizes; shared by all points; per point, written or updated; per
+// point, read; the step ratio), written out for cbindgen; `fric_` has FRIC's own list.
+#[rustfmt::skip]
 pub unsafe extern "C" fn ifl_fric_batch(
-    npoints: usize,
-    ld: usize,
-    nfdir: c_int,
-    props: *const f64,
-    nprops: c_int,
-    nstatv: c_int,
-    dtime: f64,
-    lm: *mut c_int,
-    tau: *mut f64,
-    ddtddg: *mut f64,
-    ddtddp: *mut f64,
-    dslip: *mut f64,
-    sed: *mut f64,
-    sfd: *mut f64,
-    statev: *mut f64,
-    dgam: *const f64,
-    taulm: *const f64,
-    press: *const f64,
-    dpress: *const f64,
+    npoints: usize, ld: usize, nfdir: c_int,
+    props: *const f64, nprops: c_int, nstatv: c_int, dtime: f64,
+    lm: *mut c_int, tau: *mut f64, ddtddg: *mut f64, ddtddp: *mut f64, dslip: *mut f64,
+    sed: *mut f64, sfd: *mut f64, statev: *mut f64,
+    dgam: *const f64, taulm: *const f64, press: *const f64, dpress: *const f64,
     chrlngth: *const f64,
     pnewdt: *mut f64,
 ) -> IflStatus {

@@ -34,32 +34,20 @@ pub const GAPCON_SAFE_CONDUCTANCE: f64 = 0.0;
 /// # Safety
 /// Pointers valid for the GAPCON signature: `AK(5)`, `D(2)`, `TEMP(2)`, `CINAME` of the hidden
 /// length `ciname_len`. The unread arguments may be anything.
-#[cfg(not(feature = "calculix"))]
 #[allow(clippy::too_many_arguments)]
 #[unsafe(no_mangle)]
+#[cfg(not(feature = "calculix"))]
+// GAPCON's arguments several to a line in the manual's order, as a FORTRAN 77 listing continues
+// them, then the names' hidden lengths: written out for cbindgen in both variants.
+#[rustfmt::skip]
 pub unsafe extern "C" fn gapcon_(
-    ak: *mut f64,
-    d: *const f64,
-    flowm: *const f64,
-    temp: *const f64,
-    predef: *const f64,
-    time: *const f64,
-    ciname: *const c_char,
-    slname: *const c_char,
-    msname: *const c_char,
-    coords: *const f64,
-    noel: *const c_int,
-    node: *const c_int,
-    npred: *const c_int,
-    kstep: *const c_int,
-    kinc: *const c_int,
-    ciname_len: usize,
-    slname_len: usize,
-    msname_len: usize,
+    ak: *mut f64, d: *const f64, flowm: *const f64, temp: *const f64, predef: *const f64,
+    time: *const f64, ciname: *const c_char, slname: *const c_char, msname: *const c_char,
+    coords: *const f64, noel: *const c_int, node: *const c_int, npred: *const c_int,
+    kstep: *const c_int, kinc: *const c_int,
+    ciname_len: usize, slname_len: usize, msname_len: usize,
 ) {
-    let _ = (
-        flowm, predef, time, slname, msname, coords, npred, kstep, kinc,
-    );
+    let _ = (flowm, predef, time, slname, msname, coords, npred, kstep, kinc);
     let _ = msname_len;
     if ciname_len > super::MAX_NAME_LEN {
         // CalculiX's argument list: AREA's address sits where CINAME's length should be, and
@@ -118,33 +106,19 @@ unsafe fn wrong_variant(
 ///
 /// # Safety
 /// As for the Abaqus variant.
-#[cfg(feature = "calculix")]
 #[allow(clippy::too_many_arguments)]
 #[unsafe(no_mangle)]
+#[cfg(feature = "calculix")]
+// The arguments as in the Abaqus variant, `AREA` after `KINC`.
+#[rustfmt::skip]
 pub unsafe extern "C" fn gapcon_(
-    ak: *mut f64,
-    d: *const f64,
-    flowm: *const f64,
-    temp: *const f64,
-    predef: *const f64,
-    time: *const f64,
-    ciname: *const c_char,
-    slname: *const c_char,
-    msname: *const c_char,
-    coords: *const f64,
-    noel: *const c_int,
-    node: *const c_int,
-    npred: *const c_int,
-    kstep: *const c_int,
-    kinc: *const c_int,
-    area: *const f64,
-    ciname_len: usize,
-    slname_len: usize,
-    msname_len: usize,
+    ak: *mut f64, d: *const f64, flowm: *const f64, temp: *const f64, predef: *const f64,
+    time: *const f64, ciname: *const c_char, slname: *const c_char, msname: *const c_char,
+    coords: *const f64, noel: *const c_int, node: *const c_int, npred: *const c_int,
+    kstep: *const c_int, kinc: *const c_int, area: *const f64,
+    ciname_len: usize, slname_len: usize, msname_len: usize,
 ) {
-    let _ = (
-        flowm, predef, time, slname, msname, coords, npred, kstep, kinc, area,
-    );
+    let _ = (flowm, predef, time, slname, msname, coords, npred, kstep, kinc, area);
     let _ = (slname_len, msname_len);
     // SAFETY: the host's pointers, valid per the contract above.
     unsafe { gap_conductance(ak, d, temp, ciname, ciname_len, noel, node) }

@@ -105,12 +105,11 @@ use crate::laws::gap_conductance::ConductanceResponse;
 /// # Safety
 /// `interaction` is NULL or a NUL-terminated string; `out` is NULL or writable.
 #[unsafe(no_mangle)]
+// Parameters a line per role (name / inputs / output), written out for cbindgen in both exports.
+#[rustfmt::skip]
 pub unsafe extern "C" fn ifl_gap_conductance(
     interaction: *const c_char,
-    d: f64,
-    p: f64,
-    theta_a: f64,
-    theta_b: f64,
+    d: f64, p: f64, theta_a: f64, theta_b: f64,
     out: *mut ConductanceResponse,
 ) -> IflStatus {
     let name: Option<&[u8]> = if interaction.is_null() {
@@ -131,13 +130,11 @@ pub unsafe extern "C" fn ifl_gap_conductance(
 /// `interaction` is NULL or points to `interaction_len` readable bytes (any pointer when
 /// `interaction_len` is 0); `out` is NULL or writable.
 #[unsafe(no_mangle)]
+// Parameters a line per role, as in `ifl_gap_conductance`.
+#[rustfmt::skip]
 pub unsafe extern "C" fn ifl_gap_conductance_n(
-    interaction: *const c_char,
-    interaction_len: usize,
-    d: f64,
-    p: f64,
-    theta_a: f64,
-    theta_b: f64,
+    interaction: *const c_char, interaction_len: usize,
+    d: f64, p: f64, theta_a: f64, theta_b: f64,
     out: *mut ConductanceResponse,
 ) -> IflStatus {
     let name: Option<&[u8]> = if interaction_len == 0 {

@@ -165,19 +165,13 @@ fn interface_point(p1: f64, p2: f64, q_hat: f64, h: f64, dh: f64, dt: f64) -> In
 /// doubles and `tangent` to 16, or are NULL.
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
+// Parameters a line per role (name and variant / inputs / outputs), as the header groups them:
+// the list is written out for cbindgen, in each of the two exports.
+#[rustfmt::skip]
 pub unsafe extern "C" fn ifl_pore_pressure(
-    interaction: *const c_char,
-    variant: IflPorePressureVariant,
-    p1: f64,
-    p2: f64,
-    q_hat: f64,
-    h: f64,
-    dh: f64,
-    dt: f64,
-    residual: *mut f64,
-    tangent: *mut f64,
-    geometric: *mut f64,
-) -> IflStatus {
+    interaction: *const c_char, variant: IflPorePressureVariant,
+    p1: f64, p2: f64, q_hat: f64, h: f64, dh: f64, dt: f64,
+    residual: *mut f64, tangent: *mut f64, geometric: *mut f64) -> IflStatus {
     let point = interface_point(p1, p2, q_hat, h, dh, dt);
     // SAFETY: forwarded from the caller.
     if unsafe { lean(variant, &point, residual, tangent, geometric) } {
@@ -187,18 +181,9 @@ pub unsafe extern "C" fn ifl_pore_pressure(
     // SAFETY: forwarded from the caller.
     unsafe {
         careful_terminated(
-            interaction,
-            lo,
-            hi,
-            p1,
-            p2,
-            q_hat,
-            h,
-            dh,
-            dt,
-            residual,
-            tangent,
-            geometric,
+            interaction, lo, hi,
+            p1, p2, q_hat, h, dh, dt,
+            residual, tangent, geometric,
         )
     }
 }
@@ -215,20 +200,12 @@ pub unsafe extern "C" fn ifl_pore_pressure(
 /// `interaction_len` is 0); the outputs as [`ifl_pore_pressure`].
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
+// Parameters a line per role, as in `ifl_pore_pressure`.
+#[rustfmt::skip]
 pub unsafe extern "C" fn ifl_pore_pressure_n(
-    interaction: *const c_char,
-    interaction_len: usize,
-    variant: IflPorePressureVariant,
-    p1: f64,
-    p2: f64,
-    q_hat: f64,
-    h: f64,
-    dh: f64,
-    dt: f64,
-    residual: *mut f64,
-    tangent: *mut f64,
-    geometric: *mut f64,
-) -> IflStatus {
+    interaction: *const c_char, interaction_len: usize, variant: IflPorePressureVariant,
+    p1: f64, p2: f64, q_hat: f64, h: f64, dh: f64, dt: f64,
+    residual: *mut f64, tangent: *mut f64, geometric: *mut f64) -> IflStatus {
     let point = interface_point(p1, p2, q_hat, h, dh, dt);
     // SAFETY: forwarded from the caller.
     if unsafe { lean(variant, &point, residual, tangent, geometric) } {
@@ -237,12 +214,9 @@ pub unsafe extern "C" fn ifl_pore_pressure_n(
     // SAFETY: forwarded from the caller.
     unsafe {
         careful(
-            Name::Counted(interaction, interaction_len),
-            variant,
+            Name::Counted(interaction, interaction_len), variant,
             &point,
-            residual,
-            tangent,
-            geometric,
+            residual, tangent, geometric,
         )
     }
 }
@@ -357,20 +331,11 @@ unsafe fn lean(
 #[cold]
 #[inline(never)]
 #[allow(clippy::too_many_arguments)]
+#[rustfmt::skip]
 unsafe extern "C" fn careful_terminated(
-    interaction: *const c_char,
-    lo: u64,
-    hi: u64,
-    p1: f64,
-    p2: f64,
-    q_hat: f64,
-    h: f64,
-    dh: f64,
-    dt: f64,
-    residual: *mut f64,
-    tangent: *mut f64,
-    geometric: *mut f64,
-) -> IflStatus {
+    interaction: *const c_char, lo: u64, hi: u64,
+    p1: f64, p2: f64, q_hat: f64, h: f64, dh: f64, dt: f64,
+    residual: *mut f64, tangent: *mut f64, geometric: *mut f64) -> IflStatus {
     let variant = IflPorePressureVariant {
         open: lo as u32 as c_int,
         steady: (lo >> 32) as u32 as c_int,

@@ -174,12 +174,6 @@ impl Adhesive {
         self
     }
 
-    /// The rate formulation in use.
-    #[must_use]
-    pub fn rate_formulation(&self) -> RateFormulation {
-        self.formulation
-    }
-
     /// Sets γ_crit > 0 as an absolute length.
     pub fn with_critical_slip_absolute(mut self, gamma_crit: f64) -> Result<Self, LawError> {
         self.base = self.base.with_critical_slip_absolute(gamma_crit)?;
@@ -226,6 +220,12 @@ impl Adhesive {
     #[must_use]
     pub fn v_half(&self) -> f64 {
         self.v_half
+    }
+
+    /// The rate formulation in use.
+    #[must_use]
+    pub fn rate_formulation(&self) -> RateFormulation {
+        self.formulation
     }
 
     /// How γ_crit is defined.

@@ -27,7 +27,7 @@ pub const ADHESIVE: Layout = Layout {
     law: "adhesive law",
     code: LAW_ADHESIVE,
     entries: &[
-        Entry::new(1, "code", "law code", Class::Code(LAW_ADHESIVE)).when_absent(Required),
+        Entry::law_code(LAW_ADHESIVE),
         Entry::new(2, "coeff", "dynamic friction coefficient", Class::NonNegative)
             .seed_name().symbol("μ_d").when_absent(Required),
         Entry::new(3, "coeffStatic", "static friction coefficient", Class::FiniteOrNone)

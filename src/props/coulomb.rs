@@ -64,7 +64,7 @@ pub const COULOMB: Layout = Layout {
     law: "Coulomb law",
     code: LAW_COULOMB,
     entries: &[
-        Entry::new(1, "code", "law code", Class::Code(LAW_COULOMB)).when_absent(Required),
+        Entry::law_code(LAW_COULOMB),
         Entry::new(2, "mu", "friction coefficient", Class::NonNegative)
             .symbol("μ").when_absent(Required),
         Entry::new(3, "mu2", "second-direction coefficient", Class::OffOrPositive)

@@ -22,7 +22,7 @@ pub const RATE_STATE: Layout = Layout {
     law: "rate-and-state law",
     code: LAW_RATE_STATE,
     entries: &[
-        Entry::new(1, "code", "law code", Class::Code(LAW_RATE_STATE)).when_absent(Required),
+        Entry::law_code(LAW_RATE_STATE),
         Entry::new(2, "mu0", "steady-state friction coefficient at V₀", Class::NonNegative)
             .symbol("μ₀").when_absent(Required),
         Entry::new(3, "a", "direct-effect coefficient", Class::NonNegative)

@@ -233,6 +233,12 @@ impl Entry {
         }
     }
 
+    /// `PROPS(1)`, every layout's first entry: the law's code `code`, required.
+    #[must_use]
+    pub const fn law_code(code: i32) -> Self {
+        Entry::new(1, "code", "law code", Class::Code(code)).when_absent(Default::Required)
+    }
+
     /// `key` is the seed's own name.
     #[must_use]
     pub const fn seed_name(mut self) -> Self {
