@@ -735,3 +735,33 @@ proptest! {
         }
     }
 }
+
+/// A subnormal static strength (μ_d = 10⁻³²⁰, p = 50, so τ̄_s ≈ 5·10⁻³¹⁹ and γ_crit/τ̄_s
+/// overflows): from rest (τ̄ = 0) the point sticks with τ = μ_d·p·Δγ/γ_crit, instead of forming
+/// the start's elastic slip as 0·∞ = NaN and refusing the increment.
+#[test]
+fn a_subnormal_strength_sticks_from_rest() {
+    let mu = 1e-320;
+    // A rate-dependent μ (kmu, vhalf), so that the adhesive law itself answers (not its
+    // Coulomb special case).
+    let props = AdhesiveBuilder::new()
+        .coeff(mu)
+        .kmu(0.4)
+        .vhalf(0.02)
+        .gamma_crit(GAMMA_CRIT)
+        .build_first(8);
+    for nfdir in [1, 2] {
+        let mut c = FricCall::new(nfdir, &props);
+        c.press = 50.0;
+        c.dpress = 0.0;
+        c.dgam = [GAMMA_CRIT / 4.0, 0.0, 0.0];
+        c.call();
+        assert_eq!(c.pnewdt, 1e36, "refused: {}", FricCall::last_error());
+        let expected = mu * 50.0 / GAMMA_CRIT * (GAMMA_CRIT / 4.0);
+        assert!(
+            (c.tau[0] - expected).abs() <= 1e-3 * expected,
+            "NFDIR {nfdir}: τ = {:e}, k_s·Δγ = {expected:e}",
+            c.tau[0]
+        );
+    }
+}

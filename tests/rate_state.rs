@@ -332,3 +332,46 @@ fn a_coefficient_out_of_range_is_not_taken_as_zero() {
         mu * P
     );
 }
+
+/// A state so far below L/V₀ that the regularised stick strength at V₀ is subnormal
+/// (e^(ψ/a) ≈ 10⁻³¹⁰; found by the law-selection property test): from rest (τ̄ = 0) the point
+/// sticks with k_s = μ*·p/γ_crit, μ* = a·asinh(½·e^(ψ/a)), instead of forming the start's
+/// elastic slip as 0·(γ_crit/τ̄_s) = 0·∞ = NaN and refusing the increment.
+#[test]
+fn a_subnormal_stick_strength_sticks_from_rest() {
+    let (mu0, a, b, v0, l, theta0) = (0.0, 0.0189, 1.0, 1e-6, 2.0, 2.74);
+    let props = RateStateBuilder::new()
+        .mu0(mu0)
+        .a(a)
+        .b(b)
+        .v0(v0)
+        .l(l)
+        .evolution(1.0)
+        .form(1.0)
+        .gamma_crit(1.0)
+        .theta0(theta0)
+        .build();
+    let mu_stick = a * (0.5 * ((mu0 + b * (v0 * theta0 / l).ln()) / a).exp()).asinh();
+    assert!(
+        mu_stick > 0.0 && mu_stick * P < f64::MIN_POSITIVE,
+        "a subnormal strength"
+    );
+    for nfdir in [1, 2] {
+        let mut c = point(nfdir, &props);
+        // In contact at P already at the start: the start's strength is the subnormal one.
+        c.dpress = 0.0;
+        step(&mut c, 0.01, 0.1);
+        // |τ| without squares (τ² underflows to 0 here).
+        let tau = c.tau[0].hypot(if nfdir == 2 { c.tau[1] } else { 0.0 });
+        let expected = mu_stick * P * 0.01;
+        assert!(
+            (tau - expected).abs() <= 1e-6 * expected,
+            "NFDIR {nfdir}: |τ| = {tau:e}, k_s·|Δγ| = {expected:e}"
+        );
+        assert_eq!(
+            c.statev[..4],
+            [0.0, 0.0, 0.0, theta0],
+            "stick; the slip law keeps θ"
+        );
+    }
+}

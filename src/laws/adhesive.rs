@@ -29,7 +29,7 @@
 //! With S_a = k_μ = v_½ = 0 and μ_s = μ_d the law is plain Coulomb; [`Adhesive::coulomb_special_case`]
 //! returns that law so the entry points run the Coulomb code itself (same results, same cost).
 
-use super::contact::{Increment, Traction};
+use super::contact::{Increment, Traction, elastic_start_slip};
 use super::coulomb::{Coulomb, CoulombState, CriticalSlip, FrictionStatus, StickMode, Update};
 use super::friction_coefficient::{RateFormulation, STICK_TEST_ROUNDING};
 use super::parameter_range::nonnegative;
@@ -362,11 +362,7 @@ impl Adhesive {
         }
         let (tau_s_start, _) = self.stick_strength(sliding, p_start);
         // Elastic slip at the start, γ̄^el = τ̄/k_s(p − Δp).
-        let elastic_start = if tau_s_start > 0.0 {
-            scale(tau_start, gamma_crit / tau_s_start)
-        } else {
-            [0.0; N]
-        };
+        let elastic_start = elastic_start_slip(tau_start, gamma_crit, tau_s_start);
         let predictor = add(&elastic_start, dgam);
         Ok(self.map(&predictor, sliding, p, dtime, gamma_crit))
     }

@@ -22,7 +22,7 @@
 //! State (`STATEV(1..3)`): accumulated slip, slip rate, and the status below.
 
 use super::adhesive::{Adhesive, SlideBranch};
-use super::contact::{PointState, StatusCode, Traction};
+use super::contact::{PointState, StatusCode, Traction, elastic_start_slip};
 use super::friction_coefficient::RateFormulation;
 use super::interface_heat::MechanicalAnswer;
 use super::parameter_range::positive;
@@ -274,11 +274,7 @@ impl AdhesiveInterface {
         );
         // The stiffness the start shear was built with (after a slip: the sliding strength).
         let (tau_s_start, _) = self.law.stick_strength(sliding, inc.normal_stress_start);
-        let elastic_start = if tau_s_start > 0.0 {
-            scale(&inc.shear_start, gamma_crit / tau_s_start)
-        } else {
-            [0.0; N]
-        };
+        let elastic_start = elastic_start_slip(&inc.shear_start, gamma_crit, tau_s_start);
         let predictor = add(&elastic_start, &inc.dgam);
         // k_s = τ_s(0)/γ_crit = S_a/γ_crit.
         let k_s = s_a / gamma_crit;

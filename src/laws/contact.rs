@@ -188,6 +188,29 @@ impl<S: StatusCode> PointState<S> {
     }
 }
 
+/// The elastic slip at the start of an increment, γ̄^el = τ̄/k̄_s = τ̄·γ_crit/τ̄_s, for the start
+/// stress `tau` held by the strength `strength` = τ̄_s (so k̄_s = τ̄_s/γ_crit); zero when there
+/// is no strength to hold a stress. Where γ_crit/τ̄_s overflows (a subnormal strength), it is
+/// formed as (τ̄/τ̄_s)·γ_crit: finite for a stress within the strength, 0 for τ̄ = 0 (the product
+/// would be 0·∞ = NaN).
+#[inline(always)]
+pub fn elastic_start_slip<const N: usize>(
+    tau: &[f64; N],
+    gamma_crit: f64,
+    strength: f64,
+) -> [f64; N] {
+    if strength > 0.0 {
+        let factor = gamma_crit / strength;
+        if factor == f64::INFINITY {
+            std::array::from_fn(|i| tau[i] / strength * gamma_crit)
+        } else {
+            scale(tau, factor)
+        }
+    } else {
+        [0.0; N]
+    }
+}
+
 /// Stress, tangents and energies of an increment that allows relative motion (`LM = 0`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Traction<const N: usize> {
@@ -322,4 +345,24 @@ impl Default for Conditions {
 #[must_use]
 pub fn mean_surface_temperature([slave, master]: [f64; 2]) -> f64 {
     0.5 * (slave + master)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::elastic_start_slip;
+
+    /// γ̄^el = τ̄·γ_crit/τ̄_s, also where γ_crit/τ̄_s overflows (a subnormal strength: then
+    /// (τ̄/τ̄_s)·γ_crit, and 0 rather than 0·∞ = NaN for τ̄ = 0), and 0 without a strength.
+    #[test]
+    fn the_start_elastic_slip_is_finite_for_a_subnormal_strength() {
+        let strength: f64 = 1e-310;
+        assert!((1.0 / strength).is_infinite() && strength < f64::MIN_POSITIVE);
+        assert_eq!(elastic_start_slip(&[0.0, 0.0], 1.0, strength), [0.0, 0.0]);
+        let within = elastic_start_slip(&[0.6 * strength, -0.8 * strength], 2.0, strength);
+        for (got, want) in within.iter().zip([1.2, -1.6]) {
+            assert!((got - want).abs() <= 1e-9, "{within:?}");
+        }
+        assert_eq!(elastic_start_slip(&[3.0], 0.5, 0.0), [0.0]);
+        assert_eq!(elastic_start_slip(&[3.0], 0.5, 2.0), [0.75]);
+    }
 }

@@ -27,7 +27,7 @@
 
 #![allow(clippy::needless_range_loop)] // index loops mirror the i, j of the seed's equations
 
-use super::contact::{Conditions, Contact, EntryFlag, Increment, Traction};
+use super::contact::{Conditions, Contact, EntryFlag, Increment, Traction, elastic_start_slip};
 use super::coulomb::{Coulomb, CoulombState, EXACT_STICK_TANGENT_FLOOR, StickMode};
 use super::friction_coefficient::{
     CoefficientLaw, Factor, RateFormulation, RateLaw, STICK_TEST_ROUNDING, decay_phi,
@@ -211,22 +211,13 @@ fn elastic_start<const N: usize>(
     start: &Critical,
     with_theta: bool,
 ) -> ([f64; N], [f64; N]) {
-    if start.value > 0.0 {
-        let factor = gamma_crit / start.value;
-        let elastic: [f64; N] = if factor == f64::INFINITY {
-            std::array::from_fn(|i| tau[i] / start.value * gamma_crit)
-        } else {
-            scale(tau, factor)
-        };
-        let d_theta = if with_theta {
-            scale(&elastic, -(start.d_temperature / start.value))
-        } else {
-            [0.0; N]
-        };
-        (elastic, d_theta)
+    let elastic = elastic_start_slip(tau, gamma_crit, start.value);
+    let d_theta = if with_theta && start.value > 0.0 {
+        scale(&elastic, -(start.d_temperature / start.value))
     } else {
-        ([0.0; N], [0.0; N])
-    }
+        [0.0; N]
+    };
+    (elastic, d_theta)
 }
 
 /// The isotropic problem in scaled variables, as seen by one increment: what every stick mode

@@ -27,7 +27,7 @@
 //! local solve, and the consistent tangent (Eq. 5.2.3-3 of the source model) carries
 //! dμ/dV = ∂μ/∂V + ∂μ/∂θ·dθ/dV. `LM` is always 0 (no exact stick).
 
-use super::contact::{Contact, Increment, Traction};
+use super::contact::{Contact, Increment, Traction, elastic_start_slip};
 use super::coulomb::{Coulomb, CoulombState, FrictionStatus};
 use super::friction_coefficient::STICK_TEST_ROUNDING;
 use super::point_law::{EndState, PointAnswer, PointInput, PointLaw, PointResult};
@@ -354,11 +354,7 @@ impl RateState {
         // The elastic slip at the start, γ̄^el = τ̄/k_s(p₀) = τ̄·γ_crit/(μ*·p₀⁺) (0 with no
         // strength to hold a stress).
         let start_strength = mu_stick * p_start;
-        let elastic_start = if start_strength > 0.0 {
-            scale(&inc.tau, gamma_crit / start_strength)
-        } else {
-            [0.0; N]
-        };
+        let elastic_start = elastic_start_slip(&inc.tau, gamma_crit, start_strength);
         let mut trial = elastic_start;
         for (t, d) in trial.iter_mut().zip(&inc.dgam) {
             *t += d;
