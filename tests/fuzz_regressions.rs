@@ -594,14 +594,15 @@ fn fric_stick_with_a_subnormal_stiffness_stays_on_the_cone() {
 /// adhesive law's elastic start slip formed as (τ̄/τ_s)·γ_crit where γ_crit/τ_s(p₀) overflows
 /// (S_a = f64::MIN_POSITIVE, μ = 0, γ_crit ≈ 2·10⁸ from `CHRLNGTH`) answered with a subnormal
 /// k_s = S_a/γ_crit of eight digits, and |τ| = k_s·γ_crit came out 8·10⁻⁹ above the strength.
-/// The adhesive law keeps refusing such increments (as a numerical failure) until its stick
-/// stress is formed as the Coulomb law's careful tier forms it for a subnormal k_s.
+/// The stick stress is now formed as the Coulomb law's careful tier forms it for a subnormal
+/// k_s, τ_s·(γ^pr/γ_crit) (`laws::contact::elastic_stick_stress`): the increment is answered
+/// (it was refused as a numerical failure before) and the replay's property check holds.
 #[test]
 fn fric_adhesive_vanishing_start_strength_stays_within_the_property() {
     let (_, out) = adhesive_replay(include_bytes!(
         "../fuzz/regressions/fric-adhesive-vanishing-start-strength"
     ));
-    assert_eq!(out.real("PNEWDT"), 0.25, "{out:?}");
+    assert_eq!(out.real("PNEWDT"), 1.0, "answered: {out:?}");
 }
 
 /// The `fric` decoder's law-3 arm (rate-and-state: `NPROPS` = 11, picked by 6 of the 64 values

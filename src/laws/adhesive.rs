@@ -29,7 +29,7 @@
 //! With S_a = k_μ = v_½ = 0 and μ_s = μ_d the law is plain Coulomb; [`Adhesive::coulomb_special_case`]
 //! returns that law so the entry points run the Coulomb code itself (same results, same cost).
 
-use super::contact::{Increment, Traction, elastic_start_slip};
+use super::contact::{Increment, Traction, elastic_start_slip, elastic_stick_stress};
 use super::coulomb::{Coulomb, CoulombState, CriticalSlip, FrictionStatus, StickMode, Update};
 use super::friction_coefficient::{RateFormulation, STICK_TEST_ROUNDING};
 use super::parameter_range::nonnegative;
@@ -408,7 +408,7 @@ impl Adhesive {
             gamma_crit,
             ..
         } = trial;
-        let k_s = tau_k / gamma_crit;
+        let (tau, k_s) = elastic_stick_stress(predictor, gamma_crit, tau_k);
         let (tau_s, _) = self.static_strength(p);
         let sed = if tau_s == tau_k || tau_s <= 0.0 {
             0.5 * k_s * predictor_eq * predictor_eq
@@ -418,7 +418,7 @@ impl Adhesive {
         };
         Slide {
             traction: Traction::sticking(
-                scale(predictor, k_s),
+                tau,
                 diagonal(k_s),
                 scale(predictor, dtau_k_dp / gamma_crit),
                 sed,

@@ -22,7 +22,7 @@
 //! State (`STATEV(1..3)`): accumulated slip, slip rate, and the status below.
 
 use super::adhesive::{Adhesive, SlideBranch};
-use super::contact::{PointState, StatusCode, Traction, elastic_start_slip};
+use super::contact::{PointState, StatusCode, Traction, elastic_start_slip, elastic_stick_stress};
 use super::friction_coefficient::RateFormulation;
 use super::interface_heat::MechanicalAnswer;
 use super::parameter_range::positive;
@@ -277,8 +277,7 @@ impl AdhesiveInterface {
         let elastic_start = elastic_start_slip(&inc.shear_start, gamma_crit, tau_s_start);
         let predictor = add(&elastic_start, &inc.dgam);
         // k_s = τ_s(0)/γ_crit = S_a/γ_crit.
-        let k_s = s_a / gamma_crit;
-        let shear = scale(&predictor, k_s);
+        let (shear, k_s) = elastic_stick_stress(&predictor, gamma_crit, s_a);
         let tension = -k_n * inc.overclosure;
         let s_eq = norm(&shear);
         let measure = (s_eq / s_a).powi(2) + (tension / n_a).powi(2);

@@ -211,6 +211,26 @@ pub fn elastic_start_slip<const N: usize>(
     }
 }
 
+/// Elastic stick's stress τ = k_s·γ^pr with k_s = τ_s/γ_crit (Eq. 5.2.3-1), and k_s. Where
+/// k_s is subnormal (few significant digits: a strength near f64::MIN_POSITIVE over a large
+/// γ_crit), k_s·γ^pr can come out above τ_s by far more than round-off for |γ^pr| ≤ γ_crit; τ
+/// is then formed as τ_s·(γ^pr/γ_crit), within τ_s to round-off (as the Coulomb law's careful
+/// tier forms it).
+#[inline(always)]
+pub fn elastic_stick_stress<const N: usize>(
+    predictor: &[f64; N],
+    gamma_crit: f64,
+    strength: f64,
+) -> ([f64; N], f64) {
+    let k_s = strength / gamma_crit;
+    let tau = if k_s > 0.0 && k_s < f64::MIN_POSITIVE {
+        std::array::from_fn(|i| predictor[i] / gamma_crit * strength)
+    } else {
+        scale(predictor, k_s)
+    };
+    (tau, k_s)
+}
+
 /// Stress, tangents and energies of an increment that allows relative motion (`LM = 0`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Traction<const N: usize> {
@@ -349,7 +369,7 @@ pub fn mean_surface_temperature([slave, master]: [f64; 2]) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::elastic_start_slip;
+    use super::{elastic_start_slip, elastic_stick_stress};
 
     /// γ̄^el = τ̄·γ_crit/τ̄_s, also where γ_crit/τ̄_s overflows (a subnormal strength: then
     /// (τ̄/τ̄_s)·γ_crit, and 0 rather than 0·∞ = NaN for τ̄ = 0), and 0 without a strength.
@@ -364,5 +384,25 @@ mod tests {
         }
         assert_eq!(elastic_start_slip(&[3.0], 0.5, 0.0), [0.0]);
         assert_eq!(elastic_start_slip(&[3.0], 0.5, 2.0), [0.75]);
+    }
+
+    /// τ = k_s·γ^pr, and for a subnormal k_s = τ_s/γ_crit still within τ_s to round-off on the
+    /// stick limit |γ^pr| = γ_crit (k_s·γ^pr there is τ_s to eight digits only).
+    #[test]
+    fn the_stick_stress_keeps_its_digits_for_a_subnormal_stiffness() {
+        let (strength, gamma_crit) = (f64::MIN_POSITIVE, 3.9e10);
+        let on_limit = [0.6 * gamma_crit, 0.8 * gamma_crit];
+        let (tau, k_s) = elastic_stick_stress(&on_limit, gamma_crit, strength);
+        assert!(k_s > 0.0 && k_s < f64::MIN_POSITIVE);
+        let magnitude = tau[0].hypot(tau[1]);
+        assert!(
+            (magnitude - strength).abs() <= 1e-12 * strength,
+            "|τ| = {magnitude:e}, τ_s = {strength:e}"
+        );
+        // A plain k_s: the product itself.
+        assert_eq!(
+            elastic_stick_stress(&[2.0, -1.0], 4.0, 8.0),
+            ([4.0, -2.0], 2.0)
+        );
     }
 }

@@ -27,7 +27,7 @@
 //! local solve, and the consistent tangent (Eq. 5.2.3-3 of the source model) carries
 //! dμ/dV = ∂μ/∂V + ∂μ/∂θ·dθ/dV. `LM` is always 0 (no exact stick).
 
-use super::contact::{Contact, Increment, Traction, elastic_start_slip};
+use super::contact::{Contact, Increment, Traction, elastic_start_slip, elastic_stick_stress};
 use super::coulomb::{Coulomb, CoulombState, FrictionStatus};
 use super::friction_coefficient::STICK_TEST_ROUNDING;
 use super::point_law::{EndState, PointAnswer, PointInput, PointLaw, PointResult};
@@ -365,8 +365,7 @@ impl RateState {
         if length <= gamma_crit * (1.0 + STICK_TEST_ROUNDING) {
             // Elastic stick, Eq. 5.2.3-1: τ = k_s·γ^pr, k_s = μ*·p⁺/γ_crit.
             let per_slip = mu_stick / gamma_crit;
-            let k_s = per_slip * p_end;
-            let tau = scale(&trial, k_s);
+            let (tau, k_s) = elastic_stick_stress(&trial, gamma_crit, mu_stick * p_end);
             let dp = if p > 0.0 {
                 scale(&trial, per_slip)
             } else {
