@@ -168,13 +168,7 @@ fn check_sizes(b: &FricBatch<'_>) -> Result<(), LawError> {
             b.nfdir
         )));
     }
-    if b.nstatv < CoulombState::NSTATV {
-        return Err(LawError::Parameter(format!(
-            "NSTATV = {} but the Coulomb law needs {}",
-            b.nstatv,
-            CoulombState::NSTATV
-        )));
-    }
+    CoulombState::require_nstatv(b.nstatv)?;
     if b.ld < b.npoints {
         return Err(LawError::Parameter(format!(
             "leading dimension ld = {} is less than npoints = {}",
@@ -780,15 +774,8 @@ pub unsafe extern "C" fn ifl_fric_batch(
                 .ok_or_else(|| {
                     LawError::Parameter(format!("NFDIR = {nfdir}; expected 1 (2-D) or 2 (3-D)"))
                 })?;
-            let nstatv = usize::try_from(nstatv)
-                .ok()
-                .filter(|s| *s >= CoulombState::NSTATV)
-                .ok_or_else(|| {
-                    LawError::Parameter(format!(
-                        "NSTATV = {nstatv} but the Coulomb law needs {}",
-                        CoulombState::NSTATV
-                    ))
-                })?;
+            let nstatv = count("NSTATV", nstatv)?;
+            CoulombState::require_nstatv(nstatv)?;
             if ld < npoints {
                 return Err(LawError::Parameter(format!(
                     "leading dimension ld = {ld} is less than npoints = {npoints}"
