@@ -257,6 +257,14 @@ fn bad_input_is_refused_by_name() {
         ("NSTATV 3", Box::new(|c| c.nstatv = 3), "NSTATV = 3"),
         ("DTIME 0", Box::new(|c| c.dtime = 0.0), "DTIME"),
         ("PRESS NaN", Box::new(|c| c.press = f64::NAN), "PRESS"),
+        (
+            "a negative start rate after a slip",
+            Box::new(|c| {
+                c.statev[1] = -1e-3;
+                c.statev[2] = 1.0;
+            }),
+            "STATEV(2)",
+        ),
     ];
     for (what, spoil, word) in cases {
         let mut c = point(2, &good);

@@ -619,17 +619,9 @@ impl Adhesive {
     ) -> Result<Update<N>, LawError> {
         // Elastic stick reads no TAULM: the Coulomb law's naming, in the same order.
         inc.check_finite()?;
-        // Read only after a slip (the rate-following memory); then it must be a rate (≥ 0;
-        // finite: the state reader refuses NaN and ∞).
-        if state.status == FrictionStatus::Slip && state.slip_rate < 0.0 {
-            return Err(LawError::Input(format!(
-                "STATEV(2) (slip rate) = {} must be ≥ 0 (state corrupted by the caller?)",
-                state.slip_rate
-            )));
-        }
-        let gamma_crit = self.critical_slip_for(inc.characteristic_length)?;
         // The memory of the rate-following formulation: the previous increment's slip.
-        let sliding = (state.status == FrictionStatus::Slip).then_some(state.slip_rate);
+        let sliding = state.sliding_rate()?;
+        let gamma_crit = self.critical_slip_for(inc.characteristic_length)?;
         let s = self.slide(
             sliding,
             &inc.tau,

@@ -50,6 +50,7 @@ pub type InterfaceState = PointState<InterfaceStatus>;
 
 impl StatusCode for InterfaceStatus {
     const LAW: &'static str = "the adhesive interface";
+    const SLIP: Self = InterfaceStatus::Slip;
 
     /// A code other than 1, 3 or 4 reads as stick (0).
     #[inline(always)]
@@ -171,14 +172,8 @@ impl AdhesiveInterface {
         if !finite {
             return Err(name_bad_input(inc));
         }
-        // Read only after a slip (the rate-following memory); then it must be a rate (≥ 0;
-        // finite: the state reader refuses NaN and ∞).
-        if state.status == InterfaceStatus::Slip && state.slip_rate < 0.0 {
-            return Err(LawError::Input(format!(
-                "STATEV(2) (slip rate) = {} must be ≥ 0 (state corrupted by the caller?)",
-                state.slip_rate
-            )));
-        }
+        // The memory of the rate-following formulation: the previous increment's slip.
+        let sliding = state.sliding_rate()?;
         let gamma_crit = self.law.critical_slip_for(inc.characteristic_length)?;
         let k_n = self.normal_stiffness;
         let h = inc.overclosure;
@@ -192,8 +187,6 @@ impl AdhesiveInterface {
             InterfaceStatus::Stick => inc.normal_stress_start > 0.0 || h >= 0.0,
             InterfaceStatus::Open => false,
         };
-        // The memory of the rate-following formulation: the previous increment's slip.
-        let sliding = (state.status == InterfaceStatus::Slip).then_some(state.slip_rate);
         let response = if h > 0.0 {
             let p = k_n * h;
             let s = self.law.slide(

@@ -103,9 +103,12 @@ pub(crate) fn name_bad_input<const N: usize>(inc: Increment<N>, reads_taulm: boo
 /// How a point's status is stored in `STATEV(3)`:
 /// [`FrictionStatus`](crate::laws::coulomb::FrictionStatus) for the Coulomb laws,
 /// `InterfaceStatus` for the adhesive interface (which adds bonded and open).
-pub trait StatusCode: Copy {
+pub trait StatusCode: Copy + PartialEq {
     /// The law, as a message about too short a `STATEV` names it.
     const LAW: &'static str;
+    /// The status of a point that slid in the increment: its slip rate is the rate memory
+    /// ([`PointState::sliding_rate`]).
+    const SLIP: Self;
     /// The status stored as `code`; an unknown code reads as stick.
     fn from_code(code: f64) -> Self;
     /// The code stored for the status.
@@ -151,6 +154,23 @@ impl<S: StatusCode> PointState<S> {
             return Err(short_statev(statev.len(), S::LAW));
         };
         Self::from_values(*s, *rate, *status).ok_or_else(corrupt_statev)
+    }
+
+    /// The slip rate of the last increment when the point slid in it (the memory of the
+    /// rate-following formulation and of the rate-and-state law's stick stiffness), `None`
+    /// after anything else. A slide's rate is ≥ 0 (and finite: [`Self::from_statev`] refuses
+    /// NaN and ∞); a negative one is refused as a corrupted state.
+    pub fn sliding_rate(&self) -> Result<Option<f64>, LawError> {
+        if self.status != S::SLIP {
+            return Ok(None);
+        }
+        if self.slip_rate < 0.0 {
+            return Err(LawError::Input(format!(
+                "STATEV(2) (slip rate) = {} must be ≥ 0 (state corrupted by the caller?)",
+                self.slip_rate
+            )));
+        }
+        Ok(Some(self.slip_rate))
     }
 
     /// The state from `STATEV(1..3)`; `None` when `STATEV(1)` or `STATEV(2)` is not finite.

@@ -81,6 +81,7 @@ pub enum FrictionStatus {
 
 impl StatusCode for FrictionStatus {
     const LAW: &'static str = "the Coulomb law";
+    const SLIP: Self = FrictionStatus::Slip;
 
     #[inline(always)]
     fn from_code(code: f64) -> Self {

@@ -318,12 +318,11 @@ impl RateState {
     }
 
     /// The strength's rate at which the stick stiffness is read: the last slip rate after a
-    /// slip, V₀ after a stick or at rest (docs/props.md, "Law 3").
-    fn stiffness_rate(&self, state: &RateStateState) -> f64 {
-        if state.point.status == FrictionStatus::Slip && state.point.slip_rate > 0.0 {
-            state.point.slip_rate
-        } else {
-            self.p.v0
+    /// slip (`sliding`, when > 0), V₀ after a stick or at rest (docs/props.md, "Law 3").
+    fn stiffness_rate(&self, sliding: Option<f64>) -> f64 {
+        match sliding {
+            Some(rate) if rate > 0.0 => rate,
+            _ => self.p.v0,
         }
     }
 
@@ -340,17 +339,14 @@ impl RateState {
                 inc.dtime
             )));
         }
-        if state.point.status == FrictionStatus::Slip && state.point.slip_rate < 0.0 {
-            return Err(LawError::Input(format!(
-                "STATEV(2) (slip rate) = {} must be ≥ 0 (state corrupted by the caller?)",
-                state.point.slip_rate
-            )));
-        }
+        let sliding = state.point.sliding_rate()?;
         let gamma_crit = self.stick.critical_slip_for(inc.characteristic_length)?;
         let (p, dt) = (inc.pressure, inc.dtime);
         let (p_end, p_start) = (p.max(0.0), (p - inc.dpressure).max(0.0));
         // The stick strength per unit pressure, the same at both ends of the increment.
-        let mu_stick = self.coefficient(self.stiffness_rate(state), state.theta).mu;
+        let mu_stick = self
+            .coefficient(self.stiffness_rate(sliding), state.theta)
+            .mu;
         // The elastic slip at the start, γ̄^el = τ̄/k_s(p₀) = τ̄·γ_crit/(μ*·p₀⁺) (0 with no
         // strength to hold a stress).
         let start_strength = mu_stick * p_start;
