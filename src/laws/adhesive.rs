@@ -29,12 +29,12 @@
 //! With S_a = k_μ = v_½ = 0 and μ_s = μ_d the law is plain Coulomb; [`Adhesive::coulomb_special_case`]
 //! returns that law so the entry points run the Coulomb code itself (same results, same cost).
 
-use super::contact::{Increment, Traction, elastic_start_slip, elastic_stick_stress};
-use super::coulomb::{Coulomb, CoulombState, CriticalSlip, FrictionStatus, StickMode, Update};
+use super::contact::{Increment, StatusCode, Traction, elastic_start_slip, elastic_stick_stress};
+use super::coulomb::{Coulomb, CoulombState, CriticalSlip, StickMode, Update};
 use super::friction_coefficient::{RateFormulation, STICK_TEST_ROUNDING};
 use super::parameter_range::nonnegative;
 use super::point_law::{PointAnswer, PointInput, PointLaw, PointResult};
-use super::small_vec::{add, all_finite, diagonal, norm, radial_transverse, scale, unit};
+use super::small_vec::{add, diagonal, norm, radial_transverse, scale, unit};
 use crate::{LawError, Outcome};
 
 /// The seed's parameters by name (seed 004, "Properties"), before validation.
@@ -91,6 +91,17 @@ pub enum SlideBranch {
     Stick,
     /// Sliding: τ = g(Δv).
     Slip,
+}
+
+impl SlideBranch {
+    /// The status a law with statuses `S` stores for the branch.
+    #[must_use]
+    pub fn status<S: StatusCode>(self) -> S {
+        match self {
+            SlideBranch::Stick => S::STICK,
+            SlideBranch::Slip => S::SLIP,
+        }
+    }
 }
 
 /// The tangential answer of one increment.
@@ -635,15 +646,7 @@ impl Adhesive {
         let slip = norm(&s.traction.dslip);
         Ok(Update {
             contact: super::contact::Contact::Motion(s.traction),
-            state: CoulombState {
-                // Saturates at f64::MAX rather than storing ∞ (fuzz target `uinter`).
-                accumulated_slip: (state.accumulated_slip + slip).min(f64::MAX),
-                slip_rate: s.slip_rate,
-                status: match s.branch {
-                    SlideBranch::Slip => FrictionStatus::Slip,
-                    SlideBranch::Stick => FrictionStatus::Stick,
-                },
-            },
+            state: state.after_slide(slip, s.slip_rate, s.branch.status()),
             outcome: Outcome::CONVERGED,
         })
     }
@@ -723,13 +726,8 @@ fn product_ratio(a: f64, b: f64, c: f64, d: f64) -> f64 {
     m * 2f64.powi(half) * 2f64.powi(e - half)
 }
 
-pub(crate) fn check_finite<const N: usize>(t: &Traction<N>) -> Result<(), LawError> {
-    let mut ok = t.sed.is_finite() && t.sfd.is_finite();
-    for a in 0..N {
-        ok &= t.tau[a].is_finite() && t.ddtddp[a].is_finite() && t.dslip[a].is_finite();
-        ok &= all_finite(&t.ddtddg[a]);
-    }
-    if ok {
+fn check_finite<const N: usize>(t: &Traction<N>) -> Result<(), LawError> {
+    if t.is_finite() {
         Ok(())
     } else {
         Err(LawError::Numerical(

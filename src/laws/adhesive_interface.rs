@@ -21,7 +21,7 @@
 //!
 //! State (`STATEV(1..3)`): accumulated slip, slip rate, and the status below.
 
-use super::adhesive::{Adhesive, SlideBranch};
+use super::adhesive::Adhesive;
 use super::contact::{PointState, StatusCode, Traction, elastic_start_slip, elastic_stick_stress};
 use super::friction_coefficient::RateFormulation;
 use super::interface_heat::MechanicalAnswer;
@@ -50,6 +50,7 @@ pub type InterfaceState = PointState<InterfaceStatus>;
 
 impl StatusCode for InterfaceStatus {
     const LAW: &'static str = "the adhesive interface";
+    const STICK: Self = InterfaceStatus::Stick;
     const SLIP: Self = InterfaceStatus::Slip;
 
     /// A code other than 1, 3 or 4 reads as stick (0).
@@ -217,16 +218,7 @@ impl AdhesiveInterface {
                 dp_dh: k_n,
                 sed: s.traction.sed + 0.5 * p * p / k_n,
                 shear: s.traction,
-                state: InterfaceState {
-                    // Saturates at f64::MAX rather than storing ∞, which the next increment
-                    // would refuse as a corrupted state (fuzz target `uinter`).
-                    accumulated_slip: (state.accumulated_slip + slip).min(f64::MAX),
-                    slip_rate: s.slip_rate,
-                    status: match s.branch {
-                        SlideBranch::Slip => InterfaceStatus::Slip,
-                        SlideBranch::Stick => InterfaceStatus::Stick,
-                    },
-                },
+                state: state.after_slide(slip, s.slip_rate, s.branch.status()),
                 closed: true,
                 spd: 0.0,
             }
@@ -240,7 +232,7 @@ impl AdhesiveInterface {
         // (a slip rate over a DTIME near f64::MIN_POSITIVE with k_μ > 0: fuzz target `uinter`).
         let ok = response.normal_stress.is_finite()
             && response.sed.is_finite()
-            && super::adhesive::check_finite(t).is_ok()
+            && t.is_finite()
             && t.ddtddp.iter().all(|d| (d * response.dp_dh).is_finite());
         if ok {
             Ok(response)

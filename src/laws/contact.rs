@@ -106,6 +106,8 @@ pub(crate) fn name_bad_input<const N: usize>(inc: Increment<N>, reads_taulm: boo
 pub trait StatusCode: Copy + PartialEq {
     /// The law, as a message about too short a `STATEV` names it.
     const LAW: &'static str;
+    /// The status of a point that held by elastic stick in the increment.
+    const STICK: Self;
     /// The status of a point that slid in the increment: its slip rate is the rate memory
     /// ([`PointState::sliding_rate`]).
     const SLIP: Self;
@@ -198,6 +200,23 @@ impl<S: StatusCode> PointState<S> {
         }
     }
 
+    /// The state after an increment with relative motion (`LM = 0`): the path of inelastic
+    /// slip grows by `slip` = |Δγ^sl|, the slip rate becomes `slip_rate` and the status
+    /// `status`. Both scalars saturate at f64::MAX rather than overflow: a finite slip over a
+    /// subnormal `DTIME`, or a sum near f64::MAX, would otherwise store ∞ in `STATEV`, which
+    /// the next increment refuses as corrupted (fuzz targets `fric` and `uinter`). `slip` and
+    /// `slip_rate` are finite and ≥ 0 (the callers test their answers first), so each
+    /// `f64::min` with the constant f64::MAX is one `minsd`.
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn after_slide(&self, slip: f64, slip_rate: f64, status: S) -> Self {
+        PointState {
+            accumulated_slip: (self.accumulated_slip + slip).min(f64::MAX),
+            slip_rate: slip_rate.min(f64::MAX),
+            status,
+        }
+    }
+
     /// `STATEV(1)` and `STATEV(2)` finite.
     #[inline(always)]
     pub(super) fn is_finite(&self) -> bool {
@@ -282,6 +301,20 @@ pub struct Traction<const N: usize> {
 }
 
 impl<const N: usize> Traction<N> {
+    /// Every stress, tangent, slip and energy is finite: the test a law makes of its answer
+    /// before it stores it (an overflow from finite inputs is refused, never written).
+    #[must_use]
+    pub fn is_finite(&self) -> bool {
+        let mut finite = self.sed.is_finite() && self.sfd.is_finite();
+        for a in 0..N {
+            finite &= self.tau[a].is_finite()
+                && self.ddtddp[a].is_finite()
+                && self.dslip[a].is_finite()
+                && all_finite(&self.ddtddg[a]);
+        }
+        finite
+    }
+
     /// A sliding answer along the unit slip direction n (Eq. 5.2.3-2): τ = t·n with the
     /// strength t, ∂τ/∂p = n·∂t/∂p, Δγ^sl = Δγ_eq^sl·n and `SFD` = t·Δγ_eq^sl (backward Euler);
     /// the tangent ∂τ/∂Δγ and the elastic energy `SED` as the caller's formulation has them.

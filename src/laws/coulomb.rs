@@ -81,6 +81,7 @@ pub enum FrictionStatus {
 
 impl StatusCode for FrictionStatus {
     const LAW: &'static str = "the Coulomb law";
+    const STICK: Self = FrictionStatus::Stick;
     const SLIP: Self = FrictionStatus::Slip;
 
     #[inline(always)]
@@ -113,31 +114,25 @@ impl CoulombState {
         }
     }
 
-    /// The state after an increment with relative motion (`LM = 0`): the path of inelastic slip
-    /// grows by `slip` = |Δγ^sl|, the slip rate is `rate_slip`/`rate_dtime` (the return map's
-    /// Δγ_eq^sl over the time increment of rates; 0 when that is ≤ 0), and the status is slip
-    /// when `slip` > 0, else stick. Both scalars saturate at f64::MAX rather than overflow: a
-    /// finite slip over a subnormal DTIME, or a sum near f64::MAX, would otherwise store ∞ in
-    /// STATEV, which the next increment refuses as corrupted (fuzz target `fric`). `slip` and
-    /// `rate_slip` are finite and ≥ 0 (the callers test their outputs first), so `f64::min`
-    /// with the constant f64::MAX is one `minsd`; it counted 5 instructions per `fric_` call
-    /// fewer than the compare-and-select used before (scripts/count-instructions.sh).
+    /// [`PointState::after_slide`] with the Coulomb laws' rate and status: the slip rate is
+    /// `rate_slip`/`rate_dtime` (the return map's Δγ_eq^sl over the time increment of rates;
+    /// 0 when that is ≤ 0), and the status is slip when `slip` > 0, else stick. The saturation
+    /// at f64::MAX (one `minsd` each) counted 5 instructions per `fric_` call fewer than the
+    /// compare-and-select used before (scripts/count-instructions.sh).
     #[inline(always)]
     #[must_use]
     pub(crate) fn after_motion(&self, slip: f64, rate_slip: f64, rate_dtime: f64) -> Self {
-        CoulombState {
-            accumulated_slip: (self.accumulated_slip + slip).min(f64::MAX),
-            slip_rate: if rate_dtime > 0.0 {
-                (rate_slip / rate_dtime).min(f64::MAX)
-            } else {
-                0.0
-            },
-            status: if slip > 0.0 {
-                FrictionStatus::Slip
-            } else {
-                FrictionStatus::Stick
-            },
-        }
+        let rate = if rate_dtime > 0.0 {
+            rate_slip / rate_dtime
+        } else {
+            0.0
+        };
+        let status = if slip > 0.0 {
+            FrictionStatus::Slip
+        } else {
+            FrictionStatus::Stick
+        };
+        self.after_slide(slip, rate, status)
     }
 }
 
@@ -332,7 +327,7 @@ impl Coulomb {
             CriticalSlip::Stiffness(k) if self.stick == StickMode::Elastic => {
                 self.constant_stick(&inc, &state, k)
             }
-            _ => self.integrate(&inc, &state, true),
+            _ => self.integrate::<N, true>(&inc, &state),
         };
         match answer {
             Some(up) => Ok(up),
@@ -352,19 +347,19 @@ impl Coulomb {
         inc: &Increment<N>,
         state: &CoulombState,
     ) -> Option<Update<N>> {
-        self.integrate(inc, state, false)
+        self.integrate::<N, false>(inc, state)
     }
 
-    /// The increment. Elastic stick has two tiers (`careful`): the one-pass tier answers when
-    /// a few cheap bounds show that it may (else `None`), the careful tier decides exactly
-    /// which increments have finite answers and forms the stick stress for a subnormal k_s;
-    /// where both answer, they give the same bits ([`Self::elastic_stick_bounded`]).
+    /// The increment. Elastic stick has two tiers, chosen when the caller compiles
+    /// (`CAREFUL`): the one-pass tier answers when a few cheap bounds show that it may (else
+    /// `None`), the careful tier decides exactly which increments have finite answers and forms
+    /// the stick stress for a subnormal k_s; where both answer, they give the same bits
+    /// ([`Self::elastic_stick_bounded`]).
     #[inline(always)]
-    fn integrate<const N: usize>(
+    fn integrate<const N: usize, const CAREFUL: bool>(
         &self,
         inc: &Increment<N>,
         state: &CoulombState,
-        careful: bool,
     ) -> Option<Update<N>> {
         #[cfg(test)]
         crate::testing::maybe_panic();
@@ -377,8 +372,8 @@ impl Coulomb {
                 // `None` for a constant stick stiffness: [`Self::update_rare`] answers it, so
                 // the hot path stays as it was.
                 let gamma_crit = self.critical_slip_if_defined(inc.characteristic_length)?;
-                let trial = self.elastic_trial(inc, gamma_crit, careful);
-                let (t, slip, probe) = if careful {
+                let trial = self.elastic_trial(inc, gamma_crit, CAREFUL);
+                let (t, slip, probe) = if CAREFUL {
                     let (t, slip, results) = self.elastic_stick_checked(&trial);
                     // Δγ is not tested on its own: it enters γ^pr, and a non-finite γ^pr takes
                     // the slip branch with a non-finite Δγ_eq^sl, which the results' test
@@ -1166,8 +1161,8 @@ mod tests {
         inc: &Increment<N>,
         start: &CoulombState,
     ) -> (bool, bool) {
-        let fast = law.integrate(inc, start, false);
-        let careful = law.integrate(inc, start, true);
+        let fast = law.integrate::<N, false>(inc, start);
+        let careful = law.integrate::<N, true>(inc, start);
         if let Some(f) = &fast {
             let Some(c) = &careful else {
                 panic!(

@@ -31,7 +31,7 @@ use super::contact::{Contact, Increment, Traction, elastic_start_slip, elastic_s
 use super::coulomb::{Coulomb, CoulombState, FrictionStatus};
 use super::friction_coefficient::STICK_TEST_ROUNDING;
 use super::point_law::{EndState, PointAnswer, PointInput, PointLaw, PointResult};
-use super::small_vec::{all_finite, diagonal, norm, radial_transverse, scale, unit};
+use super::small_vec::{diagonal, norm, radial_transverse, scale, unit};
 use crate::{LawError, Outcome};
 
 /// How the state θ evolves with slip.
@@ -371,11 +371,7 @@ impl RateState {
             traction = Traction::sticking(tau, diagonal(k_s), dp, sed);
             let (theta, _) = self.evolve(state.theta, 0.0, dt);
             end = RateStateState {
-                point: CoulombState {
-                    accumulated_slip: state.point.accumulated_slip,
-                    slip_rate: 0.0,
-                    status: FrictionStatus::Stick,
-                },
+                point: state.point.after_slide(0.0, 0.0, FrictionStatus::Stick),
                 theta,
             };
         } else {
@@ -400,24 +396,11 @@ impl RateState {
                 0.5 * strength * gamma_crit,
             );
             end = RateStateState {
-                point: CoulombState {
-                    // Saturates at f64::MAX rather than storing ∞.
-                    accumulated_slip: (state.point.accumulated_slip + slip).min(f64::MAX),
-                    slip_rate: rate.min(f64::MAX),
-                    status: FrictionStatus::Slip,
-                },
+                point: state.point.after_slide(slip, rate, FrictionStatus::Slip),
                 theta,
             };
         }
-        let mut finite = traction.sed.is_finite() && traction.sfd.is_finite();
-        for a in 0..N {
-            finite &= traction.tau[a].is_finite()
-                && traction.ddtddp[a].is_finite()
-                && traction.dslip[a].is_finite()
-                && all_finite(&traction.ddtddg[a]);
-        }
-        finite &= end.theta.is_finite() && end.theta > 0.0;
-        if !finite {
+        if !(traction.is_finite() && end.theta.is_finite() && end.theta > 0.0) {
             return Err(LawError::Numerical(format!(
                 "the rate-and-state update is not finite (θ = {} → {}, pressure {p}): inputs \
                  or parameters out of f64's range",
