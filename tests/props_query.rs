@@ -146,7 +146,22 @@ fn a_bad_question_is_refused_and_reported() {
     assert_eq!(ifl_props_law_code(3), 0);
     assert_eq!(ifl_props_entry_count(4), 0);
     assert_eq!(entry(4, 0).unwrap_err(), IflStatus::BadParameter);
-    assert!(FricCall::last_error().contains("law 4 is not a law code"));
+    let message = FricCall::last_error();
+    assert!(message.contains("law 4 is not a law code"), "{message}");
+    // The message lists every law the API lists (law 3 was once missing from it).
+    let listed: Vec<i32> = message
+        .split("law code (")
+        .nth(1)
+        .and_then(|l| l.strip_suffix(')'))
+        .map(|l| {
+            l.split(", ")
+                .filter_map(|e| e.split(':').next()?.parse().ok())
+        })
+        .map_or_else(Vec::new, Iterator::collect);
+    let codes: Vec<i32> = (0..ifl_props_law_count())
+        .map(|i| ifl_props_law_code(i))
+        .collect();
+    assert_eq!(listed, codes, "{message}");
     let n = ifl_props_entry_count(2);
     assert_eq!(entry(2, n).unwrap_err(), IflStatus::BadParameter);
     assert!(FricCall::last_error().contains(&format!("law 2 has rows 0 to {}", n - 1)));

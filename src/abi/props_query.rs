@@ -132,8 +132,8 @@ pub extern "C" fn ifl_props_law_code(i: c_int) -> c_int {
         .map_or(0, |l| l.code)
 }
 
-/// The number of rows of law `law`'s `PROPS` table (`law` is the code `PROPS(1)`: 1 Coulomb,
-/// 2 adhesive): one per entry, plus one per other meaning of an entry (`when`). 0 for a code
+/// The number of rows of law `law`'s `PROPS` table (`law` is the code `PROPS(1)`, one of
+/// `ifl_props_law_code`'s): one per entry, plus one per other meaning of an entry (`when`). 0 for a code
 /// that is not a law's.
 #[unsafe(no_mangle)]
 pub extern "C" fn ifl_props_entry_count(law: c_int) -> c_int {
@@ -163,8 +163,13 @@ pub unsafe extern "C" fn ifl_props_entry(
         },
         || {
             let p = law_position(law).ok_or_else(|| {
+                let codes: Vec<String> = LAYOUTS
+                    .iter()
+                    .map(|l| format!("{}: {}", l.code, l.law))
+                    .collect();
                 LawError::Parameter(format!(
-                    "law {law} is not a law code (1 = Coulomb, 2 = adhesive)"
+                    "law {law} is not a law code ({})",
+                    codes.join(", ")
                 ))
             })?;
             let (v, t) = usize::try_from(i)
