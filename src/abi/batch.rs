@@ -19,7 +19,7 @@
 
 use std::ffi::c_int;
 
-use super::{Fault, IflStatus, bad_lm, boundary, count, cut_back, null_pointer};
+use super::{Fault, IflStatus, bad_lm, boundary, count, cut_back, null_pointer, short_nstatv};
 use crate::laws::contact::{Contact, EntryFlag, Increment};
 use crate::laws::coulomb::{Coulomb, CoulombState};
 use crate::laws::coulomb_batch::{ChunkInput, ElasticStickKernel};
@@ -161,6 +161,20 @@ fn needed(b: &FricBatch<'_>, components: usize) -> Option<usize> {
     b.ld.checked_mul(components - 1)?.checked_add(b.npoints)
 }
 
+/// `NSTATV` holds the state of the law the batch runs (the plain Coulomb law), checked before
+/// any array is read: the law's own count and name.
+fn require_rows(nstatv: usize) -> Result<(), LawError> {
+    if nstatv < CoulombState::NSTATV {
+        return Err(short_nstatv(
+            i64::try_from(nstatv).unwrap_or(i64::MAX),
+            CoulombState::NSTATV,
+            CoulombState::LAW,
+            "the batch's nstatv",
+        ));
+    }
+    Ok(())
+}
+
 fn check_sizes(b: &FricBatch<'_>) -> Result<(), LawError> {
     if b.nfdir != 1 && b.nfdir != 2 {
         return Err(LawError::Parameter(format!(
@@ -168,7 +182,7 @@ fn check_sizes(b: &FricBatch<'_>) -> Result<(), LawError> {
             b.nfdir
         )));
     }
-    CoulombState::require_nstatv(b.nstatv)?;
+    require_rows(b.nstatv)?;
     if b.ld < b.npoints {
         return Err(LawError::Parameter(format!(
             "leading dimension ld = {} is less than npoints = {}",
@@ -775,7 +789,7 @@ pub unsafe extern "C" fn ifl_fric_batch(
                     LawError::Parameter(format!("NFDIR = {nfdir}; expected 1 (2-D) or 2 (3-D)"))
                 })?;
             let nstatv = count("NSTATV", nstatv)?;
-            CoulombState::require_nstatv(nstatv)?;
+            require_rows(nstatv)?;
             if ld < npoints {
                 return Err(LawError::Parameter(format!(
                     "leading dimension ld = {ld} is less than npoints = {npoints}"

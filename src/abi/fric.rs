@@ -7,7 +7,8 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::{
     bad_lm, boundary_outlined, count, cut_back, fortran_name_bytes, host_number, host_site,
-    null_pointer, read, read_array, slice, write, write_array, write_matrix, write_zeros,
+    null_pointer, read, read_array, short_nstatv, slice, write, write_array, write_matrix,
+    write_zeros,
 };
 use crate::LawError;
 use crate::config::friction_table_for;
@@ -479,7 +480,14 @@ impl FricArgs {
             let needed = law.nstatv(N);
             let nstatv = match usize::try_from(given) {
                 Ok(n) if n >= needed => n,
-                _ => return Err(short_nstatv(given, needed, law.name())),
+                _ => {
+                    return Err(short_nstatv(
+                        given.into(),
+                        needed,
+                        law.name(),
+                        "*DEPVAR / the DEPVAR of *FRICTION, USER",
+                    ));
+                }
             };
             let entry = if law.exact_stick() {
                 entry
@@ -602,15 +610,6 @@ fn coulomb_statev(state: &CoulombState) -> [f64; CoulombState::NSTATV] {
     let mut out = [0.0; CoulombState::NSTATV];
     state.write_statev(&mut out);
     out
-}
-
-#[cold]
-#[inline(never)]
-fn short_nstatv(nstatv: c_int, needed: usize, law: &str) -> LawError {
-    LawError::Parameter(format!(
-        "NSTATV = {nstatv} but {law} needs {needed} state variables (*DEPVAR / the DEPVAR of \
-         *FRICTION, USER)"
-    ))
 }
 
 #[cold]

@@ -160,6 +160,16 @@ pub(crate) fn count(name: &str, value: c_int) -> Result<usize, LawError> {
     usize::try_from(value).map_err(|_| negative(name, value))
 }
 
+/// The refusal of an `NSTATV` = `given` below the `needed` state variables of `law` (as the law
+/// names itself), saying where the host sets it (`set_by`): one message for every entry point.
+#[cold]
+#[inline(never)]
+pub(crate) fn short_nstatv(given: i64, needed: usize, law: &str, set_by: &str) -> LawError {
+    LawError::Parameter(format!(
+        "NSTATV = {given} but {law} needs {needed} state variables ({set_by})"
+    ))
+}
+
 #[cold]
 #[inline(never)]
 fn negative(name: &str, value: c_int) -> LawError {

@@ -7,8 +7,8 @@
 use std::ffi::{c_char, c_int};
 
 use super::{
-    count, cut_back, fortran_name_bytes, host_number, host_site, read, read_array, slice, write,
-    write_zeros,
+    count, cut_back, fortran_name_bytes, host_number, host_site, read, read_array, short_nstatv,
+    slice, write, write_zeros,
 };
 use crate::LawError;
 use crate::config;
@@ -159,10 +159,12 @@ impl UinterArgs {
         let nstatv = unsafe { read(self.nstatv, "NSTATV")? };
         match usize::try_from(nstatv) {
             Ok(n) if n >= needed => Ok(n),
-            _ => Err(LawError::Parameter(format!(
-                "NSTATV = {nstatv} but {law} needs {needed} state variables \
-                 (*DEPVAR / the NSTATV of *SURFACE INTERACTION, USER)"
-            ))),
+            _ => Err(short_nstatv(
+                nstatv.into(),
+                needed,
+                law,
+                "*DEPVAR / the NSTATV of *SURFACE INTERACTION, USER",
+            )),
         }
     }
 
@@ -170,7 +172,7 @@ impl UinterArgs {
     unsafe fn adhesive(&self, props: &AdhesiveProps) -> Result<(), LawError> {
         // SAFETY (whole body): pointers valid per the UINTER contract.
         unsafe {
-            let nstatv = self.nstatv(InterfaceState::NSTATV, "the adhesive interface")?;
+            let nstatv = self.nstatv(InterfaceState::NSTATV, InterfaceState::LAW)?;
             match read(self.ndir, "NDIR")? {
                 2 => self.adhesive_point::<1>(props, nstatv),
                 3 => self.adhesive_point::<2>(props, nstatv),

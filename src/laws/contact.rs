@@ -136,18 +136,8 @@ impl<S: StatusCode> PointState<S> {
     /// Number of `STATEV` entries the law uses.
     pub const NSTATV: usize = 3;
 
-    /// For a caller told `NSTATV` apart from the arrays (the batch, for every point at once):
-    /// `Ok` when `nstatv` entries hold the state, else the refusal naming the law.
-    pub fn require_nstatv(nstatv: usize) -> Result<(), LawError> {
-        if nstatv < Self::NSTATV {
-            return Err(LawError::Parameter(format!(
-                "NSTATV = {nstatv} but {} needs {}",
-                S::LAW,
-                Self::NSTATV
-            )));
-        }
-        Ok(())
-    }
+    /// The law whose statuses `S` are, as messages name it.
+    pub const LAW: &'static str = S::LAW;
 
     /// Reads the state from `STATEV`; `statev` must hold at least [`Self::NSTATV`] entries.
     #[inline(always)]
