@@ -136,13 +136,14 @@ impl CoulombState {
     }
 }
 
-/// Result of [`Coulomb::update`].
+/// Result of [`Coulomb::update`], and with the law's own end state `S` of the other friction
+/// laws' `update` (law 3's keeps θ beside the three scalars).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Update<const N: usize> {
+pub struct Update<const N: usize, S = CoulombState> {
     /// Stress and tangents, or exact stick.
     pub contact: Contact<N>,
     /// State at the end of the increment.
-    pub state: CoulombState,
+    pub state: S,
     /// Reliability and suggested step ratio.
     pub outcome: Outcome,
 }

@@ -28,7 +28,7 @@
 //! dμ/dV = ∂μ/∂V + ∂μ/∂θ·dθ/dV. `LM` is always 0 (no exact stick).
 
 use super::contact::{Contact, Increment, Traction, elastic_start_slip, elastic_stick_stress};
-use super::coulomb::{Coulomb, CoulombState, FrictionStatus};
+use super::coulomb::{Coulomb, CoulombState, FrictionStatus, Update};
 use super::friction_coefficient::STICK_TEST_ROUNDING;
 use super::point_law::{EndState, PointAnswer, PointInput, PointLaw, PointResult};
 use super::small_vec::{diagonal, norm, radial_transverse, scale, unit};
@@ -89,17 +89,6 @@ pub struct RateStateState {
     pub point: CoulombState,
     /// θ, the state variable (time), `STATEV(4)`.
     pub theta: f64,
-}
-
-/// The answer of [`RateState::update`].
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RateStateUpdate<const N: usize> {
-    /// Stress and tangents (always motion: `LM = 0`).
-    pub contact: Contact<N>,
-    /// State at the end of the increment.
-    pub state: RateStateState,
-    /// Always converged (no local solve).
-    pub outcome: Outcome,
 }
 
 /// μ with its partial derivatives ∂μ/∂V and ∂μ/∂θ.
@@ -326,12 +315,13 @@ impl RateState {
         }
     }
 
-    /// One increment of a closed point: the start state in, the end state out.
+    /// One increment of a closed point: the start state in, the end state out (always motion,
+    /// `LM = 0`, and converged: there is no local solve).
     pub fn update<const N: usize>(
         &self,
         inc: &Increment<N>,
         state: &RateStateState,
-    ) -> Result<RateStateUpdate<N>, LawError> {
+    ) -> Result<Update<N, RateStateState>, LawError> {
         inc.check_finite()?;
         if inc.dtime.is_nan() || inc.dtime <= 0.0 {
             return Err(LawError::Input(format!(
@@ -407,7 +397,7 @@ impl RateState {
                 state.theta, end.theta
             )));
         }
-        Ok(RateStateUpdate {
+        Ok(Update {
             contact: Contact::Motion(traction),
             state: end,
             outcome: Outcome::CONVERGED,
