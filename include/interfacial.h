@@ -828,8 +828,8 @@ int ifl_props_law_code(int i);
 
 /**
  * The number of rows of law `law`'s `PROPS` table (`law` is the code `PROPS(1)`, one of
- * `ifl_props_law_code`'s): one per entry, plus one per other meaning of an entry (`when`). 0 for a code
- * that is not a law's.
+ * `ifl_props_law_code`'s): one per entry, plus one per other meaning of an entry (`when`).
+ * 0 for a code that is not a law's.
  */
 int ifl_props_entry_count(int law);
 

@@ -133,8 +133,8 @@ pub extern "C" fn ifl_props_law_code(i: c_int) -> c_int {
 }
 
 /// The number of rows of law `law`'s `PROPS` table (`law` is the code `PROPS(1)`, one of
-/// `ifl_props_law_code`'s): one per entry, plus one per other meaning of an entry (`when`). 0 for a code
-/// that is not a law's.
+/// `ifl_props_law_code`'s): one per entry, plus one per other meaning of an entry (`when`).
+/// 0 for a code that is not a law's.
 #[unsafe(no_mangle)]
 pub extern "C" fn ifl_props_entry_count(law: c_int) -> c_int {
     law_position(law).map_or(0, |p| {

@@ -104,7 +104,7 @@ pub(crate) fn name_bad_input<const N: usize>(inc: Increment<N>, reads_taulm: boo
 /// [`FrictionStatus`](crate::laws::coulomb::FrictionStatus) for the Coulomb laws,
 /// `InterfaceStatus` for the adhesive interface (which adds bonded and open).
 pub trait StatusCode: Copy + PartialEq {
-    /// The law, as a message about too short a `STATEV` names it.
+    /// The law, as messages about its state (too short a `STATEV` or `NSTATV`) name it.
     const LAW: &'static str;
     /// The status of a point that held by elastic stick in the increment.
     const STICK: Self;
@@ -425,7 +425,54 @@ pub fn mean_surface_temperature([slave, master]: [f64; 2]) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::{elastic_start_slip, elastic_stick_stress};
+    use super::{PointState, Traction, elastic_start_slip, elastic_stick_stress};
+    use crate::laws::coulomb::FrictionStatus;
+
+    /// The path of slip adds up, and saturates at f64::MAX where the sum overflows, as does the
+    /// rate; the status is the one given.
+    #[test]
+    fn the_state_after_a_slide_adds_the_slip_and_saturates() {
+        let start = PointState {
+            accumulated_slip: 1.5,
+            slip_rate: 7.0,
+            status: FrictionStatus::Stick,
+        };
+        let end = start.after_slide(0.25, 3.0, FrictionStatus::Slip);
+        assert_eq!(
+            (end.accumulated_slip, end.slip_rate, end.status),
+            (1.75, 3.0, FrictionStatus::Slip)
+        );
+        let far = PointState {
+            accumulated_slip: f64::MAX,
+            ..start
+        };
+        let end = far.after_slide(f64::MAX, f64::INFINITY, FrictionStatus::Stick);
+        assert_eq!((end.accumulated_slip, end.slip_rate), (f64::MAX, f64::MAX));
+        assert_eq!(end.status, FrictionStatus::Stick);
+    }
+
+    /// A traction is finite only if every one of its numbers is: each set to NaN or ±∞ in
+    /// turn is caught.
+    #[test]
+    fn a_traction_with_any_non_finite_number_is_not_finite() {
+        let t = Traction::sliding(&[0.6, 0.8], 2.0, [[1.0, 0.0], [0.0, 1.0]], 0.3, 0.1, 0.5);
+        assert!(t.is_finite());
+        let spoilt: [fn(&mut Traction<2>, f64); 6] = [
+            |t, x| t.tau[1] = x,
+            |t, x| t.ddtddg[1][0] = x,
+            |t, x| t.ddtddp[1] = x,
+            |t, x| t.dslip[1] = x,
+            |t, x| t.sed = x,
+            |t, x| t.sfd = x,
+        ];
+        for (i, spoil) in spoilt.iter().enumerate() {
+            for x in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                let mut u = t;
+                spoil(&mut u, x);
+                assert!(!u.is_finite(), "field {i} = {x} passed");
+            }
+        }
+    }
 
     /// γ̄^el = τ̄·γ_crit/τ̄_s, also where γ_crit/τ̄_s overflows (a subnormal strength: then
     /// (τ̄/τ̄_s)·γ_crit, and 0 rather than 0·∞ = NaN for τ̄ = 0), and 0 without a strength.
